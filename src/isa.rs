@@ -1,0 +1,477 @@
+//! The ps_3_0 instruction set as one table: the single source of truth.
+//!
+//! The parser looks mnemonics up here, the validator reads each row's operand
+//! shape and rules, the cost model reads the slot column, the emulator
+//! dispatches on [`Opcode`] and the writer prints [`OpInfo::mnemonic`]. Adding
+//! an instruction means one row in [`TABLE`] plus its semantics in the emulator.
+//!
+//! Slot counts are the "Instruction slots" column of Microsoft's ps_3_0
+//! instruction table (learn.microsoft.com/windows/win32/direct3dhlsl/
+//! dx9-graphics-reference-asm-ps-instructions-ps-3-0). Where public sources
+//! disagree, the row says which side it takes:
+//!
+//! * `if b#` costs 3 slots here (the ps_3_0 table) although the `if bool` page
+//!   says "one instruction slot".
+//! * `lrp` costs 2 slots here (the table) although fxc's "approximately N
+//!   slots" comment counts it as 1.
+//! * `texldb` 6, `texldp` 3 and `texkill` 2 follow the ps_3_0 table, not the
+//!   ps_2_0 one (1 each).
+//!
+//! Changing one of those decisions is a one-number edit in [`TABLE`].
+
+use std::fmt;
+
+/// Every ps_3_0 operation ps30 knows. Declarations and constant definitions
+/// are included so that one table covers every mnemonic a ps_3_0 file may use.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum Opcode {
+    Nop,
+    Mov,
+    Add,
+    Sub,
+    Mad,
+    Mul,
+    Rcp,
+    Rsq,
+    Dp3,
+    Dp4,
+    Min,
+    Max,
+    Exp,
+    Log,
+    Lrp,
+    Frc,
+    M4x4,
+    M4x3,
+    M3x4,
+    M3x3,
+    M3x2,
+    Pow,
+    Crs,
+    Abs,
+    Nrm,
+    SinCos,
+    Cmp,
+    Dp2Add,
+    Dsx,
+    Dsy,
+    TexKill,
+    TexLd,
+    TexLdP,
+    TexLdB,
+    TexLdL,
+    TexLdD,
+    Setp,
+    Call,
+    CallNz,
+    Loop,
+    Ret,
+    EndLoop,
+    Label,
+    Rep,
+    EndRep,
+    If,
+    Ifc,
+    Else,
+    EndIf,
+    Break,
+    BreakC,
+    BreakP,
+    Def,
+    DefI,
+    DefB,
+    Dcl,
+}
+
+/// What an instruction is, for accounting and for validation rules.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Class {
+    /// Arithmetic on float registers.
+    Arithmetic,
+    /// Texture sampling or texkill.
+    Texture,
+    /// Flow control (if, rep, loop, call, break, ret, label, ...).
+    Flow,
+    /// Declarations and constant definitions: no slots, never executed.
+    Declaration,
+}
+
+/// The kind of one operand position in an instruction's shape.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Operand {
+    /// A destination register with an optional write mask.
+    Dst,
+    /// A float source register with optional modifiers and swizzle.
+    Src,
+    /// A float source that must use a replicate swizzle (`.x`, `.y`, ...).
+    ScalarSrc,
+    /// A sampler register `s#` (no modifiers).
+    Sampler,
+    /// An integer constant register `i#` (rep, loop).
+    IntReg,
+    /// The loop counter `aL` as the first operand of `loop`.
+    LoopCounter,
+    /// A label `l#`.
+    Label,
+    /// A boolean condition: `[!]b#` or `[!]p0.c`.
+    Condition,
+    /// The predicate register `p0` (optionally masked) as a destination.
+    PredDst,
+    /// The texkill operand: a register written like a destination.
+    KillSrc,
+    /// Four float literals (`def`).
+    FloatLits,
+    /// Four integer literals (`defi`).
+    IntLits,
+    /// One boolean literal (`defb`).
+    BoolLit,
+}
+
+/// One row of the instruction table.
+#[derive(Clone, Copy, Debug)]
+pub struct OpInfo {
+    pub op: Opcode,
+    /// Canonical lower-case mnemonic as the writer prints it.
+    pub mnemonic: &'static str,
+    /// Instruction slots (Microsoft's ps_3_0 table).
+    pub slots: u32,
+    /// Slots when the sampler operand is a cube map, if different.
+    pub cube_slots: Option<u32>,
+    pub class: Class,
+    /// Operand shape, in order.
+    pub operands: &'static [Operand],
+    /// Whether `_sat` is allowed.
+    pub allows_sat: bool,
+    /// Whether the instruction takes a comparison suffix (`_gt` ...). `Some(true)`:
+    /// required; `Some(false)`: never; `None` is not used.
+    pub comparison: bool,
+    /// Whether a `(p0)` predicate prefix is allowed (arithmetic and texture).
+    pub predicable: bool,
+    /// One-line meaning, printed by `ps30 check --explain` style output and docs.
+    pub summary: &'static str,
+}
+
+use Operand as O;
+
+const DS: &[Operand] = &[O::Dst, O::Src];
+const DSS: &[Operand] = &[O::Dst, O::Src, O::Src];
+const DSSS: &[Operand] = &[O::Dst, O::Src, O::Src, O::Src];
+const DSCALAR: &[Operand] = &[O::Dst, O::ScalarSrc];
+const TEX: &[Operand] = &[O::Dst, O::Src, O::Sampler];
+const NONE: &[Operand] = &[];
+
+macro_rules! row {
+    ($op:ident, $m:literal, $slots:expr, $cube:expr, $class:ident, $ops:expr, sat=$sat:literal, cmp=$cmp:literal, pred=$pred:literal, $sum:literal) => {
+        OpInfo {
+            op: Opcode::$op,
+            mnemonic: $m,
+            slots: $slots,
+            cube_slots: $cube,
+            class: Class::$class,
+            operands: $ops,
+            allows_sat: $sat,
+            comparison: $cmp,
+            predicable: $pred,
+            summary: $sum,
+        }
+    };
+}
+
+/// The instruction table, one row per operation.
+#[rustfmt::skip]
+pub const TABLE: &[OpInfo] = &[
+    row!(Nop, "nop", 1, None, Arithmetic, NONE, sat = false, cmp = false, pred = true, "no operation"),
+    row!(Mov, "mov", 1, None, Arithmetic, DS, sat = true, cmp = false, pred = true, "copy"),
+    row!(Add, "add", 1, None, Arithmetic, DSS, sat = true, cmp = false, pred = true, "a + b"),
+    row!(Sub, "sub", 1, None, Arithmetic, DSS, sat = true, cmp = false, pred = true, "a - b"),
+    row!(Mad, "mad", 1, None, Arithmetic, DSSS, sat = true, cmp = false, pred = true, "a * b + c"),
+    row!(Mul, "mul", 1, None, Arithmetic, DSS, sat = true, cmp = false, pred = true, "a * b"),
+    row!(Rcp, "rcp", 1, None, Arithmetic, DSCALAR, sat = true, cmp = false, pred = true, "1 / x (x = 0 gives infinity)"),
+    row!(Rsq, "rsq", 1, None, Arithmetic, DSCALAR, sat = true, cmp = false, pred = true, "1 / sqrt(|x|) (x = 0 gives infinity)"),
+    row!(Dp3, "dp3", 1, None, Arithmetic, DSS, sat = true, cmp = false, pred = true, "3-component dot product"),
+    row!(Dp4, "dp4", 1, None, Arithmetic, DSS, sat = true, cmp = false, pred = true, "4-component dot product"),
+    row!(Min, "min", 1, None, Arithmetic, DSS, sat = true, cmp = false, pred = true, "component-wise minimum"),
+    row!(Max, "max", 1, None, Arithmetic, DSS, sat = true, cmp = false, pred = true, "component-wise maximum"),
+    row!(Exp, "exp", 1, None, Arithmetic, DSCALAR, sat = true, cmp = false, pred = true, "2^x"),
+    row!(Log, "log", 1, None, Arithmetic, DSCALAR, sat = true, cmp = false, pred = true, "log2(|x|) (x = 0 gives -FLT_MAX)"),
+    row!(Lrp, "lrp", 2, None, Arithmetic, DSSS, sat = true, cmp = false, pred = true, "a * b + (1 - a) * c"),
+    row!(Frc, "frc", 1, None, Arithmetic, DS, sat = false, cmp = false, pred = true, "x - floor(x)"),
+    row!(M4x4, "m4x4", 4, None, Arithmetic, DSS, sat = true, cmp = false, pred = true, "four dp4 with src1..src1+3"),
+    row!(M4x3, "m4x3", 3, None, Arithmetic, DSS, sat = true, cmp = false, pred = true, "three dp4 with src1..src1+2"),
+    row!(M3x4, "m3x4", 4, None, Arithmetic, DSS, sat = true, cmp = false, pred = true, "four dp3 with src1..src1+3"),
+    row!(M3x3, "m3x3", 3, None, Arithmetic, DSS, sat = true, cmp = false, pred = true, "three dp3 with src1..src1+2"),
+    row!(M3x2, "m3x2", 2, None, Arithmetic, DSS, sat = true, cmp = false, pred = true, "two dp3 with src1..src1+1"),
+    row!(Pow, "pow", 3, None, Arithmetic, &[O::Dst, O::ScalarSrc, O::ScalarSrc], sat = true, cmp = false, pred = true, "|a|^b"),
+    row!(Crs, "crs", 2, None, Arithmetic, DSS, sat = true, cmp = false, pred = true, "cross product"),
+    row!(Abs, "abs", 1, None, Arithmetic, DS, sat = true, cmp = false, pred = true, "|x|"),
+    row!(Nrm, "nrm", 3, None, Arithmetic, DS, sat = true, cmp = false, pred = true, "normalise xyz (zero length scales by FLT_MAX)"),
+    row!(SinCos, "sincos", 8, None, Arithmetic, DSCALAR, sat = false, cmp = false, pred = true, "x = cos, y = sin"),
+    row!(Cmp, "cmp", 1, None, Arithmetic, DSSS, sat = true, cmp = false, pred = true, "a >= 0 ? b : c"),
+    row!(Dp2Add, "dp2add", 2, None, Arithmetic, &[O::Dst, O::Src, O::Src, O::ScalarSrc], sat = true, cmp = false, pred = true, "a.x*b.x + a.y*b.y + c"),
+    row!(Dsx, "dsx", 2, None, Arithmetic, DS, sat = true, cmp = false, pred = true, "screen-space x derivative"),
+    row!(Dsy, "dsy", 2, None, Arithmetic, DS, sat = true, cmp = false, pred = true, "screen-space y derivative"),
+    row!(TexKill, "texkill", 2, None, Texture, &[O::KillSrc], sat = false, cmp = false, pred = true, "discard the pixel if any of x, y, z < 0"),
+    row!(TexLd, "texld", 1, Some(4), Texture, TEX, sat = false, cmp = false, pred = true, "sample with implicit gradients"),
+    row!(TexLdP, "texldp", 3, Some(4), Texture, TEX, sat = false, cmp = false, pred = true, "sample after dividing by w"),
+    row!(TexLdB, "texldb", 6, None, Texture, TEX, sat = false, cmp = false, pred = true, "sample with LOD bias w"),
+    row!(TexLdL, "texldl", 2, Some(5), Texture, TEX, sat = false, cmp = false, pred = true, "sample at explicit LOD w"),
+    row!(TexLdD, "texldd", 3, None, Texture, &[O::Dst, O::Src, O::Sampler, O::Src, O::Src], sat = false, cmp = false, pred = true, "sample with explicit gradients"),
+    row!(Setp, "setp", 1, None, Arithmetic, &[O::PredDst, O::Src, O::Src], sat = false, cmp = true, pred = true, "p0.c = a.c <op> b.c"),
+    row!(Call, "call", 2, None, Flow, &[O::Label], sat = false, cmp = false, pred = false, "call a subroutine"),
+    row!(CallNz, "callnz", 3, None, Flow, &[O::Label, O::Condition], sat = false, cmp = false, pred = false, "call if the condition holds"),
+    row!(Loop, "loop", 3, None, Flow, &[O::LoopCounter, O::IntReg], sat = false, cmp = false, pred = false, "loop i.x times, aL from i.y by i.z"),
+    row!(Ret, "ret", 1, None, Flow, NONE, sat = false, cmp = false, pred = false, "return (ends main)"),
+    row!(EndLoop, "endloop", 2, None, Flow, NONE, sat = false, cmp = false, pred = false, "end of loop"),
+    row!(Label, "label", 0, None, Flow, &[O::Label], sat = false, cmp = false, pred = false, "subroutine entry"),
+    row!(Rep, "rep", 3, None, Flow, &[O::IntReg], sat = false, cmp = false, pred = false, "repeat i.x times"),
+    row!(EndRep, "endrep", 2, None, Flow, NONE, sat = false, cmp = false, pred = false, "end of rep"),
+    row!(If, "if", 3, None, Flow, &[O::Condition], sat = false, cmp = false, pred = false, "branch on b# or p0.c"),
+    row!(Ifc, "if", 3, None, Flow, &[O::ScalarSrc, O::ScalarSrc], sat = false, cmp = true, pred = false, "branch on a comparison"),
+    row!(Else, "else", 1, None, Flow, NONE, sat = false, cmp = false, pred = false, "else branch"),
+    row!(EndIf, "endif", 1, None, Flow, NONE, sat = false, cmp = false, pred = false, "end of if"),
+    row!(Break, "break", 1, None, Flow, NONE, sat = false, cmp = false, pred = false, "leave the innermost rep/loop"),
+    row!(BreakC, "break", 3, None, Flow, &[O::ScalarSrc, O::ScalarSrc], sat = false, cmp = true, pred = false, "break if the comparison holds"),
+    row!(BreakP, "breakp", 3, None, Flow, &[O::Condition], sat = false, cmp = false, pred = false, "break if p0.c holds"),
+    row!(Def, "def", 0, None, Declaration, &[O::Dst, O::FloatLits], sat = false, cmp = false, pred = false, "define a float constant"),
+    row!(DefI, "defi", 0, None, Declaration, &[O::Dst, O::IntLits], sat = false, cmp = false, pred = false, "define an integer constant"),
+    row!(DefB, "defb", 0, None, Declaration, &[O::Dst, O::BoolLit], sat = false, cmp = false, pred = false, "define a boolean constant"),
+    row!(Dcl, "dcl", 0, None, Declaration, NONE, sat = false, cmp = false, pred = false, "declare an input or sampler"),
+];
+
+impl Opcode {
+    /// The table row of this opcode.
+    pub fn info(self) -> &'static OpInfo {
+        // The table is ordered like the enum; the test below keeps it so.
+        &TABLE[self as usize]
+    }
+
+    /// Looks up a base mnemonic (no suffixes), with whether a comparison
+    /// suffix was given (it selects `ifc` and `breakc`).
+    pub fn from_mnemonic(base: &str, has_comparison: bool) -> Option<Opcode> {
+        let base = base.to_ascii_lowercase();
+        match (base.as_str(), has_comparison) {
+            ("if", true) => Some(Opcode::Ifc),
+            ("break", true) => Some(Opcode::BreakC),
+            (b, _) => TABLE
+                .iter()
+                .find(|r| r.mnemonic == b && !matches!(r.op, Opcode::Ifc | Opcode::BreakC))
+                .map(|r| r.op),
+        }
+    }
+
+    pub fn class(self) -> Class {
+        self.info().class
+    }
+
+    /// Whether this opcode opens a block closed later (rep, loop, if).
+    pub fn opens_block(self) -> bool {
+        matches!(self, Opcode::Rep | Opcode::Loop | Opcode::If | Opcode::Ifc)
+    }
+}
+
+impl fmt::Display for Opcode {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.info().mnemonic)
+    }
+}
+
+/// Comparison suffixes of `if_comp`, `break_comp` and `setp_comp`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Compare {
+    Gt,
+    Lt,
+    Ge,
+    Le,
+    Eq,
+    Ne,
+}
+
+impl Compare {
+    pub const ALL: [Compare; 6] = [
+        Compare::Gt,
+        Compare::Lt,
+        Compare::Ge,
+        Compare::Le,
+        Compare::Eq,
+        Compare::Ne,
+    ];
+
+    pub fn suffix(self) -> &'static str {
+        match self {
+            Compare::Gt => "gt",
+            Compare::Lt => "lt",
+            Compare::Ge => "ge",
+            Compare::Le => "le",
+            Compare::Eq => "eq",
+            Compare::Ne => "ne",
+        }
+    }
+
+    pub fn from_suffix(s: &str) -> Option<Compare> {
+        Compare::ALL
+            .into_iter()
+            .find(|c| c.suffix().eq_ignore_ascii_case(s))
+    }
+
+    /// Evaluates the comparison on two floats (IEEE semantics: NaN compares
+    /// false except for `ne`).
+    pub fn eval(self, a: f32, b: f32) -> bool {
+        match self {
+            Compare::Gt => a > b,
+            Compare::Lt => a < b,
+            Compare::Ge => a >= b,
+            Compare::Le => a <= b,
+            Compare::Eq => a == b,
+            Compare::Ne => a != b,
+        }
+    }
+}
+
+/// Register files of ps_3_0 (Microsoft's ps_3_0 register page).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum RegFile {
+    /// `r#`, 32 temporaries.
+    Temp,
+    /// `v#`, 10 interpolated inputs.
+    Input,
+    /// `c#`, 224 float constants.
+    Const,
+    /// `i#`, 16 integer constants.
+    ConstInt,
+    /// `b#`, 16 boolean constants.
+    ConstBool,
+    /// `s#`, 16 samplers.
+    Sampler,
+    /// `p0`, the predicate register.
+    Predicate,
+    /// `oC#`, 4 colour outputs.
+    ColorOut,
+    /// `oDepth`.
+    DepthOut,
+    /// `aL`, the loop counter.
+    LoopCounter,
+    /// `vPos`, the pixel position.
+    Position,
+    /// `vFace`, the face sign.
+    Face,
+    /// `l#`, labels.
+    Label,
+}
+
+/// Static facts about a register file.
+#[derive(Clone, Copy, Debug)]
+pub struct RegFileInfo {
+    pub file: RegFile,
+    /// How it is spelled (the prefix before the number, or the whole name).
+    pub name: &'static str,
+    /// Number of registers.
+    pub count: u32,
+    /// Whether the file is numbered (`r0`) or a single named register (`vPos`).
+    pub numbered: bool,
+    pub readable: bool,
+    pub writable: bool,
+    /// Distinct registers of this file one instruction may read (read ports).
+    pub read_ports: u32,
+}
+
+/// The register files, from Microsoft's ps_3_0 register page.
+#[rustfmt::skip]
+pub const REG_FILES: &[RegFileInfo] = &[
+    RegFileInfo { file: RegFile::Temp, name: "r", count: 32, numbered: true, readable: true, writable: true, read_ports: 3 },
+    RegFileInfo { file: RegFile::Input, name: "v", count: 10, numbered: true, readable: true, writable: false, read_ports: 1 },
+    RegFileInfo { file: RegFile::Const, name: "c", count: 224, numbered: true, readable: true, writable: false, read_ports: 1 },
+    RegFileInfo { file: RegFile::ConstInt, name: "i", count: 16, numbered: true, readable: true, writable: false, read_ports: 1 },
+    RegFileInfo { file: RegFile::ConstBool, name: "b", count: 16, numbered: true, readable: true, writable: false, read_ports: 1 },
+    RegFileInfo { file: RegFile::Sampler, name: "s", count: 16, numbered: true, readable: true, writable: false, read_ports: 1 },
+    RegFileInfo { file: RegFile::Predicate, name: "p", count: 1, numbered: true, readable: true, writable: true, read_ports: 1 },
+    RegFileInfo { file: RegFile::ColorOut, name: "oC", count: 4, numbered: true, readable: false, writable: true, read_ports: 0 },
+    RegFileInfo { file: RegFile::DepthOut, name: "oDepth", count: 1, numbered: false, readable: false, writable: true, read_ports: 0 },
+    RegFileInfo { file: RegFile::LoopCounter, name: "aL", count: 1, numbered: false, readable: true, writable: false, read_ports: 1 },
+    RegFileInfo { file: RegFile::Position, name: "vPos", count: 1, numbered: false, readable: true, writable: false, read_ports: 1 },
+    RegFileInfo { file: RegFile::Face, name: "vFace", count: 1, numbered: false, readable: true, writable: false, read_ports: 1 },
+    RegFileInfo { file: RegFile::Label, name: "l", count: 2048, numbered: true, readable: false, writable: false, read_ports: 1 },
+];
+
+impl RegFile {
+    pub fn info(self) -> &'static RegFileInfo {
+        &REG_FILES[self as usize]
+    }
+
+    /// Parses a register name (prefix and number already split). Names are
+    /// case-insensitive, as in Microsoft's assembler.
+    pub fn lookup(prefix: &str) -> Option<RegFile> {
+        REG_FILES
+            .iter()
+            .find(|f| f.name.eq_ignore_ascii_case(prefix))
+            .map(|f| f.file)
+    }
+}
+
+/// Sampler dimensions a `dcl_*` may declare.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum SamplerType {
+    Tex2d,
+    Cube,
+    Volume,
+}
+
+impl SamplerType {
+    pub fn suffix(self) -> &'static str {
+        match self {
+            SamplerType::Tex2d => "2d",
+            SamplerType::Cube => "cube",
+            SamplerType::Volume => "volume",
+        }
+    }
+}
+
+/// Input usages of `dcl_<usage>[n]` (D3DDECLUSAGE).
+pub const USAGES: &[&str] = &[
+    "position",
+    "blendweight",
+    "blendindices",
+    "normal",
+    "psize",
+    "texcoord",
+    "tangent",
+    "binormal",
+    "tessfactor",
+    "positiont",
+    "color",
+    "fog",
+    "depth",
+    "sample",
+];
+
+/// Flow-control limits of ps_3_0 (Microsoft's "Flow Control Limitations").
+pub const MAX_LOOP_NESTING: u32 = 4;
+pub const MAX_CALL_NESTING: u32 = 4;
+pub const MAX_STATIC_NESTING: u32 = 24;
+pub const MAX_DYNAMIC_NESTING: u32 = 24;
+/// rep/loop iteration count range, i#.x in [0, 255].
+pub const MAX_REP_COUNT: i32 = 255;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn table_is_ordered_like_the_enum() {
+        for (i, row) in TABLE.iter().enumerate() {
+            assert_eq!(row.op as usize, i, "row {} ({}) out of place", i, row.mnemonic);
+        }
+        for (i, f) in REG_FILES.iter().enumerate() {
+            assert_eq!(f.file as usize, i, "register file {} out of place", f.name);
+        }
+    }
+
+    #[test]
+    fn mnemonics_resolve() {
+        assert_eq!(Opcode::from_mnemonic("IF", true), Some(Opcode::Ifc));
+        assert_eq!(Opcode::from_mnemonic("if", false), Some(Opcode::If));
+        assert_eq!(Opcode::from_mnemonic("break", true), Some(Opcode::BreakC));
+        assert_eq!(Opcode::from_mnemonic("break", false), Some(Opcode::Break));
+        assert_eq!(Opcode::from_mnemonic("TexLdL", false), Some(Opcode::TexLdL));
+        assert_eq!(Opcode::from_mnemonic("lit", false), None);
+    }
+}
