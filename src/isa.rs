@@ -458,7 +458,11 @@ mod tests {
     #[test]
     fn table_is_ordered_like_the_enum() {
         for (i, row) in TABLE.iter().enumerate() {
-            assert_eq!(row.op as usize, i, "row {} ({}) out of place", i, row.mnemonic);
+            assert_eq!(
+                row.op as usize, i,
+                "row {} ({}) out of place",
+                i, row.mnemonic
+            );
         }
         for (i, f) in REG_FILES.iter().enumerate() {
             assert_eq!(f.file as usize, i, "register file {} out of place", f.name);

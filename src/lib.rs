@@ -1,6 +1,35 @@
-//! ps30
+//! # ps30 — Direct3D 9 pixel shader 3.0 assembly you can parse, measure, run and generate
+//!
+//! ps30 reads ps_3_0 assembly (with a real `REPEAT_BLOCK` macro), checks it
+//! against the ps_3_0 rules, counts its instruction slots and executed
+//! instructions against the 512 / 65,535 budgets, runs it on HDR images and
+//! cross-checks the result against a CPU reference.
+//!
+//! ```text
+//! asm text ──parse──▶ AST (spans) ──expand REPEAT_BLOCK──▶ AST ──validate──▶ Shader (Program + Info)
+//!                                                                              │
+//!                         ┌────────────────────┬────────────────────────────────┤
+//!                         ▼                    ▼                                ▼
+//!                    cost model            emulator                        asm writer
+//! ```
+//!
+//! ```
+//! use ps30::{cost, front};
+//! let src = "ps_3_0\ndefi i0, 128, 0, 0, 0\nrep i0\n  add r0, r0, r0\nendrep\nmov oC0, r0\n";
+//! let loaded = front::load_str("example.psh", src, &front::Options::default()).unwrap();
+//! let analysis = cost::analyse(&loaded.shader, &loaded.file, &cost::Environment::default(),
+//!                              &cost::Profile::ps_3_0()).unwrap();
+//! assert_eq!(analysis.slots, 7);                       // rep 3 + add 1 + endrep 2 + mov 1
+//! assert_eq!(analysis.executed.max, 128 * 6 + 1);      // (3 + 1 + 2) per iteration
+//! ```
+
+pub mod cost;
+pub mod diag;
+pub mod emu;
+pub mod front;
+pub mod image;
 pub mod ir;
 pub mod isa;
-pub mod image;
 pub mod reference;
-pub mod emu;
+pub mod valid;
+pub mod writer;

@@ -1,0 +1,88 @@
+//! The front end: text → statements → expanded statements → [`Shader`].
+//!
+//! [`parse`](parse::parse) reads lines into an AST with spans,
+//! [`repeat::expand`] unrolls REPEAT_BLOCK macros, and
+//! [`crate::valid::validate`] lowers and checks the result against the
+//! ps_3_0 rules. [`load`] runs all three and returns either a shader or every
+//! diagnostic found.
+
+pub mod ast;
+pub mod parse;
+pub mod repeat;
+
+use crate::diag::{Diagnostics, SourceError, SourceFile};
+use crate::ir::Shader;
+use std::collections::BTreeMap;
+
+/// Options of the front end.
+#[derive(Clone, Debug)]
+pub struct Options {
+    /// Names usable as REPEAT_BLOCK counts (`-D name=value`).
+    pub defines: BTreeMap<String, u64>,
+    /// Cap on expanded statements.
+    pub max_expanded: u64,
+}
+
+impl Default for Options {
+    fn default() -> Options {
+        Options {
+            defines: BTreeMap::new(),
+            max_expanded: repeat::DEFAULT_MAX_EXPANDED,
+        }
+    }
+}
+
+/// A shader loaded from source, with the warnings found on the way.
+#[derive(Clone, Debug)]
+pub struct Loaded {
+    pub file: SourceFile,
+    pub shader: Shader,
+    pub warnings: Diagnostics,
+}
+
+/// Parses, expands and validates a source file.
+pub fn load(file: SourceFile, options: &Options) -> Result<Loaded, SourceError> {
+    let (stmts, mut diags) = parse::parse(&file.text);
+    if diags.has_errors() {
+        // Still report macro problems of the lines that did parse.
+        if let Err(more) = repeat::expand(&stmts, &options.defines, options.max_expanded) {
+            diags.items.extend(more.items);
+        }
+        diags.sort();
+        return Err(SourceError {
+            file,
+            diagnostics: diags,
+        });
+    }
+    let expanded = match repeat::expand(&stmts, &options.defines, options.max_expanded) {
+        Ok(e) => e,
+        Err(d) => {
+            return Err(SourceError {
+                file,
+                diagnostics: d,
+            })
+        }
+    };
+    match crate::valid::validate(&stmts, &expanded, &file) {
+        Ok((shader, mut warnings)) => {
+            warnings.sort();
+            Ok(Loaded {
+                file,
+                shader,
+                warnings,
+            })
+        }
+        Err(mut d) => {
+            d.sort();
+            Err(SourceError {
+                file,
+                diagnostics: d,
+            })
+        }
+    }
+}
+
+/// Loads a shader from a string (name used in messages).
+pub fn load_str(name: &str, text: &str, options: &Options) -> Result<Loaded, SourceError> {
+    load(SourceFile::new(name, text), options)
+}
