@@ -11,6 +11,10 @@
 //! an [`ImageError`] naming the file and the problem. Writing is atomic: a
 //! failed write leaves no partial file behind.
 
+mod target;
+
+pub use target::{RenderTarget, TargetFormat, Texture};
+
 /// An RGBA image with f32 channels, as loaded from a file.
 ///
 /// Pixels are row-major and row 0 is the TOP row of the picture, whatever
