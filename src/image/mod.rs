@@ -11,9 +11,20 @@
 //! an [`ImageError`] naming the file and the problem. Writing is atomic: a
 //! failed write leaves no partial file behind.
 
+mod atomic;
+mod error;
+mod pfm;
+mod png;
 mod target;
 
+pub use error::{ForeignError, ImageError};
+pub use pfm::write_pfm;
+pub use png::write_png_rgb8;
 pub use target::{RenderTarget, TargetFormat, Texture};
+
+use std::fs::File;
+use std::io::{BufReader, Read, Seek};
+use std::path::Path;
 
 /// An RGBA image with f32 channels, as loaded from a file.
 ///
@@ -65,5 +76,86 @@ impl HdrImage {
             }
         }
         stats
+    }
+}
+
+/// How large an image [`load`] accepts. A header can claim any size; this
+/// limit is checked before pixel memory is allocated.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ImageLimits {
+    /// Largest accepted `width * height`.
+    pub max_pixels: u64,
+}
+
+impl Default for ImageLimits {
+    /// 64 Mpixel (1 GiB as RGBA f32): far beyond the test images, far below
+    /// what a corrupt header can claim.
+    fn default() -> ImageLimits {
+        ImageLimits {
+            max_pixels: 1 << 26,
+        }
+    }
+}
+
+impl ImageLimits {
+    /// Refuses empty images and images over the limit.
+    fn check(
+        &self,
+        path: &Path,
+        format: &'static str,
+        width: u64,
+        height: u64,
+    ) -> Result<(), ImageError> {
+        for (field, value) in [("width", width), ("height", height)] {
+            if value == 0 {
+                return Err(ImageError::bad_header(path, format, field, "is zero"));
+            }
+        }
+        // u64 * u64 can overflow; u128 cannot.
+        if u128::from(width) * u128::from(height) > u128::from(self.max_pixels) {
+            return Err(ImageError::TooLarge {
+                path: path.to_path_buf(),
+                width,
+                height,
+                limit: self.max_pixels,
+            });
+        }
+        Ok(())
+    }
+}
+
+/// The file formats [`load`] reads, told apart by their first bytes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Format {
+    Pfm,
+}
+
+impl Format {
+    fn detect(magic: &[u8]) -> Option<Format> {
+        match magic {
+            [b'P', b'F' | b'f', ..] => Some(Format::Pfm),
+            _ => None,
+        }
+    }
+}
+
+/// Reads an HDR image, choosing the decoder by the file's magic number (not
+/// its extension): OpenEXR (`76 2f 31 01`), Radiance RGBE (`#?`) or PFM
+/// (`PF` colour, `Pf` grey).
+pub fn load(path: &Path, limits: &ImageLimits) -> Result<HdrImage, ImageError> {
+    let file = File::open(path).map_err(|e| ImageError::io(path, "open", e))?;
+    let mut reader = BufReader::new(file);
+    let mut magic = Vec::with_capacity(4);
+    (&mut reader)
+        .take(4)
+        .read_to_end(&mut magic)
+        .and_then(|_| reader.rewind())
+        .map_err(|e| ImageError::io(path, "read", e))?;
+    match Format::detect(&magic) {
+        Some(Format::Pfm) => pfm::read(path, reader, limits),
+        None => Err(ImageError::UnknownFormat {
+            path: path.to_path_buf(),
+            first_bytes: magic,
+        }),
     }
 }
