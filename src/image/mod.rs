@@ -13,11 +13,14 @@
 
 mod atomic;
 mod error;
+mod openexr;
 mod pfm;
 mod png;
+mod radiance;
 mod target;
 
 pub use error::{ForeignError, ImageError};
+pub use openexr::write_exr;
 pub use pfm::write_pfm;
 pub use png::write_png_rgb8;
 pub use target::{RenderTarget, TargetFormat, Texture};
@@ -127,12 +130,16 @@ impl ImageLimits {
 /// The file formats [`load`] reads, told apart by their first bytes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Format {
+    OpenExr,
+    Radiance,
     Pfm,
 }
 
 impl Format {
     fn detect(magic: &[u8]) -> Option<Format> {
         match magic {
+            [0x76, 0x2f, 0x31, 0x01, ..] => Some(Format::OpenExr),
+            [b'#', b'?', ..] => Some(Format::Radiance),
             [b'P', b'F' | b'f', ..] => Some(Format::Pfm),
             _ => None,
         }
@@ -152,6 +159,8 @@ pub fn load(path: &Path, limits: &ImageLimits) -> Result<HdrImage, ImageError> {
         .and_then(|_| reader.rewind())
         .map_err(|e| ImageError::io(path, "read", e))?;
     match Format::detect(&magic) {
+        Some(Format::OpenExr) => openexr::read(path, reader, limits),
+        Some(Format::Radiance) => radiance::read(path, reader, limits),
         Some(Format::Pfm) => pfm::read(path, reader, limits),
         None => Err(ImageError::UnknownFormat {
             path: path.to_path_buf(),
