@@ -1,21 +1,26 @@
 //! OpenEXR input and output through the `exr` crate (pure Rust; it decodes
 //! every compression the test images use, including the lossy DWAB).
 //!
-//! Reading happens in two steps: the headers alone first, so that absurd
-//! sizes and unusable channel sets are refused before any pixel memory is
-//! allocated, then the pixels of the first layer. The layer's data window is
-//! the image (the display window is ignored). Render targets are written
-//! losslessly (ZIP) in their own sample type: R32F as one f32 channel `R`,
-//! Rgba16F as half channels `R`, `G`, `B`, `A`.
+//! Reading happens in steps: the headers alone first, so that absurd sizes
+//! and unusable channel sets are refused before any pixel memory is
+//! allocated; for DWA files, the size counters of every chunk (see
+//! [`check_dwa_chunks`]); then the pixels of the first layer. The layer's
+//! data window is the image (the display window is ignored).
+//!
+//! Render targets are written losslessly (ZIP) in their own sample type:
+//! R32F as one f32 channel `R`, Rgba16F as half channels `R`, `G`, `B`, `A`.
 
 use super::atomic::write_atomically;
 use super::{HdrImage, ImageError, ImageLimits, RenderTarget, TargetFormat};
+use exr::block::chunk::CompressedBlock;
+use exr::block::reader::ChunksReader;
+use exr::meta::attribute::IntegerBounds;
 use exr::meta::header::Header;
 use exr::prelude::{
-    f16, AnyChannel, AnyChannels, Encoding, FlatSamples, Image, Layer, LayerAttributes, MetaData,
-    ReadChannels, ReadLayers, WritableImage,
+    f16, AnyChannel, AnyChannels, Compression, Encoding, FlatSamples, Image, Layer,
+    LayerAttributes, MetaData, ReadChannels, ReadLayers, WritableImage,
 };
-use std::io::{BufRead, Seek};
+use std::io::{BufRead, Read, Seek};
 use std::path::Path;
 
 const FORMAT: &str = "OpenEXR";
@@ -75,11 +80,7 @@ pub(super) fn read(
     mut reader: impl BufRead + Seek,
     limits: &ImageLimits,
 ) -> Result<HdrImage, ImageError> {
-    let decode_error = |e: exr::error::Error| ImageError::Decode {
-        path: path.to_path_buf(),
-        format: FORMAT,
-        source: Box::new(e),
-    };
+    let decode_error = |e| decode_error(path, e);
     let meta = MetaData::read_from_buffered(&mut reader, false).map_err(decode_error)?;
     for header in &meta.headers {
         let size = header.layer_size;
@@ -102,10 +103,17 @@ pub(super) fn read(
         ));
     }
     let map = ChannelMap::for_header(path, header)?;
+    let rewind =
+        |reader: &mut dyn Seek| reader.rewind().map_err(|e| ImageError::io(path, "read", e));
+    if matches!(
+        header.compression,
+        Compression::DWAA(_) | Compression::DWAB(_)
+    ) {
+        rewind(&mut reader)?;
+        check_dwa_chunks(path, &mut reader)?;
+    }
 
-    reader
-        .rewind()
-        .map_err(|e| ImageError::io(path, "read", e))?;
+    rewind(&mut reader)?;
     let image = exr::prelude::read()
         .no_deep_data()
         .largest_resolution_level()
@@ -145,6 +153,97 @@ pub(super) fn read(
         height: height as u32,
         pixels,
     })
+}
+
+fn decode_error(path: &Path, e: exr::error::Error) -> ImageError {
+    ImageError::Decode {
+        path: path.to_path_buf(),
+        format: FORMAT,
+        source: Box::new(e),
+    }
+}
+
+/// Guards against a flaw in the `exr` crate (1.74): every DWA chunk starts
+/// with eleven u64 counters, and the decoder reserves memory for the sizes
+/// and counts they record (e.g. the DC count) before it inflates anything.
+/// A corrupt counter makes it ask for terabytes, and a failed allocation
+/// aborts the whole process: no error, no unwinding. One changed
+/// byte in `assets/hdr/city.exr` was enough. So every chunk the decoder will
+/// read (layer 0, full resolution, located through the same offset table)
+/// is checked first: none of its counters may exceed what the chunk's
+/// pixels can need.
+fn check_dwa_chunks(path: &Path, reader: impl Read + Seek) -> Result<(), ImageError> {
+    let chunks = exr::block::read(reader, false)
+        .and_then(|r| {
+            r.filter_chunks(false, |_, tile, block| {
+                block.layer == 0 && tile.is_largest_resolution_level()
+            })
+        })
+        .map_err(|e| decode_error(path, e))?;
+    let Some(header) = chunks.headers().first().cloned() else {
+        return Ok(()); // no layer, nothing to decode
+    };
+    for chunk in chunks {
+        let chunk = chunk.map_err(|e| decode_error(path, e))?;
+        let (tile, data) = match &chunk.compressed_block {
+            CompressedBlock::ScanLine(b) => {
+                let tile = header.get_scan_line_block_tile_coordinates(b.y_coordinate);
+                (tile, &b.compressed_pixels_le)
+            }
+            CompressedBlock::Tile(t) => (Ok(t.coordinates), &t.compressed_pixels_le),
+            // Deep data was refused with the header.
+            _ => continue,
+        };
+        let bounds = tile
+            .and_then(|tile| header.get_absolute_block_pixel_coordinates(tile))
+            .map_err(|e| decode_error(path, e))?;
+        check_dwa_counters(path, &header, bounds, data)?;
+    }
+    Ok(())
+}
+
+/// Checks the counters of one DWA chunk covering `bounds`.
+fn check_dwa_counters(
+    path: &Path,
+    header: &Header,
+    bounds: IntegerBounds,
+    data: &[u8],
+) -> Result<(), ImageError> {
+    let (width, height) = (bounds.size.width(), bounds.size.height());
+    let raw_bytes = width * height * header.channels.bytes_per_pixel;
+    // Empty chunks and chunks stored uncompressed have no counters.
+    if data.is_empty() || data.len() == raw_bytes {
+        return Ok(());
+    }
+    // Lossy channels are cut into 8x8 blocks: one DC and 63 AC
+    // coefficients each, at most one block set per channel.
+    let dct_blocks = width.div_ceil(8) * height.div_ceil(8) * header.channels.list.len();
+    // (counter index, name, largest sane value); the RLE stream of n bytes
+    // takes at most about n + n/127 bytes, so 2n + 64 is generous.
+    let limits = [
+        (1, "UNKNOWN uncompressed size", raw_bytes),
+        (6, "RLE uncompressed size", 2 * raw_bytes + 64),
+        (7, "RLE raw size", raw_bytes),
+        (8, "AC count", 63 * dct_blocks),
+        (9, "DC count", dct_blocks),
+    ];
+    for (index, name, limit) in limits {
+        // A chunk too short for its counters is left to the decoder, which
+        // reports it.
+        let Some(bytes) = data.get(8 * index..8 * index + 8) else {
+            continue;
+        };
+        let value = u64::from_le_bytes(bytes.try_into().unwrap_or_default());
+        if value > limit as u64 {
+            let problem = format!(
+                "{name} is {value}, but a {width}x{height} block needs at most {limit}; \
+                 the file is corrupt"
+            );
+            let field = format!("DWA chunk counters (block at y = {})", bounds.position.y());
+            return Err(ImageError::bad_header(path, FORMAT, field, problem));
+        }
+    }
+    Ok(())
 }
 
 /// Writes a render target as OpenEXR (ZIP-compressed scan lines), keeping its
@@ -262,6 +361,26 @@ mod tests {
         let err = load_default(&path).unwrap_err();
         assert!(matches!(err, ImageError::BadHeader { .. }), "{err}");
         assert!(err.to_string().contains("[Z]"), "{err}");
+    }
+
+    #[test]
+    fn corrupt_dwa_counter_is_an_error_not_an_abort() {
+        // city.exr (DWAB) has its first chunk at byte 1208: y (i32), size
+        // (i32), then the eleven u64 DWA counters; the DC count (counter 9)
+        // is 12288 = (1024/8) * (256/8) * 3 channels.
+        let mut bytes =
+            std::fs::read(concat!(env!("CARGO_MANIFEST_DIR"), "/assets/hdr/city.exr")).unwrap();
+        let dc_count = 1208 + 8 + 9 * 8;
+        assert_eq!(bytes[dc_count..dc_count + 8], 12288u64.to_le_bytes());
+        // One changed byte, as found by corrupting the file at random: the
+        // exr crate alone would try to reserve 2 * 85 * 2^40 bytes and abort.
+        bytes[dc_count + 5] = 85;
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("corrupt.exr");
+        std::fs::write(&path, bytes).unwrap();
+        let err = load_default(&path).unwrap_err();
+        assert!(matches!(err, ImageError::BadHeader { .. }), "{err}");
+        assert!(err.to_string().contains("DC count"), "{err}");
     }
 
     #[test]
