@@ -34,12 +34,15 @@ struct ChannelMap {
 impl ChannelMap {
     /// R, G, B (and A) when the file has them; a grey `Y` or lone `R` file
     /// fills R, G and B from its one channel. Alpha stays 1 without an `A`.
+    /// Luminance/chroma files (`Y`, `RY`, `BY`) are refused rather than read
+    /// as grey.
     fn for_header(path: &Path, header: &Header) -> Result<ChannelMap, ImageError> {
         let has = |name: &str| header.channels.list.iter().any(|c| c.name.eq(name));
-        let mut sources: Vec<(&'static str, &'static [usize])> = if has("R") && has("G") && has("B")
-        {
+        let rgb = has("R") && has("G") && has("B");
+        let chroma = has("RY") || has("BY");
+        let mut sources: Vec<(&'static str, &'static [usize])> = if rgb {
             vec![("R", &[0]), ("G", &[1]), ("B", &[2])]
-        } else if has("Y") {
+        } else if has("Y") && !chroma {
             vec![("Y", &[0, 1, 2])]
         } else if has("R") && !has("G") && !has("B") {
             vec![("R", &[0, 1, 2])]
@@ -51,7 +54,8 @@ impl ChannelMap {
                 .map(|c| c.name.to_string())
                 .collect();
             let problem = format!(
-                "needs channels R, G, B, or a single Y or R channel; the file has [{}]",
+                "needs channels R, G, B, or a single Y or R channel (luminance/chroma RY, BY \
+                 is not supported); the file has [{}]",
                 found.join(", ")
             );
             return Err(ImageError::bad_header(path, FORMAT, "channels", problem));
@@ -350,6 +354,21 @@ mod tests {
             image.pixels,
             vec![[0.25, 0.25, 0.25, 1.0], [4.0, 4.0, 4.0, 1.0]]
         );
+    }
+
+    #[test]
+    fn luminance_chroma_files_are_refused() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("yc.exr");
+        let channel = |name| AnyChannel::new(name, FlatSamples::F32(vec![1.0; 4]));
+        write_channels(
+            &path,
+            2,
+            2,
+            vec![channel("Y"), channel("RY"), channel("BY")],
+        );
+        let err = load_default(&path).unwrap_err();
+        assert!(err.to_string().contains("RY"), "{err}");
     }
 
     #[test]
