@@ -500,7 +500,10 @@ pub fn markdown_table() -> String {
             Class::Flow => "flow control",
             Class::Declaration => "declaration",
         };
-        s.push_str(&format!("| `{name}` | {slots} | {class} | {} |\n", r.summary));
+        s.push_str(&format!(
+            "| `{name}` | {slots} | {class} | {} |\n",
+            r.summary
+        ));
     }
     s
 }
