@@ -47,6 +47,10 @@ mod compile;
 mod exec;
 mod math;
 mod sample;
+#[cfg(test)]
+mod testasm;
+#[cfg(test)]
+mod tests;
 
 pub use compile::{compile, Compiled, MicroOp};
 
