@@ -5,7 +5,12 @@
 //! arithmetic and texture handlers are in `arith.rs`.
 //!
 //! Masks are `u64` bit sets, bit `l` = lane `l`:
-//! * `live`: lanes inside the target that are neither killed nor finished;
+//! * `live`: lanes of quads that touch the target, neither killed nor
+//!   finished. Lanes outside the target in such a quad are *helper* lanes:
+//!   they execute like the others (so a quad's `dsx`/`dsy` see real
+//!   neighbour values, whatever other quads of the batch do) but are never
+//!   reported; a helper lane exceeding the executed limit is dropped instead
+//!   of failing the draw;
 //! * `exec`: lanes executing the current op (`exec ⊆ live`). Lanes of `live`
 //!   not in `exec` wait in a [`Frame`]: the other side of an `if`, lanes that
 //!   left a loop by `break`, or lanes that did not take a `callnz`.
@@ -81,6 +86,8 @@ pub(crate) struct Worker<'c, 'a> {
     pub(super) exec: u64,
     pub(super) live: u64,
     killed: u64,
+    /// Lanes inside the target (reported; the others are helpers).
+    target: u64,
     /// Lanes that ended with `ret` in main (outputs already saved).
     done: u64,
     counts: [u64; LANES],
@@ -138,6 +145,7 @@ impl<'c, 'a> Worker<'c, 'a> {
             exec: 0,
             live: 0,
             killed: 0,
+            target: 0,
             done: 0,
             counts: [0; LANES],
             uniform: 0,
@@ -181,8 +189,16 @@ impl<'c, 'a> Worker<'c, 'a> {
         self.rows[pos] = xs;
         self.rows[pos + 1] = ys;
         self.p = [0; 4];
-        self.exec = target;
-        self.live = target;
+        // Whole quads run when any of their pixels is inside the target.
+        let mut live = 0u64;
+        for q in (0..LANES).step_by(4) {
+            if target & (0xf << q) != 0 {
+                live |= 0xf << q;
+            }
+        }
+        self.target = target;
+        self.exec = live;
+        self.live = live;
         self.killed = 0;
         self.done = 0;
         self.counts = [0; LANES];
@@ -207,7 +223,7 @@ impl<'c, 'a> Worker<'c, 'a> {
         self.check_limit(true)?;
         self.save_outputs(self.live, &mut out);
         out.written = self.written;
-        out.killed = self.killed;
+        out.killed = self.killed & self.target;
         out.executed = self.counts;
         Ok(out)
     }
@@ -248,14 +264,15 @@ impl<'c, 'a> Worker<'c, 'a> {
         }
     }
 
-    /// Fails if a pixel exceeded the executed-slot limit. Cheap unless the
-    /// bound says a lane might be over; `exact` forces the per-lane check.
+    /// Fails if a pixel exceeded the executed-slot limit (helper lanes over
+    /// it are dropped). Cheap unless the bound says a lane might be over;
+    /// `exact` forces the per-lane check.
     fn check_limit(&mut self, exact: bool) -> Result<(), EmuError> {
         let cap = self.ctx.cap;
         if !exact && self.bound + self.uniform <= cap {
             return Ok(());
         }
-        let mut max = 0;
+        let mut over = 0u64;
         for l in 0..LANES {
             let own = if self.live & (1 << l) != 0 {
                 self.uniform
@@ -264,17 +281,28 @@ impl<'c, 'a> Worker<'c, 'a> {
             };
             let total = self.counts[l] + own;
             if total > cap {
-                let (x, y, _) = self.ctx.lane_pixel(self.batch, l);
-                return Err(EmuError::ExecutedLimit {
-                    x: x as u32,
-                    y: y as u32,
-                    executed: total,
-                    limit: cap,
-                });
+                if self.target & (1 << l) != 0 {
+                    let (x, y, _) = self.ctx.lane_pixel(self.batch, l);
+                    return Err(EmuError::ExecutedLimit {
+                        x: x as u32,
+                        y: y as u32,
+                        executed: total,
+                        limit: cap,
+                    });
+                }
+                over |= 1 << l;
             }
-            max = max.max(self.counts[l]);
         }
-        self.bound = max;
+        if over & self.live != 0 {
+            self.flush();
+            self.live &= !over;
+            self.exec &= !over;
+        }
+        self.bound = (0..LANES)
+            .filter(|&l| self.live & (1 << l) != 0)
+            .map(|l| self.counts[l])
+            .max()
+            .unwrap_or(0);
         Ok(())
     }
 

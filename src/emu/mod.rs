@@ -34,11 +34,15 @@
 //! functions in `math.rs` and `sample.rs`, and here:
 //! * `texkill` removes a lane from execution at once (it stops paying); a
 //!   killed pixel's colours are reported as zero.
-//! * lanes outside the target are never live; they are computed alongside
-//!   live lanes when the mask is full (so they act as helper lanes for
-//!   `dsx`/`dsy`) but are never counted or reported.
+//! * pixels outside the target that share a quad with pixels inside it run
+//!   as helper lanes (as on hardware): they execute with their own flow
+//!   control so `dsx`/`dsy` see real neighbour values, but they are never
+//!   counted or reported, and one that exceeds the executed limit is dropped
+//!   rather than failing the draw. A pixel's results therefore do not depend
+//!   on the other quads of its batch.
 //! * `dsx`/`dsy` are coarse: one difference per quad (top-right − top-left,
-//!   bottom-left − top-left), read whatever the neighbour lane holds.
+//!   bottom-left − top-left), reading whatever the neighbour lane holds (its
+//!   last value if it is masked off or killed).
 //! * The sampler swizzle of texld (`s0.yzxw`) reorders the sampled result.
 //! * `texkill` tests the x, y, z components that its operand's mask selects.
 

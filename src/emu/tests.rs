@@ -1250,3 +1250,95 @@ fn compile_errors_are_typed() {
         EmuError::Malformed { .. }
     ));
 }
+
+// ----- timing (run with --release --ignored --nocapture) --------------------
+
+/// The typical luminance workload: rep 128 around 125 unrolled
+/// texld/dp4/log/add groups, ~64.7k executed slots per pixel.
+fn heavy_text(copies: usize) -> String {
+    let mut t = String::from(
+        "dcl_texcoord0 v0.xy
+         dcl_2d s0
+         def c0, 0, 0.001, 0, 0
+         def c1, 0.2126, 0.7152, 0.0722, 0
+         def c2, 0.0001, 0, 0, 0
+         defi i0, 128, 0, 0, 0
+         mov r0, c0.x
+         mov r1, v0
+         rep i0\n",
+    );
+    for k in 0..copies {
+        let dst = if k % 2 == 0 { "r2" } else { "r4" };
+        t += &format!(
+            "texld {dst}, r1, s0\ndp4 r3.x, {dst}, c1\nlog r3.y, r3.x\nadd r0.x, r0.x, r3.y\n"
+        );
+    }
+    t += "add r1.xy, r1, c0.y\nendrep\nmov oC0, r0\n";
+    t
+}
+
+#[test]
+#[ignore]
+fn perf_heavy_workload() {
+    let c = compiled(&heavy_text(125));
+    let texels: Vec<[f32; 4]> = (0..64 * 64)
+        .map(|i| [(i % 7) as f32 * 0.1 + 0.01, 0.5, 0.25, 1.0])
+        .collect();
+    let mut d = Draw::new(11, 8);
+    d.inputs.push((
+        0,
+        LinearInput {
+            base: [0.0, 0.0, 0.0, 0.0],
+            ddx: [1.0 / 11.0, 0.0, 0.0, 0.0],
+            ddy: [0.0, 1.0 / 8.0, 0.0, 0.0],
+        },
+    ));
+    d.samplers.push((
+        0,
+        Texture {
+            width: 64,
+            height: 64,
+            texels: &texels,
+        },
+        SamplerState::default(),
+    ));
+    for threads in [1, 2] {
+        let t = std::time::Instant::now();
+        let reps = 5;
+        let mut out = None;
+        for _ in 0..reps {
+            out = Some(run_with_threads(&c, &d, threads).unwrap());
+        }
+        let dt = t.elapsed() / reps;
+        let out = out.unwrap();
+        let slots: u64 = out.executed.iter().sum();
+        println!(
+            "{threads} thread(s): {:?} per draw, {} slots/pixel, {:.1} M slot-lanes/s",
+            dt,
+            out.executed[0],
+            slots as f64 / dt.as_secs_f64() / 1e6
+        );
+    }
+}
+
+#[test]
+fn helper_lanes_follow_their_own_flow_control() {
+    // A 3×1 target: pixel (2, 0)'s quad has helpers (3, 0), (2, 1), (3, 1).
+    // The branch makes lanes diverge; the helper at x = 3 still computes
+    // inside the branch, so dsx of the edge quad is the same as it would be
+    // in a 4-wide target. A second, unrelated quad diverging differently must
+    // not change that.
+    let text = "dcl_texcoord0 v0
+         def c0, 1.5, 0, 0, 0
+         mov r0, c0.y
+         if_gt v0.x, c0.x
+           mul r0.x, v0.x, v0.x
+         endif
+         dsx r1, r0
+         mov oC0, r1";
+    let narrow = run_text(text, &pos_draw(3, 1));
+    let wide = run_text(text, &pos_draw(4, 1));
+    assert_eq!(narrow.color[0].as_ref().unwrap()[2][0], 9.0 - 4.0);
+    assert_eq!(wide.color[0].as_ref().unwrap()[2][0], 9.0 - 4.0);
+    assert_eq!(narrow.executed, wide.executed[..3]);
+}
