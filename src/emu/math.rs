@@ -54,15 +54,68 @@ pub fn exp(x: f32) -> f32 {
 }
 
 /// `log`: log2(|x|), the sign bit ignored; log(0) = -FLT_MAX, not -infinity
-/// (MS `log---ps`).
+/// (MS `log---ps`); +inf gives +inf, NaN stays NaN.
+///
+/// log2 itself is [`log2`], a branch-free f32 port of fdlibm's `e_log2f.c`
+/// (FreeBSD msun) so that the lane loop vectorises and results do not depend
+/// on the platform's libm.
 #[inline(always)]
 pub fn log(x: f32) -> f32 {
     let v = x.abs();
-    if v == 0.0 {
+    let bits = v.to_bits();
+    let r = log2(v);
+    if bits == 0 {
         -FLT_MAX
+    } else if bits >= 0x7f80_0000 {
+        v
     } else {
-        v.log2()
+        r
     }
+}
+
+/// log2 of a positive, finite, non-zero f32 (other inputs give garbage; see
+/// [`log`]). Error below 1 ulp (checked against f64 in the tests).
+///
+/// Algorithm and constants from FreeBSD msun `e_log2f.c` and `k_logf.h`:
+///
+/// > Copyright (C) 1993 by Sun Microsystems, Inc. All rights reserved.
+/// > Developed at SunPro, a Sun Microsystems, Inc. business. Permission to
+/// > use, copy, modify, and distribute this software is freely granted,
+/// > provided that this notice is preserved.
+#[inline(always)]
+pub fn log2(x: f32) -> f32 {
+    // Exact bit patterns (`from_bits` folds at compile time).
+    let two25 = f32::from_bits(0x4c00_0000); // 2^25
+    let ivln2hi = f32::from_bits(0x3fb8_b000); // 1/ln 2, high part
+    let ivln2lo = f32::from_bits(0xb938_9ad4); // 1/ln 2, low part
+                                               // |(log(1+s)-log(1-s))/s - Lg(s)| < 2**-34.24
+    let lg1 = f32::from_bits(0x3f2a_aaaa); // 0xaaaaaa.0p-24
+    let lg2 = f32::from_bits(0x3ecc_ce13); // 0xccce13.0p-25
+    let lg3 = f32::from_bits(0x3e91_e9ee); // 0x91e9ee.0p-25
+    let lg4 = f32::from_bits(0x3e78_9e26); // 0xf89e26.0p-26
+    let sub = x.to_bits() < 0x0080_0000;
+    let x = if sub { x * two25 } else { x };
+    let hx = x.to_bits();
+    let mut k = (hx >> 23) as i32 - 127 - if sub { 25 } else { 0 };
+    let m = hx & 0x007f_ffff;
+    // Normalise the mantissa to [sqrt(2)/2, sqrt(2)).
+    let i = (m + 0x004a_fb0d) & 0x0080_0000;
+    let xm = f32::from_bits(m | (i ^ 0x3f80_0000));
+    k += (i >> 23) as i32;
+    let y = k as f32;
+    let f = xm - 1.0;
+    let hfsq = 0.5 * f * f;
+    // k_log1pf
+    let s = f / (2.0 + f);
+    let z = s * s;
+    let w = z * z;
+    let t1 = w * (lg2 + w * lg4);
+    let t2 = z * (lg1 + w * lg3);
+    let r = s * (hfsq + (t2 + t1));
+    // Split f - hfsq into hi + lo to keep the product with 1/ln 2 exact.
+    let hi = f32::from_bits((f - hfsq).to_bits() & 0xffff_f000);
+    let lo = (f - hi) - hfsq + r;
+    (lo + hi) * ivln2lo + lo * ivln2hi + hi * ivln2hi + y
 }
 
 /// `pow`: |a|^b (MS `pow---ps`). The page does not define 0^0 or 0^negative

@@ -24,9 +24,29 @@
 
 use super::{Address, Filter, SamplerState, Texture, LANES};
 
-/// Largest texture side accepted (keeps `n` exact in f32 and index maths in
-/// range).
-pub const MAX_TEXTURE_SIDE: u32 = 1 << 24;
+/// Largest texture side accepted (keeps texel coordinates below 2^23, where
+/// [`floor_index`] is exact).
+pub const MAX_TEXTURE_SIDE: u32 = 1 << 22;
+
+/// Texel index meaning "border colour" (textures have fewer texels).
+const BORDER: u32 = u32::MAX;
+
+/// `floor` without a libm call (baseline x86-64 has no rounding
+/// instruction): exact for every f32; NaN stays NaN. Only used for texel
+/// indices, where the sign of a zero does not matter.
+#[inline(always)]
+fn floor(x: f32) -> f32 {
+    if x.abs() < 8_388_608.0 {
+        let t = x as i32 as f32;
+        if t > x {
+            t - 1.0
+        } else {
+            t
+        }
+    } else {
+        x
+    }
+}
 
 /// A bound texture with its sampler state, sizes precomputed.
 #[derive(Clone, Copy, Debug)]
@@ -70,6 +90,18 @@ fn address(t: i64, n: i64, mode: Address) -> Option<i64> {
     }
 }
 
+/// floor(t) as an integer for 0 <= t < 2^23, using only float adds and bit
+/// operations so that lane loops vectorise (Rust's saturating `as i32` does
+/// not). Other inputs give unspecified values (callers discard them).
+#[inline(always)]
+fn floor_index(t: f32) -> u32 {
+    const MAGIC: f32 = 8_388_608.0; // 2^23
+                                    // Adding 2^23 rounds t to an integer (to nearest); step down if it went up.
+    let r = (t + MAGIC) - MAGIC;
+    let f = if r > t { r - 1.0 } else { r };
+    (f + MAGIC).to_bits().wrapping_sub(MAGIC.to_bits())
+}
+
 impl<'a> Sampler<'a> {
     /// Checks the texture's shape and precomputes sizes.
     pub fn new(tex: &Texture<'a>, state: &SamplerState) -> Result<Sampler<'a>, String> {
@@ -83,6 +115,12 @@ impl<'a> Sampler<'a> {
             ));
         }
         let want = tex.width as usize * tex.height as usize;
+        if want as u64 >= BORDER as u64 {
+            return Err(format!(
+                "size {}x{} has too many texels",
+                tex.width, tex.height
+            ));
+        }
         if tex.texels.len() != want {
             return Err(format!(
                 "{}x{} needs {} texels, got {}",
@@ -122,24 +160,25 @@ impl<'a> Sampler<'a> {
     #[inline(always)]
     pub fn point(&self, u: f32, v: f32) -> [f32; 4] {
         // `as` saturates (NaN gives 0), so any coordinate is safe.
-        let x = (u * self.wf).floor() as i64;
-        let y = (v * self.hf).floor() as i64;
+        let x = floor(u * self.wf) as i64;
+        let y = floor(v * self.hf) as i64;
         self.fetch(address(x, self.wi, self.au), address(y, self.hi, self.av))
     }
 
-    /// Point sampling with BORDER on both axes: the luminance-pass default.
+    /// Texel index for point sampling with BORDER on both axes (the
+    /// luminance-pass default), or [`BORDER`]. NaN fails the comparisons.
     #[inline(always)]
-    pub fn point_border(&self, u: f32, v: f32) -> [f32; 4] {
-        let x = (u * self.wf).floor();
-        let y = (v * self.hf).floor();
-        // NaN fails both comparisons and takes the border colour.
-        if x >= 0.0 && x < self.wf && y >= 0.0 && y < self.hf {
-            self.texels
-                .get(y as usize * self.w + x as usize)
-                .copied()
-                .unwrap_or(self.border)
+    fn point_border_index(&self, u: f32, v: f32) -> u32 {
+        let x = u * self.wf;
+        let y = v * self.hf;
+        let inside = x >= 0.0 && x < self.wf && y >= 0.0 && y < self.hf;
+        let i = floor_index(y)
+            .wrapping_mul(self.w as u32)
+            .wrapping_add(floor_index(x));
+        if inside {
+            i
         } else {
-            self.border
+            BORDER
         }
     }
 
@@ -147,7 +186,7 @@ impl<'a> Sampler<'a> {
     pub fn linear(&self, u: f32, v: f32) -> [f32; 4] {
         let fu = u * self.wf - 0.5;
         let fv = v * self.hf - 0.5;
-        let (tu, tv) = (fu.floor(), fv.floor());
+        let (tu, tv) = (floor(fu), floor(fv));
         let (wx, wy) = (fu - tu, fv - tv);
         let (x0, y0) = (tu as i64, tv as i64);
         let x = [
@@ -181,10 +220,24 @@ impl<'a> Sampler<'a> {
     ) {
         match (self.filter, self.au, self.av) {
             (Filter::Point, Address::Border, Address::Border) => {
+                // Indices first (vectorises), then the gather.
+                let mut idx = [BORDER; LANES];
                 for l in 0..LANES {
-                    let t = self.point_border(u[l], v[l]);
-                    for c in 0..4 {
-                        out[c][l] = t[swz[c]];
+                    idx[l] = self.point_border_index(u[l], v[l]);
+                }
+                if swz == [0, 1, 2, 3] {
+                    for l in 0..LANES {
+                        let t = self.texels.get(idx[l] as usize).unwrap_or(&self.border);
+                        for c in 0..4 {
+                            out[c][l] = t[c];
+                        }
+                    }
+                } else {
+                    for l in 0..LANES {
+                        let t = self.texels.get(idx[l] as usize).unwrap_or(&self.border);
+                        for c in 0..4 {
+                            out[c][l] = t[swz[c]];
+                        }
                     }
                 }
             }
