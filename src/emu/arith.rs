@@ -406,7 +406,25 @@ impl Worker<'_, '_> {
                 v[l] = modify(sv[l], am, ax);
             }
         }
-        match self.ctx.samplers.get(s.index as usize).copied().flatten() {
+        let sampler = self.ctx.samplers.get(s.index as usize).copied().flatten();
+        // Unmasked full writes gather straight into the destination rows (the
+        // coordinates are already in `aux`, so nothing reads them).
+        if let Some(sampler) = sampler {
+            if d.mask() == 0xf && self.exec == self.live && !d.predicated() {
+                let base = d.row as usize;
+                if let Some(dst) = self.rows.get_mut(base..base + 4) {
+                    if let Ok(dst) = <&mut [[f32; LANES]; 4]>::try_from(dst) {
+                        sampler.sample_lanes(&self.aux[0], &self.aux[1], swz, dst);
+                        if d.output() {
+                            let k = (base - self.ctx.compiled.layout.output as usize) / 4;
+                            self.written |= 1 << k;
+                        }
+                        return;
+                    }
+                }
+            }
+        }
+        match sampler {
             Some(sampler) => sampler.sample_lanes(&self.aux[0], &self.aux[1], swz, &mut self.tmp),
             None => {
                 for c in 0..4 {

@@ -796,6 +796,18 @@ pub fn compile(shader: &Shader) -> Result<Compiled, EmuError> {
                 if m.relative {
                     return Err(malformed(i, "relative matrix operand"));
                 }
+                let limit = match m.reg.file {
+                    RegFile::Temp => TEMPS,
+                    RegFile::Const => CONSTS,
+                    RegFile::Input => INPUTS,
+                    _ => 0,
+                };
+                if m.reg.index + rows as u32 > limit {
+                    return Err(malformed(
+                        i,
+                        format!("matrix rows {}..+{} do not exist", m.reg, rows),
+                    ));
+                }
                 let s1 = b.src(i, m)?;
                 Op::Mat {
                     d,

@@ -7,8 +7,9 @@
 //! counts it reports must agree with the static cost model.
 //!
 //! How it works:
-//! * [`compile`] turns a [`crate::ir::Shader`] into a flat list of small
-//!   `Copy` micro-ops once ([`compile`] module docs give the register layout).
+//! * [`compile()`] turns a [`crate::ir::Shader`] into a flat list of small
+//!   `Copy` micro-ops ([`MicroOp`], 20 bytes) once: registers become row
+//!   offsets, jumps become op indices, every op carries its slot cost.
 //! * The executor runs [`LANES`] pixels in lockstep: lanes `4k..4k+3` are one
 //!   2×2 quad (top-left, top-right, bottom-left, bottom-right), quads are
 //!   taken in row-major order over the quad grid, 16 quads per batch.
@@ -45,6 +46,14 @@
 //!   last value if it is masked off or killed).
 //! * The sampler swizzle of texld (`s0.yzxw`) reorders the sampled result.
 //! * `texkill` tests the x, y, z components that its operand's mask selects.
+//! * `_pp` is ignored (computed in full f32 precision, which MS-MOD allows).
+//! * rep/loop counts are used as given (negative = 0 iterations); values
+//!   outside the documented [0, 255] are not clamped — the executed limit
+//!   bounds them.
+//! * `log` and texel addressing are implemented here in plain f32 so they
+//!   are identical on every platform; `exp`, `pow`, `sincos` use Rust's
+//!   `f32` functions (the platform libm), whose last bit may differ between
+//!   platforms.
 
 mod arith;
 mod compile;
@@ -64,6 +73,7 @@ use rayon::prelude::*;
 use sample::Sampler;
 use std::fmt;
 use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::{Arc, Mutex, OnceLock};
 
 /// Lanes per batch: 16 quads of 2×2 pixels.
 pub const LANES: usize = 64;
@@ -557,11 +567,7 @@ pub fn run_with_threads(
         written = if threads == 0 {
             all()?
         } else {
-            rayon::ThreadPoolBuilder::new()
-                .num_threads(threads)
-                .build()
-                .map_err(|e| EmuError::ThreadPool(e.to_string()))?
-                .install(all)?
+            pool(threads)?.install(all)?
         };
     }
     for (i, c) in out.color.iter_mut().enumerate() {
@@ -573,6 +579,26 @@ pub fn run_with_threads(
         out.depth = None;
     }
     Ok(out)
+}
+
+/// A rayon pool with `threads` threads, built once per thread count and kept
+/// (building one costs more than a small draw).
+fn pool(threads: usize) -> Result<Arc<rayon::ThreadPool>, EmuError> {
+    type Pools = Mutex<Vec<(usize, Arc<rayon::ThreadPool>)>>;
+    static POOLS: OnceLock<Pools> = OnceLock::new();
+    let pools = POOLS.get_or_init(|| Mutex::new(Vec::new()));
+    let mut pools = pools.lock().unwrap_or_else(|e| e.into_inner());
+    if let Some((_, p)) = pools.iter().find(|(n, _)| *n == threads) {
+        return Ok(p.clone());
+    }
+    let p = Arc::new(
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .map_err(|e| EmuError::ThreadPool(e.to_string()))?,
+    );
+    pools.push((threads, p.clone()));
+    Ok(p)
 }
 
 /// Copies one batch's results into the output; returns its written-output

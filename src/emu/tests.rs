@@ -1232,7 +1232,31 @@ fn draw_errors_are_typed() {
 }
 
 #[test]
+fn application_int_and_bool_constants() {
+    let text = "def c0, 1, 0, 0, 0
+         mov r0, c0.y
+         rep i1
+           add r0.x, r0.x, c0.x
+         endrep
+         if b3
+           add r0.y, r0.y, c0.x
+         endif
+         defb b4, true
+         if !b4
+           add r0.z, r0.z, c0.x
+         endif
+         mov oC0, r0";
+    let mut d = Draw::new(1, 1);
+    d.constants.int = vec![[0; 4], [7, 0, 0, 0]];
+    d.constants.bool = vec![false, false, false, true, false];
+    let out = run_text(text, &d);
+    assert_eq!(out.color[0].as_ref().unwrap()[0], [7.0, 1.0, 0.0, 0.0]);
+}
+
+#[test]
 fn compile_errors_are_typed() {
+    let e = compile(&shader("dcl_texcoord0 v8\nm4x4 r0, c0, v8\nmov oC0, r0")).unwrap_err();
+    assert!(matches!(e, EmuError::Malformed { index: 0, .. }), "{e}");
     let e = compile(&shader("texld r0, c0, s2\nmov oC0, r0")).unwrap_err();
     assert_eq!(
         e,
@@ -1275,6 +1299,76 @@ fn heavy_text(copies: usize) -> String {
     }
     t += "add r1.xy, r1, c0.y\nendrep\nmov oC0, r0\n";
     t
+}
+
+/// Nested reps (32 × 16) around a few texture reads and arithmetic.
+fn nested_text() -> String {
+    String::from(
+        "dcl_texcoord0 v0.xy
+         dcl_2d s0
+         def c0, 0, 0.002, 0.5, 1
+         def c1, 0.2126, 0.7152, 0.0722, 0
+         defi i0, 32, 0, 0, 0
+         defi i1, 16, 0, 0, 0
+         mov r0, c0.x
+         mov r1, v0
+         rep i0
+           rep i1
+             texld r2, r1, s0
+             dp3 r3.x, r2, c1
+             mad r3.y, r3.x, c0.z, c0.w
+             log r3.z, r3.y
+             add r0.x, r0.x, r3.z
+             add r1.xy, r1, c0.y
+           endrep
+           mul r0.y, r0.x, c0.z
+         endrep
+         mov oC0, r0",
+    )
+}
+
+#[test]
+#[ignore]
+fn perf_nested_workload() {
+    let c = compiled(&nested_text());
+    let texels: Vec<[f32; 4]> = (0..64 * 64)
+        .map(|i| [(i % 5) as f32 * 0.2 + 0.01, 0.5, 0.25, 1.0])
+        .collect();
+    let mut d = Draw::new(10, 19);
+    d.inputs.push((
+        0,
+        LinearInput {
+            base: [0.0; 4],
+            ddx: [0.1, 0.0, 0.0, 0.0],
+            ddy: [0.0, 1.0 / 19.0, 0.0, 0.0],
+        },
+    ));
+    d.samplers.push((
+        0,
+        Texture {
+            width: 64,
+            height: 64,
+            texels: &texels,
+        },
+        SamplerState::default(),
+    ));
+    for threads in [1, 2] {
+        let mut dt = std::time::Duration::MAX;
+        let mut out = None;
+        for _ in 0..30 {
+            let t = std::time::Instant::now();
+            out = Some(run_with_threads(&c, &d, threads).unwrap());
+            dt = dt.min(t.elapsed());
+        }
+        let out = out.unwrap();
+        let slots: u64 = out.executed.iter().sum();
+        println!(
+            "nested, {threads} thread(s): {:?} per draw, {} slots/pixel, {:.1} M slot-lanes/s",
+            dt,
+            out.executed[0],
+            slots as f64 / dt.as_secs_f64() / 1e6
+        );
+    }
 }
 
 #[test]
@@ -1419,4 +1513,42 @@ fn point_sampling_at_texel_boundaries() {
     assert_eq!(sample_row4(f32::NAN, Filter::Point, Address::Wrap), 1.0);
     assert_eq!(sample_row4(-1e30, Filter::Point, Address::Mirror), 1.0);
     assert_eq!(sample_row4(1e30, Filter::Linear, Address::Clamp), 4.0);
+}
+
+#[test]
+fn texld_into_outputs_and_inside_divergent_branches() {
+    let tex = [[1.0, 2.0, 3.0, 4.0], [5.0, 6.0, 7.0, 8.0]];
+    let text = "dcl_texcoord0 v0
+         dcl_2d s0
+         def c0, 0.5, 0, 0, 0
+         def c1, 9, 9, 9, 9
+         texld oC2, v0, s0
+         mov r0, c1
+         if_lt v0.x, c0.x
+           texld r0, v0, s0
+         endif
+         mov oC0, r0";
+    let mut d = Draw::new(4, 1);
+    d.inputs.push((
+        0,
+        LinearInput {
+            base: [0.125, 0.5, 0.0, 0.0],
+            ddx: [0.25, 0.0, 0.0, 0.0],
+            ddy: [0.0; 4],
+        },
+    ));
+    d.samplers.push((
+        0,
+        Texture {
+            width: 2,
+            height: 1,
+            texels: &tex,
+        },
+        SamplerState::default(),
+    ));
+    let out = run_text(text, &d);
+    let c2 = out.color[2].as_ref().unwrap();
+    assert_eq!(c2, &vec![tex[0], tex[0], tex[1], tex[1]]);
+    let c0 = out.color[0].as_ref().unwrap();
+    assert_eq!(c0, &vec![tex[0], tex[0], [9.0; 4], [9.0; 4]]);
 }
