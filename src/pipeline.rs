@@ -99,7 +99,9 @@ impl std::fmt::Display for PipelineError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
             PipelineError::Source(e) => write!(f, "{e}"),
-            PipelineError::Cost(e) | PipelineError::Reference(e) | PipelineError::Mismatch(e) => f.write_str(e),
+            PipelineError::Cost(e) | PipelineError::Reference(e) | PipelineError::Mismatch(e) => {
+                f.write_str(e)
+            }
             PipelineError::Emu(e) => write!(f, "emulator: {e}"),
         }
     }
@@ -212,13 +214,22 @@ impl LuminanceRun {
 
     /// Everything agrees: blocks, pass 2 and L̄w, and the counts.
     pub fn all_agree(&self) -> bool {
-        self.blocks_agree() && self.pass2_check.agree && self.agree && self.pass1.counts_agree && self.pass2.counts_agree
+        self.blocks_agree()
+            && self.pass2_check.agree
+            && self.agree
+            && self.pass1.counts_agree
+            && self.pass2.counts_agree
     }
 }
 
 /// Per-block error bounds of pass 1 in the shader's order (row by row,
 /// left to right), with the number of ill-conditioned terms.
-pub fn pass1_bounds(image: &HdrImage, block: (u32, u32), delta: f64, policy: Policy) -> (Vec<Vec<f64>>, u64) {
+pub fn pass1_bounds(
+    image: &HdrImage,
+    block: (u32, u32),
+    delta: f64,
+    policy: Policy,
+) -> (Vec<Vec<f64>>, u64) {
     let (bw, bh) = block;
     let nx = image.width.div_ceil(bw);
     let ny = image.height.div_ceil(bh);
@@ -235,8 +246,13 @@ pub fn pass1_bounds(image: &HdrImage, block: (u32, u32), delta: f64, policy: Pol
                     let (t, e) = if x < image.width && y < image.height {
                         let p = image.pixel(x, y);
                         let l = reference::luminance(p);
-                        let Some(t) = policy.term(l, delta) else { continue };
-                        let a = 0.27 * (p[0] as f64).abs() + 0.67 * (p[1] as f64).abs() + 0.06 * (p[2] as f64).abs() + delta;
+                        let Some(t) = policy.term(l, delta) else {
+                            continue;
+                        };
+                        let a = 0.27 * (p[0] as f64).abs()
+                            + 0.67 * (p[1] as f64).abs()
+                            + 0.06 * (p[2] as f64).abs()
+                            + delta;
                         let x_exact = (delta + l).abs();
                         let abs_err = 8.0 * U32 * a;
                         if !(abs_err < x_exact / 2.0) {
@@ -244,7 +260,10 @@ pub fn pass1_bounds(image: &HdrImage, block: (u32, u32), delta: f64, policy: Pol
                         }
                         (t, abs_err / (x_exact * std::f64::consts::LN_2) + ulp32(t))
                     } else {
-                        (padded_term, 8.0 * U32 / std::f64::consts::LN_2 + ulp32(padded_term))
+                        (
+                            padded_term,
+                            8.0 * U32 / std::f64::consts::LN_2 + ulp32(padded_term),
+                        )
                     };
                     partial += t;
                     accumulation += partial.abs();
@@ -317,8 +336,13 @@ fn draw_into(
     Ok((target, Range { min, max }))
 }
 
-fn pass_cost(loaded: &front::Loaded, env: &Environment, emulated: Range) -> Result<(PassCost, cost::Analysis), PipelineError> {
-    let a = cost::analyse(&loaded.shader, &loaded.file, env, &Profile::ps_3_0()).map_err(|e| PipelineError::Cost(e.to_string()))?;
+fn pass_cost(
+    loaded: &front::Loaded,
+    env: &Environment,
+    emulated: Range,
+) -> Result<(PassCost, cost::Analysis), PipelineError> {
+    let a = cost::analyse(&loaded.shader, &loaded.file, env, &Profile::ps_3_0())
+        .map_err(|e| PipelineError::Cost(e.to_string()))?;
     Ok((
         PassCost {
             shader: loaded.file.name.clone(),
@@ -333,10 +357,17 @@ fn pass_cost(loaded: &front::Loaded, env: &Environment, emulated: Range) -> Resu
 }
 
 /// Runs pass 1 and pass 2 on an image and cross-checks every step.
-pub fn run(image: &HdrImage, pass1: &ShaderSource, pass2: &ShaderSource, s: &Settings) -> Result<LuminanceRun, PipelineError> {
+pub fn run(
+    image: &HdrImage,
+    pass1: &ShaderSource,
+    pass2: &ShaderSource,
+    s: &Settings,
+) -> Result<LuminanceRun, PipelineError> {
     let (bw, bh) = s.block;
     if bw == 0 || bh == 0 {
-        return Err(PipelineError::Mismatch("block sides must be at least 1".into()));
+        return Err(PipelineError::Mismatch(
+            "block sides must be at least 1".into(),
+        ));
     }
     let (w, h) = (image.width, image.height);
     let (nx, ny) = (w.div_ceil(bw), h.div_ceil(bh));
@@ -349,7 +380,8 @@ pub fn run(image: &HdrImage, pass1: &ShaderSource, pass2: &ShaderSource, s: &Set
     let mut env1 = Environment::default();
     env1.ints.insert(1, [bw as i32, 0, 0, 0]);
     env1.ints.insert(2, [bh as i32, 0, 0, 0]);
-    let static1 = cost::analyse(&l1.shader, &l1.file, &env1, &Profile::ps_3_0()).map_err(|e| PipelineError::Cost(e.to_string()))?;
+    let static1 = cost::analyse(&l1.shader, &l1.file, &env1, &Profile::ps_3_0())
+        .map_err(|e| PipelineError::Cost(e.to_string()))?;
     let reads: u64 = l1
         .shader
         .instructions()
@@ -377,16 +409,26 @@ pub fn run(image: &HdrImage, pass1: &ShaderSource, pass2: &ShaderSource, s: &Set
     ));
     let root = (s.delta).sqrt();
     d1.constants = Constants {
-        float: vec![[0.0; 4], [1.0 / w as f32, 1.0 / h as f32, 0.0, 1.0], [0.0; 4], [0.27, 0.67, 0.06, root]],
+        float: vec![
+            [0.0; 4],
+            [1.0 / w as f32, 1.0 / h as f32, 0.0, 1.0],
+            [0.0; 4],
+            [0.27, 0.67, 0.06, root],
+        ],
         int: vec![[0; 4], [bw as i32, 0, 0, 0], [bh as i32, 0, 0, 0]],
         bool: Vec::new(),
     };
-    d1.samplers.push(sampler(Texture { width: w, height: h, texels: &image.pixels }));
+    d1.samplers.push(sampler(Texture {
+        width: w,
+        height: h,
+        texels: &image.pixels,
+    }));
     let (t1, emulated1) = draw_into(&c1, &d1, s.format, s.threads)?;
     let (pass1_cost, _) = pass_cost(&l1, &env1, emulated1)?;
 
     // Reference and bounds for pass 1.
-    let refs = reference::block_sums(image, delta, s.policy, bw, bh).map_err(|e| PipelineError::Reference(e.to_string()))?;
+    let refs = reference::block_sums(image, delta, s.policy, bw, bh)
+        .map_err(|e| PipelineError::Reference(e.to_string()))?;
     let (bounds, ill) = pass1_bounds(image, s.block, delta, s.policy);
     let mut blocks = Vec::with_capacity((nx * ny) as usize);
     for by in 0..ny {
@@ -411,7 +453,10 @@ pub fn run(image: &HdrImage, pass1: &ShaderSource, pass2: &ShaderSource, s: &Set
     let l2 = load(pass2, &[("xsize", nx as u64), ("ysize", ny as u64)])?;
     let c2 = emu::compile(&l2.shader).map_err(PipelineError::Emu)?;
     let mut d2 = Draw::new(1, 1);
-    d2.inputs.push((0, LinearInput::constant([0.5 / nx as f32, 0.5 / ny as f32, 0.0, 0.0])));
+    d2.inputs.push((
+        0,
+        LinearInput::constant([0.5 / nx as f32, 0.5 / ny as f32, 0.0, 0.0]),
+    ));
     let correction = -(padded as f64) * (delta.log2()) / n_pixels;
     d2.constants = Constants {
         float: vec![
@@ -443,7 +488,9 @@ pub fn run(image: &HdrImage, pass1: &ShaderSource, pass2: &ShaderSource, s: &Set
     // Sum rounding; 1/N and the product (2u relative), the mad's addition
     // (u), exp's result (≤ 1 ulp, 2u relative), storage.
     let rel2 = std::f64::consts::LN_2
-        * (U32 * accumulation * (1.0 + (nx * ny) as f64 * U32) / n_pixels + 2.0 * U32 * (partial / n_pixels).abs() + U32 * mean2.abs())
+        * (U32 * accumulation * (1.0 + (nx * ny) as f64 * U32) / n_pixels
+            + 2.0 * U32 * (partial / n_pixels).abs()
+            + U32 * mean2.abs())
         + 2.0 * U32
         + storage_bound(s.format, expected2) / expected2.max(f64::MIN_POSITIVE);
     let pass2_check = Comparison::new(log_average, expected2, rel2 * expected2);
@@ -485,13 +532,150 @@ pub fn run(image: &HdrImage, pass1: &ShaderSource, pass2: &ShaderSource, s: &Set
 /// article's listing multiplies by c0.x only.
 fn reads_c0y(l: &front::Loaded) -> bool {
     l.shader.instructions().iter().any(|i| {
-        i.src
-            .iter()
-            .any(|s| s.reg.file == crate::isa::RegFile::Const && s.reg.index == 0 && s.swizzle.0.contains(&1))
+        i.src.iter().any(|s| {
+            s.reg.file == crate::isa::RegFile::Const && s.reg.index == 0 && s.swizzle.0.contains(&1)
+        })
     })
 }
 
 /// The per-block sums as a map keyed by (row, column), for reports.
 pub fn block_map(run: &LuminanceRun) -> BTreeMap<(u32, u32), &BlockCheck> {
     run.blocks.iter().map(|b| ((b.y, b.x), b)).collect()
+}
+
+/// The JSON form of a run (`ps30 luminance --json`).
+pub fn run_json(image: &str, r: &LuminanceRun) -> serde_json::Value {
+    use crate::report::range_json;
+    serde_json::json!({
+        "image": image,
+        "width": r.width,
+        "height": r.height,
+        "log_average": r.log_average,
+        "reference_log_average": r.reference_log_average,
+        "relative_error": r.relative_error,
+        "relative_tolerance": r.relative_tolerance,
+        "agree": r.all_agree(),
+        "log_average_agrees": r.agree,
+        "blocks_agree": r.blocks_agree(),
+        "target_format": r.target_format.d3d_name(),
+        "delta": r.delta,
+        "block": [r.block.0, r.block.1],
+        "targets": [r.targets.0, r.targets.1],
+        "padded_samples": r.padded_samples,
+        "padding_factor": r.padding_factor,
+        "executed_per_pixel": {
+            "pass1": range_json(r.pass1.executed_emulated),
+            "pass2": range_json(r.pass2.executed_emulated),
+        },
+        "passes": [&r.pass1, &r.pass2],
+        "pass2_check": &r.pass2_check,
+        "ill_conditioned_pixels": r.ill_conditioned,
+        "negative_pixels": r.negative_pixels,
+        "nonfinite_pixels": r.nonfinite_pixels,
+        "blocks": &r.blocks,
+    })
+}
+
+fn pass_line(label: &str, p: &PassCost) -> String {
+    use crate::report::range_text;
+    format!(
+        "{label} {}: {} slots, {} executed per pixel (emulator counted {}{})\n",
+        p.shader,
+        p.slots,
+        range_text(p.executed_static),
+        range_text(p.executed_emulated),
+        if p.counts_agree {
+            ", same"
+        } else {
+            ", DIFFERENT"
+        }
+    )
+}
+
+/// The text form of a run (`ps30 luminance`).
+pub fn run_text(image: &str, r: &LuminanceRun) -> String {
+    let mut s = format!(
+        "{image}: {}×{}, blocks {}×{} → {}×{} target ({}), δ = {}\n",
+        r.width,
+        r.height,
+        r.block.0,
+        r.block.1,
+        r.targets.0,
+        r.targets.1,
+        r.target_format.d3d_name(),
+        r.delta
+    );
+    s.push_str(&pass_line("pass 1", &r.pass1));
+    s.push_str(&pass_line("pass 2", &r.pass2));
+    let agreeing = r.blocks.iter().filter(|b| b.agree).count();
+    let worst = r
+        .blocks
+        .iter()
+        .max_by(|a, b| (a.difference / a.tolerance).total_cmp(&(b.difference / b.tolerance)));
+    s.push_str(&format!(
+        "blocks: {agreeing} of {} agree with the f64 reference",
+        r.blocks.len()
+    ));
+    if let Some(w) = worst {
+        s.push_str(&format!(
+            " (largest difference/tolerance: {:.3} at block {},{}: {:.4} vs {:.4}, tolerance {:.3})",
+            w.difference / w.tolerance,
+            w.x,
+            w.y,
+            w.emulated,
+            w.reference,
+            w.tolerance
+        ));
+    }
+    s.push('\n');
+    let bad: Vec<&BlockCheck> = r.blocks.iter().filter(|b| !b.agree).collect();
+    if !bad.is_empty() {
+        s.push_str("disagreeing blocks (column, row: emulated vs reference, difference):\n");
+        for b in bad.iter().take(12) {
+            s.push_str(&format!(
+                "  {:>3},{:<3} {:>14.3} vs {:>14.3}  {:>12.3}\n",
+                b.x, b.y, b.emulated, b.reference, b.difference
+            ));
+        }
+        if bad.len() > 12 {
+            s.push_str(&format!("  … and {} more\n", bad.len() - 12));
+        }
+        let cols: std::collections::BTreeSet<u32> = bad.iter().map(|b| b.x).collect();
+        if !cols.contains(&0) {
+            s.push_str(
+                "  every block of column 0 agrees: the error grows with the block's u offset\n",
+            );
+        }
+    }
+    s.push_str(&format!(
+        "pass 2: L̄w {:.7} vs {:.7} from the stored pass-1 target ({})\n",
+        r.pass2_check.emulated,
+        r.pass2_check.reference,
+        if r.pass2_check.agree {
+            "agree"
+        } else {
+            "DISAGREE"
+        }
+    ));
+    s.push_str(&format!(
+        "L̄w: emulated {:.7}, reference {:.7} (every pixel once), relative error {:.2e}, tolerance {:.2e}: {}\n",
+        r.log_average,
+        r.reference_log_average,
+        r.relative_error,
+        r.relative_tolerance,
+        if r.agree { "agree" } else { "DISAGREE" }
+    ));
+    if r.padded_samples > 0 {
+        s.push_str(&format!(
+            "padding: {} samples read outside the image; left uncorrected they scale L̄w by {:.4}\n",
+            r.padded_samples, r.padding_factor
+        ));
+    }
+    if r.ill_conditioned > 0 {
+        s.push_str(&format!(
+            "note: {} pixels have δ + L so close to 0 that f32 cannot bound their term\n",
+            r.ill_conditioned
+        ));
+    }
+    s
 }

@@ -149,13 +149,9 @@ pub struct SamplerState {
     pub border: [f32; 4],
 }
 
-/// A 2D texture, one mip level, RGBA f32 texels, row 0 at the top.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Texture<'a> {
-    pub width: u32,
-    pub height: u32,
-    pub texels: &'a [[f32; 4]],
-}
+/// Textures are the image module's read-only texel views (one mip level,
+/// RGBA f32, row 0 at the top).
+pub use crate::image::Texture;
 
 /// Safety limits of a draw.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
