@@ -146,6 +146,8 @@ pub struct BlockCheck {
     /// The derived bound on |emulated − reference|.
     pub tolerance: f64,
     pub agree: bool,
+    /// The target format cannot hold the block's sum (f16 beyond ±65504).
+    pub overflow: bool,
 }
 
 /// A scalar comparison with its derived bound.
@@ -166,7 +168,9 @@ impl Comparison {
             reference,
             difference,
             tolerance,
-            agree: difference <= tolerance,
+            // A value the target format cannot hold (f16 overflow) has no
+            // finite bound: that is a disagreement, never a pass.
+            agree: difference <= tolerance && tolerance.is_finite() && emulated.is_finite(),
         }
     }
 }
@@ -437,6 +441,7 @@ pub fn run(
             let reference = refs.sums[by as usize][bx as usize];
             let tol = bounds[by as usize][bx as usize] + storage_bound(s.format, reference);
             let c = Comparison::new(emulated, reference, tol);
+            let overflow = !emulated.is_finite() || !tol.is_finite();
             blocks.push(BlockCheck {
                 x: bx,
                 y: by,
@@ -445,6 +450,7 @@ pub fn run(
                 difference: c.difference,
                 tolerance: c.tolerance,
                 agree: c.agree,
+                overflow,
             });
         }
     }
@@ -520,7 +526,7 @@ pub fn run(
         reference_log_average: true_ref.log_average,
         relative_error,
         relative_tolerance,
-        agree: relative_error <= relative_tolerance,
+        agree: relative_error <= relative_tolerance && relative_tolerance.is_finite(),
         padding_factor,
         ill_conditioned: ill,
         nonfinite_pixels: stats.non_finite,
@@ -629,6 +635,13 @@ pub fn run_text(image: &str, r: &LuminanceRun) -> String {
     }
     s.push('\n');
     let bad: Vec<&BlockCheck> = r.blocks.iter().filter(|b| !b.agree).collect();
+    let overflowed = r.blocks.iter().filter(|b| b.overflow).count();
+    if overflowed > 0 {
+        s.push_str(&format!(
+            "{overflowed} block sums overflow {} (beyond ±65,504): the target cannot hold them\n",
+            r.target_format.d3d_name()
+        ));
+    }
     if !bad.is_empty() {
         s.push_str("disagreeing blocks (column, row: emulated vs reference, difference):\n");
         for b in bad.iter().take(12) {
