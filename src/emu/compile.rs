@@ -406,6 +406,9 @@ pub struct Compiled {
     pub(crate) reads_al: bool,
     /// Which outputs the program writes at all (bit i = oC#, bit 4 = oDepth).
     pub(crate) outputs: u8,
+    /// `i#` used by rep / by loop (bit per register).
+    pub(crate) rep_ints: u16,
+    pub(crate) loop_ints: u16,
 }
 
 impl Compiled {
@@ -727,6 +730,7 @@ pub fn compile(shader: &Shader) -> Result<Compiled, EmuError> {
     let mut ops = Vec::with_capacity(n + 1);
     let mut grads = Vec::new();
     let mut open_loops = 0u32;
+    let (mut rep_ints, mut loop_ints) = (0u16, 0u16);
     for (i, x) in ins.iter().enumerate() {
         let slots = u8::try_from(info.slots[i])
             .map_err(|_| malformed(i, format!("slot cost {} too large", info.slots[i])))?;
@@ -902,8 +906,10 @@ pub fn compile(shader: &Shader) -> Result<Compiled, EmuError> {
             Opcode::EndIf => Op::EndIf,
             Opcode::Rep => {
                 open_loops += 1;
+                let int = int_reg(i, x.src.first())?;
+                rep_ints |= 1 << int;
                 Op::Rep {
-                    int: int_reg(i, x.src.first())?,
+                    int,
                     end: b.target(i, &[Opcode::EndRep], ins)?,
                 }
             }
@@ -914,8 +920,10 @@ pub fn compile(shader: &Shader) -> Result<Compiled, EmuError> {
                     .iter()
                     .find(|s| s.reg.file == RegFile::ConstInt)
                     .ok_or_else(|| malformed(i, "loop without i#"))?;
+                let int = int_reg(i, Some(int))?;
+                loop_ints |= 1 << int;
                 Op::Loop {
-                    int: int_reg(i, Some(int))?,
+                    int,
                     end: b.target(i, &[Opcode::EndLoop], ins)?,
                 }
             }
@@ -1004,5 +1012,7 @@ pub fn compile(shader: &Shader) -> Result<Compiled, EmuError> {
         inputs: b.inputs,
         reads_al: b.reads_al,
         outputs: b.outputs,
+        rep_ints,
+        loop_ints,
     })
 }

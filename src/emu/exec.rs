@@ -5,8 +5,10 @@
 //! arithmetic and texture handlers are in `arith.rs`.
 //!
 //! Masks are `u64` bit sets, bit `l` = lane `l`:
-//! * `live`: lanes of quads that touch the target, neither killed nor
-//!   finished. Lanes outside the target in such a quad are *helper* lanes:
+//! * `live`: lanes of quads that touch the target that have not finished
+//!   (`ret` in main). Lanes killed by `texkill` stay live: D3D9's texkill
+//!   only marks the pixel discarded, the lane keeps executing (and paying,
+//!   as in the cost model) and stays a valid neighbour for derivatives. Lanes outside the target in such a quad are *helper* lanes:
 //!   they execute like the others (so a quad's `dsx`/`dsy` see real
 //!   neighbour values, whatever other quads of the batch do) but are never
 //!   reported; a helper lane exceeding the executed limit is dropped instead
@@ -30,8 +32,9 @@ use super::{EmuError, RunCtx, LANES};
 /// A flow-control construct in progress.
 #[derive(Clone, Copy, Debug)]
 enum Frame {
-    /// Lanes waiting for the other side of the `if`.
-    If { pending: u64 },
+    /// Lanes waiting for the other side of the `if`, and the `else` slots
+    /// the else-side lanes pay when they reach `endif` (0 before `else`).
+    If { pending: u64, else_slots: u8 },
     /// A rep or loop: lanes that broke out, iterations left after the current
     /// one, aL step, the aL to restore on exit, and the `endrep`/`endloop` op.
     Loop {
@@ -54,7 +57,7 @@ impl Frame {
     /// Lanes parked in this frame.
     fn parked(&self) -> u64 {
         match *self {
-            Frame::If { pending } => pending,
+            Frame::If { pending, .. } => pending,
             Frame::Loop { broken, .. } => broken,
             Frame::Call { waiting, .. } => waiting,
         }
@@ -88,8 +91,6 @@ pub(crate) struct Worker<'c, 'a> {
     killed: u64,
     /// Lanes inside the target (reported; the others are helpers).
     target: u64,
-    /// Lanes that ended with `ret` in main (outputs already saved).
-    done: u64,
     counts: [u64; LANES],
     /// Slots charged to every lane of `live` since the last flush.
     uniform: u64,
@@ -146,7 +147,6 @@ impl<'c, 'a> Worker<'c, 'a> {
             live: 0,
             killed: 0,
             target: 0,
-            done: 0,
             counts: [0; LANES],
             uniform: 0,
             bound: 0,
@@ -200,7 +200,6 @@ impl<'c, 'a> Worker<'c, 'a> {
         self.exec = live;
         self.live = live;
         self.killed = 0;
-        self.done = 0;
         self.counts = [0; LANES];
         self.uniform = 0;
         self.bound = 0;
@@ -222,6 +221,13 @@ impl<'c, 'a> Worker<'c, 'a> {
         self.flush();
         self.check_limit(true)?;
         self.save_outputs(self.live, &mut out);
+        // A discarded pixel reports zeros.
+        for l in lanes(self.killed) {
+            for k in 0..4 {
+                out.color[k][l] = [0.0; 4];
+            }
+            out.depth[l] = 0.0;
+        }
         out.written = self.written;
         out.killed = self.killed & self.target;
         out.executed = self.counts;
@@ -308,23 +314,12 @@ impl<'c, 'a> Worker<'c, 'a> {
 
     // ----- lanes leaving --------------------------------------------------
 
-    /// `texkill`: the lanes stop executing and are reported killed.
-    pub(super) fn kill(&mut self, mask: u64) {
-        if mask != 0 {
-            self.flush();
-            self.killed |= mask;
-            self.live &= !mask;
-            self.exec &= !mask;
-        }
-    }
-
     /// `ret` in main: the lanes finish now; their outputs are saved because
     /// later full-mask ops may overwrite their (no longer live) rows.
     fn retire(&mut self, mask: u64, out: &mut BatchOut) {
         if mask != 0 {
             self.flush();
             self.save_outputs(mask, out);
-            self.done |= mask;
             self.live &= !mask;
             self.exec &= !mask;
         }
@@ -542,11 +537,7 @@ impl<'c, 'a> Worker<'c, 'a> {
                 }
                 Op::TexKill { d } => {
                     if self.begin(s) {
-                        let k = self.texkill(d);
-                        self.kill(k);
-                        if self.live == 0 {
-                            return Ok(());
-                        }
+                        self.killed |= self.texkill(d);
                     }
                 }
                 Op::Tex { d, a, s: smp, kind } => {
@@ -576,22 +567,35 @@ impl<'c, 'a> Worker<'c, 'a> {
                     pc = self.enter_if(entry, taken, s, pc, target.get());
                 }
                 Op::Else { target } => {
-                    let Some(Frame::If { pending }) = self.stack.last_mut() else {
+                    // Both sides pay `else`, as the cost model charges it:
+                    // then-side lanes here, else-side lanes at `endif` (so a
+                    // lane leaving the else-side by break/ret does not).
+                    let Some(Frame::If {
+                        pending,
+                        else_slots,
+                    }) = self.stack.last_mut()
+                    else {
                         return Err(malformed(at, "else without if"));
                     };
                     let other = *pending;
                     *pending = self.exec;
-                    let passing = self.exec | other;
+                    *else_slots = s;
+                    let then_side = self.exec;
                     self.exec = other;
-                    self.charge(passing, s);
+                    self.charge(then_side, s);
                     if self.exec == 0 {
                         pc = target.get();
                     }
                 }
                 Op::EndIf => {
-                    let Some(Frame::If { pending }) = self.stack.pop() else {
+                    let Some(Frame::If {
+                        pending,
+                        else_slots,
+                    }) = self.stack.pop()
+                    else {
                         return Err(malformed(at, "endif without if"));
                     };
+                    self.charge(self.exec, else_slots);
                     self.exec |= pending;
                     self.charge(self.exec, s);
                 }
@@ -604,6 +608,8 @@ impl<'c, 'a> Worker<'c, 'a> {
                         continue;
                     }
                     self.charge(entry, s);
+                    // Checked at draw setup: count and start 0..=255, step
+                    // -128..=127.
                     let i = ctx.ints[int as usize & 15];
                     if i[0] <= 0 {
                         pc = end.get() + 1;
@@ -717,6 +723,7 @@ impl<'c, 'a> Worker<'c, 'a> {
         self.charge(entry, slots);
         self.stack.push(Frame::If {
             pending: entry & !taken,
+            else_slots: 0,
         });
         self.exec = taken;
         if taken == 0 {
@@ -741,7 +748,7 @@ impl<'c, 'a> Worker<'c, 'a> {
                     break;
                 }
                 Frame::Call { .. } => break,
-                Frame::If { pending } => parked |= pending,
+                Frame::If { pending, .. } => parked |= pending,
             }
         }
         let Some(li) = found else {

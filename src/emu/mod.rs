@@ -33,8 +33,10 @@
 //!
 //! Semantic choices where the documentation is silent are listed beside the
 //! functions in `math.rs` and `sample.rs`, and here:
-//! * `texkill` removes a lane from execution at once (it stops paying); a
-//!   killed pixel's colours are reported as zero.
+//! * `texkill` marks the pixel discarded; the lane keeps executing and
+//!   paying (as in the static cost model, and as D3D9's texkill only flags
+//!   the pixel), and stays a valid neighbour for `dsx`/`dsy`. A discarded
+//!   pixel's colours and depth are reported as zero.
 //! * pixels outside the target that share a quad with pixels inside it run
 //!   as helper lanes (as on hardware): they execute with their own flow
 //!   control so `dsx`/`dsy` see real neighbour values, but they are never
@@ -47,9 +49,9 @@
 //! * The sampler swizzle of texld (`s0.yzxw`) reorders the sampled result.
 //! * `texkill` tests the x, y, z components that its operand's mask selects.
 //! * `_pp` is ignored (computed in full f32 precision, which MS-MOD allows).
-//! * rep/loop counts are used as given (negative = 0 iterations); values
-//!   outside the documented [0, 255] are not clamped — the executed limit
-//!   bounds them.
+//! * rep/loop integer constants outside Microsoft's ranges (count and loop
+//!   start 0..=255, step −128..=127) are refused with
+//!   [`EmuError::InvalidIntConstant`], as the cost model refuses them.
 //! * `log` and texel addressing are implemented here in plain f32 so they
 //!   are identical on every platform; `exp`, `pow`, `sincos` use Rust's
 //!   `f32` functions (the platform libm), whose last bit may differ between
@@ -205,9 +207,9 @@ impl<'a> Draw<'a> {
 pub struct DrawOutput {
     pub width: u32,
     pub height: u32,
-    /// One entry per `oC0..oC3`; `None` if no pixel wrote it.
+    /// One entry per `oC0..oC3`; `None` if no pixel executed a write to it.
     pub color: Vec<Option<Vec<[f32; 4]>>>,
-    /// `oDepth`, `None` if no pixel wrote it.
+    /// `oDepth`, `None` if no pixel executed a write to it.
     pub depth: Option<Vec<f32>>,
     /// Pixels discarded by `texkill`.
     pub killed: Vec<bool>,
@@ -279,6 +281,11 @@ pub enum EmuError {
         given: usize,
         max: usize,
     },
+    /// An `i#` used by rep/loop is outside Microsoft's ranges.
+    InvalidIntConstant {
+        register: u32,
+        reason: String,
+    },
     ThreadPool(String),
 }
 
@@ -349,6 +356,9 @@ impl fmt::Display for EmuError {
                 "{} {} constants given, at most {} exist",
                 given, kind, max
             ),
+            EmuError::InvalidIntConstant { register, reason } => {
+                write!(f, "i{} used by rep/loop: {}", register, reason)
+            }
             EmuError::ThreadPool(e) => write!(f, "cannot start worker threads: {}", e),
         }
     }
@@ -404,6 +414,21 @@ impl<'c, 'a> RunCtx<'c, 'a> {
         ints[..c.int.len()].copy_from_slice(&c.int);
         for &(i, v) in &compiled.int_defs {
             ints[i as usize] = v;
+        }
+        for i in 0..16u32 {
+            let v = ints[i as usize];
+            let problem = if compiled.rep_ints & (1 << i) != 0 || compiled.loop_ints & (1 << i) != 0
+            {
+                int_constant_problem(compiled.loop_ints & (1 << i) != 0, v)
+            } else {
+                None
+            };
+            if let Some(reason) = problem {
+                return Err(EmuError::InvalidIntConstant {
+                    register: i,
+                    reason,
+                });
+            }
         }
         let mut bools = 0u16;
         for (i, &b) in c.bool.iter().enumerate() {
@@ -487,6 +512,31 @@ impl<'c, 'a> RunCtx<'c, 'a> {
         let y = 2 * qy + ((lane >> 1) & 1) as u64;
         (x, y, quad < self.quads && x < self.width && y < self.height)
     }
+}
+
+/// What is wrong with an `i#` used by rep (`is_loop` false) or loop, if
+/// anything (MS `rep---ps`, `loop---ps`: count 0..=255, start 0..=255, step
+/// −128..=127) — the same rule as the cost model.
+fn int_constant_problem(is_loop: bool, v: [i32; 4]) -> Option<String> {
+    let max = crate::isa::MAX_REP_COUNT;
+    if !(0..=max).contains(&v[0]) {
+        return Some(format!(
+            "the iteration count (.x = {}) must be in 0..={}",
+            v[0], max
+        ));
+    }
+    if is_loop {
+        if !(0..=255).contains(&v[1]) {
+            return Some(format!("the loop start (.y = {}) must be in 0..=255", v[1]));
+        }
+        if !(-128..=127).contains(&v[2]) {
+            return Some(format!(
+                "the loop step (.z = {}) must be in -128..=127",
+                v[2]
+            ));
+        }
+    }
+    None
 }
 
 /// Runs a draw on rayon's global pool.

@@ -838,6 +838,78 @@ fn nested_divergent_ifs() {
 }
 
 #[test]
+fn break_or_ret_inside_an_if_skips_its_else_and_endif() {
+    // As in the cost model: else + endif are paid only by lanes that leave
+    // the if normally; a lane breaking out of either side pays neither.
+    let text = "dcl_texcoord0 v0
+         def c0, 1, 0, 0, 0
+         defi i0, 3, 0, 0, 0
+         mov r0, c0.y
+         rep i0
+           add r0.x, r0.x, c0.x
+           if_lt v0.x, c0.x
+             break
+           else
+             break
+           endif
+         endrep
+         mov oC0, r0";
+    let out = run_text(text, &pos_draw(2, 1));
+    // mov + rep 3 + add 1 + if 3 + break 1 + mov 1, on both sides.
+    assert_eq!(out.executed, vec![10, 10]);
+    let text = "dcl_texcoord0 v0
+         def c0, 1, 0, 0, 0
+         mov oC0, c0
+         if_lt v0.x, c0.x
+           mov r0, c0
+         else
+           ret
+         endif
+         mov oC0, c0.y";
+    let out = run_text(text, &pos_draw(2, 1));
+    assert_eq!(out.executed, vec![1 + 3 + 1 + 1 + 1 + 1, 1 + 3 + 1]);
+    assert_eq!(out.color[0].as_ref().unwrap()[1], [1.0, 0.0, 0.0, 0.0]);
+}
+
+#[test]
+fn invalid_int_constants_are_refused() {
+    for (text, reason) in [
+        (
+            "defi i0, 256, 0, 0, 0\nrep i0\nendrep\nmov oC0, c0",
+            "0..=255",
+        ),
+        (
+            "defi i0, -1, 0, 0, 0\nrep i0\nendrep\nmov oC0, c0",
+            "0..=255",
+        ),
+        (
+            "defi i2, 1, 0, 200, 0\nloop aL, i2\nendloop\nmov oC0, c0",
+            "-128..=127",
+        ),
+        (
+            "defi i2, 1, 300, 1, 0\nloop aL, i2\nendloop\nmov oC0, c0",
+            "start",
+        ),
+    ] {
+        let e = run(&compiled(text), &Draw::new(1, 1)).unwrap_err();
+        assert!(
+            matches!(e, EmuError::InvalidIntConstant { .. }) && e.to_string().contains(reason),
+            "{text}: {e}"
+        );
+    }
+    // Application-set values are checked too; unused registers are not.
+    let c = compiled("rep i1\nendrep\nmov oC0, c0");
+    let mut d = Draw::new(1, 1);
+    d.constants.int = vec![[999, 999, 999, 999], [1000, 0, 0, 0]];
+    assert!(matches!(
+        run(&c, &d).unwrap_err(),
+        EmuError::InvalidIntConstant { register: 1, .. }
+    ));
+    d.constants.int[1] = [2, 0, 0, 0];
+    assert_eq!(run(&c, &d).unwrap().executed, vec![3 + 2 + 3 + 2 + 1]);
+}
+
+#[test]
 fn call_and_ret() {
     let (r, n) = pixel_exec(
         "def c0, 1, 0, 0, 0
@@ -977,20 +1049,24 @@ fn predication_per_lane() {
 }
 
 #[test]
-fn texkill_kills_lanes_and_stops_their_counting() {
+fn texkill_discards_pixels_that_keep_running() {
+    // Killed lanes keep executing and paying (the cost model ignores
+    // texkill) and stay valid quad neighbours: dsx in the surviving lanes
+    // still sees the killed lanes' values.
     let text = "dcl_texcoord0 v0
          def c0, -0.5, 0.5, 0.5, 1
          add r0, v0, c0
          texkill r0
          mov oC0, c0.w
-         mov r1, c0
-         mov oC1, c0";
+         dsx r1, v0
+         mov oC1, r1";
     let out = run_text(text, &pos_draw(2, 2));
     assert_eq!(out.killed, vec![true, false, true, false]);
-    assert_eq!(out.executed, vec![3, 6, 3, 6]);
+    assert_eq!(out.executed, vec![1 + 2 + 1 + 2 + 1; 4]);
     let c = out.color[0].as_ref().unwrap();
-    assert_eq!(c[0], [0.0; 4], "killed pixels report zero");
+    assert_eq!(c[0], [0.0; 4], "discarded pixels report zero");
     assert_eq!(c[1], [1.0; 4]);
+    assert_eq!(out.color[1].as_ref().unwrap()[1], [1.0, 0.0, 0.0, 0.0]);
 }
 
 #[test]
@@ -1001,8 +1077,17 @@ fn texkill_ignores_w_and_kills_everything() {
     let c = compiled("def c0, 1, -1, 1, 1\nmov r0, c0\ntexkill r0\nmov oC0, r0");
     let out = run(&c, &Draw::new(3, 3)).unwrap();
     assert_eq!(out.killed, vec![true; 9]);
-    assert_eq!(out.executed, vec![3; 9]);
-    assert!(out.color[0].is_none(), "no pixel reached the oC0 write");
+    assert_eq!(out.executed, vec![4; 9]);
+    assert_eq!(out.color[0].as_ref().unwrap(), &vec![[0.0; 4]; 9]);
+    // Predicated texkill: only lanes whose predicate holds are tested.
+    let c = compiled(
+        "def c0, -1, -1, -1, -1
+         mov r0, c0
+         setp_gt p0.x, c0.x, c0.x
+         (p0.x) texkill r0
+         mov oC0, c0",
+    );
+    assert_eq!(run(&c, &Draw::new(1, 1)).unwrap().killed, vec![false]);
 }
 
 #[test]
