@@ -563,7 +563,7 @@ fn float_source(r: &RegAst) -> R<Src> {
                         .with_label("remove the swizzle"),
                 );
             }
-            let total = reg.index as i64 + rel.offset;
+            let total = (reg.index as i64).saturating_add(rel.offset);
             if total >= RegFile::Input.info().count as i64 {
                 return Err(Diagnostic::error(
                     rel.span,
