@@ -577,7 +577,7 @@ mod tests {
         };
         assert!(r.negate && r.abs);
         assert_eq!(r.components.as_ref().unwrap().0, "wxxx");
-        assert_eq!(r.span, Span::new(25, 38));
+        assert_eq!(r.span, Span::new(28, 40));
     }
 
     #[test]
