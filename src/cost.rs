@@ -677,7 +677,7 @@ pub fn analyse(
         let s = info.slots[i] as u64;
         let entry = lines.entry(line).or_insert_with(|| LineCost {
             line,
-            text: file.line_text(line).trim().to_string(),
+            text: file.text[ins.origin.span.range()].to_string(),
             slots: 0,
             executions: Range::ZERO,
             executed: Range::ZERO,

@@ -23,6 +23,10 @@
 //! assert_eq!(analysis.executed.max, 128 * 6 + 1);      // (3 + 1 + 2) per iteration
 //! ```
 
+// Diagnostics are large on purpose (message, label, help, notes) and only
+// travel on the error path, where their size costs nothing measurable.
+#![allow(clippy::result_large_err)]
+
 pub mod cost;
 pub mod diag;
 pub mod emu;
@@ -31,5 +35,7 @@ pub mod image;
 pub mod ir;
 pub mod isa;
 pub mod reference;
+pub mod report;
 pub mod valid;
+pub mod verify;
 pub mod writer;

@@ -59,7 +59,7 @@ fn unknown_mnemonic(ast: &InstrAst) -> Diagnostic {
         .map(|r| (edit_distance(name, r.mnemonic), r.mnemonic))
         .min();
     match best {
-        Some((dist, m)) if dist <= 2 => d
+        Some((dist, m)) if dist <= if name.len() <= 4 { 1 } else { 2 } => d
             .with_label("unknown mnemonic")
             .with_help(format!("did you mean `{m}`?")),
         _ => d
@@ -619,7 +619,7 @@ fn predicate_operand(r: &RegAst, allow_full: bool) -> R<Src> {
             .with_label("remove `-` or `_abs`"));
     }
     let s = swizzle(r)?;
-    if !s.is_replicate() && !(allow_full || s == Swizzle::IDENTITY) {
+    if !(s.is_replicate() || allow_full || s == Swizzle::IDENTITY) {
         return Err(
             Diagnostic::error(r.span, "a predicate needs one component or none")
                 .with_label("e.g. p0.x"),

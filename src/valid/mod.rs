@@ -447,11 +447,9 @@ fn check_program(p: &Program, diags: &mut Diagnostics, file: &SourceFile) -> Inf
                     other => diags.push(err(mismatch(span, name, opener, other))),
                 }
             }
-            Opcode::Break | Opcode::BreakC | Opcode::BreakP => {
-                if loop_depth == 0 {
-                    diags.push(err(Diagnostic::error(span, "break outside rep or loop")
-                        .with_label("nothing to break out of")));
-                }
+            Opcode::Break | Opcode::BreakC | Opcode::BreakP if loop_depth == 0 => {
+                diags.push(err(Diagnostic::error(span, "break outside rep or loop")
+                    .with_label("nothing to break out of")));
             }
             Opcode::Call | Opcode::CallNz => calls.push((idx, ins.src[0].reg.index)),
             Opcode::Ret => {
