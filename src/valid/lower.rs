@@ -916,7 +916,7 @@ fn lower_def(ast: &InstrAst, origin: &Origin) -> R<Lowered> {
                             )
                             .with_label("out of range"));
                         }
-                        if file == RegFile::Const && (value.abs() > f32::MAX as f64) {
+                        if file == RegFile::Const && (*value as f32).is_infinite() {
                             return Err(Diagnostic::error(
                                 *span,
                                 "number does not fit in a 32-bit float",
