@@ -451,6 +451,34 @@ pub const MAX_DYNAMIC_NESTING: u32 = 24;
 /// rep/loop iteration count range, i#.x in [0, 255].
 pub const MAX_REP_COUNT: i32 = 255;
 
+/// The instruction table as Markdown (the README embeds it; a test keeps the
+/// two identical).
+pub fn markdown_table() -> String {
+    let mut s = String::from("| mnemonic | slots | class | meaning |\n|---|---|---|---|\n");
+    for r in TABLE {
+        let name = if r.comparison {
+            format!("{}_comp", r.mnemonic)
+        } else {
+            r.mnemonic.to_string()
+        };
+        let slots = match r.cube_slots {
+            Some(c) => format!("{} ({c} cube)", r.slots),
+            None => r.slots.to_string(),
+        };
+        let class = match r.class {
+            Class::Arithmetic => "arithmetic",
+            Class::Texture => "texture",
+            Class::Flow => "flow control",
+            Class::Declaration => "declaration",
+        };
+        s.push_str(&format!(
+            "| `{name}` | {slots} | {class} | {} |\n",
+            r.summary
+        ));
+    }
+    s
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -478,29 +506,4 @@ mod tests {
         assert_eq!(Opcode::from_mnemonic("TexLdL", false), Some(Opcode::TexLdL));
         assert_eq!(Opcode::from_mnemonic("lit", false), None);
     }
-}
-
-/// The instruction table as Markdown (the README embeds it; a test keeps the
-/// two identical).
-pub fn markdown_table() -> String {
-    let mut s = String::from("| mnemonic | slots | class | meaning |\n|---|---|---|---|\n");
-    for r in TABLE {
-        let name = if r.comparison {
-            format!("{}_comp", r.mnemonic)
-        } else {
-            r.mnemonic.to_string()
-        };
-        let slots = match r.cube_slots {
-            Some(c) => format!("{} ({c} cube)", r.slots),
-            None => r.slots.to_string(),
-        };
-        let class = match r.class {
-            Class::Arithmetic => "arithmetic",
-            Class::Texture => "texture",
-            Class::Flow => "flow control",
-            Class::Declaration => "declaration",
-        };
-        s.push_str(&format!("| `{name}` | {slots} | {class} | {} |\n", r.summary));
-    }
-    s
 }

@@ -54,6 +54,40 @@ enum Command {
         #[arg(short, long)]
         output: Option<PathBuf>,
     },
+    /// Run the two-pass luminance pipeline on an HDR image and cross-check it.
+    #[command(
+        after_help = "Shaders are files or bundled names: article:loop, article:unrolled, article:pass2,\ncorrected:loop, corrected:unrolled, corrected:pass2 (default: the corrected unrolled pair).\n\nExamples:\n  ps30 luminance assets/hdr/courtyard_1280x1024.exr\n  ps30 luminance assets/hdr/forest.exr --pass1 article:loop --pass2 article:pass2 --block 128x56\n  ps30 luminance assets/hdr/sunset.pfm --target-format f16 --json"
+    )]
+    Luminance {
+        image: PathBuf,
+        /// Pass-1 shader (file or bundled name).
+        #[arg(long, default_value = "corrected:unrolled")]
+        pass1: String,
+        /// Pass-2 shader (file or bundled name).
+        #[arg(long, default_value = "corrected:pass2")]
+        pass2: String,
+        /// Block size WxH (an unrolled shader fixes W to its REPEAT_BLOCK count).
+        #[arg(long, value_name = "WxH", value_parser = parse_size, default_value = "125x128")]
+        block: (u32, u32),
+        /// The δ of log(δ + L).
+        #[arg(long, default_value_t = 1e-4, value_parser = parse_delta)]
+        delta: f32,
+        /// Render-target format: f32 (D3DFMT_R32F) or f16 (D3DFMT_A16B16G16R16F).
+        #[arg(long, value_enum, default_value = "f32")]
+        target_format: FormatArg,
+        /// Reference policy for negative luminance: abs (what `log` does) or clamp.
+        #[arg(long, value_enum, default_value = "abs")]
+        negative: NegativeArg,
+        /// Emulator threads (default: all cores).
+        #[arg(long, value_parser = clap::value_parser!(u32).range(1..=256))]
+        threads: Option<u32>,
+        /// Refuse images with more pixels than this.
+        #[arg(long, default_value_t = 1 << 26)]
+        max_pixels: u64,
+        /// Print JSON instead of text.
+        #[arg(long)]
+        json: bool,
+    },
     /// Check every figure the article states and write the report to reports/.
     #[command(after_help = "Example:\n  ps30 verify --json")]
     Verify {
@@ -64,6 +98,65 @@ enum Command {
         #[arg(long)]
         json: bool,
     },
+}
+
+#[derive(Clone, Copy, clap::ValueEnum)]
+enum FormatArg {
+    F32,
+    F16,
+}
+
+#[derive(Clone, Copy, clap::ValueEnum)]
+enum NegativeArg {
+    Abs,
+    Clamp,
+}
+
+fn parse_size(s: &str) -> Result<(u32, u32), String> {
+    let (w, h) = s
+        .split_once(['x', 'X'])
+        .ok_or("expected WxH, e.g. 125x128")?;
+    let parse = |v: &str| {
+        v.trim()
+            .parse::<u32>()
+            .ok()
+            .filter(|&n| (1..=1 << 16).contains(&n))
+    };
+    match (parse(w), parse(h)) {
+        (Some(w), Some(h)) => Ok((w, h)),
+        _ => Err(format!(
+            "`{s}`: both sides must be integers from 1 to 65536"
+        )),
+    }
+}
+
+fn parse_delta(s: &str) -> Result<f32, String> {
+    let v: f32 = s.parse().map_err(|_| format!("`{s}` is not a number"))?;
+    if v.is_finite() && v > 0.0 {
+        Ok(v)
+    } else {
+        Err(format!("δ must be a positive finite number, not {s}"))
+    }
+}
+
+/// A shader by bundled name or file path.
+fn shader_source(spec: &str) -> Result<ps30::pipeline::ShaderSource, BadInput> {
+    if let Some((name, text)) = ps30::verify::bundled(spec) {
+        return Ok(ps30::pipeline::ShaderSource::new(name, text));
+    }
+    let text = read_text(&PathBuf::from(spec))?;
+    Ok(ps30::pipeline::ShaderSource::new(spec, text))
+}
+
+fn read_text(path: &PathBuf) -> Result<String, BadInput> {
+    let bytes = std::fs::read(path).map_err(|e| BadInput(format!("{}: {e}", path.display())))?;
+    String::from_utf8(bytes).map_err(|e| {
+        BadInput(format!(
+            "{}: not UTF-8 text (invalid byte at offset {})",
+            path.display(),
+            e.utf8_error().valid_up_to()
+        ))
+    })
 }
 
 #[derive(Args)]
@@ -176,14 +269,7 @@ fn color_stderr() -> bool {
 }
 
 fn load(path: &PathBuf, source: &SourceArgs) -> Result<front::Loaded, BadInput> {
-    let bytes = std::fs::read(path).map_err(|e| BadInput(format!("{}: {e}", path.display())))?;
-    let text = String::from_utf8(bytes).map_err(|e| {
-        BadInput(format!(
-            "{}: not UTF-8 text (invalid byte at offset {})",
-            path.display(),
-            e.utf8_error().valid_up_to()
-        ))
-    })?;
+    let text = read_text(path)?;
     let options = Options {
         defines: source.define.iter().cloned().collect(),
         max_expanded: source.max_expanded,
@@ -280,6 +366,52 @@ fn run(cli: Cli) -> Result<Outcome, BadInput> {
                 None => print(&text)?,
             }
             Ok(Outcome::Ok)
+        }
+        Command::Luminance {
+            image,
+            pass1,
+            pass2,
+            block,
+            delta,
+            target_format,
+            negative,
+            threads,
+            max_pixels,
+            json,
+        } => {
+            let img = ps30::image::load(&image, &ps30::image::ImageLimits { max_pixels })?;
+            let settings = ps30::pipeline::Settings {
+                block,
+                delta,
+                format: match target_format {
+                    FormatArg::F32 => ps30::image::TargetFormat::R32F,
+                    FormatArg::F16 => ps30::image::TargetFormat::Rgba16F,
+                },
+                policy: match negative {
+                    NegativeArg::Abs => ps30::reference::Policy::ABS,
+                    NegativeArg::Clamp => ps30::reference::Policy::CLAMP,
+                },
+                threads: threads.map(|t| t as usize),
+            };
+            let run = ps30::pipeline::run(
+                &img,
+                &shader_source(&pass1)?,
+                &shader_source(&pass2)?,
+                &settings,
+            )?;
+            let name = image.display().to_string();
+            if json {
+                print(
+                    &(serde_json::to_string_pretty(&ps30::pipeline::run_json(&name, &run))? + "\n"),
+                )?;
+            } else {
+                print(&ps30::pipeline::run_text(&name, &run))?;
+            }
+            Ok(if run.all_agree() {
+                Outcome::Ok
+            } else {
+                Outcome::Problem
+            })
         }
         Command::Verify { reports, json } => {
             let claims = ps30::verify::article_claims().map_err(BadInput)?;

@@ -24,6 +24,33 @@ pub const PASS2: (&str, &str) = (
     include_str!("../asm/article/lum_pass2.psh"),
 );
 
+/// The corrected listings (`asm/corrected/`), each change explained in its header.
+pub const CORRECTED_LOOP: (&str, &str) = (
+    "asm/corrected/lum_pass1_loop.psh",
+    include_str!("../asm/corrected/lum_pass1_loop.psh"),
+);
+pub const CORRECTED_UNROLLED: (&str, &str) = (
+    "asm/corrected/lum_pass1_unrolled.psh",
+    include_str!("../asm/corrected/lum_pass1_unrolled.psh"),
+);
+pub const CORRECTED_PASS2: (&str, &str) = (
+    "asm/corrected/lum_pass2.psh",
+    include_str!("../asm/corrected/lum_pass2.psh"),
+);
+
+/// Bundled shaders by short name (`article:loop`, `corrected:pass2`, ...).
+pub fn bundled(name: &str) -> Option<(&'static str, &'static str)> {
+    Some(match name {
+        "article:loop" => PASS1_LOOP,
+        "article:unrolled" => PASS1_UNROLLED,
+        "article:pass2" => PASS2,
+        "corrected:loop" => CORRECTED_LOOP,
+        "corrected:unrolled" => CORRECTED_UNROLLED,
+        "corrected:pass2" => CORRECTED_PASS2,
+        _ => return None,
+    })
+}
+
 /// One stated figure and ps30's value for it.
 #[derive(Clone, Debug, Serialize)]
 pub struct Claim {
