@@ -14,7 +14,9 @@
 //!   (3 + 2 slots), not once per entry; a loop that runs 0 times is charged
 //!   its `rep`/`loop` slots once;
 //! * `if` and `endif` are charged each time the `if` is reached, and so is
-//!   `else` when there is one (both paths pass it);
+//!   `else` when there is one (both paths pass it) — except that a `break`
+//!   inside a branch leaves before `endif` (and, from the then-branch,
+//!   before `else`);
 //! * a `break` that leaves a loop charges its own slots and skips the rest of
 //!   that iteration, `endrep`/`endloop` included;
 //! * `call` charges its slots, the callee and the callee's `ret`; `label` is
@@ -104,6 +106,19 @@ impl Range {
             min: self.min.min(o.min),
             max: self.max.max(o.max),
         }
+    }
+}
+
+/// How often the end of a sequence with `paths` is reached when it starts
+/// `mult` times (what `Ctx::seq` leaves its multiplicity at).
+fn reach(paths: &Paths, mult: Range) -> Range {
+    match paths.fall {
+        None => Range::ZERO,
+        Some(_) if paths.brk.is_some() || paths.exit.is_some() => Range {
+            min: 0,
+            max: mult.max,
+        },
+        Some(_) => mult,
     }
 }
 
@@ -324,6 +339,9 @@ struct Ctx<'a> {
     executions: Vec<Range>,
     subs: BTreeMap<u32, Vec<Node>>,
     file: &'a SourceFile,
+    /// Paths of each loop body (by its head), which decide how many
+    /// iterations run before the body's instructions are counted.
+    body_paths: BTreeMap<usize, Paths>,
 }
 
 impl Ctx<'_> {
@@ -413,6 +431,20 @@ impl Ctx<'_> {
             }
         }
         Ok((acc, nested))
+    }
+
+    /// The paths of a loop body, computed once per loop. Paths do not depend
+    /// on multiplicities, so a pass with multiplicity 0 finds them without
+    /// counting anything (its loop entries are dropped again).
+    fn body_paths(&mut self, head: usize, body: &[Node], in_sub: bool) -> Result<Paths, CostError> {
+        if let Some(p) = self.body_paths.get(&head) {
+            return Ok(*p);
+        }
+        let loops = self.loops.len();
+        let (p, _) = self.seq(body, Range::ZERO, in_sub)?;
+        self.loops.truncate(loops);
+        self.body_paths.insert(head, p);
+        Ok(p)
     }
 
     fn count(&mut self, i: usize, mult: Range) {
@@ -524,25 +556,59 @@ impl Ctx<'_> {
                     ),
                 };
                 self.count(*head, mult);
-                self.count(*end, mult);
-                let mut fixed = self.slots(*head) + self.slots(*end);
-                if let Some(e) = else_at {
-                    self.count(*e, mult);
-                    fixed += self.slots(*e);
-                }
                 let (tp, tn) = self.seq(then, tm, in_sub)?;
                 let (ep, en) = self.seq(els, em, in_sub)?;
+                // `else` is passed at the end of the then-branch and on
+                // entering the else-branch; `endif` at the end of either. A
+                // branch that breaks out passes neither after it.
+                let always_reaches =
+                    |p: &Paths| p.fall.is_some() && p.brk.is_none() && p.exit.is_none();
+                let (else_runs, end_runs) = match known {
+                    Some(true) => (reach(&tp, mult), reach(&tp, mult)),
+                    Some(false) => (mult, reach(&ep, mult)),
+                    None => (
+                        Range {
+                            min: if always_reaches(&tp) { mult.min } else { 0 },
+                            max: mult.max,
+                        },
+                        Range {
+                            min: if always_reaches(&tp) && always_reaches(&ep) {
+                                mult.min
+                            } else {
+                                0
+                            },
+                            max: if tp.fall.is_some() || ep.fall.is_some() {
+                                mult.max
+                            } else {
+                                0
+                            },
+                        },
+                    ),
+                };
+                self.count(*end, end_runs);
+                let else_s = match else_at {
+                    Some(e) => {
+                        self.count(*e, else_runs);
+                        Range::exact(self.slots(*e))
+                    }
+                    None => Range::ZERO,
+                };
                 let head_s = Range::exact(self.slots(*head));
-                let tail = Range::exact(fixed - self.slots(*head));
-                let branch = |p: Paths| Paths {
-                    fall: p.fall.map(|f| f.add(tail)),
-                    brk: p.brk,
-                    exit: p.exit,
+                let tail = else_s.add(Range::exact(self.slots(*end)));
+                let then_branch = Paths {
+                    fall: tp.fall.map(|f| f.add(tail)),
+                    brk: tp.brk,
+                    exit: tp.exit,
+                };
+                let else_branch = Paths {
+                    fall: ep.fall.map(|f| f.add(tail)),
+                    brk: ep.brk.map(|f| f.add(else_s)),
+                    exit: ep.exit.map(|f| f.add(else_s)),
                 };
                 let paths = match known {
-                    Some(true) => branch(tp),
-                    Some(false) => branch(ep),
-                    None => branch(tp).union(branch(ep)),
+                    Some(true) => then_branch,
+                    Some(false) => else_branch,
+                    None => then_branch.union(else_branch),
                 }
                 .shift(head_s);
                 let nested = match known {
@@ -566,22 +632,43 @@ impl Ctx<'_> {
                     own_cost_per_iteration: Range::ZERO,
                     total: Range::ZERO,
                 });
-                let (b, nested) = self.seq(body, mult.mul(n), in_sub)?;
-                // Per-line counts: rep/loop is charged once per iteration, or once if it runs 0 times.
-                let head_runs = Range {
-                    min: n.min.max(1),
-                    max: n.max.max(1),
+                // How many iterations start and how many reach endrep:
+                // a body that always breaks runs (at most) once, one that
+                // may break runs between once and n times.
+                let bp = self.body_paths(*head, body, in_sub)?;
+                let (runs, head_runs, end_runs) = match (bp.fall, bp.brk) {
+                    (_, None) => (
+                        n,
+                        // charged once per iteration, or once if it runs 0 times
+                        Range {
+                            min: n.min.max(1),
+                            max: n.max.max(1),
+                        },
+                        n,
+                    ),
+                    (None, Some(_)) => (
+                        Range {
+                            min: n.min.min(1),
+                            max: n.max.min(1),
+                        },
+                        Range::exact(1),
+                        Range::ZERO,
+                    ),
+                    (Some(_), Some(_)) => (
+                        Range {
+                            min: n.min.min(1),
+                            max: n.max,
+                        },
+                        Range {
+                            min: 1,
+                            max: n.max.max(1),
+                        },
+                        Range { min: 0, max: n.max },
+                    ),
                 };
+                let (b, nested) = self.seq(body, mult.mul(runs), in_sub)?;
                 self.count(*head, mult.mul(head_runs));
-                let end_mult = if b.brk.is_some() {
-                    Range {
-                        min: 0,
-                        max: mult.max.saturating_mul(n.max),
-                    }
-                } else {
-                    mult.mul(n)
-                };
-                self.count(*end, end_mult);
+                self.count(*end, mult.mul(end_runs));
                 let hr = Range::exact(h);
                 let full = b.fall.map(|bf| hr.add(bf).add(Range::exact(f)));
                 let total = match (full, b.brk) {
@@ -666,6 +753,7 @@ pub fn analyse(
         executions: vec![Range::ZERO; shader.instructions().len()],
         subs,
         file,
+        body_paths: BTreeMap::new(),
     };
     let (paths, _) = ctx.seq(&main, Range::exact(1), false)?;
     let executed = union_opt(paths.fall, paths.exit).unwrap_or(Range::ZERO);

@@ -11,7 +11,7 @@ pub mod parse;
 pub mod repeat;
 
 use crate::diag::{Diagnostics, SourceError, SourceFile};
-use crate::ir::Shader;
+use crate::ir::{Origin, Shader};
 use std::collections::BTreeMap;
 
 /// Options of the front end.
@@ -47,6 +47,18 @@ pub fn load(file: SourceFile, options: &Options) -> Result<Loaded, SourceError> 
         // Still report macro problems of the lines that did parse.
         if let Err(more) = repeat::expand(&stmts, &options.defines, options.max_expanded) {
             diags.items.extend(more.items);
+        }
+        // And the checks of each line that did parse on its own.
+        for stmt in &stmts {
+            if let ast::Stmt::Instr(instr) = stmt {
+                let origin = Origin {
+                    span: instr.span,
+                    repeats: Vec::new(),
+                };
+                if let Err(d) = crate::valid::lower::lower(instr, &origin) {
+                    diags.push(d);
+                }
+            }
         }
         diags.sort();
         return Err(SourceError {

@@ -39,12 +39,35 @@ pub fn parse(text: &str) -> (Vec<Stmt>, Diagnostics) {
             };
             match cursor.statement() {
                 Ok(stmt) => stmts.push(stmt),
-                Err(d) => diags.push(d),
+                Err(d) => {
+                    // A bad REPEAT_BLOCK line still opens or closes its block,
+                    // so its partner line is not reported as unmatched too.
+                    stmts.extend(macro_placeholder(
+                        code,
+                        Span::new(start, start + code.len()),
+                    ));
+                    diags.push(d)
+                }
             }
         }
         line_start += line.len();
     }
     (stmts, diags)
+}
+
+/// What a REPEAT_BLOCK line that did not parse stands for: a block of 0
+/// repetitions opened, or a block closed.
+fn macro_placeholder(code: &str, span: Span) -> Option<Stmt> {
+    if repeat_keyword("begin").parse(code).is_ok() {
+        Some(Stmt::RepeatBegin {
+            count: Count::Literal { value: 0, span },
+            span,
+        })
+    } else if repeat_keyword("end").parse(code).is_ok() {
+        Some(Stmt::RepeatEnd { span })
+    } else {
+        None
+    }
 }
 
 /// The code part of a line: everything before `//` or `;`.
@@ -146,7 +169,10 @@ impl<'a> Cursor<'a> {
     fn found(&self) -> String {
         match self.rest.split([',', ' ', '\t']).next() {
             Some(t) if !t.is_empty() => format!("found `{t}`"),
-            _ => "found the end of the line".to_string(),
+            _ => match self.rest.chars().next() {
+                Some(c) => format!("found `{c}`"),
+                None => "found the end of the line".to_string(),
+            },
         }
     }
 
@@ -334,7 +360,10 @@ impl<'a> Cursor<'a> {
             };
             self.eat(alt((char('f'), char('F'))));
             let span = self.span_from(start);
-            if self.rest.starts_with(is_ident_char) {
+            if self
+                .rest
+                .starts_with(|c: char| is_ident_char(c) || c == '.')
+            {
                 return Err(self
                     .error_here(format!(
                         "malformed number `{}{}`",
@@ -548,7 +577,7 @@ mod tests {
         };
         assert!(r.negate && r.abs);
         assert_eq!(r.components.as_ref().unwrap().0, "wxxx");
-        assert_eq!(r.span, Span::new(25, 38));
+        assert_eq!(r.span, Span::new(28, 40));
     }
 
     #[test]

@@ -563,7 +563,7 @@ fn float_source(r: &RegAst) -> R<Src> {
                         .with_label("remove the swizzle"),
                 );
             }
-            let total = reg.index as i64 + rel.offset;
+            let total = (reg.index as i64).saturating_add(rel.offset);
             if total >= RegFile::Input.info().count as i64 {
                 return Err(Diagnostic::error(
                     rel.span,
@@ -916,7 +916,7 @@ fn lower_def(ast: &InstrAst, origin: &Origin) -> R<Lowered> {
                             )
                             .with_label("out of range"));
                         }
-                        if file == RegFile::Const && (value.abs() > f32::MAX as f64) {
+                        if file == RegFile::Const && (*value as f32).is_infinite() {
                             return Err(Diagnostic::error(
                                 *span,
                                 "number does not fit in a 32-bit float",

@@ -604,6 +604,12 @@ fn check_calls(
     match depth(None, &graph, &mut Vec::new()) {
         Err(cycle) => {
             let names: Vec<String> = cycle.iter().map(|l| format!("l{l}")).collect();
+            // Point at the call that closes the cycle.
+            let (caller, callee) = (cycle[cycle.len() - 2], cycle[cycle.len() - 1]);
+            let span = calls
+                .iter()
+                .find(|&&(i, l)| l == callee && owner[i] == Some(caller))
+                .map_or(span, |&(i, _)| p.instructions[i].origin.span);
             diags.push(
                 Diagnostic::error(span, format!("recursive calls: {}", names.join(" → ")))
                     .with_label("ps_3_0 has no recursion"),
