@@ -1112,3 +1112,76 @@ fn the_brute_force_interpreter_agrees_with_hand_counts() {
         assert_eq!(brute_force(&l.shader).0, want, "{src}");
     }
 }
+
+// ---------------------------------------------------------------------------
+// The emulator counts what the cost model counts.
+
+/// Runs a shader on a 2×2 target with every declared input and sampler
+/// bound, and returns each pixel's executed slots.
+fn emulated_counts(l: &Loaded) -> Result<Vec<u64>, String> {
+    use ps30::emu::{self, Draw, LinearInput, SamplerState, Texture};
+    let compiled = emu::compile(&l.shader).map_err(|e| e.to_string())?;
+    let mut draw = Draw::new(2, 2);
+    for d in &l.shader.program().inputs {
+        if d.reg.file == ps30::isa::RegFile::Input {
+            draw.inputs
+                .push((d.reg.index, LinearInput::constant([0.25, 0.5, 0.75, 1.0])));
+        }
+    }
+    let texels = [[0.5f32; 4]; 4];
+    // Only 2D textures are emulated; other samplers stay unbound and read
+    // (0, 0, 0, 1), which does not change any count.
+    for s in l
+        .shader
+        .program()
+        .samplers
+        .iter()
+        .filter(|s| s.ty == ps30::isa::SamplerType::Tex2d)
+    {
+        let tex = Texture {
+            width: 2,
+            height: 2,
+            texels: &texels,
+        };
+        draw.samplers.push((s.index, tex, SamplerState::default()));
+    }
+    let out = emu::run_with_threads(&compiled, &draw, 1).map_err(|e| e.to_string())?;
+    Ok(out.executed)
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(300))]
+
+    #[test]
+    fn the_emulator_counts_what_the_cost_model_counts(
+        bytes in prop::collection::vec(any::<u8>(), 0..300)
+    ) {
+        let src = random_program(&bytes);
+        let l = front::load_str("random.psh", &src, &Options::default())
+            .map_err(|e| TestCaseError::fail(e.diagnostics.render(&e.file)))?;
+        let a = analyse(&l);
+        prop_assume!(a.executed.max <= 2_000_000);
+        let counts = emulated_counts(&l).map_err(TestCaseError::fail)?;
+        for c in counts {
+            prop_assert!(
+                a.executed.min <= c && c <= a.executed.max,
+                "emulator counted {c}, cost model {:?}\n{src}",
+                a.executed
+            );
+            if a.executed.is_exact() {
+                prop_assert_eq!(c, a.executed.min, "{}", src);
+            }
+        }
+    }
+}
+
+#[test]
+fn a_break_in_the_else_branch_costs_the_same_in_both_counters() {
+    let l = load(
+        "else_break.psh",
+        "ps_3_0\ndef c0, 1, 1, 1, 1\ndefi i0, 3, 0, 0, 0\ndefb b0, false\nrep i0\n  if b0\n    add r0, r0, c0\n  else\n    break\n  endif\n  add r0, r0, c0\nendrep\nmov oC0, r0\n",
+    );
+    // rep 3 + if 3 + else 1 + break 1, once; then mov 1.
+    assert_eq!(analyse(&l).executed.max, 9);
+    assert_eq!(emulated_counts(&l).unwrap(), vec![9; 4]);
+}

@@ -34,7 +34,7 @@ use super::{EmuError, RunCtx, LANES};
 enum Frame {
     /// Lanes waiting for the other side of the `if`, and the `else` slots
     /// the else-side lanes pay when they reach `endif` (0 before `else`).
-    If { pending: u64, else_slots: u8 },
+    If { pending: u64 },
     /// A rep or loop: lanes that broke out, iterations left after the current
     /// one, aL step, the aL to restore on exit, and the `endrep`/`endloop` op.
     Loop {
@@ -568,34 +568,26 @@ impl<'c, 'a> Worker<'c, 'a> {
                 }
                 Op::Else { target } => {
                     // Both sides pay `else`, as the cost model charges it:
-                    // then-side lanes here, else-side lanes at `endif` (so a
-                    // lane leaving the else-side by break/ret does not).
-                    let Some(Frame::If {
-                        pending,
-                        else_slots,
-                    }) = self.stack.last_mut()
-                    else {
+                    // then-side lanes as they reach it, else-side lanes as
+                    // they enter their branch (so a lane that later breaks
+                    // out of the else-side has paid it, and a lane that
+                    // broke out of the then-side has not).
+                    let Some(Frame::If { pending }) = self.stack.last_mut() else {
                         return Err(malformed(at, "else without if"));
                     };
                     let other = *pending;
                     *pending = self.exec;
-                    *else_slots = s;
                     let then_side = self.exec;
                     self.exec = other;
-                    self.charge(then_side, s);
+                    self.charge(then_side | other, s);
                     if self.exec == 0 {
                         pc = target.get();
                     }
                 }
                 Op::EndIf => {
-                    let Some(Frame::If {
-                        pending,
-                        else_slots,
-                    }) = self.stack.pop()
-                    else {
+                    let Some(Frame::If { pending }) = self.stack.pop() else {
                         return Err(malformed(at, "endif without if"));
                     };
-                    self.charge(self.exec, else_slots);
                     self.exec |= pending;
                     self.charge(self.exec, s);
                 }
@@ -723,7 +715,6 @@ impl<'c, 'a> Worker<'c, 'a> {
         self.charge(entry, slots);
         self.stack.push(Frame::If {
             pending: entry & !taken,
-            else_slots: 0,
         });
         self.exec = taken;
         if taken == 0 {

@@ -839,8 +839,10 @@ fn nested_divergent_ifs() {
 
 #[test]
 fn break_or_ret_inside_an_if_skips_its_else_and_endif() {
-    // As in the cost model: else + endif are paid only by lanes that leave
-    // the if normally; a lane breaking out of either side pays neither.
+    // As in the cost model: endif is paid only by lanes that leave the if
+    // normally; `else` by lanes that pass it, so a lane breaking out of the
+    // then-side pays neither and one breaking out of the else-side pays
+    // `else` only.
     let text = "dcl_texcoord0 v0
          def c0, 1, 0, 0, 0
          defi i0, 3, 0, 0, 0
@@ -855,8 +857,9 @@ fn break_or_ret_inside_an_if_skips_its_else_and_endif() {
          endrep
          mov oC0, r0";
     let out = run_text(text, &pos_draw(2, 1));
-    // mov + rep 3 + add 1 + if 3 + break 1 + mov 1, on both sides.
-    assert_eq!(out.executed, vec![10, 10]);
+    // mov + rep 3 + add 1 + if 3 + break 1 + mov 1, plus else on the
+    // else-side.
+    assert_eq!(out.executed, vec![10, 11]);
     let text = "dcl_texcoord0 v0
          def c0, 1, 0, 0, 0
          mov oC0, c0
@@ -867,7 +870,7 @@ fn break_or_ret_inside_an_if_skips_its_else_and_endif() {
          endif
          mov oC0, c0.y";
     let out = run_text(text, &pos_draw(2, 1));
-    assert_eq!(out.executed, vec![1 + 3 + 1 + 1 + 1 + 1, 1 + 3 + 1]);
+    assert_eq!(out.executed, vec![1 + 3 + 1 + 1 + 1 + 1, 1 + 3 + 1 + 1]);
     assert_eq!(out.color[0].as_ref().unwrap()[1], [1.0, 0.0, 0.0, 0.0]);
 }
 
