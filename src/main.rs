@@ -54,6 +54,44 @@ enum Command {
         #[arg(short, long)]
         output: Option<PathBuf>,
     },
+    /// Run one pass of a shader over an image into a render target.
+    #[command(
+        after_help = "Pixel (x, y) of the target gets v0.xy = the centre of the top-left texel of its\nblock of the image (blocks of ceil(W/tw) x ceil(H/th) texels) and s0 = the image.\n\nExample:\n  ps30 run corrected:loop --image assets/hdr/forest.hdr --target 8x10 --int i1=128 --int i2=52 \\\n      --const c1=0.0009765625,0.001953125,0,1 --const c3=0.27,0.67,0.06,0.01 -o sums.exr"
+    )]
+    Run {
+        /// Shader file or bundled name (see `ps30 luminance --help`).
+        shader: String,
+        #[arg(long)]
+        image: PathBuf,
+        /// Render-target size WxH.
+        #[arg(long, value_name = "WxH", value_parser = parse_size)]
+        target: (u32, u32),
+        #[command(flatten)]
+        source: SourceArgs,
+        #[command(flatten)]
+        constants: ConstantArgs,
+        /// Float constant set by the application, e.g. --const c3=0.27,0.67,0.06,0.01.
+        #[arg(long = "const", value_name = "cN=X[,Y,Z,W]", value_parser = parse_float_const)]
+        floats: Vec<(u32, [f32; 4])>,
+        #[arg(long, value_enum, default_value = "point")]
+        filter: FilterArg,
+        #[arg(long, value_enum, default_value = "border")]
+        address: AddressArg,
+        /// Border colour R,G,B,A for --address border.
+        #[arg(long, value_parser = parse_float4, default_value = "0,0,0,0")]
+        border: [f32; 4],
+        #[arg(long, value_enum, default_value = "f32")]
+        target_format: FormatArg,
+        /// Write the target here (.exr or .pfm), atomically.
+        #[arg(short, long)]
+        output: Option<PathBuf>,
+        #[arg(long, value_parser = clap::value_parser!(u32).range(1..=256))]
+        threads: Option<u32>,
+        #[arg(long, default_value_t = 1 << 26)]
+        max_pixels: u64,
+        #[arg(long)]
+        json: bool,
+    },
     /// Run the two-pass luminance pipeline on an HDR image and cross-check it.
     #[command(
         after_help = "Shaders are files or bundled names: article:loop, article:unrolled, article:pass2,\ncorrected:loop, corrected:unrolled, corrected:pass2 (default: the corrected unrolled pair).\n\nExamples:\n  ps30 luminance assets/hdr/courtyard_1280x1024.exr\n  ps30 luminance assets/hdr/forest.exr --pass1 article:loop --pass2 article:pass2 --block 128x56\n  ps30 luminance assets/hdr/sunset.pfm --target-format f16 --json"
@@ -107,9 +145,57 @@ enum FormatArg {
 }
 
 #[derive(Clone, Copy, clap::ValueEnum)]
+enum FilterArg {
+    Point,
+    Linear,
+}
+
+#[derive(Clone, Copy, clap::ValueEnum)]
+enum AddressArg {
+    Border,
+    Clamp,
+    Wrap,
+    Mirror,
+    Mirroronce,
+}
+
+fn parse_float4(s: &str) -> Result<[f32; 4], String> {
+    let parts: Vec<&str> = s.split(',').collect();
+    if parts.is_empty() || parts.len() > 4 {
+        return Err("expected one to four numbers separated by commas".into());
+    }
+    let mut v = [0f32; 4];
+    for (slot, p) in v.iter_mut().zip(&parts) {
+        *slot = p
+            .trim()
+            .parse::<f32>()
+            .ok()
+            .filter(|x| x.is_finite())
+            .ok_or_else(|| format!("`{p}` is not a finite number"))?;
+    }
+    Ok(v)
+}
+
+fn parse_float_const(s: &str) -> Result<(u32, [f32; 4]), String> {
+    let (reg, value) = s
+        .split_once('=')
+        .ok_or("expected cN=X[,Y,Z,W], e.g. c3=0.27,0.67,0.06,0.01")?;
+    Ok((parse_register(reg.trim(), 'c', 224)?, parse_float4(value)?))
+}
+
+#[derive(Clone, Copy, clap::ValueEnum)]
 enum NegativeArg {
     Abs,
     Clamp,
+}
+
+impl From<FormatArg> for ps30::image::TargetFormat {
+    fn from(f: FormatArg) -> Self {
+        match f {
+            FormatArg::F32 => ps30::image::TargetFormat::R32F,
+            FormatArg::F16 => ps30::image::TargetFormat::Rgba16F,
+        }
+    }
 }
 
 fn parse_size(s: &str) -> Result<(u32, u32), String> {
@@ -367,6 +453,103 @@ fn run(cli: Cli) -> Result<Outcome, BadInput> {
             }
             Ok(Outcome::Ok)
         }
+        Command::Run {
+            shader,
+            image,
+            target,
+            source,
+            constants,
+            floats,
+            filter,
+            address,
+            border,
+            target_format,
+            output,
+            threads,
+            max_pixels,
+            json,
+        } => {
+            let src = shader_source(&shader)?;
+            let options = Options {
+                defines: source.define.iter().cloned().collect(),
+                max_expanded: source.max_expanded,
+            };
+            let loaded = match front::load(SourceFile::new(src.name.clone(), src.text), &options) {
+                Ok(l) => l,
+                Err(e) => {
+                    for d in &e.diagnostics.items {
+                        d.emit(&e.file, color_stderr());
+                    }
+                    return Err(BadInput(e.to_string()));
+                }
+            };
+            let img = ps30::image::load(&image, &ps30::image::ImageLimits { max_pixels })?;
+            let mut consts = ps30::emu::Constants::default();
+            for (i, v) in floats {
+                let i = i as usize;
+                consts.float.resize(consts.float.len().max(i + 1), [0.0; 4]);
+                consts.float[i] = v;
+            }
+            for (i, v) in constants.ints {
+                let i = i as usize;
+                consts.int.resize(consts.int.len().max(i + 1), [0; 4]);
+                consts.int[i] = v;
+            }
+            for (i, v) in constants.bools {
+                let i = i as usize;
+                consts.bool.resize(consts.bool.len().max(i + 1), false);
+                consts.bool[i] = v;
+            }
+            let address = match address {
+                AddressArg::Border => ps30::emu::Address::Border,
+                AddressArg::Clamp => ps30::emu::Address::Clamp,
+                AddressArg::Wrap => ps30::emu::Address::Wrap,
+                AddressArg::Mirror => ps30::emu::Address::Mirror,
+                AddressArg::Mirroronce => ps30::emu::Address::MirrorOnce,
+            };
+            let setup = ps30::pipeline::PassSetup {
+                target,
+                constants: consts,
+                sampler: ps30::emu::SamplerState {
+                    filter: match filter {
+                        FilterArg::Point => ps30::emu::Filter::Point,
+                        FilterArg::Linear => ps30::emu::Filter::Linear,
+                    },
+                    address_u: address,
+                    address_v: address,
+                    border,
+                },
+                format: target_format.into(),
+                threads: threads.map(|t| t as usize),
+            };
+            let out = ps30::pipeline::run_pass(&loaded, &img, &setup)?;
+            if let Some(path) = &output {
+                let is_pfm = path
+                    .extension()
+                    .is_some_and(|e| e.eq_ignore_ascii_case("pfm"));
+                if is_pfm {
+                    ps30::image::write_pfm(path, &out.target)?;
+                } else {
+                    ps30::image::write_exr(path, &out.target)?;
+                }
+            }
+            let text = ps30::pipeline::pass_text(
+                &loaded.file.name,
+                &image.display().to_string(),
+                &out,
+                output.as_deref(),
+            );
+            if json {
+                print(&(serde_json::to_string_pretty(&ps30::pipeline::pass_json(&out))? + "\n"))?;
+            } else {
+                print(&text)?;
+            }
+            Ok(if out.cost.within_limits && out.cost.counts_agree {
+                Outcome::Ok
+            } else {
+                Outcome::Problem
+            })
+        }
         Command::Luminance {
             image,
             pass1,
@@ -383,10 +566,7 @@ fn run(cli: Cli) -> Result<Outcome, BadInput> {
             let settings = ps30::pipeline::Settings {
                 block,
                 delta,
-                format: match target_format {
-                    FormatArg::F32 => ps30::image::TargetFormat::R32F,
-                    FormatArg::F16 => ps30::image::TargetFormat::Rgba16F,
-                },
+                format: target_format.into(),
                 policy: match negative {
                     NegativeArg::Abs => ps30::reference::Policy::ABS,
                     NegativeArg::Clamp => ps30::reference::Policy::CLAMP,
@@ -415,36 +595,60 @@ fn run(cli: Cli) -> Result<Outcome, BadInput> {
         }
         Command::Verify { reports, json } => {
             let claims = ps30::verify::article_claims().map_err(BadInput)?;
-            let all = claims.iter().all(|c| c.agrees);
-            let md = format!(
-                "# The article's figures, recomputed\n\n\
-                 Generated by `ps30 verify` from the listings in `asm/article/` \
-                 (the article as printed, with transcription fixes only). \
-                 Profile: ps_3_0, 512 instruction slots, 65,535 executed instructions.\n\n{}\n\
-                 {} of {} claims reproduced.\n",
-                ps30::verify::claims_markdown(&claims),
-                claims.iter().filter(|c| c.agrees).count(),
-                claims.len()
-            );
-            let path = reports.join("article-claims.md");
-            report::write_atomic(&path, md.as_bytes())
-                .map_err(|e| BadInput(format!("{}: {e}", path.display())))?;
+            let image_path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+                .join(ps30::verify::CROSSCHECK_IMAGE);
+            let image_path = if image_path.exists() {
+                image_path
+            } else {
+                PathBuf::from(ps30::verify::CROSSCHECK_IMAGE)
+            };
+            let img = ps30::image::load(&image_path, &ps30::image::ImageLimits::default())?;
+            let rows = ps30::verify::crosscheck(&img).map_err(BadInput)?;
+            let claims_path = reports.join("article-claims.md");
+            let cross_path = reports.join("luminance-crosscheck.md");
+            report::write_atomic(
+                &claims_path,
+                ps30::verify::claims_report(&claims).as_bytes(),
+            )
+            .map_err(|e| BadInput(format!("{}: {e}", claims_path.display())))?;
+            report::write_atomic(
+                &cross_path,
+                ps30::verify::crosscheck_report(&rows).as_bytes(),
+            )
+            .map_err(|e| BadInput(format!("{}: {e}", cross_path.display())))?;
+            let ok = claims.iter().all(|c| c.agrees) && rows.iter().all(|r| r.as_expected());
             if json {
-                print(
-                    &(serde_json::to_string_pretty(
-                        &serde_json::json!({ "claims": claims, "all_agree": all }),
-                    )? + "\n"),
-                )?;
+                let v =
+                    serde_json::json!({ "claims": claims, "crosscheck": rows, "all_agree": ok });
+                print(&(serde_json::to_string_pretty(&v)? + "\n"))?;
             } else {
                 print(&ps30::verify::claims_text(&claims))?;
                 print(&format!(
-                    "\n{} of {} claims reproduced; report written to {}\n",
+                    "\n{} of {} claims reproduced\n\ncross-check on {} ({}):\n",
                     claims.iter().filter(|c| c.agrees).count(),
                     claims.len(),
-                    path.display()
+                    ps30::verify::CROSSCHECK_IMAGE,
+                    "emulated two-pass L̄w against the f64 reference"
+                ))?;
+                for r in &rows {
+                    print(&format!(
+                        "  {:<8} {} + {} {}×{} {}: {}\n",
+                        if r.as_expected() { "ok" } else { "UNEXPECTED" },
+                        r.pass1,
+                        r.pass2,
+                        r.block.0,
+                        r.block.1,
+                        r.format,
+                        r.finding
+                    ))?;
+                }
+                print(&format!(
+                    "\nreports written to {} and {}\n",
+                    claims_path.display(),
+                    cross_path.display()
                 ))?;
             }
-            Ok(if all { Outcome::Ok } else { Outcome::Problem })
+            Ok(if ok { Outcome::Ok } else { Outcome::Problem })
         }
     }
 }

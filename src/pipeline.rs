@@ -304,6 +304,17 @@ fn storage_bound(format: TargetFormat, value: f64) -> f64 {
     }
 }
 
+/// The texture coordinate the application gives pixel (x, y) of a target
+/// whose pixels each cover a `bw × bh` block of a `w × h` texture: the centre
+/// of the block's top-left texel, ((x·bw + ½)/w, (y·bh + ½)/h).
+pub fn block_start(w: u32, h: u32, bw: u32, bh: u32) -> LinearInput {
+    LinearInput {
+        base: [0.5 / w as f32, 0.5 / h as f32, 0.0, 0.0],
+        ddx: [bw as f32 / w as f32, 0.0, 0.0, 0.0],
+        ddy: [0.0, bh as f32 / h as f32, 0.0, 0.0],
+    }
+}
+
 fn sampler(texture: Texture<'_>) -> (u32, emu::Texture<'_>, SamplerState) {
     (
         0,
@@ -403,14 +414,7 @@ pub fn run(
     }
     let c1 = emu::compile(&l1.shader).map_err(PipelineError::Emu)?;
     let mut d1 = Draw::new(nx, ny);
-    d1.inputs.push((
-        0,
-        LinearInput {
-            base: [0.5 / w as f32, 0.5 / h as f32, 0.0, 0.0],
-            ddx: [bw as f32 / w as f32, 0.0, 0.0, 0.0],
-            ddy: [0.0, bh as f32 / h as f32, 0.0, 0.0],
-        },
-    ));
+    d1.inputs.push((0, block_start(w, h, bw, bh)));
     let root = (s.delta).sqrt();
     d1.constants = Constants {
         float: vec![
@@ -691,4 +695,128 @@ pub fn run_text(image: &str, r: &LuminanceRun) -> String {
         ));
     }
     s
+}
+
+/// One pass of any shader over a texture: what `ps30 run` does.
+#[derive(Clone, Debug)]
+pub struct PassSetup {
+    pub target: (u32, u32),
+    pub constants: Constants,
+    pub sampler: SamplerState,
+    pub format: TargetFormat,
+    pub threads: Option<usize>,
+}
+
+/// What one pass produced.
+#[derive(Clone, Debug)]
+pub struct PassOutput {
+    pub target: RenderTarget,
+    pub cost: PassCost,
+}
+
+/// Runs `loaded` over a `target` whose pixel (x, y) gets v0 = the start of
+/// its block of `image` (see [`block_start`]) and s0 = `image`.
+pub fn run_pass(
+    loaded: &front::Loaded,
+    image: &HdrImage,
+    setup: &PassSetup,
+) -> Result<PassOutput, PipelineError> {
+    let (tw, th) = setup.target;
+    let compiled = emu::compile(&loaded.shader).map_err(PipelineError::Emu)?;
+    let mut draw = Draw::new(tw, th);
+    let declared = |file: crate::isa::RegFile, index: u32| {
+        loaded
+            .shader
+            .program()
+            .inputs
+            .iter()
+            .any(|d| d.reg.file == file && d.reg.index == index)
+    };
+    if declared(crate::isa::RegFile::Input, 0) {
+        draw.inputs.push((
+            0,
+            block_start(
+                image.width,
+                image.height,
+                image.width.div_ceil(tw),
+                image.height.div_ceil(th),
+            ),
+        ));
+    }
+    draw.constants = setup.constants.clone();
+    if loaded.shader.program().sampler_type(0).is_some() {
+        draw.samplers.push((0, image.as_texture(), setup.sampler));
+    }
+    let (target, emulated) = draw_into(&compiled, &draw, setup.format, setup.threads)?;
+    let mut env = Environment::default();
+    for (i, v) in setup.constants.int.iter().enumerate() {
+        env.ints.insert(i as u32, *v);
+    }
+    for (i, v) in setup.constants.bool.iter().enumerate() {
+        env.bools.insert(i as u32, *v);
+    }
+    let (cost, _) = pass_cost(loaded, &env, emulated)?;
+    Ok(PassOutput { target, cost })
+}
+
+/// Summary statistics of oC0's red channel over a target.
+fn red_stats(t: &RenderTarget) -> (f64, f64, f64) {
+    let reds: Vec<f64> = t.texels.iter().map(|v| v[0] as f64).collect();
+    let min = reds.iter().copied().fold(f64::INFINITY, f64::min);
+    let max = reds.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    let mean = reds.iter().sum::<f64>() / reds.len().max(1) as f64;
+    (min, max, mean)
+}
+
+/// The text form of `ps30 run`.
+pub fn pass_text(
+    shader: &str,
+    image: &str,
+    out: &PassOutput,
+    written: Option<&std::path::Path>,
+) -> String {
+    use crate::report::range_text;
+    let t = &out.target;
+    let (min, max, mean) = red_stats(t);
+    let mut s = format!(
+        "{shader} over {image} → {}×{} target ({})\n",
+        t.width,
+        t.height,
+        t.format.d3d_name()
+    );
+    s.push_str(&format!(
+        "slots {}, executed per pixel {} (cost model: {}{})\n",
+        out.cost.slots,
+        range_text(out.cost.executed_emulated),
+        range_text(out.cost.executed_static),
+        if out.cost.counts_agree {
+            ", same"
+        } else {
+            ", DIFFERENT"
+        }
+    ));
+    if !out.cost.within_limits {
+        s.push_str("the shader does not fit the ps_3_0 limits (see ps30 check)\n");
+    }
+    s.push_str(&format!(
+        "oC0.r: min {min:.6}, max {max:.6}, mean {mean:.6}\n"
+    ));
+    if let Some(p) = written {
+        s.push_str(&format!("wrote {}\n", p.display()));
+    }
+    s
+}
+
+/// The JSON form of `ps30 run`.
+pub fn pass_json(out: &PassOutput) -> serde_json::Value {
+    let t = &out.target;
+    let (min, max, mean) = red_stats(t);
+    serde_json::json!({
+        "target": [t.width, t.height],
+        "target_format": t.format.d3d_name(),
+        "cost": &out.cost,
+        "executed_per_pixel": crate::report::range_json(out.cost.executed_emulated),
+        "red": {"min": min, "max": max, "mean": mean},
+        "texels": t.texels.iter().map(|v| v[0]).collect::<Vec<f32>>(),
+    })
 }
