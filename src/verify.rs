@@ -383,6 +383,8 @@ impl CrossRow {
 pub fn crosscheck(image: &crate::image::HdrImage) -> Result<Vec<CrossRow>, String> {
     use crate::image::TargetFormat;
     use crate::pipeline::{run, Settings, ShaderSource};
+    // (pass 1, pass 2, block, target format, expected to agree)
+    #[allow(clippy::type_complexity)]
     let configs: [(&str, &str, (u32, u32), TargetFormat, bool); 6] = [
         (
             "corrected:unrolled",
