@@ -252,3 +252,146 @@ fn undefined_repeat_name_names_the_flag() {
     assert!(err.contains("`ysize` is not defined"), "{err}");
     assert!(err.contains("-D ysize="), "{err}");
 }
+
+#[test]
+fn luminance_json_has_the_documented_fields() {
+    let o = ps30(&["luminance", "assets/hdr/sunset.pfm", "--json"], repo());
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    for key in [
+        "log_average",
+        "reference_log_average",
+        "relative_error",
+        "agree",
+        "target_format",
+        "block",
+        "targets",
+        "executed_per_pixel",
+        "blocks",
+    ] {
+        assert!(!v[key].is_null(), "missing {key}");
+    }
+    assert_eq!(v["agree"], true);
+    assert_eq!(v["block"], serde_json::json!([125, 128]));
+    // 1024×512 image: ⌈1024/125⌉ × ⌈512/128⌉.
+    assert_eq!(v["targets"], serde_json::json!([9, 4]));
+    // 5 set-up instructions and the output mov, 128 lines of rep 3 + 125·4 + mad 1 + endrep 2.
+    assert_eq!(v["executed_per_pixel"]["pass1"], 6 + 128 * (3 + 500 + 1 + 2));
+    let b = &v["blocks"][0];
+    for key in ["x", "y", "emulated", "reference", "agree"] {
+        assert!(!b[key].is_null(), "block missing {key}");
+    }
+}
+
+#[test]
+fn luminance_with_the_articles_shaders_exits_1_and_names_the_blocks() {
+    let o = ps30(
+        &[
+            "luminance",
+            "assets/hdr/forest.exr",
+            "--pass1",
+            "article:loop",
+            "--pass2",
+            "article:pass2",
+            "--block",
+            "128x56",
+        ],
+        repo(),
+    );
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    let out = stdout(&o);
+    assert!(out.contains("disagreeing blocks"), "{out}");
+    assert!(out.contains("DISAGREE"), "{out}");
+}
+
+#[test]
+fn luminance_refuses_bad_images_and_values_with_exit_2() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("junk.exr"), b"not an image at all").unwrap();
+    let o = ps30(&["luminance", "junk.exr"], dir.path());
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("junk.exr"), "{}", stderr(&o));
+    let o = ps30(&["luminance", "missing.hdr"], dir.path());
+    assert_eq!(o.status.code(), Some(2));
+    for args in [
+        ["--block", "0x5"],
+        ["--delta", "-1"],
+        ["--delta", "nan"],
+        ["--target-format", "f64"],
+        ["--pass1", "nope.psh"],
+    ] {
+        let mut all = vec!["luminance", "assets/hdr/sunset.exr"];
+        all.extend(args);
+        let o = ps30(&all, repo());
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stderr(&o));
+    }
+    let o = ps30(
+        &["luminance", "assets/hdr/sunset.exr", "--max-pixels", "1000"],
+        repo(),
+    );
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("--max-pixels"), "{}", stderr(&o));
+}
+
+#[test]
+fn run_writes_a_target_that_reads_back() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("sums.exr");
+    let o = ps30(
+        &[
+            "run",
+            "corrected:loop",
+            "--image",
+            "assets/hdr/forest.hdr",
+            "--target",
+            "8x10",
+            "--int",
+            "i1=128",
+            "--int",
+            "i2=52",
+            "--const",
+            "c1=0.0009765625,0.001953125,0,1",
+            "--const",
+            "c3=0.27,0.67,0.06,0.01",
+            "-o",
+            out.to_str().unwrap(),
+            "--json",
+        ],
+        repo(),
+    );
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    // 5 set-up + 52 lines of (3 + 128·9 + 1 + 2) + 1.
+    assert_eq!(v["executed_per_pixel"], 6 + 52 * (3 + 128 * 9 + 1 + 2));
+    let img = ps30::image::load(&out, &ps30::image::ImageLimits::default()).unwrap();
+    assert_eq!((img.width, img.height), (8, 10));
+    let texels = v["texels"].as_array().unwrap();
+    for (t, p) in texels.iter().zip(&img.pixels) {
+        assert_eq!(t.as_f64().unwrap() as f32, p[0]);
+    }
+}
+
+#[test]
+fn run_reports_shader_errors_with_a_caret() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(
+        dir.path().join("bad.psh"),
+        "ps_3_0\ndcl_2d s0\ntexld r0, r1, s9\n",
+    )
+    .unwrap();
+    let o = ps30(
+        &[
+            "run",
+            "bad.psh",
+            "--image",
+            &format!("{}/assets/hdr/sunset.exr", repo().display()),
+            "--target",
+            "2x2",
+        ],
+        dir.path(),
+    );
+    assert_eq!(o.status.code(), Some(2));
+    let err = stderr(&o);
+    assert!(err.contains("bad.psh:3:"), "{err}");
+    assert!(err.contains('^'), "{err}");
+}
