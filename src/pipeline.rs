@@ -685,7 +685,8 @@ pub fn run_text(image: &str, r: &LuminanceRun) -> String {
     if r.padded_samples > 0 {
         s.push_str(&format!(
             "padding: {} samples read outside the image; left uncorrected they scale L̄w by {:.4}\n",
-            r.padded_samples, r.padding_factor
+            crate::report::thousands(r.padded_samples),
+            r.padding_factor
         ));
     }
     if r.ill_conditioned > 0 {
