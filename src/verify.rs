@@ -461,7 +461,7 @@ pub fn crosscheck(image: &crate::image::HdrImage) -> Result<Vec<CrossRow>, Strin
             format!(
                 "blocks all agree, but L̄w = {:.4} × the true value; the BORDER padding ({} samples of log2 δ) predicts × {:.4} (finding 2)",
                 r.log_average / r.reference_log_average,
-                r.padded_samples,
+                crate::report::thousands(r.padded_samples),
                 r.padding_factor
             )
         } else {

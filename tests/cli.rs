@@ -276,7 +276,10 @@ fn luminance_json_has_the_documented_fields() {
     // 1024×512 image: ⌈1024/125⌉ × ⌈512/128⌉.
     assert_eq!(v["targets"], serde_json::json!([9, 4]));
     // 5 set-up instructions and the output mov, 128 lines of rep 3 + 125·4 + mad 1 + endrep 2.
-    assert_eq!(v["executed_per_pixel"]["pass1"], 6 + 128 * (3 + 500 + 1 + 2));
+    assert_eq!(
+        v["executed_per_pixel"]["pass1"],
+        6 + 128 * (3 + 500 + 1 + 2)
+    );
     let b = &v["blocks"][0];
     for key in ["x", "y", "emulated", "reference", "agree"] {
         assert!(!b[key].is_null(), "block missing {key}");
