@@ -145,6 +145,20 @@ fn load_err(src: &str) -> SourceError {
 #[rustfmt::skip]
 const CASES: &[(&str, &str, usize, usize)] = &[
     // --- mnemonics -----------------------------------------------------------
+    // Per-instruction operand rules (Microsoft's crs, m#x#, nrm, pow, sincos pages).
+    ("ps_3_0\nsincos r0.xyz, r1.x", "`sincos` needs the write mask .x, .y or .xy", 2, 8),
+    ("ps_3_0\nsincos oC0.x, r1.x", "`sincos` writes a temporary register", 2, 8),
+    ("ps_3_0\ncrs r0.xyzw, r1, r2", "`crs` needs the write mask within .xyz", 2, 5),
+    ("ps_3_0\ncrs r0.xyz, r1.yzx, r2", "`crs` sources take no swizzle", 2, 13),
+    ("ps_3_0\ncrs r1.xyz, r1, r2", "may not be one of its sources", 2, 5),
+    ("ps_3_0\nm4x4 r0.xyz, r1, c0", "`m4x4` needs the write mask .xyzw", 2, 6),
+    ("ps_3_0\nm3x2 r0, r1, c0", "`m3x2` needs the write mask .xy", 2, 6),
+    ("ps_3_0\nm3x3 r0.xyz, r1, -c0", "takes no swizzle or modifier", 2, 18),
+    ("ps_3_0\nm4x4 r1, r1, c0", "may not be its vector source", 2, 6),
+    ("ps_3_0\nm4x4 r2, r0, r1", "may not be one of the matrix rows", 2, 6),
+    ("ps_3_0\nm4x4 r0, r5, c222", "runs past the last register", 2, 14),
+    ("ps_3_0\nnrm r0, r0", "may not be its source", 2, 5),
+    ("ps_3_0\npow r0, r1.x, r0.y", "may not be its exponent source", 2, 5),
     ("ps_3_0\nmovv r0, c0", "unknown instruction `movv`", 2, 1),
     ("ps_3_0\n  texldx r0, r1, s0", "unknown instruction `texldx`", 2, 3),
     ("ps_3_0\nlit r0, c0", "unknown instruction `lit`", 2, 1),

@@ -286,6 +286,7 @@ fn lower_instruction(ast: &InstrAst, origin: &Origin) -> R<Instruction> {
             }
         }
     }
+    operand_rules(op, dst.as_ref(), &src, ast)?;
     Ok(Instruction {
         op,
         sat,
@@ -297,6 +298,133 @@ fn lower_instruction(ast: &InstrAst, origin: &Origin) -> R<Instruction> {
         src,
         origin: origin.clone(),
     })
+}
+
+/// Per-instruction operand rules of Microsoft's instruction pages (crs,
+/// m#x#, nrm, pow, sincos): required write masks, unswizzled sources, and
+/// destinations that may not alias a source.
+fn operand_rules(op: Opcode, dst: Option<&Dst>, src: &[Src], ast: &InstrAst) -> R<()> {
+    let Some(d) = dst else { return Ok(()) };
+    let span = |i: usize| ast.operands.get(i).map_or(ast.span, |o| o.span());
+    let mnemonic = op.info().mnemonic;
+    let need_temp = || -> R<()> {
+        if d.reg.file != RegFile::Temp {
+            return Err(Diagnostic::error(
+                span(0),
+                format!("`{mnemonic}` writes a temporary register r#"),
+            )
+            .with_label("not a temporary")
+            .with_help("compute into r# and copy it with mov"));
+        }
+        Ok(())
+    };
+    let not_aliased = |sources: &[usize], what: &str| -> R<()> {
+        for &i in sources {
+            if src.get(i).is_some_and(|s| s.reg == d.reg) {
+                return Err(Diagnostic::error(
+                    span(0),
+                    format!("the destination of `{mnemonic}` may not be {what}"),
+                )
+                .with_label(format!("{} is also read here", d.reg))
+                .with_secondary(span(i + 1), "same register")
+                .with_help("write the result to another temporary"));
+            }
+        }
+        Ok(())
+    };
+    let mask_must_be = |allowed: &[u8], text: &str| -> R<()> {
+        if !allowed.contains(&d.mask.0) {
+            return Err(Diagnostic::error(
+                span(0),
+                format!("`{mnemonic}` needs the write mask {text}"),
+            )
+            .with_label(format!(
+                "mask is {}",
+                if d.mask == WriteMask::ALL {
+                    ".xyzw".to_string()
+                } else {
+                    d.mask.to_string()
+                }
+            )));
+        }
+        Ok(())
+    };
+    match op {
+        Opcode::SinCos => {
+            need_temp()?;
+            mask_must_be(&[0b0001, 0b0010, 0b0011], ".x, .y or .xy")?;
+        }
+        Opcode::Crs => {
+            need_temp()?;
+            mask_must_be(
+                &[0b0001, 0b0010, 0b0100, 0b0011, 0b0101, 0b0110, 0b0111],
+                "within .xyz",
+            )?;
+            for (i, s) in src.iter().enumerate() {
+                if s.swizzle != Swizzle::IDENTITY {
+                    return Err(
+                        Diagnostic::error(span(i + 1), "`crs` sources take no swizzle")
+                            .with_label("remove the swizzle"),
+                    );
+                }
+            }
+            not_aliased(&[0, 1], "one of its sources")?;
+        }
+        Opcode::M3x2 | Opcode::M3x3 | Opcode::M4x3 | Opcode::M3x4 | Opcode::M4x4 => {
+            let rows = match op {
+                Opcode::M3x2 => 2,
+                Opcode::M3x3 | Opcode::M4x3 => 3,
+                _ => 4,
+            };
+            let (mask, text): (u8, &str) = match rows {
+                2 => (0b0011, ".xy"),
+                3 => (0b0111, ".xyz"),
+                _ => (0b1111, ".xyzw"),
+            };
+            mask_must_be(&[mask], text)?;
+            let m = &src[1];
+            if m.swizzle != Swizzle::IDENTITY || m.modifier != SrcMod::None {
+                return Err(Diagnostic::error(
+                    span(2),
+                    format!("the matrix operand of `{mnemonic}` takes no swizzle or modifier"),
+                )
+                .with_label("must be a plain register"));
+            }
+            not_aliased(&[0], "its vector source")?;
+            if d.reg.file == m.reg.file && (m.reg.index..m.reg.index + rows).contains(&d.reg.index)
+            {
+                return Err(Diagnostic::error(
+                    span(0),
+                    format!(
+                        "the destination of `{mnemonic}` may not be one of the matrix rows {}…",
+                        m.reg
+                    ),
+                )
+                .with_label("overlaps the matrix"));
+            }
+            if m.reg.index + rows > m.reg.file.info().count {
+                return Err(Diagnostic::error(
+                    span(2),
+                    format!(
+                        "the matrix {}…+{} runs past the last register",
+                        m.reg,
+                        rows - 1
+                    ),
+                )
+                .with_label("out of range"));
+            }
+        }
+        Opcode::Nrm => {
+            need_temp()?;
+            not_aliased(&[0], "its source")?;
+        }
+        Opcode::Pow => {
+            need_temp()?;
+            not_aliased(&[1], "its exponent source")?;
+        }
+        _ => {}
+    }
+    Ok(())
 }
 
 fn shape_text(mnemonic: &str, shape: &[Operand]) -> String {
