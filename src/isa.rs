@@ -425,7 +425,8 @@ impl SamplerType {
     }
 }
 
-/// Input usages of `dcl_<usage>[n]` (D3DDECLUSAGE).
+/// Input usages of `dcl_<usage>[n]`, in D3DDECLUSAGE order (the index is
+/// the usage code).
 pub const USAGES: &[&str] = &[
     "position",
     "blendweight",

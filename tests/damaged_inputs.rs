@@ -6,15 +6,8 @@
 use ps30::image::{load, ImageLimits};
 use std::path::Path;
 
-const IMAGES: [&str; 7] = [
-    "city.exr",
-    "courtyard.exr",
-    "courtyard_1280x1024.exr",
-    "forest.exr",
-    "forest.hdr",
-    "sunset.exr",
-    "sunset.pfm",
-];
+mod common;
+use common::IMAGES;
 
 fn original(name: &str) -> Vec<u8> {
     std::fs::read(

@@ -15,21 +15,8 @@ use ps30::verify::bundled;
 use serde_json::Value;
 use std::path::Path;
 
-const IMAGES: &[&str] = &[
-    "city.exr",
-    "courtyard.exr",
-    "courtyard_1280x1024.exr",
-    "forest.exr",
-    "forest.hdr",
-    "sunset.exr",
-    "sunset.pfm",
-];
-
-fn asset(name: &str) -> std::path::PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("assets/hdr")
-        .join(name)
-}
+mod common;
+use common::{asset, IMAGES};
 
 fn image(name: &str) -> HdrImage {
     load(&asset(name), &ImageLimits::default()).unwrap()

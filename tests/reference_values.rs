@@ -49,6 +49,7 @@
 //! tolerance; log-averages: relative 1.4e-13 against 1.4e-10 to 8e-10).
 //! Run with `--nocapture` to see them.
 
+mod common;
 use ps30::image::{load, HdrImage, ImageLimits};
 use ps30::reference::{block_sums, log_average, Policy, F64_UNIT_ROUNDOFF as U};
 use serde::Deserialize;
@@ -237,15 +238,7 @@ fn every_asset_image_has_reference_values_and_a_test() {
     assert_eq!(on_disk, tested, "images in assets/hdr vs the tests below");
 }
 
-const TESTED: [&str; 7] = [
-    "city.exr",
-    "courtyard.exr",
-    "courtyard_1280x1024.exr",
-    "forest.exr",
-    "forest.hdr",
-    "sunset.exr",
-    "sunset.pfm",
-];
+use common::IMAGES as TESTED;
 
 #[test]
 fn city_exr_dwab() {

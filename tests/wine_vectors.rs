@@ -289,23 +289,9 @@ fn encode_instruction(ins: &Instruction) -> Vec<u32> {
     out
 }
 
-/// D3DDECLUSAGE values, in order (d3d9types.h).
-const USAGE_CODES: &[&str] = &[
-    "position",
-    "blendweight",
-    "blendindices",
-    "normal",
-    "psize",
-    "texcoord",
-    "tangent",
-    "binormal",
-    "tessfactor",
-    "positiont",
-    "color",
-    "fog",
-    "depth",
-    "sample",
-];
+/// D3DDECLUSAGE values, in order (d3d9types.h): the instruction table's
+/// usage list is in that order.
+const USAGE_CODES: &[&str] = ps30::isa::USAGES;
 
 fn encode_declarations(p: &Program) -> Vec<u32> {
     let mut out = Vec::new();

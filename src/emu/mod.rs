@@ -419,7 +419,14 @@ impl<'c, 'a> RunCtx<'c, 'a> {
             let v = ints[i as usize];
             let problem = if compiled.rep_ints & (1 << i) != 0 || compiled.loop_ints & (1 << i) != 0
             {
-                int_constant_problem(compiled.loop_ints & (1 << i) != 0, v)
+                crate::cost::int_constant_problem(
+                    if compiled.loop_ints & (1 << i) != 0 {
+                        crate::isa::Opcode::Loop
+                    } else {
+                        crate::isa::Opcode::Rep
+                    },
+                    v,
+                )
             } else {
                 None
             };
@@ -512,31 +519,6 @@ impl<'c, 'a> RunCtx<'c, 'a> {
         let y = 2 * qy + ((lane >> 1) & 1) as u64;
         (x, y, quad < self.quads && x < self.width && y < self.height)
     }
-}
-
-/// What is wrong with an `i#` used by rep (`is_loop` false) or loop, if
-/// anything (MS `rep---ps`, `loop---ps`: count 0..=255, start 0..=255, step
-/// −128..=127) — the same rule as the cost model.
-fn int_constant_problem(is_loop: bool, v: [i32; 4]) -> Option<String> {
-    let max = crate::isa::MAX_REP_COUNT;
-    if !(0..=max).contains(&v[0]) {
-        return Some(format!(
-            "the iteration count (.x = {}) must be in 0..={}",
-            v[0], max
-        ));
-    }
-    if is_loop {
-        if !(0..=255).contains(&v[1]) {
-            return Some(format!("the loop start (.y = {}) must be in 0..=255", v[1]));
-        }
-        if !(-128..=127).contains(&v[2]) {
-            return Some(format!(
-                "the loop step (.z = {}) must be in -128..=127",
-                v[2]
-            ));
-        }
-    }
-    None
 }
 
 /// Runs a draw on rayon's global pool.
