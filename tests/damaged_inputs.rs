@@ -4,18 +4,12 @@
 //! PIZ, RLE-RGBE) that small synthetic files in the unit tests do not reach.
 
 use ps30::image::{load, ImageLimits};
-use std::path::Path;
 
 mod common;
-use common::IMAGES;
+use common::{asset, IMAGES};
 
 fn original(name: &str) -> Vec<u8> {
-    std::fs::read(
-        Path::new(env!("CARGO_MANIFEST_DIR"))
-            .join("assets/hdr")
-            .join(name),
-    )
-    .unwrap()
+    std::fs::read(asset(name)).unwrap()
 }
 
 #[test]

@@ -85,7 +85,7 @@ struct ExpectedBlocks {
 }
 
 fn assets() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/hdr")
+    common::asset("")
 }
 
 fn expected_values() -> BTreeMap<String, Expected> {
