@@ -13,7 +13,6 @@ use ps30::image::{load, HdrImage, ImageLimits, TargetFormat};
 use ps30::pipeline::{run, LuminanceRun, Settings, ShaderSource};
 use ps30::verify::bundled;
 use serde_json::Value;
-use std::path::Path;
 
 mod common;
 use common::{asset, IMAGES};
