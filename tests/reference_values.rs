@@ -54,7 +54,7 @@ use ps30::image::{load, HdrImage, ImageLimits};
 use ps30::reference::{block_sums, log_average, Policy, F64_UNIT_ROUNDOFF as U};
 use serde::Deserialize;
 use std::collections::{BTreeMap, BTreeSet};
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 #[derive(Deserialize)]
 struct ReferenceFile {
