@@ -85,12 +85,8 @@ enum Command {
         /// Write the target here (.exr or .pfm), atomically.
         #[arg(short, long)]
         output: Option<PathBuf>,
-        #[arg(long, value_parser = clap::value_parser!(u32).range(1..=256))]
-        threads: Option<u32>,
-        #[arg(long, default_value_t = 1 << 26)]
-        max_pixels: u64,
-        #[arg(long)]
-        json: bool,
+        #[command(flatten)]
+        exec: ExecArgs,
     },
     /// Run the two-pass luminance pipeline on an HDR image and cross-check it.
     #[command(
@@ -116,15 +112,8 @@ enum Command {
         /// Reference policy for negative luminance: abs (what `log` does) or clamp.
         #[arg(long, value_enum, default_value = "abs")]
         negative: NegativeArg,
-        /// Emulator threads (default: all cores).
-        #[arg(long, value_parser = clap::value_parser!(u32).range(1..=256))]
-        threads: Option<u32>,
-        /// Refuse images with more pixels than this.
-        #[arg(long, default_value_t = 1 << 26)]
-        max_pixels: u64,
-        /// Print JSON instead of text.
-        #[arg(long)]
-        json: bool,
+        #[command(flatten)]
+        exec: ExecArgs,
     },
     /// Check every figure the article states and write the report to reports/.
     #[command(after_help = "Example:\n  ps30 verify --json")]
@@ -243,6 +232,20 @@ fn read_text(path: &PathBuf) -> Result<String, BadInput> {
             e.utf8_error().valid_up_to()
         ))
     })
+}
+
+/// Options of every command that loads an image and runs the emulator.
+#[derive(Args)]
+struct ExecArgs {
+    /// Emulator threads (default: all cores).
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=256))]
+    threads: Option<u32>,
+    /// Refuse images with more pixels than this.
+    #[arg(long, default_value_t = 1 << 26)]
+    max_pixels: u64,
+    /// Print JSON instead of text.
+    #[arg(long)]
+    json: bool,
 }
 
 #[derive(Args)]
@@ -465,9 +468,12 @@ fn run(cli: Cli) -> Result<Outcome, BadInput> {
             border,
             target_format,
             output,
-            threads,
-            max_pixels,
-            json,
+            exec:
+                ExecArgs {
+                    threads,
+                    max_pixels,
+                    json,
+                },
         } => {
             let src = shader_source(&shader)?;
             let options = Options {
@@ -558,9 +564,12 @@ fn run(cli: Cli) -> Result<Outcome, BadInput> {
             delta,
             target_format,
             negative,
-            threads,
-            max_pixels,
-            json,
+            exec:
+                ExecArgs {
+                    threads,
+                    max_pixels,
+                    json,
+                },
         } => {
             let img = ps30::image::load(&image, &ps30::image::ImageLimits { max_pixels })?;
             let settings = ps30::pipeline::Settings {
