@@ -10,8 +10,19 @@
 //!                                                                              │
 //!                         ┌────────────────────┬────────────────────────────────┤
 //!                         ▼                    ▼                                ▼
-//!                    cost model            emulator                        asm writer
+//!                    cost model      emulator (micro-ops,                  asm writer
+//!                 (slots, executed,   64 lanes = 16 quads)
+//!                  loop breakdown)           │
+//!                                            ▼
+//!         images ──▶ render targets (R32F / A16B16G16R16F) ──▶ luminance pipeline ──▶ cross-check
+//!                                                                                 vs f64 reference
 //! ```
+//!
+//! Modules, in the order data flows: [`front`] (parser, REPEAT_BLOCK),
+//! [`valid`] (ps_3_0 rules → [`ir::Shader`]), [`cost`], [`emu`], [`image`],
+//! [`reference`], [`pipeline`], [`verify`] (the article's claims), with
+//! [`isa`] (the instruction table), [`diag`], [`report`] and [`writer`]
+//! serving them all.
 //!
 //! ```
 //! use ps30::{cost, front};
