@@ -20,7 +20,7 @@
 //!
 //! Modules, in the order data flows: [`front`] (parser, REPEAT_BLOCK),
 //! [`valid`] (ps_3_0 rules → [`ir::Shader`]), [`cost`], [`emu`], [`image`],
-//! [`reference`], [`pipeline`], [`verify`] (the article's claims), with
+//! [`reference`](mod@reference), [`pipeline`], [`verify`] (the article's claims), with
 //! [`isa`] (the instruction table), [`diag`], [`report`] and [`writer`]
 //! serving them all.
 //!

@@ -11,7 +11,7 @@
 //! # Tolerances
 //!
 //! Every comparison has a bound derived from the arithmetic, computed per
-//! block by [`pass1_bounds`] and written out in [`Tolerance`]:
+//! block by [`pass1_bounds`]:
 //!
 //! * each term: the shader computes δ + L with `dp4` in f32 — four products
 //!   and three additions, each rounded (relative error u = 2⁻²⁴), plus the

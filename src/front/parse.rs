@@ -2,7 +2,7 @@
 //!
 //! ps_3_0 assembly is line oriented: one statement per line, comments start
 //! with `//` or `;`. Each line is read by a small recursive-descent reader
-//! ([`Cursor`]) whose tokens are nom parsers; the reader turns a failed token
+//! (`Cursor`) whose tokens are nom parsers; the reader turns a failed token
 //! into a diagnostic that points at the exact column and says what was
 //! expected. Parsing never stops at the first bad line: every line is read,
 //! and all errors are returned together.

@@ -2,7 +2,7 @@
 //! every error found.
 //!
 //! Each distinct source statement is lowered once ([`lower`]); REPEAT_BLOCK
-//! copies reuse the result with their own [`Origin`]. The program-level pass
+//! copies reuse the result with their own [`Origin`](crate::ir::Origin). The program-level pass
 //! then checks what needs context: the version line, declarations before
 //! instructions and before use, block balance and nesting limits, `aL` only
 //! inside `loop`, read ports, subroutine structure, outputs outside dynamic
