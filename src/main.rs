@@ -596,7 +596,8 @@ fn run(cli: Cli) -> Result<Outcome, BadInput> {
             } else {
                 print(&ps30::pipeline::run_text(&name, &run))?;
             }
-            Ok(if run.all_agree() {
+            // A non-finite L̄w is a problem even when the reference agrees.
+            Ok(if run.all_agree() && run.finite() {
                 Outcome::Ok
             } else {
                 Outcome::Problem

@@ -162,6 +162,19 @@ pub struct Comparison {
 
 impl Comparison {
     fn new(emulated: f64, reference: f64, tolerance: f64) -> Comparison {
+        if !(emulated.is_finite() && reference.is_finite()) {
+            // Non-finite pixels make non-finite sums on the GPU and in the
+            // reference alike: they agree only if they are the same special
+            // value (both NaN, or the same infinity).
+            let same = (emulated.is_nan() && reference.is_nan()) || emulated == reference;
+            return Comparison {
+                emulated,
+                reference,
+                difference: if same { 0.0 } else { f64::INFINITY },
+                tolerance: 0.0,
+                agree: same,
+            };
+        }
         let difference = (emulated - reference).abs();
         Comparison {
             emulated,
@@ -170,7 +183,7 @@ impl Comparison {
             tolerance,
             // A value the target format cannot hold (f16 overflow) has no
             // finite bound: that is a disagreement, never a pass.
-            agree: difference <= tolerance && tolerance.is_finite() && emulated.is_finite(),
+            agree: difference <= tolerance && tolerance.is_finite(),
         }
     }
 }
@@ -216,6 +229,11 @@ impl LuminanceRun {
         self.blocks.iter().all(|b| b.agree)
     }
 
+    /// Whether L̄w is a usable number (non-finite pixels make it NaN or ∞).
+    pub fn finite(&self) -> bool {
+        self.log_average.is_finite()
+    }
+
     /// Everything agrees: blocks, pass 2 and L̄w, and the counts.
     pub fn all_agree(&self) -> bool {
         self.blocks_agree()
@@ -259,7 +277,7 @@ pub fn pass1_bounds(
                             + delta;
                         let x_exact = (delta + l).abs();
                         let abs_err = 8.0 * U32 * a;
-                        if abs_err.is_nan() || abs_err >= x_exact / 2.0 {
+                        if t.is_finite() && abs_err >= x_exact / 2.0 {
                             ill += 1;
                         }
                         (t, abs_err / (x_exact * std::f64::consts::LN_2) + ulp32(t))
@@ -445,7 +463,7 @@ pub fn run(
             let reference = refs.sums[by as usize][bx as usize];
             let tol = bounds[by as usize][bx as usize] + storage_bound(s.format, reference);
             let c = Comparison::new(emulated, reference, tol);
-            let overflow = !emulated.is_finite() || !tol.is_finite();
+            let overflow = reference.is_finite() && !storage_bound(s.format, reference).is_finite();
             blocks.push(BlockCheck {
                 x: bx,
                 y: by,
@@ -511,7 +529,12 @@ pub fn run(
     let true_ref = reference::log_average(image, delta, s.policy);
     let block_bound: f64 = blocks.iter().map(|b| b.tolerance).sum();
     let relative_tolerance = std::f64::consts::LN_2 * block_bound / n_pixels + rel2;
-    let relative_error = (log_average - true_ref.log_average).abs() / true_ref.log_average;
+    let end_to_end = Comparison::new(
+        log_average,
+        true_ref.log_average,
+        relative_tolerance * true_ref.log_average.abs(),
+    );
+    let relative_error = end_to_end.difference / true_ref.log_average.abs();
     let padding_factor = (padded as f64 * delta.log2() / n_pixels).exp2();
     let stats = image.stats();
     Ok(LuminanceRun {
@@ -530,7 +553,7 @@ pub fn run(
         reference_log_average: true_ref.log_average,
         relative_error,
         relative_tolerance,
-        agree: relative_error <= relative_tolerance && relative_tolerance.is_finite(),
+        agree: end_to_end.agree,
         padding_factor,
         ill_conditioned: ill,
         nonfinite_pixels: stats.non_finite,
@@ -565,6 +588,7 @@ pub fn run_json(image: &str, r: &LuminanceRun) -> serde_json::Value {
         "relative_error": r.relative_error,
         "relative_tolerance": r.relative_tolerance,
         "agree": r.all_agree(),
+        "finite": r.finite(),
         "log_average_agrees": r.agree,
         "blocks_agree": r.blocks_agree(),
         "target_format": r.target_format.d3d_name(),
@@ -639,6 +663,12 @@ pub fn run_text(image: &str, r: &LuminanceRun) -> String {
     }
     s.push('\n');
     let bad: Vec<&BlockCheck> = r.blocks.iter().filter(|b| !b.agree).collect();
+    if r.nonfinite_pixels > 0 {
+        s.push_str(&format!(
+            "{} pixels are NaN or infinite: their blocks and L̄w are not finite, on a GPU as in the reference\n",
+            r.nonfinite_pixels
+        ));
+    }
     let overflowed = r.blocks.iter().filter(|b| b.overflow).count();
     if overflowed > 0 {
         s.push_str(&format!(
@@ -674,6 +704,19 @@ pub fn run_text(image: &str, r: &LuminanceRun) -> String {
             "DISAGREE"
         }
     ));
+    if !r.finite() {
+        s.push_str(&format!(
+            "L̄w: emulated {}, reference {}: not a usable luminance ({})\n",
+            r.log_average,
+            r.reference_log_average,
+            if r.agree {
+                "the emulator matches the reference"
+            } else {
+                "and they DISAGREE"
+            }
+        ));
+        return s;
+    }
     s.push_str(&format!(
         "L̄w: emulated {:.7}, reference {:.7} (every pixel once), relative error {:.2e}, tolerance {:.2e}: {}\n",
         r.log_average,
