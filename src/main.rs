@@ -241,11 +241,26 @@ struct ExecArgs {
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..=256))]
     threads: Option<u32>,
     /// Refuse images with more pixels than this.
-    #[arg(long, default_value_t = 1 << 26)]
+    #[arg(long, default_value_t = 1 << 26, value_parser = clap::value_parser!(u64).range(1..))]
     max_pixels: u64,
+    /// Stop a pixel that executes more instruction slots than this.
+    #[arg(long, default_value_t = 10_000_000, value_parser = clap::value_parser!(u64).range(1..))]
+    max_executed_per_pixel: u64,
+    /// Refuse render targets with more pixels than this.
+    #[arg(long, default_value_t = 1 << 24, value_parser = clap::value_parser!(u64).range(1..))]
+    max_target_pixels: u64,
     /// Print JSON instead of text.
     #[arg(long)]
     json: bool,
+}
+
+impl ExecArgs {
+    fn limits(&self) -> ps30::emu::EmuLimits {
+        ps30::emu::EmuLimits {
+            max_executed_per_pixel: self.max_executed_per_pixel,
+            max_target_pixels: self.max_target_pixels,
+        }
+    }
 }
 
 #[derive(Args)]
@@ -468,13 +483,9 @@ fn run(cli: Cli) -> Result<Outcome, BadInput> {
             border,
             target_format,
             output,
-            exec:
-                ExecArgs {
-                    threads,
-                    max_pixels,
-                    json,
-                },
+            exec,
         } => {
+            let (threads, max_pixels, json) = (exec.threads, exec.max_pixels, exec.json);
             let src = shader_source(&shader)?;
             let options = Options {
                 defines: source.define.iter().cloned().collect(),
@@ -527,6 +538,7 @@ fn run(cli: Cli) -> Result<Outcome, BadInput> {
                 },
                 format: target_format.into(),
                 threads: threads.map(|t| t as usize),
+                limits: exec.limits(),
             };
             let out = ps30::pipeline::run_pass(&loaded, &img, &setup)?;
             if let Some(path) = &output {
@@ -564,13 +576,9 @@ fn run(cli: Cli) -> Result<Outcome, BadInput> {
             delta,
             target_format,
             negative,
-            exec:
-                ExecArgs {
-                    threads,
-                    max_pixels,
-                    json,
-                },
+            exec,
         } => {
+            let (threads, max_pixels, json) = (exec.threads, exec.max_pixels, exec.json);
             let img = ps30::image::load(&image, &ps30::image::ImageLimits { max_pixels })?;
             let settings = ps30::pipeline::Settings {
                 block,
@@ -581,6 +589,7 @@ fn run(cli: Cli) -> Result<Outcome, BadInput> {
                     NegativeArg::Clamp => ps30::reference::Policy::CLAMP,
                 },
                 threads: threads.map(|t| t as usize),
+                limits: exec.limits(),
             };
             let run = ps30::pipeline::run(
                 &img,

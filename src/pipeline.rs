@@ -69,6 +69,8 @@ pub struct Settings {
     pub policy: Policy,
     /// Worker threads for the emulator (`None`: all cores).
     pub threads: Option<usize>,
+    /// The emulator's bounds (executed slots per pixel, target size).
+    pub limits: emu::EmuLimits,
 }
 
 impl Default for Settings {
@@ -79,6 +81,7 @@ impl Default for Settings {
             format: TargetFormat::R32F,
             policy: Policy::ABS,
             threads: None,
+            limits: emu::EmuLimits::default(),
         }
     }
 }
@@ -432,6 +435,7 @@ pub fn run(
     }
     let c1 = emu::compile(&l1.shader).map_err(PipelineError::Emu)?;
     let mut d1 = Draw::new(nx, ny);
+    d1.limits = s.limits;
     d1.inputs.push((0, block_start(w, h, bw, bh)));
     let root = (s.delta).sqrt();
     d1.constants = Constants {
@@ -481,6 +485,7 @@ pub fn run(
     let l2 = load(pass2, &[("xsize", nx as u64), ("ysize", ny as u64)])?;
     let c2 = emu::compile(&l2.shader).map_err(PipelineError::Emu)?;
     let mut d2 = Draw::new(1, 1);
+    d2.limits = s.limits;
     d2.inputs.push((
         0,
         LinearInput::constant([0.5 / nx as f32, 0.5 / ny as f32, 0.0, 0.0]),
@@ -749,6 +754,7 @@ pub struct PassSetup {
     pub sampler: SamplerState,
     pub format: TargetFormat,
     pub threads: Option<usize>,
+    pub limits: emu::EmuLimits,
 }
 
 /// What one pass produced.
@@ -768,6 +774,7 @@ pub fn run_pass(
     let (tw, th) = setup.target;
     let compiled = emu::compile(&loaded.shader).map_err(PipelineError::Emu)?;
     let mut draw = Draw::new(tw, th);
+    draw.limits = setup.limits;
     let declared = |file: crate::isa::RegFile, index: u32| {
         loaded
             .shader
@@ -792,12 +799,16 @@ pub fn run_pass(
         draw.samplers.push((0, image.as_texture(), setup.sampler));
     }
     let (target, emulated) = draw_into(&compiled, &draw, setup.format, setup.threads)?;
+    // A draw sets every constant: what the application did not set is 0 /
+    // false, for the cost model as for the emulator.
     let mut env = Environment::default();
-    for (i, v) in setup.constants.int.iter().enumerate() {
-        env.ints.insert(i as u32, *v);
-    }
-    for (i, v) in setup.constants.bool.iter().enumerate() {
-        env.bools.insert(i as u32, *v);
+    for i in 0..16 {
+        let int = setup.constants.int.get(i).copied().unwrap_or([0; 4]);
+        env.ints.insert(i as u32, int);
+        env.bools.insert(
+            i as u32,
+            setup.constants.bool.get(i).copied().unwrap_or(false),
+        );
     }
     let (cost, _) = pass_cost(loaded, &env, emulated)?;
     Ok(PassOutput { target, cost })

@@ -306,7 +306,7 @@ impl fmt::Display for EmuError {
                 limit,
             } => write!(
                 f,
-                "render target {}x{} has more than {} pixels (max_target_pixels)",
+                "render target {}x{} has more than {} pixels (raise the limit with --max-target-pixels)",
                 width, height, limit
             ),
             EmuError::ExecutedLimit {
@@ -316,7 +316,7 @@ impl fmt::Display for EmuError {
                 limit,
             } => write!(
                 f,
-                "pixel ({}, {}) executed {} instruction slots, more than the limit of {} (max_executed_per_pixel)",
+                "pixel ({}, {}) executed {} instruction slots, more than the limit of {} (raise it with --max-executed-per-pixel)",
                 x, y, executed, limit
             ),
             EmuError::CallDepth { x, y, index } => write!(
