@@ -37,6 +37,7 @@ pub mod isa;
 pub mod pipeline;
 pub mod reference;
 pub mod report;
+pub mod tonemap;
 pub mod valid;
 pub mod verify;
 pub mod writer;
