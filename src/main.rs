@@ -13,6 +13,9 @@ use std::io::{IsTerminal, Write};
 use std::path::PathBuf;
 use std::process::ExitCode;
 
+mod ui;
+use ui::Ui;
+
 #[derive(Parser)]
 #[command(
     name = "ps30",
@@ -20,6 +23,9 @@ use std::process::ExitCode;
     about = "Parse, measure, run and generate Direct3D 9 ps_3_0 assembly"
 )]
 struct Cli {
+    /// Print only results and problems: no progress bars, notes or "wrote …" lines.
+    #[arg(long, short, global = true)]
+    quiet: bool,
     #[command(subcommand)]
     command: Command,
 }
@@ -44,7 +50,7 @@ enum Command {
     },
     /// Print the shader as plain ps_3_0 assembly with every macro expanded.
     #[command(
-        after_help = "Example:\n  ps30 expand asm/article/lum_pass2.psh -D xsize=11 -D ysize=8"
+        after_help = "Examples:\n  ps30 expand asm/article/lum_pass2.psh -D xsize=11 -D ysize=8\n  ps30 expand asm/article/lum_pass1_unrolled.psh -o unrolled.psh\n  ps30 expand asm/article/lum_pass2.psh -D xsize=11 -D ysize=8 --json"
     )]
     Expand {
         file: PathBuf,
@@ -53,6 +59,9 @@ enum Command {
         /// Write to this file (atomically) instead of stdout.
         #[arg(short, long)]
         output: Option<PathBuf>,
+        /// Print JSON (source, slots, instructions, output, assembly) instead of text.
+        #[arg(long)]
+        json: bool,
     },
     /// Run one pass of a shader over an image into a render target.
     #[command(
@@ -112,6 +121,24 @@ enum Command {
         /// Reference policy for negative luminance: abs (what `log` does) or clamp.
         #[arg(long, value_enum, default_value = "abs")]
         negative: NegativeArg,
+        #[command(flatten)]
+        exec: ExecArgs,
+    },
+    /// Tone-map an HDR image with the article's operator, run in the emulator, into an 8-bit sRGB PNG.
+    #[command(
+        after_help = "L̄w comes from the corrected luminance passes (125x128 blocks, R32F). The shader is\nasm/tonemap/reinhard.psh; every pixel is cross-checked against the f64 reference within a\nbound derived from the shader's f32 arithmetic (exit 1 if any pixel is outside it).\n\nExamples:\n  ps30 tonemap assets/hdr/courtyard_1280x1024.exr -o courtyard.png\n  ps30 tonemap assets/hdr/city.exr -o city.png --key 0.36 --white 5000\n  ps30 tonemap assets/hdr/forest.hdr --white inf --json"
+    )]
+    Tonemap {
+        image: PathBuf,
+        /// Write the tone-mapped image here as an 8-bit sRGB PNG (atomically).
+        #[arg(short, long)]
+        output: Option<PathBuf>,
+        /// The key a: the scene's log-average luminance L̄w is mapped to a.
+        #[arg(long, default_value_t = ps30::tonemap::DEFAULT_KEY, value_parser = parse_key, allow_negative_numbers = true)]
+        key: f64,
+        /// White point: the HDR luminance shown as pure white (default: the scene's largest; inf: none).
+        #[arg(long, value_name = "W", value_parser = parse_white, allow_negative_numbers = true)]
+        white: Option<f64>,
         #[command(flatten)]
         exec: ExecArgs,
     },
@@ -203,6 +230,49 @@ fn parse_size(s: &str) -> Result<(u32, u32), String> {
             "`{s}`: both sides must be integers from 1 to 65536"
         )),
     }
+}
+
+fn parse_key(s: &str) -> Result<f64, String> {
+    let v: f64 = s
+        .trim()
+        .parse()
+        .map_err(|_| format!("`{s}` is not a number"))?;
+    ps30::tonemap::check_values(v, None)
+        .map(|_| v)
+        .map_err(|e| e.to_string())
+}
+
+fn parse_white(s: &str) -> Result<f64, String> {
+    let v: f64 = s
+        .trim()
+        .parse()
+        .map_err(|_| format!("`{s}` is not a number"))?;
+    if v > 0.0 {
+        Ok(v)
+    } else {
+        Err(format!(
+            "the white point must be a positive luminance or inf, not {s}"
+        ))
+    }
+}
+
+/// Refuses an output path whose directory does not exist, before any work.
+fn check_output_path(path: &std::path::Path) -> Result<(), BadInput> {
+    let dir = path
+        .parent()
+        .filter(|d| !d.as_os_str().is_empty())
+        .unwrap_or(std::path::Path::new("."));
+    if !dir.is_dir() {
+        return Err(BadInput(format!(
+            "{}: the directory {} does not exist",
+            path.display(),
+            dir.display()
+        )));
+    }
+    if path.is_dir() {
+        return Err(BadInput(format!("{}: is a directory", path.display())));
+    }
+    Ok(())
 }
 
 fn parse_delta(s: &str) -> Result<f32, String> {
@@ -354,7 +424,8 @@ impl<E: std::fmt::Display> From<E> for BadInput {
 }
 
 fn color_stderr() -> bool {
-    std::env::var_os("NO_COLOR").is_none() && std::io::stderr().is_terminal()
+    // NO_COLOR counts when it is set and not empty (no-color.org).
+    std::env::var_os("NO_COLOR").is_none_or(|v| v.is_empty()) && std::io::stderr().is_terminal()
 }
 
 fn load(path: &PathBuf, source: &SourceArgs) -> Result<front::Loaded, BadInput> {
@@ -391,7 +462,14 @@ fn print(out: &str) -> std::io::Result<()> {
     stdout.flush()
 }
 
+/// Prints human-readable text, its status words coloured when stdout
+/// takes colour (JSON and assembly go through [`print`] untouched).
+fn say(ui: &Ui, out: &str) -> std::io::Result<()> {
+    print(&ui.highlight(out))
+}
+
 fn run(cli: Cli) -> Result<Outcome, BadInput> {
+    let ui = Ui::new(cli.quiet);
     match cli.command {
         Command::Check {
             file,
@@ -406,7 +484,7 @@ fn run(cli: Cli) -> Result<Outcome, BadInput> {
                 bools: constants.bools.into_iter().collect(),
             };
             for r in env.ints.keys() {
-                if loaded.shader.program().int_def(*r).is_some() {
+                if !ui.quiet && loaded.shader.program().int_def(*r).is_some() {
                     eprintln!(
                         "note: i{r} is defined in the shader (defi), which overrides --int i{r}"
                     );
@@ -429,7 +507,7 @@ fn run(cli: Cli) -> Result<Outcome, BadInput> {
                 let v = report::check_json(&name, &a, &warnings);
                 print(&(serde_json::to_string_pretty(&v)? + "\n"))?;
             } else {
-                print(&report::check_text(&name, &a))?;
+                say(&ui, &report::check_text(&name, &a))?;
             }
             Ok(if a.verdict == Verdict::Within {
                 Outcome::Ok
@@ -441,6 +519,7 @@ fn run(cli: Cli) -> Result<Outcome, BadInput> {
             file,
             source,
             output,
+            json,
         } => {
             let loaded = load(&file, &source)?;
             let text = format!(
@@ -449,10 +528,21 @@ fn run(cli: Cli) -> Result<Outcome, BadInput> {
                 loaded.shader.info().total_slots,
                 ps30::writer::write_program(loaded.shader.program())
             );
-            match output {
-                Some(path) => report::write_atomic(&path, text.as_bytes())
-                    .map_err(|e| BadInput(format!("{}: {e}", path.display())))?,
-                None => print(&text)?,
+            if let Some(path) = &output {
+                report::write_atomic(path, text.as_bytes())
+                    .map_err(|e| BadInput(format!("{}: {e}", path.display())))?;
+            }
+            if json {
+                let v = serde_json::json!({
+                    "source": loaded.file.name,
+                    "slots": loaded.shader.info().total_slots,
+                    "instructions": loaded.shader.instructions().len(),
+                    "output": output.as_ref().map(|p| p.display().to_string()),
+                    "assembly": text,
+                });
+                print(&(serde_json::to_string_pretty(&v)? + "\n"))?;
+            } else if output.is_none() {
+                print(&text)?;
             }
             Ok(Outcome::Ok)
         }
@@ -528,7 +618,10 @@ fn run(cli: Cli) -> Result<Outcome, BadInput> {
                 format: target_format.into(),
                 threads: threads.map(|t| t as usize),
             };
-            let out = ps30::pipeline::run_pass(&loaded, &img, &setup)?;
+            let out = {
+                let _spinner = ui.spinner("running the shader");
+                ps30::pipeline::run_pass(&loaded, &img, &setup)?
+            };
             if let Some(path) = &output {
                 let is_pfm = path
                     .extension()
@@ -548,7 +641,7 @@ fn run(cli: Cli) -> Result<Outcome, BadInput> {
             if json {
                 print(&(serde_json::to_string_pretty(&ps30::pipeline::pass_json(&out))? + "\n"))?;
             } else {
-                print(&text)?;
+                say(&ui, &text)?;
             }
             Ok(if out.cost.within_limits && out.cost.counts_agree {
                 Outcome::Ok
@@ -582,25 +675,72 @@ fn run(cli: Cli) -> Result<Outcome, BadInput> {
                 },
                 threads: threads.map(|t| t as usize),
             };
-            let run = ps30::pipeline::run(
-                &img,
-                &shader_source(&pass1)?,
-                &shader_source(&pass2)?,
-                &settings,
-            )?;
+            let (pass1, pass2) = (shader_source(&pass1)?, shader_source(&pass2)?);
+            let run = {
+                let _spinner = ui.spinner("running both passes");
+                ps30::pipeline::run(&img, &pass1, &pass2, &settings)?
+            };
             let name = image.display().to_string();
             if json {
                 print(
                     &(serde_json::to_string_pretty(&ps30::pipeline::run_json(&name, &run))? + "\n"),
                 )?;
             } else {
-                print(&ps30::pipeline::run_text(&name, &run))?;
+                say(&ui, &ps30::pipeline::run_text(&name, &run))?;
             }
             Ok(if run.all_agree() {
                 Outcome::Ok
             } else {
                 Outcome::Problem
             })
+        }
+        Command::Tonemap {
+            image,
+            output,
+            key,
+            white,
+            exec:
+                ExecArgs {
+                    threads,
+                    max_pixels,
+                    json,
+                },
+        } => {
+            if let Some(out) = &output {
+                check_output_path(out)?;
+            }
+            let img = ps30::image::load(&image, &ps30::image::ImageLimits { max_pixels })?;
+            let settings = ps30::tonemap::Settings {
+                key,
+                white,
+                threads: threads.map(|t| t as usize),
+                band_rows: 0,
+            };
+            let result = {
+                let bar = std::cell::RefCell::new(ui.bar("tone mapping", img.height as u64));
+                ps30::tonemap::run(&img, &settings, &|done, total| {
+                    bar.borrow_mut().set(None, done, total)
+                })?
+            };
+            let written = match &output {
+                Some(out) => {
+                    ps30::image::write_png_rgb8(out, result.width, result.height, &result.srgb8())?;
+                    Some(out.display().to_string())
+                }
+                None => None,
+            };
+            let name = image.display().to_string();
+            let ok = result.all_agree();
+            if json {
+                let v = ps30::tonemap::json(&name, &result, written.as_deref());
+                print(&(serde_json::to_string_pretty(&v)? + "\n"))?;
+            } else if !(ui.quiet && ok) {
+                say(
+                    &ui,
+                    &ps30::tonemap::text(&name, &result, written.as_deref()),
+                )?;
+            }
+            Ok(if ok { Outcome::Ok } else { Outcome::Problem })
         }
         Command::Verify { reports, json } => {
             let claims = ps30::verify::article_claims().map_err(BadInput)?;
