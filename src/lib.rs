@@ -30,6 +30,7 @@
 pub mod cost;
 pub mod diag;
 pub mod emu;
+pub mod figures;
 pub mod front;
 pub mod image;
 pub mod ir;
