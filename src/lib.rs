@@ -38,6 +38,7 @@ pub mod isa;
 pub mod pipeline;
 pub mod reference;
 pub mod report;
+pub mod report_dir;
 pub mod tonemap;
 pub mod valid;
 pub mod verify;

@@ -743,7 +743,9 @@ fn run(cli: Cli) -> Result<Outcome, BadInput> {
             Ok(if ok { Outcome::Ok } else { Outcome::Problem })
         }
         Command::Verify { reports, json } => {
+            let bar = std::cell::RefCell::new(ui.bar("article claims", 12));
             let claims = ps30::verify::article_claims().map_err(BadInput)?;
+            bar.borrow_mut().set(Some("luminance cross-check"), 1, 12);
             let image_path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
                 .join(ps30::verify::CROSSCHECK_IMAGE);
             let image_path = if image_path.exists() {
@@ -765,41 +767,94 @@ fn run(cli: Cli) -> Result<Outcome, BadInput> {
                 ps30::verify::crosscheck_report(&rows).as_bytes(),
             )
             .map_err(|e| BadInput(format!("{}: {e}", cross_path.display())))?;
-            let ok = claims.iter().all(|c| c.agrees) && rows.iter().all(|r| r.as_expected());
+            // The repository root the bundled images were found under.
+            let root = image_path
+                .parent()
+                .and_then(std::path::Path::parent)
+                .and_then(std::path::Path::parent)
+                .unwrap_or(std::path::Path::new(""));
+            let generated =
+                ps30::report_dir::generate(&reports, root, None, &|stage, done, total| {
+                    bar.borrow_mut().set(Some(stage), done + 2, total + 2)
+                })
+                .map_err(BadInput)?;
+            drop(bar);
+            let ok = claims.iter().all(|c| c.agrees)
+                && rows.iter().all(|r| r.as_expected())
+                && generated.all_agree();
             if json {
-                let v =
-                    serde_json::json!({ "claims": claims, "crosscheck": rows, "all_agree": ok });
+                let v = serde_json::json!({
+                    "claims": claims,
+                    "crosscheck": rows,
+                    "tonemap": generated.tonemap,
+                    "budgets": generated.budgets,
+                    "block_figures": generated.block_figures,
+                    "files": generated.files,
+                    "all_agree": ok,
+                });
                 print(&(serde_json::to_string_pretty(&v)? + "\n"))?;
-            } else {
-                print(&ps30::verify::claims_text(&claims))?;
-                print(&format!(
-                    "\n{} of {} claims reproduced\n\ncross-check on {} ({}):\n",
-                    claims.iter().filter(|c| c.agrees).count(),
-                    claims.len(),
-                    ps30::verify::CROSSCHECK_IMAGE,
-                    "emulated two-pass L̄w against the f64 reference"
-                ))?;
+            } else if !(ui.quiet && ok) {
+                say(&ui, &ps30::verify::claims_text(&claims))?;
+                say(
+                    &ui,
+                    &format!(
+                        "\n{} of {} claims reproduced\n\ncross-check on {} ({}):\n",
+                        claims.iter().filter(|c| c.agrees).count(),
+                        claims.len(),
+                        ps30::verify::CROSSCHECK_IMAGE,
+                        "emulated two-pass L̄w against the f64 reference"
+                    ),
+                )?;
                 for r in &rows {
-                    print(&format!(
-                        "  {:<8} {} + {} {}×{} {}: {}\n",
-                        if r.as_expected() { "ok" } else { "UNEXPECTED" },
-                        r.pass1,
-                        r.pass2,
-                        r.block.0,
-                        r.block.1,
-                        r.format,
-                        r.finding
-                    ))?;
+                    say(
+                        &ui,
+                        &format!(
+                            "  {:<8} {} + {} {}×{} {}: {}\n",
+                            if r.as_expected() { "ok" } else { "UNEXPECTED" },
+                            r.pass1,
+                            r.pass2,
+                            r.block.0,
+                            r.block.1,
+                            r.format,
+                            r.finding
+                        ),
+                    )?;
                 }
+                say(&ui, &verify_tonemap_text(&generated))?;
                 print(&format!(
                     "\nreports written to {} and {}\n",
                     claims_path.display(),
                     cross_path.display()
                 ))?;
+                print(&format!(
+                    "figures and pages: {} (index: {})\n",
+                    generated.files.len(),
+                    reports.join("README.md").display()
+                ))?;
             }
             Ok(if ok { Outcome::Ok } else { Outcome::Problem })
         }
     }
+}
+
+/// The tone-mapping lines of `ps30 verify`'s text output.
+fn verify_tonemap_text(g: &ps30::report_dir::Generated) -> String {
+    let mut s = String::from(
+        "\ntone mapping (asm/tonemap/reinhard.psh in the emulator against the f64 reference, every pixel):\n",
+    );
+    for r in &g.tonemap {
+        s.push_str(&format!(
+            "  {:<8} {}: L̄w {:.6}, largest difference {:.1e} (bound there {:.1e}, at most {:.0}% of a bound), 8-bit codes off by one: {}\n",
+            if r.agree { "ok" } else { "DISAGREE" },
+            r.image,
+            r.log_average,
+            r.max_error,
+            r.max_error_bound,
+            100.0 * r.largest_bound_fraction,
+            r.mismatched_8bit_channels
+        ));
+    }
+    s
 }
 
 fn main() -> ExitCode {

@@ -735,7 +735,12 @@ pub fn number(v: f64) -> String {
     }
     let digits = v.abs().log10().floor() as i32 + 1;
     if (-3..=7).contains(&digits) {
-        format!("{:.*}", (6 - digits).max(0) as usize, v)
+        let s = format!("{:.*}", (6 - digits).max(0) as usize, v);
+        if s.contains('.') {
+            s.trim_end_matches('0').trim_end_matches('.').to_string()
+        } else {
+            s
+        }
     } else {
         format!("{v:.4e}")
     }
@@ -896,6 +901,12 @@ mod tests {
         assert_eq!(srgb8(2.0), 255);
         assert_eq!(srgb8(-1.0), 0);
         assert_eq!(srgb8(f64::NAN), 0);
+        assert_eq!(number(0.18), "0.18");
+        assert_eq!(number(4.0), "4");
+        assert_eq!(number(31950.88), "31950.9");
+        assert_eq!(number(0.0808638), "0.0808638");
+        assert_eq!(number(f64::INFINITY), "∞");
+        assert_eq!(number(1.5e-9), "1.5000e-9");
         // Middle grey 0.18 is sRGB 118 (0.4614 · 255 = 117.66).
         assert_eq!(srgb8(0.18), 118);
         // The standard's two pieces meet 2.9e-8 apart (the power piece is
