@@ -139,6 +139,9 @@ enum Command {
         /// White point: the HDR luminance shown as pure white (default: the scene's largest; inf: none).
         #[arg(long, value_name = "W", value_parser = parse_white, allow_negative_numbers = true)]
         white: Option<f64>,
+        /// Tone-mapping shader (file, or the bundled tonemap:reinhard) with the same inputs.
+        #[arg(long, default_value = "tonemap:reinhard")]
+        shader: String,
         #[command(flatten)]
         exec: ExecArgs,
     },
@@ -699,6 +702,7 @@ fn run(cli: Cli) -> Result<Outcome, BadInput> {
             output,
             key,
             white,
+            shader,
             exec:
                 ExecArgs {
                     threads,
@@ -709,12 +713,18 @@ fn run(cli: Cli) -> Result<Outcome, BadInput> {
             if let Some(out) = &output {
                 check_output_path(out)?;
             }
+            let shader = if shader == "tonemap:reinhard" {
+                ps30::pipeline::ShaderSource::new(ps30::tonemap::SHADER.0, ps30::tonemap::SHADER.1)
+            } else {
+                shader_source(&shader)?
+            };
             let img = ps30::image::load(&image, &ps30::image::ImageLimits { max_pixels })?;
             let settings = ps30::tonemap::Settings {
                 key,
                 white,
                 threads: threads.map(|t| t as usize),
                 band_rows: 0,
+                shader,
             };
             let result = {
                 let bar = std::cell::RefCell::new(ui.bar("tone mapping", img.height as u64));

@@ -99,6 +99,10 @@ pub struct Settings {
     /// progress and bounded memory; results do not depend on it). 0 picks
     /// about 256 K pixels per band.
     pub band_rows: u32,
+    /// The tone-mapping shader: [`SHADER`] by default, or any shader with
+    /// the same inputs (v0, s0, s1, c0–c2), which is then checked against
+    /// the same reference.
+    pub shader: ShaderSource,
 }
 
 impl Default for Settings {
@@ -108,6 +112,7 @@ impl Default for Settings {
             white: None,
             threads: None,
             band_rows: 0,
+            shader: ShaderSource::new(SHADER.0, SHADER.1),
         }
     }
 }
@@ -442,6 +447,10 @@ pub struct Crosscheck {
     /// Differing codes not explained by a bound straddling a rounding
     /// boundary, or differing by more than 1 (must be 0).
     pub unexplained_8bit: u64,
+    /// Differing codes of sign-ambiguous pixels, where f32 cannot tell
+    /// whether the luminance is positive: black and the scaled colour are
+    /// both within the bound (counted apart from the rounding cases).
+    pub ambiguous_8bit: u64,
     /// The first channel outside its bound, for the report:
     /// (x, y, channel, emulated, reference, low, high).
     pub first_outside: Option<(u32, u32, usize, f64, f64, f64, f64)>,
@@ -500,7 +509,10 @@ pub fn crosscheck(op: &Operator, image: &HdrImage, emulated: &[[f32; 4]]) -> Cro
                 }
             }
             let (ce, cr) = (srgb8(e), srgb8(reference));
-            if ce != cr {
+            if ce != cr && ambiguous {
+                // Black and the colour are both right: no rounding rule.
+                r.ambiguous_8bit += 1;
+            } else if ce != cr {
                 mismatched = true;
                 r.mismatched_8bit_channels += 1;
                 if ce.abs_diff(cr) > 1 || srgb8(lo) == srgb8(hi) {
@@ -620,8 +632,9 @@ pub fn emulate(
     settings: &Settings,
     progress: &dyn Fn(u64, u64),
 ) -> Result<(Vec<[f32; 4]>, PassCost), TonemapError> {
-    let loaded = front::load_str(SHADER.0, SHADER.1, &Options::default())
-        .map_err(|e| TonemapError::Shader(e.to_string()))?;
+    let src = &settings.shader;
+    let loaded = front::load_str(&src.name, &src.text, &Options::default())
+        .map_err(|e| TonemapError::Shader(e.diagnostics.render(&e.file)))?;
     let compiled = emu::compile(&loaded.shader).map_err(TonemapError::Emu)?;
     let analysis = cost::analyse(
         &loaded.shader,
@@ -685,7 +698,7 @@ pub fn emulate(
             None => {
                 return Err(TonemapError::Shader(format!(
                     "{} never writes oC0",
-                    SHADER.0
+                    src.name
                 )))
             }
         }
@@ -697,7 +710,7 @@ pub fn emulate(
         progress(y0 as u64, h as u64);
     }
     let cost = PassCost {
-        shader: SHADER.0.to_string(),
+        shader: src.name.clone(),
         slots: analysis.slots,
         executed_static: analysis.executed,
         executed_emulated: executed,
@@ -744,6 +757,10 @@ pub fn number(v: f64) -> String {
     } else {
         format!("{v:.4e}")
     }
+}
+
+fn thousands_u(n: u64) -> String {
+    crate::report::thousands(n)
 }
 
 /// `1 pixel`, `12 pixels`, with thousands separators.
@@ -810,6 +827,13 @@ pub fn text(image: &str, t: &ToneMapped, written: Option<&str>) -> String {
             String::new()
         }
     ));
+    if c.sign_ambiguous_pixels > 0 {
+        s.push_str(&format!(
+            "{} luminance is 0 to within f32 rounding (channels cancel), so either black or the scaled colour is right; {} of their codes differ from the reference's\n",
+            count(c.sign_ambiguous_pixels, "pixel's", "pixels'"),
+            thousands_u(c.ambiguous_8bit)
+        ));
+    }
     if let Some((x, y, ch, e, r, lo, hi)) = c.first_outside {
         s.push_str(&format!(
             "{} channel values are outside their bound; the first: pixel ({x}, {y}) {}: emulated {e:.9}, reference {r:.9}, allowed [{lo:.9}, {hi:.9}]\n",
@@ -877,6 +901,7 @@ pub fn json(image: &str, t: &ToneMapped, written: Option<&str>) -> serde_json::V
         "mismatched_8bit_channels": c.mismatched_8bit_channels,
         "mismatched_8bit_pixels": c.mismatched_8bit_pixels,
         "unexplained_8bit": c.unexplained_8bit,
+        "ambiguous_8bit": c.ambiguous_8bit,
         "agree": t.all_agree(),
     })
 }
