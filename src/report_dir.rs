@@ -629,7 +629,7 @@ fn tonemap_page(rows: &[TonemapRow]) -> String {
     }
     s.push_str(
         "The dark speck in the sun of `city.exr` is in the data: the pixels around the sun's core \
-         hold zero or slightly negative luminance (lossy DWAB compression ringing next to values \
+         hold near-zero or slightly negative luminance (lossy DWAB compression ringing next to values \
          of 30,000), which the operator shows black.\n",
     );
     s
