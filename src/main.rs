@@ -639,7 +639,7 @@ fn run(cli: Cli) -> Result<Outcome, BadInput> {
                 &loaded.file.name,
                 &image.display().to_string(),
                 &out,
-                output.as_deref(),
+                output.as_deref().filter(|_| !ui.quiet),
             );
             if json {
                 print(&(serde_json::to_string_pretty(&ps30::pipeline::pass_json(&out))? + "\n"))?;
