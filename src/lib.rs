@@ -41,6 +41,7 @@
 pub mod cost;
 pub mod diag;
 pub mod emu;
+pub mod figures;
 pub mod front;
 pub mod image;
 pub mod ir;
@@ -48,6 +49,8 @@ pub mod isa;
 pub mod pipeline;
 pub mod reference;
 pub mod report;
+pub mod report_dir;
+pub mod tonemap;
 pub mod valid;
 pub mod verify;
 pub mod writer;

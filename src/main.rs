@@ -13,6 +13,9 @@ use std::io::{IsTerminal, Write};
 use std::path::PathBuf;
 use std::process::ExitCode;
 
+mod ui;
+use ui::Ui;
+
 #[derive(Parser)]
 #[command(
     name = "ps30",
@@ -20,6 +23,9 @@ use std::process::ExitCode;
     about = "Parse, measure, run and generate Direct3D 9 ps_3_0 assembly"
 )]
 struct Cli {
+    /// Print only results and problems: no progress bars, notes or "wrote …" lines.
+    #[arg(long, short, global = true)]
+    quiet: bool,
     #[command(subcommand)]
     command: Command,
 }
@@ -44,7 +50,7 @@ enum Command {
     },
     /// Print the shader as plain ps_3_0 assembly with every macro expanded.
     #[command(
-        after_help = "Example:\n  ps30 expand asm/article/lum_pass2.psh -D xsize=11 -D ysize=8"
+        after_help = "Examples:\n  ps30 expand asm/article/lum_pass2.psh -D xsize=11 -D ysize=8\n  ps30 expand asm/article/lum_pass1_unrolled.psh -o unrolled.psh\n  ps30 expand asm/article/lum_pass2.psh -D xsize=11 -D ysize=8 --json"
     )]
     Expand {
         file: PathBuf,
@@ -53,6 +59,9 @@ enum Command {
         /// Write to this file (atomically) instead of stdout.
         #[arg(short, long)]
         output: Option<PathBuf>,
+        /// Print JSON (source, slots, instructions, output, assembly) instead of text.
+        #[arg(long)]
+        json: bool,
     },
     /// Run one pass of a shader over an image into a render target.
     #[command(
@@ -112,6 +121,27 @@ enum Command {
         /// Reference policy for negative luminance: abs (what `log` does) or clamp.
         #[arg(long, value_enum, default_value = "abs")]
         negative: NegativeArg,
+        #[command(flatten)]
+        exec: ExecArgs,
+    },
+    /// Tone-map an HDR image with the article's operator, run in the emulator, into an 8-bit sRGB PNG.
+    #[command(
+        after_help = "L̄w comes from the corrected luminance passes (125x128 blocks, R32F). The shader is\nasm/tonemap/reinhard.psh; every pixel is cross-checked against the f64 reference within a\nbound derived from the shader's f32 arithmetic (exit 1 if any pixel is outside it).\n\nExamples:\n  ps30 tonemap assets/hdr/courtyard_1280x1024.exr -o courtyard.png\n  ps30 tonemap assets/hdr/city.exr -o city.png --key 0.36 --white 5000\n  ps30 tonemap assets/hdr/forest.hdr --white inf --json"
+    )]
+    Tonemap {
+        image: PathBuf,
+        /// Write the tone-mapped image here as an 8-bit sRGB PNG (atomically).
+        #[arg(short, long)]
+        output: Option<PathBuf>,
+        /// The key a: the scene's log-average luminance L̄w is mapped to a.
+        #[arg(long, default_value_t = ps30::tonemap::DEFAULT_KEY, value_parser = parse_key, allow_negative_numbers = true)]
+        key: f64,
+        /// White point: the HDR luminance shown as pure white (default: the scene's largest; inf: none).
+        #[arg(long, value_name = "W", value_parser = parse_white, allow_negative_numbers = true)]
+        white: Option<f64>,
+        /// Tone-mapping shader (file, or the bundled tonemap:reinhard) with the same inputs.
+        #[arg(long, default_value = "tonemap:reinhard")]
+        shader: String,
         #[command(flatten)]
         exec: ExecArgs,
     },
@@ -203,6 +233,49 @@ fn parse_size(s: &str) -> Result<(u32, u32), String> {
             "`{s}`: both sides must be integers from 1 to 65536"
         )),
     }
+}
+
+fn parse_key(s: &str) -> Result<f64, String> {
+    let v: f64 = s
+        .trim()
+        .parse()
+        .map_err(|_| format!("`{s}` is not a number"))?;
+    ps30::tonemap::check_values(v, None)
+        .map(|_| v)
+        .map_err(|e| e.to_string())
+}
+
+fn parse_white(s: &str) -> Result<f64, String> {
+    let v: f64 = s
+        .trim()
+        .parse()
+        .map_err(|_| format!("`{s}` is not a number"))?;
+    if v > 0.0 {
+        Ok(v)
+    } else {
+        Err(format!(
+            "the white point must be a positive luminance or inf, not {s}"
+        ))
+    }
+}
+
+/// Refuses an output path whose directory does not exist, before any work.
+fn check_output_path(path: &std::path::Path) -> Result<(), BadInput> {
+    let dir = path
+        .parent()
+        .filter(|d| !d.as_os_str().is_empty())
+        .unwrap_or(std::path::Path::new("."));
+    if !dir.is_dir() {
+        return Err(BadInput(format!(
+            "{}: the directory {} does not exist",
+            path.display(),
+            dir.display()
+        )));
+    }
+    if path.is_dir() {
+        return Err(BadInput(format!("{}: is a directory", path.display())));
+    }
+    Ok(())
 }
 
 fn parse_delta(s: &str) -> Result<f32, String> {
@@ -369,7 +442,8 @@ impl<E: std::fmt::Display> From<E> for BadInput {
 }
 
 fn color_stderr() -> bool {
-    std::env::var_os("NO_COLOR").is_none() && std::io::stderr().is_terminal()
+    // NO_COLOR counts when it is set and not empty (no-color.org).
+    std::env::var_os("NO_COLOR").is_none_or(|v| v.is_empty()) && std::io::stderr().is_terminal()
 }
 
 fn load(path: &PathBuf, source: &SourceArgs) -> Result<front::Loaded, BadInput> {
@@ -406,7 +480,14 @@ fn print(out: &str) -> std::io::Result<()> {
     stdout.flush()
 }
 
+/// Prints human-readable text, its status words coloured when stdout
+/// takes colour (JSON and assembly go through [`print`] untouched).
+fn say(ui: &Ui, out: &str) -> std::io::Result<()> {
+    print(&ui.highlight(out))
+}
+
 fn run(cli: Cli) -> Result<Outcome, BadInput> {
+    let ui = Ui::new(cli.quiet);
     match cli.command {
         Command::Check {
             file,
@@ -421,7 +502,7 @@ fn run(cli: Cli) -> Result<Outcome, BadInput> {
                 bools: constants.bools.into_iter().collect(),
             };
             for r in env.ints.keys() {
-                if loaded.shader.program().int_def(*r).is_some() {
+                if !ui.quiet && loaded.shader.program().int_def(*r).is_some() {
                     eprintln!(
                         "note: i{r} is defined in the shader (defi), which overrides --int i{r}"
                     );
@@ -444,7 +525,7 @@ fn run(cli: Cli) -> Result<Outcome, BadInput> {
                 let v = report::check_json(&name, &a, &warnings);
                 print(&(serde_json::to_string_pretty(&v)? + "\n"))?;
             } else {
-                print(&report::check_text(&name, &a))?;
+                say(&ui, &report::check_text(&name, &a))?;
             }
             Ok(if a.verdict == Verdict::Within {
                 Outcome::Ok
@@ -456,6 +537,7 @@ fn run(cli: Cli) -> Result<Outcome, BadInput> {
             file,
             source,
             output,
+            json,
         } => {
             let loaded = load(&file, &source)?;
             let text = format!(
@@ -464,10 +546,21 @@ fn run(cli: Cli) -> Result<Outcome, BadInput> {
                 loaded.shader.info().total_slots,
                 ps30::writer::write_program(loaded.shader.program())
             );
-            match output {
-                Some(path) => report::write_atomic(&path, text.as_bytes())
-                    .map_err(|e| BadInput(format!("{}: {e}", path.display())))?,
-                None => print(&text)?,
+            if let Some(path) = &output {
+                report::write_atomic(path, text.as_bytes())
+                    .map_err(|e| BadInput(format!("{}: {e}", path.display())))?;
+            }
+            if json {
+                let v = serde_json::json!({
+                    "source": loaded.file.name,
+                    "slots": loaded.shader.info().total_slots,
+                    "instructions": loaded.shader.instructions().len(),
+                    "output": output.as_ref().map(|p| p.display().to_string()),
+                    "assembly": text,
+                });
+                print(&(serde_json::to_string_pretty(&v)? + "\n"))?;
+            } else if output.is_none() {
+                print(&text)?;
             }
             Ok(Outcome::Ok)
         }
@@ -540,7 +633,10 @@ fn run(cli: Cli) -> Result<Outcome, BadInput> {
                 threads: threads.map(|t| t as usize),
                 limits: exec.limits(),
             };
-            let out = ps30::pipeline::run_pass(&loaded, &img, &setup)?;
+            let out = {
+                let _spinner = ui.spinner("running the shader");
+                ps30::pipeline::run_pass(&loaded, &img, &setup)?
+            };
             if let Some(path) = &output {
                 let is_pfm = path
                     .extension()
@@ -555,12 +651,12 @@ fn run(cli: Cli) -> Result<Outcome, BadInput> {
                 &loaded.file.name,
                 &image.display().to_string(),
                 &out,
-                output.as_deref(),
+                output.as_deref().filter(|_| !ui.quiet),
             );
             if json {
                 print(&(serde_json::to_string_pretty(&ps30::pipeline::pass_json(&out))? + "\n"))?;
             } else {
-                print(&text)?;
+                say(&ui, &text)?;
             }
             Ok(if out.cost.within_limits && out.cost.counts_agree {
                 Outcome::Ok
@@ -591,19 +687,18 @@ fn run(cli: Cli) -> Result<Outcome, BadInput> {
                 threads: threads.map(|t| t as usize),
                 limits: exec.limits(),
             };
-            let run = ps30::pipeline::run(
-                &img,
-                &shader_source(&pass1)?,
-                &shader_source(&pass2)?,
-                &settings,
-            )?;
+            let (pass1, pass2) = (shader_source(&pass1)?, shader_source(&pass2)?);
+            let run = {
+                let _spinner = ui.spinner("running both passes");
+                ps30::pipeline::run(&img, &pass1, &pass2, &settings)?
+            };
             let name = image.display().to_string();
             if json {
                 print(
                     &(serde_json::to_string_pretty(&ps30::pipeline::run_json(&name, &run))? + "\n"),
                 )?;
             } else {
-                print(&ps30::pipeline::run_text(&name, &run))?;
+                say(&ui, &ps30::pipeline::run_text(&name, &run))?;
             }
             // A non-finite L̄w is a problem even when the reference agrees.
             Ok(if run.all_agree() && run.finite() {
@@ -612,8 +707,62 @@ fn run(cli: Cli) -> Result<Outcome, BadInput> {
                 Outcome::Problem
             })
         }
+        Command::Tonemap {
+            image,
+            output,
+            key,
+            white,
+            shader,
+            exec,
+        } => {
+            let (threads, max_pixels, json) = (exec.threads, exec.max_pixels, exec.json);
+            if let Some(out) = &output {
+                check_output_path(out)?;
+            }
+            let shader = if shader == "tonemap:reinhard" {
+                ps30::pipeline::ShaderSource::new(ps30::tonemap::SHADER.0, ps30::tonemap::SHADER.1)
+            } else {
+                shader_source(&shader)?
+            };
+            let img = ps30::image::load(&image, &ps30::image::ImageLimits { max_pixels })?;
+            let settings = ps30::tonemap::Settings {
+                key,
+                white,
+                threads: threads.map(|t| t as usize),
+                band_rows: 0,
+                shader,
+                limits: exec.limits(),
+            };
+            let result = {
+                let bar = std::cell::RefCell::new(ui.bar("tone mapping", img.height as u64));
+                ps30::tonemap::run(&img, &settings, &|done, total| {
+                    bar.borrow_mut().set(None, done, total)
+                })?
+            };
+            let written = match &output {
+                Some(out) => {
+                    ps30::image::write_png_rgb8(out, result.width, result.height, &result.srgb8())?;
+                    Some(out.display().to_string())
+                }
+                None => None,
+            };
+            let name = image.display().to_string();
+            let ok = result.all_agree();
+            if json {
+                let v = ps30::tonemap::json(&name, &result, written.as_deref());
+                print(&(serde_json::to_string_pretty(&v)? + "\n"))?;
+            } else if !(ui.quiet && ok) {
+                say(
+                    &ui,
+                    &ps30::tonemap::text(&name, &result, written.as_deref()),
+                )?;
+            }
+            Ok(if ok { Outcome::Ok } else { Outcome::Problem })
+        }
         Command::Verify { reports, json } => {
+            let bar = std::cell::RefCell::new(ui.bar("article claims", 12));
             let claims = ps30::verify::article_claims().map_err(BadInput)?;
+            bar.borrow_mut().set(Some("luminance cross-check"), 1, 12);
             let image_path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
                 .join(ps30::verify::CROSSCHECK_IMAGE);
             let image_path = if image_path.exists() {
@@ -635,41 +784,94 @@ fn run(cli: Cli) -> Result<Outcome, BadInput> {
                 ps30::verify::crosscheck_report(&rows).as_bytes(),
             )
             .map_err(|e| BadInput(format!("{}: {e}", cross_path.display())))?;
-            let ok = claims.iter().all(|c| c.agrees) && rows.iter().all(|r| r.as_expected());
+            // The repository root the bundled images were found under.
+            let root = image_path
+                .parent()
+                .and_then(std::path::Path::parent)
+                .and_then(std::path::Path::parent)
+                .unwrap_or(std::path::Path::new(""));
+            let generated =
+                ps30::report_dir::generate(&reports, root, None, &|stage, done, total| {
+                    bar.borrow_mut().set(Some(stage), done + 2, total + 2)
+                })
+                .map_err(BadInput)?;
+            drop(bar);
+            let ok = claims.iter().all(|c| c.agrees)
+                && rows.iter().all(|r| r.as_expected())
+                && generated.all_agree();
             if json {
-                let v =
-                    serde_json::json!({ "claims": claims, "crosscheck": rows, "all_agree": ok });
+                let v = serde_json::json!({
+                    "claims": claims,
+                    "crosscheck": rows,
+                    "tonemap": generated.tonemap,
+                    "budgets": generated.budgets,
+                    "block_figures": generated.block_figures,
+                    "files": generated.files,
+                    "all_agree": ok,
+                });
                 print(&(serde_json::to_string_pretty(&v)? + "\n"))?;
-            } else {
-                print(&ps30::verify::claims_text(&claims))?;
-                print(&format!(
-                    "\n{} of {} claims reproduced\n\ncross-check on {} ({}):\n",
-                    claims.iter().filter(|c| c.agrees).count(),
-                    claims.len(),
-                    ps30::verify::CROSSCHECK_IMAGE,
-                    "emulated two-pass L̄w against the f64 reference"
-                ))?;
+            } else if !(ui.quiet && ok) {
+                say(&ui, &ps30::verify::claims_text(&claims))?;
+                say(
+                    &ui,
+                    &format!(
+                        "\n{} of {} claims reproduced\n\ncross-check on {} ({}):\n",
+                        claims.iter().filter(|c| c.agrees).count(),
+                        claims.len(),
+                        ps30::verify::CROSSCHECK_IMAGE,
+                        "emulated two-pass L̄w against the f64 reference"
+                    ),
+                )?;
                 for r in &rows {
-                    print(&format!(
-                        "  {:<8} {} + {} {}×{} {}: {}\n",
-                        if r.as_expected() { "ok" } else { "UNEXPECTED" },
-                        r.pass1,
-                        r.pass2,
-                        r.block.0,
-                        r.block.1,
-                        r.format,
-                        r.finding
-                    ))?;
+                    say(
+                        &ui,
+                        &format!(
+                            "  {:<8} {} + {} {}×{} {}: {}\n",
+                            if r.as_expected() { "ok" } else { "UNEXPECTED" },
+                            r.pass1,
+                            r.pass2,
+                            r.block.0,
+                            r.block.1,
+                            r.format,
+                            r.finding
+                        ),
+                    )?;
                 }
+                say(&ui, &verify_tonemap_text(&generated))?;
                 print(&format!(
                     "\nreports written to {} and {}\n",
                     claims_path.display(),
                     cross_path.display()
                 ))?;
+                print(&format!(
+                    "figures and pages: {} (index: {})\n",
+                    generated.files.len(),
+                    reports.join("README.md").display()
+                ))?;
             }
             Ok(if ok { Outcome::Ok } else { Outcome::Problem })
         }
     }
+}
+
+/// The tone-mapping lines of `ps30 verify`'s text output.
+fn verify_tonemap_text(g: &ps30::report_dir::Generated) -> String {
+    let mut s = String::from(
+        "\ntone mapping (asm/tonemap/reinhard.psh in the emulator against the f64 reference, every pixel):\n",
+    );
+    for r in &g.tonemap {
+        s.push_str(&format!(
+            "  {:<8} {}: L̄w {:.6}, largest difference {:.1e} (bound there {:.1e}, at most {:.0}% of a bound), 8-bit codes off by one: {}\n",
+            if r.agree { "ok" } else { "DISAGREE" },
+            r.image,
+            r.log_average,
+            r.max_error,
+            r.max_error_bound,
+            100.0 * r.largest_bound_fraction,
+            r.mismatched_8bit_channels
+        ));
+    }
+    s
 }
 
 fn main() -> ExitCode {
