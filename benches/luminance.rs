@@ -29,10 +29,10 @@ fn compile(src: (&str, &str), defines: &[(&str, u64)]) -> emu::Compiled {
 
 fn state() -> SamplerState {
     SamplerState {
-        filter: Filter::Point,
         address_u: Address::Border,
         address_v: Address::Border,
         border: [0.0; 4],
+        ..SamplerState::filtered(Filter::Point)
     }
 }
 
@@ -65,7 +65,7 @@ fn two_pass(
         int: vec![[0; 4], [bw as i32, 0, 0, 0], [bh as i32, 0, 0, 0]],
         bool: Vec::new(),
     };
-    d1.samplers.push((0, img.as_texture(), state()));
+    d1.samplers.push((0, img.as_texture().into(), state()));
     let out1 = emu::run_with_threads(p1, &d1, 1).unwrap();
     let mut t1 = RenderTarget::new(nx, ny, TargetFormat::R32F);
     for (i, v) in out1.color[0].as_ref().unwrap().iter().enumerate() {
@@ -80,7 +80,7 @@ fn two_pass(
         [1.0 / (w * h) as f32, 0.0, 0.0, 0.0],
         [1.0 / nx as f32, 1.0 / ny as f32, 0.0, 1.0],
     ];
-    d2.samplers.push((0, t1.as_texture(), state()));
+    d2.samplers.push((0, t1.as_texture().into(), state()));
     emu::run_with_threads(p2, &d2, 1).unwrap().color[0]
         .as_ref()
         .unwrap()[0][0]

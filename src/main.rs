@@ -517,13 +517,13 @@ fn run(cli: Cli) -> Result<Outcome, BadInput> {
                 target,
                 constants: consts,
                 sampler: ps30::emu::SamplerState {
-                    filter: match filter {
-                        FilterArg::Point => ps30::emu::Filter::Point,
-                        FilterArg::Linear => ps30::emu::Filter::Linear,
-                    },
                     address_u: address,
                     address_v: address,
                     border,
+                    ..ps30::emu::SamplerState::filtered(match filter {
+                        FilterArg::Point => ps30::emu::Filter::Point,
+                        FilterArg::Linear => ps30::emu::Filter::Linear,
+                    })
                 },
                 format: target_format.into(),
                 threads: threads.map(|t| t as usize),

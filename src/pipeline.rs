@@ -315,15 +315,15 @@ pub fn block_start(w: u32, h: u32, bw: u32, bh: u32) -> LinearInput {
     }
 }
 
-fn sampler(texture: Texture<'_>) -> (u32, emu::Texture<'_>, SamplerState) {
+fn sampler(texture: Texture<'_>) -> (u32, emu::TextureLevels<'_>, SamplerState) {
     (
         0,
-        texture,
+        texture.into(),
         SamplerState {
-            filter: Filter::Point,
             address_u: Address::Border,
             address_v: Address::Border,
             border: [0.0; 4],
+            ..SamplerState::filtered(Filter::Point)
         },
     )
 }
@@ -746,7 +746,8 @@ pub fn run_pass(
     }
     draw.constants = setup.constants.clone();
     if loaded.shader.program().sampler_type(0).is_some() {
-        draw.samplers.push((0, image.as_texture(), setup.sampler));
+        draw.samplers
+            .push((0, image.as_texture().into(), setup.sampler));
     }
     let (target, emulated) = draw_into(&compiled, &draw, setup.format, setup.threads)?;
     let mut env = Environment::default();
