@@ -34,6 +34,7 @@ pub mod front;
 pub mod image;
 pub mod ir;
 pub mod isa;
+pub mod lights;
 pub mod pipeline;
 pub mod reference;
 pub mod report;
