@@ -36,6 +36,7 @@ pub mod ir;
 pub mod isa;
 pub mod lights;
 pub mod pipeline;
+pub mod profile;
 pub mod reference;
 pub mod report;
 pub mod valid;

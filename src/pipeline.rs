@@ -127,6 +127,10 @@ pub struct PassCost {
     pub executed_static: Range,
     /// Executed slots per pixel the emulator counted (min, max over pixels).
     pub executed_emulated: Range,
+    /// Warnings from the draw's quads (divergent gradients, a level of
+    /// detail far from level 0 on a texture that has only level 0): see
+    /// [`crate::profile`].
+    pub findings: Vec<crate::profile::Finding>,
     /// Whether every pixel's count lies in the static range.
     pub counts_agree: bool,
     pub within_limits: bool,
@@ -334,7 +338,8 @@ fn draw_into(
     draw: &Draw,
     format: TargetFormat,
     threads: Option<usize>,
-) -> Result<(RenderTarget, Range), PipelineError> {
+    file: &crate::diag::SourceFile,
+) -> Result<(RenderTarget, Range, Vec<crate::profile::Finding>), PipelineError> {
     let out = match threads {
         Some(t) => emu::run_with_threads(compiled, draw, t),
         None => emu::run(compiled, draw),
@@ -348,13 +353,15 @@ fn draw_into(
     }
     let min = out.executed.iter().copied().min().unwrap_or(0);
     let max = out.executed.iter().copied().max().unwrap_or(0);
-    Ok((target, Range { min, max }))
+    let findings = crate::profile::findings(&out, draw, file);
+    Ok((target, Range { min, max }, findings))
 }
 
 fn pass_cost(
     loaded: &front::Loaded,
     env: &Environment,
     emulated: Range,
+    findings: Vec<crate::profile::Finding>,
 ) -> Result<(PassCost, cost::Analysis), PipelineError> {
     let a = cost::analyse(&loaded.shader, &loaded.file, env, &Profile::ps_3_0())
         .map_err(|e| PipelineError::Cost(e.to_string()))?;
@@ -364,6 +371,7 @@ fn pass_cost(
             slots: a.slots,
             executed_static: a.executed,
             executed_emulated: emulated,
+            findings,
             counts_agree: a.executed.min <= emulated.min && emulated.max <= a.executed.max,
             within_limits: a.verdict == cost::Verdict::Within,
         },
@@ -431,8 +439,9 @@ pub fn run(
         height: h,
         texels: &image.pixels,
     }));
-    let (t1, emulated1) = draw_into(&c1, &d1, s.format, s.threads)?;
-    let (pass1_cost, _) = pass_cost(&l1, &env1, emulated1)?;
+    d1.record_lod = true;
+    let (t1, emulated1, findings1) = draw_into(&c1, &d1, s.format, s.threads, &l1.file)?;
+    let (pass1_cost, _) = pass_cost(&l1, &env1, emulated1, findings1)?;
 
     // Reference and bounds for pass 1.
     let refs = reference::block_sums(image, delta, s.policy, bw, bh)
@@ -477,8 +486,9 @@ pub fn run(
         bool: Vec::new(),
     };
     d2.samplers.push(sampler(t1.as_texture()));
-    let (t2, emulated2) = draw_into(&c2, &d2, s.format, s.threads)?;
-    let (pass2_cost, _) = pass_cost(&l2, &Environment::default(), emulated2)?;
+    d2.record_lod = true;
+    let (t2, emulated2, findings2) = draw_into(&c2, &d2, s.format, s.threads, &l2.file)?;
+    let (pass2_cost, _) = pass_cost(&l2, &Environment::default(), emulated2, findings2)?;
     let log_average = t2.texel(0, 0)[0] as f64;
 
     // Pass 2 on its own: the emulated L̄w against pass 2's formula applied
@@ -588,7 +598,7 @@ pub fn run_json(image: &str, r: &LuminanceRun) -> serde_json::Value {
 
 fn pass_line(label: &str, p: &PassCost) -> String {
     use crate::report::range_text;
-    format!(
+    let mut s = format!(
         "{label} {}: {} slots, {} executed per pixel (emulator counted {}{})\n",
         p.shader,
         p.slots,
@@ -599,7 +609,22 @@ fn pass_line(label: &str, p: &PassCost) -> String {
         } else {
             ", DIFFERENT"
         }
-    )
+    );
+    s.push_str(&findings_text(&p.shader, &p.findings));
+    s
+}
+
+/// One `  warning: file:line:col: …` line per finding.
+fn findings_text(shader: &str, findings: &[crate::profile::Finding]) -> String {
+    findings
+        .iter()
+        .map(|f| {
+            format!(
+                "  warning: {shader}:{}:{}: {} ({})\n",
+                f.site.line, f.site.column, f.message, f.label
+            )
+        })
+        .collect()
 }
 
 /// The text form of a run (`ps30 luminance`).
@@ -749,7 +774,9 @@ pub fn run_pass(
         draw.samplers
             .push((0, image.as_texture().into(), setup.sampler));
     }
-    let (target, emulated) = draw_into(&compiled, &draw, setup.format, setup.threads)?;
+    draw.record_lod = true;
+    let (target, emulated, findings) =
+        draw_into(&compiled, &draw, setup.format, setup.threads, &loaded.file)?;
     let mut env = Environment::default();
     for (i, v) in setup.constants.int.iter().enumerate() {
         env.ints.insert(i as u32, *v);
@@ -757,7 +784,7 @@ pub fn run_pass(
     for (i, v) in setup.constants.bool.iter().enumerate() {
         env.bools.insert(i as u32, *v);
     }
-    let (cost, _) = pass_cost(loaded, &env, emulated)?;
+    let (cost, _) = pass_cost(loaded, &env, emulated, findings)?;
     Ok(PassOutput { target, cost })
 }
 
@@ -797,6 +824,7 @@ pub fn pass_text(
             ", DIFFERENT"
         }
     ));
+    s.push_str(&findings_text(&out.cost.shader, &out.cost.findings));
     if !out.cost.within_limits {
         s.push_str("the shader does not fit the ps_3_0 limits (see ps30 check)\n");
     }
