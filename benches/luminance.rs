@@ -4,6 +4,8 @@
 //! * `reference/f64`: the CPU reference's L̄w (every pixel once);
 //! * `emulate/unrolled`: both passes of the corrected unrolled shaders
 //!   (125×128 blocks), one emulator thread;
+//! * `emulate/unrolled+lod`: the same with `Draw::record_lod` on pass 1,
+//!   as `ps30 luminance` runs it (the LOD statistic behind its warning);
 //! * `emulate/loop`: both passes of the corrected loop shaders (128×56
 //!   blocks), one emulator thread.
 //!
@@ -43,10 +45,12 @@ fn two_pass(
     p2: &emu::Compiled,
     bw: u32,
     bh: u32,
+    record_lod: bool,
 ) -> f32 {
     let (w, h) = (img.width, img.height);
     let (nx, ny) = (w.div_ceil(bw), h.div_ceil(bh));
     let mut d1 = Draw::new(nx, ny);
+    d1.record_lod = record_lod;
     d1.inputs.push((
         0,
         LinearInput {
@@ -103,10 +107,13 @@ fn luminance(c: &mut Criterion) {
         b.iter(|| reference::log_average(black_box(&img), 1e-4, Policy::ABS).log_average)
     });
     g.bench_function("emulate/unrolled", |b| {
-        b.iter(|| two_pass(black_box(&img), &unrolled.0, &unrolled.1, 125, 128))
+        b.iter(|| two_pass(black_box(&img), &unrolled.0, &unrolled.1, 125, 128, false))
+    });
+    g.bench_function("emulate/unrolled+lod", |b| {
+        b.iter(|| two_pass(black_box(&img), &unrolled.0, &unrolled.1, 125, 128, true))
     });
     g.bench_function("emulate/loop", |b| {
-        b.iter(|| two_pass(black_box(&img), &looped.0, &looped.1, 128, 56))
+        b.iter(|| two_pass(black_box(&img), &looped.0, &looped.1, 128, 56, false))
     });
     g.finish();
 }
