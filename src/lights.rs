@@ -85,8 +85,9 @@ impl std::fmt::Display for SceneError {
 
 impl std::error::Error for SceneError {}
 
-/// Largest side of a synthetic scene.
-pub const MAX_SIDE: u32 = 8192;
+/// Largest side of a synthetic scene (4096² pixels is also the emulator's
+/// default target limit).
+pub const MAX_SIDE: u32 = 4096;
 
 fn normalize(v: [f64; 3]) -> [f64; 3] {
     let n = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
