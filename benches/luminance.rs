@@ -4,6 +4,8 @@
 //! * `reference/f64`: the CPU reference's L̄w (every pixel once);
 //! * `emulate/unrolled`: both passes of the corrected unrolled shaders
 //!   (125×128 blocks), one emulator thread;
+//! * `emulate/unrolled+lod`: the same with `Draw::record_lod` on pass 1,
+//!   as `ps30 luminance` runs it (the LOD statistic behind its warning);
 //! * `emulate/loop`: both passes of the corrected loop shaders (128×56
 //!   blocks), one emulator thread.
 //!
@@ -29,10 +31,10 @@ fn compile(src: (&str, &str), defines: &[(&str, u64)]) -> emu::Compiled {
 
 fn state() -> SamplerState {
     SamplerState {
-        filter: Filter::Point,
         address_u: Address::Border,
         address_v: Address::Border,
         border: [0.0; 4],
+        ..SamplerState::filtered(Filter::Point)
     }
 }
 
@@ -43,10 +45,12 @@ fn two_pass(
     p2: &emu::Compiled,
     bw: u32,
     bh: u32,
+    record_lod: bool,
 ) -> f32 {
     let (w, h) = (img.width, img.height);
     let (nx, ny) = (w.div_ceil(bw), h.div_ceil(bh));
     let mut d1 = Draw::new(nx, ny);
+    d1.record_lod = record_lod;
     d1.inputs.push((
         0,
         LinearInput {
@@ -65,7 +69,7 @@ fn two_pass(
         int: vec![[0; 4], [bw as i32, 0, 0, 0], [bh as i32, 0, 0, 0]],
         bool: Vec::new(),
     };
-    d1.samplers.push((0, img.as_texture(), state()));
+    d1.samplers.push((0, img.as_texture().into(), state()));
     let out1 = emu::run_with_threads(p1, &d1, 1).unwrap();
     let mut t1 = RenderTarget::new(nx, ny, TargetFormat::R32F);
     for (i, v) in out1.color[0].as_ref().unwrap().iter().enumerate() {
@@ -80,7 +84,7 @@ fn two_pass(
         [1.0 / (w * h) as f32, 0.0, 0.0, 0.0],
         [1.0 / nx as f32, 1.0 / ny as f32, 0.0, 1.0],
     ];
-    d2.samplers.push((0, t1.as_texture(), state()));
+    d2.samplers.push((0, t1.as_texture().into(), state()));
     emu::run_with_threads(p2, &d2, 1).unwrap().color[0]
         .as_ref()
         .unwrap()[0][0]
@@ -103,10 +107,13 @@ fn luminance(c: &mut Criterion) {
         b.iter(|| reference::log_average(black_box(&img), 1e-4, Policy::ABS).log_average)
     });
     g.bench_function("emulate/unrolled", |b| {
-        b.iter(|| two_pass(black_box(&img), &unrolled.0, &unrolled.1, 125, 128))
+        b.iter(|| two_pass(black_box(&img), &unrolled.0, &unrolled.1, 125, 128, false))
+    });
+    g.bench_function("emulate/unrolled+lod", |b| {
+        b.iter(|| two_pass(black_box(&img), &unrolled.0, &unrolled.1, 125, 128, true))
     });
     g.bench_function("emulate/loop", |b| {
-        b.iter(|| two_pass(black_box(&img), &looped.0, &looped.1, 128, 56))
+        b.iter(|| two_pass(black_box(&img), &looped.0, &looped.1, 128, 56, false))
     });
     g.finish();
 }

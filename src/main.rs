@@ -145,6 +145,12 @@ enum Command {
         #[command(flatten)]
         exec: ExecArgs,
     },
+    /// Per-pixel and per-quad costs over an image, divergence, and gradients
+    /// that rely on undefined behaviour.
+    #[command(
+        after_help = "Examples:\n  ps30 profile lights:select --gbuffer 64x64\n  ps30 profile lights:texld --gbuffer 64x64\n  ps30 profile corrected:loop --image assets/hdr/courtyard_1280x1024.exr --target 10x8 \\\n      --int i1=8 --int i2=8 --const c1=0.00078125,0.0009765625,0,1 --const c3=0.27,0.67,0.06,0.01"
+    )]
+    Profile(ps30::profile::ProfileArgs),
     /// Check every figure the article states and write the report to reports/.
     #[command(after_help = "Example:\n  ps30 verify --json")]
     Verify {
@@ -621,13 +627,13 @@ fn run(cli: Cli) -> Result<Outcome, BadInput> {
                 target,
                 constants: consts,
                 sampler: ps30::emu::SamplerState {
-                    filter: match filter {
-                        FilterArg::Point => ps30::emu::Filter::Point,
-                        FilterArg::Linear => ps30::emu::Filter::Linear,
-                    },
                     address_u: address,
                     address_v: address,
                     border,
+                    ..ps30::emu::SamplerState::filtered(match filter {
+                        FilterArg::Point => ps30::emu::Filter::Point,
+                        FilterArg::Linear => ps30::emu::Filter::Linear,
+                    })
                 },
                 format: target_format.into(),
                 threads: threads.map(|t| t as usize),
@@ -759,6 +765,11 @@ fn run(cli: Cli) -> Result<Outcome, BadInput> {
             }
             Ok(if ok { Outcome::Ok } else { Outcome::Problem })
         }
+        Command::Profile(args) => Ok(match ps30::profile::command(args, color_stderr()) {
+            Ok(false) => Outcome::Ok,
+            Ok(true) => Outcome::Problem,
+            Err(e) => return Err(BadInput(e)),
+        }),
         Command::Verify { reports, json } => {
             let bar = std::cell::RefCell::new(ui.bar("article claims", 12));
             let claims = ps30::verify::article_claims().map_err(BadInput)?;

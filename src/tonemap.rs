@@ -651,10 +651,10 @@ pub fn emulate(
     let mut lw_target = RenderTarget::new(1, 1, TargetFormat::R32F);
     lw_target.store(0, 0, [op.log_average as f32, 0.0, 0.0, 0.0]);
     let clamp = SamplerState {
-        filter: Filter::Point,
         address_u: Address::Clamp,
         address_v: Address::Clamp,
         border: [0.0; 4],
+        ..SamplerState::filtered(Filter::Point)
     };
     let (w, h) = (image.width, image.height);
     let band = match settings.band_rows {
@@ -693,8 +693,9 @@ pub fn emulate(
             int: Vec::new(),
             bool: Vec::new(),
         };
-        draw.samplers.push((0, image.as_texture(), clamp));
-        draw.samplers.push((1, lw_target.as_texture(), clamp));
+        draw.samplers.push((0, image.as_texture().into(), clamp));
+        draw.samplers
+            .push((1, lw_target.as_texture().into(), clamp));
         let out = match settings.threads {
             Some(t) => emu::run_with_threads(&compiled, &draw, t),
             None => emu::run(&compiled, &draw),
@@ -724,6 +725,7 @@ pub fn emulate(
         counts_agree: analysis.executed.min <= executed.min
             && executed.max <= analysis.executed.max,
         within_limits: analysis.verdict == cost::Verdict::Within,
+        findings: Vec::new(),
     };
     Ok((linear, cost))
 }

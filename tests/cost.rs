@@ -943,7 +943,8 @@ fn emulated_counts(l: &Loaded) -> Result<Vec<u64>, String> {
             height: 2,
             texels: &texels,
         };
-        draw.samplers.push((s.index, tex, SamplerState::default()));
+        draw.samplers
+            .push((s.index, tex.into(), SamplerState::default()));
     }
     let out = emu::run_with_threads(&compiled, &draw, 1).map_err(|e| e.to_string())?;
     Ok(out.executed)

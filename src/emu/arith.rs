@@ -1,4 +1,5 @@
-//! Arithmetic, comparison and texture handlers of the executor.
+//! Arithmetic and comparison handlers of the executor (the texld family is
+//! in `texop.rs`).
 //!
 //! Every handler is a loop over all [`LANES`] lanes of fixed-size rows (so
 //! the compiler can vectorise it), built from a few generic helpers:
@@ -12,10 +13,9 @@
 // clearer than zipped iterators and vectorises the same.
 #![allow(clippy::needless_range_loop)]
 
-use super::compile::{DstOp, SamplerOp, SrcOp, TexKind};
+use super::compile::{DstOp, SrcOp};
 use super::exec::Worker;
 use super::math::{self, modify};
-use super::sample::UNBOUND;
 use super::LANES;
 use crate::isa::Compare;
 
@@ -384,54 +384,5 @@ impl Worker<'_, '_> {
             kill |= m & self.write_mask(d, c);
         }
         kill
-    }
-
-    /// The texld family on a 2D sampler (mip level 0 only, see `sample.rs`).
-    pub(super) fn texld(&mut self, d: DstOp, a: SrcOp, s: SamplerOp, kind: TexKind) {
-        let (am, ax) = a.mod_bits();
-        let (ru, rv, rw) = (self.row(a, 0), self.row(a, 1), self.row(a, 3));
-        let swz: [usize; 4] = std::array::from_fn(|c| ((s.swz >> (2 * c)) & 3) as usize);
-        let [u, v] = &mut self.aux;
-        let (su, sv, sw) = (&self.rows[ru], &self.rows[rv], &self.rows[rw]);
-        if kind == TexKind::LdP {
-            // texldp divides by w before sampling (MS `texldp---ps`).
-            for l in 0..LANES {
-                let w = modify(sw[l], am, ax);
-                u[l] = modify(su[l], am, ax) / w;
-                v[l] = modify(sv[l], am, ax) / w;
-            }
-        } else {
-            for l in 0..LANES {
-                u[l] = modify(su[l], am, ax);
-                v[l] = modify(sv[l], am, ax);
-            }
-        }
-        let sampler = self.ctx.samplers.get(s.index as usize).copied().flatten();
-        // Unmasked full writes gather straight into the destination rows (the
-        // coordinates are already in `aux`, so nothing reads them).
-        if let Some(sampler) = sampler {
-            if d.mask() == 0xf && self.exec == self.live && !d.predicated() {
-                let base = d.row as usize;
-                if let Some(dst) = self.rows.get_mut(base..base + 4) {
-                    if let Ok(dst) = <&mut [[f32; LANES]; 4]>::try_from(dst) {
-                        sampler.sample_lanes(&self.aux[0], &self.aux[1], swz, dst);
-                        if d.output() {
-                            let k = (base - self.ctx.compiled.layout.output as usize) / 4;
-                            self.written |= 1 << k;
-                        }
-                        return;
-                    }
-                }
-            }
-        }
-        match sampler {
-            Some(sampler) => sampler.sample_lanes(&self.aux[0], &self.aux[1], swz, &mut self.tmp),
-            None => {
-                for c in 0..4 {
-                    self.tmp[c] = [UNBOUND[swz[c]]; LANES];
-                }
-            }
-        }
-        self.store::<false>(d, d.mask());
     }
 }

@@ -19,7 +19,7 @@
 //! | reset block | every `r#` used, `oC0..oC3`, `oDepth`, `aL` | zeroed per batch |
 //! | input block | `v0..v9`, `vPos` | filled per batch |
 
-use super::EmuError;
+use super::{EmuError, GradientSite};
 use crate::ir::{Dst, Info, Instruction, Shader, Src, SrcMod, Swizzle};
 use crate::isa::{Compare, Opcode, RegFile, SamplerType};
 use std::collections::BTreeSet;
@@ -272,23 +272,29 @@ pub enum Op {
         b: SrcOp,
         c: SrcOp,
     },
+    /// `site`: index into [`Compiled::sites`].
     Dsx {
         d: DstOp,
         a: SrcOp,
+        site: u16,
     },
     Dsy {
         d: DstOp,
         a: SrcOp,
+        site: u16,
     },
     /// `texkill`: `d.row` is the tested register, `d.mask` its components.
     TexKill {
         d: DstOp,
     },
+    /// `site`: index into [`Compiled::sites`] (`u16::MAX` for texldl, which
+    /// takes no gradients).
     Tex {
         d: DstOp,
         a: SrcOp,
         s: SamplerOp,
         kind: TexKind,
+        site: u16,
     },
     /// `texldd`: the gradient sources live in [`Compiled::grads`].
     TexD {
@@ -393,6 +399,10 @@ pub struct Compiled {
     pub(crate) ops: Vec<MicroOp>,
     /// `(ddx, ddy)` sources of each `texldd`.
     pub(crate) grads: Vec<(SrcOp, SrcOp)>,
+    /// Gradient sites: one per source statement (span) of a `dsx`, `dsy`,
+    /// `texld`, `texldp` or `texldb` (REPEAT_BLOCK copies share one), with
+    /// zero counts.
+    pub(crate) sites: Vec<GradientSite>,
     pub(crate) layout: Layout,
     pub(crate) float_defs: Vec<(u32, [f32; 4])>,
     pub(crate) int_defs: Vec<(u32, [i32; 4])>,
@@ -729,6 +739,37 @@ pub fn compile(shader: &Shader) -> Result<Compiled, EmuError> {
     // Pass 2: ops. A lexical stack of open loops checks `break` placement.
     let mut ops = Vec::with_capacity(n + 1);
     let mut grads = Vec::new();
+    let mut sites: Vec<GradientSite> = Vec::new();
+    let mut site_of_span: std::collections::HashMap<crate::ir::Span, u16> =
+        std::collections::HashMap::new();
+    let mut site = |i: usize, x: &Instruction| -> Result<u16, EmuError> {
+        if let Some(&k) = site_of_span.get(&x.origin.span) {
+            return Ok(k);
+        }
+        let k = u16::try_from(sites.len())
+            .ok()
+            .filter(|&k| k != u16::MAX)
+            .ok_or_else(|| malformed(i, "too many gradient instructions"))?;
+        let sampler = x
+            .src
+            .iter()
+            .find(|s| s.reg.file == RegFile::Sampler)
+            .map(|s| s.reg.index);
+        sites.push(GradientSite {
+            instruction: i,
+            span: x.origin.span,
+            op: x.op,
+            sampler,
+            temp_source: x.src.first().is_some_and(|s| s.reg.file == RegFile::Temp),
+            quads: 0,
+            divergent_quads: 0,
+            executions: 0,
+            divergent_executions: 0,
+            lod: None,
+        });
+        site_of_span.insert(x.origin.span, k);
+        Ok(k)
+    };
     let mut open_loops = 0u32;
     let (mut rep_ints, mut loop_ints) = (0u16, 0u16);
     for (i, x) in ins.iter().enumerate() {
@@ -764,8 +805,16 @@ pub fn compile(shader: &Shader) -> Result<Compiled, EmuError> {
                     Opcode::Abs => Op::Abs { d, a },
                     Opcode::Nrm => Op::Nrm { d, a },
                     Opcode::SinCos => Op::SinCos { d, a },
-                    Opcode::Dsx => Op::Dsx { d, a },
-                    _ => Op::Dsy { d, a },
+                    Opcode::Dsx => Op::Dsx {
+                        d,
+                        a,
+                        site: site(i, x)?,
+                    },
+                    _ => Op::Dsy {
+                        d,
+                        a,
+                        site: site(i, x)?,
+                    },
                 }
             }
             Opcode::Add
@@ -866,17 +915,26 @@ pub fn compile(shader: &Shader) -> Result<Compiled, EmuError> {
                         grads.push((dx, dy));
                         Op::TexD { d, a, s, grads: g }
                     }
-                    op => Op::Tex {
-                        d,
-                        a,
-                        s,
-                        kind: match op {
+                    op => {
+                        let kind = match op {
                             Opcode::TexLd => TexKind::Ld,
                             Opcode::TexLdP => TexKind::LdP,
                             Opcode::TexLdB => TexKind::LdB,
                             _ => TexKind::LdL,
-                        },
-                    },
+                        };
+                        let site = if kind == TexKind::LdL {
+                            u16::MAX
+                        } else {
+                            site(i, x)?
+                        };
+                        Op::Tex {
+                            d,
+                            a,
+                            s,
+                            kind,
+                            site,
+                        }
+                    }
                 }
             }
             Opcode::Setp => {
@@ -1004,6 +1062,7 @@ pub fn compile(shader: &Shader) -> Result<Compiled, EmuError> {
     Ok(Compiled {
         ops,
         grads,
+        sites,
         layout: b.layout,
         float_defs,
         int_defs,

@@ -27,6 +27,7 @@
 #![allow(clippy::needless_range_loop)]
 
 use super::compile::{Cond, Op};
+use super::texop::{quads_all, quads_any, SiteBatch};
 use super::{EmuError, RunCtx, LANES};
 
 /// A flow-control construct in progress.
@@ -72,6 +73,13 @@ pub(crate) struct BatchOut {
     pub written: u8,
     pub killed: u64,
     pub executed: [u64; LANES],
+    /// Executed slots of each quad: each op once per quad with any lane in
+    /// it executing.
+    pub quad_executed: [u64; LANES / 4],
+    /// Bit 4q: quad q ran some op with some but not all of its lanes.
+    pub diverged: u64,
+    /// What each gradient site saw ([`super::Compiled`]'s site order).
+    pub sites: Vec<SiteBatch>,
 }
 
 /// Per-thread executor state, reused across batches (nothing is allocated
@@ -84,6 +92,13 @@ pub(crate) struct Worker<'c, 'a> {
     pub(super) tmp: [[f32; LANES]; 4],
     /// Operand scratch (texture coordinates).
     pub(super) aux: [[f32; LANES]; 2],
+    /// Per-lane level of detail scratch (texture instructions).
+    pub(super) lod: [f32; LANES],
+    /// Per gradient site, this batch.
+    pub(super) sites: Vec<SiteBatch>,
+    quad_counts: [u64; LANES / 4],
+    /// Bit 4q: quad q has diverged.
+    diverged: u64,
     /// p0, one lane mask per channel.
     pub(super) p: [u64; 4],
     pub(super) exec: u64,
@@ -142,6 +157,10 @@ impl<'c, 'a> Worker<'c, 'a> {
             rows,
             tmp: [[0.0; LANES]; 4],
             aux: [[0.0; LANES]; 2],
+            lod: [0.0; LANES],
+            sites: vec![SiteBatch::default(); ctx.compiled.sites.len()],
+            quad_counts: [0; LANES / 4],
+            diverged: 0,
             p: [0; 4],
             exec: 0,
             live: 0,
@@ -201,6 +220,9 @@ impl<'c, 'a> Worker<'c, 'a> {
         self.live = live;
         self.killed = 0;
         self.counts = [0; LANES];
+        self.quad_counts = [0; LANES / 4];
+        self.diverged = 0;
+        self.sites.fill(SiteBatch::default());
         self.uniform = 0;
         self.bound = 0;
         self.stack.clear();
@@ -214,6 +236,9 @@ impl<'c, 'a> Worker<'c, 'a> {
             written: 0,
             killed: 0,
             executed: [0; LANES],
+            quad_executed: [0; LANES / 4],
+            diverged: 0,
+            sites: Vec::new(),
         });
         if target != 0 {
             self.execute(&mut out)?;
@@ -231,12 +256,26 @@ impl<'c, 'a> Worker<'c, 'a> {
         out.written = self.written;
         out.killed = self.killed & self.target;
         out.executed = self.counts;
+        out.quad_executed = self.quad_counts;
+        out.diverged = self.diverged;
+        let ctx = self.ctx;
+        out.sites = self.sites.clone();
+        for (st, info) in out.sites.iter_mut().zip(&ctx.compiled.sites) {
+            let bias = info
+                .sampler
+                .and_then(|s| ctx.samplers.get(s as usize))
+                .and_then(|s| s.as_ref())
+                .map_or(0.0, |s| s.bias());
+            st.finish(bias);
+        }
         Ok(out)
     }
 
     // ----- counting -------------------------------------------------------
 
-    /// Charges `slots` to every lane of `mask`.
+    /// Charges `slots` to every lane of `mask`, and once to every quad with
+    /// a lane in `mask`; a quad with some but not all four lanes in `mask`
+    /// has diverged.
     #[inline(always)]
     pub(super) fn charge(&mut self, mask: u64, slots: u8) {
         if mask == self.live {
@@ -246,6 +285,11 @@ impl<'c, 'a> Worker<'c, 'a> {
             self.bound += s;
             for l in lanes(mask) {
                 self.counts[l] += s;
+            }
+            let any = quads_any(mask);
+            self.diverged |= any & !quads_all(mask);
+            for q in lanes(any) {
+                self.quad_counts[q / 4] += s;
             }
         }
     }
@@ -264,6 +308,9 @@ impl<'c, 'a> Worker<'c, 'a> {
         if self.uniform != 0 {
             for l in lanes(self.live) {
                 self.counts[l] += self.uniform;
+            }
+            for q in lanes(quads_any(self.live)) {
+                self.quad_counts[q / 4] += self.uniform;
             }
             self.bound += self.uniform;
             self.uniform = 0;
@@ -520,13 +567,15 @@ impl<'c, 'a> Worker<'c, 'a> {
                         self.sincos(d, a)
                     }
                 }
-                Op::Dsx { d, a } => {
+                Op::Dsx { d, a, site } => {
                     if self.begin(s) {
+                        self.note_site(site);
                         self.deriv(d, a, 1)
                     }
                 }
-                Op::Dsy { d, a } => {
+                Op::Dsy { d, a, site } => {
                     if self.begin(s) {
+                        self.note_site(site);
                         self.deriv(d, a, 2)
                     }
                 }
@@ -540,14 +589,28 @@ impl<'c, 'a> Worker<'c, 'a> {
                         self.killed |= self.texkill(d);
                     }
                 }
-                Op::Tex { d, a, s: smp, kind } => {
+                Op::Tex {
+                    d,
+                    a,
+                    s: smp,
+                    kind,
+                    site,
+                } => {
                     if self.begin(s) {
-                        self.texld(d, a, smp, kind)
+                        self.texld(d, a, smp, kind, site)
                     }
                 }
-                Op::TexD { d, a, s: smp, .. } => {
+                Op::TexD {
+                    d,
+                    a,
+                    s: smp,
+                    grads,
+                } => {
                     if self.begin(s) {
-                        self.texld(d, a, smp, super::compile::TexKind::Ld)
+                        let Some(&(gx, gy)) = ctx.compiled.grads.get(grads as usize) else {
+                            return Err(malformed(at, "texldd gradients missing"));
+                        };
+                        self.texldd(d, a, smp, gx, gy)
                     }
                 }
 

@@ -31,6 +31,21 @@
 //! the callee and its `ret`; `label` costs 0; `ret` in main ends the lane.
 //! Lanes masked off pay nothing.
 //!
+//! Quads (see [`DrawOutput`]): a quad runs in lockstep, so it pays every
+//! executed op once if any of its four lanes — helpers included — executes
+//! it: [`DrawOutput::quad_executed`] is that count, the per-pixel counts
+//! above are each lane's own path. A quad is *divergent* at an op when some
+//! but not all four of its lanes execute it; [`DrawOutput::quad_divergent`]
+//! marks quads that were, and [`DrawOutput::gradients`] counts, per source
+//! statement of `dsx`, `dsy`, `texld`, `texldp`, `texldb`, the quads that
+//! ran it divergently — where the gradient reads neighbours that are not at
+//! the same point of execution (undefined in Direct3D for temporaries).
+//! Predication masks writes, not execution: a predicated op runs in every
+//! lane, so it never makes a quad divergent here (the validator still warns
+//! about predicated gradient instructions, as Microsoft's rejects them).
+//! Level-of-detail selection for the texld family is described in
+//! `texop.rs` and `sample.rs`.
+//!
 //! Semantic choices where the documentation is silent are listed beside the
 //! functions in `math.rs` and `sample.rs`, and here:
 //! * `texkill` marks the pixel discarded; the lane keeps executing and
@@ -66,6 +81,7 @@ mod sample;
 mod testasm;
 #[cfg(test)]
 mod tests;
+mod texop;
 
 pub use compile::{compile, Compiled, MicroOp};
 
@@ -121,11 +137,24 @@ pub struct Constants {
     pub bool: Vec<bool>,
 }
 
-/// Texture filter (magnification and minification alike; there are no mips).
+/// Texture filter within one mip level (D3DSAMP_MAGFILTER / MINFILTER).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum Filter {
     #[default]
     Point,
+    Linear,
+}
+
+/// Filter between mip levels (D3DSAMP_MIPFILTER).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum MipFilter {
+    /// Mipmapping disabled: every sample reads the base level (Direct3D's
+    /// default).
+    #[default]
+    None,
+    /// The nearest level: round(LOD).
+    Point,
+    /// Blend the two nearest levels by frac(LOD).
     Linear,
 }
 
@@ -141,19 +170,88 @@ pub enum Address {
 }
 
 /// Sampler state of one `s#`. The default is the luminance pass's: point
-/// filtering, BORDER addressing, border colour (0, 0, 0, 0). (Direct3D's own
-/// default addressing is WRAP.)
+/// filtering, BORDER addressing, border colour (0, 0, 0, 0), no mip
+/// filtering, no LOD bias, MAXMIPLEVEL 0 — Direct3D's defaults except for the
+/// addressing (Direct3D's own default is WRAP).
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
 pub struct SamplerState {
-    pub filter: Filter,
+    /// D3DSAMP_MAGFILTER: used when the LOD is ≤ 0.
+    pub mag_filter: Filter,
+    /// D3DSAMP_MINFILTER: used when the LOD is > 0.
+    pub min_filter: Filter,
+    /// D3DSAMP_MIPFILTER.
+    pub mip_filter: MipFilter,
+    /// D3DSAMP_MIPMAPLODBIAS, added to every LOD.
+    pub mip_lod_bias: f32,
+    /// D3DSAMP_MAXMIPLEVEL: the most detailed level allowed (0 = level 0);
+    /// LODs below it are raised to it.
+    pub max_mip_level: u32,
     pub address_u: Address,
     pub address_v: Address,
     pub border: [f32; 4],
 }
 
+impl SamplerState {
+    /// The same filter for magnification and minification, no mips.
+    pub fn filtered(filter: Filter) -> SamplerState {
+        SamplerState {
+            mag_filter: filter,
+            min_filter: filter,
+            ..SamplerState::default()
+        }
+    }
+}
+
 /// Textures are the image module's read-only texel views (one mip level,
 /// RGBA f32, row 0 at the top).
 pub use crate::image::Texture;
+
+/// A texture with its mip levels (see [`crate::image::MipChain`]).
+pub use crate::image::MipChain;
+
+/// What a sampler reads: one level, or a mip chain.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum TextureLevels<'a> {
+    /// A texture without mips (D3D9 `Levels = 1`).
+    Single(Texture<'a>),
+    /// A texture with its box-filtered mip levels.
+    Chain(&'a MipChain),
+}
+
+impl<'a> From<Texture<'a>> for TextureLevels<'a> {
+    fn from(t: Texture<'a>) -> Self {
+        TextureLevels::Single(t)
+    }
+}
+
+impl<'a> From<&'a MipChain> for TextureLevels<'a> {
+    fn from(c: &'a MipChain) -> Self {
+        TextureLevels::Chain(c)
+    }
+}
+
+impl<'a> TextureLevels<'a> {
+    /// Every level, level 0 first.
+    pub fn views(&self) -> Vec<Texture<'a>> {
+        match *self {
+            TextureLevels::Single(t) => vec![t],
+            TextureLevels::Chain(c) => c.views(),
+        }
+    }
+
+    /// Number of levels.
+    pub fn len(&self) -> usize {
+        match self {
+            TextureLevels::Single(_) => 1,
+            TextureLevels::Chain(c) => c.len(),
+        }
+    }
+
+    /// Always false: every binding has level 0.
+    pub fn is_empty(&self) -> bool {
+        false
+    }
+}
 
 /// Safety limits of a draw.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -183,9 +281,15 @@ pub struct Draw<'a> {
     pub inputs: Vec<(u32, LinearInput)>,
     pub constants: Constants,
     /// `(s#, texture, state)`; a declared but unbound sampler reads
-    /// (0, 0, 0, 1).
-    pub samplers: Vec<(u32, Texture<'a>, SamplerState)>,
+    /// (0, 0, 0, 1). A [`Texture`] or a `&`[`MipChain`] converts with `.into()`.
+    pub samplers: Vec<(u32, TextureLevels<'a>, SamplerState)>,
     pub limits: EmuLimits,
+    /// Record the range of levels of detail each texld/texldp/texldb
+    /// computes ([`GradientSite::lod`]). Off by default: on a single-level
+    /// texture the LOD changes nothing, and computing it for every quad of
+    /// every execution costs about 9% of the instructions of a texture-bound
+    /// shader such as the luminance pass. Divergence counts are always kept.
+    pub record_lod: bool,
 }
 
 impl<'a> Draw<'a> {
@@ -198,6 +302,7 @@ impl<'a> Draw<'a> {
             constants: Constants::default(),
             samplers: Vec::new(),
             limits: EmuLimits::default(),
+            record_lod: false,
         }
     }
 }
@@ -215,6 +320,52 @@ pub struct DrawOutput {
     pub killed: Vec<bool>,
     /// Executed instruction slots per pixel.
     pub executed: Vec<u64>,
+    /// Quads per row: quad (qx, qy) covers pixels 2qx..2qx+1 × 2qy..2qy+1,
+    /// and is entry `qy · quads_x + qx` of the per-quad vectors.
+    pub quads_x: u32,
+    /// Executed instruction slots per quad: every executed op charged once
+    /// to each quad with at least one lane (helper lanes included) executing
+    /// it — what a quad running in lockstep pays.
+    pub quad_executed: Vec<u64>,
+    /// Quads that ran some op with some but not all four of their lanes.
+    pub quad_divergent: Vec<bool>,
+    /// What the quads saw at each gradient instruction (dsx, dsy, texld,
+    /// texldp, texldb), one entry per source statement.
+    pub gradients: Vec<GradientSite>,
+}
+
+/// One gradient-using source statement and what the quads did there.
+///
+/// A quad *executes it divergently* when some but not all of its four lanes
+/// (helpers included) run it: the neighbour values the gradient needs are
+/// then whatever the inactive lanes' registers hold, which Direct3D leaves
+/// undefined for temporaries (facts sheet §5). Counts are over quads that
+/// touch the target.
+#[derive(Clone, Debug, PartialEq)]
+pub struct GradientSite {
+    /// Index of its (first) instruction in the program.
+    pub instruction: usize,
+    pub span: crate::ir::Span,
+    pub op: crate::isa::Opcode,
+    /// The sampler of texld/texldp/texldb.
+    pub sampler: Option<u32>,
+    /// Whether the differenced operand (coordinate or dsx/dsy source) is a
+    /// temporary `r#` — only then is a divergent execution undefined; inputs
+    /// are interpolated for every pixel of the quad.
+    pub temp_source: bool,
+    /// Quads that executed it at least once.
+    pub quads: u64,
+    /// Quads that executed it divergently at least once.
+    pub divergent_quads: u64,
+    /// Quad-executions (a quad in a loop counts once per iteration).
+    pub executions: u64,
+    pub divergent_executions: u64,
+    /// Smallest and largest level of detail its executions computed (after
+    /// D3DSAMP_MIPMAPLODBIAS and texldb's bias, before MAXMIPLEVEL and the
+    /// chain's length clamp it); `None` for dsx/dsy, unbound samplers, sites
+    /// never executed and draws without [`Draw::record_lod`]. −∞ means a
+    /// zero gradient.
+    pub lod: Option<(f32, f32)>,
 }
 
 /// Why a compile or a draw failed.
@@ -382,6 +533,7 @@ pub(crate) struct RunCtx<'c, 'a> {
     pub quads_x: u64,
     pub quads: u64,
     pub cap: u64,
+    pub record_lod: bool,
 }
 
 impl<'c, 'a> RunCtx<'c, 'a> {
@@ -469,7 +621,7 @@ impl<'c, 'a> RunCtx<'c, 'a> {
             }
         }
 
-        let mut samplers = [None; 16];
+        let mut samplers: [Option<Sampler<'a>>; 16] = std::array::from_fn(|_| None);
         for (s, tex, state) in &draw.samplers {
             let ty = match compiled.samplers.get(*s as usize).copied().flatten() {
                 Some(ty) => ty,
@@ -503,6 +655,7 @@ impl<'c, 'a> RunCtx<'c, 'a> {
             quads_x,
             quads: quads_x * h.div_ceil(2),
             cap: draw.limits.max_executed_per_pixel,
+            record_lod: draw.record_lod,
         })
     }
 
@@ -546,6 +699,10 @@ pub fn run_with_threads(
         depth: compiled.writes_output(4).then(|| vec![0.0; n]),
         killed: vec![false; n],
         executed: vec![0; n],
+        quads_x: ctx.quads_x as u32,
+        quad_executed: vec![0; ctx.quads as usize],
+        quad_divergent: vec![false; ctx.quads as usize],
+        gradients: compiled.sites.clone(),
     };
     let mut written = 0u8;
     let batches = ctx.batches();
@@ -647,6 +804,25 @@ fn scatter(ctx: &RunCtx, out: &mut DrawOutput, batch: u64, r: &BatchOut) -> u8 {
         }
         if let Some(d) = &mut out.depth {
             d[i] = r.depth[lane];
+        }
+    }
+    for q in 0..LANES / 4 {
+        let quad = batch * QUADS_PER_BATCH + q as u64;
+        if quad < ctx.quads {
+            out.quad_executed[quad as usize] = r.quad_executed[q];
+            out.quad_divergent[quad as usize] = (r.diverged >> (4 * q)) & 1 != 0;
+        }
+    }
+    for (g, b) in out.gradients.iter_mut().zip(&r.sites) {
+        g.quads += b.quads.count_ones() as u64;
+        g.divergent_quads += b.divergent.count_ones() as u64;
+        g.executions += b.executions;
+        g.divergent_executions += b.divergent_executions;
+        if b.lod_min <= b.lod_max {
+            g.lod = Some(match g.lod {
+                Some((lo, hi)) => (lo.min(b.lod_min), hi.max(b.lod_max)),
+                None => (b.lod_min, b.lod_max),
+            });
         }
     }
     r.written

@@ -15,14 +15,25 @@
 //!   taps is addressed independently; a tap outside under BORDER is the border
 //!   colour. Weights are applied as `(c00·(1−wx) + c10·wx)·(1−wy) +
 //!   (c01·(1−wx) + c11·wx)·wy` in f32;
-//! * only mip level 0 exists, so texldb's bias, texldl's LOD and texldd's
-//!   gradients do not change the result.
+//! * mip selection (facts sheet §5; Microsoft's `texldl` page gives the
+//!   reference device's rule, the D3D11.3 spec §7.18.10-11 the formula): the
+//!   LOD λ comes from the executor (implicit gradients, texldb's bias,
+//!   texldl's w, texldd's gradients) with D3DSAMP_MIPMAPLODBIAS added. λ ≤ 0
+//!   (or NaN) reads the base level with the MAGFILTER; otherwise the
+//!   MINFILTER is used and λ is raised to MAXMIPLEVEL: MIPFILTER NONE reads
+//!   the base level, POINT the level round(λ) = ⌊λ + ½⌋, LINEAR blends
+//!   levels ⌊λ⌋ and ⌊λ⌋ + 1 by frac(λ) (the reference device's pseudo-code
+//!   blends by frac(src0.w), without the bias; ps30 uses frac(λ) as D3D11
+//!   does). λ beyond the last level reads the last level. The *base level*
+//!   is MAXMIPLEVEL clamped to the chain (D3D9 gives no rule for MAXMIPLEVEL
+//!   with MIPFILTER NONE; ps30 treats it as the base level, as GL's
+//!   BASE_LEVEL).
 
 // Lane loops index several fixed-size rows with one lane index; that is
 // clearer than zipped iterators and vectorises the same.
 #![allow(clippy::needless_range_loop)]
 
-use super::{Address, Filter, SamplerState, Texture, LANES};
+use super::{Address, Filter, MipFilter, SamplerState, Texture, TextureLevels, LANES};
 
 /// Largest texture side accepted (keeps texel coordinates below 2^23, where
 /// [`floor_index`] is exact).
@@ -48,19 +59,32 @@ fn floor(x: f32) -> f32 {
     }
 }
 
-/// A bound texture with its sampler state, sizes precomputed.
+/// One mip level with its sizes and addressing precomputed.
 #[derive(Clone, Copy, Debug)]
-pub struct Sampler<'a> {
+pub struct Level<'a> {
     texels: &'a [[f32; 4]],
     w: usize,
     wi: i64,
     hi: i64,
     wf: f32,
     hf: f32,
-    filter: Filter,
     au: Address,
     av: Address,
     border: [f32; 4],
+}
+
+/// A bound texture (all its levels) with its sampler state.
+#[derive(Clone, Debug)]
+pub struct Sampler<'a> {
+    levels: Vec<Level<'a>>,
+    /// MAXMIPLEVEL clamped to the chain.
+    base: usize,
+    mag: Filter,
+    min: Filter,
+    mip: MipFilter,
+    bias: f32,
+    /// Whether the LOD can change a sample (see [`Sampler::lod_matters`]).
+    lod_matters: bool,
 }
 
 /// Applies an address mode to an integer texel index; `None` = border.
@@ -102,9 +126,9 @@ fn floor_index(t: f32) -> u32 {
     (f + MAGIC).to_bits().wrapping_sub(MAGIC.to_bits())
 }
 
-impl<'a> Sampler<'a> {
+impl<'a> Level<'a> {
     /// Checks the texture's shape and precomputes sizes.
-    pub fn new(tex: &Texture<'a>, state: &SamplerState) -> Result<Sampler<'a>, String> {
+    fn new(tex: &Texture<'a>, state: &SamplerState) -> Result<Level<'a>, String> {
         if tex.width == 0 || tex.height == 0 {
             return Err(format!("size {}x{} is empty", tex.width, tex.height));
         }
@@ -130,14 +154,13 @@ impl<'a> Sampler<'a> {
                 tex.texels.len()
             ));
         }
-        Ok(Sampler {
+        Ok(Level {
             texels: tex.texels,
             w: tex.width as usize,
             wi: tex.width as i64,
             hi: tex.height as i64,
             wf: tex.width as f32,
             hf: tex.height as f32,
-            filter: state.filter,
             au: state.address_u,
             av: state.address_v,
             border: state.border,
@@ -210,15 +233,26 @@ impl<'a> Sampler<'a> {
         out
     }
 
-    /// Samples every lane; `out[c]` receives sampled component `swz(c)`.
-    pub fn sample_lanes(
+    /// One sample with `filter`.
+    #[inline(always)]
+    fn sample(&self, filter: Filter, u: f32, v: f32) -> [f32; 4] {
+        match filter {
+            Filter::Point => self.point(u, v),
+            Filter::Linear => self.linear(u, v),
+        }
+    }
+
+    /// Samples every lane with `filter`; `out[c]` receives sampled component
+    /// `swz(c)`.
+    fn sample_lanes(
         &self,
+        filter: Filter,
         u: &[f32; LANES],
         v: &[f32; LANES],
         swz: [usize; 4],
         out: &mut [[f32; LANES]; 4],
     ) {
-        match (self.filter, self.au, self.av) {
+        match (filter, self.au, self.av) {
             (Filter::Point, Address::Border, Address::Border) => {
                 // Indices first (vectorises), then the gather.
                 let mut idx = [BORDER; LANES];
@@ -256,6 +290,131 @@ impl<'a> Sampler<'a> {
                         out[c][l] = t[swz[c]];
                     }
                 }
+            }
+        }
+    }
+}
+
+impl<'a> Sampler<'a> {
+    /// Checks every level's shape and precomputes sizes.
+    pub fn new(tex: &TextureLevels<'a>, state: &SamplerState) -> Result<Sampler<'a>, String> {
+        let views = tex.views();
+        let mut levels = Vec::with_capacity(views.len());
+        for (i, t) in views.iter().enumerate() {
+            levels.push(Level::new(t, state).map_err(|e| {
+                if views.len() == 1 {
+                    e
+                } else {
+                    format!("mip level {i}: {e}")
+                }
+            })?);
+        }
+        if levels.is_empty() {
+            return Err("no texture levels".into());
+        }
+        if !state.mip_lod_bias.is_finite() {
+            return Err(format!("LOD bias {} is not finite", state.mip_lod_bias));
+        }
+        let base = (state.max_mip_level as usize).min(levels.len() - 1);
+        let lod_matters = state.mag_filter != state.min_filter
+            || (state.mip_filter != MipFilter::None && levels.len() - base > 1);
+        Ok(Sampler {
+            levels,
+            base,
+            mag: state.mag_filter,
+            min: state.min_filter,
+            mip: state.mip_filter,
+            bias: state.mip_lod_bias,
+            lod_matters,
+        })
+    }
+
+    /// Whether a sample's LOD can change its value: false for one usable
+    /// level (or MIPFILTER NONE) with MINFILTER = MAGFILTER, where every
+    /// sample reads the base level with the same filter.
+    #[inline(always)]
+    pub fn lod_matters(&self) -> bool {
+        self.lod_matters
+    }
+
+    /// Width and height of level 0 as floats (gradients are scaled by them).
+    #[inline(always)]
+    pub fn size(&self) -> (f32, f32) {
+        (self.levels[0].wf, self.levels[0].hf)
+    }
+
+    /// D3DSAMP_MIPMAPLODBIAS.
+    #[inline(always)]
+    pub fn bias(&self) -> f32 {
+        self.bias
+    }
+
+    /// Samples every lane at the base level, ignoring the LOD (valid when
+    /// [`Sampler::lod_matters`] is false).
+    pub fn sample_lanes(
+        &self,
+        u: &[f32; LANES],
+        v: &[f32; LANES],
+        swz: [usize; 4],
+        out: &mut [[f32; LANES]; 4],
+    ) {
+        self.levels[self.base].sample_lanes(self.mag, u, v, swz, out);
+    }
+
+    /// Level(s), blend weight of the second and filter for LOD `lod` (bias
+    /// already added); see the module docs.
+    #[inline(always)]
+    pub fn select(&self, lod: f32) -> (usize, usize, f32, Filter) {
+        let base = self.base;
+        // NaN is not above 0: magnification on the base level.
+        if lod.is_nan() || lod <= 0.0 {
+            return (base, base, 0.0, self.mag);
+        }
+        let last = self.levels.len() - 1;
+        let l = lod.max(base as f32);
+        match self.mip {
+            MipFilter::None => (base, base, 0.0, self.min),
+            MipFilter::Point => {
+                let r = floor(l + 0.5);
+                let i = if r >= last as f32 { last } else { r as usize };
+                (i, i, 0.0, self.min)
+            }
+            MipFilter::Linear => {
+                if l >= last as f32 {
+                    return (last, last, 0.0, self.min);
+                }
+                let f = floor(l);
+                let i = f as usize;
+                (i, i + 1, l - f, self.min)
+            }
+        }
+    }
+
+    /// One sample at LOD `lod` (bias already added).
+    #[inline(always)]
+    pub fn sample_lod(&self, u: f32, v: f32, lod: f32) -> [f32; 4] {
+        let (a, b, t, filter) = self.select(lod);
+        let c0 = self.levels[a].sample(filter, u, v);
+        if t == 0.0 {
+            return c0;
+        }
+        let c1 = self.levels[b].sample(filter, u, v);
+        std::array::from_fn(|c| c0[c] * (1.0 - t) + c1[c] * t)
+    }
+
+    /// Samples every lane at its own LOD (`lod[l]`, bias already added).
+    pub fn sample_lanes_lod(
+        &self,
+        u: &[f32; LANES],
+        v: &[f32; LANES],
+        lod: &[f32; LANES],
+        swz: [usize; 4],
+        out: &mut [[f32; LANES]; 4],
+    ) {
+        for l in 0..LANES {
+            let t = self.sample_lod(u[l], v[l], lod[l]);
+            for c in 0..4 {
+                out[c][l] = t[swz[c]];
             }
         }
     }

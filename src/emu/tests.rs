@@ -451,12 +451,13 @@ fn sample_row4(u: f32, filter: Filter, mode: Address) -> f32 {
             width: 4,
             height: 1,
             texels: &ROW4,
-        },
+        }
+        .into(),
         SamplerState {
-            filter,
             address_u: mode,
             address_v: mode,
             border: [10.0, 0.0, 0.0, 0.0],
+            ..SamplerState::filtered(filter)
         },
     ));
     run_text(text, &d).color[0].as_ref().unwrap()[0][0]
@@ -529,11 +530,9 @@ fn point_sampling_hits_texel_centres() {
                 width: 4,
                 height: 3,
                 texels: &texels,
-            },
-            SamplerState {
-                filter,
-                ..SamplerState::default()
-            },
+            }
+            .into(),
+            SamplerState::filtered(filter),
         )];
         let out = run_text(text, &d);
         let c = out.color[0].as_ref().unwrap();
@@ -570,7 +569,8 @@ fn texldp_sampler_swizzle_and_unbound_sampler() {
             width: 2,
             height: 1,
             texels: &tex,
-        },
+        }
+        .into(),
         SamplerState::default(),
     ));
     let out = run_text(text, &d);
@@ -1146,12 +1146,13 @@ fn busy_draw(texels: &[[f32; 4]], w: u32, h: u32) -> Draw<'_> {
             width: 5,
             height: 3,
             texels,
-        },
+        }
+        .into(),
         SamplerState {
-            filter: Filter::Linear,
             address_u: Address::Wrap,
             address_v: Address::Mirror,
             border: [0.0; 4],
+            ..SamplerState::filtered(Filter::Linear)
         },
     ));
     d
@@ -1264,7 +1265,8 @@ fn draw_errors_are_typed() {
             width: 2,
             height: 2,
             texels: &tex,
-        },
+        }
+        .into(),
         SamplerState::default(),
     ));
     assert_eq!(
@@ -1277,7 +1279,8 @@ fn draw_errors_are_typed() {
             width: 3,
             height: 2,
             texels: &tex,
-        },
+        }
+        .into(),
         SamplerState::default(),
     )];
     assert!(matches!(
@@ -1310,7 +1313,8 @@ fn draw_errors_are_typed() {
             width: 2,
             height: 2,
             texels: &tex,
-        },
+        }
+        .into(),
         SamplerState::default(),
     ));
     assert!(matches!(
@@ -1437,7 +1441,8 @@ fn perf_nested_workload() {
             width: 64,
             height: 64,
             texels: &texels,
-        },
+        }
+        .into(),
         SamplerState::default(),
     ));
     for threads in [1, 2] {
@@ -1481,7 +1486,8 @@ fn perf_heavy_workload() {
             width: 64,
             height: 64,
             texels: &texels,
-        },
+        }
+        .into(),
         SamplerState::default(),
     ));
     for threads in [1, 2] {
@@ -1631,7 +1637,8 @@ fn texld_into_outputs_and_inside_divergent_branches() {
             width: 2,
             height: 1,
             texels: &tex,
-        },
+        }
+        .into(),
         SamplerState::default(),
     ));
     let out = run_text(text, &d);

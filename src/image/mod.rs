@@ -13,6 +13,7 @@
 
 mod atomic;
 mod error;
+mod mip;
 mod openexr;
 mod pfm;
 mod png;
@@ -20,6 +21,7 @@ mod radiance;
 mod target;
 
 pub use error::{ForeignError, ImageError};
+pub use mip::{full_chain_levels, MipChain};
 pub use openexr::write_exr;
 pub use pfm::write_pfm;
 pub use png::write_png_rgb8;

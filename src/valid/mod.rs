@@ -6,9 +6,11 @@
 //! then checks what needs context: the version line, declarations before
 //! instructions and before use, block balance and nesting limits, `aL` only
 //! inside `loop`, read ports, subroutine structure, outputs outside dynamic
-//! flow control. Rules are the ps_3_0 rules of Microsoft's documentation;
+//! flow control; then, as warnings, gradients under dynamic flow control
+//! ([`gradient`]). Rules are the ps_3_0 rules of Microsoft's documentation;
 //! where sources disagree, the choice is written next to the check.
 
+pub mod gradient;
 pub mod lower;
 
 use crate::diag::{Diagnostic, Diagnostics, SourceFile};
@@ -137,6 +139,9 @@ pub fn validate(
     let info = check_program(&program, &mut diags, file);
     if diags.has_errors() {
         return Err(diags);
+    }
+    for w in gradient::warnings(&program, &info, file) {
+        diags.push(w);
     }
     let warnings = diags;
     Ok((Shader::new_validated(program, info), warnings))

@@ -1,0 +1,366 @@
+//! The texld family: coordinates, level of detail from the quad's
+//! gradients, sampling — and what the quads record about it.
+//!
+//! # Level of detail (facts sheet §5)
+//!
+//! Direct3D 9 gives no LOD formula; ps30 uses the D3D11.3 isotropic one
+//! (§7.18.11), the nearest public definition. With (u, v) the coordinate
+//! and (W, H) the size of level 0,
+//!
+//! * dX = (∂u/∂x·W, ∂v/∂x·H), dY = (∂u/∂y·W, ∂v/∂y·H), and
+//!   λ = log2(max(|dX|, |dY|)) (Euclidean lengths), computed as
+//!   ½·log2(max(|dX|², |dY|²)); a zero gradient gives λ = −∞;
+//! * `texld`, `texldp`, `texldb` take ∂/∂x and ∂/∂y from the quad, coarse
+//!   like `dsx`/`dsy`: one pair per quad, top-right − top-left and
+//!   bottom-left − top-left of the coordinate *as this instruction computes
+//!   it* in each lane (`texldp`: after the division by w). An inactive
+//!   neighbour contributes whatever its register holds — on hardware that is
+//!   undefined, so every execution with part of a quad is counted (see
+//!   [`super::GradientSite`]);
+//! * `texldb` adds its per-pixel src0.w; `texldl` uses src0.w as λ;
+//!   `texldd` uses src2/src3 (.xy) as ∂/∂x and ∂/∂y per pixel;
+//! * D3DSAMP_MIPMAPLODBIAS is added to every λ; level choice and filters
+//!   are in `sample.rs`.
+//!
+//! λ is computed only where it can change a sample
+//! ([`super::sample::Sampler::lod_matters`]) or where the quads record it
+//! (the implicit-LOD instructions, for [`super::GradientSite::lod`]), so a
+//! shader sampling a single-level texture pays only the per-quad statistic.
+
+// Lane loops index several fixed-size rows with one lane index; that is
+// clearer than zipped iterators and vectorises the same.
+#![allow(clippy::needless_range_loop)]
+
+use super::compile::{DstOp, SamplerOp, SrcOp, TexKind};
+use super::exec::Worker;
+use super::math::{self, modify};
+use super::sample::{Sampler, UNBOUND};
+use super::LANES;
+
+/// Bit 4q set where quad q has any lane of `m` set.
+#[inline(always)]
+pub(super) fn quads_any(m: u64) -> u64 {
+    (m | m >> 1 | m >> 2 | m >> 3) & 0x1111_1111_1111_1111
+}
+
+/// Bit 4q set where quad q has all four lanes of `m` set.
+#[inline(always)]
+pub(super) fn quads_all(m: u64) -> u64 {
+    (m & m >> 1 & m >> 2 & m >> 3) & 0x1111_1111_1111_1111
+}
+
+/// λ from a squared gradient length in texels: ½·log2(len²), −∞ for 0,
+/// +∞ for +∞, NaN for NaN.
+#[inline(always)]
+pub(super) fn lod_of_len2(len2: f32) -> f32 {
+    if len2 == 0.0 {
+        f32::NEG_INFINITY
+    } else if len2.is_nan() || len2 == f32::INFINITY {
+        len2
+    } else {
+        0.5 * math::log2(len2)
+    }
+}
+
+/// Every quad's top-left lane bit (bit 4q).
+const ALL_QUADS: u64 = 0x1111_1111_1111_1111;
+
+/// The smallest and largest max(|dX|², |dY|²) (level-0 texels) over the
+/// quads marked in `quads` (bit 4q = quad q, whose top-left lane is 4q);
+/// (+∞, −∞) when none is. Quads are taken four at a time with their corners
+/// transposed into rows, which the compiler maps onto vector operations;
+/// the comparisons are plain `<`/`>`, so a NaN length is skipped.
+#[inline(always)]
+fn quad_len2_range(u: &[f32; LANES], v: &[f32; LANES], wf: f32, hf: f32, quads: u64) -> (f32, f32) {
+    #[inline(always)]
+    fn range<const ALL: bool>(
+        u: &[f32; LANES],
+        v: &[f32; LANES],
+        wf: f32,
+        hf: f32,
+        quads: u64,
+    ) -> (f32, f32) {
+        let mut lo = [f32::INFINITY; 4];
+        let mut hi = [f32::NEG_INFINITY; 4];
+        for g in 0..LANES / 16 {
+            let mut c = [[0f32; 4]; 6];
+            for k in 0..4 {
+                let b = 16 * g + 4 * k;
+                c[0][k] = u[b];
+                c[1][k] = u[b + 1];
+                c[2][k] = u[b + 2];
+                c[3][k] = v[b];
+                c[4][k] = v[b + 1];
+                c[5][k] = v[b + 2];
+            }
+            for k in 0..4 {
+                let (dxu, dxv) = ((c[1][k] - c[0][k]) * wf, (c[4][k] - c[3][k]) * hf);
+                let (dyu, dyv) = ((c[2][k] - c[0][k]) * wf, (c[5][k] - c[3][k]) * hf);
+                let (x, y) = (dxu * dxu + dxv * dxv, dyu * dyu + dyv * dyv);
+                let l = if x > y { x } else { y };
+                let on = ALL || (quads >> (16 * g + 4 * k)) & 1 != 0;
+                lo[k] = if on && l < lo[k] { l } else { lo[k] };
+                hi[k] = if on && l > hi[k] { l } else { hi[k] };
+            }
+        }
+        let lo = lo
+            .into_iter()
+            .fold(f32::INFINITY, |a, b| if b < a { b } else { a });
+        let hi = hi
+            .into_iter()
+            .fold(f32::NEG_INFINITY, |a, b| if b > a { b } else { a });
+        (lo, hi)
+    }
+    if quads == ALL_QUADS {
+        range::<true>(u, v, wf, hf, quads)
+    } else {
+        range::<false>(u, v, wf, hf, quads)
+    }
+}
+
+/// max(|dX|², |dY|²) of quad `q` (level-0 texels).
+#[inline(always)]
+fn quad_len2(u: &[f32; LANES], v: &[f32; LANES], wf: f32, hf: f32, q: usize) -> f32 {
+    let b = 4 * q;
+    let (dxu, dxv) = ((u[b + 1] - u[b]) * wf, (v[b + 1] - v[b]) * hf);
+    let (dyu, dyv) = ((u[b + 2] - u[b]) * wf, (v[b + 2] - v[b]) * hf);
+    let (x, y) = (dxu * dxu + dxv * dxv, dyu * dyu + dyv * dyv);
+    if x > y || y.is_nan() {
+        x
+    } else {
+        y
+    }
+}
+
+/// What one gradient site saw in one batch (see [`super::GradientSite`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct SiteBatch {
+    /// Bit 4q: quad q executed the site.
+    pub quads: u64,
+    /// Bit 4q: quad q executed it with some but not all four lanes.
+    pub divergent: u64,
+    pub executions: u64,
+    pub divergent_executions: u64,
+    /// Smallest and largest λ seen (+∞ / −∞ before any).
+    pub lod_min: f32,
+    pub lod_max: f32,
+    /// Smallest and largest squared gradient length seen where λ was not
+    /// needed per lane: λ is monotonic in it, so it is turned into λ once per
+    /// batch ([`SiteBatch::finish`]) instead of once per execution.
+    pub len2_min: f32,
+    pub len2_max: f32,
+}
+
+impl SiteBatch {
+    /// Folds the squared-length range into the λ range (`bias`: the
+    /// sampler's MIPMAPLODBIAS).
+    pub fn finish(&mut self, bias: f32) {
+        if self.len2_min <= self.len2_max {
+            self.lod_min = self.lod_min.min(lod_of_len2(self.len2_min) + bias);
+            self.lod_max = self.lod_max.max(lod_of_len2(self.len2_max) + bias);
+            self.len2_min = f32::INFINITY;
+            self.len2_max = f32::NEG_INFINITY;
+        }
+    }
+}
+
+impl Default for SiteBatch {
+    fn default() -> SiteBatch {
+        SiteBatch {
+            quads: 0,
+            divergent: 0,
+            executions: 0,
+            divergent_executions: 0,
+            lod_min: f32::INFINITY,
+            lod_max: f32::NEG_INFINITY,
+            len2_min: f32::INFINITY,
+            len2_max: f32::NEG_INFINITY,
+        }
+    }
+}
+
+impl Worker<'_, '_> {
+    /// Records that the executing lanes ran gradient site `site`.
+    #[inline(always)]
+    pub(super) fn note_site(&mut self, site: u16) {
+        let e = self.exec;
+        let any = quads_any(e);
+        let div = any & !quads_all(e);
+        if let Some(st) = self.sites.get_mut(site as usize) {
+            st.quads |= any;
+            st.divergent |= div;
+            st.executions += any.count_ones() as u64;
+            st.divergent_executions += div.count_ones() as u64;
+        }
+    }
+
+    #[inline(always)]
+    fn note_lod(&mut self, site: u16, lo: f32, hi: f32) {
+        if !self.ctx.record_lod {
+            return;
+        }
+        if let Some(st) = self.sites.get_mut(site as usize) {
+            st.lod_min = st.lod_min.min(lo);
+            st.lod_max = st.lod_max.max(hi);
+        }
+    }
+
+    /// Texture coordinates of every lane into `aux` (`texldp`: divided by
+    /// w, MS `texldp---ps`).
+    #[inline(always)]
+    fn tex_coords(&mut self, a: SrcOp, projected: bool) {
+        let (am, ax) = a.mod_bits();
+        let (ru, rv, rw) = (self.row(a, 0), self.row(a, 1), self.row(a, 3));
+        let [u, v] = &mut self.aux;
+        let (su, sv, sw) = (&self.rows[ru], &self.rows[rv], &self.rows[rw]);
+        if projected {
+            for l in 0..LANES {
+                let w = modify(sw[l], am, ax);
+                u[l] = modify(su[l], am, ax) / w;
+                v[l] = modify(sv[l], am, ax) / w;
+            }
+        } else {
+            for l in 0..LANES {
+                u[l] = modify(su[l], am, ax);
+                v[l] = modify(sv[l], am, ax);
+            }
+        }
+    }
+
+    /// λ of `texld`/`texldp`/`texldb` from the quads' gradients: recorded
+    /// for `site`, and written per lane to `lod` when `need` (`bias_w`: the
+    /// source whose w `texldb` adds).
+    fn implicit_lod(&mut self, sm: &Sampler, site: u16, need: bool, bias_w: Option<SrcOp>) {
+        let (wf, hf) = sm.size();
+        let bias = sm.bias();
+        let any = quads_any(self.exec);
+        if !need && bias_w.is_none() {
+            // Only the statistic.
+            let (lo, hi) = quad_len2_range(&self.aux[0], &self.aux[1], wf, hf, any);
+            if let Some(st) = self.sites.get_mut(site as usize) {
+                st.len2_min = if lo < st.len2_min { lo } else { st.len2_min };
+                st.len2_max = if hi > st.len2_max { hi } else { st.len2_max };
+            }
+            return;
+        }
+        let mut lod = [0f32; LANES];
+        for q in 0..LANES / 4 {
+            let lq = lod_of_len2(quad_len2(&self.aux[0], &self.aux[1], wf, hf, q)) + bias;
+            lod[4 * q..4 * q + 4].copy_from_slice(&[lq; 4]);
+        }
+        if let Some(w) = bias_w {
+            // texldb: "LOD bias = src0.w" per pixel (MS `texldb---ps`); the
+            // documented range [-16, 15] is not enforced (outside it the
+            // result is undefined).
+            let (am, ax) = w.mod_bits();
+            let rw = &self.rows[self.row(w, 3)];
+            for l in 0..LANES {
+                lod[l] += modify(rw[l], am, ax);
+            }
+        }
+        let (mut lo, mut hi) = (f32::INFINITY, f32::NEG_INFINITY);
+        let e = self.exec;
+        for l in 0..LANES {
+            if (e >> l) & 1 != 0 {
+                lo = lo.min(lod[l]);
+                hi = hi.max(lod[l]);
+            }
+        }
+        if lo <= hi {
+            self.note_lod(site, lo, hi);
+        }
+        self.lod = lod;
+    }
+
+    /// `texld`, `texldp`, `texldb`, `texldl` on a 2D sampler.
+    pub(super) fn texld(&mut self, d: DstOp, a: SrcOp, s: SamplerOp, kind: TexKind, site: u16) {
+        if kind != TexKind::LdL {
+            self.note_site(site);
+        }
+        self.tex_coords(a, kind == TexKind::LdP);
+        let ctx = self.ctx;
+        let sampler = ctx.samplers.get(s.index as usize).and_then(|x| x.as_ref());
+        let need = sampler.is_some_and(|sm| sm.lod_matters());
+        if let Some(sm) = sampler {
+            match kind {
+                TexKind::Ld | TexKind::LdP if need || ctx.record_lod => {
+                    self.implicit_lod(sm, site, need, None)
+                }
+                TexKind::LdB if need || ctx.record_lod => {
+                    self.implicit_lod(sm, site, need, Some(a))
+                }
+                TexKind::Ld | TexKind::LdP | TexKind::LdB => {}
+                TexKind::LdL => {
+                    if need {
+                        // texldl: λ = src0.w + MIPMAPLODBIAS (MS `texldl---ps`).
+                        let (am, ax) = a.mod_bits();
+                        let rw = &self.rows[self.row(a, 3)];
+                        let bias = sm.bias();
+                        for l in 0..LANES {
+                            self.lod[l] = modify(rw[l], am, ax) + bias;
+                        }
+                    }
+                }
+            }
+        }
+        self.tex_sample(d, s, sampler, need);
+    }
+
+    /// `texldd`: λ from the given gradients (src2 = ∂/∂x, src3 = ∂/∂y, .xy).
+    pub(super) fn texldd(&mut self, d: DstOp, a: SrcOp, s: SamplerOp, gx: SrcOp, gy: SrcOp) {
+        self.tex_coords(a, false);
+        let ctx = self.ctx;
+        let sampler = ctx.samplers.get(s.index as usize).and_then(|x| x.as_ref());
+        let need = sampler.is_some_and(|sm| sm.lod_matters());
+        if let (Some(sm), true) = (sampler, need) {
+            let (wf, hf) = sm.size();
+            let bias = sm.bias();
+            let (xm, xx) = gx.mod_bits();
+            let (ym, yx) = gy.mod_bits();
+            let (gxu, gxv) = (&self.rows[self.row(gx, 0)], &self.rows[self.row(gx, 1)]);
+            let (gyu, gyv) = (&self.rows[self.row(gy, 0)], &self.rows[self.row(gy, 1)]);
+            for l in 0..LANES {
+                let (xu, xv) = (modify(gxu[l], xm, xx) * wf, modify(gxv[l], xm, xx) * hf);
+                let (yu, yv) = (modify(gyu[l], ym, yx) * wf, modify(gyv[l], ym, yx) * hf);
+                let len2 = (xu * xu + xv * xv).max(yu * yu + yv * yv);
+                self.lod[l] = lod_of_len2(len2) + bias;
+            }
+        }
+        self.tex_sample(d, s, sampler, need);
+    }
+
+    /// Samples at the coordinates in `aux` (and the LODs in `lod` when
+    /// `need`) and stores the result.
+    fn tex_sample(&mut self, d: DstOp, s: SamplerOp, sampler: Option<&Sampler>, need: bool) {
+        let swz: [usize; 4] = std::array::from_fn(|c| ((s.swz >> (2 * c)) & 3) as usize);
+        let Some(sampler) = sampler else {
+            for c in 0..4 {
+                self.tmp[c] = [UNBOUND[swz[c]]; LANES];
+            }
+            self.store::<false>(d, d.mask());
+            return;
+        };
+        if need {
+            sampler.sample_lanes_lod(&self.aux[0], &self.aux[1], &self.lod, swz, &mut self.tmp);
+            self.store::<false>(d, d.mask());
+            return;
+        }
+        // Unmasked full writes gather straight into the destination rows (the
+        // coordinates are already in `aux`, so nothing reads them).
+        if d.mask() == 0xf && self.exec == self.live && !d.predicated() {
+            let base = d.row as usize;
+            if let Some(dst) = self.rows.get_mut(base..base + 4) {
+                if let Ok(dst) = <&mut [[f32; LANES]; 4]>::try_from(dst) {
+                    sampler.sample_lanes(&self.aux[0], &self.aux[1], swz, dst);
+                    if d.output() {
+                        let k = (base - self.ctx.compiled.layout.output as usize) / 4;
+                        self.written |= 1 << k;
+                    }
+                    return;
+                }
+            }
+        }
+        sampler.sample_lanes(&self.aux[0], &self.aux[1], swz, &mut self.tmp);
+        self.store::<false>(d, d.mask());
+    }
+}
