@@ -38,6 +38,7 @@
 // travel on the error path, where their size costs nothing measurable.
 #![allow(clippy::result_large_err)]
 
+pub mod args;
 pub mod cost;
 pub mod diag;
 pub mod emu;
