@@ -31,6 +31,7 @@ pub mod cost;
 pub mod diag;
 pub mod emu;
 pub mod front;
+pub mod gen;
 pub mod image;
 pub mod ir;
 pub mod isa;
