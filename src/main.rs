@@ -100,6 +100,11 @@ enum Command {
         /// Pass-2 shader (file or bundled name).
         #[arg(long, default_value = "corrected:pass2")]
         pass2: String,
+        /// A pass-1 shader for the last column of blocks that reads only the
+        /// frame's real width there (see `ps30 unroll`); without it, BORDER
+        /// addressing pads the last column.
+        #[arg(long, value_name = "SHADER")]
+        last_column: Option<String>,
         /// Block size WxH (an unrolled shader fixes W to its REPEAT_BLOCK count).
         #[arg(long, value_name = "WxH", value_parser = parse_size, default_value = "125x128")]
         block: (u32, u32),
@@ -673,6 +678,7 @@ fn run(cli: Cli) -> Result<Outcome, BadInput> {
             image,
             pass1,
             pass2,
+            last_column,
             block,
             delta,
             target_format,
@@ -695,12 +701,21 @@ fn run(cli: Cli) -> Result<Outcome, BadInput> {
                 },
                 threads: threads.map(|t| t as usize),
             };
-            let run = ps30::pipeline::run(
-                &img,
-                &shader_source(&pass1)?,
-                &shader_source(&pass2)?,
-                &settings,
-            )?;
+            let run = match &last_column {
+                Some(last) => ps30::pipeline::run_with_last_column(
+                    &img,
+                    &shader_source(&pass1)?,
+                    &shader_source(last)?,
+                    &shader_source(&pass2)?,
+                    &settings,
+                )?,
+                None => ps30::pipeline::run(
+                    &img,
+                    &shader_source(&pass1)?,
+                    &shader_source(&pass2)?,
+                    &settings,
+                )?,
+            };
             let name = image.display().to_string();
             if json {
                 print(

@@ -654,3 +654,29 @@ fn verify_names_stale_generated_files() {
     assert!(stdout(&o).contains("640x480/pass2_6x4.psh is stale"));
     assert!(reports.join("generated-shaders.md").exists());
 }
+
+#[test]
+fn luminance_runs_a_generated_set_with_its_last_column_shader() {
+    let g = "asm/generated/1280x1024";
+    let o = ps30(
+        &[
+            "luminance",
+            "assets/hdr/courtyard_1280x1024.exr",
+            "--pass1",
+            &format!("{g}/pass1_unrolled_117x128.psh"),
+            "--last-column",
+            &format!("{g}/pass1_last_unrolled_110x128.psh"),
+            "--pass2",
+            &format!("{g}/pass2_11x8.psh"),
+            "--block",
+            "117x128",
+            "--json",
+        ],
+        repo(),
+    );
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(v["agree"], true);
+    assert_eq!(v["padded_samples"], 0);
+    assert_eq!(v["executed_per_pixel"]["pass1_last"], 57_093);
+}
