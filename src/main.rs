@@ -749,6 +749,11 @@ fn run(cli: Cli) -> Result<Outcome, BadInput> {
             let img = ps30::image::load(&image_path, &ps30::image::ImageLimits::default())?;
             let rows = ps30::verify::crosscheck(&img).map_err(BadInput)?;
             // The committed generated shaders: compared, or rewritten.
+            let generated_shown = generated
+                .as_ref()
+                .map_or(ps30::verify::GENERATED_DIR.to_string(), |d| {
+                    d.display().to_string()
+                });
             let generated = generated.unwrap_or_else(|| {
                 let in_tree = source_tree.join(ps30::verify::GENERATED_DIR);
                 if in_tree.exists() {
@@ -819,7 +824,7 @@ fn run(cli: Cli) -> Result<Outcome, BadInput> {
                     "\ngenerated shaders: {} files for {} frame sizes in {}: {}\n",
                     set.files.len(),
                     set.frames.len(),
-                    generated.display(),
+                    generated_shown,
                     if regenerate {
                         format!("regenerated ({} changed)", rewritten.len())
                     } else if stale.is_empty() {
