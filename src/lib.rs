@@ -44,6 +44,7 @@ pub mod diag;
 pub mod emu;
 pub mod figures;
 pub mod front;
+pub mod gen;
 pub mod image;
 pub mod ir;
 pub mod isa;

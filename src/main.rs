@@ -112,6 +112,11 @@ enum Command {
         /// Pass-2 shader (file or bundled name).
         #[arg(long, default_value = "corrected:pass2")]
         pass2: String,
+        /// A pass-1 shader for the last column of blocks that reads only the
+        /// frame's real width there (see `ps30 unroll`); without it, BORDER
+        /// addressing pads the last column.
+        #[arg(long, value_name = "SHADER")]
+        last_column: Option<String>,
         /// Block size WxH (an unrolled shader fixes W to its REPEAT_BLOCK count).
         #[arg(long, value_name = "WxH", value_parser = parse_size, default_value = "125x128")]
         block: (u32, u32),
@@ -155,15 +160,128 @@ enum Command {
     )]
     Profile(ps30::profile::ProfileArgs),
     /// Check every figure the article states and write the report to reports/.
-    #[command(after_help = "Example:\n  ps30 verify --json")]
+    #[command(
+        after_help = "Also regenerates the shaders of asm/generated/ in memory and fails (exit 1) if a\ncommitted file is missing, stale or unexpected; --regenerate rewrites them instead.\n\nExample:\n  ps30 verify --json"
+    )]
     Verify {
         /// Directory for the reports.
         #[arg(long, default_value = "reports")]
         reports: PathBuf,
+        /// Directory of the committed generated shaders (default: asm/generated
+        /// of the source tree).
+        #[arg(long, value_name = "DIR")]
+        generated: Option<PathBuf>,
+        /// Rewrite the generated shaders instead of failing when they are stale.
+        #[arg(long)]
+        regenerate: bool,
         /// Print JSON instead of text.
         #[arg(long)]
         json: bool,
     },
+    /// Generate pass-1 (unrolled and loop), last-column and pass-2 luminance shaders that fit the limits.
+    #[command(
+        after_help = "--fit: unrolled form = the widest unroll that fits the slot limit and the tallest block\nthat fits the executed limit and the rep-count range, lowered to the smallest height with\nas many block rows for the frame; loop form = the plan's best loop block for the frame.\nEvery shader is checked (front end + cost model) before it is printed; its header states\nits slots, executed count and the constants the application sets.\n\nExit codes: 0 every requested shader fits; 1 something requested does not fit (the\nreasons are printed, in numbers); 2 bad input.\n\nExamples:\n  ps30 unroll --fit\n  ps30 unroll --fit --frame 1920x1080 -o shaders/\n  ps30 unroll --block 128x56 --form loop --only pass1\n  ps30 unroll --fit --max-slots 1024 --macro"
+    )]
+    Unroll {
+        /// Block size WxH (texels per line × lines) for every form.
+        #[arg(long, value_name = "WxH", value_parser = parse_size, conflicts_with = "fit", required_unless_present = "fit")]
+        block: Option<(u32, u32)>,
+        /// Fit the block to the profile (see below).
+        #[arg(long)]
+        fit: bool,
+        /// Frame size WxH: sets the intermediate target, pass 2, the last column and the constants.
+        #[arg(long, value_name = "WxH", value_parser = parse_size, default_value = "1280x1024")]
+        frame: (u32, u32),
+        /// Which pass-1 forms to generate.
+        #[arg(long, value_enum, default_value = "both")]
+        form: FormsArg,
+        /// Keep BEGIN_REPEAT_BLOCK/END_REPEAT_BLOCK instead of expanding them.
+        #[arg(long = "macro")]
+        macros: bool,
+        /// Print only one shader's text.
+        #[arg(long, value_enum)]
+        only: Option<OnlyArg>,
+        /// Write each shader (atomically) into this directory instead of printing it.
+        #[arg(short, long, value_name = "DIR")]
+        output: Option<PathBuf>,
+        /// The δ of log(δ + L), for the constants quoted in the headers.
+        #[arg(long, default_value_t = 1e-4, value_parser = parse_delta)]
+        delta: f32,
+        #[command(flatten)]
+        profile: ProfileArgs,
+        /// Print JSON (figures and texts) instead of text.
+        #[arg(long)]
+        json: bool,
+    },
+    /// Rank block sizes, intermediate targets and pass-2 forms for a frame, and recommend one.
+    #[command(
+        after_help = "Exit codes: 0 a two-pass plan fits; 1 none does (a third pass would be needed, or\nnothing fits the profile); 2 bad input.\n\nExamples:\n  ps30 plan --frame 1280x1024\n  ps30 plan --frame 1920x1080 --max-slots 1024 --json"
+    )]
+    Plan {
+        /// Frame size WxH.
+        #[arg(long, value_name = "WxH", value_parser = parse_size)]
+        frame: (u32, u32),
+        /// The δ of log(δ + L), for the padding and f16 figures.
+        #[arg(long, default_value_t = 1e-4, value_parser = parse_delta)]
+        delta: f32,
+        #[command(flatten)]
+        profile: ProfileArgs,
+        /// Print JSON instead of text.
+        #[arg(long)]
+        json: bool,
+    },
+}
+
+/// The limits of a ps_3_0 part, for `unroll` and `plan`.
+#[derive(Args)]
+struct ProfileArgs {
+    /// Instruction slots (ps_3_0 guarantees 512; parts may have up to 32,768).
+    #[arg(long, value_name = "N", default_value_t = 512, value_parser = clap::value_parser!(u64).range(1..=32_768))]
+    max_slots: u64,
+    /// Executed instructions per pixel (65,535 in the article).
+    #[arg(long, value_name = "N", default_value_t = 65_535, value_parser = clap::value_parser!(u64).range(1..=4_294_967_295))]
+    max_executed: u64,
+    /// Largest rep count (ps_3_0 allows 0 to 255).
+    #[arg(long, value_name = "N", default_value_t = 255, value_parser = clap::value_parser!(u32).range(1..=255))]
+    max_rep_count: u32,
+    /// Deepest rep/loop nesting (ps_3_0 allows 4).
+    #[arg(long, value_name = "N", default_value_t = 4, value_parser = clap::value_parser!(u32).range(1..=4))]
+    max_nesting: u32,
+}
+
+impl ProfileArgs {
+    fn profile(&self) -> Profile {
+        let base = Profile::ps_3_0();
+        let p = Profile {
+            max_slots: self.max_slots,
+            max_executed: self.max_executed,
+            max_rep_count: self.max_rep_count,
+            max_loop_nesting: self.max_nesting,
+            ..base.clone()
+        };
+        if p == base {
+            p
+        } else {
+            Profile {
+                name: "custom".into(),
+                ..p
+            }
+        }
+    }
+}
+
+#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+enum FormsArg {
+    Unrolled,
+    Loop,
+    Both,
+}
+
+#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+enum OnlyArg {
+    Pass1,
+    LastColumn,
+    Pass2,
 }
 
 #[derive(Clone, Copy, clap::ValueEnum)]
@@ -577,6 +695,7 @@ fn run(cli: Cli) -> Result<Outcome, BadInput> {
             image,
             pass1,
             pass2,
+            last_column,
             block,
             delta,
             target_format,
@@ -599,7 +718,16 @@ fn run(cli: Cli) -> Result<Outcome, BadInput> {
             let (pass1, pass2) = (shader_source(&pass1)?, shader_source(&pass2)?);
             let run = {
                 let _spinner = ui.spinner("running both passes");
-                ps30::pipeline::run(&img, &pass1, &pass2, &settings)?
+                match &last_column {
+                    Some(last) => ps30::pipeline::run_with_last_column(
+                        &img,
+                        &pass1,
+                        &shader_source(last)?,
+                        &pass2,
+                        &settings,
+                    )?,
+                    None => ps30::pipeline::run(&img, &pass1, &pass2, &settings)?,
+                }
             };
             let name = image.display().to_string();
             if json {
@@ -673,12 +801,19 @@ fn run(cli: Cli) -> Result<Outcome, BadInput> {
             Ok(true) => Outcome::Problem,
             Err(e) => return Err(BadInput(e)),
         }),
-        Command::Verify { reports, json } => {
+        Command::Verify {
+            reports,
+            generated,
+            regenerate,
+            json,
+        } => {
             let bar = std::cell::RefCell::new(ui.bar("article claims", 12));
-            let claims = ps30::verify::article_claims().map_err(BadInput)?;
+            let source_tree = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+            let mut claims = ps30::verify::article_claims().map_err(BadInput)?;
+            let set = ps30::gen::set::generated_set()?;
+            claims.extend(ps30::verify::planning_claims(&set).map_err(BadInput)?);
             bar.borrow_mut().set(Some("luminance cross-check"), 1, 12);
-            let image_path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
-                .join(ps30::verify::CROSSCHECK_IMAGE);
+            let image_path = source_tree.join(ps30::verify::CROSSCHECK_IMAGE);
             let image_path = if image_path.exists() {
                 image_path
             } else {
@@ -686,25 +821,48 @@ fn run(cli: Cli) -> Result<Outcome, BadInput> {
             };
             let img = ps30::image::load(&image_path, &ps30::image::ImageLimits::default())?;
             let rows = ps30::verify::crosscheck(&img).map_err(BadInput)?;
+            // The committed generated shaders: compared, or rewritten.
+            let generated_shown = generated
+                .as_ref()
+                .map_or(ps30::verify::GENERATED_DIR.to_string(), |d| {
+                    d.display().to_string()
+                });
+            let generated = generated.unwrap_or_else(|| {
+                let in_tree = source_tree.join(ps30::verify::GENERATED_DIR);
+                if in_tree.exists() {
+                    in_tree
+                } else {
+                    PathBuf::from(ps30::verify::GENERATED_DIR)
+                }
+            });
+            let mut rewritten = Vec::new();
+            let stale = if regenerate {
+                let (written, removed) = ps30::gen::set::write_set(&generated, &set)
+                    .map_err(|e| BadInput(format!("{}: {e}", generated.display())))?;
+                rewritten.extend(written.into_iter().map(|p| format!("wrote {p}")));
+                rewritten.extend(removed.into_iter().map(|p| format!("removed {p}")));
+                Vec::new()
+            } else {
+                ps30::gen::set::stale_files(&generated, &set)
+            };
             let claims_path = reports.join("article-claims.md");
             let cross_path = reports.join("luminance-crosscheck.md");
-            report::write_atomic(
-                &claims_path,
-                ps30::verify::claims_report(&claims).as_bytes(),
-            )
-            .map_err(|e| BadInput(format!("{}: {e}", claims_path.display())))?;
-            report::write_atomic(
-                &cross_path,
-                ps30::verify::crosscheck_report(&rows).as_bytes(),
-            )
-            .map_err(|e| BadInput(format!("{}: {e}", cross_path.display())))?;
+            let gen_path = reports.join("generated-shaders.md");
+            for (path, text) in [
+                (&claims_path, ps30::verify::claims_report(&claims)),
+                (&cross_path, ps30::verify::crosscheck_report(&rows)),
+                (&gen_path, ps30::gen::set::summary_report(&set)),
+            ] {
+                report::write_atomic(path, text.as_bytes())
+                    .map_err(|e| BadInput(format!("{}: {e}", path.display())))?;
+            }
             // The repository root the bundled images were found under.
             let root = image_path
                 .parent()
                 .and_then(std::path::Path::parent)
                 .and_then(std::path::Path::parent)
                 .unwrap_or(std::path::Path::new(""));
-            let generated =
+            let figures =
                 ps30::report_dir::generate(&reports, root, None, &|stage, done, total| {
                     bar.borrow_mut().set(Some(stage), done + 2, total + 2)
                 })
@@ -712,15 +870,22 @@ fn run(cli: Cli) -> Result<Outcome, BadInput> {
             drop(bar);
             let ok = claims.iter().all(|c| c.agrees)
                 && rows.iter().all(|r| r.as_expected())
-                && generated.all_agree();
+                && figures.all_agree()
+                && stale.is_empty();
             if json {
                 let v = serde_json::json!({
                     "claims": claims,
                     "crosscheck": rows,
-                    "tonemap": generated.tonemap,
-                    "budgets": generated.budgets,
-                    "block_figures": generated.block_figures,
-                    "files": generated.files,
+                    "tonemap": figures.tonemap,
+                    "budgets": figures.budgets,
+                    "block_figures": figures.block_figures,
+                    "files": figures.files,
+                    "generated": {
+                        "directory": generated.display().to_string(),
+                        "files": set.files.iter().map(|(f, _)| f).collect::<Vec<_>>(),
+                        "stale": stale,
+                        "rewritten": rewritten,
+                    },
                     "all_agree": ok,
                 });
                 print(&(serde_json::to_string_pretty(&v)? + "\n"))?;
@@ -751,19 +916,154 @@ fn run(cli: Cli) -> Result<Outcome, BadInput> {
                         ),
                     )?;
                 }
-                say(&ui, &verify_tonemap_text(&generated))?;
+                say(&ui, &verify_tonemap_text(&figures))?;
+                say(
+                    &ui,
+                    &format!(
+                        "\ngenerated shaders: {} files for {} frame sizes in {}: {}\n",
+                        set.files.len(),
+                        set.frames.len(),
+                        generated_shown,
+                        if regenerate {
+                            format!("regenerated ({} changed)", rewritten.len())
+                        } else if stale.is_empty() {
+                            "up to date".to_string()
+                        } else {
+                            format!("{} PROBLEMS", stale.len())
+                        }
+                    ),
+                )?;
+                for r in &rewritten {
+                    print(&format!("  {r}\n"))?;
+                }
+                for p in &stale {
+                    print(&format!("  {p}\n"))?;
+                }
                 print(&format!(
-                    "\nreports written to {} and {}\n",
+                    "\nreports written to {}, {} and {}\n",
                     claims_path.display(),
-                    cross_path.display()
+                    cross_path.display(),
+                    gen_path.display()
                 ))?;
                 print(&format!(
                     "figures and pages: {} (index: {})\n",
-                    generated.files.len(),
+                    figures.files.len(),
                     reports.join("README.md").display()
                 ))?;
             }
             Ok(if ok { Outcome::Ok } else { Outcome::Problem })
+        }
+        Command::Unroll {
+            block,
+            fit,
+            frame,
+            form,
+            macros,
+            only,
+            output,
+            delta,
+            profile,
+            json,
+        } => {
+            use ps30::gen::set::{self, BlockChoice, Role};
+            use ps30::gen::Pass1Form;
+            let choice = match (block, fit) {
+                (Some((w, h)), _) => BlockChoice::Given(w, h),
+                (None, _) => BlockChoice::Fit,
+            };
+            let forms = match form {
+                FormsArg::Unrolled => vec![Pass1Form::Unrolled],
+                FormsArg::Loop => vec![Pass1Form::Loop],
+                FormsArg::Both => vec![Pass1Form::Unrolled, Pass1Form::Loop],
+            };
+            let profile = profile.profile();
+            let bundle = set::generate(
+                &set::Request {
+                    frame,
+                    picks: forms.into_iter().map(|f| (f, choice)).collect(),
+                    macros,
+                    delta: delta as f64,
+                },
+                &profile,
+            )?;
+            let outcome = if bundle.problems.is_empty() {
+                Outcome::Ok
+            } else {
+                Outcome::Problem
+            };
+            if let Some(kind) = only {
+                let role = match kind {
+                    OnlyArg::Pass1 => Role::Pass1,
+                    OnlyArg::LastColumn => Role::LastColumn,
+                    OnlyArg::Pass2 => Role::Pass2,
+                };
+                let matching: Vec<_> = bundle.shaders.iter().filter(|g| g.role == role).collect();
+                match matching.as_slice() {
+                    [one] => print(&one.text)?,
+                    [] => {
+                        eprint!("{}", set::summary_text(&bundle));
+                        return Err(BadInput(
+                            "no such shader was generated (see the summary above)".into(),
+                        ));
+                    }
+                    many => {
+                        return Err(BadInput(format!(
+                            "--only matches {} shaders ({}); choose one with --form unrolled or --form loop",
+                            many.len(),
+                            many.iter().map(|g| g.file.as_str()).collect::<Vec<_>>().join(", ")
+                        )))
+                    }
+                }
+                if !bundle.problems.is_empty() {
+                    for p in &bundle.problems {
+                        eprintln!("does not fit: {p}");
+                    }
+                }
+                return Ok(outcome);
+            }
+            if let Some(dir) = &output {
+                for g in &bundle.shaders {
+                    let path = dir.join(&g.file);
+                    report::write_atomic(&path, g.text.as_bytes())
+                        .map_err(|e| BadInput(format!("{}: {e}", path.display())))?;
+                }
+            }
+            if json {
+                print(&(serde_json::to_string_pretty(&bundle)? + "\n"))?;
+            } else {
+                print(&set::summary_text(&bundle))?;
+                match &output {
+                    Some(dir) => print(&format!(
+                        "\nwrote {} files to {}\n",
+                        bundle.shaders.len(),
+                        dir.display()
+                    ))?,
+                    None => {
+                        for g in &bundle.shaders {
+                            print(&format!("\n// ---- {} ----\n{}", g.file, g.text))?;
+                        }
+                    }
+                }
+            }
+            Ok(outcome)
+        }
+        Command::Plan {
+            frame,
+            delta,
+            profile,
+            json,
+        } => {
+            let plan = ps30::gen::plan::plan(frame, &profile.profile(), delta as f64)?;
+            if json {
+                print(&(serde_json::to_string_pretty(&ps30::gen::plan::plan_json(&plan))? + "\n"))?;
+            } else {
+                print(&ps30::gen::plan::plan_text(&plan))?;
+            }
+            Ok(if plan.recommended.is_some() {
+                Outcome::Ok
+            } else {
+                Outcome::Problem
+            })
         }
     }
 }

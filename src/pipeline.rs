@@ -207,6 +207,9 @@ pub struct LuminanceRun {
     /// Texels read outside the image (BORDER returns black: log2(δ) each).
     pub padded_samples: u64,
     pub pass1: PassCost,
+    /// The last column's pass-1 shader, when one draws it
+    /// ([`run_with_last_column`]); `None` with BORDER padding in x.
+    pub pass1_last: Option<PassCost>,
     pub pass2: PassCost,
     pub blocks: Vec<BlockCheck>,
     /// Pass 2's output against its formula applied in f64 to the stored
@@ -247,6 +250,7 @@ impl LuminanceRun {
             && self.pass2_check.agree
             && self.agree
             && self.pass1.counts_agree
+            && self.pass1_last.as_ref().is_none_or(|p| p.counts_agree)
             && self.pass2.counts_agree
     }
 }
@@ -256,6 +260,18 @@ impl LuminanceRun {
 pub fn pass1_bounds(
     image: &HdrImage,
     block: (u32, u32),
+    delta: f64,
+    policy: Policy,
+) -> (Vec<Vec<f64>>, u64) {
+    pass1_bounds_last_width(image, block, block.0, delta, policy)
+}
+
+/// [`pass1_bounds`] when the last column of blocks reads only `last_width`
+/// texels per line (see [`run_with_last_column`]).
+pub fn pass1_bounds_last_width(
+    image: &HdrImage,
+    block: (u32, u32),
+    last_width: u32,
     delta: f64,
     policy: Policy,
 ) -> (Vec<Vec<f64>>, u64) {
@@ -270,8 +286,9 @@ pub fn pass1_bounds(
             let mut partial = 0f64;
             let mut accumulation = 0f64;
             let mut terms = 0f64;
+            let read = if bx + 1 == nx { last_width } else { bw };
             for y in by * bh..(by + 1) * bh {
-                for x in bx * bw..(bx + 1) * bw {
+                for x in bx * bw..bx * bw + read {
                     let (t, e) = if x < image.width && y < image.height {
                         let p = image.pixel(x, y);
                         let l = reference::luminance(p);
@@ -299,7 +316,7 @@ pub fn pass1_bounds(
                     terms += e;
                 }
             }
-            let n = (bw as f64) * (bh as f64);
+            let n = (read as f64) * (bh as f64);
             bounds[by as usize][bx as usize] = (terms + U32 * accumulation) * (1.0 + n * U32);
         }
     }
@@ -407,20 +424,33 @@ pub fn run(
     pass2: &ShaderSource,
     s: &Settings,
 ) -> Result<LuminanceRun, PipelineError> {
-    let (bw, bh) = s.block;
-    if bw == 0 || bh == 0 {
-        return Err(PipelineError::Mismatch(
-            "block sides must be at least 1".into(),
-        ));
-    }
-    let (w, h) = (image.width, image.height);
-    let (nx, ny) = (w.div_ceil(bw), h.div_ceil(bh));
-    let n_pixels = w as f64 * h as f64;
-    let padded = (nx as u64 * bw as u64) * (ny as u64 * bh as u64) - w as u64 * h as u64;
-    let delta = s.delta as f64;
+    run_impl(image, pass1, None, pass2, s)
+}
 
-    // Pass 1.
-    let l1 = load(pass1, &[("bw", bw as u64), ("bh", bh as u64)])?;
+/// [`run`] with the article's alternative to BORDER padding in x: `pass1`
+/// draws every column of blocks but the last, and `last` draws the last
+/// column, reading only the frame's real width there
+/// (`W − (nx − 1)·bw` texels per line, its `i1` or REPEAT_BLOCK count). Two
+/// draws into one `nx × ny` target; only the bottom row of blocks is padded
+/// (in y), and pass 2's correction c0.y counts only that padding.
+pub fn run_with_last_column(
+    image: &HdrImage,
+    pass1: &ShaderSource,
+    last: &ShaderSource,
+    pass2: &ShaderSource,
+    s: &Settings,
+) -> Result<LuminanceRun, PipelineError> {
+    run_impl(image, pass1, Some(last), pass2, s)
+}
+
+/// Loads a pass-1 shader and checks that it reads `bw × bh` texels with
+/// i1 = bw, i2 = bh.
+fn load_pass1(
+    src: &ShaderSource,
+    bw: u32,
+    bh: u32,
+) -> Result<(front::Loaded, Environment), PipelineError> {
+    let l1 = load(src, &[("bw", bw as u64), ("bh", bh as u64)])?;
     let mut env1 = Environment::default();
     env1.ints.insert(1, [bw as i32, 0, 0, 0]);
     env1.ints.insert(2, [bh as i32, 0, 0, 0]);
@@ -437,38 +467,113 @@ pub fn run(
     if reads != bw as u64 * bh as u64 {
         return Err(PipelineError::Mismatch(format!(
             "{} reads {reads} texels per pixel with i1 = {bw}, i2 = {bh}, but a {bw}×{bh} block has {}; an unrolled shader fixes the block width to its REPEAT_BLOCK count",
-            pass1.name,
+            src.name,
             bw as u64 * bh as u64
         )));
     }
-    let c1 = emu::compile(&l1.shader).map_err(PipelineError::Emu)?;
-    let mut d1 = Draw::new(nx, ny);
-    d1.limits = s.limits;
-    d1.inputs.push((0, block_start(w, h, bw, bh)));
+    Ok((l1, env1))
+}
+
+fn run_impl(
+    image: &HdrImage,
+    pass1: &ShaderSource,
+    last: Option<&ShaderSource>,
+    pass2: &ShaderSource,
+    s: &Settings,
+) -> Result<LuminanceRun, PipelineError> {
+    let (bw, bh) = s.block;
+    if bw == 0 || bh == 0 {
+        return Err(PipelineError::Mismatch(
+            "block sides must be at least 1".into(),
+        ));
+    }
+    let (w, h) = (image.width, image.height);
+    if w == 0 || h == 0 {
+        return Err(PipelineError::Mismatch("the image is empty".into()));
+    }
+    let (nx, ny) = (w.div_ceil(bw), h.div_ceil(bh));
+    let n_pixels = w as f64 * h as f64;
+    // Texels per line the last column reads: the real width with a
+    // last-column shader, the whole block with BORDER padding.
+    let last_w = match last {
+        Some(_) => w - (nx - 1) * bw,
+        None => bw,
+    };
+    let padded = ((nx - 1) as u64 * bw as u64 + last_w as u64) * (ny as u64 * bh as u64)
+        - w as u64 * h as u64;
+    let delta = s.delta as f64;
+
+    // Pass 1: one draw over every column (BORDER padding), or one over the
+    // first nx − 1 columns and one over the last.
+    let (l1, env1) = load_pass1(pass1, bw, bh)?;
+    let main_cols = if last.is_some() { nx - 1 } else { nx };
     let root = (s.delta).sqrt();
-    d1.constants = Constants {
+    let constants = |read: u32| Constants {
         float: vec![
             [0.0; 4],
             [1.0 / w as f32, 1.0 / h as f32, 0.0, 1.0],
             [0.0; 4],
             [0.27, 0.67, 0.06, root],
         ],
-        int: vec![[0; 4], [bw as i32, 0, 0, 0], [bh as i32, 0, 0, 0]],
+        int: vec![[0; 4], [read as i32, 0, 0, 0], [bh as i32, 0, 0, 0]],
         bool: Vec::new(),
     };
-    d1.samplers.push(sampler(Texture {
+    let texture = Texture {
         width: w,
         height: h,
         texels: &image.pixels,
-    }));
-    d1.record_lod = true;
-    let (t1, emulated1, findings1) = draw_into(&c1, &d1, s.format, s.threads, &l1.file)?;
-    let (pass1_cost, _) = pass_cost(&l1, &env1, emulated1, findings1)?;
+    };
+    let mut t1 = RenderTarget::new(nx, ny, s.format);
+    let mut emulated1 = Range::ZERO;
+    let mut findings1 = Vec::new();
+    if main_cols > 0 {
+        let c1 = emu::compile(&l1.shader).map_err(PipelineError::Emu)?;
+        let mut d1 = Draw::new(main_cols, ny);
+        d1.limits = s.limits;
+        d1.record_lod = true;
+        d1.inputs.push((0, block_start(w, h, bw, bh)));
+        d1.constants = constants(bw);
+        d1.samplers.push(sampler(texture));
+        let (t, e, f) = draw_into(&c1, &d1, s.format, s.threads, &l1.file)?;
+        for y in 0..ny {
+            for x in 0..main_cols {
+                t1.store(x, y, t.texel(x, y));
+            }
+        }
+        emulated1 = e;
+        findings1 = f;
+    }
+    let (mut pass1_cost, _) = pass_cost(&l1, &env1, emulated1, findings1)?;
+    if main_cols == 0 {
+        // A frame no wider than one block: the last-column shader draws the
+        // only column and `pass1` never runs, so there is no count to compare.
+        pass1_cost.counts_agree = true;
+    }
+    let pass1_last = match last {
+        Some(src) => {
+            let (ll, envl) = load_pass1(src, last_w, bh)?;
+            let cl = emu::compile(&ll.shader).map_err(PipelineError::Emu)?;
+            let mut dl = Draw::new(1, ny);
+            dl.limits = s.limits;
+            dl.record_lod = true;
+            let mut input = block_start(w, h, bw, bh);
+            input.base[0] = (((nx - 1) as f64 * bw as f64 + 0.5) / w as f64) as f32;
+            dl.inputs.push((0, input));
+            dl.constants = constants(last_w);
+            dl.samplers.push(sampler(texture));
+            let (t, e, f) = draw_into(&cl, &dl, s.format, s.threads, &ll.file)?;
+            for y in 0..ny {
+                t1.store(nx - 1, y, t.texel(0, y));
+            }
+            Some(pass_cost(&ll, &envl, e, f)?.0)
+        }
+        None => None,
+    };
 
     // Reference and bounds for pass 1.
-    let refs = reference::block_sums(image, delta, s.policy, bw, bh)
+    let refs = reference::block_sums_last_width(image, delta, s.policy, bw, bh, last_w)
         .map_err(|e| PipelineError::Reference(e.to_string()))?;
-    let (bounds, ill) = pass1_bounds(image, s.block, delta, s.policy);
+    let (bounds, ill) = pass1_bounds_last_width(image, s.block, last_w, delta, s.policy);
     let mut blocks = Vec::with_capacity((nx * ny) as usize);
     for by in 0..ny {
         for bx in 0..nx {
@@ -561,6 +666,7 @@ pub fn run(
         delta: s.delta,
         padded_samples: padded,
         pass1: pass1_cost,
+        pass1_last,
         pass2: pass2_cost,
         blocks,
         pass2_check,
@@ -614,9 +720,11 @@ pub fn run_json(image: &str, r: &LuminanceRun) -> serde_json::Value {
         "padding_factor": r.padding_factor,
         "executed_per_pixel": {
             "pass1": range_json(r.pass1.executed_emulated),
+            "pass1_last": r.pass1_last.as_ref().map(|p| range_json(p.executed_emulated)),
             "pass2": range_json(r.pass2.executed_emulated),
         },
         "passes": [&r.pass1, &r.pass2],
+        "pass1_last": &r.pass1_last,
         "pass2_check": &r.pass2_check,
         "ill_conditioned_pixels": r.ill_conditioned,
         "negative_pixels": r.negative_pixels,
@@ -670,6 +778,9 @@ pub fn run_text(image: &str, r: &LuminanceRun) -> String {
         r.delta
     );
     s.push_str(&pass_line("pass 1", &r.pass1));
+    if let Some(p) = &r.pass1_last {
+        s.push_str(&pass_line("pass 1 (last column)", p));
+    }
     s.push_str(&pass_line("pass 2", &r.pass2));
     let agreeing = r.blocks.iter().filter(|b| b.agree).count();
     let worst = r

@@ -216,6 +216,13 @@ impl BlockSums {
 pub enum ReferenceError {
     /// A block side is 0.
     ZeroBlockSize { block_width: u32, block_height: u32 },
+    /// The last column's read width does not cover the frame's real width
+    /// there, or exceeds the block width.
+    LastWidth {
+        last_width: u32,
+        real_width: u32,
+        block_width: u32,
+    },
 }
 
 impl fmt::Display for ReferenceError {
@@ -227,6 +234,14 @@ impl fmt::Display for ReferenceError {
             } => write!(
                 f,
                 "block size {block_width}x{block_height} has a zero side; both must be at least 1"
+            ),
+            ReferenceError::LastWidth {
+                last_width,
+                real_width,
+                block_width,
+            } => write!(
+                f,
+                "the last column reads {last_width} texels per line, but the frame has {real_width} there and blocks are {block_width} wide"
             ),
         }
     }
@@ -245,6 +260,23 @@ pub fn block_sums(
     block_width: u32,
     block_height: u32,
 ) -> Result<BlockSums, ReferenceError> {
+    block_sums_last_width(image, delta, policy, block_width, block_height, block_width)
+}
+
+/// [`block_sums`] when the last column of blocks reads only `last_width`
+/// texels per line (a separate "last column" shader, the article's
+/// alternative to BORDER addressing): its blocks are padded to
+/// `last_width × block_height` instead of `block_width × block_height`.
+/// `last_width` must cover the frame's real width in that column
+/// (`width − (nx − 1) · block_width`) and be at most `block_width`.
+pub fn block_sums_last_width(
+    image: &HdrImage,
+    delta: f64,
+    policy: Policy,
+    block_width: u32,
+    block_height: u32,
+    last_width: u32,
+) -> Result<BlockSums, ReferenceError> {
     if block_width == 0 || block_height == 0 {
         return Err(ReferenceError::ZeroBlockSize {
             block_width,
@@ -254,6 +286,14 @@ pub fn block_sums(
     let (width, height) = (image.width, image.height);
     let nx = width.div_ceil(block_width);
     let ny = height.div_ceil(block_height);
+    let real_last = width.saturating_sub(nx.saturating_sub(1) * block_width);
+    if last_width > block_width || last_width < real_last {
+        return Err(ReferenceError::LastWidth {
+            last_width,
+            real_width: real_last,
+            block_width,
+        });
+    }
     let mut sums = vec![vec![0.0; nx as usize]; ny as usize];
     let mut magnitude_sums = sums.clone();
     let mut inside = vec![vec![0u64; nx as usize]; ny as usize];
@@ -281,10 +321,15 @@ pub fn block_sums(
     // Padding texels are black: luminance 0, one term log2(delta) each
     // (the same under every policy), added once per block as count * term.
     let black = policy.term(0.0, delta).unwrap_or(0.0);
-    let block_area = u64::from(block_width) * u64::from(block_height);
     let mut padded_samples = 0;
     for row in 0..ny as usize {
         for col in 0..nx as usize {
+            let read_width = if col + 1 == nx as usize {
+                last_width
+            } else {
+                block_width
+            };
+            let block_area = u64::from(read_width) * u64::from(block_height);
             let padded = block_area - inside[row][col];
             padded_samples += padded;
             // Skipped when 0: 0 * log2(0) would be NaN for delta = 0.
@@ -415,6 +460,27 @@ mod tests {
         let total = log_average(&img, delta, Policy::ABS).log2_sum;
         let blocks: f64 = b.sums.iter().flatten().sum();
         assert_close(blocks - 2.0 * delta.log2(), total);
+    }
+
+    #[test]
+    fn a_last_column_that_reads_the_real_width_has_no_padding_in_x() {
+        let delta = 1e-4;
+        // 3x3 image, 2x2 blocks, last column reading 1 texel per line: only
+        // the bottom row of blocks is padded (one line each: 2 + 1 texels).
+        let img = image(3, 3, &[1.0, 2.0, 4.0, 8.0, 16.0, 32.0, 1.0, 1.0, 1.0]);
+        let b = block_sums_last_width(&img, delta, Policy::ABS, 2, 2, 1).unwrap();
+        assert_eq!((b.nx, b.ny, b.padded_samples), (2, 2, 3));
+        let t = |v| t(v, delta);
+        assert_close(b.sums[0][1], t(4.0) + t(32.0));
+        assert_close(b.sums[1][1], t(1.0) + delta.log2());
+        assert_close(b.sums[1][0], 2.0 * t(1.0) + 2.0 * delta.log2());
+        // Reading less than the real width, or more than a block, is refused.
+        assert!(block_sums_last_width(&img, delta, Policy::ABS, 2, 2, 0).is_err());
+        assert!(block_sums_last_width(&img, delta, Policy::ABS, 2, 2, 3).is_err());
+        assert_eq!(
+            block_sums_last_width(&img, delta, Policy::ABS, 2, 2, 2).unwrap(),
+            block_sums(&img, delta, Policy::ABS, 2, 2).unwrap()
+        );
     }
 
     #[test]

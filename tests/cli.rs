@@ -398,3 +398,285 @@ fn run_reports_shader_errors_with_a_caret() {
     assert!(err.contains("bad.psh:3:"), "{err}");
     assert!(err.contains('^'), "{err}");
 }
+
+#[test]
+fn plan_shows_the_articles_choices_and_recommends_one() {
+    let o = ps30(&["plan", "--frame", "1280x1024"], repo());
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let out = stdout(&o);
+    let row = |block: &str| {
+        out.lines()
+            .find(|l| l.split_whitespace().nth(2) == Some(block))
+            .unwrap_or_else(|| panic!("no {block} row in\n{out}"))
+            .to_string()
+    };
+    let loop_row = row("128×56");
+    assert!(
+        loop_row.contains("10×19") && loop_row.contains("64,853"),
+        "{loop_row}"
+    );
+    assert!(loop_row.contains("the article's"));
+    let unrolled_row = row("125×128");
+    assert!(unrolled_row.contains("11×8") && unrolled_row.contains("64,773"));
+    assert!(unrolled_row.contains("97,280") && unrolled_row.contains("× 0.5048"));
+    assert!(out.contains("recommended (*): unrolled"), "{out}");
+    assert!(out.contains("rule: among candidates that finish in two passes"));
+    assert!(out.contains("why: "));
+}
+
+#[test]
+fn plan_json_has_the_documented_fields() {
+    let o = ps30(&["plan", "--frame", "1280x1024", "--json"], repo());
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    let cands = v["candidates"].as_array().unwrap();
+    assert!(cands.len() >= 10);
+    for c in cands {
+        for field in [
+            "name",
+            "variant",
+            "block",
+            "targets",
+            "passes",
+            "slots",
+            "executed_per_pixel",
+            "total_executed",
+            "padded_samples",
+            "uncorrected_factor",
+            "f16_safe",
+        ] {
+            assert!(c.get(field).is_some(), "{field} missing in {c}");
+        }
+        assert!(["loop", "unrolled"].contains(&c["variant"].as_str().unwrap()));
+    }
+    let art = cands
+        .iter()
+        .find(|c| c["variant"] == "loop" && c["block"] == serde_json::json!([128, 56]))
+        .unwrap();
+    assert_eq!(art["targets"], serde_json::json!([10, 19]));
+    assert_eq!(art["executed_per_pixel"][0], 64_853);
+    let rec = v["recommended"].as_str().unwrap();
+    assert!(cands.iter().any(|c| c["name"] == rec));
+    assert_eq!(v["profile"]["max_slots"], 512);
+}
+
+#[test]
+fn plan_with_more_slots_changes_the_recommendation() {
+    let rec = |extra: &[&str]| {
+        let mut args = vec!["plan", "--frame", "1280x1024", "--json"];
+        args.extend_from_slice(extra);
+        let o = ps30(&args, repo());
+        assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+        let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+        v["recommended"].as_str().unwrap().to_string()
+    };
+    assert_ne!(rec(&[]), rec(&["--max-slots", "1024"]));
+    // Loops nested at most once: no rep/rep loop form.
+    let o = ps30(
+        &["plan", "--frame", "1280x1024", "--max-nesting", "1"],
+        repo(),
+    );
+    assert_eq!(o.status.code(), Some(0));
+    let out = stdout(&o);
+    assert!(!out
+        .lines()
+        .any(|l| l.split_whitespace().nth(1) == Some("loop")));
+    assert!(
+        out.contains("the loop form does not fit this profile"),
+        "{out}"
+    );
+}
+
+#[test]
+fn plan_bad_and_absurd_frames() {
+    for bad in ["0x0", "1280x0", "70000x10", "1280", "axb"] {
+        let o = ps30(&["plan", "--frame", bad], repo());
+        assert_eq!(o.status.code(), Some(2), "{bad}: {}", stdout(&o));
+    }
+    for bad in [
+        ["--max-slots", "0"],
+        ["--max-rep-count", "256"],
+        ["--max-nesting", "5"],
+    ] {
+        let mut args = vec!["plan", "--frame", "640x480"];
+        args.extend_from_slice(&bad);
+        assert_eq!(ps30(&args, repo()).status.code(), Some(2), "{bad:?}");
+    }
+    // The largest frame accepted: every plan needs a third pass; exit 1,
+    // said in words, no panic.
+    let o = ps30(&["plan", "--frame", "65536x65536"], repo());
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    assert!(stdout(&o).contains("a third pass would be needed"));
+    // A profile nothing fits.
+    let o = ps30(&["plan", "--frame", "640x480", "--max-slots", "10"], repo());
+    assert_eq!(o.status.code(), Some(1));
+    assert!(stdout(&o).contains("does not fit this profile"));
+}
+
+#[test]
+fn unroll_fit_reproduces_the_articles_125() {
+    let o = ps30(&["unroll", "--fit"], repo());
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let out = stdout(&o);
+    assert!(
+        out.contains(
+            "widest unroll: 125 texels per line, 511 slots of 512; 126 would take 515 slots"
+        ),
+        "{out}"
+    );
+    assert!(out.contains("so 128 lines"), "{out}");
+    assert!(out.contains("pass1_unrolled_125x128.psh"));
+    assert!(out.contains("pass2_11x8.psh"));
+    assert!(out.contains("pass1_last_loop_30x128.psh"));
+    // --only prints one plain file, no macros.
+    let o = ps30(
+        &["unroll", "--fit", "--form", "unrolled", "--only", "pass1"],
+        repo(),
+    );
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let text = stdout(&o);
+    assert!(text.starts_with("// ps30 unroll: luminance pass 1"));
+    let texlds = text
+        .lines()
+        .filter(|l| l.trim_start().starts_with("texld "))
+        .count();
+    assert_eq!(texlds, 125);
+    assert!(!text.contains("REPEAT_BLOCK"));
+    let o = ps30(
+        &[
+            "unroll", "--fit", "--form", "unrolled", "--only", "pass1", "--macro",
+        ],
+        repo(),
+    );
+    assert!(stdout(&o).contains("BEGIN_REPEAT_BLOCK(125)"));
+    // With 1,024 slots the widest unroll is 253.
+    let o = ps30(&["unroll", "--fit", "--max-slots", "1024"], repo());
+    assert_eq!(o.status.code(), Some(0));
+    assert!(stdout(&o).contains("widest unroll: 253 texels per line"));
+}
+
+#[test]
+fn unroll_writes_files_that_check_passes() {
+    let dir = tempfile::tempdir().unwrap();
+    let o = ps30(
+        &[
+            "unroll",
+            "--fit",
+            "--frame",
+            "1920x1080",
+            "-o",
+            dir.path().to_str().unwrap(),
+        ],
+        repo(),
+    );
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let files: Vec<_> = std::fs::read_dir(dir.path())
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .collect();
+    assert!(files.len() >= 4, "{files:?}");
+    for f in files {
+        let o = ps30(&["check", f.to_str().unwrap()], repo());
+        assert_eq!(o.status.code(), Some(0), "{}: {}", f.display(), stdout(&o));
+    }
+    let o = ps30(
+        &[
+            "unroll", "--block", "125x128", "--form", "unrolled", "--json",
+        ],
+        repo(),
+    );
+    assert_eq!(o.status.code(), Some(0));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    let p1 = &v["shaders"][0];
+    assert_eq!(p1["slots"], 511);
+    assert_eq!(p1["executed"], 64_773);
+    assert!(p1["text"].as_str().unwrap().contains("defi i2, 128"));
+}
+
+#[test]
+fn unroll_blocks_that_cannot_fit_exit_1_with_numbers() {
+    let o = ps30(&["unroll", "--block", "200x50"], repo());
+    assert_eq!(o.status.code(), Some(1));
+    let out = stdout(&o);
+    assert!(
+        out.contains("811 slots, over the limit of 512 by 299"),
+        "{out}"
+    );
+    assert!(
+        out.contains("90,305 executed per pixel, over the limit of 65,535"),
+        "{out}"
+    );
+    let o = ps30(&["unroll", "--block", "300x10", "--form", "loop"], repo());
+    assert_eq!(o.status.code(), Some(1));
+    assert!(stdout(&o).contains("rep count of 300"));
+    // Bad values and usage: exit 2.
+    for args in [
+        &["unroll"][..],
+        &["unroll", "--block", "0x5"],
+        &["unroll", "--block", "8x8", "--fit"],
+        &["unroll", "--fit", "--frame", "0x0"],
+        &["unroll", "--fit", "--delta", "-1"],
+        &["unroll", "--fit", "--only", "pass1"],
+    ] {
+        let o = ps30(args, repo());
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stdout(&o));
+    }
+}
+
+#[test]
+fn verify_names_stale_generated_files() {
+    let dir = tempfile::tempdir().unwrap();
+    let gen = dir.path().join("gen");
+    let reports = dir.path().join("reports");
+    let run = |extra: &[&str]| {
+        let mut args = vec![
+            "verify",
+            "--reports",
+            reports.to_str().unwrap(),
+            "--generated",
+            gen.to_str().unwrap(),
+        ];
+        args.extend_from_slice(extra);
+        ps30(&args, repo())
+    };
+    // Missing: exit 1, each file named.
+    let o = run(&[]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(stdout(&o).contains("1280x1024/pass1_unrolled_125x128.psh is missing"));
+    // --regenerate writes them; then verify passes.
+    assert_eq!(run(&["--regenerate"]).status.code(), Some(0));
+    assert_eq!(run(&[]).status.code(), Some(0));
+    let file = gen.join("640x480/pass2_6x4.psh");
+    let text = std::fs::read_to_string(&file).unwrap();
+    std::fs::write(&file, text.replace("c0.x", "c0.z")).unwrap();
+    let o = run(&[]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(stdout(&o).contains("640x480/pass2_6x4.psh is stale"));
+    assert!(reports.join("generated-shaders.md").exists());
+}
+
+#[test]
+fn luminance_runs_a_generated_set_with_its_last_column_shader() {
+    let g = "asm/generated/1280x1024";
+    let o = ps30(
+        &[
+            "luminance",
+            "assets/hdr/courtyard_1280x1024.exr",
+            "--pass1",
+            &format!("{g}/pass1_unrolled_117x128.psh"),
+            "--last-column",
+            &format!("{g}/pass1_last_unrolled_110x128.psh"),
+            "--pass2",
+            &format!("{g}/pass2_11x8.psh"),
+            "--block",
+            "117x128",
+            "--json",
+        ],
+        repo(),
+    );
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(v["agree"], true);
+    assert_eq!(v["padded_samples"], 0);
+    assert_eq!(v["executed_per_pixel"]["pass1_last"], 57_093);
+}

@@ -225,3 +225,54 @@ fn a_block_that_does_not_match_the_unrolled_width_is_refused() {
     .unwrap_err();
     assert!(err.to_string().contains("REPEAT_BLOCK count"), "{err}");
 }
+
+#[test]
+fn a_last_column_shader_that_reads_the_real_width_removes_the_padding_in_x() {
+    // The article's alternative to BORDER addressing: a non-unrolled version
+    // for the last column. The corrected loop listing takes its x count from
+    // i1, which the pipeline sets to the real width there: 1280 − 10·125 = 30.
+    let img = image("courtyard_1280x1024.exr");
+    let s = Settings::default();
+    let run = ps30::pipeline::run_with_last_column(
+        &img,
+        &shader("corrected:unrolled"),
+        &shader("corrected:loop"),
+        &shader("corrected:pass2"),
+        &s,
+    )
+    .unwrap();
+    assert!(run.all_agree(), "{}", ps30::pipeline::run_text("c", &run));
+    // 1024 = 8 · 128: no padding in y either, so none at all.
+    assert_eq!(run.padded_samples, 0);
+    assert_eq!(run.padding_factor, 1.0);
+    let last = run.pass1_last.as_ref().unwrap();
+    // 30 texels of 9 cycles and 6 per line, 128 lines, 5 set-up, 1 output.
+    assert_eq!(
+        last.executed_static,
+        ps30::cost::Range::exact(6 + 128 * (6 + 30 * 9))
+    );
+    assert_eq!(last.executed_emulated, last.executed_static);
+    // The last column's sums hold the real texels only: BORDER's sums minus
+    // (125 − 30)·128 texels of log2(δ) each.
+    let border = go(
+        &img,
+        "corrected:unrolled",
+        "corrected:pass2",
+        (125, 128),
+        TargetFormat::R32F,
+    );
+    let black = (s.delta as f64).log2();
+    for (a, b) in run.blocks.iter().zip(&border.blocks) {
+        let expected = if a.x == 10 {
+            b.reference - (95.0 * 128.0) * black
+        } else {
+            b.reference
+        };
+        assert!(
+            (a.reference - expected).abs() < 1e-6 * expected.abs(),
+            "{} {}",
+            a.reference,
+            expected
+        );
+    }
+}
