@@ -562,8 +562,8 @@ pub fn crosscheck_report(rows: &[CrossRow]) -> String {
          c0.y = −P·log2(δ)/N, at no cost in slots.\n\
          3. **A16B16G16R16F cannot hold 125×128 block sums.** A block of 16,000 samples sums to \
          about −80,000 on this image; half floats end at ±65,504, so most sums become −∞ and \
-         L̄w becomes 0. The sums need an R32F target, or blocks of at most ⌊65,504 / 13.3⌋ ≈ 4,900 \
-         samples when δ = 1e-4.\n",
+         L̄w becomes 0. The sums need an R32F target, or blocks of at most ⌊65,504 / 16⌋ = 4,094 \
+         samples when δ = 1e-4 (each term lies between log2 δ ≈ −13.3 and log2 65,504 ≈ 16).\n",
         crosscheck_markdown(rows)
     )
 }
