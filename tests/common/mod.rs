@@ -3,16 +3,8 @@
 use std::path::PathBuf;
 
 /// Every image in `assets/hdr` (tests/reference_values.rs checks the list
-/// against the folder and reference.json).
-pub const IMAGES: [&str; 7] = [
-    "city.exr",
-    "courtyard.exr",
-    "courtyard_1280x1024.exr",
-    "forest.exr",
-    "forest.hdr",
-    "sunset.exr",
-    "sunset.pfm",
-];
+/// against the folder and reference.json): the library's own list.
+pub use ps30::report_dir::IMAGES;
 
 /// Path of a bundled image or of `reference.json`.
 pub fn asset(name: &str) -> PathBuf {
