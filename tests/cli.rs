@@ -1,20 +1,11 @@
 //! Drives the real `ps30` binary: exit codes, the article's figures as a user
 //! sees them, JSON fields, over-limit messages, bad input.
 
-use std::path::Path;
-use std::process::{Command, Output};
+use std::process::Output;
 
-fn ps30(args: &[&str], dir: &Path) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_ps30"))
-        .args(args)
-        .current_dir(dir)
-        .output()
-        .expect("run ps30")
-}
-
-fn repo() -> &'static Path {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-}
+#[path = "common/bin.rs"]
+mod bin;
+use bin::{ps30, repo};
 
 fn stdout(o: &Output) -> String {
     String::from_utf8_lossy(&o.stdout).into_owned()

@@ -3,14 +3,13 @@
 //! terminal.
 
 use std::path::Path;
-use std::process::{Command, Output};
+use std::process::Output;
+
+#[path = "common/bin.rs"]
+mod bin;
 
 fn ps30(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_ps30"))
-        .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .expect("run ps30")
+    bin::ps30(args, bin::repo())
 }
 
 const COMMANDS: [&str; 6] = ["check", "expand", "run", "luminance", "tonemap", "verify"];

@@ -7,9 +7,10 @@
 //! milliseconds.
 
 use std::path::{Path, PathBuf};
-use std::process::Command;
 use std::time::{Duration, Instant};
 
+#[path = "common/bin.rs"]
+mod bin;
 #[path = "common/malformed_asm.rs"]
 mod malformed_asm;
 
@@ -22,11 +23,7 @@ struct Outcome {
 
 fn ps30(args: &[&str], dir: &Path) -> Outcome {
     let start = Instant::now();
-    let o = Command::new(env!("CARGO_BIN_EXE_ps30"))
-        .args(args)
-        .current_dir(dir)
-        .output()
-        .expect("run ps30");
+    let o = bin::ps30(args, dir);
     Outcome {
         code: o.status.code(),
         stderr: String::from_utf8_lossy(&o.stderr).into_owned(),

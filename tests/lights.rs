@@ -228,12 +228,11 @@ fn the_luminance_pass_is_warned_about_its_level_of_detail() {
 
 // ----- the command line ----------------------------------------------------------
 
+#[path = "common/bin.rs"]
+mod bin;
+
 fn ps30(args: &[&str]) -> std::process::Output {
-    std::process::Command::new(env!("CARGO_BIN_EXE_ps30"))
-        .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .expect("run ps30")
+    bin::ps30(args, bin::repo())
 }
 
 #[test]

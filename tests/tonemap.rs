@@ -12,8 +12,7 @@ use common::{asset, IMAGES};
 use ps30::image::{HdrImage, ImageLimits};
 use ps30::pipeline::ShaderSource;
 use ps30::tonemap::{self, Settings, WhiteSource};
-use std::path::Path;
-use std::process::{Command, Output};
+use std::process::Output;
 
 fn load(name: &str) -> HdrImage {
     ps30::image::load(&asset(name), &ImageLimits::default()).unwrap()
@@ -204,18 +203,9 @@ fn nan_pixels_are_refused_not_a_panic() {
 
 // ---- the command ----
 
-fn ps30(args: &[&str], dir: &Path) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_ps30"))
-        .args(args)
-        .current_dir(dir)
-        .env_remove("NO_COLOR")
-        .output()
-        .expect("run ps30")
-}
-
-fn repo() -> &'static Path {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-}
+#[path = "common/bin.rs"]
+mod bin;
+use bin::{ps30, repo};
 
 fn stderr(o: &Output) -> String {
     String::from_utf8_lossy(&o.stderr).into_owned()

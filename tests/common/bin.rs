@@ -1,0 +1,21 @@
+//! Running the real `ps30` binary from integration tests: one way, so every
+//! test sees the same environment (no NO_COLOR, stdout and stderr captured).
+
+use std::path::Path;
+use std::process::{Command, Output};
+
+/// Runs `ps30 ARGS` in `dir`.
+pub fn ps30(args: &[&str], dir: &Path) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_ps30"))
+        .args(args)
+        .current_dir(dir)
+        .env_remove("NO_COLOR")
+        .output()
+        .expect("run ps30")
+}
+
+/// The repository root (where `asm/` and `assets/` are).
+#[allow(dead_code)] // not every test crate needs it
+pub fn repo() -> &'static Path {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+}
