@@ -37,7 +37,6 @@ use crate::image::{HdrImage, RenderTarget, TargetFormat, Texture};
 use crate::isa::Opcode;
 use crate::reference::{self, Policy};
 use serde::Serialize;
-use std::collections::BTreeMap;
 
 /// f32 unit roundoff.
 const U32: f64 = f32::EPSILON as f64 / 2.0;
@@ -690,11 +689,6 @@ fn reads_c0y(l: &front::Loaded) -> bool {
             s.reg.file == crate::isa::RegFile::Const && s.reg.index == 0 && s.swizzle.0.contains(&1)
         })
     })
-}
-
-/// The per-block sums as a map keyed by (row, column), for reports.
-pub fn block_map(run: &LuminanceRun) -> BTreeMap<(u32, u32), &BlockCheck> {
-    run.blocks.iter().map(|b| ((b.y, b.x), b)).collect()
 }
 
 /// The JSON form of a run (`ps30 luminance --json`).
