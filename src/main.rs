@@ -501,10 +501,19 @@ fn load(path: &PathBuf, source: &SourceArgs) -> Result<front::Loaded, BadInput> 
     }
 }
 
+/// Writes to stdout. A reader that went away (`ps30 … | head`) is not an
+/// error: there is nobody left to tell anything, so the command ends with
+/// success, as a Unix filter does (every file it writes was written
+/// atomically before it printed).
 fn print(out: &str) -> std::io::Result<()> {
     let mut stdout = std::io::stdout().lock();
-    stdout.write_all(out.as_bytes())?;
-    stdout.flush()
+    match stdout
+        .write_all(out.as_bytes())
+        .and_then(|()| stdout.flush())
+    {
+        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => std::process::exit(0),
+        other => other,
+    }
 }
 
 /// Prints human-readable text, its status words coloured when stdout
@@ -1099,7 +1108,6 @@ fn main() -> ExitCode {
     match run(cli) {
         Ok(Outcome::Ok) => ExitCode::SUCCESS,
         Ok(Outcome::Problem) => ExitCode::from(1),
-        Err(BadInput(msg)) if msg.contains("Broken pipe") => ExitCode::SUCCESS,
         Err(BadInput(msg)) => {
             eprintln!("error: {msg}");
             ExitCode::from(2)

@@ -671,3 +671,30 @@ fn luminance_runs_a_generated_set_with_its_last_column_shader() {
     assert_eq!(v["padded_samples"], 0);
     assert_eq!(v["executed_per_pixel"]["pass1_last"], 57_093);
 }
+
+#[test]
+fn a_closed_stdout_is_not_an_error() {
+    use std::process::{Command, Stdio};
+    // The reader goes away before ps30 has started writing (process start-up
+    // takes milliseconds): every write then fails with EPIPE.
+    let mut child = Command::new(env!("CARGO_BIN_EXE_ps30"))
+        .args(["expand", "asm/article/lum_pass1_unrolled.psh"])
+        .current_dir(repo())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    drop(child.stdout.take());
+    let out = child.wait_with_output().unwrap();
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(
+        out.stderr.is_empty(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
