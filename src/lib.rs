@@ -20,9 +20,12 @@
 //!
 //! Modules, in the order data flows: [`front`] (parser, REPEAT_BLOCK),
 //! [`valid`] (ps_3_0 rules → [`ir::Shader`]), [`cost`], [`emu`], [`image`],
-//! [`reference`](mod@reference), [`pipeline`], [`verify`] (the article's claims), with
-//! [`isa`] (the instruction table), [`diag`], [`report`] and [`writer`]
-//! serving them all.
+//! [`reference`](mod@reference), [`pipeline`] (the luminance passes and their
+//! cross-check), [`tonemap`], [`profile`] (quads and divergence) with
+//! [`lights`] (its G-buffer scene), [`gen`] (`unroll` and `plan`), and
+//! [`verify`] (the article's claims) with [`report_dir`] and [`figures`]
+//! (the pages and PNGs of `reports/`); [`isa`] (the instruction table),
+//! [`diag`], [`report`], [`writer`] and [`args`] serve them all.
 //!
 //! ```
 //! use ps30::{cost, front};
