@@ -4,8 +4,8 @@
 //! `analyse/i2=1` with `analyse/i2=255`.
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use ps30::cost::{analyse, Environment, Profile};
-use ps30::front::{load_str, Options};
+use ps30::core::cost::{analyse, Environment, Profile};
+use ps30::core::load::{load_str, Options};
 use std::hint::black_box;
 
 const UNROLLED: &str = include_str!("../asm/article/lum_pass1_unrolled.psh");

@@ -13,11 +13,11 @@
 //! The cross-check (block bounds) is not part of the timed work.
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use ps30::emu::{self, Address, Constants, Draw, Filter, LinearInput, SamplerState};
-use ps30::front::{load_str, Options};
-use ps30::image::{load, ImageLimits, RenderTarget, TargetFormat};
-use ps30::reference::{self, Policy};
-use ps30::verify::{CORRECTED_LOOP, CORRECTED_PASS2, CORRECTED_UNROLLED};
+use ps30::core::emu::{self, Address, Constants, Draw, Filter, LinearInput, SamplerState};
+use ps30::core::load::{load_str, Options};
+use ps30::core::image::{load, ImageLimits, RenderTarget, TargetFormat};
+use ps30::jobs::luminance::reference::{self, Policy};
+use ps30::jobs::bundled::{CORRECTED_LOOP, CORRECTED_PASS2, CORRECTED_UNROLLED};
 use std::hint::black_box;
 use std::path::Path;
 
@@ -40,7 +40,7 @@ fn state() -> SamplerState {
 
 /// Pass 1 then pass 2 on one thread; returns L̄w.
 fn two_pass(
-    img: &ps30::image::HdrImage,
+    img: &ps30::core::image::HdrImage,
     p1: &emu::Compiled,
     p2: &emu::Compiled,
     bw: u32,
@@ -94,12 +94,12 @@ fn luminance(c: &mut Criterion) {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/hdr/courtyard_1280x1024.exr");
     let img = load(&path, &ImageLimits::default()).unwrap();
     let unrolled = (
-        compile(CORRECTED_UNROLLED, &[]),
-        compile(CORRECTED_PASS2, &[("xsize", 11), ("ysize", 8)]),
+        compile(CORRECTED_UNROLLED.listing(), &[]),
+        compile(CORRECTED_PASS2.listing(), &[("xsize", 11), ("ysize", 8)]),
     );
     let looped = (
-        compile(CORRECTED_LOOP, &[]),
-        compile(CORRECTED_PASS2, &[("xsize", 10), ("ysize", 19)]),
+        compile(CORRECTED_LOOP.listing(), &[]),
+        compile(CORRECTED_PASS2.listing(), &[("xsize", 10), ("ysize", 19)]),
     );
     let mut g = c.benchmark_group("courtyard_1280x1024");
     g.sample_size(20);

@@ -10,7 +10,7 @@
 //!                                                                              │
 //!                         ┌────────────────────┬────────────────────────────────┤
 //!                         ▼                    ▼                                ▼
-//!                    cost model      emulator (micro-ops,                  asm writer
+//!                    cost model      emulator (micro-ops,                  asm printer
 //!                 (slots, executed,   64 lanes = 16 quads)
 //!                  loop breakdown)           │
 //!                                            ▼
@@ -18,19 +18,24 @@
 //!                                                                                 vs f64 reference
 //! ```
 //!
-//! Modules, in the order data flows: [`front`] (parser, REPEAT_BLOCK),
-//! [`valid`] (ps_3_0 rules → [`ir::Shader`]), [`cost`], [`emu`], [`image`],
-//! [`reference`](mod@reference), [`pipeline`] (the luminance passes and their
-//! cross-check), [`tonemap`], [`profile`] (quads and divergence) with
-//! [`lights`] (its G-buffer scene), [`gen`] (`unroll` and `plan`), and
-//! [`verify`] (the article's claims) with [`report_dir`] and [`figures`]
-//! (the pages and PNGs of `reports/`); [`isa`] (the instruction table),
-//! [`diag`], [`report`], [`writer`] and [`args`] serve them all.
+//! The crate is built in levels, and imports point one way (`ARCHITECTURE.md`
+//! at the top of the repository draws the whole map):
+//!
+//! * [`core`](mod@core) — the stages every job shares: the instruction table
+//!   and IR, the front end and printer, validation, the cost model, the
+//!   emulator and images;
+//! * [`jobs`] — what ps30 does with them: the luminance pipeline with its
+//!   reference, tone mapping, profiling, the generator and planner, scenes,
+//!   and the article's claims;
+//! * [`present`] — text, JSON, Markdown pages and figures of those results.
+//!
+//! The command line (`src/main.rs` and `src/cli/`) sits on top and is not
+//! part of the library.
 //!
 //! ```
-//! use ps30::{cost, front};
+//! use ps30::core::{cost, load};
 //! let src = "ps_3_0\ndefi i0, 128, 0, 0, 0\nrep i0\n  add r0, r0, r0\nendrep\nmov oC0, r0\n";
-//! let loaded = front::load_str("example.psh", src, &front::Options::default()).unwrap();
+//! let loaded = load::load_str("example.psh", src, &load::Options::default()).unwrap();
 //! let analysis = cost::analyse(&loaded.shader, &loaded.file, &cost::Environment::default(),
 //!                              &cost::Profile::ps_3_0()).unwrap();
 //! assert_eq!(analysis.slots, 7);                       // rep 3 + add 1 + endrep 2 + mov 1
@@ -41,23 +46,6 @@
 // travel on the error path, where their size costs nothing measurable.
 #![allow(clippy::result_large_err)]
 
-pub mod args;
-pub mod cost;
-pub mod diag;
-pub mod emu;
-pub mod figures;
-pub mod front;
-pub mod gen;
-pub mod image;
-pub mod ir;
-pub mod isa;
-pub mod lights;
-pub mod pipeline;
-pub mod profile;
-pub mod reference;
-pub mod report;
-pub mod report_dir;
-pub mod tonemap;
-pub mod valid;
-pub mod verify;
-pub mod writer;
+pub mod core;
+pub mod jobs;
+pub mod present;

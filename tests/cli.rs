@@ -357,7 +357,7 @@ fn run_writes_a_target_that_reads_back() {
     let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
     // 5 set-up + 52 lines of (3 + 128·9 + 1 + 2) + 1.
     assert_eq!(v["executed_per_pixel"], 6 + 52 * (3 + 128 * 9 + 1 + 2));
-    let img = ps30::image::load(&out, &ps30::image::ImageLimits::default()).unwrap();
+    let img = ps30::core::image::load(&out, &ps30::core::image::ImageLimits::default()).unwrap();
     assert_eq!((img.width, img.height), (8, 10));
     let texels = v["texels"].as_array().unwrap();
     for (t, p) in texels.iter().zip(&img.pixels) {

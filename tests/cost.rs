@@ -17,10 +17,10 @@
 //! a 255⁴ nest must be analysed by formula, not by walking it.
 
 use proptest::prelude::*;
-use ps30::cost::{self, Analysis, Environment, Profile, Range, Verdict};
-use ps30::front::{self, Loaded, Options};
-use ps30::ir::{Shader, SrcMod};
-use ps30::isa::{Class, Opcode, RegFile, TABLE};
+use ps30::core::cost::{self, Analysis, Environment, Profile, Range, Verdict};
+use ps30::core::load::{self, Loaded, Options};
+use ps30::core::ir::{Shader, SrcMod};
+use ps30::core::isa::{Class, Opcode, RegFile, TABLE};
 
 // ---------------------------------------------------------------------------
 // Slot counts: Microsoft ps_3_0 instruction table ("Instruction slots"
@@ -160,7 +160,7 @@ fn load(name: &str, src: &str) -> Loaded {
 }
 
 fn load_with(name: &str, src: &str, options: &Options) -> Loaded {
-    front::load_str(name, src, options).unwrap_or_else(|e| {
+    load::load_str(name, src, options).unwrap_or_else(|e| {
         panic!(
             "{name} does not load:\n{}\n{src}",
             e.diagnostics.render(&e.file)
@@ -556,7 +556,7 @@ proptest! {
         bytes in prop::collection::vec(any::<u8>(), 0..300)
     ) {
         let src = random_program(&bytes);
-        let l = match front::load_str("random.psh", &src, &Options::default()) {
+        let l = match load::load_str("random.psh", &src, &Options::default()) {
             Ok(l) => l,
             Err(e) => {
                 return Err(TestCaseError::fail(format!(
@@ -919,11 +919,11 @@ fn the_brute_force_interpreter_agrees_with_hand_counts() {
 /// Runs a shader on a 2×2 target with every declared input and sampler
 /// bound, and returns each pixel's executed slots.
 fn emulated_counts(l: &Loaded) -> Result<Vec<u64>, String> {
-    use ps30::emu::{self, Draw, LinearInput, SamplerState, Texture};
+    use ps30::core::emu::{self, Draw, LinearInput, SamplerState, Texture};
     let compiled = emu::compile(&l.shader).map_err(|e| e.to_string())?;
     let mut draw = Draw::new(2, 2);
     for d in &l.shader.program().inputs {
-        if d.reg.file == ps30::isa::RegFile::Input {
+        if d.reg.file == ps30::core::isa::RegFile::Input {
             draw.inputs
                 .push((d.reg.index, LinearInput::constant([0.25, 0.5, 0.75, 1.0])));
         }
@@ -936,7 +936,7 @@ fn emulated_counts(l: &Loaded) -> Result<Vec<u64>, String> {
         .program()
         .samplers
         .iter()
-        .filter(|s| s.ty == ps30::isa::SamplerType::Tex2d)
+        .filter(|s| s.ty == ps30::core::isa::SamplerType::Tex2d)
     {
         let tex = Texture {
             width: 2,
@@ -958,7 +958,7 @@ proptest! {
         bytes in prop::collection::vec(any::<u8>(), 0..300)
     ) {
         let src = random_program(&bytes);
-        let l = front::load_str("random.psh", &src, &Options::default())
+        let l = load::load_str("random.psh", &src, &Options::default())
             .map_err(|e| TestCaseError::fail(e.diagnostics.render(&e.file)))?;
         let a = analyse(&l);
         prop_assume!(a.executed.max <= 2_000_000);

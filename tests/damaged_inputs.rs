@@ -3,7 +3,7 @@
 //! an abort. The real files exercise the decoders' compressed paths (DWAB,
 //! PIZ, RLE-RGBE) that small synthetic files in the unit tests do not reach.
 
-use ps30::image::{load, ImageLimits};
+use ps30::core::image::{load, ImageLimits};
 
 mod common;
 use common::{asset, IMAGES};

@@ -22,12 +22,12 @@
 //! every block of every frame different enough to catch a shader that reads
 //! the wrong texels.
 
-use ps30::cost::{self, Environment, Profile, Verdict};
-use ps30::front::{self, Options};
-use ps30::gen::set::{self, Bundle, Role};
-use ps30::gen::{plan, Pass1Form};
-use ps30::image::{load, HdrImage, ImageLimits};
-use ps30::pipeline::{run, run_with_last_column, Settings, ShaderSource};
+use ps30::core::cost::{self, Environment, Profile, Verdict};
+use ps30::core::load::{self, Options};
+use ps30::jobs::gen::set::{self, Bundle, Role};
+use ps30::jobs::gen::{plan, Pass1Form};
+use ps30::core::image::{load, HdrImage, ImageLimits};
+use ps30::jobs::luminance::{run, run_with_last_column, Settings, ShaderSource};
 use std::path::{Path, PathBuf};
 
 // Only `asset` is used here; the shared image list serves the per-image suites.
@@ -36,7 +36,7 @@ mod common;
 use common::asset;
 
 fn generated_dir() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join(ps30::verify::GENERATED_DIR)
+    Path::new(env!("CARGO_MANIFEST_DIR")).join(ps30::jobs::verify::GENERATED_DIR)
 }
 
 /// Reflects `i` into 0..n (… 2 1 0 | 0 1 2 … n−1 | n−1 n−2 …).
@@ -88,7 +88,7 @@ fn header_number(text: &str, label: &str) -> u64 {
 /// Loads a committed file and checks it against the ps_3_0 profile and its
 /// own header.
 fn check_file(rel: &str, text: &str) -> (u64, u64) {
-    let loaded = front::load_str(rel, text, &Options::default())
+    let loaded = load::load_str(rel, text, &Options::default())
         .unwrap_or_else(|e| panic!("{rel}: {}", e.diagnostics.render(&e.file)));
     let profile = Profile::ps_3_0();
     let a = cost::analyse(
@@ -104,7 +104,7 @@ fn check_file(rel: &str, text: &str) -> (u64, u64) {
     for l in &a.loops {
         assert!(l.iterations.max <= profile.max_rep_count as u64, "{rel}");
     }
-    assert!(ps30::gen::loop_nesting(&loaded.shader) <= profile.max_loop_nesting);
+    assert!(ps30::jobs::gen::loop_nesting(&loaded.shader) <= profile.max_loop_nesting);
     assert!(loaded.warnings.items.is_empty(), "{rel}: warnings");
     // The header tells the truth.
     assert_eq!(header_number(text, "slots"), a.slots, "{rel}: header slots");
@@ -192,7 +192,7 @@ fn frame(w: u32, h: u32) {
         assert!(
             border.all_agree(),
             "{what}: {}",
-            ps30::pipeline::run_text(&what, &border)
+            ps30::present::luminance::run_text(&what, &border)
         );
         assert_eq!(border.targets, (c.targets[0], c.targets[1]));
         assert_eq!(border.padded_samples, c.padded_border, "{what}");
@@ -213,7 +213,7 @@ fn frame(w: u32, h: u32) {
             assert!(
                 l.all_agree(),
                 "{what} with {last}: {}",
-                ps30::pipeline::run_text(&what, &l)
+                ps30::present::luminance::run_text(&what, &l)
             );
             // Padded samples in x become 0: only the padding in y is left.
             let covered_y = c.targets[1] as u64 * c.block[1] as u64;
@@ -276,7 +276,7 @@ fn the_committed_set_has_no_other_files() {
         .collect();
     assert_eq!(frames.len(), set::FRAMES.len(), "{frames:?}");
     // verify's planning claims, from the same set.
-    let claims = ps30::verify::planning_claims(&all).unwrap();
+    let claims = ps30::jobs::verify::planning_claims(&all).unwrap();
     assert_eq!(claims.len(), 5);
     for c in &claims {
         assert!(
@@ -325,9 +325,9 @@ fn plan_1280x1024_lists_the_articles_choices_with_the_articles_counts() {
     let p = plan::plan((1280, 1024), &Profile::ps_3_0(), 1e-4).unwrap();
     // The article's own listings, analysed: its executed counts.
     let (_, loop_a) =
-        ps30::verify::analyse_listing(ps30::verify::PASS1_LOOP, &[], &[(1, 128), (2, 56)]).unwrap();
+        ps30::jobs::verify::analyse_listing(ps30::jobs::bundled::ARTICLE_LOOP.listing(), &[], &[(1, 128), (2, 56)]).unwrap();
     let (_, unrolled_a) =
-        ps30::verify::analyse_listing(ps30::verify::PASS1_UNROLLED, &[], &[(2, 128)]).unwrap();
+        ps30::jobs::verify::analyse_listing(ps30::jobs::bundled::ARTICLE_UNROLLED.listing(), &[], &[(2, 128)]).unwrap();
     for (form, block, targets, article) in [
         (Pass1Form::Loop, [128, 56], [10, 19], loop_a),
         (Pass1Form::Unrolled, [125, 128], [11, 8], unrolled_a),
@@ -452,7 +452,7 @@ fn nested_pass2_and_the_macro_form_run_and_agree() {
         },
     )
     .unwrap();
-    assert!(r.all_agree(), "{}", ps30::pipeline::run_text("nested", &r));
+    assert!(r.all_agree(), "{}", ps30::present::luminance::run_text("nested", &r));
     assert_eq!(r.pass2.executed_emulated, cost::Range::exact(p2.executed));
 
     // --macro keeps REPEAT_BLOCK and loads to the same program.
@@ -468,8 +468,8 @@ fn nested_pass2_and_the_macro_form_run_and_agree() {
             assert!(m.text.contains("BEGIN_REPEAT_BLOCK"), "{}", m.file);
         }
         let program = |t: &str| {
-            let l = front::load_str("x", t, &Options::default()).unwrap();
-            ps30::writer::write_program(l.shader.program())
+            let l = load::load_str("x", t, &Options::default()).unwrap();
+            ps30::core::front::print::write_program(l.shader.program())
         };
         assert_eq!(program(&a.text), program(&m.text), "{}", a.file);
         assert_eq!((a.slots, a.executed), (m.slots, m.executed));

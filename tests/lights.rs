@@ -3,10 +3,11 @@
 //! per quad (worked out by hand on a tiny ID map), the texld variant's
 //! diagnostics, and `ps30 profile` on top of it all.
 
-use ps30::emu::{self, Compiled};
-use ps30::front::{load_str, Loaded, Options};
-use ps30::lights::{self, Scene};
-use ps30::profile::{self, CostStats, FindingKind, Input, Setup};
+use ps30::core::emu::{self, Compiled};
+use ps30::core::load::{load_str, Loaded, Options};
+use ps30::jobs::scenes::lights::{self, Scene};
+use ps30::core::emu::findings::FindingKind;
+use ps30::jobs::profile::{self, CostStats, Input, Setup};
 
 fn load(src: (&str, &str)) -> Loaded {
     load_str(src.0, src.1, &Options::default()).unwrap()
@@ -20,7 +21,7 @@ fn compiled(src: (&str, &str)) -> Compiled {
 fn both_variants_match_the_cpu_computation_in_every_region() {
     for (w, h) in [(64, 64), (37, 23), (1, 1)] {
         let scene = Scene::synthetic(w, h).unwrap();
-        for src in [lights::SELECT, lights::SELECT_TEXLD] {
+        for src in [ps30::jobs::bundled::LIGHTS_SELECT.listing(), ps30::jobs::bundled::LIGHTS_TEXLD.listing()] {
             Scene::check_constants(load(src).shader.program()).unwrap();
             let run = lights::run(&compiled(src), &scene, Some(1)).unwrap();
             assert!(run.all_match(), "{} {w}x{h}: {:?}", src.0, run.per_model);
@@ -31,7 +32,7 @@ fn both_variants_match_the_cpu_computation_in_every_region() {
     // At 64×64 every model has pixels, and some quads hold all three.
     let scene = Scene::synthetic(64, 64).unwrap();
     assert!(scene.pixels_per_model().iter().all(|&n| n > 100));
-    let run = lights::run(&compiled(lights::SELECT), &scene, None).unwrap();
+    let run = lights::run(&compiled(ps30::jobs::bundled::LIGHTS_SELECT.listing()), &scene, None).unwrap();
     let out = &run.output;
     assert!(
         out.quad_executed.contains(&34),
@@ -65,7 +66,7 @@ const TINY: [u8; 8] = [0, 1, 0, 0, 2, 2, 0, 0];
 #[test]
 fn per_quad_costs_on_a_tiny_gbuffer_match_the_hand_count() {
     let scene = Scene::from_ids(4, 2, &TINY).unwrap();
-    let run = lights::run(&compiled(lights::SELECT), &scene, Some(1)).unwrap();
+    let run = lights::run(&compiled(ps30::jobs::bundled::LIGHTS_SELECT.listing()), &scene, Some(1)).unwrap();
     assert!(run.all_match());
     let out = &run.output;
     // Shared: texld 1, mul 1, mov 1, dp3 1, if_lt 3 = 7; at the end mov 1, mov 1.
@@ -89,7 +90,7 @@ fn per_quad_costs_on_a_tiny_gbuffer_match_the_hand_count() {
 
 #[test]
 fn the_texld_variant_is_flagged_statically_and_counted_per_quad() {
-    let l = load(lights::SELECT_TEXLD);
+    let l = load(ps30::jobs::bundled::LIGHTS_TEXLD.listing());
     let lines: Vec<usize> = l
         .warnings
         .items
@@ -97,10 +98,10 @@ fn the_texld_variant_is_flagged_statically_and_counted_per_quad() {
         .map(|w| l.file.line_of(w.span.start))
         .collect();
     assert_eq!(lines, [34, 39, 43]);
-    assert!(load(lights::SELECT).warnings.items.is_empty());
+    assert!(load(ps30::jobs::bundled::LIGHTS_SELECT.listing()).warnings.items.is_empty());
 
     let scene = Scene::from_ids(4, 2, &TINY).unwrap();
-    let run = lights::run(&compiled(lights::SELECT_TEXLD), &scene, Some(1)).unwrap();
+    let run = lights::run(&compiled(ps30::jobs::bundled::LIGHTS_TEXLD.listing()), &scene, Some(1)).unwrap();
     let sites: Vec<(usize, bool, u64, u64)> = run
         .output
         .gradients
@@ -140,14 +141,14 @@ fn profile_reports_costs_and_findings() {
         threads: Some(1),
     };
     // The tiny map is not what --gbuffer draws; check the synthetic one.
-    let r = profile::profile(lights::SELECT.0, lights::SELECT.1, &setup).unwrap();
+    let r = profile::profile(ps30::jobs::bundled::LIGHTS_SELECT.listing().0, ps30::jobs::bundled::LIGHTS_SELECT.listing().1, &setup).unwrap();
     assert_eq!((r.width, r.height), (4, 2));
     assert!(r.counts_agree);
     assert!(r.findings.is_empty());
     assert!(!r.problem());
     let r = profile::profile(
-        lights::SELECT_TEXLD.0,
-        lights::SELECT_TEXLD.1,
+        ps30::jobs::bundled::LIGHTS_TEXLD.listing().0,
+        ps30::jobs::bundled::LIGHTS_TEXLD.listing().1,
         &Setup {
             input: Input::GBuffer(64, 64),
             ..setup.clone()
@@ -165,15 +166,15 @@ fn profile_reports_costs_and_findings() {
             (FindingKind::DivergentGradient, 43)
         ]
     );
-    let text = profile::text(&r);
+    let text = ps30::present::profile::text(&r);
     assert!(text.contains("asm/lights/select_texld.psh:34:5"), "{text}");
     assert!(text.contains("4,096 of 4,096 pixels match bit for bit"));
-    let json = profile::to_json(&r);
+    let json = ps30::present::profile::to_json(&r);
     assert_eq!(json["problem"], true);
     assert_eq!(json["findings"][0]["kind"], "divergent_gradient");
     assert_eq!(json["per_quad"]["max"], r.costs.per_quad.max);
     // A shader that is not a light-model shader is refused for the scene.
-    let other = ps30::verify::CORRECTED_PASS2;
+    let other = ps30::jobs::bundled::CORRECTED_PASS2.listing();
     assert!(profile::profile(other.0, other.1, &setup).is_err());
 }
 
@@ -198,18 +199,18 @@ fn histograms_list_values_or_equal_bins() {
 fn the_luminance_pass_is_warned_about_its_level_of_detail() {
     // A 250×256 image in 125×128 blocks: a 2×2 target, one quad whose
     // neighbours sample 125 (x) and 128 (y) texels apart: λ = log2 128 = 7.
-    let img = ps30::image::HdrImage {
+    let img = ps30::core::image::HdrImage {
         width: 250,
         height: 256,
         pixels: vec![[0.5, 0.5, 0.5, 1.0]; 250 * 256],
     };
-    let (n1, t1) = ps30::verify::bundled("corrected:unrolled").unwrap();
-    let (n2, t2) = ps30::verify::bundled("corrected:pass2").unwrap();
-    let run = ps30::pipeline::run(
+    let (n1, t1) = ps30::jobs::bundled::listing("corrected:unrolled").unwrap();
+    let (n2, t2) = ps30::jobs::bundled::listing("corrected:pass2").unwrap();
+    let run = ps30::jobs::luminance::run(
         &img,
-        &ps30::pipeline::ShaderSource::new(n1, t1),
-        &ps30::pipeline::ShaderSource::new(n2, t2),
-        &ps30::pipeline::Settings::default(),
+        &ps30::jobs::luminance::ShaderSource::new(n1, t1),
+        &ps30::jobs::luminance::ShaderSource::new(n2, t2),
+        &ps30::jobs::luminance::Settings::default(),
     )
     .unwrap();
     assert!(run.all_agree());
@@ -221,7 +222,7 @@ fn the_luminance_pass_is_warned_about_its_level_of_detail() {
     assert!(f[0].message.contains("s0 has one level"));
     // Pass 2 reads one texel per pixel of a 1×1 draw: no gradient at all.
     assert!(run.pass2.findings.is_empty());
-    let text = ps30::pipeline::run_text("img", &run);
+    let text = ps30::present::luminance::run_text("img", &run);
     assert!(text
         .contains("warning: asm/corrected/lum_pass1_unrolled.psh:23:9: `texld` computes LOD 7.00"));
 }

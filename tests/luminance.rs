@@ -4,14 +4,14 @@
 //! ps30 says, and results do not depend on the thread count.
 //!
 //! Tolerances are the ones the pipeline derives per run (see the module docs
-//! of `ps30::pipeline`): f32 rounding of each term and of the running sum in
+//! of `ps30::jobs::luminance`): f32 rounding of each term and of the running sum in
 //! the shader's order, f16 storage when the target is f16, pass 2's rounding.
 //! reference.json's own values are f64 sums whose rounding (≤ 1e-9 relative,
 //! measured in tests/reference_values.rs) is far below those bounds.
 
-use ps30::image::{load, HdrImage, ImageLimits, TargetFormat};
-use ps30::pipeline::{run, LuminanceRun, Settings, ShaderSource};
-use ps30::verify::bundled;
+use ps30::core::image::{load, HdrImage, ImageLimits, TargetFormat};
+use ps30::jobs::luminance::{run, LuminanceRun, Settings, ShaderSource};
+use ps30::jobs::bundled::listing as bundled;
 use serde_json::Value;
 
 mod common;
@@ -53,7 +53,7 @@ fn corrected_shaders_agree_with_the_independent_reference_on_every_image() {
             assert!(
                 run.all_agree(),
                 "{name} {p1}: {}",
-                ps30::pipeline::run_text(name, &run)
+                ps30::present::luminance::run_text(name, &run)
             );
             // The pass-1 target against reference.json's independent block sums.
             let sums = &r["blocks"][key]["sums"];
@@ -183,7 +183,7 @@ fn f16_targets_overflow_on_large_blocks_and_work_on_small_ones() {
     assert!(
         small.all_agree(),
         "{}",
-        ps30::pipeline::run_text("courtyard", &small)
+        ps30::present::luminance::run_text("courtyard", &small)
     );
 }
 
@@ -204,7 +204,7 @@ fn results_are_identical_with_one_and_two_threads() {
             &s,
         )
         .unwrap();
-        outs.push(serde_json::to_string(&ps30::pipeline::run_json("forest.hdr", &r)).unwrap());
+        outs.push(serde_json::to_string(&ps30::present::luminance::run_json("forest.hdr", &r)).unwrap());
     }
     assert_eq!(outs[0], outs[1]);
 }
@@ -233,7 +233,7 @@ fn a_last_column_shader_that_reads_the_real_width_removes_the_padding_in_x() {
     // i1, which the pipeline sets to the real width there: 1280 − 10·125 = 30.
     let img = image("courtyard_1280x1024.exr");
     let s = Settings::default();
-    let run = ps30::pipeline::run_with_last_column(
+    let run = ps30::jobs::luminance::run_with_last_column(
         &img,
         &shader("corrected:unrolled"),
         &shader("corrected:loop"),
@@ -241,7 +241,7 @@ fn a_last_column_shader_that_reads_the_real_width_removes_the_padding_in_x() {
         &s,
     )
     .unwrap();
-    assert!(run.all_agree(), "{}", ps30::pipeline::run_text("c", &run));
+    assert!(run.all_agree(), "{}", ps30::present::luminance::run_text("c", &run));
     // 1024 = 8 · 128: no padding in y either, so none at all.
     assert_eq!(run.padded_samples, 0);
     assert_eq!(run.padding_factor, 1.0);
@@ -249,7 +249,7 @@ fn a_last_column_shader_that_reads_the_real_width_removes_the_padding_in_x() {
     // 30 texels of 9 cycles and 6 per line, 128 lines, 5 set-up, 1 output.
     assert_eq!(
         last.executed_static,
-        ps30::cost::Range::exact(6 + 128 * (6 + 30 * 9))
+        ps30::core::cost::Range::exact(6 + 128 * (6 + 30 * 9))
     );
     assert_eq!(last.executed_emulated, last.executed_static);
     // The last column's sums hold the real texels only: BORDER's sums minus

@@ -15,8 +15,8 @@
 //! several errors (all reported), and the ps_3_0 failure vectors of Wine's
 //! assembler tests (dlls/d3dcompiler_43/tests/asm.c), copied in as literals.
 
-use ps30::diag::{Diagnostic, SourceError};
-use ps30::front::{self, Options};
+use ps30::core::diag::{Diagnostic, SourceError};
+use ps30::core::load::{self, Options};
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::cell::Cell;
 use std::collections::BTreeMap;
@@ -75,7 +75,7 @@ const NAME: &str = "case.psh";
 /// Loads `src`, catching panics; `Err(text)` describes what went wrong when
 /// the source was not rejected cleanly.
 fn reject(src: &str, options: &Options) -> Result<SourceError, String> {
-    let result = std::panic::catch_unwind(|| front::load_str(NAME, src, options));
+    let result = std::panic::catch_unwind(|| load::load_str(NAME, src, options));
     match result {
         Err(_) => Err(format!("PANIC on {src:?}")),
         Ok(Ok(_)) => Err(format!("ACCEPTED {src:?}")),
@@ -208,7 +208,7 @@ fn undefined_repeat_count_tells_how_to_define_it() {
     // With the name bound, the same text loads.
     let mut options = Options::default();
     options.defines.insert("ysize".to_string(), 3);
-    let loaded = front::load_str(
+    let loaded = load::load_str(
         NAME,
         "ps_3_0\nBEGIN_REPEAT_BLOCK(ysize)\nmov r0, c0\nEND_REPEAT_BLOCK",
         &options,
@@ -284,7 +284,7 @@ fn the_expansion_cap_is_an_option() {
         max_expanded: 11,
         ..Options::default()
     };
-    assert!(front::load_str(NAME, src, &roomy).is_ok());
+    assert!(load::load_str(NAME, src, &roomy).is_ok());
 }
 
 #[test]
@@ -320,7 +320,7 @@ fn an_error_inside_a_repetition_names_the_repetition() {
 
     // A count of 0 drops the body: nothing inside is checked or reported.
     let src = "ps_3_0\nBEGIN_REPEAT_BLOCK(0)\nmov r0, v0\nEND_REPEAT_BLOCK\nmov oC0, r0\n";
-    assert!(front::load_str(NAME, src, &Options::default()).is_ok());
+    assert!(load::load_str(NAME, src, &Options::default()).is_ok());
 }
 
 // ---------------------------------------------------------------------------
@@ -488,7 +488,7 @@ fn truncated_and_mangled_cases_never_panic() {
     }
     let mut panics = Vec::new();
     for src in sources.keys() {
-        let r = std::panic::catch_unwind(|| front::load_str(NAME, src, &Options::default()));
+        let r = std::panic::catch_unwind(|| load::load_str(NAME, src, &Options::default()));
         match r {
             Err(_) => panics.push(src.clone()),
             Ok(Err(e)) => {

@@ -3,11 +3,11 @@
 //! public API (front end → validator → emulator), against values worked out
 //! by hand in the comments.
 
-use ps30::emu::{
+use ps30::core::emu::{
     self, Address, Compiled, Draw, DrawOutput, Filter, LinearInput, MipChain, MipFilter,
     SamplerState, Texture,
 };
-use ps30::front::{load_str, Loaded, Options};
+use ps30::core::load::{load_str, Loaded, Options};
 
 fn load(body: &str) -> Loaded {
     let src = format!("ps_3_0\n{body}\n");
@@ -432,7 +432,7 @@ mov oC0, r1",
             (2, 0, 2, 0, true), // dsx r3 after endif
         ]
     );
-    assert_eq!(out.gradients[1].op, ps30::isa::Opcode::TexLd);
+    assert_eq!(out.gradients[1].op, ps30::core::isa::Opcode::TexLd);
     assert_eq!(l.file.line_of(out.gradients[1].span.start), 10);
     // Inside the branch the inactive neighbour still holds r0 = v0 (written
     // before the if): dsx = 1 at the pixels that ran it; 1 + 1 there.

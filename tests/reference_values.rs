@@ -1,4 +1,4 @@
-//! Checks `ps30::image::load` and `ps30::reference` against independently
+//! Checks `ps30::core::image::load` and `ps30::jobs::luminance::reference` against independently
 //! computed values (`assets/hdr/reference.json`: official OpenEXR library,
 //! OpenCV, a plain PFM reader, numpy in f64) for every image in
 //! `assets/hdr/`.
@@ -50,8 +50,8 @@
 //! Run with `--nocapture` to see them.
 
 mod common;
-use ps30::image::{load, HdrImage, ImageLimits};
-use ps30::reference::{block_sums, log_average, Policy, F64_UNIT_ROUNDOFF as U};
+use ps30::core::image::{load, HdrImage, ImageLimits};
+use ps30::jobs::luminance::reference::{block_sums, log_average, Policy, F64_UNIT_ROUNDOFF as U};
 use serde::Deserialize;
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::PathBuf;

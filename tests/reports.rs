@@ -26,8 +26,8 @@ fn files(dir: &Path) -> BTreeMap<String, Vec<u8>> {
 fn two_runs_write_the_same_bytes() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let (a, b) = (tempfile::tempdir().unwrap(), tempfile::tempdir().unwrap());
-    let ga = ps30::report_dir::generate(a.path(), root, Some(1), &|_, _, _| {}).unwrap();
-    let gb = ps30::report_dir::generate(b.path(), root, None, &|_, _, _| {}).unwrap();
+    let ga = ps30::present::report::generate(a.path(), root, Some(1), &|_, _, _| {}).unwrap();
+    let gb = ps30::present::report::generate(b.path(), root, None, &|_, _, _| {}).unwrap();
     assert!(ga.all_agree() && gb.all_agree());
     assert_eq!(ga.files, gb.files);
     let (fa, fb) = (files(a.path()), files(b.path()));
@@ -59,6 +59,6 @@ fn two_runs_write_the_same_bytes() {
     let total: usize = fa.values().map(Vec::len).sum();
     assert!(total < 4 << 20, "{total} bytes");
     for row in &ga.tonemap {
-        assert!(row.preview_size.0 <= ps30::report_dir::PREVIEW_WIDTH);
+        assert!(row.preview_size.0 <= ps30::present::report::PREVIEW_WIDTH);
     }
 }

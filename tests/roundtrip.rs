@@ -1,4 +1,4 @@
-//! The writer and the front end agree: load → `writer::write_program` →
+//! The writer and the front end agree: load → `print::write_program` →
 //! load gives the same program.
 //!
 //! Why: the writer is how ps30 hands expanded or generated shaders to other
@@ -14,13 +14,13 @@
 //! with the writer and checks the front end reads back exactly that IR.
 
 use proptest::prelude::*;
-use ps30::front::{self, Options};
-use ps30::ir::{
+use ps30::core::load::{self, Options};
+use ps30::core::ir::{
     BoolDef, Dst, FloatDef, InputDecl, Instruction, IntDef, Origin, Predicate, Program, Reg,
     SamplerDecl, Src, SrcMod, Swizzle, WriteMask,
 };
-use ps30::isa::{Class, Compare, Opcode, Operand, RegFile, SamplerType, TABLE, USAGES};
-use ps30::writer;
+use ps30::core::isa::{Class, Compare, Opcode, Operand, RegFile, SamplerType, TABLE, USAGES};
+use ps30::core::front::print;
 
 // ---------------------------------------------------------------------------
 // Comparison.
@@ -71,7 +71,7 @@ fn assert_same(name: &str, a: &Program, b: &Program) {
 }
 
 fn load(name: &str, text: &str, options: &Options) -> Program {
-    match front::load_str(name, text, options) {
+    match load::load_str(name, text, options) {
         Ok(l) => l.shader.program().clone(),
         Err(e) => panic!("{name} does not load:\n{}", e.diagnostics.render(&e.file)),
     }
@@ -80,8 +80,8 @@ fn load(name: &str, text: &str, options: &Options) -> Program {
 /// load → write → load → compare; and writing is stable.
 fn round_trip(name: &str, text: &str, options: &Options) -> Program {
     let first = load(name, text, options);
-    let printed = writer::write_program(&first);
-    let second = match front::load_str(name, &printed, &Options::default()) {
+    let printed = print::write_program(&first);
+    let second = match load::load_str(name, &printed, &Options::default()) {
         Ok(l) => l.shader.program().clone(),
         Err(e) => panic!(
             "{name}: the writer's output does not load:\n{}\n{printed}",
@@ -90,7 +90,7 @@ fn round_trip(name: &str, text: &str, options: &Options) -> Program {
     };
     assert_same(name, &first, &second);
     assert_eq!(
-        writer::write_program(&second),
+        print::write_program(&second),
         printed,
         "{name}: printing is not stable"
     );
@@ -158,7 +158,7 @@ fn expanded_repetitions_print_without_macros() {
         include_str!("../asm/article/lum_pass2.psh"),
         &article_options(),
     );
-    let printed = writer::write_program(&p);
+    let printed = print::write_program(&p);
     assert!(
         !printed.to_ascii_uppercase().contains("REPEAT"),
         "{printed}"
@@ -568,7 +568,7 @@ fn source_strategy(
 /// except those with per-instruction operand rules (fixed masks, no
 /// aliasing: crs, m#x#, nrm, pow, sincos), which the hand-written shaders
 /// above round-trip instead.
-fn straight_line_rows() -> Vec<&'static ps30::isa::OpInfo> {
+fn straight_line_rows() -> Vec<&'static ps30::core::isa::OpInfo> {
     TABLE
         .iter()
         .filter(|r| matches!(r.class, Class::Arithmetic | Class::Texture))
@@ -913,8 +913,8 @@ proptest! {
 
     #[test]
     fn random_straight_line_programs_round_trip(program in program_strategy()) {
-        let printed = writer::write_program(&program);
-        let loaded = match front::load_str("random.psh", &printed, &Options::default()) {
+        let printed = print::write_program(&program);
+        let loaded = match load::load_str("random.psh", &printed, &Options::default()) {
             Ok(l) => l.shader.program().clone(),
             Err(e) => {
                 return Err(TestCaseError::fail(format!(
@@ -934,6 +934,6 @@ proptest! {
         prop_assert_eq!(&want.bool_defs, &got.bool_defs);
         prop_assert_eq!(&want.inputs, &got.inputs);
         prop_assert_eq!(&want.samplers, &got.samplers);
-        prop_assert_eq!(writer::write_program(&loaded), printed);
+        prop_assert_eq!(print::write_program(&loaded), printed);
     }
 }

@@ -9,13 +9,13 @@
 mod common;
 
 use common::{asset, IMAGES};
-use ps30::image::{HdrImage, ImageLimits};
-use ps30::pipeline::ShaderSource;
-use ps30::tonemap::{self, Settings, WhiteSource};
+use ps30::core::image::{HdrImage, ImageLimits};
+use ps30::jobs::luminance::ShaderSource;
+use ps30::jobs::tonemap::{self, Settings, WhiteSource};
 use std::process::Output;
 
 fn load(name: &str) -> HdrImage {
-    ps30::image::load(&asset(name), &ImageLimits::default()).unwrap()
+    ps30::core::image::load(&asset(name), &ImageLimits::default()).unwrap()
 }
 
 fn run(image: &HdrImage, settings: &Settings) -> tonemap::ToneMapped {
@@ -30,7 +30,7 @@ fn the_shader_agrees_with_the_reference_on_every_shared_image() {
         let c = &t.check;
         assert!(t.luminance.all_agree(), "{name}: L̄w disagrees");
         assert!(t.cost.counts_agree && t.cost.within_limits, "{name}");
-        assert_eq!(t.cost.executed_emulated, ps30::cost::Range::exact(17));
+        assert_eq!(t.cost.executed_emulated, ps30::core::cost::Range::exact(17));
         assert_eq!(c.outside_bound, 0, "{name}: {:?}", c.first_outside);
         assert_eq!(c.unexplained_8bit, 0, "{name}");
         assert_eq!(c.checked_pixels, img.pixels.len() as u64, "{name}");
@@ -59,7 +59,7 @@ fn negative_luminance_pixels_of_the_shared_images_are_black() {
     let t = run(&img, &Settings::default());
     let mut negative = 0;
     for (p, o) in img.pixels.iter().zip(&t.linear) {
-        if ps30::reference::luminance(*p) < 0.0 {
+        if ps30::core::image::luminance(*p) < 0.0 {
             negative += 1;
             assert_eq!(&o[..3], &[0.0, 0.0, 0.0], "{p:?}");
         }
@@ -109,7 +109,7 @@ fn black_and_negative_pixels_are_exactly_black() {
 fn without_the_cmp_negative_pixels_light_up_and_the_check_fails() {
     // The shader's explicit Lw ≤ 0 rule is needed: drop it and courtyard's
     // negative pixels show colour, which the reference (black) refuses.
-    let (name, text) = tonemap::SHADER;
+    let (name, text) = ps30::jobs::bundled::TONEMAP_REINHARD.listing();
     let without = text.replace("cmp r2.z, -r2.x, c0.z, r2.z", "mov r2.z, r2.z");
     assert_ne!(without, text);
     let settings = Settings {
@@ -145,7 +145,7 @@ fn the_white_point_maps_to_white() {
     // Given: the grey pixel whose luminance is W is white (to within the
     // bound, and in 8 bits exactly), brighter ones are exactly 1 and
     // darker ones are below 1 (the ramp's steps are 20 % apart).
-    let white = ps30::reference::luminance(img.pixels[40]);
+    let white = ps30::core::image::luminance(img.pixels[40]);
     let t = run(
         &img,
         &Settings {
@@ -173,7 +173,7 @@ fn the_white_point_maps_to_white() {
     );
     assert!(t.all_agree());
     assert_eq!(t.operator.c0y(), 0.0);
-    let brightest = ps30::tonemap::reference_pixel(&t.operator, img.pixels[63]);
+    let brightest = ps30::jobs::tonemap::reference_pixel(&t.operator, img.pixels[63]);
     assert!(brightest[0] < 1.0 && brightest[0] > 0.9, "{brightest:?}");
 }
 
@@ -322,11 +322,11 @@ fn tonemap_unwritable_output_exits_2_without_a_partial_file() {
 fn tonemap_exits_1_when_a_shader_disagrees_with_the_reference() {
     let dir = tempfile::tempdir().unwrap();
     // Forget the final scale by a / L̄w: every lit pixel is wrong.
-    let wrong = tonemap::SHADER.1.replace(
+    let wrong = ps30::jobs::bundled::TONEMAP_REINHARD.listing().1.replace(
         "mul r2.z, r2.z, r0.y        // Ld / Lw = k · Ld / L",
         "mov r2.z, r2.z",
     );
-    assert_ne!(wrong, tonemap::SHADER.1);
+    assert_ne!(wrong, ps30::jobs::bundled::TONEMAP_REINHARD.listing().1);
     std::fs::write(dir.path().join("wrong.psh"), wrong).unwrap();
     let out = dir.path().join("wrong.png");
     let o = ps30(

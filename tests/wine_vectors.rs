@@ -18,9 +18,9 @@
 //!
 //! The texts and tokens are copied in as literals.
 
-use ps30::front::{self, Options};
-use ps30::ir::{Dst, Instruction, Program, Src, SrcMod, Swizzle};
-use ps30::isa::{Compare, Opcode, RegFile, SamplerType};
+use ps30::core::load::{self, Options};
+use ps30::core::ir::{Dst, Instruction, Program, Src, SrcMod, Swizzle};
+use ps30::core::isa::{Compare, Opcode, RegFile, SamplerType};
 
 type Vector = (&'static str, &'static str, &'static [u32]);
 
@@ -291,7 +291,7 @@ fn encode_instruction(ins: &Instruction) -> Vec<u32> {
 
 /// D3DDECLUSAGE values, in order (d3d9types.h): the instruction table's
 /// usage list is in that order.
-const USAGE_CODES: &[&str] = ps30::isa::USAGES;
+const USAGE_CODES: &[&str] = ps30::core::isa::USAGES;
 
 fn encode_declarations(p: &Program) -> Vec<u32> {
     let mut out = Vec::new();
@@ -375,7 +375,7 @@ fn hex(tokens: &[u32]) -> String {
 }
 
 fn load(name: &str, text: &str) -> Program {
-    match front::load_str(name, text, &Options::default()) {
+    match load::load_str(name, text, &Options::default()) {
         Ok(l) => l.shader.program().clone(),
         Err(e) => panic!("{name} must load:\n{}", e.diagnostics.render(&e.file)),
     }
@@ -387,7 +387,7 @@ fn load(name: &str, text: &str) -> Program {
 
 #[test]
 fn encoder_reproduces_the_documented_register_encodings() {
-    use ps30::ir::Reg;
+    use ps30::core::ir::Reg;
     let src = |file, index| source(&Src::plain(Reg { file, index }))[0];
     assert_eq!(src(RegFile::Temp, 0), 0x80e40000);
     assert_eq!(src(RegFile::Const, 0), 0xa0e40000);
@@ -438,7 +438,7 @@ fn invalid_ps_3_0_vectors_are_rejected_for_their_reason() {
     let mut problems = Vec::new();
     for r in PS30_INVALID {
         let (name, text, tokens) = r.vector;
-        match front::load_str(name, text, &Options::default()) {
+        match load::load_str(name, text, &Options::default()) {
             Ok(_) => problems.push(format!("{name} accepted; expected: {}", r.reason)),
             Err(e) => {
                 let first = e.diagnostics.errors().next().expect("an error");
@@ -470,7 +470,7 @@ fn invalid_ps_3_0_vectors_are_rejected_for_their_reason() {
 fn vface_is_accepted_where_it_may_be_used() {
     // The vector's `mov r0, vFace` is refused even with the declaration:
     // vFace may only be compared.
-    let e = front::load_str(
+    let e = load::load_str(
         "v.psh",
         "ps_3_0\ndcl vFace\nmov r0, vFace\n",
         &Options::default(),
@@ -490,7 +490,7 @@ fn vface_is_accepted_where_it_may_be_used() {
 fn older_vectors_are_rejected_for_their_version_and_their_bodies_are_ps_3_0() {
     let mut problems = Vec::new();
     for &((name, text, tokens), not_ps30) in OLDER {
-        match front::load_str(name, text, &Options::default()) {
+        match load::load_str(name, text, &Options::default()) {
             Ok(_) => problems.push(format!("{name}: accepted with its own version line")),
             Err(e) => {
                 let first = e.diagnostics.errors().next().expect("an error");
@@ -506,7 +506,7 @@ fn older_vectors_are_rejected_for_their_version_and_their_bodies_are_ps_3_0() {
         let body = text.split_once('\n').expect("a version line").1;
         let as_ps30 = format!("ps_3_0\n{body}");
         match (
-            front::load_str(name, &as_ps30, &Options::default()),
+            load::load_str(name, &as_ps30, &Options::default()),
             not_ps30,
         ) {
             (Ok(l), None) => {

@@ -5,8 +5,8 @@
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
-use ps30::cost::{analyse, Environment, Profile};
-use ps30::front::{load_str, Options};
+use ps30::core::cost::{analyse, Environment, Profile};
+use ps30::core::load::{load_str, Options};
 
 fuzz_target!(|data: &[u8]| {
     let Ok(text) = std::str::from_utf8(data) else {
@@ -29,7 +29,7 @@ fuzz_target!(|data: &[u8]| {
         assert!(a.executed.min <= a.executed.max);
     }
     // What the writer prints must load back to the same instructions.
-    let printed = ps30::writer::write_program(loaded.shader.program());
+    let printed = ps30::core::front::print::write_program(loaded.shader.program());
     let again =
         load_str("printed.psh", &printed, &Options::default()).expect("writer output loads");
     assert_eq!(

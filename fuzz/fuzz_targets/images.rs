@@ -4,7 +4,7 @@
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
-use ps30::image::{load, ImageLimits};
+use ps30::core::image::{load, ImageLimits};
 use std::io::Write;
 
 fuzz_target!(|data: &[u8]| {

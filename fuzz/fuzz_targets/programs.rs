@@ -5,9 +5,9 @@
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
-use ps30::cost::{analyse, Environment, Profile};
-use ps30::emu::{self, Draw, LinearInput, SamplerState, Texture};
-use ps30::front::{load_str, Options};
+use ps30::core::cost::{analyse, Environment, Profile};
+use ps30::core::emu::{self, Draw, LinearInput, SamplerState, Texture};
+use ps30::core::load::{load_str, Options};
 
 #[path = "../../tests/common/program_gen.rs"]
 mod program_gen;
@@ -29,14 +29,14 @@ fuzz_target!(|data: &[u8]| {
     let compiled = emu::compile(&loaded.shader).expect("valid programs compile");
     let mut draw = Draw::new(2, 2);
     for d in &loaded.shader.program().inputs {
-        if d.reg.file == ps30::isa::RegFile::Input {
+        if d.reg.file == ps30::core::isa::RegFile::Input {
             draw.inputs
                 .push((d.reg.index, LinearInput::constant([0.25, 0.5, 0.75, 1.0])));
         }
     }
     let texels = [[0.5f32; 4]; 4];
     for s in &loaded.shader.program().samplers {
-        if s.ty == ps30::isa::SamplerType::Tex2d {
+        if s.ty == ps30::core::isa::SamplerType::Tex2d {
             draw.samplers.push((
                 s.index,
                 Texture {

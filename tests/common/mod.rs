@@ -6,7 +6,7 @@ use std::path::PathBuf;
 /// against the folder and reference.json): the library's own list.
 // Not every test crate that includes this module reads the list.
 #[allow(unused_imports)]
-pub use ps30::report_dir::IMAGES;
+pub use ps30::present::report::IMAGES;
 
 /// Path of a bundled image or of `reference.json`.
 pub fn asset(name: &str) -> PathBuf {

@@ -1,0 +1,377 @@
+//! Command-line values and the argument groups several subcommands share.
+//!
+//! Parsers for values (`WxH`, `cN=x,y,z,w`, `iN=…`, `bN=…`, `NAME=N`, δ, the
+//! tone-mapping key and white point) and the flag groups (`-D`, constants,
+//! limits, emulator bounds, sampler state) live here once, so that a value
+//! means the same thing and fails with the same message wherever it is
+//! given. Only the command line uses clap; the library sees plain values.
+
+use clap::Args;
+use ps30::core::cost::Profile;
+use ps30::core::emu::{self, Address, Constants, Filter, MipFilter};
+use ps30::core::image::TargetFormat;
+use ps30::core::load::Options;
+
+/// `WxH` with both sides 1..=65536.
+pub fn parse_size(s: &str) -> Result<(u32, u32), String> {
+    let (w, h) = s.split_once(['x', 'X']).ok_or("expected WxH, e.g. 64x64")?;
+    let parse = |v: &str| {
+        v.trim()
+            .parse::<u32>()
+            .ok()
+            .filter(|&n| (1..=1 << 16).contains(&n))
+    };
+    match (parse(w), parse(h)) {
+        (Some(w), Some(h)) => Ok((w, h)),
+        _ => Err(format!(
+            "`{s}`: both sides must be integers from 1 to 65536"
+        )),
+    }
+}
+
+pub fn parse_finite(s: &str) -> Result<f32, String> {
+    s.trim()
+        .parse::<f32>()
+        .ok()
+        .filter(|x| x.is_finite())
+        .ok_or_else(|| format!("`{s}` is not a finite number"))
+}
+
+/// One to four finite numbers separated by commas.
+pub fn parse_float4(s: &str) -> Result<[f32; 4], String> {
+    let parts: Vec<&str> = s.split(',').collect();
+    if parts.is_empty() || parts.len() > 4 {
+        return Err("expected one to four numbers separated by commas".into());
+    }
+    let mut v = [0f32; 4];
+    for (slot, p) in v.iter_mut().zip(&parts) {
+        *slot = parse_finite(p)?;
+    }
+    Ok(v)
+}
+
+pub fn parse_register(s: &str, prefix: char, count: u32) -> Result<u32, String> {
+    let n = s
+        .strip_prefix(prefix)
+        .and_then(|d| d.parse::<u32>().ok())
+        .ok_or_else(|| format!("expected {prefix}0 … {prefix}{}", count - 1))?;
+    if n >= count {
+        return Err(format!(
+            "{prefix}{n} does not exist ({prefix}0 … {prefix}{})",
+            count - 1
+        ));
+    }
+    Ok(n)
+}
+
+/// `cN=X[,Y,Z,W]`.
+pub fn parse_float_const(s: &str) -> Result<(u32, [f32; 4]), String> {
+    let (reg, value) = s
+        .split_once('=')
+        .ok_or("expected cN=X[,Y,Z,W], e.g. c3=0.27,0.67,0.06,0.01")?;
+    Ok((parse_register(reg.trim(), 'c', 224)?, parse_float4(value)?))
+}
+
+/// `iN=X[,Y,Z,W]`.
+pub fn parse_int_const(s: &str) -> Result<(u32, [i32; 4]), String> {
+    let (reg, value) = s
+        .split_once('=')
+        .ok_or("expected iN=X[,Y,Z,W], e.g. i1=128")?;
+    let reg = parse_register(reg.trim(), 'i', 16)?;
+    let parts: Vec<&str> = value.split(',').collect();
+    if parts.is_empty() || parts.len() > 4 {
+        return Err("expected one to four integers".into());
+    }
+    let mut v = [0i32; 4];
+    for (slot, p) in v.iter_mut().zip(&parts) {
+        *slot = p
+            .trim()
+            .parse::<i32>()
+            .map_err(|_| format!("`{p}` is not an integer"))?;
+    }
+    Ok((reg, v))
+}
+
+/// `bN=true|false`.
+pub fn parse_bool_const(s: &str) -> Result<(u32, bool), String> {
+    let (reg, value) = s.split_once('=').ok_or("expected bN=true|false")?;
+    let reg = parse_register(reg.trim(), 'b', 16)?;
+    let v = match value.trim() {
+        "true" | "1" => true,
+        "false" | "0" => false,
+        other => return Err(format!("`{other}` is not true or false")),
+    };
+    Ok((reg, v))
+}
+
+/// `NAME=N`.
+pub fn parse_define(s: &str) -> Result<(String, u64), String> {
+    let (name, value) = s.split_once('=').ok_or("expected NAME=N, e.g. xsize=11")?;
+    let valid = name.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_')
+        && name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_');
+    if !valid {
+        return Err(format!("`{name}` is not a valid name"));
+    }
+    let v = value
+        .trim()
+        .parse::<u64>()
+        .map_err(|_| format!("`{value}` is not a non-negative integer"))?;
+    Ok((name.to_string(), v))
+}
+
+/// δ of `log(δ + L)`: positive and finite.
+pub fn parse_delta(s: &str) -> Result<f32, String> {
+    let v: f32 = s.parse().map_err(|_| format!("`{s}` is not a number"))?;
+    if v.is_finite() && v > 0.0 {
+        Ok(v)
+    } else {
+        Err(format!("δ must be a positive finite number, not {s}"))
+    }
+}
+
+/// The tone-mapping key a.
+pub fn parse_key(s: &str) -> Result<f64, String> {
+    let v: f64 = s
+        .trim()
+        .parse()
+        .map_err(|_| format!("`{s}` is not a number"))?;
+    ps30::jobs::tonemap::check_values(v, None)
+        .map(|_| v)
+        .map_err(|e| e.to_string())
+}
+
+/// The tone-mapping white point: a positive luminance or `inf`.
+pub fn parse_white(s: &str) -> Result<f64, String> {
+    let v: f64 = s
+        .trim()
+        .parse()
+        .map_err(|_| format!("`{s}` is not a number"))?;
+    if v > 0.0 {
+        Ok(v)
+    } else {
+        Err(format!(
+            "the white point must be a positive luminance or inf, not {s}"
+        ))
+    }
+}
+
+/// `-D` and the expansion cap: how the front end reads a source.
+#[derive(Args)]
+pub struct SourceArgs {
+    /// Bind a REPEAT_BLOCK count name, e.g. -D xsize=11.
+    #[arg(short = 'D', value_name = "NAME=N", value_parser = parse_define)]
+    pub define: Vec<(String, u64)>,
+    /// Cap on the statements REPEAT_BLOCK expansion may produce.
+    #[arg(long, value_name = "N", default_value_t = ps30::core::front::repeat::DEFAULT_MAX_EXPANDED)]
+    pub max_expanded: u64,
+}
+
+impl SourceArgs {
+    /// The front end's options.
+    pub fn options(&self) -> Options {
+        Options {
+            defines: self.define.iter().cloned().collect(),
+            max_expanded: self.max_expanded,
+        }
+    }
+}
+
+/// Integer and boolean constants set by the application.
+#[derive(Args)]
+pub struct ConstantArgs {
+    /// Integer constant set by the application, e.g. --int i1=128 or --int i0=16,0,1,0.
+    #[arg(long = "int", value_name = "iN=X[,Y,Z,W]", value_parser = parse_int_const)]
+    pub ints: Vec<(u32, [i32; 4])>,
+    /// Boolean constant set by the application, e.g. --bool b0=true.
+    #[arg(long = "bool", value_name = "bN=true|false", value_parser = parse_bool_const)]
+    pub bools: Vec<(u32, bool)>,
+}
+
+/// The register files of a draw from `--const`, `--int` and `--bool` values
+/// (registers nobody set stay 0, as in a draw).
+pub fn constants(
+    floats: &[(u32, [f32; 4])],
+    ints: &[(u32, [i32; 4])],
+    bools: &[(u32, bool)],
+) -> Constants {
+    fn set<T: Copy>(file: &mut Vec<T>, zero: T, i: u32, v: T) {
+        let i = i as usize;
+        file.resize(file.len().max(i + 1), zero);
+        file[i] = v;
+    }
+    let mut c = Constants::default();
+    for &(i, v) in floats {
+        set(&mut c.float, [0.0; 4], i, v);
+    }
+    for &(i, v) in ints {
+        set(&mut c.int, [0; 4], i, v);
+    }
+    for &(i, v) in bools {
+        set(&mut c.bool, false, i, v);
+    }
+    c
+}
+
+/// `ps30 check`'s limits.
+#[derive(Args)]
+pub struct LimitArgs {
+    /// Instruction-slot limit (ps_3_0 guarantees 512).
+    #[arg(long, value_name = "N", default_value_t = 512, value_parser = clap::value_parser!(u64).range(1..))]
+    pub max_slots: u64,
+    /// Executed-instruction limit (65,535 in the article; Microsoft: at least 2^16).
+    #[arg(long, value_name = "N", default_value_t = 65_535, value_parser = clap::value_parser!(u64).range(1..))]
+    pub max_executed: u64,
+}
+
+/// The limits of a ps_3_0 part, for `unroll` and `plan`.
+#[derive(Args)]
+pub struct ProfileArgs {
+    /// Instruction slots (ps_3_0 guarantees 512; parts may have up to 32,768).
+    #[arg(long, value_name = "N", default_value_t = 512, value_parser = clap::value_parser!(u64).range(1..=32_768))]
+    pub max_slots: u64,
+    /// Executed instructions per pixel (65,535 in the article).
+    #[arg(long, value_name = "N", default_value_t = 65_535, value_parser = clap::value_parser!(u64).range(1..=4_294_967_295))]
+    pub max_executed: u64,
+    /// Largest rep count (ps_3_0 allows 0 to 255).
+    #[arg(long, value_name = "N", default_value_t = 255, value_parser = clap::value_parser!(u32).range(1..=255))]
+    pub max_rep_count: u32,
+    /// Deepest rep/loop nesting (ps_3_0 allows 4).
+    #[arg(long, value_name = "N", default_value_t = 4, value_parser = clap::value_parser!(u32).range(1..=4))]
+    pub max_nesting: u32,
+}
+
+impl ProfileArgs {
+    /// The profile these flags describe (named "custom" unless it is ps_3_0's).
+    pub fn profile(&self) -> Profile {
+        let base = Profile::ps_3_0();
+        let p = Profile {
+            max_slots: self.max_slots,
+            max_executed: self.max_executed,
+            max_rep_count: self.max_rep_count,
+            max_loop_nesting: self.max_nesting,
+            ..base.clone()
+        };
+        if p == base {
+            p
+        } else {
+            Profile {
+                name: "custom".into(),
+                ..p
+            }
+        }
+    }
+}
+
+/// Options of every command that loads an image and runs the emulator.
+#[derive(Args)]
+pub struct ExecArgs {
+    /// Emulator threads (default: all cores).
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=256))]
+    pub threads: Option<u32>,
+    /// Refuse images with more pixels than this.
+    #[arg(long, default_value_t = 1 << 26, value_parser = clap::value_parser!(u64).range(1..))]
+    pub max_pixels: u64,
+    /// Stop a pixel that executes more instruction slots than this.
+    #[arg(long, default_value_t = 10_000_000, value_parser = clap::value_parser!(u64).range(1..))]
+    pub max_executed_per_pixel: u64,
+    /// Refuse render targets with more pixels than this.
+    #[arg(long, default_value_t = 1 << 24, value_parser = clap::value_parser!(u64).range(1..))]
+    pub max_target_pixels: u64,
+    /// Print JSON instead of text.
+    #[arg(long)]
+    pub json: bool,
+}
+
+impl ExecArgs {
+    /// The emulator's bounds.
+    pub fn limits(&self) -> emu::EmuLimits {
+        emu::EmuLimits {
+            max_executed_per_pixel: self.max_executed_per_pixel,
+            max_target_pixels: self.max_target_pixels,
+        }
+    }
+
+    /// The image loader's bounds.
+    pub fn image_limits(&self) -> ps30::core::image::ImageLimits {
+        ps30::core::image::ImageLimits {
+            max_pixels: self.max_pixels,
+        }
+    }
+
+    /// Emulator threads, `None` for all cores.
+    pub fn threads(&self) -> Option<usize> {
+        self.threads.map(|t| t as usize)
+    }
+}
+
+/// Render-target formats.
+#[derive(Clone, Copy, clap::ValueEnum)]
+pub enum FormatArg {
+    F32,
+    F16,
+}
+
+impl From<FormatArg> for TargetFormat {
+    fn from(f: FormatArg) -> Self {
+        match f {
+            FormatArg::F32 => TargetFormat::R32F,
+            FormatArg::F16 => TargetFormat::Rgba16F,
+        }
+    }
+}
+
+/// MAGFILTER / MINFILTER.
+#[derive(Clone, Copy, Debug, clap::ValueEnum)]
+pub enum FilterArg {
+    Point,
+    Linear,
+}
+
+impl From<FilterArg> for Filter {
+    fn from(f: FilterArg) -> Self {
+        match f {
+            FilterArg::Point => Filter::Point,
+            FilterArg::Linear => Filter::Linear,
+        }
+    }
+}
+
+/// MIPFILTER.
+#[derive(Clone, Copy, Debug, clap::ValueEnum)]
+pub enum MipFilterArg {
+    None,
+    Point,
+    Linear,
+}
+
+impl From<MipFilterArg> for MipFilter {
+    fn from(f: MipFilterArg) -> Self {
+        match f {
+            MipFilterArg::None => MipFilter::None,
+            MipFilterArg::Point => MipFilter::Point,
+            MipFilterArg::Linear => MipFilter::Linear,
+        }
+    }
+}
+
+/// ADDRESSU / ADDRESSV.
+#[derive(Clone, Copy, Debug, clap::ValueEnum)]
+pub enum AddressArg {
+    Border,
+    Clamp,
+    Wrap,
+    Mirror,
+    Mirroronce,
+}
+
+impl From<AddressArg> for Address {
+    fn from(a: AddressArg) -> Self {
+        match a {
+            AddressArg::Border => Address::Border,
+            AddressArg::Clamp => Address::Clamp,
+            AddressArg::Wrap => Address::Wrap,
+            AddressArg::Mirror => Address::Mirror,
+            AddressArg::Mirroronce => Address::MirrorOnce,
+        }
+    }
+}

@@ -1,0 +1,110 @@
+//! What every subcommand does at its edges: reading a shader (a file or a
+//! bundled name), printing to stdout (a closed pipe is success), emitting
+//! diagnostics, and refusing an output path before any work.
+
+use super::ui::Ui;
+use super::BadInput;
+use ps30::core::diag::SourceFile;
+use ps30::core::load::{self, Loaded, Options};
+use ps30::jobs::luminance::ShaderSource;
+use std::io::{IsTerminal, Write};
+use std::path::Path;
+
+/// Whether diagnostics on stderr take colour: a terminal, and `NO_COLOR`
+/// unset or empty (no-color.org).
+pub fn color_stderr() -> bool {
+    std::env::var_os("NO_COLOR").is_none_or(|v| v.is_empty()) && std::io::stderr().is_terminal()
+}
+
+/// Writes to stdout. A reader that went away (`ps30 … | head`) is not an
+/// error: there is nobody left to tell anything, so the command ends with
+/// success, as a Unix filter does (every file it writes was written
+/// atomically before it printed).
+pub fn print(out: &str) -> std::io::Result<()> {
+    let mut stdout = std::io::stdout().lock();
+    match stdout
+        .write_all(out.as_bytes())
+        .and_then(|()| stdout.flush())
+    {
+        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => std::process::exit(0),
+        other => other,
+    }
+}
+
+/// Prints human-readable text, its status words coloured when stdout
+/// takes colour (JSON and assembly go through [`print`] untouched).
+pub fn say(ui: &Ui, out: &str) -> std::io::Result<()> {
+    print(&ui.highlight(out))
+}
+
+/// Prints a value as pretty JSON and a newline.
+pub fn print_json(v: &impl serde::Serialize) -> Result<(), BadInput> {
+    print(&(serde_json::to_string_pretty(v)? + "\n"))?;
+    Ok(())
+}
+
+/// A file's text; not UTF-8 is bad input, with the offset of the first bad byte.
+pub fn read_text(path: &Path) -> Result<String, BadInput> {
+    let bytes = std::fs::read(path).map_err(|e| BadInput(format!("{}: {e}", path.display())))?;
+    String::from_utf8(bytes).map_err(|e| {
+        BadInput(format!(
+            "{}: not UTF-8 text (invalid byte at offset {})",
+            path.display(),
+            e.utf8_error().valid_up_to()
+        ))
+    })
+}
+
+/// A shader by bundled name or file path.
+pub fn shader_source(spec: &str) -> Result<ShaderSource, BadInput> {
+    if let Some((name, text)) = ps30::jobs::bundled::listing(spec) {
+        return Ok(ShaderSource::new(name, text));
+    }
+    let text = read_text(Path::new(spec))?;
+    Ok(ShaderSource::new(spec, text))
+}
+
+/// Loads a shader file: warnings to stderr; on errors every diagnostic to
+/// stderr and a one-line summary as the error.
+pub fn load_file(path: &Path, options: &Options) -> Result<Loaded, BadInput> {
+    let text = read_text(path)?;
+    let file = SourceFile::new(path.display().to_string(), text);
+    match load::load(file, options) {
+        Ok(l) => {
+            for w in &l.warnings.items {
+                w.emit(&l.file, color_stderr());
+            }
+            Ok(l)
+        }
+        Err(e) => {
+            for d in &e.diagnostics.items {
+                d.emit(&e.file, color_stderr());
+            }
+            let n = e.diagnostics.errors().count();
+            Err(BadInput(format!(
+                "{}: {n} error{}",
+                e.file.name,
+                if n == 1 { "" } else { "s" }
+            )))
+        }
+    }
+}
+
+/// Refuses an output path whose directory does not exist, before any work.
+pub fn check_output_path(path: &Path) -> Result<(), BadInput> {
+    let dir = path
+        .parent()
+        .filter(|d| !d.as_os_str().is_empty())
+        .unwrap_or(Path::new("."));
+    if !dir.is_dir() {
+        return Err(BadInput(format!(
+            "{}: the directory {} does not exist",
+            path.display(),
+            dir.display()
+        )));
+    }
+    if path.is_dir() {
+        return Err(BadInput(format!("{}: is a directory", path.display())));
+    }
+    Ok(())
+}

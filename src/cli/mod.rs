@@ -1,0 +1,119 @@
+//! The `ps30` command line: clap definitions and one module per subcommand.
+//!
+//! Each subcommand module holds its arguments (`Args`) and a `run` function
+//! that calls the library and prints what the library returns; `main.rs`
+//! only parses and dispatches. Nothing in the library imports from here.
+//!
+//! Exit codes: 0 ok; 1 the check found a problem (a limit exceeded, a claim
+//! or cross-check that disagrees); 2 bad input or usage. A closed stdout
+//! (e.g. piping into `head`) counts as success.
+
+pub mod args;
+pub mod check;
+pub mod expand;
+pub mod io;
+pub mod luminance;
+pub mod plan;
+pub mod profile;
+pub mod run;
+pub mod tonemap;
+pub mod ui;
+pub mod unroll;
+pub mod verify;
+
+use clap::{Parser, Subcommand};
+
+#[derive(Parser)]
+#[command(
+    name = "ps30",
+    version,
+    about = "Parse, measure, run and generate Direct3D 9 ps_3_0 assembly"
+)]
+pub struct Cli {
+    /// Print only results and problems: no progress bars, notes or "wrote …" lines.
+    #[arg(long, short, global = true)]
+    pub quiet: bool,
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+#[derive(Subcommand)]
+pub enum Command {
+    /// Count instruction slots and executed instructions against the limits.
+    #[command(
+        after_help = "Examples:\n  ps30 check asm/article/lum_pass1_loop.psh --int i1=128 --int i2=56\n  ps30 check asm/article/lum_pass2.psh -D xsize=11 -D ysize=8 --json"
+    )]
+    Check(check::Args),
+    /// Print the shader as plain ps_3_0 assembly with every macro expanded.
+    #[command(
+        after_help = "Examples:\n  ps30 expand asm/article/lum_pass2.psh -D xsize=11 -D ysize=8\n  ps30 expand asm/article/lum_pass1_unrolled.psh -o unrolled.psh\n  ps30 expand asm/article/lum_pass2.psh -D xsize=11 -D ysize=8 --json"
+    )]
+    Expand(expand::Args),
+    /// Run one pass of a shader over an image into a render target.
+    #[command(
+        after_help = "Pixel (x, y) of the target gets v0.xy = the centre of the top-left texel of its\nblock of the image (blocks of ceil(W/tw) x ceil(H/th) texels) and s0 = the image.\n\nExample:\n  ps30 run corrected:loop --image assets/hdr/forest.hdr --target 8x10 --int i1=128 --int i2=52 \\\n      --const c1=0.0009765625,0.001953125,0,1 --const c3=0.27,0.67,0.06,0.01 -o sums.exr"
+    )]
+    Run(run::Args),
+    /// Run the two-pass luminance pipeline on an HDR image and cross-check it.
+    #[command(
+        after_help = "Shaders are files or bundled names: article:loop, article:unrolled, article:pass2,\ncorrected:loop, corrected:unrolled, corrected:pass2 (default: the corrected unrolled pair).\n\nExamples:\n  ps30 luminance assets/hdr/courtyard_1280x1024.exr\n  ps30 luminance assets/hdr/forest.exr --pass1 article:loop --pass2 article:pass2 --block 128x56\n  ps30 luminance assets/hdr/sunset.pfm --target-format f16 --json"
+    )]
+    Luminance(luminance::Args),
+    /// Tone-map an HDR image with the article's operator, run in the emulator, into an 8-bit sRGB PNG.
+    #[command(
+        after_help = "L̄w comes from the corrected luminance passes (125x128 blocks, R32F). The shader is\nasm/tonemap/reinhard.psh; every pixel is cross-checked against the f64 reference within a\nbound derived from the shader's f32 arithmetic (exit 1 if any pixel is outside it).\n\nExamples:\n  ps30 tonemap assets/hdr/courtyard_1280x1024.exr -o courtyard.png\n  ps30 tonemap assets/hdr/city.exr -o city.png --key 0.36 --white 5000\n  ps30 tonemap assets/hdr/forest.hdr --white inf --json"
+    )]
+    Tonemap(tonemap::Args),
+    /// Per-pixel and per-quad costs over an image, divergence, and gradients
+    /// that rely on undefined behaviour.
+    #[command(
+        after_help = "Examples:\n  ps30 profile lights:select --gbuffer 64x64\n  ps30 profile lights:texld --gbuffer 64x64\n  ps30 profile corrected:loop --image assets/hdr/courtyard_1280x1024.exr --target 10x8 \\\n      --int i1=8 --int i2=8 --const c1=0.00078125,0.0009765625,0,1 --const c3=0.27,0.67,0.06,0.01"
+    )]
+    Profile(profile::Args),
+    /// Check every figure the article states and write the report to reports/.
+    #[command(
+        after_help = "Also regenerates the shaders of asm/generated/ in memory and fails (exit 1) if a\ncommitted file is missing, stale or unexpected; --regenerate rewrites them instead.\n\nExample:\n  ps30 verify --json"
+    )]
+    Verify(verify::Args),
+    /// Generate pass-1 (unrolled and loop), last-column and pass-2 luminance shaders that fit the limits.
+    #[command(
+        after_help = "--fit: unrolled form = the widest unroll that fits the slot limit and the tallest block\nthat fits the executed limit and the rep-count range, lowered to the smallest height with\nas many block rows for the frame; loop form = the plan's best loop block for the frame.\nEvery shader is checked (front end + cost model) before it is printed; its header states\nits slots, executed count and the constants the application sets.\n\nExit codes: 0 every requested shader fits; 1 something requested does not fit (the\nreasons are printed, in numbers); 2 bad input.\n\nExamples:\n  ps30 unroll --fit\n  ps30 unroll --fit --frame 1920x1080 -o shaders/\n  ps30 unroll --block 128x56 --form loop --only pass1\n  ps30 unroll --fit --max-slots 1024 --macro"
+    )]
+    Unroll(unroll::Args),
+    /// Rank block sizes, intermediate targets and pass-2 forms for a frame, and recommend one.
+    #[command(
+        after_help = "Exit codes: 0 a two-pass plan fits; 1 none does (a third pass would be needed, or\nnothing fits the profile); 2 bad input.\n\nExamples:\n  ps30 plan --frame 1280x1024\n  ps30 plan --frame 1920x1080 --max-slots 1024 --json"
+    )]
+    Plan(plan::Args),
+}
+
+/// How a command ended.
+pub enum Outcome {
+    Ok,
+    /// The check found a problem (exit 1).
+    Problem,
+}
+
+impl Outcome {
+    /// `Ok` when `ok`, else `Problem`.
+    pub fn from_ok(ok: bool) -> Outcome {
+        if ok {
+            Outcome::Ok
+        } else {
+            Outcome::Problem
+        }
+    }
+}
+
+/// A failure with exit code 2 (bad input or usage). Diagnostics were
+/// already printed when `message` is empty.
+pub struct BadInput(pub String);
+
+impl<E: std::fmt::Display> From<E> for BadInput {
+    fn from(e: E) -> Self {
+        BadInput(e.to_string())
+    }
+}
+
+/// What a subcommand's `run` returns.
+pub type Result = std::result::Result<Outcome, BadInput>;

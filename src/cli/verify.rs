@@ -1,0 +1,126 @@
+//! `ps30 verify`: the article's claims, the luminance cross-check, the tone
+//! mapping of every bundled image and the committed generated shaders, with
+//! the pages of `reports/`.
+
+use super::io::{print_json, say};
+use super::ui::Ui;
+use super::{BadInput, Outcome};
+use ps30::core::image::{self, ImageLimits};
+use ps30::core::output::write_bytes;
+use ps30::jobs::gen::set::{self, GeneratedSet};
+use ps30::jobs::verify::{self as claims, CROSSCHECK_IMAGE, GENERATED_DIR};
+use ps30::present::report::{self, claims as pages, generated};
+use ps30::present::verify::{json, text, Summary};
+use std::path::{Path, PathBuf};
+
+#[derive(clap::Args)]
+pub struct Args {
+    /// Directory for the reports.
+    #[arg(long, default_value = "reports")]
+    reports: PathBuf,
+    /// Directory of the committed generated shaders (default: asm/generated
+    /// of the source tree).
+    #[arg(long, value_name = "DIR")]
+    generated: Option<PathBuf>,
+    /// Rewrite the generated shaders instead of failing when they are stale.
+    #[arg(long)]
+    regenerate: bool,
+    /// Print JSON instead of text.
+    #[arg(long)]
+    json: bool,
+}
+
+/// The source tree this binary was built from: bundled images and the
+/// committed generated shaders are looked up there first.
+fn in_source_tree(rel: &str) -> PathBuf {
+    let in_tree = Path::new(env!("CARGO_MANIFEST_DIR")).join(rel);
+    if in_tree.exists() {
+        in_tree
+    } else {
+        PathBuf::from(rel)
+    }
+}
+
+pub fn run(args: Args, ui: &Ui) -> super::Result {
+    let bar = std::cell::RefCell::new(ui.bar("article claims", 12));
+    let mut found = claims::article_claims().map_err(BadInput)?;
+    let set = set::generated_set()?;
+    found.extend(claims::planning_claims(&set).map_err(BadInput)?);
+    bar.borrow_mut().set(Some("luminance cross-check"), 1, 12);
+    let image_path = in_source_tree(CROSSCHECK_IMAGE);
+    let img = image::load(&image_path, &ImageLimits::default())?;
+    let rows = claims::crosscheck(&img).map_err(BadInput)?;
+    let generated_shown = args
+        .generated
+        .as_ref()
+        .map_or(GENERATED_DIR.to_string(), |d| d.display().to_string());
+    let generated = args
+        .generated
+        .clone()
+        .unwrap_or_else(|| in_source_tree(GENERATED_DIR));
+    let (stale, rewritten) = check_generated(&generated, &set, args.regenerate)?;
+    let pages = [
+        args.reports.join("article-claims.md"),
+        args.reports.join("luminance-crosscheck.md"),
+        args.reports.join("generated-shaders.md"),
+    ];
+    for (path, text) in pages.iter().zip([
+        pages::claims_report(&found),
+        pages::crosscheck_report(&rows),
+        generated::summary_report(&set),
+    ]) {
+        write_bytes(path, text.as_bytes())
+            .map_err(|e| BadInput(format!("{}: {e}", path.display())))?;
+    }
+    // The repository root the bundled images were found under.
+    let root = image_path
+        .parent()
+        .and_then(Path::parent)
+        .and_then(Path::parent)
+        .unwrap_or(Path::new(""));
+    let figures = report::generate(&args.reports, root, None, &|stage, done, total| {
+        bar.borrow_mut().set(Some(stage), done + 2, total + 2)
+    })
+    .map_err(BadInput)?;
+    drop(bar);
+    let summary = Summary {
+        claims: &found,
+        crosscheck: &rows,
+        figures: &figures,
+        set: &set,
+        generated_shown,
+        generated: &generated,
+        regenerated: args.regenerate,
+        stale: &stale,
+        rewritten: &rewritten,
+        pages: [&pages[0], &pages[1], &pages[2]],
+        reports: &args.reports,
+    };
+    let ok = summary.all_agree();
+    if args.json {
+        print_json(&json(&summary))?;
+    } else if !(ui.quiet && ok) {
+        say(ui, &text(&summary))?;
+    }
+    Ok(Outcome::from_ok(ok))
+}
+
+/// The committed generated shaders compared with what the generator writes
+/// now (the stale files), or rewritten (`wrote …` / `removed …` lines).
+fn check_generated(
+    dir: &Path,
+    set: &GeneratedSet,
+    regenerate: bool,
+) -> Result<(Vec<String>, Vec<String>), BadInput> {
+    if !regenerate {
+        return Ok((set::stale_files(dir, set), Vec::new()));
+    }
+    let (written, removed) =
+        set::write_set(dir, set).map_err(|e| BadInput(format!("{}: {e}", dir.display())))?;
+    let lines = written
+        .into_iter()
+        .map(|p| format!("wrote {p}"))
+        .chain(removed.into_iter().map(|p| format!("removed {p}")))
+        .collect();
+    Ok((Vec::new(), lines))
+}

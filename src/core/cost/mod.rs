@@ -1,0 +1,796 @@
+//! The cost model: static instruction slots and executed instruction slots,
+//! computed from the validated IR (never from text).
+//!
+//! # The counting rule
+//!
+//! Microsoft's documentation gives each instruction a slot cost but does not
+//! say how "executed instructions" (`MaxPShaderInstructionsExecuted`) are
+//! counted. ps30 uses the rule that reproduces every figure of the article
+//! (9 cycles per x pixel, 6 per y line, 64,853 for a 128×56 block):
+//!
+//! * every executed instruction is charged its static slots (predication
+//!   adds one, cube samplers cost more — see [`crate::core::isa`]);
+//! * `rep`/`loop` and `endrep`/`endloop` are charged **once per iteration**
+//!   (3 + 2 slots), not once per entry; a loop that runs 0 times is charged
+//!   its `rep`/`loop` slots once;
+//! * `if` and `endif` are charged each time the `if` is reached, and so is
+//!   `else` when there is one (both paths pass it) — except that a `break`
+//!   inside a branch leaves before `endif` (and, from the then-branch,
+//!   before `else`);
+//! * a `break` that leaves a loop charges its own slots and skips the rest of
+//!   that iteration, `endrep`/`endloop` included;
+//! * `call` charges its slots, the callee and the callee's `ret`; `label` is
+//!   free; `ret` in main charges 1 and ends the shader.
+//!
+//! The analysis is symbolic: a loop's cost is its per-iteration cost times its
+//! count, so the running time does not grow with iteration counts. Where the
+//! count depends on data (dynamic branches, breaks, unknown constants) the
+//! model gives the shortest and the longest path instead of one number.
+
+use crate::core::diag::SourceFile;
+use crate::core::ir::{Shader, SrcMod};
+use crate::core::isa::{Opcode, RegFile};
+use serde::Serialize;
+use std::collections::BTreeMap;
+
+/// A budget: what a ps_3_0 part allows.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Profile {
+    pub name: String,
+    /// Static instruction slots.
+    pub max_slots: u64,
+    /// Executed instruction slots per pixel.
+    pub max_executed: u64,
+    /// rep/loop iteration count range (i#.x in 0..=max).
+    pub max_rep_count: u32,
+    /// rep/loop nesting depth.
+    pub max_loop_nesting: u32,
+}
+
+impl Profile {
+    /// The article's ps_3_0 budget: 512 slots, 65,535 executed instructions.
+    /// (Microsoft's ps_3_0 page says "at least 2^16" executed; the article and
+    /// several drivers use 65,535.)
+    pub fn ps_3_0() -> Profile {
+        Profile {
+            name: "ps_3_0".to_string(),
+            max_slots: 512,
+            max_executed: 65_535,
+            max_rep_count: crate::core::isa::MAX_REP_COUNT as u32,
+            max_loop_nesting: crate::core::isa::MAX_LOOP_NESTING,
+        }
+    }
+}
+
+/// Application-set constants the analysis may use (`--int`, `--bool`).
+#[derive(Clone, Debug, Default)]
+pub struct Environment {
+    pub ints: BTreeMap<u32, [i32; 4]>,
+    pub bools: BTreeMap<u32, bool>,
+}
+
+/// A closed range of counts; `min == max` when exact.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+pub struct Range {
+    pub min: u64,
+    pub max: u64,
+}
+
+impl Range {
+    pub const ZERO: Range = Range { min: 0, max: 0 };
+
+    pub fn exact(v: u64) -> Range {
+        Range { min: v, max: v }
+    }
+
+    pub fn is_exact(self) -> bool {
+        self.min == self.max
+    }
+
+    fn add(self, o: Range) -> Range {
+        Range {
+            min: self.min.saturating_add(o.min),
+            max: self.max.saturating_add(o.max),
+        }
+    }
+
+    fn mul(self, o: Range) -> Range {
+        Range {
+            min: self.min.saturating_mul(o.min),
+            max: self.max.saturating_mul(o.max),
+        }
+    }
+
+    fn union(self, o: Range) -> Range {
+        Range {
+            min: self.min.min(o.min),
+            max: self.max.max(o.max),
+        }
+    }
+}
+
+/// How often the end of a sequence with `paths` is reached when it starts
+/// `mult` times (what `Ctx::seq` leaves its multiplicity at).
+fn reach(paths: &Paths, mult: Range) -> Range {
+    match paths.fall {
+        None => Range::ZERO,
+        Some(_) if paths.brk.is_some() || paths.exit.is_some() => Range {
+            min: 0,
+            max: mult.max,
+        },
+        Some(_) => mult,
+    }
+}
+
+fn add_opt(a: Option<Range>, b: Option<Range>) -> Option<Range> {
+    Some(a?.add(b?))
+}
+
+fn union_opt(a: Option<Range>, b: Option<Range>) -> Option<Range> {
+    match (a, b) {
+        (Some(a), Some(b)) => Some(a.union(b)),
+        (a, None) => a,
+        (None, b) => b,
+    }
+}
+
+/// Costs of the ways control can leave a piece of code.
+#[derive(Clone, Copy, Debug)]
+struct Paths {
+    /// Falls through to what follows.
+    fall: Option<Range>,
+    /// Leaves the innermost loop through a break.
+    brk: Option<Range>,
+    /// Ends the shader (`ret` in main).
+    exit: Option<Range>,
+}
+
+impl Paths {
+    fn fall(r: Range) -> Paths {
+        Paths {
+            fall: Some(r),
+            brk: None,
+            exit: None,
+        }
+    }
+
+    /// `self` followed by `next`.
+    fn then(self, next: Paths) -> Paths {
+        Paths {
+            fall: add_opt(self.fall, next.fall),
+            brk: union_opt(self.brk, add_opt(self.fall, next.brk)),
+            exit: union_opt(self.exit, add_opt(self.fall, next.exit)),
+        }
+    }
+
+    fn union(self, o: Paths) -> Paths {
+        Paths {
+            fall: union_opt(self.fall, o.fall),
+            brk: union_opt(self.brk, o.brk),
+            exit: union_opt(self.exit, o.exit),
+        }
+    }
+
+    fn shift(self, r: Range) -> Paths {
+        Paths {
+            fall: self.fall.map(|f| f.add(r)),
+            brk: self.brk.map(|f| f.add(r)),
+            exit: self.exit.map(|f| f.add(r)),
+        }
+    }
+}
+
+/// The structured form of a flat instruction range.
+#[derive(Clone, Debug)]
+enum Node {
+    Ins(usize),
+    Loop {
+        head: usize,
+        end: usize,
+        body: Vec<Node>,
+    },
+    If {
+        head: usize,
+        else_at: Option<usize>,
+        end: usize,
+        then: Vec<Node>,
+        els: Vec<Node>,
+    },
+}
+
+fn build(shader: &Shader, mut i: usize, stop: usize) -> (Vec<Node>, usize) {
+    let info = shader.info();
+    let ins = shader.instructions();
+    let mut out = Vec::new();
+    while i < stop {
+        match ins[i].op {
+            Opcode::Rep | Opcode::Loop => {
+                let end = info.matching[i].map_or(stop, |e| e as usize);
+                let (body, _) = build(shader, i + 1, end);
+                out.push(Node::Loop { head: i, end, body });
+                i = end + 1;
+            }
+            Opcode::If | Opcode::Ifc => {
+                let first = info.matching[i].map_or(stop, |e| e as usize);
+                let (then, _) = build(shader, i + 1, first);
+                let (else_at, end, els) = if ins.get(first).map(|x| x.op) == Some(Opcode::Else) {
+                    let end = info.matching[first].map_or(stop, |e| e as usize);
+                    (Some(first), end, build(shader, first + 1, end).0)
+                } else {
+                    (None, first, Vec::new())
+                };
+                out.push(Node::If {
+                    head: i,
+                    else_at,
+                    end,
+                    then,
+                    els,
+                });
+                i = end + 1;
+            }
+            _ => {
+                out.push(Node::Ins(i));
+                i += 1;
+            }
+        }
+    }
+    (out, i)
+}
+
+/// What is wrong with an integer constant used by `rep`/`loop`, if anything
+/// (Microsoft's rep and loop pages: count 0..255, start 0..255, step −128..127).
+pub fn int_constant_problem(op: Opcode, v: [i32; 4]) -> Option<String> {
+    let max = crate::core::isa::MAX_REP_COUNT;
+    if !(0..=max).contains(&v[0]) {
+        return Some(format!(
+            "the iteration count (.x = {}) must be in 0..={max}",
+            v[0]
+        ));
+    }
+    if op == Opcode::Loop {
+        if !(0..=255).contains(&v[1]) {
+            return Some(format!("the loop start (.y = {}) must be in 0..=255", v[1]));
+        }
+        if !(-128..=127).contains(&v[2]) {
+            return Some(format!(
+                "the loop step (.z = {}) must be in -128..=127",
+                v[2]
+            ));
+        }
+    }
+    None
+}
+
+/// Cost of one source line.
+#[derive(Clone, Debug, Serialize)]
+pub struct LineCost {
+    pub line: usize,
+    pub text: String,
+    /// Static slots of the instructions on this line (all REPEAT_BLOCK copies).
+    pub slots: u64,
+    /// How many instructions from this line run, in all.
+    pub executions: Range,
+    /// Executed slots charged to this line.
+    pub executed: Range,
+}
+
+/// Cost of one rep/loop.
+#[derive(Clone, Debug, Serialize)]
+pub struct LoopCost {
+    pub line: usize,
+    /// `rep i2`, `loop aL, i0`.
+    pub header: String,
+    /// Iterations per entry.
+    pub iterations: Range,
+    /// How many times the loop is entered.
+    pub entries: Range,
+    /// One iteration including its own rep/endrep and nested loops.
+    pub cost_per_iteration: Range,
+    /// One iteration's own cost: rep + endrep + the body outside nested loops.
+    pub own_cost_per_iteration: Range,
+    /// Executed slots of the loop over the whole run.
+    pub total: Range,
+}
+
+/// Whether the program fits its profile.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Verdict {
+    Within,
+    /// Some data-dependent path exceeds the executed limit.
+    MayExceed,
+    Exceeds,
+}
+
+/// The full analysis of a shader under a profile.
+#[derive(Clone, Debug, Serialize)]
+pub struct Analysis {
+    pub slots: u64,
+    pub executed: Range,
+    pub data_dependent: bool,
+    /// Why counts are ranges (unknown constants, dynamic branches, breaks).
+    pub reasons: Vec<String>,
+    pub lines: Vec<LineCost>,
+    pub loops: Vec<LoopCost>,
+    pub profile: Profile,
+    pub verdict: Verdict,
+    /// Executions of each instruction (index into the program).
+    #[serde(skip)]
+    pub executions: Vec<Range>,
+}
+
+/// Problems that make an analysis meaningless (bad command-line constants).
+#[derive(Clone, Debug, PartialEq)]
+pub struct CostError(pub String);
+
+impl std::fmt::Display for CostError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+impl std::error::Error for CostError {}
+
+struct Ctx<'a> {
+    shader: &'a Shader,
+    env: &'a Environment,
+    reasons: Vec<String>,
+    loops: Vec<LoopCost>,
+    executions: Vec<Range>,
+    subs: BTreeMap<u32, Vec<Node>>,
+    file: &'a SourceFile,
+    /// Paths of each loop body (by its head), which decide how many
+    /// iterations run before the body's instructions are counted.
+    body_paths: BTreeMap<usize, Paths>,
+}
+
+impl Ctx<'_> {
+    fn reason(&mut self, r: String) {
+        if !self.reasons.contains(&r) {
+            self.reasons.push(r);
+        }
+    }
+
+    fn slots(&self, i: usize) -> u64 {
+        self.shader.info().slots[i] as u64
+    }
+
+    /// Iterations of the rep/loop at `head`.
+    fn iterations(&mut self, head: usize) -> Result<Range, CostError> {
+        let ins = &self.shader.instructions()[head];
+        let reg = ins
+            .src
+            .iter()
+            .find(|s| s.reg.file == RegFile::ConstInt)
+            .map(|s| s.reg.index)
+            .unwrap_or(0);
+        let value = self
+            .shader
+            .program()
+            .int_def(reg)
+            .or_else(|| self.env.ints.get(&reg).copied());
+        match value {
+            Some(v) => {
+                if let Some(p) = int_constant_problem(ins.op, v) {
+                    return Err(CostError(format!("i{reg}: {p}")));
+                }
+                Ok(Range::exact(v[0] as u64))
+            }
+            None => {
+                self.reason(format!(
+                    "i{reg} is neither defined in the shader (defi) nor given (--int i{reg}=N): its count is taken as 0..=255"
+                ));
+                Ok(Range { min: 0, max: 255 })
+            }
+        }
+    }
+
+    /// The value of a boolean condition, if known.
+    fn condition(&mut self, i: usize) -> Option<bool> {
+        let src = self.shader.instructions()[i]
+            .src
+            .iter()
+            .find(|s| matches!(s.reg.file, RegFile::ConstBool | RegFile::Predicate))?;
+        if src.reg.file != RegFile::ConstBool {
+            return None;
+        }
+        let b = src.reg.index;
+        let v = self
+            .shader
+            .program()
+            .bool_def(b)
+            .or_else(|| self.env.bools.get(&b).copied());
+        if v.is_none() {
+            self.reason(format!("b{b} is neither defined (defb) nor given (--bool b{b}=true): both branches considered"));
+        }
+        v.map(|v| v != (src.modifier == SrcMod::Not))
+    }
+
+    fn line(&self, i: usize) -> usize {
+        self.file
+            .line_of(self.shader.instructions()[i].origin.span.start)
+    }
+
+    fn seq(
+        &mut self,
+        nodes: &[Node],
+        mult: Range,
+        in_sub: bool,
+    ) -> Result<(Paths, Range), CostError> {
+        let mut acc = Paths::fall(Range::ZERO);
+        let mut nested = Range::ZERO;
+        let mut mult = mult;
+        for node in nodes {
+            let (p, n) = self.node(node, mult, in_sub)?;
+            acc = acc.then(p);
+            nested = nested.add(n);
+            if acc.fall.is_none() {
+                mult = Range::ZERO;
+            } else if p.brk.is_some() || p.exit.is_some() {
+                mult.min = 0;
+            }
+        }
+        Ok((acc, nested))
+    }
+
+    /// The paths of a loop body, computed once per loop. Paths do not depend
+    /// on multiplicities, so a pass with multiplicity 0 finds them without
+    /// counting anything (its loop entries are dropped again).
+    fn body_paths(&mut self, head: usize, body: &[Node], in_sub: bool) -> Result<Paths, CostError> {
+        if let Some(p) = self.body_paths.get(&head) {
+            return Ok(*p);
+        }
+        let loops = self.loops.len();
+        let (p, _) = self.seq(body, Range::ZERO, in_sub)?;
+        self.loops.truncate(loops);
+        self.body_paths.insert(head, p);
+        Ok(p)
+    }
+
+    fn count(&mut self, i: usize, mult: Range) {
+        self.executions[i] = self.executions[i].add(mult);
+    }
+
+    /// Paths of one node and the executed slots of loops nested directly in
+    /// it (for "own cost per iteration").
+    fn node(
+        &mut self,
+        node: &Node,
+        mult: Range,
+        in_sub: bool,
+    ) -> Result<(Paths, Range), CostError> {
+        match node {
+            Node::Ins(i) => {
+                let i = *i;
+                self.count(i, mult);
+                let s = Range::exact(self.slots(i));
+                let ins = &self.shader.instructions()[i];
+                Ok((
+                    match ins.op {
+                        Opcode::Break => Paths {
+                            fall: None,
+                            brk: Some(s),
+                            exit: None,
+                        },
+                        Opcode::BreakC | Opcode::BreakP => {
+                            self.reason(format!("line {}: a data-dependent break", self.line(i)));
+                            Paths {
+                                fall: Some(s),
+                                brk: Some(s),
+                                exit: None,
+                            }
+                        }
+                        Opcode::Ret if !in_sub => Paths {
+                            fall: None,
+                            brk: None,
+                            exit: Some(s),
+                        },
+                        Opcode::Call | Opcode::CallNz => {
+                            let label = ins.src[0].reg.index;
+                            let taken = if ins.op == Opcode::Call {
+                                Some(true)
+                            } else {
+                                self.condition(i)
+                            };
+                            let sub = self.subs.get(&label).cloned().unwrap_or_default();
+                            let sub_mult = match taken {
+                                Some(true) => mult,
+                                Some(false) => Range::ZERO,
+                                None => Range {
+                                    min: 0,
+                                    max: mult.max,
+                                },
+                            };
+                            let (p, _) = self.seq(&sub, sub_mult, true)?;
+                            let body = p.fall.unwrap_or(Range::ZERO);
+                            let called = Paths::fall(s.add(body));
+                            match taken {
+                                Some(true) => called,
+                                Some(false) => Paths::fall(s),
+                                None => {
+                                    if ins.src.get(1).map(|c| c.reg.file)
+                                        == Some(RegFile::Predicate)
+                                    {
+                                        self.reason(format!(
+                                            "line {}: callnz on a predicate",
+                                            self.line(i)
+                                        ));
+                                    }
+                                    called.union(Paths::fall(s))
+                                }
+                            }
+                        }
+                        _ => Paths::fall(s),
+                    },
+                    Range::ZERO,
+                ))
+            }
+            Node::If {
+                head,
+                else_at,
+                end,
+                then,
+                els,
+            } => {
+                let known = match self.shader.instructions()[*head].op {
+                    Opcode::If => self.condition(*head),
+                    _ => None,
+                };
+                if known.is_none()
+                    && self.shader.instructions()[*head].src[0].reg.file != RegFile::ConstBool
+                {
+                    self.reason(format!("line {}: a dynamic branch", self.line(*head)));
+                }
+                let (tm, em) = match known {
+                    Some(true) => (mult, Range::ZERO),
+                    Some(false) => (Range::ZERO, mult),
+                    None => (
+                        Range {
+                            min: 0,
+                            max: mult.max,
+                        },
+                        Range {
+                            min: 0,
+                            max: mult.max,
+                        },
+                    ),
+                };
+                self.count(*head, mult);
+                let (tp, tn) = self.seq(then, tm, in_sub)?;
+                let (ep, en) = self.seq(els, em, in_sub)?;
+                // `else` is passed at the end of the then-branch and on
+                // entering the else-branch; `endif` at the end of either. A
+                // branch that breaks out passes neither after it.
+                let always_reaches =
+                    |p: &Paths| p.fall.is_some() && p.brk.is_none() && p.exit.is_none();
+                let (else_runs, end_runs) = match known {
+                    Some(true) => (reach(&tp, mult), reach(&tp, mult)),
+                    Some(false) => (mult, reach(&ep, mult)),
+                    None => (
+                        Range {
+                            min: if always_reaches(&tp) { mult.min } else { 0 },
+                            max: mult.max,
+                        },
+                        Range {
+                            min: if always_reaches(&tp) && always_reaches(&ep) {
+                                mult.min
+                            } else {
+                                0
+                            },
+                            max: if tp.fall.is_some() || ep.fall.is_some() {
+                                mult.max
+                            } else {
+                                0
+                            },
+                        },
+                    ),
+                };
+                self.count(*end, end_runs);
+                let else_s = match else_at {
+                    Some(e) => {
+                        self.count(*e, else_runs);
+                        Range::exact(self.slots(*e))
+                    }
+                    None => Range::ZERO,
+                };
+                let head_s = Range::exact(self.slots(*head));
+                let tail = else_s.add(Range::exact(self.slots(*end)));
+                let then_branch = Paths {
+                    fall: tp.fall.map(|f| f.add(tail)),
+                    brk: tp.brk,
+                    exit: tp.exit,
+                };
+                let else_branch = Paths {
+                    fall: ep.fall.map(|f| f.add(tail)),
+                    brk: ep.brk.map(|f| f.add(else_s)),
+                    exit: ep.exit.map(|f| f.add(else_s)),
+                };
+                let paths = match known {
+                    Some(true) => then_branch,
+                    Some(false) => else_branch,
+                    None => then_branch.union(else_branch),
+                }
+                .shift(head_s);
+                let nested = match known {
+                    Some(true) => tn,
+                    Some(false) => en,
+                    None => tn.union(en),
+                };
+                Ok((paths, nested))
+            }
+            Node::Loop { head, end, body } => {
+                let n = self.iterations(*head)?;
+                let h = self.slots(*head);
+                let f = self.slots(*end);
+                let slot = self.loops.len();
+                self.loops.push(LoopCost {
+                    line: self.line(*head),
+                    header: String::new(),
+                    iterations: n,
+                    entries: mult,
+                    cost_per_iteration: Range::ZERO,
+                    own_cost_per_iteration: Range::ZERO,
+                    total: Range::ZERO,
+                });
+                // How many iterations start and how many reach endrep:
+                // a body that always breaks runs (at most) once, one that
+                // may break runs between once and n times.
+                let bp = self.body_paths(*head, body, in_sub)?;
+                let (runs, head_runs, end_runs) = match (bp.fall, bp.brk) {
+                    (_, None) => (
+                        n,
+                        // charged once per iteration, or once if it runs 0 times
+                        Range {
+                            min: n.min.max(1),
+                            max: n.max.max(1),
+                        },
+                        n,
+                    ),
+                    (None, Some(_)) => (
+                        Range {
+                            min: n.min.min(1),
+                            max: n.max.min(1),
+                        },
+                        Range::exact(1),
+                        Range::ZERO,
+                    ),
+                    (Some(_), Some(_)) => (
+                        Range {
+                            min: n.min.min(1),
+                            max: n.max,
+                        },
+                        Range {
+                            min: 1,
+                            max: n.max.max(1),
+                        },
+                        Range { min: 0, max: n.max },
+                    ),
+                };
+                let (b, nested) = self.seq(body, mult.mul(runs), in_sub)?;
+                self.count(*head, mult.mul(head_runs));
+                self.count(*end, mult.mul(end_runs));
+                let hr = Range::exact(h);
+                let full = b.fall.map(|bf| hr.add(bf).add(Range::exact(f)));
+                let total = match (full, b.brk) {
+                    (Some(full), None) => {
+                        let t = full.mul(n);
+                        // n = 0: the rep/loop instruction alone.
+                        Range {
+                            min: if n.min == 0 { h } else { t.min },
+                            max: if n.max == 0 { h } else { t.max },
+                        }
+                    }
+                    (full, Some(brk)) => {
+                        let first_break = hr.add(brk);
+                        let all = full.map(|full| full.mul(n));
+                        let min = match all {
+                            Some(a) if n.min > 0 => a.min.min(first_break.min),
+                            _ if n.min == 0 => h,
+                            _ => first_break.min,
+                        };
+                        let max = match full {
+                            Some(full) if n.max > 0 => {
+                                let last_break = full
+                                    .max
+                                    .saturating_mul(n.max - 1)
+                                    .saturating_add(first_break.max);
+                                last_break.max(full.max.saturating_mul(n.max))
+                            }
+                            None if n.max > 0 => first_break.max,
+                            _ => h,
+                        };
+                        Range { min, max }
+                    }
+                    (None, None) => Range::exact(h),
+                };
+                let per_iter = full.unwrap_or(hr);
+                let ins = &self.shader.instructions()[*head];
+                let operands: Vec<String> = ins.src.iter().map(|s| s.reg.to_string()).collect();
+                let entry = &mut self.loops[slot];
+                entry.header = format!("{} {}", ins.op, operands.join(", "));
+                entry.cost_per_iteration = per_iter;
+                entry.own_cost_per_iteration = Range {
+                    min: per_iter.min.saturating_sub(nested.min),
+                    max: per_iter.max.saturating_sub(nested.max),
+                };
+                entry.total = total.mul(mult);
+                Ok((Paths::fall(total), total))
+            }
+        }
+    }
+}
+
+/// Analyses a validated shader under an environment and profile.
+pub fn analyse(
+    shader: &Shader,
+    file: &SourceFile,
+    env: &Environment,
+    profile: &Profile,
+) -> Result<Analysis, CostError> {
+    for (reg, v) in &env.ints {
+        if *reg >= 16 {
+            return Err(CostError(format!("i{reg} does not exist (i0 … i15)")));
+        }
+        let _ = v;
+    }
+    let info = shader.info();
+    let main_end = info.main_end as usize;
+    let (main, _) = build(shader, 0, main_end);
+    let mut subs = BTreeMap::new();
+    for (&label, &at) in &info.labels {
+        let start = at as usize + 1;
+        let stop = shader.instructions()[start..]
+            .iter()
+            .position(|i| i.op == Opcode::Label)
+            .map_or(shader.instructions().len(), |p| start + p);
+        subs.insert(label, build(shader, start, stop).0);
+    }
+    let mut ctx = Ctx {
+        shader,
+        env,
+        reasons: Vec::new(),
+        loops: Vec::new(),
+        executions: vec![Range::ZERO; shader.instructions().len()],
+        subs,
+        file,
+        body_paths: BTreeMap::new(),
+    };
+    let (paths, _) = ctx.seq(&main, Range::exact(1), false)?;
+    let executed = union_opt(paths.fall, paths.exit).unwrap_or(Range::ZERO);
+    // Per-line totals.
+    let mut lines: BTreeMap<usize, LineCost> = BTreeMap::new();
+    for (i, ins) in shader.instructions().iter().enumerate() {
+        let line = file.line_of(ins.origin.span.start);
+        let e = ctx.executions[i];
+        let s = info.slots[i] as u64;
+        let entry = lines.entry(line).or_insert_with(|| LineCost {
+            line,
+            text: file.text[ins.origin.span.range()].to_string(),
+            slots: 0,
+            executions: Range::ZERO,
+            executed: Range::ZERO,
+        });
+        entry.slots += s;
+        entry.executions = entry.executions.add(e);
+        entry.executed = entry.executed.add(e.mul(Range::exact(s)));
+    }
+    let slots = info.total_slots as u64;
+    let verdict = if slots > profile.max_slots || executed.min > profile.max_executed {
+        Verdict::Exceeds
+    } else if executed.max > profile.max_executed {
+        Verdict::MayExceed
+    } else {
+        Verdict::Within
+    };
+    Ok(Analysis {
+        slots,
+        executed,
+        data_dependent: !executed.is_exact(),
+        reasons: ctx.reasons,
+        lines: lines.into_values().collect(),
+        loops: ctx.loops,
+        profile: profile.clone(),
+        verdict,
+        executions: ctx.executions,
+    })
+}

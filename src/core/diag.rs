@@ -1,0 +1,284 @@
+//! Compiler-style diagnostics for assembly sources.
+//!
+//! Every problem the front end or validator finds becomes a [`Diagnostic`]
+//! with a byte span into a [`SourceFile`]. Rendering goes through
+//! codespan-reporting, both to a plain string (tests compare it) and to a
+//! colour terminal (the CLI), so a message always names `file:line:col`,
+//! shows the source line and puts a caret under the span.
+
+use crate::core::ir::{Origin, Span};
+use codespan_reporting::diagnostic::{Diagnostic as CsDiagnostic, Label};
+use codespan_reporting::files::SimpleFile;
+use codespan_reporting::term::{self, Config};
+use std::fmt;
+
+/// A named source text; spans index into `text`.
+#[derive(Clone, Debug)]
+pub struct SourceFile {
+    pub name: String,
+    pub text: String,
+    line_starts: Vec<usize>,
+}
+
+impl SourceFile {
+    pub fn new(name: impl Into<String>, text: impl Into<String>) -> SourceFile {
+        let text = text.into();
+        let mut line_starts = vec![0];
+        line_starts.extend(text.match_indices('\n').map(|(i, _)| i + 1));
+        SourceFile {
+            name: name.into(),
+            text,
+            line_starts,
+        }
+    }
+
+    /// 1-based line and column (in characters) of a byte offset.
+    pub fn line_col(&self, offset: u32) -> (usize, usize) {
+        let offset = (offset as usize).min(self.text.len());
+        let line = match self.line_starts.binary_search(&offset) {
+            Ok(i) => i,
+            Err(i) => i - 1,
+        };
+        let start = self.line_starts[line];
+        let col = self.text[start..offset].chars().count() + 1;
+        (line + 1, col)
+    }
+
+    /// 1-based line number of a byte offset.
+    pub fn line_of(&self, offset: u32) -> usize {
+        self.line_col(offset).0
+    }
+
+    /// The text of a 1-based line, without its line break.
+    pub fn line_text(&self, line: usize) -> &str {
+        let start = self.line_starts.get(line - 1).copied().unwrap_or(0);
+        let end = self
+            .line_starts
+            .get(line)
+            .copied()
+            .unwrap_or(self.text.len());
+        self.text[start..end].trim_end_matches(['\n', '\r'])
+    }
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+pub enum Severity {
+    Warning,
+    Error,
+}
+
+/// One problem, with where it is and how to fix it.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Diagnostic {
+    pub severity: Severity,
+    pub message: String,
+    pub span: Span,
+    /// Short text printed under the caret.
+    pub label: String,
+    /// Extra spans with their labels (e.g. "block opened here").
+    pub secondary: Vec<(Span, String)>,
+    /// One-line suggestion.
+    pub help: Option<String>,
+    /// Further notes (e.g. which REPEAT_BLOCK repetition).
+    pub notes: Vec<String>,
+}
+
+impl Diagnostic {
+    pub fn error(span: Span, message: impl Into<String>) -> Diagnostic {
+        Diagnostic {
+            severity: Severity::Error,
+            message: message.into(),
+            span,
+            label: String::new(),
+            secondary: Vec::new(),
+            help: None,
+            notes: Vec::new(),
+        }
+    }
+
+    pub fn warning(span: Span, message: impl Into<String>) -> Diagnostic {
+        Diagnostic {
+            severity: Severity::Warning,
+            ..Diagnostic::error(span, message)
+        }
+    }
+
+    pub fn with_label(mut self, label: impl Into<String>) -> Diagnostic {
+        self.label = label.into();
+        self
+    }
+
+    pub fn with_help(mut self, help: impl Into<String>) -> Diagnostic {
+        self.help = Some(help.into());
+        self
+    }
+
+    pub fn with_note(mut self, note: impl Into<String>) -> Diagnostic {
+        self.notes.push(note.into());
+        self
+    }
+
+    pub fn with_secondary(mut self, span: Span, label: impl Into<String>) -> Diagnostic {
+        self.secondary.push((span, label.into()));
+        self
+    }
+
+    /// Adds notes saying which REPEAT_BLOCK repetitions the problem is in.
+    pub fn in_origin(mut self, origin: &Origin, file: &SourceFile) -> Diagnostic {
+        for r in &origin.repeats {
+            self.notes.push(format!(
+                "in repetition {} of {} of the REPEAT_BLOCK at line {}",
+                r.index + 1,
+                r.count,
+                file.line_of(r.macro_span.start)
+            ));
+        }
+        self
+    }
+
+    fn to_codespan(&self) -> CsDiagnostic<()> {
+        let base = match self.severity {
+            Severity::Error => CsDiagnostic::error(),
+            Severity::Warning => CsDiagnostic::warning(),
+        };
+        let mut labels =
+            vec![Label::primary((), self.span.range()).with_message(self.label.clone())];
+        for (span, text) in &self.secondary {
+            labels.push(Label::secondary((), span.range()).with_message(text.clone()));
+        }
+        let mut notes = self.notes.clone();
+        if let Some(help) = &self.help {
+            notes.push(format!("help: {help}"));
+        }
+        base.with_message(self.message.clone())
+            .with_labels(labels)
+            .with_notes(notes)
+    }
+
+    /// Renders the diagnostic as plain text.
+    pub fn render(&self, file: &SourceFile) -> String {
+        let files = SimpleFile::new(file.name.as_str(), file.text.as_str());
+        term::emit_into_string(&Config::default(), &files, &self.to_codespan())
+            .unwrap_or_else(|_| self.fallback(file))
+    }
+
+    /// Renders the diagnostic to a terminal stream, in colour when `color`.
+    pub fn emit(&self, file: &SourceFile, color: bool) {
+        use codespan_reporting::term::termcolor::{ColorChoice, StandardStream};
+        let choice = if color {
+            ColorChoice::Auto
+        } else {
+            ColorChoice::Never
+        };
+        let stream = StandardStream::stderr(choice);
+        let mut lock = stream.lock();
+        let files = SimpleFile::new(file.name.as_str(), file.text.as_str());
+        if term::emit_to_write_style(&mut lock, &Config::default(), &files, &self.to_codespan())
+            .is_err()
+        {
+            eprintln!("{}", self.fallback(file));
+        }
+    }
+
+    /// `file:line:col: severity: message`, used when the renderer cannot be.
+    fn fallback(&self, file: &SourceFile) -> String {
+        let (line, col) = file.line_col(self.span.start);
+        format!("{}:{}:{}: {}", file.name, line, col, self)
+    }
+
+    /// `file:line:col`, for one-line summaries.
+    pub fn location(&self, file: &SourceFile) -> String {
+        let (line, col) = file.line_col(self.span.start);
+        format!("{}:{}:{}", file.name, line, col)
+    }
+}
+
+impl fmt::Display for Diagnostic {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let sev = match self.severity {
+            Severity::Error => "error",
+            Severity::Warning => "warning",
+        };
+        write!(f, "{sev}: {}", self.message)
+    }
+}
+
+/// All diagnostics of one source; errors make the source unusable.
+#[derive(Clone, Debug, Default)]
+pub struct Diagnostics {
+    pub items: Vec<Diagnostic>,
+}
+
+impl Diagnostics {
+    pub fn push(&mut self, d: Diagnostic) {
+        // The same problem in every repetition of a macro is reported once.
+        if let Some(existing) = self
+            .items
+            .iter_mut()
+            .find(|e| e.span == d.span && e.message == d.message)
+        {
+            if !existing.notes.iter().any(|n| n.starts_with("and in")) && d.notes != existing.notes
+            {
+                existing
+                    .notes
+                    .push("and in other repetitions of the same REPEAT_BLOCK".to_string());
+            }
+            return;
+        }
+        self.items.push(d);
+    }
+
+    pub fn has_errors(&self) -> bool {
+        self.items.iter().any(|d| d.severity == Severity::Error)
+    }
+
+    pub fn errors(&self) -> impl Iterator<Item = &Diagnostic> {
+        self.items.iter().filter(|d| d.severity == Severity::Error)
+    }
+
+    pub fn warnings(&self) -> impl Iterator<Item = &Diagnostic> {
+        self.items
+            .iter()
+            .filter(|d| d.severity == Severity::Warning)
+    }
+
+    /// Sorts by position so output reads top to bottom.
+    pub fn sort(&mut self) {
+        self.items.sort_by_key(|d| (d.span.start, d.severity));
+    }
+
+    /// Renders every diagnostic as plain text, followed by a count line.
+    pub fn render(&self, file: &SourceFile) -> String {
+        let mut out = String::new();
+        for d in &self.items {
+            out.push_str(&d.render(file));
+        }
+        out
+    }
+}
+
+/// A source that could not be turned into a shader, with its diagnostics.
+#[derive(Clone, Debug)]
+pub struct SourceError {
+    pub file: SourceFile,
+    pub diagnostics: Diagnostics,
+}
+
+impl fmt::Display for SourceError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let n = self.diagnostics.errors().count();
+        match self.diagnostics.errors().next() {
+            Some(first) => write!(
+                f,
+                "{}: {} ({} error{} in all)",
+                first.location(&self.file),
+                first,
+                n,
+                if n == 1 { "" } else { "s" }
+            ),
+            None => write!(f, "{}: invalid shader", self.file.name),
+        }
+    }
+}
+
+impl std::error::Error for SourceError {}

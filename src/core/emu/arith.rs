@@ -1,0 +1,388 @@
+//! Arithmetic and comparison handlers of the executor (the texld family is
+//! in `texop.rs`).
+//!
+//! Every handler is a loop over all [`LANES`] lanes of fixed-size rows (so
+//! the compiler can vectorise it), built from a few generic helpers:
+//! `map1`/`map2`/`map3` for component-wise ops, `scalar1` for replicated
+//! scalar results, `dot` for dot products. Results go to the `tmp` scratch
+//! rows first and are written back by [`Worker::store`], which applies the
+//! write mask, `_sat`, predication and the execution mask — reading all
+//! sources before writing makes `add r0, r0.yxzw, r0` correct.
+
+// Lane loops index several fixed-size rows with one lane index; that is
+// clearer than zipped iterators and vectorises the same.
+#![allow(clippy::needless_range_loop)]
+
+use super::compile::{DstOp, SrcOp};
+use super::exec::Worker;
+use super::math::{self, modify};
+use super::LANES;
+use crate::core::isa::Compare;
+
+impl Worker<'_, '_> {
+    /// Row read by component `c` of source `a` (relative `v[aL + n]` outside
+    /// v0..v9 reads zeros).
+    #[inline(always)]
+    pub(super) fn row(&self, a: SrcOp, c: usize) -> usize {
+        let base = if a.relative() {
+            let layout = &self.ctx.compiled.layout;
+            let input = layout.input as i64;
+            let r = a.row as i64 + 4 * self.al as i64;
+            if r >= input && r < input + 40 {
+                r as usize
+            } else {
+                0
+            }
+        } else {
+            a.row as usize
+        };
+        base + a.comp(c)
+    }
+
+    /// Lanes allowed to write component `c` of `d`: the execution mask and the
+    /// predicate `(p0.c)` / `(!p0.c)`.
+    #[inline(always)]
+    fn write_mask(&self, d: DstOp, c: usize) -> u64 {
+        let mut m = self.exec;
+        if d.predicated() {
+            let p = self.p[d.pred_comp(c)];
+            m &= if d.pred_not() { !p } else { p };
+        }
+        m
+    }
+
+    /// Writes `tmp` to `d` for the components of `mask` (`tmp[0]` to all of
+    /// them when `SCALAR`).
+    #[inline(always)]
+    pub(super) fn store<const SCALAR: bool>(&mut self, d: DstOp, mask: u8) {
+        let full = self.exec == self.live && !d.predicated();
+        let sat = d.sat();
+        let base = d.row as usize;
+        let mut any = false;
+        for c in 0..4 {
+            if mask & (1 << c) == 0 {
+                continue;
+            }
+            let lanes = if full { !0 } else { self.write_mask(d, c) };
+            if lanes == 0 {
+                continue;
+            }
+            any = true;
+            let t = &self.tmp[if SCALAR { 0 } else { c }];
+            let dst = &mut self.rows[base + c];
+            if full {
+                if sat {
+                    for l in 0..LANES {
+                        dst[l] = math::sat(t[l]);
+                    }
+                } else {
+                    *dst = *t;
+                }
+            } else {
+                for l in 0..LANES {
+                    let v = if sat { math::sat(t[l]) } else { t[l] };
+                    if (lanes >> l) & 1 != 0 {
+                        dst[l] = v;
+                    }
+                }
+            }
+        }
+        if any && d.output() {
+            let k = (base - self.ctx.compiled.layout.output as usize) / 4;
+            self.written |= 1 << k;
+        }
+    }
+
+    /// Component-wise unary op.
+    #[inline(always)]
+    pub(super) fn map1(&mut self, d: DstOp, a: SrcOp, f: impl Fn(f32) -> f32) {
+        let (am, ax) = a.mod_bits();
+        let mask = d.mask();
+        for c in 0..4 {
+            if mask & (1 << c) == 0 {
+                continue;
+            }
+            let ra = self.row(a, c);
+            let src = &self.rows[ra];
+            let out = &mut self.tmp[c];
+            for l in 0..LANES {
+                out[l] = f(modify(src[l], am, ax));
+            }
+        }
+        self.store::<false>(d, mask);
+    }
+
+    /// Component-wise binary op.
+    #[inline(always)]
+    pub(super) fn map2(&mut self, d: DstOp, a: SrcOp, b: SrcOp, f: impl Fn(f32, f32) -> f32) {
+        let (am, ax) = a.mod_bits();
+        let (bm, bx) = b.mod_bits();
+        let mask = d.mask();
+        for c in 0..4 {
+            if mask & (1 << c) == 0 {
+                continue;
+            }
+            let (ra, rb) = (self.row(a, c), self.row(b, c));
+            let (sa, sb) = (&self.rows[ra], &self.rows[rb]);
+            let out = &mut self.tmp[c];
+            for l in 0..LANES {
+                out[l] = f(modify(sa[l], am, ax), modify(sb[l], bm, bx));
+            }
+        }
+        self.store::<false>(d, mask);
+    }
+
+    /// Component-wise ternary op.
+    #[inline(always)]
+    pub(super) fn map3(
+        &mut self,
+        d: DstOp,
+        a: SrcOp,
+        b: SrcOp,
+        c3: SrcOp,
+        f: impl Fn(f32, f32, f32) -> f32,
+    ) {
+        let (am, ax) = a.mod_bits();
+        let (bm, bx) = b.mod_bits();
+        let (cm, cx) = c3.mod_bits();
+        let mask = d.mask();
+        for c in 0..4 {
+            if mask & (1 << c) == 0 {
+                continue;
+            }
+            let (ra, rb, rc) = (self.row(a, c), self.row(b, c), self.row(c3, c));
+            let (sa, sb, sc) = (&self.rows[ra], &self.rows[rb], &self.rows[rc]);
+            let out = &mut self.tmp[c];
+            for l in 0..LANES {
+                out[l] = f(
+                    modify(sa[l], am, ax),
+                    modify(sb[l], bm, bx),
+                    modify(sc[l], cm, cx),
+                );
+            }
+        }
+        self.store::<false>(d, mask);
+    }
+
+    /// Scalar op on the source's first swizzle component (the replicate
+    /// swizzle), replicated to every written component.
+    #[inline(always)]
+    pub(super) fn scalar1(&mut self, d: DstOp, a: SrcOp, f: impl Fn(f32) -> f32) {
+        let (am, ax) = a.mod_bits();
+        let ra = self.row(a, 0);
+        let src = &self.rows[ra];
+        let out = &mut self.tmp[0];
+        for l in 0..LANES {
+            out[l] = f(modify(src[l], am, ax));
+        }
+        self.store::<true>(d, d.mask());
+    }
+
+    pub(super) fn pow(&mut self, d: DstOp, a: SrcOp, b: SrcOp) {
+        let (am, ax) = a.mod_bits();
+        let (bm, bx) = b.mod_bits();
+        let (ra, rb) = (self.row(a, 0), self.row(b, 0));
+        let (sa, sb) = (&self.rows[ra], &self.rows[rb]);
+        let out = &mut self.tmp[0];
+        for l in 0..LANES {
+            out[l] = math::pow(modify(sa[l], am, ax), modify(sb[l], bm, bx));
+        }
+        self.store::<true>(d, d.mask());
+    }
+
+    /// `N`-component dot product of `a` and `b` into `tmp[k]`, summed left
+    /// to right in f32.
+    #[inline(always)]
+    pub(super) fn dot<const N: usize>(&mut self, _d: DstOp, a: SrcOp, b: SrcOp, k: usize) {
+        let (am, ax) = a.mod_bits();
+        let (bm, bx) = b.mod_bits();
+        let ra: [usize; N] = std::array::from_fn(|c| self.row(a, c));
+        let rb: [usize; N] = std::array::from_fn(|c| self.row(b, c));
+        let sa: [&[f32; LANES]; N] = std::array::from_fn(|c| &self.rows[ra[c]]);
+        let sb: [&[f32; LANES]; N] = std::array::from_fn(|c| &self.rows[rb[c]]);
+        let out = &mut self.tmp[k];
+        for l in 0..LANES {
+            let mut s = modify(sa[0][l], am, ax) * modify(sb[0][l], bm, bx);
+            for c in 1..N {
+                s += modify(sa[c][l], am, ax) * modify(sb[c][l], bm, bx);
+            }
+            out[l] = s;
+        }
+    }
+
+    /// `dp2add`: a.x·b.x + a.y·b.y + c (c's replicate component).
+    pub(super) fn dp2add(&mut self, d: DstOp, a: SrcOp, b: SrcOp, c3: SrcOp) {
+        self.dot::<2>(d, a, b, 0);
+        let (cm, cx) = c3.mod_bits();
+        let rc = self.row(c3, 0);
+        let sc = &self.rows[rc];
+        let out = &mut self.tmp[0];
+        for l in 0..LANES {
+            out[l] += modify(sc[l], cm, cx);
+        }
+        self.store::<true>(d, d.mask());
+    }
+
+    /// `m4x4` … `m3x2`: component k is the dot product with register b + k;
+    /// components from `n` on are left untouched.
+    pub(super) fn matrix(&mut self, d: DstOp, a: SrcOp, b: SrcOp, n: u8, dims: u8) {
+        let n = (n as usize).min(4);
+        for k in 0..n {
+            let bk = SrcOp {
+                row: b.row + 4 * k as u16,
+                ..b
+            };
+            if dims == 3 {
+                self.dot::<3>(d, a, bk, k);
+            } else {
+                self.dot::<4>(d, a, bk, k);
+            }
+        }
+        self.store::<false>(d, d.mask() & ((1u8 << n) - 1));
+    }
+
+    /// `crs`: cross product of xyz; w is never written.
+    pub(super) fn crs(&mut self, d: DstOp, a: SrcOp, b: SrcOp) {
+        let (am, ax) = a.mod_bits();
+        let (bm, bx) = b.mod_bits();
+        let ra: [usize; 3] = std::array::from_fn(|c| self.row(a, c));
+        let rb: [usize; 3] = std::array::from_fn(|c| self.row(b, c));
+        for c in 0..3 {
+            let (i, j) = ((c + 1) % 3, (c + 2) % 3);
+            let (ai, aj) = (&self.rows[ra[i]], &self.rows[ra[j]]);
+            let (bi, bj) = (&self.rows[rb[i]], &self.rows[rb[j]]);
+            let out = &mut self.tmp[c];
+            for l in 0..LANES {
+                out[l] = modify(ai[l], am, ax) * modify(bj[l], bm, bx)
+                    - modify(aj[l], am, ax) * modify(bi[l], bm, bx);
+            }
+        }
+        self.store::<false>(d, d.mask() & 0b0111);
+    }
+
+    /// `nrm`: src · (1/sqrt(x²+y²+z²)), FLT_MAX for a zero length (MS
+    /// `nrm---ps`), applied to all four components.
+    pub(super) fn nrm(&mut self, d: DstOp, a: SrcOp) {
+        let (am, ax) = a.mod_bits();
+        let r: [usize; 4] = std::array::from_fn(|c| self.row(a, c));
+        let s: [&[f32; LANES]; 4] = std::array::from_fn(|c| &self.rows[r[c]]);
+        let mut scale = [0.0f32; LANES];
+        for l in 0..LANES {
+            let (x, y, z) = (
+                modify(s[0][l], am, ax),
+                modify(s[1][l], am, ax),
+                modify(s[2][l], am, ax),
+            );
+            scale[l] = math::nrm_scale(x * x + y * y + z * z);
+        }
+        for c in 0..4 {
+            let out = &mut self.tmp[c];
+            for l in 0..LANES {
+                out[l] = modify(s[c][l], am, ax) * scale[l];
+            }
+        }
+        self.store::<false>(d, d.mask());
+    }
+
+    /// `sincos`: x = cos, y = sin of the replicate component; z and w are
+    /// left untouched (ps_3_0 form, MS `sincos---ps`).
+    pub(super) fn sincos(&mut self, d: DstOp, a: SrcOp) {
+        let (am, ax) = a.mod_bits();
+        let ra = self.row(a, 0);
+        let src = &self.rows[ra];
+        let [t0, t1, _, _] = &mut self.tmp;
+        for l in 0..LANES {
+            let v = modify(src[l], am, ax);
+            t0[l] = v.cos();
+            t1[l] = v.sin();
+        }
+        self.store::<false>(d, d.mask() & 0b0011);
+    }
+
+    /// Coarse `dsx` (`neighbour` 1: top-right − top-left) or `dsy`
+    /// (`neighbour` 2: bottom-left − top-left), one value per quad.
+    pub(super) fn deriv(&mut self, d: DstOp, a: SrcOp, neighbour: usize) {
+        let (am, ax) = a.mod_bits();
+        let mask = d.mask();
+        for c in 0..4 {
+            if mask & (1 << c) == 0 {
+                continue;
+            }
+            let ra = self.row(a, c);
+            let src = &self.rows[ra];
+            let out = &mut self.tmp[c];
+            for q in (0..LANES).step_by(4) {
+                let v = modify(src[q + neighbour], am, ax) - modify(src[q], am, ax);
+                out[q..q + 4].copy_from_slice(&[v; 4]);
+            }
+        }
+        self.store::<false>(d, mask);
+    }
+
+    /// Lanes where `a.c <cmp> b.c` holds, for component `c` of the swizzles.
+    #[inline(always)]
+    fn compare_comp(&self, cmp: Compare, a: SrcOp, b: SrcOp, c: usize) -> u64 {
+        let (am, ax) = a.mod_bits();
+        let (bm, bx) = b.mod_bits();
+        let sa = &self.rows[self.row(a, c)];
+        let sb = &self.rows[self.row(b, c)];
+        #[inline(always)]
+        fn bits(
+            sa: &[f32; LANES],
+            sb: &[f32; LANES],
+            (am, ax, bm, bx): (u32, u32, u32, u32),
+            f: impl Fn(f32, f32) -> bool,
+        ) -> u64 {
+            let mut m = 0u64;
+            for l in 0..LANES {
+                m |= (f(modify(sa[l], am, ax), modify(sb[l], bm, bx)) as u64) << l;
+            }
+            m
+        }
+        let mods = (am, ax, bm, bx);
+        match cmp {
+            Compare::Gt => bits(sa, sb, mods, |x, y| x > y),
+            Compare::Lt => bits(sa, sb, mods, |x, y| x < y),
+            Compare::Ge => bits(sa, sb, mods, |x, y| x >= y),
+            Compare::Le => bits(sa, sb, mods, |x, y| x <= y),
+            Compare::Eq => bits(sa, sb, mods, |x, y| x == y),
+            Compare::Ne => bits(sa, sb, mods, |x, y| x != y),
+        }
+    }
+
+    /// `if_cmp` / `break_cmp`: compares the replicate components.
+    pub(super) fn compare(&self, cmp: Compare, a: SrcOp, b: SrcOp) -> u64 {
+        self.compare_comp(cmp, a, b, 0)
+    }
+
+    /// `setp_cmp p0.mask, a, b` (MS `setp-comp---ps`).
+    pub(super) fn setp(&mut self, d: DstOp, a: SrcOp, b: SrcOp, cmp: Compare) {
+        for c in 0..4 {
+            if d.mask() & (1 << c) == 0 {
+                continue;
+            }
+            let bits = self.compare_comp(cmp, a, b, c);
+            let lanes = self.write_mask(d, c);
+            self.p[c] = (self.p[c] & !lanes) | (bits & lanes);
+        }
+    }
+
+    /// `texkill`: lanes to kill — any of the operand's x, y, z (those in its
+    /// mask) below zero (MS `texkill---ps`); predication applies per
+    /// component.
+    pub(super) fn texkill(&self, d: DstOp) -> u64 {
+        let mut kill = 0u64;
+        for c in 0..3 {
+            if d.mask() & (1 << c) == 0 {
+                continue;
+            }
+            let src = &self.rows[d.row as usize + c];
+            let mut m = 0u64;
+            for l in 0..LANES {
+                m |= ((src[l] < 0.0) as u64) << l;
+            }
+            kill |= m & self.write_mask(d, c);
+        }
+        kill
+    }
+}

@@ -1,0 +1,886 @@
+//! The batch executor: one decode per op for [`LANES`] pixels, with per-lane
+//! execution masks for divergent flow control and per-lane slot counting.
+//!
+//! This file holds the worker state, the dispatch loop and flow control; the
+//! arithmetic and texture handlers are in `arith.rs`.
+//!
+//! Masks are `u64` bit sets, bit `l` = lane `l`:
+//! * `live`: lanes of quads that touch the target that have not finished
+//!   (`ret` in main). Lanes killed by `texkill` stay live: D3D9's texkill
+//!   only marks the pixel discarded, the lane keeps executing (and paying,
+//!   as in the cost model) and stays a valid neighbour for derivatives. Lanes outside the target in such a quad are *helper* lanes:
+//!   they execute like the others (so a quad's `dsx`/`dsy` see real
+//!   neighbour values, whatever other quads of the batch do) but are never
+//!   reported; a helper lane exceeding the executed limit is dropped instead
+//!   of failing the draw;
+//! * `exec`: lanes executing the current op (`exec ⊆ live`). Lanes of `live`
+//!   not in `exec` wait in a [`Frame`]: the other side of an `if`, lanes that
+//!   left a loop by `break`, or lanes that did not take a `callnz`.
+//!
+//! When `exec == live` an op writes every lane without looking at masks (dead
+//! lanes' registers are never read back) and its slots go to one batch-wide
+//! counter (`uniform`), flushed into the per-lane counts whenever `live`
+//! changes.
+
+// Lane loops index several fixed-size rows with one lane index; that is
+// clearer than zipped iterators and vectorises the same.
+#![allow(clippy::needless_range_loop)]
+
+use super::compile::{Cond, Op};
+use super::texop::{quads_all, quads_any, SiteBatch};
+use super::{EmuError, RunCtx, LANES};
+
+/// A flow-control construct in progress.
+#[derive(Clone, Copy, Debug)]
+enum Frame {
+    /// Lanes waiting for the other side of the `if`, and the `else` slots
+    /// the else-side lanes pay when they reach `endif` (0 before `else`).
+    If { pending: u64 },
+    /// A rep or loop: lanes that broke out, iterations left after the current
+    /// one, aL step, the aL to restore on exit, and the `endrep`/`endloop` op.
+    Loop {
+        broken: u64,
+        remaining: u32,
+        step: i32,
+        prev_al: i32,
+        end: u32,
+    },
+    /// A call: where to return, lanes that did not call (`callnz`), lanes that
+    /// already returned.
+    Call {
+        ret: u32,
+        waiting: u64,
+        returned: u64,
+    },
+}
+
+impl Frame {
+    /// Lanes parked in this frame.
+    fn parked(&self) -> u64 {
+        match *self {
+            Frame::If { pending, .. } => pending,
+            Frame::Loop { broken, .. } => broken,
+            Frame::Call { waiting, .. } => waiting,
+        }
+    }
+}
+
+/// What one batch produced.
+pub(crate) struct BatchOut {
+    pub color: [[[f32; 4]; LANES]; 4],
+    pub depth: [f32; LANES],
+    /// Bit i: `oC#` written by some lane (bit 4: oDepth).
+    pub written: u8,
+    pub killed: u64,
+    pub executed: [u64; LANES],
+    /// Executed slots of each quad: each op once per quad with any lane in
+    /// it executing.
+    pub quad_executed: [u64; LANES / 4],
+    /// Bit 4q: quad q ran some op with some but not all of its lanes.
+    pub diverged: u64,
+    /// What each gradient site saw ([`super::Compiled`]'s site order).
+    pub sites: Vec<SiteBatch>,
+}
+
+/// Per-thread executor state, reused across batches (nothing is allocated
+/// while a batch runs once the control stack has grown to its depth).
+pub(crate) struct Worker<'c, 'a> {
+    pub(super) ctx: &'c RunCtx<'c, 'a>,
+    /// Register rows ([`super::compile::Layout`]).
+    pub(super) rows: Vec<[f32; LANES]>,
+    /// Result scratch: one row per destination component.
+    pub(super) tmp: [[f32; LANES]; 4],
+    /// Operand scratch (texture coordinates).
+    pub(super) aux: [[f32; LANES]; 2],
+    /// Per-lane level of detail scratch (texture instructions).
+    pub(super) lod: [f32; LANES],
+    /// Per gradient site, this batch.
+    pub(super) sites: Vec<SiteBatch>,
+    quad_counts: [u64; LANES / 4],
+    /// Bit 4q: quad q has diverged.
+    diverged: u64,
+    /// p0, one lane mask per channel.
+    pub(super) p: [u64; 4],
+    pub(super) exec: u64,
+    pub(super) live: u64,
+    killed: u64,
+    /// Lanes inside the target (reported; the others are helpers).
+    target: u64,
+    counts: [u64; LANES],
+    /// Slots charged to every lane of `live` since the last flush.
+    uniform: u64,
+    /// Upper bound of `counts` (for a cheap executed-limit check).
+    bound: u64,
+    stack: Vec<Frame>,
+    calls: u32,
+    pub(super) al: i32,
+    pub(super) written: u8,
+    batch: u64,
+}
+
+fn malformed(pc: usize, reason: &str) -> EmuError {
+    EmuError::Malformed {
+        index: pc,
+        reason: reason.to_string(),
+    }
+}
+
+/// Lanes whose bit is set in `m`.
+#[inline(always)]
+fn lanes(mut m: u64) -> impl Iterator<Item = usize> {
+    std::iter::from_fn(move || {
+        if m == 0 {
+            None
+        } else {
+            let l = m.trailing_zeros() as usize;
+            m &= m - 1;
+            Some(l)
+        }
+    })
+}
+
+impl<'c, 'a> Worker<'c, 'a> {
+    pub fn new(ctx: &'c RunCtx<'c, 'a>) -> Worker<'c, 'a> {
+        let layout = &ctx.compiled.layout;
+        let mut rows = vec![[0.0f32; LANES]; layout.rows];
+        for (&(row, _), value) in layout.consts.iter().zip(&ctx.consts) {
+            for c in 0..4 {
+                rows[row as usize + c] = [value[c]; LANES];
+            }
+        }
+        // vFace: +1 (front face) in every component.
+        for c in 0..4 {
+            rows[layout.face as usize + c] = [1.0; LANES];
+        }
+        Worker {
+            ctx,
+            rows,
+            tmp: [[0.0; LANES]; 4],
+            aux: [[0.0; LANES]; 2],
+            lod: [0.0; LANES],
+            sites: vec![SiteBatch::default(); ctx.compiled.sites.len()],
+            quad_counts: [0; LANES / 4],
+            diverged: 0,
+            p: [0; 4],
+            exec: 0,
+            live: 0,
+            killed: 0,
+            target: 0,
+            counts: [0; LANES],
+            uniform: 0,
+            bound: 0,
+            stack: Vec::with_capacity(16),
+            calls: 0,
+            al: 0,
+            written: 0,
+            batch: 0,
+        }
+    }
+
+    /// Runs batch `batch` from scratch.
+    pub fn run(&mut self, batch: u64) -> Result<Box<BatchOut>, EmuError> {
+        let ctx = self.ctx;
+        let layout = &ctx.compiled.layout;
+        self.batch = batch;
+        for r in layout.reset.clone() {
+            self.rows[r] = [0.0; LANES];
+        }
+        let mut target = 0u64;
+        let mut xs = [0.0f32; LANES];
+        let mut ys = [0.0f32; LANES];
+        for l in 0..LANES {
+            let (x, y, inside) = ctx.lane_pixel(batch, l);
+            target |= (inside as u64) << l;
+            xs[l] = x as f32;
+            ys[l] = y as f32;
+        }
+        for (v, input) in ctx.inputs.iter().enumerate() {
+            if let Some(input) = input {
+                for c in 0..4 {
+                    let row = &mut self.rows[layout.input as usize + 4 * v + c];
+                    for l in 0..LANES {
+                        row[l] = input.base[c] + xs[l] * input.ddx[c] + ys[l] * input.ddy[c];
+                    }
+                }
+            }
+        }
+        let pos = layout.pos as usize;
+        self.rows[pos] = xs;
+        self.rows[pos + 1] = ys;
+        self.p = [0; 4];
+        // Whole quads run when any of their pixels is inside the target.
+        let mut live = 0u64;
+        for q in (0..LANES).step_by(4) {
+            if target & (0xf << q) != 0 {
+                live |= 0xf << q;
+            }
+        }
+        self.target = target;
+        self.exec = live;
+        self.live = live;
+        self.killed = 0;
+        self.counts = [0; LANES];
+        self.quad_counts = [0; LANES / 4];
+        self.diverged = 0;
+        self.sites.fill(SiteBatch::default());
+        self.uniform = 0;
+        self.bound = 0;
+        self.stack.clear();
+        self.calls = 0;
+        self.al = 0;
+        self.written = 0;
+
+        let mut out = Box::new(BatchOut {
+            color: [[[0.0; 4]; LANES]; 4],
+            depth: [0.0; LANES],
+            written: 0,
+            killed: 0,
+            executed: [0; LANES],
+            quad_executed: [0; LANES / 4],
+            diverged: 0,
+            sites: Vec::new(),
+        });
+        if target != 0 {
+            self.execute(&mut out)?;
+        }
+        self.flush();
+        self.check_limit(true)?;
+        self.save_outputs(self.live, &mut out);
+        // A discarded pixel reports zeros.
+        for l in lanes(self.killed) {
+            for k in 0..4 {
+                out.color[k][l] = [0.0; 4];
+            }
+            out.depth[l] = 0.0;
+        }
+        out.written = self.written;
+        out.killed = self.killed & self.target;
+        out.executed = self.counts;
+        out.quad_executed = self.quad_counts;
+        out.diverged = self.diverged;
+        let ctx = self.ctx;
+        out.sites = self.sites.clone();
+        for (st, info) in out.sites.iter_mut().zip(&ctx.compiled.sites) {
+            let bias = info
+                .sampler
+                .and_then(|s| ctx.samplers.get(s as usize))
+                .and_then(|s| s.as_ref())
+                .map_or(0.0, |s| s.bias());
+            st.finish(bias);
+        }
+        Ok(out)
+    }
+
+    // ----- counting -------------------------------------------------------
+
+    /// Charges `slots` to every lane of `mask`, and once to every quad with
+    /// a lane in `mask`; a quad with some but not all four lanes in `mask`
+    /// has diverged.
+    #[inline(always)]
+    pub(super) fn charge(&mut self, mask: u64, slots: u8) {
+        if mask == self.live {
+            self.uniform += slots as u64;
+        } else if mask != 0 {
+            let s = slots as u64;
+            self.bound += s;
+            for l in lanes(mask) {
+                self.counts[l] += s;
+            }
+            let any = quads_any(mask);
+            self.diverged |= any & !quads_all(mask);
+            for q in lanes(any) {
+                self.quad_counts[q / 4] += s;
+            }
+        }
+    }
+
+    /// Charges the executing lanes; false if there are none (skip the op).
+    #[inline(always)]
+    pub(super) fn begin(&mut self, slots: u8) -> bool {
+        if self.exec == 0 {
+            return false;
+        }
+        self.charge(self.exec, slots);
+        true
+    }
+
+    fn flush(&mut self) {
+        if self.uniform != 0 {
+            for l in lanes(self.live) {
+                self.counts[l] += self.uniform;
+            }
+            for q in lanes(quads_any(self.live)) {
+                self.quad_counts[q / 4] += self.uniform;
+            }
+            self.bound += self.uniform;
+            self.uniform = 0;
+        }
+    }
+
+    /// Fails if a pixel exceeded the executed-slot limit (helper lanes over
+    /// it are dropped). Cheap unless the bound says a lane might be over;
+    /// `exact` forces the per-lane check.
+    fn check_limit(&mut self, exact: bool) -> Result<(), EmuError> {
+        let cap = self.ctx.cap;
+        if !exact && self.bound + self.uniform <= cap {
+            return Ok(());
+        }
+        let mut over = 0u64;
+        for l in 0..LANES {
+            let own = if self.live & (1 << l) != 0 {
+                self.uniform
+            } else {
+                0
+            };
+            let total = self.counts[l] + own;
+            if total > cap {
+                if self.target & (1 << l) != 0 {
+                    let (x, y, _) = self.ctx.lane_pixel(self.batch, l);
+                    return Err(EmuError::ExecutedLimit {
+                        x: x as u32,
+                        y: y as u32,
+                        executed: total,
+                        limit: cap,
+                    });
+                }
+                over |= 1 << l;
+            }
+        }
+        if over & self.live != 0 {
+            self.flush();
+            self.live &= !over;
+            self.exec &= !over;
+        }
+        self.bound = (0..LANES)
+            .filter(|&l| self.live & (1 << l) != 0)
+            .map(|l| self.counts[l])
+            .max()
+            .unwrap_or(0);
+        Ok(())
+    }
+
+    // ----- lanes leaving --------------------------------------------------
+
+    /// `ret` in main: the lanes finish now; their outputs are saved because
+    /// later full-mask ops may overwrite their (no longer live) rows.
+    fn retire(&mut self, mask: u64, out: &mut BatchOut) {
+        if mask != 0 {
+            self.flush();
+            self.save_outputs(mask, out);
+            self.live &= !mask;
+            self.exec &= !mask;
+        }
+    }
+
+    fn save_outputs(&self, mask: u64, out: &mut BatchOut) {
+        let base = self.ctx.compiled.layout.output as usize;
+        for l in lanes(mask) {
+            for k in 0..4 {
+                let r = base + 4 * k;
+                out.color[k][l] = std::array::from_fn(|c| self.rows[r + c][l]);
+            }
+            out.depth[l] = self.rows[base + 16][l];
+        }
+    }
+
+    /// The first executing lane's pixel (for error messages).
+    fn first_pixel(&self) -> (u32, u32) {
+        let l = if self.exec != 0 {
+            self.exec.trailing_zeros() as usize
+        } else {
+            0
+        };
+        let (x, y, _) = self.ctx.lane_pixel(self.batch, l);
+        (x as u32, y as u32)
+    }
+
+    // ----- aL ---------------------------------------------------------------
+
+    fn set_al(&mut self, al: i32) {
+        self.al = al;
+        if self.ctx.compiled.reads_al {
+            let r = self.ctx.compiled.layout.al as usize;
+            for c in 0..4 {
+                self.rows[r + c] = [al as f32; LANES];
+            }
+        }
+    }
+
+    /// Pops frames above `keep` (exclusive), restoring aL of popped loops.
+    fn unwind_to(&mut self, keep: usize) {
+        while self.stack.len() > keep {
+            if let Some(Frame::Loop { prev_al, .. }) = self.stack.pop() {
+                self.set_al(prev_al);
+            }
+        }
+    }
+
+    // ----- conditions -------------------------------------------------------
+
+    #[inline(always)]
+    fn cond_mask(&self, cond: Cond) -> u64 {
+        match cond {
+            Cond::Bool { index, not } => {
+                if (self.ctx.bools >> index) & 1 != 0 && !not
+                    || (self.ctx.bools >> index) & 1 == 0 && not
+                {
+                    !0
+                } else {
+                    0
+                }
+            }
+            Cond::Pred { chan, not } => self.p[chan as usize & 3] ^ if not { !0 } else { 0 },
+        }
+    }
+
+    // ----- the dispatch loop ----------------------------------------------
+
+    fn execute(&mut self, out: &mut BatchOut) -> Result<(), EmuError> {
+        let ctx = self.ctx;
+        let ops = &ctx.compiled.ops[..];
+        let mut pc = 0usize;
+        loop {
+            let Some(&m) = ops.get(pc) else {
+                return Err(malformed(pc, "jump past the end of the program"));
+            };
+            let at = pc;
+            pc += 1;
+            let s = m.slots;
+            match m.op {
+                Op::Nop => {
+                    self.begin(s);
+                }
+                Op::Mov { d, a } => {
+                    if self.begin(s) {
+                        self.map1(d, a, |x| x)
+                    }
+                }
+                Op::Add { d, a, b } => {
+                    if self.begin(s) {
+                        self.map2(d, a, b, |x, y| x + y)
+                    }
+                }
+                Op::Sub { d, a, b } => {
+                    if self.begin(s) {
+                        self.map2(d, a, b, |x, y| x - y)
+                    }
+                }
+                Op::Mul { d, a, b } => {
+                    if self.begin(s) {
+                        self.map2(d, a, b, |x, y| x * y)
+                    }
+                }
+                Op::Mad { d, a, b, c } => {
+                    if self.begin(s) {
+                        self.map3(d, a, b, c, super::math::mad)
+                    }
+                }
+                Op::Min { d, a, b } => {
+                    if self.begin(s) {
+                        self.map2(d, a, b, super::math::min)
+                    }
+                }
+                Op::Max { d, a, b } => {
+                    if self.begin(s) {
+                        self.map2(d, a, b, super::math::max)
+                    }
+                }
+                Op::Lrp { d, a, b, c } => {
+                    if self.begin(s) {
+                        self.map3(d, a, b, c, super::math::lrp)
+                    }
+                }
+                Op::Cmp { d, a, b, c } => {
+                    if self.begin(s) {
+                        self.map3(d, a, b, c, super::math::cmp)
+                    }
+                }
+                Op::Frc { d, a } => {
+                    if self.begin(s) {
+                        self.map1(d, a, super::math::frc)
+                    }
+                }
+                Op::Abs { d, a } => {
+                    if self.begin(s) {
+                        self.map1(d, a, f32::abs)
+                    }
+                }
+                Op::Rcp { d, a } => {
+                    if self.begin(s) {
+                        self.scalar1(d, a, super::math::rcp)
+                    }
+                }
+                Op::Rsq { d, a } => {
+                    if self.begin(s) {
+                        self.scalar1(d, a, super::math::rsq)
+                    }
+                }
+                Op::Exp { d, a } => {
+                    if self.begin(s) {
+                        self.scalar1(d, a, super::math::exp)
+                    }
+                }
+                Op::Log { d, a } => {
+                    if self.begin(s) {
+                        self.scalar1(d, a, super::math::log)
+                    }
+                }
+                Op::Pow { d, a, b } => {
+                    if self.begin(s) {
+                        self.pow(d, a, b)
+                    }
+                }
+                Op::Dp3 { d, a, b } => {
+                    if self.begin(s) {
+                        self.dot::<3>(d, a, b, 0);
+                        self.store::<true>(d, d.mask());
+                    }
+                }
+                Op::Dp4 { d, a, b } => {
+                    if self.begin(s) {
+                        self.dot::<4>(d, a, b, 0);
+                        self.store::<true>(d, d.mask());
+                    }
+                }
+                Op::Dp2Add { d, a, b, c } => {
+                    if self.begin(s) {
+                        self.dp2add(d, a, b, c)
+                    }
+                }
+                Op::Mat { d, a, b, n, dims } => {
+                    if self.begin(s) {
+                        self.matrix(d, a, b, n, dims)
+                    }
+                }
+                Op::Crs { d, a, b } => {
+                    if self.begin(s) {
+                        self.crs(d, a, b)
+                    }
+                }
+                Op::Nrm { d, a } => {
+                    if self.begin(s) {
+                        self.nrm(d, a)
+                    }
+                }
+                Op::SinCos { d, a } => {
+                    if self.begin(s) {
+                        self.sincos(d, a)
+                    }
+                }
+                Op::Dsx { d, a, site } => {
+                    if self.begin(s) {
+                        self.note_site(site);
+                        self.deriv(d, a, 1)
+                    }
+                }
+                Op::Dsy { d, a, site } => {
+                    if self.begin(s) {
+                        self.note_site(site);
+                        self.deriv(d, a, 2)
+                    }
+                }
+                Op::Setp { d, a, b, cmp } => {
+                    if self.begin(s) {
+                        self.setp(d, a, b, cmp)
+                    }
+                }
+                Op::TexKill { d } => {
+                    if self.begin(s) {
+                        self.killed |= self.texkill(d);
+                    }
+                }
+                Op::Tex {
+                    d,
+                    a,
+                    s: smp,
+                    kind,
+                    site,
+                } => {
+                    if self.begin(s) {
+                        self.texld(d, a, smp, kind, site)
+                    }
+                }
+                Op::TexD {
+                    d,
+                    a,
+                    s: smp,
+                    grads,
+                } => {
+                    if self.begin(s) {
+                        let Some(&(gx, gy)) = ctx.compiled.grads.get(grads as usize) else {
+                            return Err(malformed(at, "texldd gradients missing"));
+                        };
+                        self.texldd(d, a, smp, gx, gy)
+                    }
+                }
+
+                // ----- if / else / endif ----------------------------------
+                Op::If { cond, target } => {
+                    let entry = self.exec;
+                    let taken = entry & self.cond_mask(cond);
+                    pc = self.enter_if(entry, taken, s, pc, target.get());
+                }
+                Op::Ifc { cmp, a, b, target } => {
+                    let entry = self.exec;
+                    let taken = if entry == 0 {
+                        0
+                    } else {
+                        entry & self.compare(cmp, a, b)
+                    };
+                    pc = self.enter_if(entry, taken, s, pc, target.get());
+                }
+                Op::Else { target } => {
+                    // Both sides pay `else`, as the cost model charges it:
+                    // then-side lanes as they reach it, else-side lanes as
+                    // they enter their branch (so a lane that later breaks
+                    // out of the else-side has paid it, and a lane that
+                    // broke out of the then-side has not).
+                    let Some(Frame::If { pending }) = self.stack.last_mut() else {
+                        return Err(malformed(at, "else without if"));
+                    };
+                    let other = *pending;
+                    *pending = self.exec;
+                    let then_side = self.exec;
+                    self.exec = other;
+                    self.charge(then_side | other, s);
+                    if self.exec == 0 {
+                        pc = target.get();
+                    }
+                }
+                Op::EndIf => {
+                    let Some(Frame::If { pending }) = self.stack.pop() else {
+                        return Err(malformed(at, "endif without if"));
+                    };
+                    self.exec |= pending;
+                    self.charge(self.exec, s);
+                }
+
+                // ----- rep / loop ------------------------------------------
+                Op::Rep { int, end } | Op::Loop { int, end } => {
+                    let entry = self.exec;
+                    if entry == 0 {
+                        pc = end.get() + 1;
+                        continue;
+                    }
+                    self.charge(entry, s);
+                    // Checked at draw setup: count and start 0..=255, step
+                    // -128..=127.
+                    let i = ctx.ints[int as usize & 15];
+                    if i[0] <= 0 {
+                        pc = end.get() + 1;
+                        continue;
+                    }
+                    let is_loop = matches!(m.op, Op::Loop { .. });
+                    self.stack.push(Frame::Loop {
+                        broken: 0,
+                        remaining: (i[0] - 1) as u32,
+                        step: if is_loop { i[2] } else { 0 },
+                        prev_al: self.al,
+                        end: end.get() as u32,
+                    });
+                    if is_loop {
+                        self.set_al(i[1]);
+                    }
+                }
+                Op::EndRep { start } | Op::EndLoop { start } => {
+                    let Some(&Frame::Loop {
+                        broken,
+                        remaining,
+                        step,
+                        prev_al,
+                        ..
+                    }) = self.stack.last()
+                    else {
+                        return Err(malformed(at, "endrep/endloop without rep/loop"));
+                    };
+                    self.charge(self.exec, s);
+                    if remaining > 0 && self.exec != 0 {
+                        self.check_limit(false)?;
+                        if let Some(Frame::Loop { remaining, .. }) = self.stack.last_mut() {
+                            *remaining -= 1;
+                        }
+                        if step != 0 {
+                            self.set_al(self.al.wrapping_add(step));
+                        }
+                        let head = ops
+                            .get(start.get())
+                            .ok_or_else(|| malformed(at, "loop start out of range"))?;
+                        self.charge(self.exec, head.slots);
+                        pc = start.get() + 1;
+                    } else {
+                        self.stack.pop();
+                        self.exec |= broken;
+                        if self.al != prev_al {
+                            self.set_al(prev_al);
+                        }
+                    }
+                }
+                Op::Break => {
+                    if self.begin(s) {
+                        pc = self.leave_loop(self.exec, pc, at)?;
+                    }
+                }
+                Op::BreakC { cmp, a, b } => {
+                    if self.begin(s) {
+                        let leaving = self.exec & self.compare(cmp, a, b);
+                        pc = self.leave_loop(leaving, pc, at)?;
+                    }
+                }
+                Op::BreakP { chan, not } => {
+                    if self.begin(s) {
+                        let leaving = self.exec & self.cond_mask(Cond::Pred { chan, not });
+                        pc = self.leave_loop(leaving, pc, at)?;
+                    }
+                }
+
+                // ----- call / ret / label ----------------------------------
+                Op::Call { target } => {
+                    if self.begin(s) {
+                        pc = self.call(self.exec, pc, at, target.get())?;
+                    }
+                }
+                Op::CallNz { cond, target } => {
+                    if self.begin(s) {
+                        let calling = self.exec & self.cond_mask(cond);
+                        if calling != 0 {
+                            pc = self.call(calling, pc, at, target.get())?;
+                        }
+                    }
+                }
+                Op::Ret => {
+                    if self.calls == 0 {
+                        // ret in main ends the shader for these lanes.
+                        self.charge(self.exec, s);
+                        self.retire(self.exec, out);
+                        if self.live == 0 {
+                            return Ok(());
+                        }
+                    } else {
+                        self.charge(self.exec, s);
+                        pc = self.ret(pc, false)?;
+                    }
+                }
+                Op::Label => {
+                    // Falling into a label (or off the end): the function ends.
+                    if self.calls == 0 {
+                        return Ok(());
+                    }
+                    pc = self.ret(pc, true)?;
+                }
+            }
+        }
+    }
+
+    /// Enters an if whose entry lanes are `entry` and whose taken lanes are
+    /// `taken`; returns the next pc.
+    #[inline(always)]
+    fn enter_if(&mut self, entry: u64, taken: u64, slots: u8, pc: usize, target: usize) -> usize {
+        self.charge(entry, slots);
+        self.stack.push(Frame::If {
+            pending: entry & !taken,
+        });
+        self.exec = taken;
+        if taken == 0 {
+            target
+        } else {
+            pc
+        }
+    }
+
+    /// Moves `leaving` lanes out of the innermost loop; returns the next pc
+    /// (the loop's end op when nobody is left to run the rest of the body).
+    fn leave_loop(&mut self, leaving: u64, pc: usize, at: usize) -> Result<usize, EmuError> {
+        if leaving == 0 {
+            return Ok(pc);
+        }
+        let mut parked = 0u64;
+        let mut found = None;
+        for (i, f) in self.stack.iter().enumerate().rev() {
+            match f {
+                Frame::Loop { .. } => {
+                    found = Some(i);
+                    break;
+                }
+                Frame::Call { .. } => break,
+                Frame::If { pending, .. } => parked |= pending,
+            }
+        }
+        let Some(li) = found else {
+            return Err(malformed(at, "break outside rep/loop"));
+        };
+        let mut end = pc;
+        if let Frame::Loop { broken, end: e, .. } = &mut self.stack[li] {
+            *broken |= leaving;
+            end = *e as usize;
+        }
+        self.exec &= !leaving;
+        if self.exec == 0 && parked == 0 {
+            // Nobody runs the rest of this iteration: go straight to the end
+            // op, which sees no lanes and leaves the loop.
+            self.unwind_to(li + 1);
+            return Ok(end);
+        }
+        Ok(pc)
+    }
+
+    fn call(
+        &mut self,
+        calling: u64,
+        pc: usize,
+        at: usize,
+        target: usize,
+    ) -> Result<usize, EmuError> {
+        if self.calls >= crate::core::isa::MAX_CALL_NESTING {
+            let (x, y) = self.first_pixel();
+            return Err(EmuError::CallDepth { x, y, index: at });
+        }
+        self.stack.push(Frame::Call {
+            ret: pc as u32,
+            waiting: self.exec & !calling,
+            returned: 0,
+        });
+        self.calls += 1;
+        self.exec = calling;
+        Ok(target)
+    }
+
+    /// `ret` (or falling into the next label) inside a subroutine: the
+    /// executing lanes return. The call completes once no lane of the
+    /// function is parked in a frame above it (always, for a `ret` at the
+    /// function's top level); `implicit` forces completion.
+    fn ret(&mut self, pc: usize, implicit: bool) -> Result<usize, EmuError> {
+        let mut parked = 0u64;
+        let mut found = None;
+        for (i, f) in self.stack.iter().enumerate().rev() {
+            if let Frame::Call { .. } = f {
+                found = Some(i);
+                break;
+            }
+            parked |= f.parked();
+        }
+        let Some(ci) = found else {
+            return Err(malformed(pc - 1, "ret without call"));
+        };
+        let exec = self.exec;
+        if let Frame::Call { returned, .. } = &mut self.stack[ci] {
+            *returned |= exec;
+        }
+        self.exec = 0;
+        if parked != 0 && !implicit {
+            return Ok(pc);
+        }
+        self.unwind_to(ci + 1);
+        match self.stack.pop() {
+            Some(Frame::Call {
+                ret,
+                waiting,
+                returned,
+            }) => {
+                self.calls -= 1;
+                self.exec = returned | waiting;
+                Ok(ret as usize)
+            }
+            _ => Err(malformed(pc - 1, "ret without call")),
+        }
+    }
+}

@@ -1,0 +1,830 @@
+//! The emulator: runs a validated ps_3_0 shader over every pixel of a render
+//! target on the CPU, giving per-pixel outputs, texkill results and executed
+//! instruction-slot counts.
+//!
+//! It exists so ps30 can measure and check shaders without a Direct3D 9
+//! device: the luminance pipeline renders through it, and the executed-slot
+//! counts it reports must agree with the static cost model.
+//!
+//! How it works:
+//! * [`compile()`] turns a [`crate::core::ir::Shader`] into a flat list of small
+//!   `Copy` micro-ops ([`MicroOp`], 20 bytes) once: registers become row
+//!   offsets, jumps become op indices, every op carries its slot cost.
+//! * The executor runs [`LANES`] pixels in lockstep: lanes `4k..4k+3` are one
+//!   2×2 quad (top-left, top-right, bottom-left, bottom-right), quads are
+//!   taken in row-major order over the quad grid, 16 quads per batch.
+//!   Registers are structure-of-arrays (one row of lane values per register
+//!   component). Divergent flow control uses per-lane execution masks (`u64`
+//!   bit sets); when every live lane is active, ops run without any mask
+//!   checks.
+//! * Batches are independent, so [`run_with_threads`] spreads them over a
+//!   rayon pool; results are bit-identical for any thread count.
+//!
+//! Executed-slot rule (must match the static cost model): every executed
+//! instruction charges its static slots ([`crate::core::ir::Info::slots`]) to every
+//! lane executing it; `rep`/`loop` are charged once per iteration and
+//! `endrep`/`endloop` once per completed iteration; a rep/loop with zero
+//! iterations charges its own slots once; `if`/`endif` (and `else`) are
+//! charged to every lane that reaches them (both paths pass `else`); a
+//! `break` charges its own slots and a lane leaving through it does not reach
+//! (nor pay for) that iteration's `endrep`; `call`/`callnz` charge themselves,
+//! the callee and its `ret`; `label` costs 0; `ret` in main ends the lane.
+//! Lanes masked off pay nothing.
+//!
+//! Quads (see [`DrawOutput`]): a quad runs in lockstep, so it pays every
+//! executed op once if any of its four lanes — helpers included — executes
+//! it: [`DrawOutput::quad_executed`] is that count, the per-pixel counts
+//! above are each lane's own path. A quad is *divergent* at an op when some
+//! but not all four of its lanes execute it; [`DrawOutput::quad_divergent`]
+//! marks quads that were, and [`DrawOutput::gradients`] counts, per source
+//! statement of `dsx`, `dsy`, `texld`, `texldp`, `texldb`, the quads that
+//! ran it divergently — where the gradient reads neighbours that are not at
+//! the same point of execution (undefined in Direct3D for temporaries).
+//! Predication masks writes, not execution: a predicated op runs in every
+//! lane, so it never makes a quad divergent here (the validator still warns
+//! about predicated gradient instructions, as Microsoft's rejects them).
+//! Level-of-detail selection for the texld family is described in
+//! `texop.rs` and `sample.rs`.
+//!
+//! Semantic choices where the documentation is silent are listed beside the
+//! functions in `math.rs` and `sample.rs`, and here:
+//! * `texkill` marks the pixel discarded; the lane keeps executing and
+//!   paying (as in the static cost model, and as D3D9's texkill only flags
+//!   the pixel), and stays a valid neighbour for `dsx`/`dsy`. A discarded
+//!   pixel's colours and depth are reported as zero.
+//! * pixels outside the target that share a quad with pixels inside it run
+//!   as helper lanes (as on hardware): they execute with their own flow
+//!   control so `dsx`/`dsy` see real neighbour values, but they are never
+//!   counted or reported, and one that exceeds the executed limit is dropped
+//!   rather than failing the draw. A pixel's results therefore do not depend
+//!   on the other quads of its batch.
+//! * `dsx`/`dsy` are coarse: one difference per quad (top-right − top-left,
+//!   bottom-left − top-left), reading whatever the neighbour lane holds (its
+//!   last value if it is masked off or killed).
+//! * The sampler swizzle of texld (`s0.yzxw`) reorders the sampled result.
+//! * `texkill` tests the x, y, z components that its operand's mask selects.
+//! * `_pp` is ignored (computed in full f32 precision, which MS-MOD allows).
+//! * rep/loop integer constants outside Microsoft's ranges (count and loop
+//!   start 0..=255, step −128..=127) are refused with
+//!   [`EmuError::InvalidIntConstant`], as the cost model refuses them.
+//! * `log` and texel addressing are implemented here in plain f32 so they
+//!   are identical on every platform; `exp`, `pow`, `sincos` use Rust's
+//!   `f32` functions (the platform libm), whose last bit may differ between
+//!   platforms.
+
+mod arith;
+mod compile;
+mod exec;
+pub mod findings;
+mod math;
+mod sample;
+#[cfg(test)]
+mod testasm;
+#[cfg(test)]
+mod tests;
+mod texop;
+
+pub use compile::{compile, Compiled, MicroOp};
+
+use crate::core::isa::SamplerType;
+use exec::{BatchOut, Worker};
+use rayon::prelude::*;
+use sample::Sampler;
+use std::fmt;
+use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::{Arc, Mutex, OnceLock};
+
+/// Lanes per batch: 16 quads of 2×2 pixels.
+pub const LANES: usize = 64;
+const QUADS_PER_BATCH: u64 = (LANES / 4) as u64;
+/// Batches run between two merges of results into the output.
+const CHUNK: u64 = 1024;
+
+/// An interpolated input varying linearly over the target:
+/// `v#(x, y) = base + x·ddx + y·ddy` for integer pixel coordinates (D3D9 pixel
+/// centres are integers, facts sheet §2), evaluated in f32 as
+/// `(base + x·ddx) + y·ddy`.
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct LinearInput {
+    pub base: [f32; 4],
+    pub ddx: [f32; 4],
+    pub ddy: [f32; 4],
+}
+
+impl LinearInput {
+    /// The same value at every pixel.
+    pub fn constant(value: [f32; 4]) -> LinearInput {
+        LinearInput {
+            base: value,
+            ..LinearInput::default()
+        }
+    }
+
+    /// Value at pixel `(x, y)`.
+    pub fn at(&self, x: f32, y: f32) -> [f32; 4] {
+        std::array::from_fn(|c| self.base[c] + x * self.ddx[c] + y * self.ddy[c])
+    }
+}
+
+/// Constants set by the application (SetPixelShaderConstantF/I/B). Missing
+/// entries are zero / false; the shader's `def`/`defi`/`defb` override them.
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct Constants {
+    /// `c0..`, at most 224.
+    pub float: Vec<[f32; 4]>,
+    /// `i0..`, at most 16.
+    pub int: Vec<[i32; 4]>,
+    /// `b0..`, at most 16.
+    pub bool: Vec<bool>,
+}
+
+/// Texture filter within one mip level (D3DSAMP_MAGFILTER / MINFILTER).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Filter {
+    #[default]
+    Point,
+    Linear,
+}
+
+/// Filter between mip levels (D3DSAMP_MIPFILTER).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum MipFilter {
+    /// Mipmapping disabled: every sample reads the base level (Direct3D's
+    /// default).
+    #[default]
+    None,
+    /// The nearest level: round(LOD).
+    Point,
+    /// Blend the two nearest levels by frac(LOD).
+    Linear,
+}
+
+/// D3DTEXTUREADDRESS modes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Address {
+    Wrap,
+    Mirror,
+    Clamp,
+    #[default]
+    Border,
+    MirrorOnce,
+}
+
+/// Sampler state of one `s#`. The default is the luminance pass's: point
+/// filtering, BORDER addressing, border colour (0, 0, 0, 0), no mip
+/// filtering, no LOD bias, MAXMIPLEVEL 0 — Direct3D's defaults except for the
+/// addressing (Direct3D's own default is WRAP).
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct SamplerState {
+    /// D3DSAMP_MAGFILTER: used when the LOD is ≤ 0.
+    pub mag_filter: Filter,
+    /// D3DSAMP_MINFILTER: used when the LOD is > 0.
+    pub min_filter: Filter,
+    /// D3DSAMP_MIPFILTER.
+    pub mip_filter: MipFilter,
+    /// D3DSAMP_MIPMAPLODBIAS, added to every LOD.
+    pub mip_lod_bias: f32,
+    /// D3DSAMP_MAXMIPLEVEL: the most detailed level allowed (0 = level 0);
+    /// LODs below it are raised to it.
+    pub max_mip_level: u32,
+    pub address_u: Address,
+    pub address_v: Address,
+    pub border: [f32; 4],
+}
+
+impl SamplerState {
+    /// The same filter for magnification and minification, no mips.
+    pub fn filtered(filter: Filter) -> SamplerState {
+        SamplerState {
+            mag_filter: filter,
+            min_filter: filter,
+            ..SamplerState::default()
+        }
+    }
+}
+
+/// Textures are the image module's read-only texel views (one mip level,
+/// RGBA f32, row 0 at the top).
+pub use crate::core::image::Texture;
+
+/// A texture with its mip levels (see [`crate::core::image::MipChain`]).
+pub use crate::core::image::MipChain;
+
+/// What a sampler reads: one level, or a mip chain.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum TextureLevels<'a> {
+    /// A texture without mips (D3D9 `Levels = 1`).
+    Single(Texture<'a>),
+    /// A texture with its box-filtered mip levels.
+    Chain(&'a MipChain),
+}
+
+impl<'a> From<Texture<'a>> for TextureLevels<'a> {
+    fn from(t: Texture<'a>) -> Self {
+        TextureLevels::Single(t)
+    }
+}
+
+impl<'a> From<&'a MipChain> for TextureLevels<'a> {
+    fn from(c: &'a MipChain) -> Self {
+        TextureLevels::Chain(c)
+    }
+}
+
+impl<'a> TextureLevels<'a> {
+    /// Every level, level 0 first.
+    pub fn views(&self) -> Vec<Texture<'a>> {
+        match *self {
+            TextureLevels::Single(t) => vec![t],
+            TextureLevels::Chain(c) => c.views(),
+        }
+    }
+
+    /// Number of levels.
+    pub fn len(&self) -> usize {
+        match self {
+            TextureLevels::Single(_) => 1,
+            TextureLevels::Chain(c) => c.len(),
+        }
+    }
+
+    /// Always false: every binding has level 0.
+    pub fn is_empty(&self) -> bool {
+        false
+    }
+}
+
+/// Safety limits of a draw.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct EmuLimits {
+    /// Executed instruction slots allowed per pixel; exceeding it is
+    /// [`EmuError::ExecutedLimit`].
+    pub max_executed_per_pixel: u64,
+    /// Largest `width × height` accepted.
+    pub max_target_pixels: u64,
+}
+
+impl Default for EmuLimits {
+    fn default() -> EmuLimits {
+        EmuLimits {
+            max_executed_per_pixel: 10_000_000,
+            max_target_pixels: 1 << 24,
+        }
+    }
+}
+
+/// Everything one draw needs besides the compiled shader.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Draw<'a> {
+    pub target_width: u32,
+    pub target_height: u32,
+    /// `(v#, value)`; every input the shader declares must be supplied.
+    pub inputs: Vec<(u32, LinearInput)>,
+    pub constants: Constants,
+    /// `(s#, texture, state)`; a declared but unbound sampler reads
+    /// (0, 0, 0, 1). A [`Texture`] or a `&`[`MipChain`] converts with `.into()`.
+    pub samplers: Vec<(u32, TextureLevels<'a>, SamplerState)>,
+    pub limits: EmuLimits,
+    /// Record the range of levels of detail each texld/texldp/texldb
+    /// computes ([`GradientSite::lod`]). Off by default: on a single-level
+    /// texture the LOD changes nothing, and computing it for every quad of
+    /// every execution costs about 9% of the instructions of a texture-bound
+    /// shader such as the luminance pass. Divergence counts are always kept.
+    pub record_lod: bool,
+}
+
+impl<'a> Draw<'a> {
+    /// A draw over a `width × height` target with nothing bound.
+    pub fn new(width: u32, height: u32) -> Draw<'a> {
+        Draw {
+            target_width: width,
+            target_height: height,
+            inputs: Vec::new(),
+            constants: Constants::default(),
+            samplers: Vec::new(),
+            limits: EmuLimits::default(),
+            record_lod: false,
+        }
+    }
+}
+
+/// Per-pixel results, row-major (`index = y · width + x`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct DrawOutput {
+    pub width: u32,
+    pub height: u32,
+    /// One entry per `oC0..oC3`; `None` if no pixel executed a write to it.
+    pub color: Vec<Option<Vec<[f32; 4]>>>,
+    /// `oDepth`, `None` if no pixel executed a write to it.
+    pub depth: Option<Vec<f32>>,
+    /// Pixels discarded by `texkill`.
+    pub killed: Vec<bool>,
+    /// Executed instruction slots per pixel.
+    pub executed: Vec<u64>,
+    /// Quads per row: quad (qx, qy) covers pixels 2qx..2qx+1 × 2qy..2qy+1,
+    /// and is entry `qy · quads_x + qx` of the per-quad vectors.
+    pub quads_x: u32,
+    /// Executed instruction slots per quad: every executed op charged once
+    /// to each quad with at least one lane (helper lanes included) executing
+    /// it — what a quad running in lockstep pays.
+    pub quad_executed: Vec<u64>,
+    /// Quads that ran some op with some but not all four of their lanes.
+    pub quad_divergent: Vec<bool>,
+    /// What the quads saw at each gradient instruction (dsx, dsy, texld,
+    /// texldp, texldb), one entry per source statement.
+    pub gradients: Vec<GradientSite>,
+}
+
+/// One gradient-using source statement and what the quads did there.
+///
+/// A quad *executes it divergently* when some but not all of its four lanes
+/// (helpers included) run it: the neighbour values the gradient needs are
+/// then whatever the inactive lanes' registers hold, which Direct3D leaves
+/// undefined for temporaries (facts sheet §5). Counts are over quads that
+/// touch the target.
+#[derive(Clone, Debug, PartialEq)]
+pub struct GradientSite {
+    /// Index of its (first) instruction in the program.
+    pub instruction: usize,
+    pub span: crate::core::ir::Span,
+    pub op: crate::core::isa::Opcode,
+    /// The sampler of texld/texldp/texldb.
+    pub sampler: Option<u32>,
+    /// Whether the differenced operand (coordinate or dsx/dsy source) is a
+    /// temporary `r#` — only then is a divergent execution undefined; inputs
+    /// are interpolated for every pixel of the quad.
+    pub temp_source: bool,
+    /// Quads that executed it at least once.
+    pub quads: u64,
+    /// Quads that executed it divergently at least once.
+    pub divergent_quads: u64,
+    /// Quad-executions (a quad in a loop counts once per iteration).
+    pub executions: u64,
+    pub divergent_executions: u64,
+    /// Smallest and largest level of detail its executions computed (after
+    /// D3DSAMP_MIPMAPLODBIAS and texldb's bias, before MAXMIPLEVEL and the
+    /// chain's length clamp it); `None` for dsx/dsy, unbound samplers, sites
+    /// never executed and draws without [`Draw::record_lod`]. −∞ means a
+    /// zero gradient.
+    pub lod: Option<(f32, f32)>,
+}
+
+/// Why a compile or a draw failed.
+#[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
+pub enum EmuError {
+    /// The IR and its `Info` disagree, or use something the emulator cannot
+    /// represent (`index` is the instruction).
+    Malformed {
+        index: usize,
+        reason: String,
+    },
+    /// A texture instruction samples an `s#` without `dcl_*`.
+    MissingSamplerDecl {
+        index: usize,
+        sampler: u32,
+    },
+    TargetTooLarge {
+        width: u32,
+        height: u32,
+        limit: u64,
+    },
+    /// A pixel ran more executed slots than the limit allows.
+    ExecutedLimit {
+        x: u32,
+        y: u32,
+        executed: u64,
+        limit: u64,
+    },
+    /// `call`/`callnz` nested deeper than ps_3_0's 4 levels.
+    CallDepth {
+        x: u32,
+        y: u32,
+        index: usize,
+    },
+    /// The shader declares `v#` but the draw does not supply it.
+    MissingInput {
+        input: u32,
+    },
+    /// The draw supplies `v#` the shader does not declare.
+    InputNotDeclared {
+        input: u32,
+    },
+    /// The draw binds an `s#` the shader does not declare.
+    SamplerNotDeclared {
+        sampler: u32,
+    },
+    /// The same `v#` or `s#` given twice.
+    DuplicateBinding {
+        what: &'static str,
+        index: u32,
+    },
+    InvalidTexture {
+        sampler: u32,
+        reason: String,
+    },
+    /// Only 2D sampling is emulated; a cube or volume sampler is bound.
+    UnsupportedSampler {
+        sampler: u32,
+        ty: SamplerType,
+    },
+    TooManyConstants {
+        kind: &'static str,
+        given: usize,
+        max: usize,
+    },
+    /// An `i#` used by rep/loop is outside Microsoft's ranges.
+    InvalidIntConstant {
+        register: u32,
+        reason: String,
+    },
+    ThreadPool(String),
+}
+
+impl fmt::Display for EmuError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            EmuError::Malformed { index, reason } => {
+                write!(f, "instruction {}: cannot emulate: {}", index, reason)
+            }
+            EmuError::MissingSamplerDecl { index, sampler } => write!(
+                f,
+                "instruction {}: sampler s{} is used but not declared with dcl_2d/dcl_cube/dcl_volume",
+                index, sampler
+            ),
+            EmuError::TargetTooLarge {
+                width,
+                height,
+                limit,
+            } => write!(
+                f,
+                "render target {}x{} has more than {} pixels (raise the limit with --max-target-pixels)",
+                width, height, limit
+            ),
+            EmuError::ExecutedLimit {
+                x,
+                y,
+                executed,
+                limit,
+            } => write!(
+                f,
+                "pixel ({}, {}) executed {} instruction slots, more than the limit of {} (raise it with --max-executed-per-pixel)",
+                x, y, executed, limit
+            ),
+            EmuError::CallDepth { x, y, index } => write!(
+                f,
+                "pixel ({}, {}): call at instruction {} nests deeper than 4 calls",
+                x, y, index
+            ),
+            EmuError::MissingInput { input } => write!(
+                f,
+                "the shader declares v{} but the draw supplies no value for it",
+                input
+            ),
+            EmuError::InputNotDeclared { input } => write!(
+                f,
+                "the draw supplies v{} but the shader does not declare it",
+                input
+            ),
+            EmuError::SamplerNotDeclared { sampler } => write!(
+                f,
+                "the draw binds a texture to s{} but the shader does not declare it",
+                sampler
+            ),
+            EmuError::DuplicateBinding { what, index } => {
+                write!(f, "the draw gives {}{} more than once", what, index)
+            }
+            EmuError::InvalidTexture { sampler, reason } => {
+                write!(f, "texture bound to s{}: {}", sampler, reason)
+            }
+            EmuError::UnsupportedSampler { sampler, ty } => write!(
+                f,
+                "s{} is declared dcl_{}; only 2D textures can be emulated",
+                sampler,
+                ty.suffix()
+            ),
+            EmuError::TooManyConstants { kind, given, max } => write!(
+                f,
+                "{} {} constants given, at most {} exist",
+                given, kind, max
+            ),
+            EmuError::InvalidIntConstant { register, reason } => {
+                write!(f, "i{} used by rep/loop: {}", register, reason)
+            }
+            EmuError::ThreadPool(e) => write!(f, "cannot start worker threads: {}", e),
+        }
+    }
+}
+
+impl std::error::Error for EmuError {}
+
+/// A draw resolved against a compiled shader: everything batches share.
+pub(crate) struct RunCtx<'c, 'a> {
+    pub compiled: &'c Compiled,
+    pub ints: [[i32; 4]; 16],
+    /// Bit i = `b#`.
+    pub bools: u16,
+    /// Values of the constant rows, in [`compile::Layout::consts`] order.
+    pub consts: Vec<[f32; 4]>,
+    pub samplers: [Option<Sampler<'a>>; 16],
+    pub inputs: [Option<LinearInput>; 10],
+    pub width: u64,
+    pub height: u64,
+    /// Quads per row of the quad grid.
+    pub quads_x: u64,
+    pub quads: u64,
+    pub cap: u64,
+    pub record_lod: bool,
+}
+
+impl<'c, 'a> RunCtx<'c, 'a> {
+    fn new(compiled: &'c Compiled, draw: &Draw<'a>) -> Result<RunCtx<'c, 'a>, EmuError> {
+        let (w, h) = (draw.target_width as u64, draw.target_height as u64);
+        if w * h > draw.limits.max_target_pixels {
+            return Err(EmuError::TargetTooLarge {
+                width: draw.target_width,
+                height: draw.target_height,
+                limit: draw.limits.max_target_pixels,
+            });
+        }
+        let c = &draw.constants;
+        for (kind, given, max) in [
+            ("float", c.float.len(), 224),
+            ("integer", c.int.len(), 16),
+            ("boolean", c.bool.len(), 16),
+        ] {
+            if given > max {
+                return Err(EmuError::TooManyConstants { kind, given, max });
+            }
+        }
+        // def/defi/defb override the application's values (MS def---ps).
+        let mut floats = [[0.0f32; 4]; 224];
+        floats[..c.float.len()].copy_from_slice(&c.float);
+        for &(i, v) in &compiled.float_defs {
+            floats[i as usize] = v;
+        }
+        let mut ints = [[0i32; 4]; 16];
+        ints[..c.int.len()].copy_from_slice(&c.int);
+        for &(i, v) in &compiled.int_defs {
+            ints[i as usize] = v;
+        }
+        for i in 0..16u32 {
+            let v = ints[i as usize];
+            let problem = if compiled.rep_ints & (1 << i) != 0 || compiled.loop_ints & (1 << i) != 0
+            {
+                crate::core::cost::int_constant_problem(
+                    if compiled.loop_ints & (1 << i) != 0 {
+                        crate::core::isa::Opcode::Loop
+                    } else {
+                        crate::core::isa::Opcode::Rep
+                    },
+                    v,
+                )
+            } else {
+                None
+            };
+            if let Some(reason) = problem {
+                return Err(EmuError::InvalidIntConstant {
+                    register: i,
+                    reason,
+                });
+            }
+        }
+        let mut bools = 0u16;
+        for (i, &b) in c.bool.iter().enumerate() {
+            bools |= (b as u16) << i;
+        }
+        for &(i, b) in &compiled.bool_defs {
+            bools = bools & !(1 << i) | (b as u16) << i;
+        }
+        let consts = compiled
+            .layout
+            .consts
+            .iter()
+            .map(|&(_, c)| floats[c as usize])
+            .collect();
+
+        let mut inputs = [None; 10];
+        for &(v, value) in &draw.inputs {
+            if v >= 10 || compiled.inputs & (1 << v) == 0 {
+                return Err(EmuError::InputNotDeclared { input: v });
+            }
+            if inputs[v as usize].replace(value).is_some() {
+                return Err(EmuError::DuplicateBinding {
+                    what: "v",
+                    index: v,
+                });
+            }
+        }
+        for v in 0..10u32 {
+            if compiled.inputs & (1 << v) != 0 && inputs[v as usize].is_none() {
+                return Err(EmuError::MissingInput { input: v });
+            }
+        }
+
+        let mut samplers: [Option<Sampler<'a>>; 16] = std::array::from_fn(|_| None);
+        for (s, tex, state) in &draw.samplers {
+            let ty = match compiled.samplers.get(*s as usize).copied().flatten() {
+                Some(ty) => ty,
+                None => return Err(EmuError::SamplerNotDeclared { sampler: *s }),
+            };
+            if ty != SamplerType::Tex2d {
+                return Err(EmuError::UnsupportedSampler { sampler: *s, ty });
+            }
+            let sm = Sampler::new(tex, state).map_err(|reason| EmuError::InvalidTexture {
+                sampler: *s,
+                reason,
+            })?;
+            if samplers[*s as usize].replace(sm).is_some() {
+                return Err(EmuError::DuplicateBinding {
+                    what: "s",
+                    index: *s,
+                });
+            }
+        }
+
+        let quads_x = w.div_ceil(2);
+        Ok(RunCtx {
+            compiled,
+            ints,
+            bools,
+            consts,
+            samplers,
+            inputs,
+            width: w,
+            height: h,
+            quads_x,
+            quads: quads_x * h.div_ceil(2),
+            cap: draw.limits.max_executed_per_pixel,
+            record_lod: draw.record_lod,
+        })
+    }
+
+    fn batches(&self) -> u64 {
+        self.quads.div_ceil(QUADS_PER_BATCH)
+    }
+
+    /// Pixel of `lane` in `batch`, and whether it lies inside the target.
+    #[inline]
+    pub fn lane_pixel(&self, batch: u64, lane: usize) -> (u64, u64, bool) {
+        let quad = batch * QUADS_PER_BATCH + (lane / 4) as u64;
+        let (qx, qy) = (quad % self.quads_x.max(1), quad / self.quads_x.max(1));
+        let x = 2 * qx + (lane & 1) as u64;
+        let y = 2 * qy + ((lane >> 1) & 1) as u64;
+        (x, y, quad < self.quads && x < self.width && y < self.height)
+    }
+}
+
+/// Runs a draw on rayon's global pool.
+pub fn run(compiled: &Compiled, draw: &Draw) -> Result<DrawOutput, EmuError> {
+    run_with_threads(compiled, draw, 0)
+}
+
+/// Runs a draw on `threads` worker threads (`0`: rayon's global pool, `1`:
+/// the calling thread only). Results, executed counts and errors are the same
+/// for every thread count: pixels are independent, and when several batches
+/// fail, the error of the first failing batch is reported.
+pub fn run_with_threads(
+    compiled: &Compiled,
+    draw: &Draw,
+    threads: usize,
+) -> Result<DrawOutput, EmuError> {
+    let ctx = RunCtx::new(compiled, draw)?;
+    let n = (ctx.width * ctx.height) as usize;
+    let mut out = DrawOutput {
+        width: draw.target_width,
+        height: draw.target_height,
+        color: (0..4)
+            .map(|i| compiled.writes_output(i).then(|| vec![[0.0; 4]; n]))
+            .collect(),
+        depth: compiled.writes_output(4).then(|| vec![0.0; n]),
+        killed: vec![false; n],
+        executed: vec![0; n],
+        quads_x: ctx.quads_x as u32,
+        quad_executed: vec![0; ctx.quads as usize],
+        quad_divergent: vec![false; ctx.quads as usize],
+        gradients: compiled.sites.clone(),
+    };
+    let mut written = 0u8;
+    let batches = ctx.batches();
+    if threads == 1 {
+        let mut worker = Worker::new(&ctx);
+        for b in 0..batches {
+            let r = worker.run(b)?;
+            written |= scatter(&ctx, &mut out, b, &r);
+        }
+    } else {
+        let mut all = || -> Result<u8, EmuError> {
+            let mut written = 0u8;
+            let mut start = 0;
+            while start < batches {
+                let end = (start + CHUNK).min(batches);
+                // Batches after the first failure stop early; the ones before
+                // it always finish, so the reported error does not depend on
+                // scheduling.
+                let first_err = AtomicU64::new(u64::MAX);
+                let results: Vec<Option<Result<Box<BatchOut>, EmuError>>> = (start..end)
+                    .into_par_iter()
+                    .map_init(
+                        || Worker::new(&ctx),
+                        |w, b| {
+                            if b > first_err.load(Ordering::Relaxed) {
+                                return None;
+                            }
+                            let r = w.run(b);
+                            if r.is_err() {
+                                first_err.fetch_min(b, Ordering::Relaxed);
+                            }
+                            Some(r)
+                        },
+                    )
+                    .collect();
+                for (b, r) in (start..end).zip(results) {
+                    match r {
+                        Some(Ok(r)) => written |= scatter(&ctx, &mut out, b, &r),
+                        Some(Err(e)) => return Err(e),
+                        None => {}
+                    }
+                }
+                start = end;
+            }
+            Ok(written)
+        };
+        written = if threads == 0 {
+            all()?
+        } else {
+            pool(threads)?.install(all)?
+        };
+    }
+    for (i, c) in out.color.iter_mut().enumerate() {
+        if written & (1 << i) == 0 {
+            *c = None;
+        }
+    }
+    if written & 16 == 0 {
+        out.depth = None;
+    }
+    Ok(out)
+}
+
+/// A rayon pool with `threads` threads, built once per thread count and kept
+/// (building one costs more than a small draw).
+fn pool(threads: usize) -> Result<Arc<rayon::ThreadPool>, EmuError> {
+    type Pools = Mutex<Vec<(usize, Arc<rayon::ThreadPool>)>>;
+    static POOLS: OnceLock<Pools> = OnceLock::new();
+    let pools = POOLS.get_or_init(|| Mutex::new(Vec::new()));
+    let mut pools = pools.lock().unwrap_or_else(|e| e.into_inner());
+    if let Some((_, p)) = pools.iter().find(|(n, _)| *n == threads) {
+        return Ok(p.clone());
+    }
+    let p = Arc::new(
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .map_err(|e| EmuError::ThreadPool(e.to_string()))?,
+    );
+    pools.push((threads, p.clone()));
+    Ok(p)
+}
+
+/// Copies one batch's results into the output; returns its written-output
+/// bits.
+fn scatter(ctx: &RunCtx, out: &mut DrawOutput, batch: u64, r: &BatchOut) -> u8 {
+    for lane in 0..LANES {
+        let (x, y, inside) = ctx.lane_pixel(batch, lane);
+        if !inside {
+            continue;
+        }
+        let i = (y * ctx.width + x) as usize;
+        out.executed[i] = r.executed[lane];
+        out.killed[i] = r.killed & (1 << lane) != 0;
+        for (k, c) in out.color.iter_mut().enumerate() {
+            if let Some(c) = c {
+                c[i] = r.color[k][lane];
+            }
+        }
+        if let Some(d) = &mut out.depth {
+            d[i] = r.depth[lane];
+        }
+    }
+    for q in 0..LANES / 4 {
+        let quad = batch * QUADS_PER_BATCH + q as u64;
+        if quad < ctx.quads {
+            out.quad_executed[quad as usize] = r.quad_executed[q];
+            out.quad_divergent[quad as usize] = (r.diverged >> (4 * q)) & 1 != 0;
+        }
+    }
+    for (g, b) in out.gradients.iter_mut().zip(&r.sites) {
+        g.quads += b.quads.count_ones() as u64;
+        g.divergent_quads += b.divergent.count_ones() as u64;
+        g.executions += b.executions;
+        g.divergent_executions += b.divergent_executions;
+        if b.lod_min <= b.lod_max {
+            g.lod = Some(match g.lod {
+                Some((lo, hi)) => (lo.min(b.lod_min), hi.max(b.lod_max)),
+                None => (b.lod_min, b.lod_max),
+            });
+        }
+    }
+    r.written
+}

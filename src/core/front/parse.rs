@@ -1,0 +1,640 @@
+//! The nom parser: assembly text → [`Stmt`]s with byte spans.
+//!
+//! ps_3_0 assembly is line oriented: one statement per line, comments start
+//! with `//` or `;`. Each line is read by a small recursive-descent reader
+//! (`Cursor`) whose tokens are nom parsers; the reader turns a failed token
+//! into a diagnostic that points at the exact column and says what was
+//! expected. Parsing never stops at the first bad line: every line is read,
+//! and all errors are returned together.
+
+use super::ast::{Count, InstrAst, OperandAst, RegAst, RelAst, Stmt};
+use crate::core::diag::{Diagnostic, Diagnostics};
+use crate::core::ir::Span;
+use nom::branch::alt;
+use nom::bytes::complete::{tag_no_case, take_while, take_while1};
+use nom::character::complete::{char, digit1, space0};
+use nom::combinator::recognize;
+use nom::number::complete::recognize_float;
+use nom::sequence::pair;
+use nom::{IResult, Parser};
+
+type NomError<'a> = nom::error::Error<&'a str>;
+
+/// Parses a whole source. Returns the statements of every line that parsed
+/// and the diagnostics of every line that did not.
+pub fn parse(text: &str) -> (Vec<Stmt>, Diagnostics) {
+    let mut stmts = Vec::new();
+    let mut diags = Diagnostics::default();
+    let mut line_start = 0;
+    for line in text.split_inclusive('\n') {
+        let code = strip_comment(line.trim_end_matches(['\n', '\r']));
+        let lead = code.len() - code.trim_start().len();
+        let code = code.trim();
+        if !code.is_empty() {
+            let start = line_start + lead;
+            let mut cursor = Cursor {
+                text: code,
+                rest: code,
+                base: start,
+            };
+            match cursor.statement() {
+                Ok(stmt) => stmts.push(stmt),
+                Err(d) => {
+                    // A bad REPEAT_BLOCK line still opens or closes its block,
+                    // so its partner line is not reported as unmatched too.
+                    stmts.extend(macro_placeholder(
+                        code,
+                        Span::new(start, start + code.len()),
+                    ));
+                    diags.push(d)
+                }
+            }
+        }
+        line_start += line.len();
+    }
+    (stmts, diags)
+}
+
+/// What a REPEAT_BLOCK line that did not parse stands for: a block of 0
+/// repetitions opened, or a block closed.
+fn macro_placeholder(code: &str, span: Span) -> Option<Stmt> {
+    if repeat_keyword("begin").parse(code).is_ok() {
+        Some(Stmt::RepeatBegin {
+            count: Count::Literal { value: 0, span },
+            span,
+        })
+    } else if repeat_keyword("end").parse(code).is_ok() {
+        Some(Stmt::RepeatEnd { span })
+    } else {
+        None
+    }
+}
+
+/// The code part of a line: everything before `//` or `;`.
+fn strip_comment(line: &str) -> &str {
+    let cut = [line.find("//"), line.find(';')]
+        .into_iter()
+        .flatten()
+        .min()
+        .unwrap_or(line.len());
+    &line[..cut]
+}
+
+fn is_ident_char(c: char) -> bool {
+    c.is_ascii_alphanumeric() || c == '_'
+}
+
+/// Separators inside the article's spelling `BEGIN REPEAT BLOCK(n)`.
+fn macro_sep(i: &str) -> IResult<&str, &str> {
+    take_while1(|c: char| c == '_' || c == ' ' || c == '\t').parse(i)
+}
+
+fn repeat_keyword<'a>(
+    word: &'static str,
+) -> impl Parser<&'a str, Output = (), Error = NomError<'a>> {
+    (
+        tag_no_case(word),
+        macro_sep,
+        tag_no_case("repeat"),
+        macro_sep,
+        tag_no_case("block"),
+    )
+        .map(|_| ())
+}
+
+/// `ps_3_0`, `ps.3.0`, `vs_2_0`, `ps_2_x`...
+fn version(i: &str) -> IResult<&str, (u32, u32)> {
+    let sep = |i| alt((char('_'), char('.'))).parse(i);
+    let (i, _) = alt((tag_no_case("ps"), tag_no_case("vs"))).parse(i)?;
+    let (i, _) = sep(i)?;
+    let (i, major) = digit1(i)?;
+    let (i, _) = sep(i)?;
+    let (i, minor) = alt((digit1, tag_no_case("x"), tag_no_case("sw"))).parse(i)?;
+    let minor = minor.parse().unwrap_or(1);
+    Ok((i, (major.parse().unwrap_or(0), minor)))
+}
+
+/// A reader over one line's code, producing spans relative to the file.
+struct Cursor<'a> {
+    /// The line's code (comment stripped, trimmed).
+    text: &'a str,
+    /// What is left to read.
+    rest: &'a str,
+    /// Byte offset of `text` in the file.
+    base: usize,
+}
+
+impl<'a> Cursor<'a> {
+    /// File offset of the current position.
+    fn pos(&self) -> usize {
+        self.base + (self.text.len() - self.rest.len())
+    }
+
+    fn span_from(&self, start: usize) -> Span {
+        Span::new(start, self.pos())
+    }
+
+    /// Runs a nom parser at the current position; on success moves past what
+    /// it read.
+    fn eat<O>(
+        &mut self,
+        mut p: impl Parser<&'a str, Output = O, Error = NomError<'a>>,
+    ) -> Option<O> {
+        match p.parse(self.rest) {
+            Ok((rest, out)) => {
+                self.rest = rest;
+                Some(out)
+            }
+            Err(_) => None,
+        }
+    }
+
+    fn skip_space(&mut self) {
+        self.eat(space0);
+    }
+
+    /// An error at the current position covering the next token.
+    fn error_here(&self, message: impl Into<String>) -> Diagnostic {
+        let tok_len = self
+            .rest
+            .char_indices()
+            .find(|&(_, c)| c == ',' || c.is_whitespace())
+            .map(|(i, _)| i)
+            .unwrap_or(self.rest.len())
+            .max(self.rest.chars().next().map_or(0, char::len_utf8));
+        let start = self.pos();
+        Diagnostic::error(Span::new(start, start + tok_len), message)
+    }
+
+    fn found(&self) -> String {
+        match self.rest.split([',', ' ', '\t']).next() {
+            Some(t) if !t.is_empty() => format!("found `{t}`"),
+            _ => match self.rest.chars().next() {
+                Some(c) => format!("found `{c}`"),
+                None => "found the end of the line".to_string(),
+            },
+        }
+    }
+
+    fn statement(&mut self) -> Result<Stmt, Diagnostic> {
+        let start = self.pos();
+        if let Some((major, minor)) = self.eat(version) {
+            if self.rest.trim().is_empty() {
+                return Ok(Stmt::Version {
+                    text: self.text.to_string(),
+                    major,
+                    minor,
+                    span: self.span_from(start),
+                });
+            }
+            self.rest = self.text;
+        }
+        if self.eat(repeat_keyword("begin")).is_some() {
+            return self.repeat_begin(start);
+        }
+        if self.eat(repeat_keyword("end")).is_some() {
+            self.skip_space();
+            if !self.rest.is_empty() {
+                return Err(self
+                    .error_here(format!(
+                        "unexpected text after END_REPEAT_BLOCK: {}",
+                        self.found()
+                    ))
+                    .with_label("nothing may follow END_REPEAT_BLOCK"));
+            }
+            return Ok(Stmt::RepeatEnd {
+                span: self.span_from(start),
+            });
+        }
+        self.instruction(start).map(Stmt::Instr)
+    }
+
+    fn repeat_begin(&mut self, start: usize) -> Result<Stmt, Diagnostic> {
+        self.skip_space();
+        if self.eat(char('(')).is_none() {
+            return Err(self
+                .error_here(format!(
+                    "expected `(` after BEGIN_REPEAT_BLOCK, {}",
+                    self.found()
+                ))
+                .with_help("write BEGIN_REPEAT_BLOCK(125) or BEGIN_REPEAT_BLOCK(name)"));
+        }
+        self.skip_space();
+        let cstart = self.pos();
+        let count = if let Some(digits) = self.eat(digit1) {
+            let span = self.span_from(cstart);
+            let value = digits.parse::<u64>().map_err(|_| {
+                Diagnostic::error(span, "REPEAT_BLOCK count is too large")
+                    .with_label("does not fit in 64 bits")
+            })?;
+            Count::Literal { value, span }
+        } else if let Some(name) = self.eat(recognize(pair(
+            take_while1(|c: char| c.is_ascii_alphabetic() || c == '_'),
+            take_while(is_ident_char),
+        ))) {
+            Count::Name {
+                name: name.to_string(),
+                span: self.span_from(cstart),
+            }
+        } else {
+            return Err(self
+                .error_here(format!("expected a repetition count, {}", self.found()))
+                .with_label("a non-negative integer or a name")
+                .with_help(
+                    "use a literal (BEGIN_REPEAT_BLOCK(125)) or a name bound with -D name=value",
+                ));
+        };
+        self.skip_space();
+        if self.eat(char(')')).is_none() {
+            return Err(self
+                .error_here(format!(
+                    "expected `)` after the repetition count, {}",
+                    self.found()
+                ))
+                .with_label("expected `)`"));
+        }
+        self.skip_space();
+        if !self.rest.is_empty() {
+            return Err(self.error_here(format!(
+                "unexpected text after BEGIN_REPEAT_BLOCK(...): {}",
+                self.found()
+            )));
+        }
+        Ok(Stmt::RepeatBegin {
+            count,
+            span: self.span_from(start),
+        })
+    }
+
+    fn instruction(&mut self, start: usize) -> Result<InstrAst, Diagnostic> {
+        let predicate = if self.eat(char('(')).is_some() {
+            self.skip_space();
+            let reg = self.register()?;
+            self.skip_space();
+            if self.eat(char(')')).is_none() {
+                return Err(self
+                    .error_here(format!(
+                        "expected `)` to close the predicate, {}",
+                        self.found()
+                    ))
+                    .with_help("a predicate is written (p0), (p0.x) or (!p0.y)"));
+            }
+            self.skip_space();
+            Some(reg)
+        } else {
+            None
+        };
+        let mstart = self.pos();
+        let Some(mnemonic) = self.eat(recognize(pair(
+            take_while1(|c: char| c.is_ascii_alphabetic()),
+            take_while(is_ident_char),
+        ))) else {
+            return Err(self
+                .error_here(format!("expected an instruction, {}", self.found()))
+                .with_label("not an instruction mnemonic"));
+        };
+        let mut parts = mnemonic.split('_');
+        let base = parts.next().unwrap_or_default().to_ascii_lowercase();
+        let base_span = Span::new(mstart, mstart + base.len());
+        let mut suffixes = Vec::new();
+        let mut off = mstart + base.len();
+        for part in parts {
+            off += 1;
+            suffixes.push((
+                part.to_ascii_lowercase(),
+                Span::new(off - 1, off + part.len()),
+            ));
+            off += part.len();
+        }
+        let mut operands = Vec::new();
+        let before_space = self.rest.len();
+        self.skip_space();
+        if !self.rest.is_empty() {
+            if self.rest.len() == before_space {
+                return Err(self
+                    .error_here(format!("unexpected character after `{mnemonic}`"))
+                    .with_label("expected a space before the operands"));
+            }
+            loop {
+                operands.push(self.operand()?);
+                self.skip_space();
+                if self.rest.is_empty() {
+                    break;
+                }
+                if self.eat(char(',')).is_none() {
+                    return Err(self
+                        .error_here(format!(
+                            "expected `,` or the end of the line, {}",
+                            self.found()
+                        ))
+                        .with_label("expected `,`"));
+                }
+                self.skip_space();
+                if self.rest.is_empty() {
+                    return Err(self
+                        .error_here("expected an operand after `,`")
+                        .with_label("operand missing"));
+                }
+            }
+        }
+        Ok(InstrAst {
+            predicate,
+            base,
+            base_span,
+            suffixes,
+            operands,
+            span: self.span_from(start),
+        })
+    }
+
+    fn operand(&mut self) -> Result<OperandAst, Diagnostic> {
+        let start = self.pos();
+        // A number: optional sign, digits or a leading '.', optional f suffix.
+        let looks_numeric = {
+            let r = self.rest.strip_prefix(['-', '+']).unwrap_or(self.rest);
+            r.starts_with(|c: char| c.is_ascii_digit()) || r.starts_with('.')
+        };
+        if looks_numeric {
+            let Some(text) = self.eat(recognize_float::<&str, NomError>) else {
+                return Err(self.error_here(format!("malformed number, {}", self.found())));
+            };
+            self.eat(alt((char('f'), char('F'))));
+            let span = self.span_from(start);
+            if self
+                .rest
+                .starts_with(|c: char| is_ident_char(c) || c == '.')
+            {
+                return Err(self
+                    .error_here(format!(
+                        "malformed number `{}{}`",
+                        text,
+                        self.rest.split([',', ' ']).next().unwrap_or("")
+                    ))
+                    .with_label("unexpected characters after the number"));
+            }
+            let value: f64 = text.parse().map_err(|_| {
+                Diagnostic::error(span, format!("malformed number `{text}`"))
+                    .with_label("not a number")
+            })?;
+            let integer = !text.contains(['.', 'e', 'E']);
+            return Ok(OperandAst::Number {
+                value,
+                integer,
+                span,
+            });
+        }
+        if let Some(word) = self.eat(alt((tag_no_case("true"), tag_no_case("false")))) {
+            if !self.rest.starts_with(is_ident_char) {
+                return Ok(OperandAst::Bool {
+                    value: word.eq_ignore_ascii_case("true"),
+                    span: self.span_from(start),
+                });
+            }
+            self.rest = &self.text[start - self.base..];
+        }
+        self.register().map(OperandAst::Reg)
+    }
+
+    /// `[-|!]name[index][\[aL + n\]][_abs][.components][_abs]`
+    fn register(&mut self) -> Result<RegAst, Diagnostic> {
+        let start = self.pos();
+        let mut negate = false;
+        let mut not = false;
+        if self.eat(char('-')).is_some() {
+            negate = true;
+            self.skip_space();
+        } else if self.eat(char('!')).is_some() {
+            not = true;
+            self.skip_space();
+        }
+        if self.rest.starts_with('-') || self.rest.starts_with('!') {
+            return Err(self.error_here("only one `-` or `!` may precede a register"));
+        }
+        let nstart = self.pos();
+        let Some(name) = self.eat(take_while1(|c: char| c.is_ascii_alphabetic())) else {
+            return Err(self
+                .error_here(format!("expected a register, {}", self.found()))
+                .with_label("expected a register such as r0, v1, c2, s0, i0, b0 or p0"));
+        };
+        let digits = self.eat(digit1);
+        let name_span = self.span_from(nstart);
+        let index = match digits {
+            Some(d) => Some(d.parse::<u64>().map_err(|_| {
+                Diagnostic::error(name_span, format!("register number `{d}` is too large"))
+            })?),
+            None => None,
+        };
+        let relative = if self.rest.starts_with('[') {
+            Some(self.relative()?)
+        } else {
+            None
+        };
+        let mut abs = self.eat_abs()?;
+        let components = if self.eat(char('.')).is_some() {
+            let cstart = self.pos();
+            let Some(letters) = self.eat(take_while1(|c: char| c.is_ascii_alphabetic())) else {
+                return Err(self
+                    .error_here(format!(
+                        "expected swizzle or write-mask letters after `.`, {}",
+                        self.found()
+                    ))
+                    .with_label("expected letters from xyzw or rgba"));
+            };
+            Some((letters.to_ascii_lowercase(), self.span_from(cstart)))
+        } else {
+            None
+        };
+        if !abs {
+            abs = self.eat_abs()?;
+        }
+        if self.rest.starts_with(|c: char| c.is_ascii_alphanumeric()) {
+            return Err(self.error_here(format!(
+                "unexpected characters in register operand, {}",
+                self.found()
+            )));
+        }
+        Ok(RegAst {
+            negate,
+            not,
+            name: name.to_string(),
+            index,
+            name_span,
+            relative,
+            abs,
+            components,
+            span: self.span_from(start),
+        })
+    }
+
+    /// An optional `_abs`; any other `_suffix` on a source is an error.
+    fn eat_abs(&mut self) -> Result<bool, Diagnostic> {
+        if !self.rest.starts_with('_') {
+            return Ok(false);
+        }
+        let sstart = self.pos();
+        let Some(word) = self.eat(recognize(pair(char('_'), take_while(is_ident_char)))) else {
+            return Ok(false);
+        };
+        if word.eq_ignore_ascii_case("_abs") {
+            return Ok(true);
+        }
+        Err(Diagnostic::error(
+            self.span_from(sstart),
+            format!("source modifier `{word}` does not exist in ps_3_0"),
+        )
+        .with_label("not a ps_3_0 source modifier")
+        .with_help("ps_3_0 sources take `-` (negate) and `_abs`; _bias, _bx2, _x2, _dz and _dw are ps_1_x only"))
+    }
+
+    /// `[aL]`, `[aL + 3]`, `[ aL + 1 + 2 ]`.
+    fn relative(&mut self) -> Result<RelAst, Diagnostic> {
+        let start = self.pos();
+        self.eat(char('['));
+        self.skip_space();
+        let Some(index_reg) = self.eat(take_while1(|c: char| c.is_ascii_alphanumeric())) else {
+            return Err(self
+                .error_here(format!(
+                    "expected the index register aL inside `[...]`, {}",
+                    self.found()
+                ))
+                .with_help("relative addressing in ps_3_0 is written v[aL + n]"));
+        };
+        let swz_start = self.pos();
+        let index_swizzle = if self.eat(char('.')).is_some() {
+            self.eat(take_while(|c: char| c.is_ascii_alphabetic()));
+            Some(self.span_from(swz_start))
+        } else {
+            None
+        };
+        let mut offset: i64 = 0;
+        loop {
+            self.skip_space();
+            if self.eat(char(']')).is_some() {
+                break;
+            }
+            if self.rest.starts_with('-') {
+                return Err(self
+                    .error_here("negative offsets are not allowed in relative addressing")
+                    .with_help("write v[aL + n] with n >= 0"));
+            }
+            if self.eat(char('+')).is_none() {
+                return Err(self
+                    .error_here(format!(
+                        "expected `+` or `]` in relative address, {}",
+                        self.found()
+                    ))
+                    .with_label("expected `+ n` or `]`"));
+            }
+            self.skip_space();
+            let Some(d) = self.eat(digit1) else {
+                return Err(self
+                    .error_here(format!("expected an integer offset, {}", self.found()))
+                    .with_label("offsets are non-negative integers"));
+            };
+            offset = offset.saturating_add(d.parse::<i64>().unwrap_or(i64::MAX));
+        }
+        Ok(RelAst {
+            index_reg: index_reg.to_string(),
+            index_swizzle,
+            offset,
+            span: self.span_from(start),
+        })
+    }
+}
+
+/// Parses only the tag used by other modules to recognise a version string.
+pub fn is_version_line(s: &str) -> bool {
+    matches!(version(s.trim()), Ok((rest, _)) if rest.is_empty())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn one(src: &str) -> Stmt {
+        let (stmts, diags) = parse(src);
+        assert!(!diags.has_errors(), "{:?}", diags);
+        assert_eq!(stmts.len(), 1);
+        stmts.into_iter().next().unwrap()
+    }
+
+    #[test]
+    fn parses_an_instruction_with_modifiers() {
+        let Stmt::Instr(i) = one("  (!p0.x) add_sat_pp r0.xw, -r1_abs.wxxx, c3 // comment") else {
+            panic!()
+        };
+        assert_eq!(i.base, "add");
+        assert_eq!(
+            i.suffixes.iter().map(|s| s.0.as_str()).collect::<Vec<_>>(),
+            ["sat", "pp"]
+        );
+        let p = i.predicate.unwrap();
+        assert!(p.not);
+        assert_eq!(p.components.unwrap().0, "x");
+        assert_eq!(i.operands.len(), 3);
+        let OperandAst::Reg(r) = &i.operands[1] else {
+            panic!()
+        };
+        assert!(r.negate && r.abs);
+        assert_eq!(r.components.as_ref().unwrap().0, "wxxx");
+        assert_eq!(r.span, Span::new(28, 40));
+    }
+
+    #[test]
+    fn parses_repeat_spellings() {
+        assert!(matches!(
+            one("BEGIN_REPEAT_BLOCK(125)"),
+            Stmt::RepeatBegin {
+                count: Count::Literal { value: 125, .. },
+                ..
+            }
+        ));
+        assert!(matches!(
+            one("BEGIN REPEAT BLOCK(125) // x"),
+            Stmt::RepeatBegin { .. }
+        ));
+        assert!(matches!(
+            one("begin_repeat_block( ysize )"),
+            Stmt::RepeatBegin {
+                count: Count::Name { .. },
+                ..
+            }
+        ));
+        assert!(matches!(one("END REPEAT BLOCK"), Stmt::RepeatEnd { .. }));
+        assert!(matches!(one("END_REPEAT_BLOCK"), Stmt::RepeatEnd { .. }));
+    }
+
+    #[test]
+    fn parses_versions_numbers_and_relative_addressing() {
+        assert!(matches!(
+            one("ps.3.0"),
+            Stmt::Version {
+                major: 3,
+                minor: 0,
+                ..
+            }
+        ));
+        let Stmt::Instr(i) = one("def c0, 1.0f, -2, .5, 1e-4") else {
+            panic!()
+        };
+        assert_eq!(i.operands.len(), 5);
+        assert!(
+            matches!(i.operands[2], OperandAst::Number { value, integer: true, .. } if value == -2.0)
+        );
+        let Stmt::Instr(i) = one("mov r0, v[ aL + 1 + 3 ]") else {
+            panic!()
+        };
+        let OperandAst::Reg(r) = &i.operands[1] else {
+            panic!()
+        };
+        assert_eq!(r.relative.as_ref().unwrap().offset, 4);
+    }
+
+    #[test]
+    fn reports_every_bad_line_with_its_column() {
+        let (_, d) = parse("ps_3_0\nmov r0, r1_bx2\nadd r0 r1\nmov r0,\n");
+        let errs: Vec<_> = d.errors().collect();
+        assert_eq!(errs.len(), 3);
+        assert_eq!(errs[0].span.start as usize, "ps_3_0\nmov r0, r1".len());
+    }
+}

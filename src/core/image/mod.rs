@@ -1,0 +1,200 @@
+//! HDR images in, render targets out.
+//!
+//! ps30 checks a GPU log-average-luminance computation against a CPU
+//! reference on real HDR photographs, so it must read the formats such images
+//! come in (OpenEXR, Radiance RGBE, PFM) into one in-memory form,
+//! [`HdrImage`], and write what the emulated passes produce
+//! ([`RenderTarget`]s as OpenEXR or PFM, tone-mapped results as PNG).
+//!
+//! Reading never trusts a header: the claimed size is checked against
+//! [`ImageLimits`] before any pixel memory is allocated, and every failure is
+//! an [`ImageError`] naming the file and the problem. Writing is atomic: a
+//! failed write leaves no partial file behind.
+
+mod error;
+mod mip;
+mod openexr;
+mod pfm;
+mod png;
+mod radiance;
+mod target;
+
+pub use error::{ForeignError, ImageError};
+pub use mip::{full_chain_levels, MipChain};
+pub use openexr::write_exr;
+pub use pfm::write_pfm;
+pub use png::write_png_rgb8;
+pub use target::{RenderTarget, TargetFormat, Texture};
+
+use std::fs::File;
+use std::io::{BufReader, BufWriter, Read, Seek};
+use std::path::Path;
+
+/// The luminance weights of the article (and of the tone-mapping shader):
+/// `L = 0.27 R + 0.67 G + 0.06 B`.
+pub const LUMINANCE_WEIGHTS: [f64; 3] = [0.27, 0.67, 0.06];
+
+/// The luminance of a pixel, computed in f64 as
+/// `0.27 R + 0.67 G + 0.06 B` (evaluated left to right).
+pub fn luminance(pixel: [f32; 4]) -> f64 {
+    let [r, g, b] = LUMINANCE_WEIGHTS;
+    r * f64::from(pixel[0]) + g * f64::from(pixel[1]) + b * f64::from(pixel[2])
+}
+
+/// [`crate::core::output::write_atomically`] with the failure told as an
+/// [`ImageError`] naming the file and its `format`.
+fn write_atomically(
+    path: &Path,
+    format: &'static str,
+    encode: impl FnOnce(&mut BufWriter<File>) -> Result<(), ForeignError>,
+) -> Result<(), ImageError> {
+    use crate::core::output::{self, Failure};
+    output::write_atomically(path, encode).map_err(|f| match f {
+        Failure::Io { action, source } => ImageError::io(path, action, source),
+        Failure::Encode(source) => ImageError::Encode {
+            path: path.to_path_buf(),
+            format,
+            source,
+        },
+    })
+}
+
+/// An RGBA image with f32 channels, as loaded from a file.
+///
+/// Pixels are row-major and row 0 is the TOP row of the picture, whatever
+/// order the file stores its rows in. Alpha is 1 when the file has none;
+/// single-channel (grey) files load as R = G = B. Values are kept exactly as
+/// decoded: negative and non-finite values are not touched (see
+/// [`HdrImage::stats`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct HdrImage {
+    pub width: u32,
+    pub height: u32,
+    /// `width * height` pixels.
+    pub pixels: Vec<[f32; 4]>,
+}
+
+/// Counts of pixels that need a policy decision in the reference.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
+pub struct PixelStats {
+    /// Pixels whose luminance (see [`luminance`]) is finite
+    /// and below zero.
+    pub negative_luminance: u64,
+    /// Pixels whose luminance is NaN or infinite (some R, G or B channel is).
+    pub non_finite: u64,
+}
+
+impl HdrImage {
+    /// The pixel in column `x` of row `y` (row 0 at the top).
+    ///
+    /// # Panics
+    /// If `x >= width` or `y >= height`.
+    pub fn pixel(&self, x: u32, y: u32) -> [f32; 4] {
+        assert!(
+            x < self.width && y < self.height,
+            "pixel ({x}, {y}) outside the image"
+        );
+        self.pixels[y as usize * self.width as usize + x as usize]
+    }
+
+    /// How many pixels have negative or non-finite luminance.
+    pub fn stats(&self) -> PixelStats {
+        let mut stats = PixelStats::default();
+        for &pixel in &self.pixels {
+            let l = luminance(pixel);
+            if !l.is_finite() {
+                stats.non_finite += 1;
+            } else if l < 0.0 {
+                stats.negative_luminance += 1;
+            }
+        }
+        stats
+    }
+}
+
+/// How large an image [`load`] accepts. A header can claim any size; this
+/// limit is checked before pixel memory is allocated.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ImageLimits {
+    /// Largest accepted `width * height`.
+    pub max_pixels: u64,
+}
+
+impl Default for ImageLimits {
+    /// 64 Mpixel (1 GiB as RGBA f32): far beyond the test images, far below
+    /// what a corrupt header can claim.
+    fn default() -> ImageLimits {
+        ImageLimits {
+            max_pixels: 1 << 26,
+        }
+    }
+}
+
+impl ImageLimits {
+    /// Refuses empty images and images over the limit.
+    fn check(
+        &self,
+        path: &Path,
+        format: &'static str,
+        width: u64,
+        height: u64,
+    ) -> Result<(), ImageError> {
+        for (field, value) in [("width", width), ("height", height)] {
+            if value == 0 {
+                return Err(ImageError::bad_header(path, format, field, "is zero"));
+            }
+        }
+        // u64 * u64 can overflow; u128 cannot.
+        if u128::from(width) * u128::from(height) > u128::from(self.max_pixels) {
+            return Err(ImageError::TooLarge {
+                path: path.to_path_buf(),
+                width,
+                height,
+                limit: self.max_pixels,
+            });
+        }
+        Ok(())
+    }
+}
+
+/// The file formats [`load`] reads, told apart by their first bytes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Format {
+    OpenExr,
+    Radiance,
+    Pfm,
+}
+
+impl Format {
+    fn detect(magic: &[u8]) -> Option<Format> {
+        match magic {
+            [0x76, 0x2f, 0x31, 0x01, ..] => Some(Format::OpenExr),
+            [b'#', b'?', ..] => Some(Format::Radiance),
+            [b'P', b'F' | b'f', ..] => Some(Format::Pfm),
+            _ => None,
+        }
+    }
+}
+
+/// Reads an HDR image, choosing the decoder by the file's magic number (not
+/// its extension): OpenEXR (`76 2f 31 01`), Radiance RGBE (`#?`) or PFM
+/// (`PF` colour, `Pf` grey).
+pub fn load(path: &Path, limits: &ImageLimits) -> Result<HdrImage, ImageError> {
+    let file = File::open(path).map_err(|e| ImageError::io(path, "open", e))?;
+    let mut reader = BufReader::new(file);
+    let mut magic = Vec::with_capacity(4);
+    (&mut reader)
+        .take(4)
+        .read_to_end(&mut magic)
+        .and_then(|_| reader.rewind())
+        .map_err(|e| ImageError::io(path, "read", e))?;
+    match Format::detect(&magic) {
+        Some(Format::OpenExr) => openexr::read(path, reader, limits),
+        Some(Format::Radiance) => radiance::read(path, reader, limits),
+        Some(Format::Pfm) => pfm::read(path, reader, limits),
+        None => Err(ImageError::UnknownFormat {
+            path: path.to_path_buf(),
+            first_bytes: magic,
+        }),
+    }
+}

@@ -1,0 +1,490 @@
+//! OpenEXR input and output through the `exr` crate (pure Rust; it decodes
+//! every compression the test images use, including the lossy DWAB).
+//!
+//! Reading happens in steps: the headers alone first, so that absurd sizes
+//! and unusable channel sets are refused before any pixel memory is
+//! allocated; for DWA files, the size counters of every chunk (see
+//! [`check_dwa_chunks`]); then the pixels of the first layer. The layer's
+//! data window is the image (the display window is ignored).
+//!
+//! Render targets are written losslessly (ZIP) in their own sample type:
+//! R32F as one f32 channel `R`, Rgba16F as half channels `R`, `G`, `B`, `A`.
+
+use super::write_atomically;
+use super::{HdrImage, ImageError, ImageLimits, RenderTarget, TargetFormat};
+use exr::block::chunk::CompressedBlock;
+use exr::block::reader::ChunksReader;
+use exr::meta::attribute::IntegerBounds;
+use exr::meta::header::Header;
+use exr::prelude::{
+    f16, AnyChannel, AnyChannels, Compression, Encoding, FlatSamples, Image, Layer,
+    LayerAttributes, MetaData, ReadChannels, ReadLayers, WritableImage,
+};
+use std::io::{BufRead, Read, Seek};
+use std::path::Path;
+
+const FORMAT: &str = "OpenEXR";
+
+/// Which file channels fill which of our R, G, B, A slots.
+struct ChannelMap {
+    /// (channel name, the RGBA slots it fills)
+    sources: Vec<(&'static str, &'static [usize])>,
+}
+
+impl ChannelMap {
+    /// R, G, B (and A) when the file has them; a grey `Y` or lone `R` file
+    /// fills R, G and B from its one channel. Alpha stays 1 without an `A`.
+    /// Luminance/chroma files (`Y`, `RY`, `BY`) are refused rather than read
+    /// as grey.
+    fn for_header(path: &Path, header: &Header) -> Result<ChannelMap, ImageError> {
+        let has = |name: &str| header.channels.list.iter().any(|c| c.name.eq(name));
+        let rgb = has("R") && has("G") && has("B");
+        let chroma = has("RY") || has("BY");
+        let mut sources: Vec<(&'static str, &'static [usize])> = if rgb {
+            vec![("R", &[0]), ("G", &[1]), ("B", &[2])]
+        } else if has("Y") && !chroma {
+            vec![("Y", &[0, 1, 2])]
+        } else if has("R") && !has("G") && !has("B") {
+            vec![("R", &[0, 1, 2])]
+        } else {
+            let found: Vec<String> = header
+                .channels
+                .list
+                .iter()
+                .map(|c| c.name.to_string())
+                .collect();
+            let problem = format!(
+                "needs channels R, G, B, or a single Y or R channel (luminance/chroma RY, BY \
+                 is not supported); the file has [{}]",
+                found.join(", ")
+            );
+            return Err(ImageError::bad_header(path, FORMAT, "channels", problem));
+        };
+        if has("A") {
+            sources.push(("A", &[3]));
+        }
+        for channel in &header.channels.list {
+            let used = sources.iter().any(|(name, _)| channel.name.eq(name));
+            if used && (channel.sampling.x() != 1 || channel.sampling.y() != 1) {
+                let problem = format!(
+                    "channel {} is subsampled {}x{}; only full-resolution channels are supported",
+                    channel.name,
+                    channel.sampling.x(),
+                    channel.sampling.y()
+                );
+                return Err(ImageError::bad_header(path, FORMAT, "channels", problem));
+            }
+        }
+        Ok(ChannelMap { sources })
+    }
+}
+
+pub(super) fn read(
+    path: &Path,
+    mut reader: impl BufRead + Seek,
+    limits: &ImageLimits,
+) -> Result<HdrImage, ImageError> {
+    let decode_error = |e| decode_error(path, e);
+    let meta = MetaData::read_from_buffered(&mut reader, false).map_err(decode_error)?;
+    for header in &meta.headers {
+        let size = header.layer_size;
+        limits.check(path, FORMAT, size.width() as u64, size.height() as u64)?;
+    }
+    let Some(header) = meta.headers.first() else {
+        return Err(ImageError::bad_header(
+            path,
+            FORMAT,
+            "headers",
+            "the file has no layer",
+        ));
+    };
+    if header.deep {
+        return Err(ImageError::bad_header(
+            path,
+            FORMAT,
+            "type",
+            "deep data is not supported",
+        ));
+    }
+    let map = ChannelMap::for_header(path, header)?;
+    let rewind =
+        |reader: &mut dyn Seek| reader.rewind().map_err(|e| ImageError::io(path, "read", e));
+    if matches!(
+        header.compression,
+        Compression::DWAA(_) | Compression::DWAB(_)
+    ) {
+        rewind(&mut reader)?;
+        check_dwa_chunks(path, &mut reader)?;
+    }
+
+    rewind(&mut reader)?;
+    let image = exr::prelude::read()
+        .no_deep_data()
+        .largest_resolution_level()
+        .all_channels()
+        .first_valid_layer()
+        .all_attributes()
+        .from_buffered(reader)
+        .map_err(decode_error)?;
+    let layer = image.layer_data;
+    let (width, height) = (layer.size.width(), layer.size.height());
+    // The decoded layer is the one whose header was checked above; checking
+    // again costs nothing and keeps the allocation below bounded regardless.
+    limits.check(path, FORMAT, width as u64, height as u64)?;
+
+    let mut pixels = vec![[0.0, 0.0, 0.0, 1.0]; width * height];
+    for (name, slots) in map.sources {
+        let Some(channel) = layer.channel_data.list.iter().find(|c| c.name.eq(name)) else {
+            let problem = format!("channel {name} is in the header but not in the decoded layer");
+            return Err(ImageError::bad_header(path, FORMAT, "channels", problem));
+        };
+        if channel.sample_data.len() != pixels.len() {
+            return Err(ImageError::DataLength {
+                path: path.to_path_buf(),
+                what: "a decoded channel",
+                expected: pixels.len() as u64,
+                found: channel.sample_data.len() as u64,
+            });
+        }
+        for (pixel, value) in pixels.iter_mut().zip(channel.sample_data.values_as_f32()) {
+            for &slot in slots {
+                pixel[slot] = value;
+            }
+        }
+    }
+    Ok(HdrImage {
+        width: width as u32,
+        height: height as u32,
+        pixels,
+    })
+}
+
+fn decode_error(path: &Path, e: exr::error::Error) -> ImageError {
+    ImageError::Decode {
+        path: path.to_path_buf(),
+        format: FORMAT,
+        source: Box::new(e),
+    }
+}
+
+/// Guards against a flaw in the `exr` crate (1.74): every DWA chunk starts
+/// with eleven u64 counters, and the decoder reserves memory for the sizes
+/// and counts they record (e.g. the DC count) before it inflates anything.
+/// A corrupt counter makes it ask for terabytes, and a failed allocation
+/// aborts the whole process: no error, no unwinding. One changed
+/// byte in `assets/hdr/city.exr` was enough. So every chunk the decoder will
+/// read (layer 0, full resolution, located through the same offset table)
+/// is checked first: none of its counters may exceed what the chunk's
+/// pixels can need.
+fn check_dwa_chunks(path: &Path, reader: impl Read + Seek) -> Result<(), ImageError> {
+    let chunks = exr::block::read(reader, false)
+        .and_then(|r| {
+            r.filter_chunks(false, |_, tile, block| {
+                block.layer == 0 && tile.is_largest_resolution_level()
+            })
+        })
+        .map_err(|e| decode_error(path, e))?;
+    let Some(header) = chunks.headers().first().cloned() else {
+        return Ok(()); // no layer, nothing to decode
+    };
+    for chunk in chunks {
+        let chunk = chunk.map_err(|e| decode_error(path, e))?;
+        let (tile, data) = match &chunk.compressed_block {
+            CompressedBlock::ScanLine(b) => {
+                let tile = header.get_scan_line_block_tile_coordinates(b.y_coordinate);
+                (tile, &b.compressed_pixels_le)
+            }
+            CompressedBlock::Tile(t) => (Ok(t.coordinates), &t.compressed_pixels_le),
+            // Deep data was refused with the header.
+            _ => continue,
+        };
+        let bounds = tile
+            .and_then(|tile| header.get_absolute_block_pixel_coordinates(tile))
+            .map_err(|e| decode_error(path, e))?;
+        check_dwa_counters(path, &header, bounds, data)?;
+    }
+    Ok(())
+}
+
+/// Checks the counters of one DWA chunk covering `bounds`.
+fn check_dwa_counters(
+    path: &Path,
+    header: &Header,
+    bounds: IntegerBounds,
+    data: &[u8],
+) -> Result<(), ImageError> {
+    let (width, height) = (bounds.size.width(), bounds.size.height());
+    let raw_bytes = width * height * header.channels.bytes_per_pixel;
+    // Empty chunks and chunks stored uncompressed have no counters.
+    if data.is_empty() || data.len() == raw_bytes {
+        return Ok(());
+    }
+    // Lossy channels are cut into 8x8 blocks: one DC and 63 AC
+    // coefficients each, at most one block set per channel.
+    let dct_blocks = width.div_ceil(8) * height.div_ceil(8) * header.channels.list.len();
+    // (counter index, name, largest sane value); the RLE stream of n bytes
+    // takes at most about n + n/127 bytes, so 2n + 64 is generous.
+    let limits = [
+        (1, "UNKNOWN uncompressed size", raw_bytes),
+        (6, "RLE uncompressed size", 2 * raw_bytes + 64),
+        (7, "RLE raw size", raw_bytes),
+        (8, "AC count", 63 * dct_blocks),
+        (9, "DC count", dct_blocks),
+    ];
+    for (index, name, limit) in limits {
+        // A chunk too short for its counters is left to the decoder, which
+        // reports it.
+        let Some(bytes) = data.get(8 * index..8 * index + 8) else {
+            continue;
+        };
+        let value = u64::from_le_bytes(bytes.try_into().unwrap_or_default());
+        if value > limit as u64 {
+            let problem = format!(
+                "{name} is {value}, but a {width}x{height} block needs at most {limit}; \
+                 the file is corrupt"
+            );
+            let field = format!("DWA chunk counters (block at y = {})", bounds.position.y());
+            return Err(ImageError::bad_header(path, FORMAT, field, problem));
+        }
+    }
+    Ok(())
+}
+
+/// Writes a render target as OpenEXR (ZIP-compressed scan lines), keeping its
+/// exact stored values: R32F as one f32 channel `R`, Rgba16F as half channels
+/// `R`, `G`, `B`, `A`.
+pub fn write_exr(path: &Path, target: &RenderTarget) -> Result<(), ImageError> {
+    let expected = target.width as u64 * target.height as u64;
+    if target.texels.len() as u64 != expected {
+        return Err(ImageError::DataLength {
+            path: path.to_path_buf(),
+            what: "render target",
+            expected,
+            found: target.texels.len() as u64,
+        });
+    }
+    let texels = &target.texels;
+    let channels: Vec<AnyChannel<FlatSamples>> = match target.format {
+        TargetFormat::R32F => {
+            let red = texels.iter().map(|t| t[0]).collect();
+            vec![AnyChannel::new("R", FlatSamples::F32(red))]
+        }
+        TargetFormat::Rgba16F => ["R", "G", "B", "A"]
+            .iter()
+            .enumerate()
+            .map(|(i, name)| {
+                let samples = texels.iter().map(|t| f16::from_f32(t[i])).collect();
+                AnyChannel::new(*name, FlatSamples::F16(samples))
+            })
+            .collect(),
+    };
+    let layer = Layer::new(
+        (target.width as usize, target.height as usize),
+        LayerAttributes::default(),
+        Encoding::SMALL_LOSSLESS,
+        AnyChannels::sort(channels.into()),
+    );
+    let image = Image::from_layer(layer);
+    write_atomically(path, FORMAT, |w| {
+        image.write().to_buffered(w)?;
+        Ok(())
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::core::image::load;
+
+    fn load_default(path: &Path) -> Result<HdrImage, ImageError> {
+        load(path, &ImageLimits::default())
+    }
+
+    fn write_channels(
+        path: &Path,
+        width: usize,
+        height: usize,
+        channels: Vec<AnyChannel<FlatSamples>>,
+    ) {
+        let layer = Layer::new(
+            (width, height),
+            LayerAttributes::default(),
+            Encoding::SMALL_LOSSLESS,
+            AnyChannels::sort(channels.into()),
+        );
+        Image::from_layer(layer).write().to_file(path).unwrap();
+    }
+
+    #[test]
+    fn rgba16f_target_round_trips_exactly() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("t.exr");
+        let mut target = RenderTarget::new(3, 2, TargetFormat::Rgba16F);
+        target.store(0, 0, [1.0001, -2.5, 70000.0, 0.5]);
+        target.store(2, 1, [1e-6, 3.0, 65504.0, 0.0]);
+        write_exr(&path, &target).unwrap();
+        let image = load_default(&path).unwrap();
+        assert_eq!((image.width, image.height), (3, 2));
+        assert_eq!(image.pixels, target.texels);
+    }
+
+    #[test]
+    fn r32f_target_reads_back_as_grey() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("t.exr");
+        let mut target = RenderTarget::new(2, 2, TargetFormat::R32F);
+        target.store(1, 1, [0.123_456_79, 9.0, 9.0, 9.0]);
+        write_exr(&path, &target).unwrap();
+        let image = load_default(&path).unwrap();
+        assert_eq!(
+            image.pixel(1, 1),
+            [0.123_456_79, 0.123_456_79, 0.123_456_79, 1.0]
+        );
+        assert_eq!(image.pixel(0, 0), [0.0, 0.0, 0.0, 1.0]);
+    }
+
+    #[test]
+    fn grey_y_channel_fills_rgb() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("y.exr");
+        let y = FlatSamples::F16(vec![f16::from_f32(0.25), f16::from_f32(4.0)]);
+        write_channels(&path, 2, 1, vec![AnyChannel::new("Y", y)]);
+        let image = load_default(&path).unwrap();
+        assert_eq!(
+            image.pixels,
+            vec![[0.25, 0.25, 0.25, 1.0], [4.0, 4.0, 4.0, 1.0]]
+        );
+    }
+
+    #[test]
+    fn luminance_chroma_files_are_refused() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("yc.exr");
+        let channel = |name| AnyChannel::new(name, FlatSamples::F32(vec![1.0; 4]));
+        write_channels(
+            &path,
+            2,
+            2,
+            vec![channel("Y"), channel("RY"), channel("BY")],
+        );
+        let err = load_default(&path).unwrap_err();
+        assert!(err.to_string().contains("RY"), "{err}");
+    }
+
+    #[test]
+    fn unusable_channels_are_named() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("z.exr");
+        let z = FlatSamples::F32(vec![1.0; 4]);
+        write_channels(&path, 2, 2, vec![AnyChannel::new("Z", z)]);
+        let err = load_default(&path).unwrap_err();
+        assert!(matches!(err, ImageError::BadHeader { .. }), "{err}");
+        assert!(err.to_string().contains("[Z]"), "{err}");
+    }
+
+    #[test]
+    fn corrupt_dwa_counter_is_an_error_not_an_abort() {
+        // city.exr (DWAB) has its first chunk at byte 1208: y (i32), size
+        // (i32), then the eleven u64 DWA counters; the DC count (counter 9)
+        // is 12288 = (1024/8) * (256/8) * 3 channels.
+        let mut bytes =
+            std::fs::read(concat!(env!("CARGO_MANIFEST_DIR"), "/assets/hdr/city.exr")).unwrap();
+        let dc_count = 1208 + 8 + 9 * 8;
+        assert_eq!(bytes[dc_count..dc_count + 8], 12288u64.to_le_bytes());
+        // One changed byte, as found by corrupting the file at random: the
+        // exr crate alone would try to reserve 2 * 85 * 2^40 bytes and abort.
+        bytes[dc_count + 5] = 85;
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("corrupt.exr");
+        std::fs::write(&path, bytes).unwrap();
+        let err = load_default(&path).unwrap_err();
+        assert!(matches!(err, ImageError::BadHeader { .. }), "{err}");
+        assert!(err.to_string().contains("DC count"), "{err}");
+    }
+
+    #[test]
+    fn truncated_file_is_an_error() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("t.exr");
+        let mut target = RenderTarget::new(64, 64, TargetFormat::Rgba16F);
+        for i in 0..64 {
+            target.store(i, i, [i as f32; 4]);
+        }
+        write_exr(&path, &target).unwrap();
+        let full = std::fs::read(&path).unwrap();
+        for len in [4, 20, 200, full.len() / 2, full.len() - 1] {
+            std::fs::write(&path, &full[..len]).unwrap();
+            let err = load_default(&path).unwrap_err();
+            assert!(err.to_string().contains("t.exr"), "{len}: {err}");
+        }
+    }
+
+    /// A minimal scan-line EXR header claiming `width` x `height` pixels, one
+    /// half channel R, no compression, followed by no data at all.
+    fn exr_header_only(width: i32, height: i32) -> Vec<u8> {
+        fn attribute(out: &mut Vec<u8>, name: &str, kind: &str, value: &[u8]) {
+            out.extend(name.as_bytes());
+            out.push(0);
+            out.extend(kind.as_bytes());
+            out.push(0);
+            out.extend((value.len() as i32).to_le_bytes());
+            out.extend(value);
+        }
+        let window: Vec<u8> = [0, 0, width - 1, height - 1]
+            .iter()
+            .flat_map(|v: &i32| v.to_le_bytes())
+            .collect();
+        // chlist: name, pixel type (1 = half), pLinear + 3 reserved, x/y sampling; then a 0 byte.
+        let mut channels = b"R\0".to_vec();
+        channels.extend(1i32.to_le_bytes());
+        channels.extend([0, 0, 0, 0]);
+        channels.extend(1i32.to_le_bytes());
+        channels.extend(1i32.to_le_bytes());
+        channels.push(0);
+
+        let mut out = vec![0x76, 0x2f, 0x31, 0x01, 2, 0, 0, 0];
+        attribute(&mut out, "channels", "chlist", &channels);
+        attribute(&mut out, "compression", "compression", &[0]);
+        attribute(&mut out, "dataWindow", "box2i", &window);
+        attribute(&mut out, "displayWindow", "box2i", &window);
+        attribute(&mut out, "lineOrder", "lineOrder", &[0]);
+        attribute(&mut out, "pixelAspectRatio", "float", &1f32.to_le_bytes());
+        attribute(&mut out, "screenWindowCenter", "v2f", &[0; 8]);
+        attribute(&mut out, "screenWindowWidth", "float", &1f32.to_le_bytes());
+        out.push(0); // end of header
+        out
+    }
+
+    #[test]
+    fn absurd_size_is_refused_before_decoding() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("huge.exr");
+        std::fs::write(&path, exr_header_only(100_000, 100_000)).unwrap();
+        let err = load_default(&path).unwrap_err();
+        assert!(
+            matches!(
+                err,
+                ImageError::TooLarge {
+                    width: 100_000,
+                    height: 100_000,
+                    ..
+                }
+            ),
+            "{err}"
+        );
+        assert!(err.to_string().contains("--max-pixels"), "{err}");
+    }
+
+    #[test]
+    fn hand_made_header_is_a_valid_exr() {
+        // The same header for a small size fails only for lack of pixel
+        // data (the offset table is missing), which shows the huge case
+        // above was refused by the size check and not by a header error.
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("small.exr");
+        std::fs::write(&path, exr_header_only(4, 4)).unwrap();
+        MetaData::read_from_file(&path, true).unwrap();
+        let err = load_default(&path).unwrap_err();
+        assert!(matches!(err, ImageError::Decode { .. }), "{err}");
+    }
+}

@@ -1,0 +1,70 @@
+//! 8-bit sRGB PNG output, for looking at tone-mapped results with any image
+//! viewer.
+
+use super::write_atomically;
+use super::ImageError;
+use image::codecs::png::PngEncoder;
+use image::{ExtendedColorType, ImageEncoder};
+use std::path::Path;
+
+/// Writes `rgb` (`width * height` pixels of 3 bytes, row-major, top row
+/// first, already sRGB-encoded) as a PNG file, atomically.
+pub fn write_png_rgb8(path: &Path, width: u32, height: u32, rgb: &[u8]) -> Result<(), ImageError> {
+    let expected = u64::from(width) * u64::from(height) * 3;
+    if rgb.len() as u64 != expected {
+        return Err(ImageError::DataLength {
+            path: path.to_path_buf(),
+            what: "the RGB8 buffer",
+            expected,
+            found: rgb.len() as u64,
+        });
+    }
+    write_atomically(path, "PNG", |w| {
+        PngEncoder::new(w).write_image(rgb, width, height, ExtendedColorType::Rgb8)?;
+        Ok(())
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn round_trip() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("out.png");
+        let rgb: Vec<u8> = (0..2 * 3 * 3).map(|i| i as u8 * 10).collect();
+        write_png_rgb8(&path, 2, 3, &rgb).unwrap();
+        let decoded = image::open(&path).unwrap().to_rgb8();
+        assert_eq!(decoded.dimensions(), (2, 3));
+        assert_eq!(decoded.into_raw(), rgb);
+    }
+
+    #[test]
+    fn wrong_length_is_refused_and_writes_nothing() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("out.png");
+        let err = write_png_rgb8(&path, 2, 2, &[0; 11]).unwrap_err();
+        assert!(
+            matches!(
+                err,
+                ImageError::DataLength {
+                    expected: 12,
+                    found: 11,
+                    ..
+                }
+            ),
+            "{err}"
+        );
+        assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 0);
+    }
+
+    #[test]
+    fn missing_directory_leaves_no_file() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("missing/out.png");
+        let err = write_png_rgb8(&path, 1, 1, &[1, 2, 3]).unwrap_err();
+        assert!(matches!(err, ImageError::Io { .. }), "{err}");
+        assert!(!path.exists());
+    }
+}

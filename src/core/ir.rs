@@ -1,0 +1,363 @@
+//! The validated program: the one intermediate representation every later
+//! stage (cost model, emulator, writer, generator) reads.
+//!
+//! Rules of the IR:
+//!
+//! * [`Program::instructions`] holds executable instructions only, in source
+//!   order, with every REPEAT_BLOCK already expanded. Declarations (`dcl_*`)
+//!   and constant definitions (`def`, `defi`, `defb`) live in their own lists.
+//! * Every instruction keeps its [`Origin`]: the byte span of the source text
+//!   it came from and, when a REPEAT_BLOCK produced it, which repetition.
+//! * Operands are resolved: register files and indices are checked, swizzles
+//!   are four component indices, write masks are bit sets.
+//! * A [`Shader`] (program + [`Info`]) can only be built by
+//!   [`crate::core::valid::validate`], so holding one proves the program follows the
+//!   ps_3_0 rules ps30 checks and that its blocks are balanced.
+
+use crate::core::isa::{Compare, Opcode, RegFile, SamplerType};
+use std::collections::BTreeMap;
+use std::fmt;
+
+/// A byte range in a source file.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default, PartialOrd, Ord)]
+pub struct Span {
+    pub start: u32,
+    pub end: u32,
+}
+
+impl Span {
+    pub fn new(start: usize, end: usize) -> Span {
+        Span {
+            start: start as u32,
+            end: end as u32,
+        }
+    }
+
+    pub fn range(self) -> std::ops::Range<usize> {
+        self.start as usize..self.end as usize
+    }
+
+    /// The smallest span covering both.
+    pub fn to(self, other: Span) -> Span {
+        Span {
+            start: self.start.min(other.start),
+            end: self.end.max(other.end),
+        }
+    }
+}
+
+/// One level of REPEAT_BLOCK expansion an instruction sits in.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Repetition {
+    /// Span of the `BEGIN_REPEAT_BLOCK(...)` line.
+    pub macro_span: Span,
+    /// 0-based repetition number.
+    pub index: u32,
+    /// How many repetitions the macro makes.
+    pub count: u32,
+}
+
+/// Where an instruction came from.
+#[derive(Clone, Debug, PartialEq, Eq, Hash, Default)]
+pub struct Origin {
+    pub span: Span,
+    /// Enclosing repetitions, outermost first; empty outside macros.
+    pub repeats: Vec<Repetition>,
+}
+
+/// A register: file and number (`r3` is `Temp`, 3; `vPos` is `Position`, 0).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct Reg {
+    pub file: RegFile,
+    pub index: u32,
+}
+
+impl fmt::Display for Reg {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let info = self.file.info();
+        if info.numbered {
+            write!(f, "{}{}", info.name, self.index)
+        } else {
+            f.write_str(info.name)
+        }
+    }
+}
+
+/// A source swizzle: for each output component, the input component read.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Swizzle(pub [u8; 4]);
+
+impl Swizzle {
+    pub const IDENTITY: Swizzle = Swizzle([0, 1, 2, 3]);
+
+    pub fn replicate(c: u8) -> Swizzle {
+        Swizzle([c; 4])
+    }
+
+    /// Whether all four components read the same input component.
+    pub fn is_replicate(self) -> bool {
+        self.0.iter().all(|&c| c == self.0[0])
+    }
+}
+
+impl fmt::Display for Swizzle {
+    /// Prints the shortest form that parses back to the same swizzle
+    /// (`.xyyy` prints as `.xy`); nothing for the identity.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        if *self == Swizzle::IDENTITY {
+            return Ok(());
+        }
+        let mut n = 4;
+        while n > 1 && self.0[n - 1] == self.0[n - 2] {
+            n -= 1;
+        }
+        f.write_str(".")?;
+        for &c in &self.0[..n] {
+            f.write_str(["x", "y", "z", "w"][c as usize])?;
+        }
+        Ok(())
+    }
+}
+
+/// A destination write mask: bit 0 = x … bit 3 = w.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct WriteMask(pub u8);
+
+impl WriteMask {
+    pub const ALL: WriteMask = WriteMask(0b1111);
+
+    pub fn has(self, component: usize) -> bool {
+        self.0 & (1 << component) != 0
+    }
+
+    pub fn count(self) -> u32 {
+        self.0.count_ones()
+    }
+}
+
+impl fmt::Display for WriteMask {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        if *self == WriteMask::ALL {
+            return Ok(());
+        }
+        f.write_str(".")?;
+        for (i, c) in ["x", "y", "z", "w"].iter().enumerate() {
+            if self.has(i) {
+                f.write_str(c)?;
+            }
+        }
+        Ok(())
+    }
+}
+
+/// Source modifiers allowed in ps_3_0.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default)]
+pub enum SrcMod {
+    #[default]
+    None,
+    /// `-r0`
+    Neg,
+    /// `r0_abs`
+    Abs,
+    /// `-r0_abs`
+    NegAbs,
+    /// `!b0`, `!p0.x` (conditions only)
+    Not,
+}
+
+/// A source operand.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Src {
+    pub reg: Reg,
+    /// `v[aL + n]`: the register number is `reg.index + aL`.
+    pub relative: bool,
+    pub swizzle: Swizzle,
+    pub modifier: SrcMod,
+}
+
+impl Src {
+    pub fn plain(reg: Reg) -> Src {
+        Src {
+            reg,
+            relative: false,
+            swizzle: Swizzle::IDENTITY,
+            modifier: SrcMod::None,
+        }
+    }
+}
+
+/// A destination operand.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Dst {
+    pub reg: Reg,
+    pub mask: WriteMask,
+}
+
+/// A `(p0.c)` / `(!p0.c)` guard in front of an instruction.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Predicate {
+    pub negate: bool,
+    pub swizzle: Swizzle,
+}
+
+/// One executable instruction.
+///
+/// Operand placement:
+/// * arithmetic and texture instructions: `dst` and `src` as written; the
+///   sampler of `texld*` is a source with file `Sampler`;
+/// * `texkill r0`: the operand is `dst` (it is encoded as a destination) but
+///   it is read, never written;
+/// * `setp_*`: `dst` is `p0`;
+/// * flow control: every operand (`i#`, `aL`, `b#`, `p0.c`, `l#`) is a source.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Instruction {
+    pub op: Opcode,
+    pub sat: bool,
+    pub pp: bool,
+    pub centroid: bool,
+    pub compare: Option<Compare>,
+    pub predicate: Option<Predicate>,
+    pub dst: Option<Dst>,
+    pub src: Vec<Src>,
+    pub origin: Origin,
+}
+
+/// `def c#, x, y, z, w`
+#[derive(Clone, Debug, PartialEq)]
+pub struct FloatDef {
+    pub index: u32,
+    pub value: [f32; 4],
+    pub origin: Origin,
+}
+
+/// `defi i#, x, y, z, w`
+#[derive(Clone, Debug, PartialEq)]
+pub struct IntDef {
+    pub index: u32,
+    pub value: [i32; 4],
+    pub origin: Origin,
+}
+
+/// `defb b#, true|false`
+#[derive(Clone, Debug, PartialEq)]
+pub struct BoolDef {
+    pub index: u32,
+    pub value: bool,
+    pub origin: Origin,
+}
+
+/// `dcl_<usage><n> v#.mask` (or `dcl vPos.xy`, `dcl vFace`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct InputDecl {
+    pub reg: Reg,
+    /// Usage name (`texcoord`, `color`, ...); empty for vPos / vFace.
+    pub usage: String,
+    pub usage_index: u32,
+    pub mask: WriteMask,
+    pub centroid: bool,
+    pub pp: bool,
+    pub origin: Origin,
+}
+
+/// `dcl_2d s#`, `dcl_cube s#`, `dcl_volume s#`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SamplerDecl {
+    pub index: u32,
+    pub ty: SamplerType,
+    pub origin: Origin,
+}
+
+/// A parsed, expanded program. Build one with the front end; use it through
+/// [`Shader`] once validated.
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct Program {
+    pub instructions: Vec<Instruction>,
+    pub float_defs: Vec<FloatDef>,
+    pub int_defs: Vec<IntDef>,
+    pub bool_defs: Vec<BoolDef>,
+    pub inputs: Vec<InputDecl>,
+    pub samplers: Vec<SamplerDecl>,
+}
+
+impl Program {
+    /// The `defi` value of `i#`, if the shader defines it (last one wins).
+    pub fn int_def(&self, index: u32) -> Option<[i32; 4]> {
+        self.int_defs
+            .iter()
+            .rev()
+            .find(|d| d.index == index)
+            .map(|d| d.value)
+    }
+
+    /// The `def` value of `c#`, if the shader defines it (last one wins).
+    pub fn float_def(&self, index: u32) -> Option<[f32; 4]> {
+        self.float_defs
+            .iter()
+            .rev()
+            .find(|d| d.index == index)
+            .map(|d| d.value)
+    }
+
+    /// The `defb` value of `b#`, if the shader defines it (last one wins).
+    pub fn bool_def(&self, index: u32) -> Option<bool> {
+        self.bool_defs
+            .iter()
+            .rev()
+            .find(|d| d.index == index)
+            .map(|d| d.value)
+    }
+
+    /// The declared type of sampler `s#`.
+    pub fn sampler_type(&self, index: u32) -> Option<SamplerType> {
+        self.samplers
+            .iter()
+            .find(|d| d.index == index)
+            .map(|d| d.ty)
+    }
+}
+
+/// Facts the validator established about a program's structure.
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct Info {
+    /// For `rep`/`loop`: index of the matching `endrep`/`endloop`; for
+    /// `endrep`/`endloop`: index of the matching `rep`/`loop`; for
+    /// `if`/`ifc`: index of its `else` if any, else of its `endif`; for
+    /// `else`: index of its `endif`; `None` elsewhere.
+    pub matching: Vec<Option<u32>>,
+    /// Label number → index of its `label` instruction.
+    pub labels: BTreeMap<u32, u32>,
+    /// Index one past the last instruction of the main program (the first
+    /// `label`, or the end).
+    pub main_end: u32,
+    /// Static slots of each instruction (cube samplers and predication
+    /// included).
+    pub slots: Vec<u32>,
+    /// Sum of [`Info::slots`].
+    pub total_slots: u32,
+}
+
+/// A program that passed validation, with its structural facts.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Shader {
+    program: Program,
+    info: Info,
+}
+
+impl Shader {
+    /// Only the validator builds shaders.
+    pub(crate) fn new_validated(program: Program, info: Info) -> Shader {
+        Shader { program, info }
+    }
+
+    pub fn program(&self) -> &Program {
+        &self.program
+    }
+
+    pub fn info(&self) -> &Info {
+        &self.info
+    }
+
+    pub fn instructions(&self) -> &[Instruction] {
+        &self.program.instructions
+    }
+}

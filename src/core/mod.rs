@@ -1,0 +1,23 @@
+//! The core stages: everything a shader passes through on its way from text
+//! to numbers, and nothing that knows what a job does with them.
+//!
+//! One instruction table ([`isa`]) and one IR ([`ir`]) join the stages, as
+//! in naga: the [`front`] end reads text into an AST and expands
+//! REPEAT_BLOCK, [`valid`] lowers it and checks the ps_3_0 rules into an
+//! [`ir::Shader`], and [`load`] runs the three in one call. The [`cost`]
+//! model and the [`emu`]lator take a validated shader; [`image`] reads and
+//! writes the pixels they work on. [`diag`] renders every stage's errors,
+//! [`numbers`] formats figures the same way everywhere, and [`output`] writes
+//! files atomically. Nothing here imports from `jobs` or `present`.
+
+pub mod cost;
+pub mod diag;
+pub mod emu;
+pub mod front;
+pub mod image;
+pub mod ir;
+pub mod isa;
+pub mod load;
+pub mod numbers;
+pub mod output;
+pub mod valid;

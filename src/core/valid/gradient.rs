@@ -1,0 +1,250 @@
+//! Gradients under dynamic flow control, found statically.
+//!
+//! Pixels run in 2×2 quads so that `dsx`/`dsy` and the mip selection of
+//! `texld`, `texldb` and `texldp` can difference a register between
+//! neighbours at the same point of execution. Where the pixels of a quad may
+//! have taken different paths, that difference is undefined. Microsoft's
+//! "Interaction of Per-Pixel Flow Control With Screen Gradients" (facts sheet
+//! §5) makes it illegal to use texld/texldb/texldp with a *temporary*
+//! coordinate, or dsx/dsy of a temporary, inside flow control whose
+//! condition can vary per pixel — predication included — and says the
+//! validator enforces it even where the condition looks uniform. Inputs
+//! (`v#`) are interpolated for every pixel of the quad, so they are fine
+//! anywhere; `texldl` and `texldd` take no implicit gradients.
+//!
+//! Where an instruction can run with part of its quad, statically:
+//! * it is predicated (`(p0) texld …`);
+//! * it lies inside `if_comp` or `if p0.c` (either side);
+//! * it lies inside a rep/loop that pixels can leave at different
+//!   iterations: one with a `break_comp` or `breakp` of its own, or a `break`
+//!   inside a dynamic `if` below it (the whole body counts: from the second
+//!   iteration on, pixels that left are missing);
+//! * it follows, in the same function, a `ret` that runs under dynamic flow
+//!   control (those pixels have left for good);
+//! * it is in a subroutine called under dynamic flow control, or by
+//!   `callnz l#, p0.c`.
+//!
+//! `if b#`, `callnz l#, b#` and rep/loop counts are uniform over a draw.
+//!
+//! **Warning, not error.** Microsoft's validator rejects such a shader;
+//! ps30 reports a warning with the place and the reason instead, so the
+//! shader can still be measured with `ps30 check` and run with `ps30 profile`,
+//! whose quads show what the undefined gradients actually do (see
+//! `crate::core::emu` and the README).
+
+use crate::core::diag::{Diagnostic, SourceFile};
+use crate::core::ir::{Info, Program};
+use crate::core::isa::{Opcode, RegFile};
+
+/// Why an instruction may run with only part of its quad.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Dynamic {
+    /// The instruction itself is predicated.
+    Predicated,
+    /// Inside the dynamic `if` at this instruction index.
+    InIf(usize),
+    /// Inside the loop at `.0`, which pixels can leave through the exit at `.1`.
+    InLoop(usize, usize),
+    /// After the `ret` at this index, which pixels may have taken early.
+    AfterRet(usize),
+    /// In a subroutine called from the dynamic call at this index.
+    Called(usize),
+}
+
+/// For every instruction, whether (and why) its quad may be divergent when
+/// it runs. `info` must come from a program that validated without errors.
+pub fn dynamic_context(p: &Program, info: &Info) -> Vec<Option<Dynamic>> {
+    let ins = &p.instructions;
+    let n = ins.len();
+    let mut why: Vec<Option<Dynamic>> = vec![None; n];
+
+    // Functions: main and each label's body, as index ranges.
+    let mut starts: Vec<(Option<u32>, usize)> = vec![(None, 0)];
+    for (&label, &at) in &info.labels {
+        starts.push((Some(label), at as usize + 1));
+    }
+    starts.sort_by_key(|&(_, s)| s);
+    let mut ranges: Vec<(Option<u32>, std::ops::Range<usize>)> = Vec::new();
+    for (k, &(label, start)) in starts.iter().enumerate() {
+        let end = match starts.get(k + 1) {
+            // The next function starts after its label; stop before it.
+            Some(&(_, next)) => next.saturating_sub(1),
+            None => n,
+        };
+        let end = if label.is_none() {
+            (info.main_end as usize).min(end)
+        } else {
+            end
+        };
+        ranges.push((label, start.min(end)..end));
+    }
+
+    // Loops that pixels can leave at different iterations.
+    let mut loop_exit: Vec<Option<usize>> = vec![None; n];
+    for (_, range) in &ranges {
+        // Stack of (opcode, index, dynamic).
+        let mut stack: Vec<(Opcode, usize, bool)> = Vec::new();
+        for i in range.clone() {
+            let op = ins[i].op;
+            match op {
+                Opcode::Rep | Opcode::Loop => stack.push((op, i, false)),
+                Opcode::If | Opcode::Ifc => {
+                    let dynamic = op == Opcode::Ifc
+                        || ins[i]
+                            .src
+                            .first()
+                            .is_some_and(|s| s.reg.file == RegFile::Predicate);
+                    stack.push((op, i, dynamic));
+                }
+                Opcode::EndIf | Opcode::EndRep | Opcode::EndLoop => {
+                    stack.pop();
+                }
+                Opcode::Break | Opcode::BreakC | Opcode::BreakP => {
+                    let mut dynamic = op != Opcode::Break;
+                    for &(o, at, d) in stack.iter().rev() {
+                        if matches!(o, Opcode::Rep | Opcode::Loop) {
+                            if dynamic && loop_exit[at].is_none() {
+                                loop_exit[at] = Some(i);
+                            }
+                            break;
+                        }
+                        dynamic |= d;
+                    }
+                }
+                _ => {}
+            }
+        }
+    }
+
+    // Local context of each instruction, and dynamic call sites.
+    let mut dynamic_calls: Vec<(usize, u32)> = Vec::new();
+    let mut static_calls: Vec<(usize, u32, Option<u32>)> = Vec::new();
+    for (label, range) in &ranges {
+        let mut stack: Vec<(usize, Option<Dynamic>)> = Vec::new();
+        let mut after_ret: Option<usize> = None;
+        for i in range.clone() {
+            let x = &ins[i];
+            let enclosing = stack
+                .iter()
+                .rev()
+                .find_map(|&(_, d)| d)
+                .or(after_ret.map(Dynamic::AfterRet));
+            match x.op {
+                Opcode::EndIf | Opcode::EndRep | Opcode::EndLoop => {
+                    stack.pop();
+                }
+                _ => {}
+            }
+            let own = if x.predicate.is_some() {
+                Some(Dynamic::Predicated)
+            } else {
+                None
+            };
+            why[i] = own.or(enclosing);
+            match x.op {
+                Opcode::Rep | Opcode::Loop => {
+                    stack.push((i, loop_exit[i].map(|e| Dynamic::InLoop(i, e))));
+                }
+                Opcode::If | Opcode::Ifc => {
+                    let dynamic = x.op == Opcode::Ifc
+                        || x.src
+                            .first()
+                            .is_some_and(|s| s.reg.file == RegFile::Predicate);
+                    stack.push((i, dynamic.then_some(Dynamic::InIf(i))));
+                }
+                Opcode::Ret if enclosing.is_some() => {
+                    after_ret.get_or_insert(i);
+                }
+                Opcode::Call | Opcode::CallNz => {
+                    let target = x.src.first().map(|s| s.reg.index);
+                    let pred = x.op == Opcode::CallNz
+                        && x.src
+                            .get(1)
+                            .is_some_and(|s| s.reg.file == RegFile::Predicate);
+                    if let Some(t) = target {
+                        if pred || why[i].is_some() {
+                            dynamic_calls.push((i, t));
+                        } else {
+                            static_calls.push((i, t, *label));
+                        }
+                    }
+                }
+                _ => {}
+            }
+        }
+    }
+
+    // Subroutines reached from a dynamic call, transitively.
+    let mut called: std::collections::BTreeMap<u32, usize> = Default::default();
+    let mut work: Vec<(u32, usize)> = dynamic_calls.iter().map(|&(i, t)| (t, i)).collect();
+    while let Some((label, call)) = work.pop() {
+        if called.contains_key(&label) {
+            continue;
+        }
+        called.insert(label, call);
+        for &(_, t, from) in &static_calls {
+            if from == Some(label) && !called.contains_key(&t) {
+                work.push((t, call));
+            }
+        }
+    }
+    for (label, range) in &ranges {
+        if let Some(&call) = label.and_then(|l| called.get(&l)) {
+            for w in &mut why[range.clone()] {
+                w.get_or_insert(Dynamic::Called(call));
+            }
+        }
+    }
+    why
+}
+
+/// Warnings for gradient instructions that may run with part of a quad.
+pub fn warnings(p: &Program, info: &Info, file: &SourceFile) -> Vec<Diagnostic> {
+    let ctx = dynamic_context(p, info);
+    let mut out = Vec::new();
+    for (i, x) in p.instructions.iter().enumerate() {
+        let Some(why) = ctx[i] else { continue };
+        let temp = x.src.first().is_some_and(|s| s.reg.file == RegFile::Temp);
+        let (what, help) = match x.op {
+            Opcode::TexLd | Opcode::TexLdB | Opcode::TexLdP if temp => (
+                format!(
+                    "`{}` with a temporary coordinate under dynamic flow control: its mip level is undefined",
+                    x.op
+                ),
+                "sample with texldl (explicit LOD, e.g. w = 0 for the top level) or texldd with gradients computed before the branch",
+            ),
+            Opcode::Dsx | Opcode::Dsy if temp => (
+                format!("`{}` of a temporary under dynamic flow control is undefined", x.op),
+                "take dsx/dsy before the branch and keep the result in a temporary",
+            ),
+            _ => continue,
+        };
+        let span = x.origin.span;
+        let mut d = Diagnostic::warning(span, what)
+            .with_label("gradients need all four pixels of the 2×2 quad here")
+            .with_help(help)
+            .with_note("Direct3D's validator rejects this; ps30 warns so the shader can still be measured and run (ps30 profile counts the quads that hit it)");
+        let at = |k: usize| p.instructions[k].origin.span;
+        d = match why {
+            Dynamic::Predicated => {
+                d.with_note("the instruction is predicated: pixels of a quad can differ in p0")
+            }
+            Dynamic::InIf(k) => {
+                d.with_secondary(at(k), "the pixels of a quad can go different ways here")
+            }
+            Dynamic::InLoop(l, e) => d
+                .with_secondary(
+                    at(l),
+                    "a loop that pixels can leave at different iterations",
+                )
+                .with_secondary(at(e), "through this exit"),
+            Dynamic::AfterRet(r) => d.with_secondary(at(r), "pixels may have returned early here"),
+            Dynamic::Called(c) => d.with_secondary(
+                at(c),
+                "the subroutine is called under dynamic flow control here",
+            ),
+        };
+        out.push(d.in_origin(&x.origin, file));
+    }
+    out
+}

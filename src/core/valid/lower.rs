@@ -1,0 +1,1077 @@
+//! Lowering one statement: AST operands → resolved IR operands, checking
+//! everything that can be checked from the statement alone (mnemonic,
+//! modifiers, operand count and kinds, register ranges, swizzles, masks).
+
+use crate::core::diag::Diagnostic;
+use crate::core::front::ast::{InstrAst, OperandAst, RegAst};
+use crate::core::ir::{
+    BoolDef, Dst, FloatDef, InputDecl, Instruction, IntDef, Origin, Predicate, Reg, SamplerDecl,
+    Span, Src, SrcMod, Swizzle, WriteMask,
+};
+use crate::core::isa::{Class, Compare, Opcode, Operand, RegFile, SamplerType, USAGES};
+
+/// What one statement becomes.
+#[derive(Clone, Debug)]
+pub enum Lowered {
+    Instr(Instruction),
+    Input(InputDecl),
+    Sampler(SamplerDecl),
+    Float(FloatDef),
+    Int(IntDef),
+    Bool(BoolDef),
+}
+
+type R<T> = Result<T, Diagnostic>;
+
+/// Mnemonics of other shader models, with what to say about them.
+const NOT_PS30: &[(&str, &str)] = &[
+    ("lit", "lit is a vertex-shader instruction"),
+    ("slt", "slt is a vertex-shader instruction; use setp or cmp"),
+    ("sge", "sge is a vertex-shader instruction; use setp or cmp"),
+    ("dst", "dst is a vertex-shader instruction"),
+    ("expp", "expp is a vertex-shader instruction; use exp"),
+    ("logp", "logp is a vertex-shader instruction; use log"),
+    ("mova", "mova is a vertex-shader instruction"),
+    ("sgn", "sgn is a vertex-shader instruction"),
+    ("tex", "tex is ps_1_x; use texld"),
+    ("texcoord", "texcoord is ps_1_x"),
+    ("phase", "phase is ps_1_4 only"),
+    ("bem", "bem is ps_1_4 only"),
+    ("cnd", "cnd is ps_1_x; use cmp"),
+];
+
+pub fn lower(ast: &InstrAst, origin: &Origin) -> R<Lowered> {
+    match ast.base.as_str() {
+        "dcl" => lower_dcl(ast, origin),
+        "def" | "defi" | "defb" => lower_def(ast, origin),
+        _ => lower_instruction(ast, origin).map(Lowered::Instr),
+    }
+}
+
+fn unknown_mnemonic(ast: &InstrAst) -> Diagnostic {
+    let name = &ast.base;
+    let d = Diagnostic::error(ast.base_span, format!("unknown instruction `{name}`"));
+    if let Some((_, why)) = NOT_PS30.iter().find(|(m, _)| m == name) {
+        return d.with_label("not a ps_3_0 instruction").with_help(*why);
+    }
+    let best = crate::core::isa::TABLE
+        .iter()
+        .map(|r| (edit_distance(name, r.mnemonic), r.mnemonic))
+        .min();
+    match best {
+        Some((dist, m)) if dist <= if name.len() <= 4 { 1 } else { 2 } => d
+            .with_label("unknown mnemonic")
+            .with_help(format!("did you mean `{m}`?")),
+        _ => d
+            .with_label("unknown mnemonic")
+            .with_help("see the ps_3_0 instruction list in the README"),
+    }
+}
+
+fn edit_distance(a: &str, b: &str) -> usize {
+    let b: Vec<char> = b.chars().collect();
+    let mut prev: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.chars().enumerate() {
+        let mut cur = vec![i + 1];
+        for (j, cb) in b.iter().enumerate() {
+            let sub = prev[j] + usize::from(ca != *cb);
+            cur.push(sub.min(prev[j + 1] + 1).min(cur[j] + 1));
+        }
+        prev = cur;
+    }
+    prev[b.len()]
+}
+
+fn lower_instruction(ast: &InstrAst, origin: &Origin) -> R<Instruction> {
+    let mut sat = false;
+    let mut pp = false;
+    let mut centroid = false;
+    let mut compare = None;
+    for (s, span) in &ast.suffixes {
+        match s.as_str() {
+            "sat" => sat = true,
+            "pp" => pp = true,
+            "centroid" => centroid = true,
+            "x2" | "x4" | "x8" | "d2" | "d4" | "d8" => {
+                return Err(Diagnostic::error(*span, format!("shift modifier `_{s}` does not exist in ps_3_0"))
+                    .with_label("ps_1_x only")
+                    .with_help("multiply explicitly with mul"))
+            }
+            _ => match Compare::from_suffix(s) {
+                Some(c) if compare.is_none() => compare = Some(c),
+                Some(_) => return Err(Diagnostic::error(*span, "more than one comparison suffix")),
+                None => {
+                    return Err(Diagnostic::error(*span, format!("unknown instruction modifier `_{s}`"))
+                        .with_label("unknown modifier")
+                        .with_help("ps_3_0 modifiers are _sat, _pp, _centroid and the comparisons _gt _lt _ge _le _eq _ne"))
+                }
+            },
+        }
+    }
+    let op =
+        Opcode::from_mnemonic(&ast.base, compare.is_some()).ok_or_else(|| unknown_mnemonic(ast))?;
+    let info = op.info();
+    if info.class == Class::Declaration {
+        return Err(unknown_mnemonic(ast));
+    }
+    if compare.is_some() && !info.comparison {
+        let span = ast
+            .suffixes
+            .iter()
+            .find(|(s, _)| Compare::from_suffix(s).is_some())
+            .map(|s| s.1);
+        return Err(Diagnostic::error(
+            span.unwrap_or(ast.base_span),
+            format!("`{}` takes no comparison suffix", info.mnemonic),
+        ));
+    }
+    if info.comparison && compare.is_none() {
+        return Err(Diagnostic::error(
+            ast.base_span,
+            format!("`{}` needs a comparison suffix", info.mnemonic),
+        )
+        .with_label("comparison missing")
+        .with_help(format!(
+            "write {}_gt, _lt, _ge, _le, _eq or _ne",
+            info.mnemonic
+        )));
+    }
+    let suffix_span = |name: &str| {
+        ast.suffixes
+            .iter()
+            .find(|(s, _)| s == name)
+            .map(|s| s.1)
+            .unwrap_or(ast.base_span)
+    };
+    if sat && !info.allows_sat {
+        return Err(Diagnostic::error(
+            suffix_span("sat"),
+            format!("`_sat` is not allowed on `{}`", info.mnemonic),
+        )
+        .with_label("not allowed here"));
+    }
+    if centroid && info.class != Class::Texture {
+        return Err(Diagnostic::error(
+            suffix_span("centroid"),
+            "`_centroid` is only allowed on texture instructions and input declarations",
+        )
+        .with_label("not allowed here"));
+    }
+    let predicate = match &ast.predicate {
+        None => None,
+        Some(p) => {
+            if !info.predicable {
+                return Err(Diagnostic::error(
+                    p.span,
+                    format!("`{}` cannot be predicated", info.mnemonic),
+                )
+                .with_label("flow-control instructions take no predicate")
+                .with_help("use if / breakp / callnz with p0 instead"));
+            }
+            let src = predicate_operand(p, false)?;
+            Some(Predicate {
+                negate: src.modifier == SrcMod::Not,
+                swizzle: src.swizzle,
+            })
+        }
+    };
+    let shape = info.operands;
+    if ast.operands.len() != shape.len() {
+        let span = if ast.operands.is_empty() {
+            ast.span
+        } else {
+            ast.operands[0]
+                .span()
+                .to(ast.operands.last().unwrap().span())
+        };
+        return Err(Diagnostic::error(
+            span,
+            format!(
+                "`{}` takes {} operand{}, found {}",
+                info.mnemonic,
+                shape.len(),
+                if shape.len() == 1 { "" } else { "s" },
+                ast.operands.len()
+            ),
+        )
+        .with_label("wrong number of operands")
+        .with_help(format!("form: {}", shape_text(info.mnemonic, shape))));
+    }
+    let mut dst = None;
+    let mut src = Vec::new();
+    for (pos, (kind, operand)) in shape.iter().zip(&ast.operands).enumerate() {
+        let reg = match operand {
+            OperandAst::Reg(r) => r,
+            other => {
+                return Err(Diagnostic::error(
+                    other.span(),
+                    format!(
+                        "operand {} of `{}` must be a register",
+                        pos + 1,
+                        info.mnemonic
+                    ),
+                )
+                .with_label("a literal is not allowed here")
+                .with_help("put the value in a constant with def and use c#"))
+            }
+        };
+        match kind {
+            Operand::Dst | Operand::KillSrc => dst = Some(destination(reg, *kind)?),
+            Operand::PredDst => {
+                let r = resolve_reg(reg)?;
+                if r.file != RegFile::Predicate {
+                    return Err(Diagnostic::error(
+                        reg.span,
+                        "setp writes the predicate register p0",
+                    )
+                    .with_label("expected p0"));
+                }
+                no_modifiers(reg, "the predicate destination")?;
+                dst = Some(Dst {
+                    reg: r,
+                    mask: write_mask(reg)?,
+                });
+            }
+            Operand::Src | Operand::ScalarSrc => {
+                let s = float_source(reg)?;
+                if *kind == Operand::ScalarSrc && !s.swizzle.is_replicate() {
+                    return Err(Diagnostic::error(
+                        reg.span,
+                        format!(
+                            "`{}` needs a replicate swizzle on this source",
+                            info.mnemonic
+                        ),
+                    )
+                    .with_label("expected one component, e.g. .x or .w")
+                    .with_help("scalar sources select one component: r0.x, c1.w"));
+                }
+                src.push(s);
+            }
+            Operand::Sampler => {
+                let r = resolve_reg(reg)?;
+                if r.file != RegFile::Sampler {
+                    return Err(Diagnostic::error(
+                        reg.span,
+                        format!(
+                            "operand {} of `{}` must be a sampler s#",
+                            pos + 1,
+                            info.mnemonic
+                        ),
+                    )
+                    .with_label("expected s0 … s15"));
+                }
+                if reg.negate || reg.abs || reg.not {
+                    return Err(
+                        Diagnostic::error(reg.span, "a sampler operand takes no modifier")
+                            .with_label("remove the modifier"),
+                    );
+                }
+                src.push(Src {
+                    reg: r,
+                    relative: false,
+                    swizzle: swizzle(reg)?,
+                    modifier: SrcMod::None,
+                });
+            }
+            Operand::IntReg => {
+                src.push(plain_of(reg, RegFile::ConstInt, "an integer constant i#")?)
+            }
+            Operand::LoopCounter => {
+                src.push(plain_of(reg, RegFile::LoopCounter, "the loop counter aL")?)
+            }
+            Operand::Label => src.push(plain_of(reg, RegFile::Label, "a label l#")?),
+            Operand::Condition => src.push(condition(reg)?),
+            Operand::FloatLits | Operand::IntLits | Operand::BoolLit => {
+                unreachable!("only def rows use literal shapes")
+            }
+        }
+    }
+    operand_rules(op, dst.as_ref(), &src, ast)?;
+    Ok(Instruction {
+        op,
+        sat,
+        pp,
+        centroid,
+        compare,
+        predicate,
+        dst,
+        src,
+        origin: origin.clone(),
+    })
+}
+
+/// Per-instruction operand rules of Microsoft's instruction pages (crs,
+/// m#x#, nrm, pow, sincos): required write masks, unswizzled sources, and
+/// destinations that may not alias a source.
+fn operand_rules(op: Opcode, dst: Option<&Dst>, src: &[Src], ast: &InstrAst) -> R<()> {
+    let Some(d) = dst else { return Ok(()) };
+    let span = |i: usize| ast.operands.get(i).map_or(ast.span, |o| o.span());
+    let mnemonic = op.info().mnemonic;
+    let need_temp = || -> R<()> {
+        if d.reg.file != RegFile::Temp {
+            return Err(Diagnostic::error(
+                span(0),
+                format!("`{mnemonic}` writes a temporary register r#"),
+            )
+            .with_label("not a temporary")
+            .with_help("compute into r# and copy it with mov"));
+        }
+        Ok(())
+    };
+    let not_aliased = |sources: &[usize], what: &str| -> R<()> {
+        for &i in sources {
+            if src.get(i).is_some_and(|s| s.reg == d.reg) {
+                return Err(Diagnostic::error(
+                    span(0),
+                    format!("the destination of `{mnemonic}` may not be {what}"),
+                )
+                .with_label(format!("{} is also read here", d.reg))
+                .with_secondary(span(i + 1), "same register")
+                .with_help("write the result to another temporary"));
+            }
+        }
+        Ok(())
+    };
+    let mask_must_be = |allowed: &[u8], text: &str| -> R<()> {
+        if !allowed.contains(&d.mask.0) {
+            return Err(Diagnostic::error(
+                span(0),
+                format!("`{mnemonic}` needs the write mask {text}"),
+            )
+            .with_label(format!(
+                "mask is {}",
+                if d.mask == WriteMask::ALL {
+                    ".xyzw".to_string()
+                } else {
+                    d.mask.to_string()
+                }
+            )));
+        }
+        Ok(())
+    };
+    match op {
+        Opcode::SinCos => {
+            need_temp()?;
+            mask_must_be(&[0b0001, 0b0010, 0b0011], ".x, .y or .xy")?;
+        }
+        Opcode::Crs => {
+            need_temp()?;
+            mask_must_be(
+                &[0b0001, 0b0010, 0b0100, 0b0011, 0b0101, 0b0110, 0b0111],
+                "within .xyz",
+            )?;
+            for (i, s) in src.iter().enumerate() {
+                if s.swizzle != Swizzle::IDENTITY {
+                    return Err(
+                        Diagnostic::error(span(i + 1), "`crs` sources take no swizzle")
+                            .with_label("remove the swizzle"),
+                    );
+                }
+            }
+            not_aliased(&[0, 1], "one of its sources")?;
+        }
+        Opcode::M3x2 | Opcode::M3x3 | Opcode::M4x3 | Opcode::M3x4 | Opcode::M4x4 => {
+            let rows = match op {
+                Opcode::M3x2 => 2,
+                Opcode::M3x3 | Opcode::M4x3 => 3,
+                _ => 4,
+            };
+            let (mask, text): (u8, &str) = match rows {
+                2 => (0b0011, ".xy"),
+                3 => (0b0111, ".xyz"),
+                _ => (0b1111, ".xyzw"),
+            };
+            mask_must_be(&[mask], text)?;
+            let m = &src[1];
+            if m.swizzle != Swizzle::IDENTITY || m.modifier != SrcMod::None {
+                return Err(Diagnostic::error(
+                    span(2),
+                    format!("the matrix operand of `{mnemonic}` takes no swizzle or modifier"),
+                )
+                .with_label("must be a plain register"));
+            }
+            not_aliased(&[0], "its vector source")?;
+            if d.reg.file == m.reg.file && (m.reg.index..m.reg.index + rows).contains(&d.reg.index)
+            {
+                return Err(Diagnostic::error(
+                    span(0),
+                    format!(
+                        "the destination of `{mnemonic}` may not be one of the matrix rows {}…",
+                        m.reg
+                    ),
+                )
+                .with_label("overlaps the matrix"));
+            }
+            if m.reg.index + rows > m.reg.file.info().count {
+                return Err(Diagnostic::error(
+                    span(2),
+                    format!(
+                        "the matrix {}…+{} runs past the last register",
+                        m.reg,
+                        rows - 1
+                    ),
+                )
+                .with_label("out of range"));
+            }
+        }
+        Opcode::Nrm => {
+            need_temp()?;
+            not_aliased(&[0], "its source")?;
+        }
+        Opcode::Pow => {
+            need_temp()?;
+            not_aliased(&[1], "its exponent source")?;
+        }
+        _ => {}
+    }
+    Ok(())
+}
+
+fn shape_text(mnemonic: &str, shape: &[Operand]) -> String {
+    let names: Vec<&str> = shape
+        .iter()
+        .map(|o| match o {
+            Operand::Dst => "dst",
+            Operand::Src => "src",
+            Operand::ScalarSrc => "src.c",
+            Operand::Sampler => "s#",
+            Operand::IntReg => "i#",
+            Operand::LoopCounter => "aL",
+            Operand::Label => "l#",
+            Operand::Condition => "[!]b# | [!]p0.c",
+            Operand::PredDst => "p0",
+            Operand::KillSrc => "src",
+            Operand::FloatLits => "x, y, z, w",
+            Operand::IntLits => "x, y, z, w",
+            Operand::BoolLit => "true|false",
+        })
+        .collect();
+    if names.is_empty() {
+        mnemonic.to_string()
+    } else {
+        format!("{mnemonic} {}", names.join(", "))
+    }
+}
+
+/// Registers that other shader models have and ps_3_0 does not.
+fn foreign_register(name: &str) -> Option<&'static str> {
+    match name.to_ascii_lowercase().as_str() {
+        "t" => Some("t# registers are ps_2_x; in ps_3_0 texture coordinates arrive in v# (dcl_texcoord0 v0)"),
+        "a" => Some("the address register a0 exists only in vertex shaders; ps_3_0 indexes with aL"),
+        "o" | "ot" | "od" | "opos" | "ofog" | "opts" => Some("vertex-shader outputs do not exist in pixel shaders; write oC0…oC3 or oDepth"),
+        _ => None,
+    }
+}
+
+pub fn resolve_reg(r: &RegAst) -> R<Reg> {
+    let Some(file) = RegFile::lookup(&r.name) else {
+        let d = Diagnostic::error(
+            r.name_span,
+            format!(
+                "unknown register `{}{}`",
+                r.name,
+                r.index.map(|i| i.to_string()).unwrap_or_default()
+            ),
+        )
+        .with_label("not a ps_3_0 register");
+        return Err(match foreign_register(&r.name) {
+            Some(why) => d.with_help(why),
+            None => d.with_help("ps_3_0 registers: r0-r31, v0-v9, c0-c223, i0-i15, b0-b15, s0-s15, p0, oC0-oC3, oDepth, aL, vPos, vFace, l#"),
+        });
+    };
+    let info = file.info();
+    let index = match (info.numbered, r.index, &r.relative) {
+        (true, Some(i), _) => i,
+        (true, None, Some(_)) => 0,
+        (true, None, None) => {
+            return Err(Diagnostic::error(
+                r.name_span,
+                format!("register `{}` needs a number", r.name),
+            )
+            .with_label(format!("e.g. {}0", info.name)))
+        }
+        (false, Some(_), _) => {
+            return Err(
+                Diagnostic::error(r.name_span, format!("`{}` takes no number", info.name))
+                    .with_label("remove the number"),
+            )
+        }
+        (false, None, _) => 0,
+    };
+    if index >= info.count as u64 {
+        return Err(Diagnostic::error(
+            r.name_span,
+            format!("register `{}{}` is out of range", info.name, index),
+        )
+        .with_label(format!(
+            "ps_3_0 has {}{} to {}{}",
+            info.name,
+            0,
+            info.name,
+            info.count - 1
+        )));
+    }
+    Ok(Reg {
+        file,
+        index: index as u32,
+    })
+}
+
+fn component_index(c: char) -> Option<u8> {
+    match c {
+        'x' | 'r' => Some(0),
+        'y' | 'g' => Some(1),
+        'z' | 'b' => Some(2),
+        'w' | 'a' => Some(3),
+        _ => None,
+    }
+}
+
+/// Checks letters are all from one set (xyzw or rgba) and returns indices.
+fn components(letters: &str, span: Span) -> R<Vec<u8>> {
+    let mut out = Vec::new();
+    for (i, c) in letters.chars().enumerate() {
+        let Some(idx) = component_index(c) else {
+            let at = Span::new(
+                span.start as usize + i,
+                span.start as usize + i + c.len_utf8(),
+            );
+            return Err(Diagnostic::error(at, format!("`{c}` is not a component"))
+                .with_label("expected x, y, z, w (or r, g, b, a)"));
+        };
+        out.push(idx);
+    }
+    let xyzw = letters.chars().all(|c| "xyzw".contains(c));
+    let rgba = letters.chars().all(|c| "rgba".contains(c));
+    if !xyzw && !rgba {
+        return Err(
+            Diagnostic::error(span, "mixes xyzw and rgba letters").with_label("use one set")
+        );
+    }
+    if out.len() > 4 {
+        return Err(Diagnostic::error(span, "more than four components").with_label("at most four"));
+    }
+    Ok(out)
+}
+
+pub fn swizzle(r: &RegAst) -> R<Swizzle> {
+    let Some((letters, span)) = &r.components else {
+        return Ok(Swizzle::IDENTITY);
+    };
+    let c = components(letters, *span)?;
+    let last = *c.last().unwrap_or(&3);
+    let mut s = [last; 4];
+    s[..c.len()].copy_from_slice(&c);
+    Ok(Swizzle(s))
+}
+
+pub fn write_mask(r: &RegAst) -> R<WriteMask> {
+    let Some((letters, span)) = &r.components else {
+        return Ok(WriteMask::ALL);
+    };
+    let c = components(letters, *span)?;
+    let mut mask = 0u8;
+    let mut last: i16 = -1;
+    for &i in &c {
+        if i as i16 <= last {
+            return Err(Diagnostic::error(*span, format!("write mask `.{letters}` is not in x, y, z, w order"))
+                .with_label("components must appear in order, each once")
+                .with_help("a write mask lists components in xyzw order without repeats; to reorder, swizzle the source"));
+        }
+        last = i as i16;
+        mask |= 1 << i;
+    }
+    Ok(WriteMask(mask))
+}
+
+fn no_modifiers(r: &RegAst, what: &str) -> R<()> {
+    if r.negate || r.abs || r.not {
+        return Err(
+            Diagnostic::error(r.span, format!("{what} takes no modifier"))
+                .with_label("remove `-`, `!` or `_abs`"),
+        );
+    }
+    if let Some(rel) = &r.relative {
+        return Err(
+            Diagnostic::error(rel.span, format!("{what} cannot be relatively addressed"))
+                .with_label("only sources v[aL + n] may be indexed"),
+        );
+    }
+    Ok(())
+}
+
+fn destination(r: &RegAst, kind: Operand) -> R<Dst> {
+    let reg = resolve_reg(r)?;
+    if kind == Operand::KillSrc {
+        if !matches!(reg.file, RegFile::Temp | RegFile::Input) {
+            return Err(
+                Diagnostic::error(r.span, "texkill takes a temporary r# or an input v#")
+                    .with_label("expected r# or v#"),
+            );
+        }
+    } else if !reg.file.info().writable || reg.file == RegFile::Predicate {
+        return Err(
+            Diagnostic::error(r.name_span, format!("`{reg}` cannot be written"))
+                .with_label("not a destination")
+                .with_help("destinations are r#, oC# and oDepth (and p0 for setp)"),
+        );
+    }
+    no_modifiers(r, "a destination")?;
+    let mask = write_mask(r)?;
+    if reg.file == RegFile::DepthOut && r.components.is_some() {
+        return Err(
+            Diagnostic::error(r.span, "oDepth takes no write mask").with_label("remove the mask")
+        );
+    }
+    Ok(Dst { reg, mask })
+}
+
+fn source_modifier(r: &RegAst) -> SrcMod {
+    match (r.negate, r.abs, r.not) {
+        (_, _, true) => SrcMod::Not,
+        (true, true, _) => SrcMod::NegAbs,
+        (true, false, _) => SrcMod::Neg,
+        (false, true, _) => SrcMod::Abs,
+        _ => SrcMod::None,
+    }
+}
+
+fn float_source(r: &RegAst) -> R<Src> {
+    let reg = resolve_reg(r)?;
+    match reg.file {
+        RegFile::Temp | RegFile::Input | RegFile::Const | RegFile::Position | RegFile::Face => {}
+        RegFile::LoopCounter => {
+            return Err(Diagnostic::error(r.span, "aL can only be used as an index")
+                .with_label("not a float source")
+                .with_help("read inputs relative to the loop counter with v[aL + n]"))
+        }
+        _ => {
+            return Err(
+                Diagnostic::error(r.name_span, format!("`{reg}` cannot be read here"))
+                    .with_label("not a float source")
+                    .with_help("float sources are r#, v#, c#, vPos and vFace"),
+            )
+        }
+    }
+    if r.not {
+        return Err(
+            Diagnostic::error(r.span, "`!` only applies to b# and p0 conditions")
+                .with_label("use `-` to negate"),
+        );
+    }
+    let relative = match &r.relative {
+        None => false,
+        Some(rel) => {
+            if reg.file != RegFile::Input {
+                return Err(Diagnostic::error(
+                    rel.span,
+                    format!(
+                        "`{}` registers cannot be relatively addressed in ps_3_0",
+                        reg.file.info().name
+                    ),
+                )
+                .with_label("only v[aL + n] is indexable"));
+            }
+            if !rel.index_reg.eq_ignore_ascii_case("aL") {
+                let d = Diagnostic::error(
+                    rel.span,
+                    format!("`{}` cannot index registers in ps_3_0", rel.index_reg),
+                )
+                .with_label("expected aL");
+                return Err(
+                    match foreign_register(rel.index_reg.trim_end_matches(char::is_numeric)) {
+                        Some(why) => d.with_help(why),
+                        None => d,
+                    },
+                );
+            }
+            if let Some(span) = rel.index_swizzle {
+                return Err(
+                    Diagnostic::error(span, "aL is a scalar register: no swizzle")
+                        .with_label("remove the swizzle"),
+                );
+            }
+            let total = (reg.index as i64).saturating_add(rel.offset);
+            if total >= RegFile::Input.info().count as i64 {
+                return Err(Diagnostic::error(
+                    rel.span,
+                    format!("base register v{total} is out of range"),
+                )
+                .with_label("v0 … v9"));
+            }
+            true
+        }
+    };
+    let index = if relative {
+        reg.index + r.relative.as_ref().map_or(0, |rel| rel.offset as u32)
+    } else {
+        reg.index
+    };
+    Ok(Src {
+        reg: Reg {
+            file: reg.file,
+            index,
+        },
+        relative,
+        swizzle: swizzle(r)?,
+        modifier: source_modifier(r),
+    })
+}
+
+fn plain_of(r: &RegAst, file: RegFile, what: &str) -> R<Src> {
+    let reg = resolve_reg(r)?;
+    if reg.file != file {
+        return Err(Diagnostic::error(r.span, format!("expected {what}"))
+            .with_label(format!("`{reg}` is not {what}")));
+    }
+    no_modifiers(r, &format!("`{reg}`"))?;
+    if r.components.is_some() {
+        return Err(
+            Diagnostic::error(r.span, format!("`{reg}` takes no swizzle"))
+                .with_label("remove the swizzle"),
+        );
+    }
+    Ok(Src::plain(reg))
+}
+
+fn predicate_operand(r: &RegAst, allow_full: bool) -> R<Src> {
+    let reg = resolve_reg(r)?;
+    if reg.file != RegFile::Predicate {
+        return Err(
+            Diagnostic::error(r.span, "expected the predicate register p0")
+                .with_label("expected p0 or !p0.c"),
+        );
+    }
+    if r.negate || r.abs {
+        return Err(Diagnostic::error(r.span, "a predicate takes only `!`")
+            .with_label("remove `-` or `_abs`"));
+    }
+    let s = swizzle(r)?;
+    if !(s.is_replicate() || allow_full || s == Swizzle::IDENTITY) {
+        return Err(
+            Diagnostic::error(r.span, "a predicate needs one component or none")
+                .with_label("e.g. p0.x"),
+        );
+    }
+    Ok(Src {
+        reg,
+        relative: false,
+        swizzle: s,
+        modifier: if r.not { SrcMod::Not } else { SrcMod::None },
+    })
+}
+
+fn condition(r: &RegAst) -> R<Src> {
+    let reg = resolve_reg(r)?;
+    match reg.file {
+        RegFile::ConstBool => {
+            if r.negate || r.abs || r.components.is_some() || r.relative.is_some() {
+                return Err(
+                    Diagnostic::error(r.span, "a boolean condition is written b# or !b#")
+                        .with_label("remove the modifier or swizzle"),
+                );
+            }
+            Ok(Src {
+                reg,
+                relative: false,
+                swizzle: Swizzle::IDENTITY,
+                modifier: if r.not { SrcMod::Not } else { SrcMod::None },
+            })
+        }
+        RegFile::Predicate => {
+            let s = predicate_operand(r, false)?;
+            if !s.swizzle.is_replicate() {
+                return Err(Diagnostic::error(
+                    r.span,
+                    "a predicate condition selects one component",
+                )
+                .with_label("write p0.x, p0.y, p0.z or p0.w"));
+            }
+            Ok(s)
+        }
+        _ => Err(
+            Diagnostic::error(r.span, "expected a condition: b#, !b#, p0.c or !p0.c")
+                .with_label("not a condition"),
+        ),
+    }
+}
+
+fn lower_dcl(ast: &InstrAst, origin: &Origin) -> R<Lowered> {
+    if ast.operands.len() != 1 {
+        return Err(Diagnostic::error(
+            ast.span,
+            format!(
+                "a declaration takes one register, found {}",
+                ast.operands.len()
+            ),
+        )
+        .with_label("one register"));
+    }
+    let OperandAst::Reg(r) = &ast.operands[0] else {
+        return Err(Diagnostic::error(
+            ast.operands[0].span(),
+            "expected a register to declare",
+        ));
+    };
+    if let Some(p) = &ast.predicate {
+        return Err(Diagnostic::error(
+            p.span,
+            "declarations cannot be predicated",
+        ));
+    }
+    let reg = resolve_reg(r)?;
+    no_modifiers(r, "a declared register")?;
+    let mut centroid = false;
+    let mut pp = false;
+    let mut kind: Option<(&str, Span)> = None;
+    for (s, span) in &ast.suffixes {
+        match s.as_str() {
+            "centroid" => centroid = true,
+            "pp" => pp = true,
+            "sat" => {
+                return Err(Diagnostic::error(
+                    *span,
+                    "`_sat` is not allowed on a declaration",
+                ))
+            }
+            other if kind.is_none() => kind = Some((other, *span)),
+            other => {
+                return Err(Diagnostic::error(
+                    *span,
+                    format!("unexpected `_{other}` in declaration"),
+                ))
+            }
+        }
+    }
+    match (reg.file, kind) {
+        (RegFile::Sampler, Some((k, span))) => {
+            let ty = match k {
+                "2d" => SamplerType::Tex2d,
+                "cube" => SamplerType::Cube,
+                "volume" => SamplerType::Volume,
+                "1d" => {
+                    return Err(
+                        Diagnostic::error(span, "1D samplers are not ps_3_0 sampler types")
+                            .with_label("declare 2d, cube or volume")
+                            .with_help("Microsoft lists dcl_2d, dcl_cube and dcl_volume only"),
+                    )
+                }
+                _ => {
+                    return Err(
+                        Diagnostic::error(span, format!("unknown sampler type `{k}`"))
+                            .with_label("expected 2d, cube or volume"),
+                    )
+                }
+            };
+            if r.components.is_some() {
+                return Err(Diagnostic::error(
+                    r.span,
+                    "sampler declarations take no write mask",
+                ));
+            }
+            Ok(Lowered::Sampler(SamplerDecl {
+                index: reg.index,
+                ty,
+                origin: origin.clone(),
+            }))
+        }
+        (RegFile::Sampler, None) => Err(Diagnostic::error(
+            ast.base_span,
+            "a sampler declaration needs a type",
+        )
+        .with_label("e.g. dcl_2d s0")
+        .with_help("write dcl_2d, dcl_cube or dcl_volume")),
+        (RegFile::Input, Some((k, span))) => {
+            let name = k.trim_end_matches(|c: char| c.is_ascii_digit());
+            let digits = &k[name.len()..];
+            if !USAGES.contains(&name) {
+                return Err(Diagnostic::error(span, format!("unknown input usage `{name}`"))
+                    .with_label("not a declaration usage")
+                    .with_help("usages: texcoord, color, normal, tangent, binormal, position, fog, depth, ..."));
+            }
+            let usage_index: u32 = if digits.is_empty() {
+                0
+            } else {
+                digits.parse().unwrap_or(99)
+            };
+            if usage_index > 15 {
+                return Err(Diagnostic::error(
+                    span,
+                    format!("usage index {usage_index} is out of range"),
+                )
+                .with_label("0 … 15"));
+            }
+            Ok(Lowered::Input(InputDecl {
+                reg,
+                usage: name.to_string(),
+                usage_index,
+                mask: write_mask(r)?,
+                centroid,
+                pp,
+                origin: origin.clone(),
+            }))
+        }
+        (RegFile::Input, None) => Err(Diagnostic::error(
+            ast.base_span,
+            "ps_3_0 input declarations need a usage",
+        )
+        .with_label("e.g. dcl_texcoord0 v0.xy")
+        .with_help("write dcl_<usage><index> v#, such as dcl_texcoord0 v0 or dcl_color0 v1")),
+        (RegFile::Position | RegFile::Face, None) => {
+            let mask = write_mask(r)?;
+            if reg.file == RegFile::Position && !matches!(mask.0, 1..=3) {
+                return Err(
+                    Diagnostic::error(r.span, "vPos is declared with .x, .y or .xy")
+                        .with_label("z and w are undefined"),
+                );
+            }
+            if reg.file == RegFile::Face && mask != WriteMask::ALL {
+                return Err(Diagnostic::error(
+                    r.span,
+                    "vFace is declared without a mask",
+                ));
+            }
+            Ok(Lowered::Input(InputDecl {
+                reg,
+                usage: String::new(),
+                usage_index: 0,
+                mask,
+                centroid,
+                pp,
+                origin: origin.clone(),
+            }))
+        }
+        (RegFile::Position | RegFile::Face, Some((_, span))) => Err(Diagnostic::error(
+            span,
+            "vPos and vFace are declared with plain `dcl`",
+        )
+        .with_label("remove the usage")),
+        (RegFile::ColorOut | RegFile::DepthOut, _) => Err(Diagnostic::error(
+            r.span,
+            "ps_3_0 cannot declare output registers",
+        )
+        .with_label("outputs need no declaration")),
+        _ => Err(
+            Diagnostic::error(r.span, format!("`{reg}` cannot be declared"))
+                .with_label("declare v#, s#, vPos or vFace"),
+        ),
+    }
+}
+
+fn lower_def(ast: &InstrAst, origin: &Origin) -> R<Lowered> {
+    if let Some((_, span)) = ast.suffixes.first() {
+        return Err(Diagnostic::error(
+            *span,
+            format!("`{}` takes no modifier", ast.base),
+        ));
+    }
+    if let Some(p) = &ast.predicate {
+        return Err(Diagnostic::error(
+            p.span,
+            "definitions cannot be predicated",
+        ));
+    }
+    let (file, nvalues, form) = match ast.base.as_str() {
+        "def" => (RegFile::Const, 4, "def c#, x, y, z, w"),
+        "defi" => (RegFile::ConstInt, 4, "defi i#, x, y, z, w"),
+        _ => (RegFile::ConstBool, 1, "defb b#, true|false"),
+    };
+    if ast.operands.len() != nvalues + 1 {
+        return Err(Diagnostic::error(
+            ast.span,
+            format!(
+                "`{}` takes {} operands, found {}",
+                ast.base,
+                nvalues + 1,
+                ast.operands.len()
+            ),
+        )
+        .with_label("wrong number of operands")
+        .with_help(format!("form: {form}")));
+    }
+    let OperandAst::Reg(r) = &ast.operands[0] else {
+        return Err(Diagnostic::error(
+            ast.operands[0].span(),
+            format!("expected the register to define, form: {form}"),
+        ));
+    };
+    let reg = resolve_reg(r)?;
+    if reg.file != file {
+        return Err(Diagnostic::error(
+            r.span,
+            format!("`{}` defines {} registers", ast.base, file.info().name),
+        )
+        .with_label(format!("`{reg}` is the wrong kind"))
+        .with_help(format!("form: {form}")));
+    }
+    no_modifiers(r, "a defined register")?;
+    if r.components.is_some() {
+        return Err(
+            Diagnostic::error(r.span, "definitions write the whole register: no mask")
+                .with_label("remove the mask"),
+        );
+    }
+    let values = &ast.operands[1..];
+    match file {
+        RegFile::ConstBool => match &values[0] {
+            OperandAst::Bool { value, .. } => Ok(Lowered::Bool(BoolDef {
+                index: reg.index,
+                value: *value,
+                origin: origin.clone(),
+            })),
+            other => Err(Diagnostic::error(other.span(), "expected true or false")
+                .with_label("not a boolean")),
+        },
+        _ => {
+            let mut nums = [0f64; 4];
+            for (slot, v) in nums.iter_mut().zip(values) {
+                match v {
+                    OperandAst::Number {
+                        value,
+                        integer,
+                        span,
+                    } => {
+                        if file == RegFile::ConstInt && !integer {
+                            return Err(Diagnostic::error(*span, "defi takes integers")
+                                .with_label("not an integer"));
+                        }
+                        if file == RegFile::ConstInt
+                            && (*value < i32::MIN as f64 || *value > i32::MAX as f64)
+                        {
+                            return Err(Diagnostic::error(
+                                *span,
+                                "integer does not fit in 32 bits",
+                            )
+                            .with_label("out of range"));
+                        }
+                        if file == RegFile::Const && (*value as f32).is_infinite() {
+                            return Err(Diagnostic::error(
+                                *span,
+                                "number does not fit in a 32-bit float",
+                            )
+                            .with_label("out of range"));
+                        }
+                        *slot = *value;
+                    }
+                    other => {
+                        return Err(Diagnostic::error(other.span(), "expected a number")
+                            .with_label("not a number"))
+                    }
+                }
+            }
+            Ok(if file == RegFile::Const {
+                Lowered::Float(FloatDef {
+                    index: reg.index,
+                    value: nums.map(|v| v as f32),
+                    origin: origin.clone(),
+                })
+            } else {
+                Lowered::Int(IntDef {
+                    index: reg.index,
+                    value: nums.map(|v| v as i32),
+                    origin: origin.clone(),
+                })
+            })
+        }
+    }
+}

@@ -1,0 +1,637 @@
+//! Validation: expanded statements → [`Shader`] (program + [`Info`]), or
+//! every error found.
+//!
+//! Each distinct source statement is lowered once ([`lower`]); REPEAT_BLOCK
+//! copies reuse the result with their own [`Origin`](crate::core::ir::Origin). The program-level pass
+//! then checks what needs context: the version line, declarations before
+//! instructions and before use, block balance and nesting limits, `aL` only
+//! inside `loop`, read ports, subroutine structure, outputs outside dynamic
+//! flow control; then, as warnings, gradients under dynamic flow control
+//! ([`gradient`]). Rules are the ps_3_0 rules of Microsoft's documentation;
+//! where sources disagree, the choice is written next to the check.
+
+pub mod gradient;
+pub mod lower;
+
+use crate::core::diag::{Diagnostic, Diagnostics, SourceFile};
+use crate::core::front::ast::Stmt;
+use crate::core::front::repeat::Expanded;
+use crate::core::ir::{Info, Instruction, Program, Shader, Span, SrcMod};
+use crate::core::isa::{self, Class, Opcode, RegFile};
+use lower::Lowered;
+use std::collections::{BTreeMap, BTreeSet, HashMap};
+
+/// Validates an expanded statement list.
+pub fn validate(
+    stmts: &[Stmt],
+    expanded: &[Expanded],
+    file: &SourceFile,
+) -> Result<(Shader, Diagnostics), Diagnostics> {
+    let mut diags = Diagnostics::default();
+    let mut program = Program::default();
+
+    // The version line must come first.
+    let mut body = expanded;
+    match expanded.first().map(|e| &stmts[e.stmt]) {
+        Some(Stmt::Version {
+            major: 3,
+            minor: 0,
+            text,
+            span,
+        }) if text.to_ascii_lowercase().starts_with("ps") => {
+            let _ = span;
+            body = &expanded[1..];
+        }
+        Some(Stmt::Version { text, span, .. }) => {
+            diags.push(
+                Diagnostic::error(*span, format!("`{text}` is not supported"))
+                    .with_label("ps30 checks ps_3_0 only")
+                    .with_help("the first line of a ps_3_0 shader is `ps_3_0`"),
+            );
+            body = &expanded[1..];
+        }
+        Some(_) | None => {
+            let span = expanded.first().map(|e| e.origin.span).unwrap_or_default();
+            diags.push(
+                Diagnostic::error(
+                    Span::new(span.start as usize, span.start as usize),
+                    "missing version line",
+                )
+                .with_label("expected `ps_3_0` here")
+                .with_help("start the file with the line `ps_3_0`"),
+            );
+        }
+    }
+
+    // Lower each distinct statement once.
+    let mut cache: HashMap<usize, Option<Lowered>> = HashMap::new();
+    let mut first_instr: Option<Span> = None;
+    for e in body {
+        let lowered = match &stmts[e.stmt] {
+            Stmt::Instr(ast) => cache
+                .entry(e.stmt)
+                .or_insert_with(|| match lower::lower(ast, &e.origin) {
+                    Ok(l) => Some(l),
+                    Err(d) => {
+                        diags.push(d.in_origin(&e.origin, file));
+                        None
+                    }
+                })
+                .clone(),
+            Stmt::Version { span, .. } => {
+                diags.push(
+                    Diagnostic::error(*span, "the version line may appear only once, first")
+                        .with_label("remove this line"),
+                );
+                None
+            }
+            Stmt::RepeatBegin { .. } | Stmt::RepeatEnd { .. } => None,
+        };
+        let Some(lowered) = lowered else { continue };
+        let is_decl = !matches!(lowered, Lowered::Instr(_));
+        if is_decl {
+            if let Some(first) = first_instr {
+                let what = match lowered {
+                    Lowered::Input(_) | Lowered::Sampler(_) => "declarations",
+                    _ => "constant definitions",
+                };
+                diags.push(
+                    Diagnostic::error(
+                        e.origin.span,
+                        format!("{what} must come before the first instruction"),
+                    )
+                    .with_label("too late")
+                    .with_secondary(first, "first instruction")
+                    .with_help("move it up, after the version line"),
+                );
+                continue;
+            }
+        }
+        match lowered {
+            Lowered::Instr(mut i) => {
+                i.origin = e.origin.clone();
+                first_instr.get_or_insert(e.origin.span);
+                program.instructions.push(i);
+            }
+            Lowered::Input(mut d) => {
+                d.origin = e.origin.clone();
+                program.inputs.push(d);
+            }
+            Lowered::Sampler(mut d) => {
+                d.origin = e.origin.clone();
+                program.samplers.push(d);
+            }
+            Lowered::Float(mut d) => {
+                d.origin = e.origin.clone();
+                program.float_defs.push(d);
+            }
+            Lowered::Int(mut d) => {
+                d.origin = e.origin.clone();
+                program.int_defs.push(d);
+            }
+            Lowered::Bool(mut d) => {
+                d.origin = e.origin.clone();
+                program.bool_defs.push(d);
+            }
+        }
+    }
+    check_declarations(&program, &mut diags, file);
+    let info = check_program(&program, &mut diags, file);
+    if diags.has_errors() {
+        return Err(diags);
+    }
+    for w in gradient::warnings(&program, &info, file) {
+        diags.push(w);
+    }
+    let warnings = diags;
+    Ok((Shader::new_validated(program, info), warnings))
+}
+
+/// Duplicate or conflicting declarations.
+fn check_declarations(p: &Program, diags: &mut Diagnostics, file: &SourceFile) {
+    let mut samplers: BTreeMap<u32, Span> = BTreeMap::new();
+    for d in &p.samplers {
+        if let Some(prev) = samplers.insert(d.index, d.origin.span) {
+            if prev != d.origin.span {
+                diags.push(
+                    Diagnostic::error(
+                        d.origin.span,
+                        format!("sampler s{} is declared twice", d.index),
+                    )
+                    .with_secondary(prev, "first declared here")
+                    .in_origin(&d.origin, file),
+                );
+            }
+        }
+    }
+    let mut inputs: BTreeMap<(RegFile, u32), (u8, Span)> = BTreeMap::new();
+    for d in &p.inputs {
+        let key = (d.reg.file, d.reg.index);
+        let entry = inputs.entry(key).or_insert((0, d.origin.span));
+        if entry.0 & d.mask.0 != 0 && entry.1 != d.origin.span {
+            diags.push(
+                Diagnostic::error(
+                    d.origin.span,
+                    format!("components of {} are declared twice", d.reg),
+                )
+                .with_secondary(entry.1, "first declared here")
+                .with_help("a register may be declared several times only with disjoint masks"),
+            );
+        }
+        entry.0 |= d.mask.0;
+    }
+}
+
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+enum Block {
+    Rep,
+    Loop,
+    IfStatic,
+    IfDynamic,
+}
+
+struct Open {
+    block: Block,
+    index: usize,
+    span: Span,
+    seen_else: bool,
+}
+
+/// Structure, context rules and slot costs.
+fn check_program(p: &Program, diags: &mut Diagnostics, file: &SourceFile) -> Info {
+    let n = p.instructions.len();
+    let mut info = Info {
+        matching: vec![None; n],
+        main_end: n as u32,
+        slots: vec![0; n],
+        ..Info::default()
+    };
+    let declared_inputs: BTreeSet<(RegFile, u32)> =
+        p.inputs.iter().map(|d| (d.reg.file, d.reg.index)).collect();
+    let mut stack: Vec<Open> = Vec::new();
+    let mut in_main = true;
+    let mut calls: Vec<(usize, u32)> = Vec::new();
+    // Which subroutine (label number, or None for main) each index belongs to.
+    let mut owner: Vec<Option<u32>> = vec![None; n];
+    let mut current: Option<u32> = None;
+    let mut abs_consts = (None::<Span>, None::<Span>);
+    for (idx, ins) in p.instructions.iter().enumerate() {
+        let err = |d: Diagnostic| d.in_origin(&ins.origin, file);
+        let span = ins.origin.span;
+        let info_row = ins.op.info();
+        owner[idx] = current;
+
+        // Slots: the table, cube samplers, predication.
+        let mut slots = info_row.slots;
+        if let Some(cube) = info_row.cube_slots {
+            if let Some(s) = ins.src.iter().find(|s| s.reg.file == RegFile::Sampler) {
+                if p.sampler_type(s.reg.index) == Some(isa::SamplerType::Cube) {
+                    slots = cube;
+                }
+            }
+        }
+        if ins.predicate.is_some() {
+            slots += 1;
+        }
+        info.slots[idx] = slots;
+
+        // Declarations before use.
+        for s in &ins.src {
+            match s.reg.file {
+                RegFile::Sampler if p.sampler_type(s.reg.index).is_none() => {
+                    diags.push(err(Diagnostic::error(
+                        span,
+                        format!("sampler s{} is used but never declared", s.reg.index),
+                    )
+                    .with_label("undeclared sampler")
+                    .with_help(format!(
+                        "add `dcl_2d s{}` after the version line",
+                        s.reg.index
+                    ))))
+                }
+                RegFile::Input | RegFile::Position | RegFile::Face
+                    if !s.relative && !declared_inputs.contains(&(s.reg.file, s.reg.index)) =>
+                {
+                    diags.push(err(Diagnostic::error(
+                        span,
+                        format!("input {} is used but never declared", s.reg),
+                    )
+                    .with_label("undeclared input")
+                    .with_help(match s.reg.file {
+                        RegFile::Input => format!(
+                            "add e.g. `dcl_texcoord{0} v{0}` after the version line",
+                            s.reg.index
+                        ),
+                        _ => format!("add `dcl {}` after the version line", s.reg),
+                    })))
+                }
+                _ => {}
+            }
+            if s.reg.file == RegFile::Face
+                && !matches!(ins.op, Opcode::Setp | Opcode::Ifc | Opcode::BreakC)
+            {
+                diags.push(err(Diagnostic::error(
+                    span,
+                    "vFace may only be compared (setp, if_comp, break_comp)",
+                )
+                .with_label("vFace used as a value")));
+            }
+            if s.reg.file == RegFile::Const {
+                let abs = matches!(s.modifier, SrcMod::Abs | SrcMod::NegAbs);
+                if abs {
+                    abs_consts.0.get_or_insert(span);
+                } else {
+                    abs_consts.1.get_or_insert(span);
+                }
+            }
+        }
+        if ins.op == Opcode::TexKill {
+            if let Some(d) = &ins.dst {
+                if d.reg.file == RegFile::Input
+                    && !declared_inputs.contains(&(d.reg.file, d.reg.index))
+                {
+                    diags.push(err(Diagnostic::error(
+                        span,
+                        format!("input {} is used but never declared", d.reg),
+                    )));
+                }
+            }
+        }
+
+        // Read ports: distinct registers per file (Microsoft's register table).
+        let mut per_file: BTreeMap<RegFile, BTreeSet<(u32, bool)>> = BTreeMap::new();
+        for s in &ins.src {
+            per_file
+                .entry(s.reg.file)
+                .or_default()
+                .insert((s.reg.index, s.relative));
+        }
+        for (f, regs) in &per_file {
+            let ports = f.info().read_ports;
+            if regs.len() as u32 > ports
+                && matches!(f, RegFile::Temp | RegFile::Const | RegFile::Input)
+            {
+                diags.push(err(Diagnostic::error(
+                    span,
+                    format!(
+                        "reads {} different {} registers; ps_3_0 allows {}",
+                        regs.len(),
+                        f.info().name,
+                        ports
+                    ),
+                )
+                .with_label("too many read ports")
+                .with_help(format!(
+                    "copy one of them into a temporary r# first (one {}# per instruction)",
+                    f.info().name
+                ))));
+            }
+        }
+
+        // aL and relative addressing only inside loop.
+        let in_loop = stack.iter().any(|o| o.block == Block::Loop);
+        if !in_loop && ins.src.iter().any(|s| s.relative) {
+            diags.push(err(Diagnostic::error(
+                span,
+                "v[aL + n] used outside a loop",
+            )
+            .with_label("aL is only defined inside loop … endloop")
+            .with_help(
+                "wrap it in `loop aL, i#` … `endloop` (rep does not set aL)",
+            )));
+        }
+
+        // Outputs are not written under dynamic flow control or predication.
+        if let Some(d) = &ins.dst {
+            if d.reg.file == RegFile::ColorOut && ins.op.class() != Class::Flow {
+                let dynamic = stack.iter().any(|o| o.block == Block::IfDynamic);
+                if dynamic || ins.predicate.is_some() {
+                    diags.push(err(Diagnostic::error(span, format!("{} is written inside dynamic flow control or predication", d.reg))
+                        .with_label("not allowed in ps_3_0")
+                        .with_help("compute the value into r# inside the branch and write oC# once, outside it")));
+                }
+            }
+        }
+
+        if !in_main && current.is_none() && ins.op != Opcode::Label {
+            diags.push(err(Diagnostic::error(
+                span,
+                "instruction after the end of main and outside any subroutine",
+            )
+            .with_label("unreachable")
+            .with_help("code after `ret` must start with `label l#`")));
+        }
+
+        // Structure.
+        let loop_depth = stack
+            .iter()
+            .filter(|o| matches!(o.block, Block::Rep | Block::Loop))
+            .count() as u32;
+        let static_depth = stack.iter().filter(|o| o.block == Block::IfStatic).count() as u32;
+        let dynamic_depth = stack.iter().filter(|o| o.block == Block::IfDynamic).count() as u32;
+        match ins.op {
+            Opcode::Rep | Opcode::Loop => {
+                if loop_depth >= isa::MAX_LOOP_NESTING {
+                    diags.push(err(Diagnostic::error(
+                        span,
+                        format!("rep/loop nested more than {} deep", isa::MAX_LOOP_NESTING),
+                    )
+                    .with_label("too deep")));
+                }
+                let block = if ins.op == Opcode::Rep {
+                    Block::Rep
+                } else {
+                    Block::Loop
+                };
+                stack.push(Open {
+                    block,
+                    index: idx,
+                    span,
+                    seen_else: false,
+                });
+                check_int_operand(p, ins, diags, file);
+            }
+            Opcode::If | Opcode::Ifc => {
+                let block = if ins.op == Opcode::If && ins.src[0].reg.file == RegFile::ConstBool {
+                    Block::IfStatic
+                } else {
+                    Block::IfDynamic
+                };
+                let (depth, max, kind) = if block == Block::IfStatic {
+                    (static_depth, isa::MAX_STATIC_NESTING, "static")
+                } else {
+                    (dynamic_depth, isa::MAX_DYNAMIC_NESTING, "dynamic")
+                };
+                if depth >= max {
+                    diags.push(err(Diagnostic::error(
+                        span,
+                        format!("{kind} if nested more than {max} deep"),
+                    )
+                    .with_label("too deep")));
+                }
+                stack.push(Open {
+                    block,
+                    index: idx,
+                    span,
+                    seen_else: false,
+                });
+            }
+            Opcode::Else => match stack.last_mut() {
+                Some(o)
+                    if matches!(o.block, Block::IfStatic | Block::IfDynamic) && !o.seen_else =>
+                {
+                    o.seen_else = true;
+                    info.matching[o.index] = Some(idx as u32);
+                    o.index = idx;
+                }
+                Some(o) if matches!(o.block, Block::IfStatic | Block::IfDynamic) => diags.push(
+                    err(Diagnostic::error(span, "second `else` for the same `if`")
+                        .with_secondary(o.span, "this if")),
+                ),
+                other => diags.push(err(mismatch(span, "else", "if", other.map(|o| &*o)))),
+            },
+            Opcode::EndIf => match stack.last() {
+                Some(o) if matches!(o.block, Block::IfStatic | Block::IfDynamic) => {
+                    info.matching[o.index] = Some(idx as u32);
+                    stack.pop();
+                }
+                other => diags.push(err(mismatch(span, "endif", "if", other))),
+            },
+            Opcode::EndRep | Opcode::EndLoop => {
+                let (want, name, opener) = if ins.op == Opcode::EndRep {
+                    (Block::Rep, "endrep", "rep")
+                } else {
+                    (Block::Loop, "endloop", "loop")
+                };
+                match stack.last() {
+                    Some(o) if o.block == want => {
+                        info.matching[o.index] = Some(idx as u32);
+                        info.matching[idx] = Some(o.index as u32);
+                        stack.pop();
+                    }
+                    other => diags.push(err(mismatch(span, name, opener, other))),
+                }
+            }
+            Opcode::Break | Opcode::BreakC | Opcode::BreakP if loop_depth == 0 => {
+                diags.push(err(Diagnostic::error(span, "break outside rep or loop")
+                    .with_label("nothing to break out of")));
+            }
+            Opcode::Call | Opcode::CallNz => calls.push((idx, ins.src[0].reg.index)),
+            Opcode::Ret => {
+                if let Some(o) = stack.last() {
+                    diags.push(err(Diagnostic::error(span, "ret inside an open block")
+                        .with_secondary(o.span, "block opened here")
+                        .with_help("close the block before ret")));
+                }
+                if in_main {
+                    in_main = false;
+                    info.main_end = idx as u32 + 1;
+                }
+                current = None;
+            }
+            Opcode::Label => {
+                let label = ins.src[0].reg.index;
+                let after_ret = idx > 0 && p.instructions[idx - 1].op == Opcode::Ret;
+                if !after_ret {
+                    diags.push(err(Diagnostic::error(
+                        span,
+                        "label must immediately follow a ret",
+                    )
+                    .with_label("subroutines start after the end of main")
+                    .with_help("end main (or the previous subroutine) with ret")));
+                }
+                if let Some(prev) = info.labels.insert(label, idx as u32) {
+                    diags.push(err(Diagnostic::error(
+                        span,
+                        format!("label l{label} is defined twice"),
+                    )
+                    .with_secondary(
+                        p.instructions[prev as usize].origin.span,
+                        "first defined here",
+                    )));
+                }
+                if in_main {
+                    in_main = false;
+                    info.main_end = idx as u32;
+                }
+                current = Some(label);
+                owner[idx] = current;
+            }
+            _ => {}
+        }
+    }
+    for o in stack.iter().rev() {
+        let (what, close) = match o.block {
+            Block::Rep => ("rep", "endrep"),
+            Block::Loop => ("loop", "endloop"),
+            _ => ("if", "endif"),
+        };
+        diags.push(
+            Diagnostic::error(o.span, format!("`{what}` is never closed"))
+                .with_label("opened here")
+                .with_help(format!("add `{close}` at the end of the block"))
+                .in_origin(&p.instructions[o.index].origin, file),
+        );
+    }
+    if let (Some(a), Some(b)) = abs_consts {
+        diags.push(
+            Diagnostic::error(a.max(b), "constants are read both with and without _abs")
+                .with_secondary(a.min(b), "the other kind")
+                .with_help("in ps_3_0 either every c# read uses _abs or none does"),
+        );
+    }
+    check_calls(p, &info, &calls, &owner, diags, file);
+    info.total_slots = info.slots.iter().sum();
+    info
+}
+
+fn mismatch(span: Span, closer: &str, opener: &str, open: Option<&Open>) -> Diagnostic {
+    let d = Diagnostic::error(span, format!("`{closer}` without a matching `{opener}`"))
+        .with_label("nothing to close");
+    match open {
+        Some(o) => d
+            .with_secondary(o.span, "the innermost open block is this one")
+            .with_help("blocks must nest: close the inner block first"),
+        None => d,
+    }
+}
+
+/// Loop-count operands defined with defi must be in range.
+fn check_int_operand(p: &Program, ins: &Instruction, diags: &mut Diagnostics, file: &SourceFile) {
+    let reg = ins.src.iter().find(|s| s.reg.file == RegFile::ConstInt);
+    let Some(reg) = reg else { return };
+    let Some(v) = p.int_def(reg.reg.index) else {
+        return;
+    };
+    if let Some(msg) = crate::core::cost::int_constant_problem(ins.op, v) {
+        diags.push(
+            Diagnostic::error(
+                ins.origin.span,
+                format!("i{} = {:?}: {msg}", reg.reg.index, v),
+            )
+            .with_label("out of range")
+            .in_origin(&ins.origin, file),
+        );
+    }
+}
+
+/// Calls name defined labels; the call graph has no cycles and no chain
+/// deeper than the call-nesting limit.
+fn check_calls(
+    p: &Program,
+    info: &Info,
+    calls: &[(usize, u32)],
+    owner: &[Option<u32>],
+    diags: &mut Diagnostics,
+    file: &SourceFile,
+) {
+    let mut graph: BTreeMap<Option<u32>, BTreeSet<u32>> = BTreeMap::new();
+    for &(idx, label) in calls {
+        let ins = &p.instructions[idx];
+        if !info.labels.contains_key(&label) {
+            diags.push(
+                Diagnostic::error(ins.origin.span, format!("call to undefined label l{label}"))
+                    .with_label("no such label")
+                    .with_help(format!(
+                        "define the subroutine after main with `label l{label}` … `ret`"
+                    ))
+                    .in_origin(&ins.origin, file),
+            );
+        }
+        graph.entry(owner[idx]).or_default().insert(label);
+    }
+    // Depth of the deepest call chain from main, detecting cycles.
+    fn depth(
+        node: Option<u32>,
+        graph: &BTreeMap<Option<u32>, BTreeSet<u32>>,
+        path: &mut Vec<u32>,
+    ) -> Result<u32, Vec<u32>> {
+        let mut best = 0;
+        if let Some(callees) = graph.get(&node) {
+            for &c in callees {
+                if path.contains(&c) {
+                    let mut cycle = path.clone();
+                    cycle.push(c);
+                    return Err(cycle);
+                }
+                path.push(c);
+                let d = depth(Some(c), graph, path)?;
+                path.pop();
+                best = best.max(d + 1);
+            }
+        }
+        Ok(best)
+    }
+    let span = calls
+        .first()
+        .map(|&(i, _)| p.instructions[i].origin.span)
+        .unwrap_or_default();
+    match depth(None, &graph, &mut Vec::new()) {
+        Err(cycle) => {
+            let names: Vec<String> = cycle.iter().map(|l| format!("l{l}")).collect();
+            // Point at the call that closes the cycle.
+            let (caller, callee) = (cycle[cycle.len() - 2], cycle[cycle.len() - 1]);
+            let span = calls
+                .iter()
+                .find(|&&(i, l)| l == callee && owner[i] == Some(caller))
+                .map_or(span, |&(i, _)| p.instructions[i].origin.span);
+            diags.push(
+                Diagnostic::error(span, format!("recursive calls: {}", names.join(" → ")))
+                    .with_label("ps_3_0 has no recursion"),
+            );
+        }
+        Ok(d) if d > isa::MAX_CALL_NESTING => {
+            diags.push(
+                Diagnostic::error(
+                    span,
+                    format!(
+                        "calls nest {d} deep; ps_3_0 allows {}",
+                        isa::MAX_CALL_NESTING
+                    ),
+                )
+                .with_label("too deep"),
+            );
+        }
+        Ok(_) => {}
+    }
+}

@@ -1,0 +1,314 @@
+//! Fitting blocks and pass-2 forms to a profile, by search over the real
+//! cost model.
+//!
+//! Every predicate here loads a generated listing and asks
+//! [`crate::core::cost::analyse`]; the searches only rely on the counts growing
+//! with the block (more texels per line never cost fewer slots or executed
+//! instructions, more lines never cost fewer executed instructions), which
+//! holds for every listing [`super::asm`] writes.
+//!
+//! The only shortcut is a sound lower bound used to avoid building absurd
+//! listings: every `texld` costs at least one slot, so a listing with more
+//! unrolled `texld`s than the slot limit cannot fit.
+
+use crate::core::numbers::thousands;
+use super::asm::{self, Counts, Pass1Form, Pass2Form};
+use super::{measure, Checked, GenError};
+use crate::core::cost::{Environment, Profile};
+use crate::core::load;
+use crate::core::isa::MAX_REP_COUNT;
+use std::collections::HashMap;
+
+/// The pass-2 listing chosen for an intermediate target.
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub struct Pass2Choice {
+    pub form: Pass2Form,
+    pub targets: (u32, u32),
+    pub slots: u64,
+    pub executed: u64,
+}
+
+/// What was tried for a pass 2, and what fits.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Pass2Outcome {
+    /// The first form (fewest executed instructions) that fits, if any.
+    pub choice: Option<Pass2Choice>,
+    /// Why each form that does not fit was rejected, in numbers.
+    pub rejected: Vec<String>,
+}
+
+/// Measures generated listings under one profile, caching what it loaded.
+pub struct Fitter<'p> {
+    profile: &'p Profile,
+    pass1: HashMap<(Pass1Form, u32), load::Loaded>,
+    pass2: HashMap<(u32, u32), Pass2Outcome>,
+}
+
+fn rep_ok(n: u32) -> bool {
+    n as i64 <= MAX_REP_COUNT as i64
+}
+
+impl<'p> Fitter<'p> {
+    pub fn new(profile: &'p Profile) -> Fitter<'p> {
+        Fitter {
+            profile,
+            pass1: HashMap::new(),
+            pass2: HashMap::new(),
+        }
+    }
+
+    pub fn profile(&self) -> &Profile {
+        self.profile
+    }
+
+    /// Why pass 1 in `form` with `taps` texels per line cannot even be
+    /// written under the profile, if so.
+    pub fn pass1_unwritable(&self, form: Pass1Form, taps: u32, rows: u32) -> Option<String> {
+        let p = self.profile;
+        if taps == 0 || rows == 0 {
+            return Some("a block side is 0".into());
+        }
+        if form.nesting() > p.max_loop_nesting {
+            return Some(format!(
+                "the {} form nests loops {} deep; the profile allows {}",
+                form.name(),
+                form.nesting(),
+                p.max_loop_nesting
+            ));
+        }
+        if !rep_ok(rows) || rows > p.max_rep_count {
+            return Some(format!(
+                "{rows} lines need a rep count of {rows}; the profile allows 0 to {}",
+                p.max_rep_count
+            ));
+        }
+        match form {
+            Pass1Form::Loop if !rep_ok(taps) || taps > p.max_rep_count => Some(format!(
+                "{taps} texels per line need a rep count of {taps}; the profile allows 0 to {}",
+                p.max_rep_count
+            )),
+            Pass1Form::Unrolled if taps as u64 > p.max_slots => Some(format!(
+                "unrolling {taps} texels per line takes at least {taps} texld slots; the limit is {}",
+                thousands(p.max_slots)
+            )),
+            _ => None,
+        }
+    }
+
+    /// Pass 1 in `form` for a `taps × rows` block, measured (None when it
+    /// cannot be written under the profile: see [`Self::pass1_unwritable`]).
+    pub fn pass1(
+        &mut self,
+        form: Pass1Form,
+        taps: u32,
+        rows: u32,
+    ) -> Result<Option<Checked>, GenError> {
+        if self.pass1_unwritable(form, taps, rows).is_some() {
+            return Ok(None);
+        }
+        let profile = self.profile;
+        let loaded = match self.pass1.entry((form, taps)) {
+            std::collections::hash_map::Entry::Occupied(e) => e.into_mut(),
+            std::collections::hash_map::Entry::Vacant(e) => {
+                let text = asm::render(&asm::pass1(form, taps, 1, Counts::Application), true);
+                let name = format!("pass1_{}_{taps}", form.name());
+                e.insert(super::load(&name, &text, profile)?)
+            }
+        };
+        let mut env = Environment::default();
+        env.ints.insert(1, [taps as i32, 0, 0, 0]);
+        env.ints.insert(2, [rows as i32, 0, 0, 0]);
+        measure(loaded, &env, profile).map(Some)
+    }
+
+    fn pass1_fits(&mut self, form: Pass1Form, taps: u32, rows: u32) -> Result<bool, GenError> {
+        Ok(self.pass1(form, taps, rows)?.is_some_and(|c| c.fits()))
+    }
+
+    /// The widest block (texels per line) of `form`, at most `cap`, whose
+    /// one-line block fits the profile.
+    pub fn widest(&mut self, form: Pass1Form, cap: u32) -> Result<Option<u32>, GenError> {
+        let cap = match form {
+            Pass1Form::Loop => cap.min(self.profile.max_rep_count),
+            Pass1Form::Unrolled => cap.min(self.profile.max_slots.min(u32::MAX as u64) as u32),
+        };
+        self.largest(cap, |f, taps| f.pass1_fits(form, taps, 1))
+    }
+
+    /// The tallest block (lines), at most `cap`, of `form` with `taps`
+    /// texels per line that fits the profile.
+    pub fn tallest(
+        &mut self,
+        form: Pass1Form,
+        taps: u32,
+        cap: u32,
+    ) -> Result<Option<u32>, GenError> {
+        let cap = cap.min(self.profile.max_rep_count);
+        self.largest(cap, |f, rows| f.pass1_fits(form, taps, rows))
+    }
+
+    /// The largest n in 1..=cap with `fits(n)`, for a predicate that holds
+    /// up to some n and not beyond.
+    fn largest(
+        &mut self,
+        cap: u32,
+        mut fits: impl FnMut(&mut Self, u32) -> Result<bool, GenError>,
+    ) -> Result<Option<u32>, GenError> {
+        if cap == 0 || !fits(self, 1)? {
+            return Ok(None);
+        }
+        let (mut lo, mut hi) = (1u32, cap);
+        if fits(self, hi)? {
+            return Ok(Some(hi));
+        }
+        // fits(lo) and !fits(hi)
+        while hi - lo > 1 {
+            let mid = lo + (hi - lo) / 2;
+            if fits(self, mid)? {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        Ok(Some(lo))
+    }
+
+    /// The pass-2 listing for an `nx × ny` target: the first of unrolled,
+    /// row loop and nested loops (fewest executed first) that fits.
+    pub fn pass2(&mut self, nx: u32, ny: u32) -> Result<Pass2Outcome, GenError> {
+        if let Some(o) = self.pass2.get(&(nx, ny)) {
+            return Ok(o.clone());
+        }
+        let p = self.profile;
+        let mut rejected = Vec::new();
+        let mut choice = None;
+        let taps = nx as u64 * ny as u64;
+        for form in Pass2Form::ALL {
+            let why_not = if form.nesting() > p.max_loop_nesting {
+                Some(format!(
+                    "needs loops nested {} deep; the profile allows {}",
+                    form.nesting(),
+                    p.max_loop_nesting
+                ))
+            } else {
+                match form {
+                    Pass2Form::Unrolled if taps > p.max_slots => Some(format!(
+                        "{} texld slots at least, over the limit of {}",
+                        thousands(taps),
+                        thousands(p.max_slots)
+                    )),
+                    Pass2Form::RowLoop if !rep_ok(ny) || ny > p.max_rep_count => Some(format!(
+                        "{ny} rows need a rep count of {ny}; the profile allows 0 to {}",
+                        p.max_rep_count
+                    )),
+                    Pass2Form::RowLoop if nx as u64 > p.max_slots => Some(format!(
+                        "a row of {nx} texld slots at least, over the limit of {}",
+                        thousands(p.max_slots)
+                    )),
+                    Pass2Form::Nested if !rep_ok(nx.max(ny)) || nx.max(ny) > p.max_rep_count => {
+                        Some(format!(
+                            "{nx} × {ny} needs rep counts up to {}; the profile allows 0 to {}",
+                            nx.max(ny),
+                            p.max_rep_count
+                        ))
+                    }
+                    _ => None,
+                }
+            };
+            if let Some(w) = why_not {
+                rejected.push(format!("{}: {w}", form.name()));
+                continue;
+            }
+            let text = asm::render(&asm::pass2(form, nx, ny), true);
+            let c = super::check(&format!("pass2_{nx}x{ny}"), &text, p)?;
+            if c.fits() {
+                choice = Some(Pass2Choice {
+                    form,
+                    targets: (nx, ny),
+                    slots: c.slots,
+                    executed: c.executed,
+                });
+                break;
+            }
+            rejected.push(format!("{}: {}", form.name(), c.problems.join("; ")));
+        }
+        let outcome = Pass2Outcome { choice, rejected };
+        self.pass2.insert((nx, ny), outcome.clone());
+        Ok(outcome)
+    }
+}
+
+/// The height that covers `frame_h` with as many block rows as `tallest`
+/// does, with the least padding: ⌈H / ⌈H / tallest⌉⌉ (never taller).
+pub fn balanced(frame: u32, tallest: u32) -> u32 {
+    let n = frame.div_ceil(tallest.max(1));
+    frame.div_ceil(n.max(1))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_widest_unroll_at_512_slots_is_the_articles_125() {
+        let p = Profile::ps_3_0();
+        let mut f = Fitter::new(&p);
+        let n = f.widest(Pass1Form::Unrolled, u32::MAX).unwrap().unwrap();
+        assert_eq!(n, 125);
+        assert_eq!(
+            f.pass1(Pass1Form::Unrolled, 125, 1).unwrap().unwrap().slots,
+            511
+        );
+        assert!(!f
+            .pass1(Pass1Form::Unrolled, 126, 1)
+            .unwrap()
+            .unwrap()
+            .fits());
+        // 129 lines of 506 plus 6 is 65,280; 130 would be 65,786.
+        assert_eq!(
+            f.tallest(Pass1Form::Unrolled, 125, 1024).unwrap(),
+            Some(129)
+        );
+        assert_eq!(balanced(1024, 129), 128);
+    }
+
+    #[test]
+    fn the_loops_tallest_128_wide_block_is_the_articles_56() {
+        let p = Profile::ps_3_0();
+        let mut f = Fitter::new(&p);
+        assert_eq!(f.tallest(Pass1Form::Loop, 128, 1024).unwrap(), Some(56));
+        let c = f.pass1(Pass1Form::Loop, 128, 56).unwrap().unwrap();
+        assert_eq!((c.slots, c.executed), (20, 64_853));
+        // The loop's width is bounded by the rep count, not by slots.
+        assert_eq!(f.widest(Pass1Form::Loop, u32::MAX).unwrap(), Some(255));
+    }
+
+    #[test]
+    fn pass2_falls_back_to_loops_when_unrolling_does_not_fit() {
+        let p = Profile::ps_3_0();
+        let mut f = Fitter::new(&p);
+        let o = f.pass2(11, 8).unwrap();
+        assert_eq!(o.choice.as_ref().unwrap().form, Pass2Form::Unrolled);
+        assert_eq!(o.choice.unwrap().slots, 190);
+        let o = f.pass2(31, 17).unwrap();
+        assert_eq!(o.choice.unwrap().form, Pass2Form::RowLoop);
+        let o = f.pass2(252, 30).unwrap();
+        assert_eq!(o.choice.unwrap().form, Pass2Form::Nested);
+        // 300 columns: no rep count covers them, unrolled rows do not fit.
+        let o = f.pass2(300, 300).unwrap();
+        assert!(o.choice.is_none());
+        assert_eq!(o.rejected.len(), 3, "{:?}", o.rejected);
+    }
+
+    #[test]
+    fn a_nesting_limit_of_one_rules_out_the_loop_form() {
+        let p = Profile {
+            max_loop_nesting: 1,
+            ..Profile::ps_3_0()
+        };
+        let mut f = Fitter::new(&p);
+        assert!(f.pass1(Pass1Form::Loop, 128, 56).unwrap().is_none());
+        assert!(f.pass1_unwritable(Pass1Form::Loop, 128, 56).is_some());
+        assert_eq!(f.widest(Pass1Form::Unrolled, 4096).unwrap(), Some(125));
+    }
+}

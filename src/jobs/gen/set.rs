@@ -1,0 +1,850 @@
+//! `ps30 unroll`: the shaders for one frame — pass 1 in its forms, the
+//! last-column variant, pass 2 — each checked and headed with its figures
+//! and the constants the application must set; and `asm/generated/`, the
+//! committed sets for six common frame sizes.
+
+use super::asm::{self, Counts, Pass1Form, Pass2Form};
+use super::fit::{balanced, Fitter};
+use super::plan::{self, f16_holds};
+use super::GenError;
+use crate::core::cost::Profile;
+use crate::core::numbers::{size, thousands};
+use serde::Serialize;
+use std::collections::BTreeMap;
+use std::path::Path;
+
+/// What a generated shader is for.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Role {
+    /// Pass 1 over every column of blocks (BORDER padding in x) or over all
+    /// but the last.
+    Pass1,
+    /// Pass 1 over the last column of blocks, reading the real width only.
+    LastColumn,
+    Pass2,
+}
+
+/// One generated shader.
+#[derive(Clone, Debug, Serialize)]
+pub struct Generated {
+    /// File name, e.g. `pass1_unrolled_125x128.psh`.
+    pub file: String,
+    pub role: Role,
+    /// `unrolled`, `loop`, `row loop`, `nested loops`.
+    pub form: String,
+    /// Pass 1: texels per line × lines; pass 2: the target it sums.
+    pub size: [u32; 2],
+    /// From the cost model on the text below.
+    pub slots: u64,
+    pub executed: u64,
+    pub text: String,
+}
+
+/// One way to run the frame with the generated shaders.
+#[derive(Clone, Debug, Serialize)]
+pub struct Config {
+    pub form: Pass1Form,
+    pub block: [u32; 2],
+    pub targets: [u32; 2],
+    pub pass1: String,
+    /// The last-column shader, when the frame width is not a multiple of
+    /// the block width.
+    pub last_column: Option<String>,
+    /// None when no pass-2 listing fits (a third pass would be needed).
+    pub pass2: Option<String>,
+    /// Padded samples with BORDER addressing in every column.
+    pub padded_border: u64,
+    /// Padded samples with the last-column shader (the padding in y).
+    pub padded_last_column: u64,
+    /// pass 1 × nx·ny + pass 2 (BORDER form), when pass 2 exists.
+    pub total_executed: Option<u64>,
+}
+
+/// How the pass-1 block is chosen.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum BlockChoice {
+    /// `--block WxH`, for every form.
+    Given(u32, u32),
+    /// `--fit`: unrolled — the widest unroll that fits the slot limit, the
+    /// tallest block that fits the executed limit and the rep range, then
+    /// the smallest height with as many block rows; loop — the plan's best
+    /// loop block for the frame.
+    Fit,
+}
+
+/// A request to `ps30 unroll`.
+#[derive(Clone, Debug)]
+pub struct Request {
+    pub frame: (u32, u32),
+    /// Pass-1 forms and how to choose each one's block.
+    pub picks: Vec<(Pass1Form, BlockChoice)>,
+    /// Keep REPEAT_BLOCK in the output instead of expanding it.
+    pub macros: bool,
+    pub delta: f64,
+}
+
+/// Everything `ps30 unroll` produced.
+#[derive(Clone, Debug, Serialize)]
+pub struct Bundle {
+    pub frame: [u32; 2],
+    pub profile: Profile,
+    pub delta: f64,
+    pub shaders: Vec<Generated>,
+    pub configs: Vec<Config>,
+    /// How each block was chosen, in numbers.
+    pub notes: Vec<String>,
+    /// What was asked for and does not fit (exit 1).
+    pub problems: Vec<String>,
+}
+
+fn f32_text(v: f64) -> String {
+    let f = v as f32;
+    if f != 0.0 && f.abs() < 1e-3 {
+        format!("{f:e}")
+    } else {
+        format!("{f}")
+    }
+}
+
+/// The set-up and line stepping, for headers.
+const CORRECTIONS: [&str; 3] = [
+    "Corrections to the article's listings, found by ps30's emulator cross-check (asm/corrected/):",
+    "  each line ends with u = the block's start u; the article reset u to 0, the frame's left edge;",
+    "  r3.yzw = (dv, start u, du) comes from one mad that replaces the article's `mov r2.w, c1.x`, so the fix costs no slot.",
+];
+
+struct Frame {
+    w: u32,
+    h: u32,
+    delta: f64,
+}
+
+impl Frame {
+    fn n(&self) -> u64 {
+        self.w as u64 * self.h as u64
+    }
+}
+
+fn checked_lines(profile: &Profile, slots: u64, executed: u64) -> Vec<String> {
+    vec![
+        format!(
+            "Checked by ps30 (front end and cost model) under profile {}: {}.",
+            profile.name,
+            super::profile_text(profile)
+        ),
+        format!(
+            "  slots     {} of {}",
+            thousands(slots),
+            thousands(profile.max_slots)
+        ),
+        format!(
+            "  executed  {} per pixel, of {}",
+            thousands(executed),
+            thousands(profile.max_executed)
+        ),
+    ]
+}
+
+/// Writes, checks and heads one pass-1 listing.
+#[allow(clippy::too_many_arguments)]
+fn pass1_shader(
+    fitter: &mut Fitter<'_>,
+    fr: &Frame,
+    form: Pass1Form,
+    role: Role,
+    block: (u32, u32),
+    taps: u32,
+    macros: bool,
+    main_file: Option<&str>,
+) -> Result<Result<Generated, String>, GenError> {
+    let profile = fitter.profile().clone();
+    let (bw, bh) = block;
+    let rows = bh;
+    let (nx, ny) = (fr.w.div_ceil(bw), fr.h.div_ceil(bh));
+    let file = match role {
+        Role::LastColumn => format!("pass1_last_{}_{taps}x{rows}.psh", form.name()),
+        _ => format!("pass1_{}_{taps}x{rows}.psh", form.name()),
+    };
+    let body = asm::render(&asm::pass1(form, taps, rows, Counts::Defined), macros);
+    let c = super::check(&file, &body, &profile)?;
+    if !c.fits() {
+        return Ok(Err(format!(
+            "pass 1, {} form, {taps}×{rows}: {}",
+            form.name(),
+            c.problems.join("; ")
+        )));
+    }
+    let mut h = Vec::new();
+    match role {
+        Role::LastColumn => h.push(format!(
+            "ps30 unroll: luminance pass 1 for the LAST column of {} blocks, {} form, reading {taps}×{rows} texels, for a {} frame",
+            size(bw, bh),
+            form.name(),
+            size(fr.w, fr.h)
+        )),
+        _ => h.push(format!(
+            "ps30 unroll: luminance pass 1, {} form, {} blocks, for a {} frame",
+            form.name(),
+            size(bw, bh),
+            size(fr.w, fr.h)
+        )),
+    }
+    h.push("Generated: edit ps30's generator (src/gen/), not this file.".into());
+    h.push(String::new());
+    h.extend(checked_lines(&profile, c.slots, c.executed));
+    h.push(String::new());
+    let walk = match form {
+        Pass1Form::Unrolled => format!(
+            "rep i2 over {rows} lines, the line's {taps} texels unrolled (texld, dp4, log, add each)"
+        ),
+        Pass1Form::Loop => {
+            format!("rep i2 over {rows} lines, rep i1 over the line's {taps} texels")
+        }
+    };
+    match role {
+        Role::LastColumn => {
+            h.push(format!(
+                "Each pixel of column {} of the {} target sums log2|delta + L| over the {taps} texels per line the frame still has there",
+                nx - 1,
+                size(nx, ny)
+            ));
+            h.push(format!(
+                "({} − {}·{bw} = {taps}), not {bw}: no BORDER padding in x. {walk}.",
+                fr.w,
+                nx - 1
+            ));
+            h.push(format!(
+                "This is the article's \"non-unrolled version for the last column\"{}.",
+                if form == Pass1Form::Unrolled {
+                    " — unrolled here, because the non-unrolled one would exceed the executed limit"
+                } else {
+                    ""
+                }
+            ));
+            h.push(if nx > 1 {
+                format!(
+                    "Draw: a second draw over target column x = {} only (a {} quad), after {} has drawn columns 0 … {}.",
+                    nx - 1,
+                    size(1, ny),
+                    main_file.unwrap_or("the main pass-1 shader"),
+                    nx - 2
+                )
+            } else {
+                "Draw: the only pass-1 draw (the frame is narrower than one block).".to_string()
+            });
+        }
+        _ => {
+            h.push(format!(
+                "Each pixel (x, y) of the {} target sums log2|delta + L| over one {} block: {walk}.",
+                size(nx, ny),
+                size(bw, bh)
+            ));
+        }
+    }
+    h.push(String::new());
+    h.extend(CORRECTIONS.iter().map(|s| s.to_string()));
+    h.push(String::new());
+    let samples = taps as u64 * rows as u64;
+    h.push(if f16_holds(samples, fr.delta) {
+        format!(
+            "Target format: R32F or A16B16G16R16F (|sum| ≤ {} × {:.2} ≤ 65,504).",
+            thousands(samples),
+            plan::largest_term(fr.delta)
+        )
+    } else {
+        format!(
+            "Target format: D3DFMT_R32F. An f16 target cannot hold every sum: {} samples × up to {:.2} exceeds 65,504.",
+            thousands(samples),
+            plan::largest_term(fr.delta)
+        )
+    });
+    h.push("The application sets:".into());
+    let x0 = match role {
+        Role::LastColumn => format!("{}·{bw}", nx - 1),
+        _ => format!("x·{bw}"),
+    };
+    h.push(format!(
+        "  v0.xy = (({x0} + 0.5)/{}, (y·{bh} + 0.5)/{}) at target pixel (x, y): the centre of the block's top-left texel",
+        fr.w, fr.h
+    ));
+    h.push("  c0.z  = 0".into());
+    h.push(format!(
+        "  c1    = (1/{}, 1/{}, 0, 1) = ({}, {}, 0, 1)",
+        fr.w,
+        fr.h,
+        f32_text(1.0 / fr.w as f64),
+        f32_text(1.0 / fr.h as f64)
+    ));
+    h.push(format!(
+        "  c3    = (0.27, 0.67, 0.06, sqrt(delta)); delta = {} gives c3.w = {}",
+        fr.delta as f32,
+        f32_text((fr.delta as f32).sqrt() as f64)
+    ));
+    h.push("  s0    = the frame: point filtering, BORDER addressing, border colour 0".into());
+    h.push(match form {
+        Pass1Form::Unrolled => format!("  i2    = nothing to set: `defi i2, {rows}` in the shader"),
+        Pass1Form::Loop => format!(
+            "  i1, i2 = nothing to set: `defi i1, {taps}` and `defi i2, {rows}` in the shader"
+        ),
+    });
+    let text = format!("{}{body}", asm::comment_block(&h));
+    // The header is comments only: the program, and so its figures, are
+    // unchanged. Check the final text anyway.
+    let again = super::check(&file, &text, &profile)?;
+    if (again.slots, again.executed) != (c.slots, c.executed) {
+        return Err(GenError(format!("{file}: the header changed the program")));
+    }
+    Ok(Ok(Generated {
+        file,
+        role,
+        form: form.name().to_string(),
+        size: [taps, rows],
+        slots: c.slots,
+        executed: c.executed,
+        text,
+    }))
+}
+
+/// Writes, checks and heads one pass-2 listing; `uses` lists (what, P) for
+/// each configuration that reads this target, for the c0.y values.
+fn pass2_shader(
+    fitter: &mut Fitter<'_>,
+    fr: &Frame,
+    targets: (u32, u32),
+    uses: &[(String, u64)],
+    macros: bool,
+) -> Result<Result<Generated, String>, GenError> {
+    let profile = fitter.profile().clone();
+    let (nx, ny) = targets;
+    let outcome = fitter.pass2(nx, ny)?;
+    let Some(choice) = outcome.choice else {
+        return Ok(Err(format!(
+            "pass 2 for a {} target: no listing fits ({}); a third pass would be needed, which ps30 does not generate",
+            size(nx, ny),
+            outcome.rejected.join("; ")
+        )));
+    };
+    let file = format!("pass2_{nx}x{ny}.psh");
+    let body = asm::render(&asm::pass2(choice.form, nx, ny), macros);
+    let c = super::check(&file, &body, &profile)?;
+    if !c.fits() || (c.slots, c.executed) != (choice.slots, choice.executed) {
+        return Err(GenError(format!(
+            "{file}: the pass-2 listing changed between the fit and the output"
+        )));
+    }
+    let n = fr.n();
+    let mut h = vec![
+        format!(
+            "ps30 unroll: luminance pass 2, {}, for the {} intermediate target of a {} frame",
+            choice.form.name(),
+            size(nx, ny),
+            size(fr.w, fr.h)
+        ),
+        "Generated: edit ps30's generator (src/gen/), not this file.".into(),
+        String::new(),
+    ];
+    h.extend(checked_lines(&profile, c.slots, c.executed));
+    h.push(String::new());
+    h.push(format!(
+        "Sums pass 1's {} target row by row ({}), subtracts the BORDER padding and divides by N",
+        size(nx, ny),
+        match choice.form {
+            Pass2Form::Unrolled => "fully unrolled, as the article's listing".to_string(),
+            Pass2Form::RowLoop => format!(
+                "rep i0 over {ny} rows, each row's {nx} texels unrolled: fully unrolled would not fit"
+            ),
+            Pass2Form::Nested => format!(
+                "rep i0 over {ny} rows, rep i1 over {nx} texels: unrolled rows would not fit"
+            ),
+        }
+    ));
+    h.push("with one mad, then converts back with exp: oC0 = the log-average luminance.".into());
+    h.push(String::new());
+    h.push("Corrections to the article's listing, found by ps30's emulator cross-check (asm/corrected/):".into());
+    h.push("  c0.y subtracts the padded samples' log2(delta) terms (the article kept them: L̄w × 0.505 at 1280×1024);".into());
+    h.push(
+        "  rows restart at the start u kept in r3.z (a texel centre), not at u = 0 (a texel edge)."
+            .into(),
+    );
+    h.push(String::new());
+    h.push("Draw: a 1×1 target. The application sets:".into());
+    h.push(format!(
+        "  v0.xy = (0.5/{nx}, 0.5/{ny}) = ({}, {}): the centre of texel (0, 0)",
+        f32_text(0.5 / nx as f64),
+        f32_text(0.5 / ny as f64)
+    ));
+    h.push(format!(
+        "  c0    = (1/N, -P·log2(delta)/N, 0, 0), N = {}·{} = {} pixels, P = padded samples:",
+        fr.w,
+        fr.h,
+        thousands(n)
+    ));
+    h.push(format!("          c0.x = {}", f32_text(1.0 / n as f64)));
+    for (what, p) in uses {
+        h.push(format!(
+            "          c0.y = {} with {what} (P = {}, delta = {})",
+            f32_text(-(*p as f64) * fr.delta.log2() / n as f64),
+            thousands(*p),
+            fr.delta as f32
+        ));
+    }
+    h.push(format!(
+        "  c1    = (1/{nx}, 1/{ny}, 0, 1) = ({}, {}, 0, 1)",
+        f32_text(1.0 / nx as f64),
+        f32_text(1.0 / ny as f64)
+    ));
+    h.push("  s0    = pass 1's target, point filtering".into());
+    if choice.form != Pass2Form::Unrolled {
+        h.push("  i0, i1 = nothing to set: defined in the shader (defi)".into());
+    }
+    let text = format!("{}{body}", asm::comment_block(&h));
+    let again = super::check(&file, &text, &profile)?;
+    if (again.slots, again.executed) != (c.slots, c.executed) {
+        return Err(GenError(format!("{file}: the header changed the program")));
+    }
+    Ok(Ok(Generated {
+        file,
+        role: Role::Pass2,
+        form: choice.form.name().to_string(),
+        size: [nx, ny],
+        slots: c.slots,
+        executed: c.executed,
+        text,
+    }))
+}
+
+/// A pass-1 form and its block.
+type Pick = (Pass1Form, (u32, u32));
+
+/// The blocks a request asks for, one per form, with notes on how they were
+/// chosen; forms that cannot be fitted go to `problems`.
+fn choose_blocks(
+    fitter: &mut Fitter<'_>,
+    req: &Request,
+    notes: &mut Vec<String>,
+    problems: &mut Vec<String>,
+) -> Result<Vec<Pick>, GenError> {
+    let (w, h) = req.frame;
+    let mut out: Vec<Pick> = Vec::new();
+    for &(form, choice) in &req.picks {
+        let before = out.len();
+        match choice {
+            BlockChoice::Given(bw, bh) => {
+                if let Some(why) = fitter.pass1_unwritable(form, bw, bh) {
+                    problems.push(format!("pass 1, {} form, {bw}×{bh}: {why}", form.name()));
+                    continue;
+                }
+                out.push((form, (bw, bh)));
+            }
+            BlockChoice::Fit if form == Pass1Form::Unrolled => {
+                let Some(n) = fitter.widest(form, w)? else {
+                    problems.push(format!(
+                        "the unrolled form does not fit this profile even for one texel per line: {}",
+                        fitter
+                            .pass1(form, 1, 1)?
+                            .map(|c| c.problems.join("; "))
+                            .or_else(|| fitter.pass1_unwritable(form, 1, 1))
+                            .unwrap_or_default()
+                    ));
+                    continue;
+                };
+                let at = fitter.pass1(form, n, 1)?.map(|c| c.slots).unwrap_or(0);
+                let mut why = format!(
+                    "widest unroll: {n} texels per line, {} slots of {}",
+                    thousands(at),
+                    thousands(fitter.profile().max_slots)
+                );
+                if n < w {
+                    match fitter.pass1(form, n + 1, 1)? {
+                        Some(c) => why.push_str(&format!(
+                            "; {} would take {} slots",
+                            n + 1,
+                            thousands(c.slots)
+                        )),
+                        None => why.push_str(&format!(
+                            "; {} {}",
+                            n + 1,
+                            fitter.pass1_unwritable(form, n + 1, 1).unwrap_or_default()
+                        )),
+                    }
+                } else {
+                    why.push_str(" (the frame's whole width)");
+                }
+                notes.push(why);
+                let Some(tall) = fitter.tallest(form, n, h)? else {
+                    problems.push(format!("no block {n} texels wide fits the executed limit"));
+                    continue;
+                };
+                let exec = |f: &mut Fitter<'_>, r: u32| -> Result<Option<u64>, GenError> {
+                    Ok(f.pass1(form, n, r)?.map(|c| c.executed))
+                };
+                let mut why = format!(
+                    "tallest block: {tall} lines, {} executed of {}",
+                    exec(fitter, tall)?.map_or("?".into(), thousands),
+                    thousands(fitter.profile().max_executed)
+                );
+                if tall < h {
+                    match exec(fitter, tall + 1)? {
+                        Some(e) => why.push_str(&format!(
+                            "; {} lines would take {}",
+                            tall + 1,
+                            thousands(e)
+                        )),
+                        None => why.push_str(&format!(
+                            "; {} lines: {}",
+                            tall + 1,
+                            fitter
+                                .pass1_unwritable(form, n, tall + 1)
+                                .unwrap_or_default()
+                        )),
+                    }
+                } else {
+                    why.push_str(" (the frame's whole height)");
+                }
+                let short = balanced(h, tall);
+                if short != tall {
+                    why.push_str(&format!(
+                        "; {h} lines need {} block rows either way, so {short} lines (padding {} lines instead of {})",
+                        h.div_ceil(tall),
+                        h.div_ceil(short) * short - h,
+                        h.div_ceil(tall) * tall - h
+                    ));
+                }
+                notes.push(why);
+                out.push((form, (n, short)));
+            }
+            BlockChoice::Fit => {
+                let mut plan_notes = Vec::new();
+                let mut cands =
+                    plan::candidates(fitter, req.frame, req.delta, form, &mut plan_notes)?;
+                cands.sort_by_key(|c| {
+                    (
+                        c.passes,
+                        c.total_executed.unwrap_or(u64::MAX),
+                        c.padded_samples,
+                        std::cmp::Reverse(c.block[0]),
+                    )
+                });
+                match cands.first() {
+                    Some(c) => {
+                        notes.push(format!(
+                            "loop form: the plan's best loop block for {}: {}×{} ({} executed for the frame{})",
+                            size(w, h),
+                            c.block[0],
+                            c.block[1],
+                            c.total_executed.map_or("—".into(), thousands),
+                            if c.passes == 3 { ", 3 passes" } else { "" }
+                        ));
+                        out.push((form, (c.block[0], c.block[1])));
+                    }
+                    None => problems.push(format!(
+                        "the loop form does not fit this profile: {}",
+                        plan_notes.join("; ")
+                    )),
+                }
+            }
+        }
+        // The same block asked for twice is generated once.
+        if out.len() > before && out[..before].contains(&out[before]) {
+            out.pop();
+        }
+    }
+    Ok(out)
+}
+
+/// Generates the shaders a request asks for.
+pub fn generate(req: &Request, profile: &Profile) -> Result<Bundle, GenError> {
+    let mut fitter = Fitter::new(profile);
+    let fr = Frame {
+        w: req.frame.0,
+        h: req.frame.1,
+        delta: req.delta,
+    };
+    let mut notes = Vec::new();
+    let mut problems = Vec::new();
+    let blocks = choose_blocks(&mut fitter, req, &mut notes, &mut problems)?;
+    let mut shaders: Vec<Generated> = Vec::new();
+    let mut configs = Vec::new();
+    // Pass-2 users: targets → (description, padded samples).
+    let mut pass2_uses: BTreeMap<(u32, u32), Vec<(String, u64)>> = BTreeMap::new();
+    for (form, (bw, bh)) in blocks {
+        let main = match pass1_shader(
+            &mut fitter,
+            &fr,
+            form,
+            Role::Pass1,
+            (bw, bh),
+            bw,
+            req.macros,
+            None,
+        )? {
+            Ok(g) => g,
+            Err(p) => {
+                problems.push(p);
+                continue;
+            }
+        };
+        if !shaders.iter().any(|s| s.file == main.file) {
+            shaders.push(main.clone());
+        }
+        let (nx, ny) = (fr.w.div_ceil(bw), fr.h.div_ceil(bh));
+        let covered_y = ny as u64 * bh as u64;
+        let padded_border = nx as u64 * bw as u64 * covered_y - fr.n();
+        let padded_last = fr.w as u64 * covered_y - fr.n();
+        let real = fr.w - (nx - 1) * bw;
+        let mut last_file = None;
+        if real < bw {
+            // The article's "non-unrolled version" first; the unrolled one
+            // when the loop would exceed the limits.
+            let mut last = None;
+            let mut why_not = Vec::new();
+            for lf in [Pass1Form::Loop, Pass1Form::Unrolled] {
+                if fitter.pass1_unwritable(lf, real, bh).is_some() {
+                    why_not.push(format!(
+                        "{}: {}",
+                        lf.name(),
+                        fitter.pass1_unwritable(lf, real, bh).unwrap_or_default()
+                    ));
+                    continue;
+                }
+                match pass1_shader(
+                    &mut fitter,
+                    &fr,
+                    lf,
+                    Role::LastColumn,
+                    (bw, bh),
+                    real,
+                    req.macros,
+                    Some(&main.file),
+                )? {
+                    Ok(g) => {
+                        last = Some(g);
+                        break;
+                    }
+                    Err(p) => why_not.push(p),
+                }
+            }
+            match last {
+                Some(g) => {
+                    if g.form != Pass1Form::Loop.name() {
+                        notes.push(format!(
+                            "last column of {}: the non-unrolled version does not fit ({}), so it is unrolled",
+                            main.file,
+                            why_not.join("; ")
+                        ));
+                    }
+                    last_file = Some(g.file.clone());
+                    if !shaders.iter().any(|s| s.file == g.file) {
+                        shaders.push(g);
+                    }
+                }
+                None => notes.push(format!(
+                    "no last-column shader for {}: {}",
+                    main.file,
+                    why_not.join("; ")
+                )),
+            }
+        }
+        let uses = pass2_uses.entry((nx, ny)).or_default();
+        uses.push((
+            format!("{} {} blocks and BORDER padding", form.name(), size(bw, bh)),
+            padded_border,
+        ));
+        if let Some(l) = &last_file {
+            uses.push((
+                format!("{} {} blocks and {l}", form.name(), size(bw, bh)),
+                padded_last,
+            ));
+        }
+        configs.push(Config {
+            form,
+            block: [bw, bh],
+            targets: [nx, ny],
+            pass1: main.file.clone(),
+            last_column: last_file,
+            pass2: None,
+            padded_border,
+            padded_last_column: padded_last,
+            total_executed: None,
+        });
+    }
+    for (targets, uses) in &pass2_uses {
+        match pass2_shader(&mut fitter, &fr, *targets, uses, req.macros)? {
+            Ok(g) => {
+                for c in configs
+                    .iter_mut()
+                    .filter(|c| (c.targets[0], c.targets[1]) == *targets)
+                {
+                    c.pass2 = Some(g.file.clone());
+                    let p1 = shaders
+                        .iter()
+                        .find(|s| s.file == c.pass1)
+                        .map_or(0, |s| s.executed);
+                    c.total_executed = Some(p1 * targets.0 as u64 * targets.1 as u64 + g.executed);
+                }
+                shaders.push(g);
+            }
+            Err(p) => problems.push(p),
+        }
+    }
+    Ok(Bundle {
+        frame: [fr.w, fr.h],
+        profile: profile.clone(),
+        delta: req.delta,
+        shaders,
+        configs,
+        notes,
+        problems,
+    })
+}
+
+/// The frame sizes whose shaders are kept in `asm/generated/`.
+pub const FRAMES: [(u32, u32); 6] = [
+    (640, 480),
+    (1024, 768),
+    (1280, 1024),
+    (1920, 1080),
+    (2560, 1440),
+    (3840, 2160),
+];
+
+/// The δ the committed shaders' headers quote constants for.
+pub const DEFAULT_DELTA: f64 = crate::jobs::luminance::reference::DEFAULT_DELTA;
+
+/// The committed set for one frame: `ps30 unroll --fit --frame WxH` plus
+/// the plan's recommended configuration when it differs, under the ps_3_0
+/// profile.
+pub fn frame_set(frame: (u32, u32)) -> Result<(Bundle, plan::Plan), GenError> {
+    let profile = Profile::ps_3_0();
+    let p = plan::plan(frame, &profile, DEFAULT_DELTA)?;
+    let mut picks = vec![
+        (Pass1Form::Unrolled, BlockChoice::Fit),
+        (Pass1Form::Loop, BlockChoice::Fit),
+    ];
+    if let Some(r) = p
+        .recommended
+        .as_ref()
+        .and_then(|n| p.candidates.iter().find(|c| &c.name == n))
+    {
+        picks.push((r.variant, BlockChoice::Given(r.block[0], r.block[1])));
+    }
+    let bundle = generate(
+        &Request {
+            frame,
+            picks,
+            macros: false,
+            delta: DEFAULT_DELTA,
+        },
+        &profile,
+    )?;
+    Ok((bundle, p))
+}
+
+/// The directory name of a frame's set: `1280x1024`.
+pub fn frame_dir(frame: (u32, u32)) -> String {
+    format!("{}x{}", frame.0, frame.1)
+}
+
+/// Every committed file: (path relative to `asm/generated/`, contents),
+/// with the per-frame bundles and plans.
+pub struct GeneratedSet {
+    pub files: Vec<(String, String)>,
+    pub frames: Vec<((u32, u32), Bundle, plan::Plan)>,
+}
+
+/// Builds the whole committed set in memory.
+pub fn generated_set() -> Result<GeneratedSet, GenError> {
+    let mut files = Vec::new();
+    let mut frames = Vec::new();
+    for frame in FRAMES {
+        let (bundle, p) = frame_set(frame)?;
+        if !bundle.problems.is_empty() {
+            return Err(GenError(format!(
+                "{}: {}",
+                frame_dir(frame),
+                bundle.problems.join("; ")
+            )));
+        }
+        for g in &bundle.shaders {
+            files.push((format!("{}/{}", frame_dir(frame), g.file), g.text.clone()));
+        }
+        frames.push((frame, bundle, p));
+    }
+    files.sort();
+    Ok(GeneratedSet { files, frames })
+}
+
+/// What is wrong with the committed files under `dir`: missing, stale
+/// (different from what the generator writes now) or unexpected `.psh`
+/// files, each naming the file.
+pub fn stale_files(dir: &Path, set: &GeneratedSet) -> Vec<String> {
+    let mut problems = Vec::new();
+    for (rel, text) in &set.files {
+        let path = dir.join(rel);
+        match std::fs::read_to_string(&path) {
+            Ok(t) if &t == text => {}
+            Ok(_) => problems.push(format!(
+                "{} is stale: the generator now writes something else (run `ps30 verify --regenerate`)",
+                path.display()
+            )),
+            Err(e) => problems.push(format!(
+                "{} is missing ({e}) (run `ps30 verify --regenerate`)",
+                path.display()
+            )),
+        }
+    }
+    for extra in existing_psh(dir) {
+        if !set.files.iter().any(|(rel, _)| *rel == extra) {
+            problems.push(format!(
+                "{} is not a file the generator writes (remove it, or run `ps30 verify --regenerate`)",
+                dir.join(&extra).display()
+            ));
+        }
+    }
+    problems
+}
+
+/// `.psh` files under `dir` (one level of frame directories), relative.
+pub fn existing_psh(dir: &Path) -> Vec<String> {
+    let mut out = Vec::new();
+    let Ok(frames) = std::fs::read_dir(dir) else {
+        return out;
+    };
+    for f in frames.flatten() {
+        let Ok(files) = std::fs::read_dir(f.path()) else {
+            continue;
+        };
+        for e in files.flatten() {
+            let name = e.file_name().to_string_lossy().into_owned();
+            if name.ends_with(".psh") {
+                out.push(format!("{}/{name}", f.file_name().to_string_lossy()));
+            }
+        }
+    }
+    out.sort();
+    out
+}
+
+/// Rewrites the committed set under `dir` (atomically, file by file) and
+/// removes `.psh` files the generator no longer writes. Returns the paths
+/// written and removed.
+pub fn write_set(dir: &Path, set: &GeneratedSet) -> std::io::Result<(Vec<String>, Vec<String>)> {
+    let mut written = Vec::new();
+    for (rel, text) in &set.files {
+        let path = dir.join(rel);
+        if std::fs::read_to_string(&path).ok().as_deref() != Some(text.as_str()) {
+            crate::core::output::write_bytes(&path, text.as_bytes())?;
+            written.push(path.display().to_string());
+        }
+    }
+    let mut removed = Vec::new();
+    for extra in existing_psh(dir) {
+        if !set.files.iter().any(|(rel, _)| *rel == extra) {
+            let path = dir.join(&extra);
+            std::fs::remove_file(&path)?;
+            removed.push(path.display().to_string());
+        }
+    }
+    Ok((written, removed))
+}

@@ -1,0 +1,765 @@
+//! The luminance pipeline of the article, run in the emulator and
+//! cross-checked against the f64 CPU reference.
+//!
+//! Pass 1 draws a `⌈W/bw⌉ × ⌈H/bh⌉` target; each pixel sums log2|δ + L| over
+//! one `bw × bh` block of the image (BORDER addressing returns black outside
+//! the image). Pass 2 draws a 1×1 target that sums pass 1's target, divides
+//! by N = W·H and converts back with `exp`. Both passes are ordinary ps_3_0
+//! shaders loaded through the front end, so the article's listings, the
+//! corrected ones and generated ones all run through the same path.
+//!
+//! # Tolerances
+//!
+//! Every comparison has a bound derived from the arithmetic, computed per
+//! block by [`pass1_bounds`]:
+//!
+//! * each term: the shader computes δ + L with `dp4` in f32 — four products
+//!   and three additions, each rounded (relative error u = 2⁻²⁴), plus the
+//!   f32 rounding of the weights 0.27, 0.67, 0.06 and of √δ and its square:
+//!   |dp4 − (δ + L)| ≤ 8u·A with A = 0.27|R| + 0.67|G| + 0.06|B| + δ, hence
+//!   |Δlog2| ≤ 8u·A / (|δ + L|·ln 2) (first order; a term whose bound
+//!   reaches |δ + L|/2 is ill-conditioned and reported as such), plus the
+//!   emulator's log2 error (< 1 ulp of the result);
+//! * the accumulation: each `add` rounds the running sum, so the sum is off
+//!   by at most u·Σₖ|Sₖ| over the partial sums Sₖ in the shader's order;
+//! * storage: an f16 target rounds the block sum to half precision
+//!   (≤ ½ ulp₁₆), an f32 target stores it exactly;
+//! * pass 2 adds its own accumulation bound, the rounding of 1/N and of the
+//!   product (2u relative), and `exp`'s error (≤ 1 ulp) and storage.
+//!
+//! The bounds are first order in u; the factor (1 + n·u) that covers the
+//! second-order terms is applied explicitly where the sums are formed.
+
+use crate::core::cost::{self, Environment, Profile, Range};
+use crate::core::emu::{self, Address, Constants, Draw, Filter, LinearInput, SamplerState};
+use crate::core::load::{self, Options};
+use crate::core::image::{HdrImage, RenderTarget, TargetFormat, Texture};
+use crate::core::isa::Opcode;
+pub mod reference;
+
+use reference::Policy;
+use serde::Serialize;
+
+/// f32 unit roundoff.
+const U32: f64 = f32::EPSILON as f64 / 2.0;
+
+/// A shader source to run.
+#[derive(Clone, Debug)]
+pub struct ShaderSource {
+    pub name: String,
+    pub text: String,
+}
+
+impl ShaderSource {
+    pub fn new(name: impl Into<String>, text: impl Into<String>) -> ShaderSource {
+        ShaderSource {
+            name: name.into(),
+            text: text.into(),
+        }
+    }
+}
+
+/// Settings of one pipeline run.
+#[derive(Clone, Debug)]
+pub struct Settings {
+    pub block: (u32, u32),
+    pub delta: f32,
+    pub format: TargetFormat,
+    /// How the reference treats negative and non-finite luminance; the
+    /// default, `Abs`, is what the `log` instruction computes.
+    pub policy: Policy,
+    /// Worker threads for the emulator (`None`: all cores).
+    pub threads: Option<usize>,
+    /// The emulator's bounds (executed slots per pixel, target size).
+    pub limits: emu::EmuLimits,
+}
+
+impl Default for Settings {
+    fn default() -> Settings {
+        Settings {
+            block: (125, 128),
+            delta: reference::DEFAULT_DELTA as f32,
+            format: TargetFormat::R32F,
+            policy: Policy::ABS,
+            threads: None,
+            limits: emu::EmuLimits::default(),
+        }
+    }
+}
+
+/// Why a pipeline run could not be made (not a disagreement: those are
+/// results).
+#[derive(Debug)]
+pub enum PipelineError {
+    Source(crate::core::diag::SourceError),
+    Cost(String),
+    Emu(emu::EmuError),
+    Reference(String),
+    /// The shader and the requested block do not fit together.
+    Mismatch(String),
+}
+
+impl std::fmt::Display for PipelineError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            PipelineError::Source(e) => write!(f, "{e}"),
+            PipelineError::Cost(e) | PipelineError::Reference(e) | PipelineError::Mismatch(e) => {
+                f.write_str(e)
+            }
+            PipelineError::Emu(e) => write!(f, "emulator: {e}"),
+        }
+    }
+}
+
+impl std::error::Error for PipelineError {}
+
+/// Loads a shader through the front end, with `-D` style defines.
+fn load(src: &ShaderSource, defines: &[(&str, u64)]) -> Result<load::Loaded, PipelineError> {
+    let mut opts = Options::default();
+    for (k, v) in defines {
+        opts.defines.insert(k.to_string(), *v);
+    }
+    load::load_str(&src.name, &src.text, &opts).map_err(PipelineError::Source)
+}
+
+/// One pass's cost: static analysis next to what the emulator counted.
+#[derive(Clone, Debug, Serialize)]
+pub struct PassCost {
+    pub shader: String,
+    pub slots: u64,
+    /// Executed slots per pixel from the cost model.
+    pub executed_static: Range,
+    /// Executed slots per pixel the emulator counted (min, max over pixels).
+    pub executed_emulated: Range,
+    /// Warnings from the draw's quads (divergent gradients, a level of
+    /// detail far from level 0 on a texture that has only level 0): see
+    /// [`crate::jobs::profile`].
+    pub findings: Vec<crate::core::emu::findings::Finding>,
+    /// Whether every pixel's count lies in the static range.
+    pub counts_agree: bool,
+    pub within_limits: bool,
+}
+
+/// The cross-check of one pass-1 block.
+#[derive(Clone, Debug, Serialize)]
+pub struct BlockCheck {
+    pub x: u32,
+    pub y: u32,
+    /// What the emulated target holds.
+    pub emulated: f64,
+    /// The f64 reference sum of log2|δ + L| over the block (BORDER padding).
+    pub reference: f64,
+    /// |emulated − reference|.
+    pub difference: f64,
+    /// The derived bound on |emulated − reference|.
+    pub tolerance: f64,
+    pub agree: bool,
+    /// The target format cannot hold the block's sum (f16 beyond ±65504).
+    pub overflow: bool,
+}
+
+/// A scalar comparison with its derived bound.
+#[derive(Clone, Debug, Serialize)]
+pub struct Comparison {
+    pub emulated: f64,
+    pub reference: f64,
+    pub difference: f64,
+    pub tolerance: f64,
+    pub agree: bool,
+}
+
+impl Comparison {
+    fn new(emulated: f64, reference: f64, tolerance: f64) -> Comparison {
+        if !(emulated.is_finite() && reference.is_finite()) {
+            // Non-finite pixels make non-finite sums on the GPU and in the
+            // reference alike: they agree only if they are the same special
+            // value (both NaN, or the same infinity).
+            let same = (emulated.is_nan() && reference.is_nan()) || emulated == reference;
+            return Comparison {
+                emulated,
+                reference,
+                difference: if same { 0.0 } else { f64::INFINITY },
+                tolerance: 0.0,
+                agree: same,
+            };
+        }
+        let difference = (emulated - reference).abs();
+        Comparison {
+            emulated,
+            reference,
+            difference,
+            tolerance,
+            // A value the target format cannot hold (f16 overflow) has no
+            // finite bound: that is a disagreement, never a pass.
+            agree: difference <= tolerance && tolerance.is_finite(),
+        }
+    }
+}
+
+/// Everything a run computed.
+#[derive(Clone, Debug, Serialize)]
+pub struct LuminanceRun {
+    pub width: u32,
+    pub height: u32,
+    pub block: (u32, u32),
+    pub targets: (u32, u32),
+    pub target_format: TargetFormat,
+    pub delta: f32,
+    /// Texels read outside the image (BORDER returns black: log2(δ) each).
+    pub padded_samples: u64,
+    pub pass1: PassCost,
+    /// The last column's pass-1 shader, when one draws it
+    /// ([`run_with_last_column`]); `None` with BORDER padding in x.
+    pub pass1_last: Option<PassCost>,
+    pub pass2: PassCost,
+    pub blocks: Vec<BlockCheck>,
+    /// Pass 2's output against its formula applied in f64 to the stored
+    /// pass-1 target.
+    pub pass2_check: Comparison,
+    /// Emulated L̄w against the pass-1 reference pushed through pass 2's
+    /// formula (with and without padding correction as the shader does it).
+    pub log_average: f64,
+    /// The true L̄w of the image: every pixel once, no padding.
+    pub reference_log_average: f64,
+    pub relative_error: f64,
+    /// Derived bound on the relative error if the shaders are right.
+    pub relative_tolerance: f64,
+    pub agree: bool,
+    /// What BORDER padding does to L̄w when nobody corrects for it: the
+    /// factor 2^(P·log2(δ)/N).
+    pub padding_factor: f64,
+    /// Pixels whose term is too ill-conditioned to bound (δ + L near 0).
+    pub ill_conditioned: u64,
+    /// Non-finite pixels in the image.
+    pub nonfinite_pixels: u64,
+    pub negative_pixels: u64,
+}
+
+impl LuminanceRun {
+    pub fn blocks_agree(&self) -> bool {
+        self.blocks.iter().all(|b| b.agree)
+    }
+
+    /// Whether L̄w is a usable number (non-finite pixels make it NaN or ∞).
+    pub fn finite(&self) -> bool {
+        self.log_average.is_finite()
+    }
+
+    /// Everything agrees: blocks, pass 2 and L̄w, and the counts.
+    pub fn all_agree(&self) -> bool {
+        self.blocks_agree()
+            && self.pass2_check.agree
+            && self.agree
+            && self.pass1.counts_agree
+            && self.pass1_last.as_ref().is_none_or(|p| p.counts_agree)
+            && self.pass2.counts_agree
+    }
+}
+
+/// Per-block error bounds of pass 1 in the shader's order (row by row,
+/// left to right), with the number of ill-conditioned terms.
+pub fn pass1_bounds(
+    image: &HdrImage,
+    block: (u32, u32),
+    delta: f64,
+    policy: Policy,
+) -> (Vec<Vec<f64>>, u64) {
+    pass1_bounds_last_width(image, block, block.0, delta, policy)
+}
+
+/// [`pass1_bounds`] when the last column of blocks reads only `last_width`
+/// texels per line (see [`run_with_last_column`]).
+pub fn pass1_bounds_last_width(
+    image: &HdrImage,
+    block: (u32, u32),
+    last_width: u32,
+    delta: f64,
+    policy: Policy,
+) -> (Vec<Vec<f64>>, u64) {
+    let (bw, bh) = block;
+    let nx = image.width.div_ceil(bw);
+    let ny = image.height.div_ceil(bh);
+    let mut bounds = vec![vec![0f64; nx as usize]; ny as usize];
+    let mut ill = 0u64;
+    let padded_term = delta.log2();
+    for by in 0..ny {
+        for bx in 0..nx {
+            let mut partial = 0f64;
+            let mut accumulation = 0f64;
+            let mut terms = 0f64;
+            let read = if bx + 1 == nx { last_width } else { bw };
+            for y in by * bh..(by + 1) * bh {
+                for x in bx * bw..bx * bw + read {
+                    let (t, e) = if x < image.width && y < image.height {
+                        let p = image.pixel(x, y);
+                        let l = crate::core::image::luminance(p);
+                        let Some(t) = policy.term(l, delta) else {
+                            continue;
+                        };
+                        let a = 0.27 * (p[0] as f64).abs()
+                            + 0.67 * (p[1] as f64).abs()
+                            + 0.06 * (p[2] as f64).abs()
+                            + delta;
+                        let x_exact = (delta + l).abs();
+                        let abs_err = 8.0 * U32 * a;
+                        if t.is_finite() && abs_err >= x_exact / 2.0 {
+                            ill += 1;
+                        }
+                        (t, abs_err / (x_exact * std::f64::consts::LN_2) + ulp32(t))
+                    } else {
+                        (
+                            padded_term,
+                            8.0 * U32 / std::f64::consts::LN_2 + ulp32(padded_term),
+                        )
+                    };
+                    partial += t;
+                    accumulation += partial.abs();
+                    terms += e;
+                }
+            }
+            let n = (read as f64) * (bh as f64);
+            bounds[by as usize][bx as usize] = (terms + U32 * accumulation) * (1.0 + n * U32);
+        }
+    }
+    (bounds, ill)
+}
+
+/// One unit in the last place of an f32 near `x`.
+fn ulp32(x: f64) -> f64 {
+    let a = (x.abs() as f32).max(f32::MIN_POSITIVE);
+    (f32::from_bits(a.to_bits() + 1) - a) as f64
+}
+
+/// Half a unit in the last place of an f16 near `x` (the storage error).
+fn half_ulp16(x: f64) -> f64 {
+    let a = half::f16::from_f64(x.abs());
+    if a.is_infinite() {
+        return f64::INFINITY;
+    }
+    let next = half::f16::from_bits(a.to_bits() + 1);
+    (next.to_f64() - a.to_f64()) / 2.0
+}
+
+fn storage_bound(format: TargetFormat, value: f64) -> f64 {
+    match format {
+        TargetFormat::R32F => 0.0,
+        TargetFormat::Rgba16F => half_ulp16(value),
+    }
+}
+
+/// The texture coordinate the application gives pixel (x, y) of a target
+/// whose pixels each cover a `bw × bh` block of a `w × h` texture: the centre
+/// of the block's top-left texel, ((x·bw + ½)/w, (y·bh + ½)/h).
+pub fn block_start(w: u32, h: u32, bw: u32, bh: u32) -> LinearInput {
+    LinearInput {
+        base: [0.5 / w as f32, 0.5 / h as f32, 0.0, 0.0],
+        ddx: [bw as f32 / w as f32, 0.0, 0.0, 0.0],
+        ddy: [0.0, bh as f32 / h as f32, 0.0, 0.0],
+    }
+}
+
+fn sampler(texture: Texture<'_>) -> (u32, emu::TextureLevels<'_>, SamplerState) {
+    (
+        0,
+        texture.into(),
+        SamplerState {
+            address_u: Address::Border,
+            address_v: Address::Border,
+            border: [0.0; 4],
+            ..SamplerState::filtered(Filter::Point)
+        },
+    )
+}
+
+/// Runs a draw and stores oC0 into a target of the run's format.
+fn draw_into(
+    compiled: &emu::Compiled,
+    draw: &Draw,
+    format: TargetFormat,
+    threads: Option<usize>,
+    file: &crate::core::diag::SourceFile,
+) -> Result<(RenderTarget, Range, Vec<crate::core::emu::findings::Finding>), PipelineError> {
+    let out = match threads {
+        Some(t) => emu::run_with_threads(compiled, draw, t),
+        None => emu::run(compiled, draw),
+    }
+    .map_err(PipelineError::Emu)?;
+    let mut target = RenderTarget::new(out.width, out.height, format);
+    if let Some(Some(color)) = out.color.first() {
+        for (i, v) in color.iter().enumerate() {
+            target.store(i as u32 % out.width, i as u32 / out.width, *v);
+        }
+    }
+    let min = out.executed.iter().copied().min().unwrap_or(0);
+    let max = out.executed.iter().copied().max().unwrap_or(0);
+    let findings = crate::core::emu::findings::findings(&out, draw, file);
+    Ok((target, Range { min, max }, findings))
+}
+
+fn pass_cost(
+    loaded: &load::Loaded,
+    env: &Environment,
+    emulated: Range,
+    findings: Vec<crate::core::emu::findings::Finding>,
+) -> Result<(PassCost, cost::Analysis), PipelineError> {
+    let a = cost::analyse(&loaded.shader, &loaded.file, env, &Profile::ps_3_0())
+        .map_err(|e| PipelineError::Cost(e.to_string()))?;
+    Ok((
+        PassCost {
+            shader: loaded.file.name.clone(),
+            slots: a.slots,
+            executed_static: a.executed,
+            executed_emulated: emulated,
+            findings,
+            counts_agree: a.executed.min <= emulated.min && emulated.max <= a.executed.max,
+            within_limits: a.verdict == cost::Verdict::Within,
+        },
+        a,
+    ))
+}
+
+/// Runs pass 1 and pass 2 on an image and cross-checks every step.
+pub fn run(
+    image: &HdrImage,
+    pass1: &ShaderSource,
+    pass2: &ShaderSource,
+    s: &Settings,
+) -> Result<LuminanceRun, PipelineError> {
+    run_impl(image, pass1, None, pass2, s)
+}
+
+/// [`run`] with the article's alternative to BORDER padding in x: `pass1`
+/// draws every column of blocks but the last, and `last` draws the last
+/// column, reading only the frame's real width there
+/// (`W − (nx − 1)·bw` texels per line, its `i1` or REPEAT_BLOCK count). Two
+/// draws into one `nx × ny` target; only the bottom row of blocks is padded
+/// (in y), and pass 2's correction c0.y counts only that padding.
+pub fn run_with_last_column(
+    image: &HdrImage,
+    pass1: &ShaderSource,
+    last: &ShaderSource,
+    pass2: &ShaderSource,
+    s: &Settings,
+) -> Result<LuminanceRun, PipelineError> {
+    run_impl(image, pass1, Some(last), pass2, s)
+}
+
+/// Loads a pass-1 shader and checks that it reads `bw × bh` texels with
+/// i1 = bw, i2 = bh.
+fn load_pass1(
+    src: &ShaderSource,
+    bw: u32,
+    bh: u32,
+) -> Result<(load::Loaded, Environment), PipelineError> {
+    let l1 = load(src, &[("bw", bw as u64), ("bh", bh as u64)])?;
+    let mut env1 = Environment::default();
+    env1.ints.insert(1, [bw as i32, 0, 0, 0]);
+    env1.ints.insert(2, [bh as i32, 0, 0, 0]);
+    let static1 = cost::analyse(&l1.shader, &l1.file, &env1, &Profile::ps_3_0())
+        .map_err(|e| PipelineError::Cost(e.to_string()))?;
+    let reads: u64 = l1
+        .shader
+        .instructions()
+        .iter()
+        .zip(&static1.executions)
+        .filter(|(i, _)| i.op == Opcode::TexLd)
+        .map(|(_, e)| e.max)
+        .sum();
+    if reads != bw as u64 * bh as u64 {
+        return Err(PipelineError::Mismatch(format!(
+            "{} reads {reads} texels per pixel with i1 = {bw}, i2 = {bh}, but a {bw}×{bh} block has {}; an unrolled shader fixes the block width to its REPEAT_BLOCK count",
+            src.name,
+            bw as u64 * bh as u64
+        )));
+    }
+    Ok((l1, env1))
+}
+
+fn run_impl(
+    image: &HdrImage,
+    pass1: &ShaderSource,
+    last: Option<&ShaderSource>,
+    pass2: &ShaderSource,
+    s: &Settings,
+) -> Result<LuminanceRun, PipelineError> {
+    let (bw, bh) = s.block;
+    if bw == 0 || bh == 0 {
+        return Err(PipelineError::Mismatch(
+            "block sides must be at least 1".into(),
+        ));
+    }
+    let (w, h) = (image.width, image.height);
+    if w == 0 || h == 0 {
+        return Err(PipelineError::Mismatch("the image is empty".into()));
+    }
+    let (nx, ny) = (w.div_ceil(bw), h.div_ceil(bh));
+    let n_pixels = w as f64 * h as f64;
+    // Texels per line the last column reads: the real width with a
+    // last-column shader, the whole block with BORDER padding.
+    let last_w = match last {
+        Some(_) => w - (nx - 1) * bw,
+        None => bw,
+    };
+    let padded = ((nx - 1) as u64 * bw as u64 + last_w as u64) * (ny as u64 * bh as u64)
+        - w as u64 * h as u64;
+    let delta = s.delta as f64;
+
+    // Pass 1: one draw over every column (BORDER padding), or one over the
+    // first nx − 1 columns and one over the last.
+    let (l1, env1) = load_pass1(pass1, bw, bh)?;
+    let main_cols = if last.is_some() { nx - 1 } else { nx };
+    let root = (s.delta).sqrt();
+    let constants = |read: u32| Constants {
+        float: vec![
+            [0.0; 4],
+            [1.0 / w as f32, 1.0 / h as f32, 0.0, 1.0],
+            [0.0; 4],
+            [0.27, 0.67, 0.06, root],
+        ],
+        int: vec![[0; 4], [read as i32, 0, 0, 0], [bh as i32, 0, 0, 0]],
+        bool: Vec::new(),
+    };
+    let texture = Texture {
+        width: w,
+        height: h,
+        texels: &image.pixels,
+    };
+    let mut t1 = RenderTarget::new(nx, ny, s.format);
+    let mut emulated1 = Range::ZERO;
+    let mut findings1 = Vec::new();
+    if main_cols > 0 {
+        let c1 = emu::compile(&l1.shader).map_err(PipelineError::Emu)?;
+        let mut d1 = Draw::new(main_cols, ny);
+        d1.limits = s.limits;
+        d1.record_lod = true;
+        d1.inputs.push((0, block_start(w, h, bw, bh)));
+        d1.constants = constants(bw);
+        d1.samplers.push(sampler(texture));
+        let (t, e, f) = draw_into(&c1, &d1, s.format, s.threads, &l1.file)?;
+        for y in 0..ny {
+            for x in 0..main_cols {
+                t1.store(x, y, t.texel(x, y));
+            }
+        }
+        emulated1 = e;
+        findings1 = f;
+    }
+    let (mut pass1_cost, _) = pass_cost(&l1, &env1, emulated1, findings1)?;
+    if main_cols == 0 {
+        // A frame no wider than one block: the last-column shader draws the
+        // only column and `pass1` never runs, so there is no count to compare.
+        pass1_cost.counts_agree = true;
+    }
+    let pass1_last = match last {
+        Some(src) => {
+            let (ll, envl) = load_pass1(src, last_w, bh)?;
+            let cl = emu::compile(&ll.shader).map_err(PipelineError::Emu)?;
+            let mut dl = Draw::new(1, ny);
+            dl.limits = s.limits;
+            dl.record_lod = true;
+            let mut input = block_start(w, h, bw, bh);
+            input.base[0] = (((nx - 1) as f64 * bw as f64 + 0.5) / w as f64) as f32;
+            dl.inputs.push((0, input));
+            dl.constants = constants(last_w);
+            dl.samplers.push(sampler(texture));
+            let (t, e, f) = draw_into(&cl, &dl, s.format, s.threads, &ll.file)?;
+            for y in 0..ny {
+                t1.store(nx - 1, y, t.texel(0, y));
+            }
+            Some(pass_cost(&ll, &envl, e, f)?.0)
+        }
+        None => None,
+    };
+
+    // Reference and bounds for pass 1.
+    let refs = reference::block_sums_last_width(image, delta, s.policy, bw, bh, last_w)
+        .map_err(|e| PipelineError::Reference(e.to_string()))?;
+    let (bounds, ill) = pass1_bounds_last_width(image, s.block, last_w, delta, s.policy);
+    let mut blocks = Vec::with_capacity((nx * ny) as usize);
+    for by in 0..ny {
+        for bx in 0..nx {
+            let emulated = t1.texel(bx, by)[0] as f64;
+            let reference = refs.sums[by as usize][bx as usize];
+            let tol = bounds[by as usize][bx as usize] + storage_bound(s.format, reference);
+            let c = Comparison::new(emulated, reference, tol);
+            let overflow = reference.is_finite() && !storage_bound(s.format, reference).is_finite();
+            blocks.push(BlockCheck {
+                x: bx,
+                y: by,
+                emulated,
+                reference,
+                difference: c.difference,
+                tolerance: c.tolerance,
+                agree: c.agree,
+                overflow,
+            });
+        }
+    }
+
+    // Pass 2.
+    let l2 = load(pass2, &[("xsize", nx as u64), ("ysize", ny as u64)])?;
+    let c2 = emu::compile(&l2.shader).map_err(PipelineError::Emu)?;
+    let mut d2 = Draw::new(1, 1);
+    d2.limits = s.limits;
+    d2.inputs.push((
+        0,
+        LinearInput::constant([0.5 / nx as f32, 0.5 / ny as f32, 0.0, 0.0]),
+    ));
+    let correction = -(padded as f64) * (delta.log2()) / n_pixels;
+    d2.constants = Constants {
+        float: vec![
+            [(1.0 / n_pixels) as f32, correction as f32, 0.0, 0.0],
+            [1.0 / nx as f32, 1.0 / ny as f32, 0.0, 1.0],
+        ],
+        int: Vec::new(),
+        bool: Vec::new(),
+    };
+    d2.samplers.push(sampler(t1.as_texture()));
+    d2.record_lod = true;
+    let (t2, emulated2, findings2) = draw_into(&c2, &d2, s.format, s.threads, &l2.file)?;
+    let (pass2_cost, _) = pass_cost(&l2, &Environment::default(), emulated2, findings2)?;
+    let log_average = t2.texel(0, 0)[0] as f64;
+
+    // Pass 2 on its own: the emulated L̄w against pass 2's formula applied
+    // in f64 to the stored pass-1 values (sum in pass 2's order, then the
+    // padding correction if the shader reads c0.y, then 1/N and exp2).
+    let mut partial = 0f64;
+    let mut accumulation = 0f64;
+    for by in 0..ny {
+        for bx in 0..nx {
+            partial += t1.texel(bx, by)[0] as f64;
+            accumulation += partial.abs();
+        }
+    }
+    let applied = if reads_c0y(&l2) { correction } else { 0.0 };
+    let mean2 = partial / n_pixels + applied;
+    let expected2 = mean2.exp2();
+    // Sum rounding; 1/N and the product (2u relative), the mad's addition
+    // (u), exp's result (≤ 1 ulp, 2u relative), storage.
+    let rel2 = std::f64::consts::LN_2
+        * (U32 * accumulation * (1.0 + (nx * ny) as f64 * U32) / n_pixels
+            + 2.0 * U32 * (partial / n_pixels).abs()
+            + U32 * mean2.abs())
+        + 2.0 * U32
+        + storage_bound(s.format, expected2) / expected2.max(f64::MIN_POSITIVE);
+    let pass2_check = Comparison::new(log_average, expected2, rel2 * expected2);
+
+    // End to end: the emulated L̄w against the true L̄w of the image (every
+    // pixel once, no padding). If the shaders are right, the difference
+    // comes only from the block bounds and pass 2's own rounding.
+    let true_ref = reference::log_average(image, delta, s.policy);
+    let block_bound: f64 = blocks.iter().map(|b| b.tolerance).sum();
+    let relative_tolerance = std::f64::consts::LN_2 * block_bound / n_pixels + rel2;
+    let end_to_end = Comparison::new(
+        log_average,
+        true_ref.log_average,
+        relative_tolerance * true_ref.log_average.abs(),
+    );
+    let relative_error = end_to_end.difference / true_ref.log_average.abs();
+    let padding_factor = (padded as f64 * delta.log2() / n_pixels).exp2();
+    let stats = image.stats();
+    Ok(LuminanceRun {
+        width: w,
+        height: h,
+        block: s.block,
+        targets: (nx, ny),
+        target_format: s.format,
+        delta: s.delta,
+        padded_samples: padded,
+        pass1: pass1_cost,
+        pass1_last,
+        pass2: pass2_cost,
+        blocks,
+        pass2_check,
+        log_average,
+        reference_log_average: true_ref.log_average,
+        relative_error,
+        relative_tolerance,
+        agree: end_to_end.agree,
+        padding_factor,
+        ill_conditioned: ill,
+        nonfinite_pixels: stats.non_finite,
+        negative_pixels: stats.negative_luminance,
+    })
+}
+
+/// Whether a pass-2 shader reads c0.y, the padding correction. The
+/// article's listing multiplies by c0.x only.
+fn reads_c0y(l: &load::Loaded) -> bool {
+    l.shader.instructions().iter().any(|i| {
+        i.src.iter().any(|s| {
+            s.reg.file == crate::core::isa::RegFile::Const && s.reg.index == 0 && s.swizzle.0.contains(&1)
+        })
+    })
+}
+
+/// One pass of any shader over a texture: what `ps30 run` does.
+#[derive(Clone, Debug)]
+pub struct PassSetup {
+    pub target: (u32, u32),
+    pub constants: Constants,
+    pub sampler: SamplerState,
+    pub format: TargetFormat,
+    pub threads: Option<usize>,
+    pub limits: emu::EmuLimits,
+}
+
+/// What one pass produced.
+#[derive(Clone, Debug)]
+pub struct PassOutput {
+    pub target: RenderTarget,
+    pub cost: PassCost,
+}
+
+/// Runs `loaded` over a `target` whose pixel (x, y) gets v0 = the start of
+/// its block of `image` (see [`block_start`]) and s0 = `image`.
+pub fn run_pass(
+    loaded: &load::Loaded,
+    image: &HdrImage,
+    setup: &PassSetup,
+) -> Result<PassOutput, PipelineError> {
+    let (tw, th) = setup.target;
+    let compiled = emu::compile(&loaded.shader).map_err(PipelineError::Emu)?;
+    let mut draw = Draw::new(tw, th);
+    draw.limits = setup.limits;
+    let declared = |file: crate::core::isa::RegFile, index: u32| {
+        loaded
+            .shader
+            .program()
+            .inputs
+            .iter()
+            .any(|d| d.reg.file == file && d.reg.index == index)
+    };
+    if declared(crate::core::isa::RegFile::Input, 0) {
+        draw.inputs.push((
+            0,
+            block_start(
+                image.width,
+                image.height,
+                image.width.div_ceil(tw),
+                image.height.div_ceil(th),
+            ),
+        ));
+    }
+    draw.constants = setup.constants.clone();
+    if loaded.shader.program().sampler_type(0).is_some() {
+        draw.samplers
+            .push((0, image.as_texture().into(), setup.sampler));
+    }
+    draw.record_lod = true;
+    let (target, emulated, findings) =
+        draw_into(&compiled, &draw, setup.format, setup.threads, &loaded.file)?;
+    // A draw sets every constant: what the application did not set is 0 /
+    // false, for the cost model as for the emulator.
+    let mut env = Environment::default();
+    for i in 0..16 {
+        let int = setup.constants.int.get(i).copied().unwrap_or([0; 4]);
+        env.ints.insert(i as u32, int);
+        env.bools.insert(
+            i as u32,
+            setup.constants.bool.get(i).copied().unwrap_or(false),
+        );
+    }
+    let (cost, _) = pass_cost(loaded, &env, emulated, findings)?;
+    Ok(PassOutput { target, cost })
+}

@@ -1,0 +1,21 @@
+//! The jobs: what ps30 does with the core stages.
+//!
+//! Each job has a folder of its own and computes results as plain data; how
+//! those results are printed is the business of [`crate::present`].
+//! [`bundled`] is the table of shaders shipped inside the binary, shared by
+//! every job. Jobs import the core and [`bundled`]; a job may use another
+//! job only where the arrow below points (no cycles):
+//!
+//! ```text
+//! verify ──▶ gen ──▶ luminance ◀── tonemap      profile ──▶ scenes
+//!    │                   ▲             ▲            │
+//!    └───────────────────┴─────────────┘            └──▶ luminance
+//! ```
+
+pub mod bundled;
+pub mod gen;
+pub mod luminance;
+pub mod profile;
+pub mod scenes;
+pub mod tonemap;
+pub mod verify;

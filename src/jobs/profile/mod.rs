@@ -1,0 +1,360 @@
+//! `ps30 profile`: what a shader costs quad by quad over an image, and where
+//! it relies on something Direct3D leaves undefined.
+//!
+//! One draw in the emulator gives, per pixel, the executed slots of its own
+//! path and, per 2×2 quad, the slots the quad executed in lockstep — every
+//! instruction any of its four pixels ran (see [`crate::core::emu`]). From them:
+//!
+//! * min / mean / max and a histogram of slots per pixel and per quad, next
+//!   to the static shortest and longest paths of the cost model (what Arm's
+//!   Mali Offline Compiler reports as shortest/longest path);
+//! * the divergent quads (some instruction ran with only part of the quad)
+//!   and the *lockstep efficiency*: the pixels' own slots as a share of what
+//!   their quads executed, Σ pixel slots / Σ (quad slots × pixels of the
+//!   quad in the target);
+//! * findings:
+//!   - **divergent gradient**: a `dsx`/`dsy` of a temporary, or a
+//!     `texld`/`texldp`/`texldb` with a temporary coordinate, that some quad
+//!     ran with only part of its pixels — the gradient read neighbours that
+//!     were not at the same point (undefined in Direct3D); with the source
+//!     line and the number of quads;
+//!   - **LOD far from level 0**: a `texld`/`texldp`/`texldb` whose largest
+//!     level of detail (gradients, MIPMAPLODBIAS and texldb's w) is at least
+//!     [`LOD_WARNING`](crate::core::emu::findings::LOD_WARNING) while its sampler can only read the base level (the
+//!     texture has one level, or MIPFILTER is NONE): the shader gets level 0
+//!     only because nothing else exists — on a mipmapped texture the same
+//!     instruction would read level ⌊λ + ½⌋. With point sampling a λ ≥ 1
+//!     also means neighbouring pixels skip texels. The luminance pass is the
+//!     example: its neighbours read blocks 125 × 128 texels apart, λ = 7.
+//!
+//! Exit status of the command: 1 when a divergent-gradient finding exists,
+//! when emulated counts leave the cost model's range, or (G-buffer input)
+//! when a pixel differs from the CPU computation; LOD findings are
+//! warnings only.
+
+use crate::core::numbers::thousands;
+use crate::core::cost::{self, Environment, Profile, Range};
+use crate::core::diag::SourceFile;
+use crate::core::emu::{
+    self, Constants, Draw, DrawOutput, MipChain,
+    SamplerState, TextureLevels,
+};
+use crate::core::load::{self, Options};
+use crate::core::image::HdrImage;
+use crate::core::emu::findings::{findings, Finding, FindingKind, SiteSummary};
+use serde::Serialize;
+
+/// Min, mean, max and a histogram of a list of slot counts.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct CostStats {
+    pub count: u64,
+    pub min: u64,
+    pub mean: f64,
+    pub max: u64,
+    /// Bins `lo..=hi` with their counts, in order; one bin per distinct
+    /// value when there are at most as many values as bins requested.
+    pub histogram: Vec<Bin>,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+pub struct Bin {
+    pub lo: u64,
+    pub hi: u64,
+    pub count: u64,
+}
+
+impl CostStats {
+    /// Statistics of `values` with at most `bins` histogram bins (at least 1).
+    pub fn of(values: &[u64], bins: usize) -> CostStats {
+        let bins = bins.max(1);
+        let count = values.len() as u64;
+        let min = values.iter().copied().min().unwrap_or(0);
+        let max = values.iter().copied().max().unwrap_or(0);
+        let sum: u128 = values.iter().map(|&v| v as u128).sum();
+        let mean = if count == 0 {
+            0.0
+        } else {
+            sum as f64 / count as f64
+        };
+        let mut distinct: Vec<u64> = values.to_vec();
+        distinct.sort_unstable();
+        distinct.dedup();
+        let histogram = if distinct.len() <= bins {
+            distinct
+                .iter()
+                .map(|&v| Bin {
+                    lo: v,
+                    hi: v,
+                    count: values.iter().filter(|&&x| x == v).count() as u64,
+                })
+                .collect()
+        } else {
+            let span = max - min + 1;
+            let width = span.div_ceil(bins as u64);
+            let n = span.div_ceil(width) as usize;
+            let mut h: Vec<Bin> = (0..n as u64)
+                .map(|k| Bin {
+                    lo: min + k * width,
+                    hi: (min + (k + 1) * width - 1).min(max),
+                    count: 0,
+                })
+                .collect();
+            for &v in values {
+                h[((v - min) / width) as usize].count += 1;
+            }
+            h
+        };
+        CostStats {
+            count,
+            min,
+            mean,
+            max,
+            histogram,
+        }
+    }
+}
+
+/// Per-pixel and per-quad costs of one draw.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct QuadCosts {
+    pub per_pixel: CostStats,
+    pub per_quad: CostStats,
+    pub quads: u64,
+    pub divergent_quads: u64,
+    /// Σ pixel slots / Σ (quad slots × the quad's pixels in the target).
+    pub lockstep_efficiency: f64,
+    /// The same over divergent quads only (1 when there are none).
+    pub divergent_efficiency: f64,
+}
+
+/// The costs of a draw's output, with `bins` histogram bins.
+pub fn quad_costs(out: &DrawOutput, bins: usize) -> QuadCosts {
+    let (w, h) = (out.width as u64, out.height as u64);
+    let qx = out.quads_x as u64;
+    let mut own = vec![0u64; out.quad_executed.len()];
+    let mut pixels = vec![0u64; out.quad_executed.len()];
+    for y in 0..h {
+        for x in 0..w {
+            let q = ((y / 2) * qx + x / 2) as usize;
+            if let (Some(o), Some(p)) = (own.get_mut(q), pixels.get_mut(q)) {
+                *o += out.executed[(y * w + x) as usize];
+                *p += 1;
+            }
+        }
+    }
+    let ratio = |pick: &dyn Fn(usize) -> bool| {
+        let (mut num, mut den) = (0u128, 0u128);
+        for (q, &cost) in out.quad_executed.iter().enumerate() {
+            if pick(q) {
+                num += own[q] as u128;
+                den += cost as u128 * pixels[q] as u128;
+            }
+        }
+        if den == 0 {
+            1.0
+        } else {
+            num as f64 / den as f64
+        }
+    };
+    QuadCosts {
+        per_pixel: CostStats::of(&out.executed, bins),
+        per_quad: CostStats::of(&out.quad_executed, bins),
+        quads: out.quad_executed.len() as u64,
+        divergent_quads: out.quad_divergent.iter().filter(|&&d| d).count() as u64,
+        lockstep_efficiency: ratio(&|_| true),
+        divergent_efficiency: ratio(&|q| out.quad_divergent[q]),
+    }
+}
+
+/// What `ps30 profile` ran on.
+#[derive(Clone, Debug)]
+pub enum Input {
+    /// The synthetic G-buffer of [`crate::jobs::scenes::lights`], `w × h`.
+    GBuffer(u32, u32),
+    /// An image sampled by s0, v0 = the start of each pixel's block of it
+    /// (as `ps30 run`), into a `target`.
+    Image {
+        image: HdrImage,
+        name: String,
+        target: (u32, u32),
+        sampler: SamplerState,
+        /// Build a full box-filtered mip chain for s0.
+        mips: bool,
+    },
+}
+
+/// Everything `ps30 profile` needs besides the shader.
+#[derive(Clone, Debug)]
+pub struct Setup {
+    pub input: Input,
+    pub defines: Vec<(String, u64)>,
+    pub constants: Constants,
+    pub bins: usize,
+    pub threads: Option<usize>,
+}
+
+/// The result of `ps30 profile`.
+#[derive(Clone, Debug)]
+pub struct ProfileRun {
+    pub file: SourceFile,
+    pub input: String,
+    pub width: u32,
+    pub height: u32,
+    pub static_executed: Range,
+    pub counts_agree: bool,
+    pub costs: QuadCosts,
+    pub gradients: Vec<SiteSummary>,
+    pub findings: Vec<Finding>,
+    /// Warnings the validator gave.
+    pub warnings: crate::core::diag::Diagnostics,
+    /// G-buffer input: pixels per light model and how many match the CPU.
+    pub models: Option<[(u64, u64); crate::jobs::scenes::lights::MODELS]>,
+}
+
+impl ProfileRun {
+    /// Whether the run found a problem (see the module docs).
+    pub fn problem(&self) -> bool {
+        !self.counts_agree
+            || self
+                .findings
+                .iter()
+                .any(|f| f.kind == FindingKind::DivergentGradient)
+            || self
+                .models
+                .is_some_and(|m| m.iter().any(|&(n, ok)| n != ok))
+    }
+}
+
+/// Runs `ps30 profile`.
+pub fn profile(name: &str, text: &str, setup: &Setup) -> Result<ProfileRun, String> {
+    let mut opts = Options::default();
+    for (k, v) in &setup.defines {
+        opts.defines.insert(k.clone(), *v);
+    }
+    let loaded = load::load_str(name, text, &opts)
+        .map_err(|e| format!("{}\n{e}", e.diagnostics.render(&e.file)))?;
+    let compiled = emu::compile(&loaded.shader).map_err(|e| e.to_string())?;
+    let mut env = Environment::default();
+    for (i, v) in setup.constants.int.iter().enumerate() {
+        env.ints.insert(i as u32, *v);
+    }
+    for (i, v) in setup.constants.bool.iter().enumerate() {
+        env.bools.insert(i as u32, *v);
+    }
+    let analysis = cost::analyse(&loaded.shader, &loaded.file, &env, &Profile::ps_3_0())
+        .map_err(|e| e.to_string())?;
+    let run = |draw: &Draw| -> Result<DrawOutput, String> {
+        match setup.threads {
+            Some(t) => emu::run_with_threads(&compiled, draw, t),
+            None => emu::run(&compiled, draw),
+        }
+        .map_err(|e| format!("emulator: {e}"))
+    };
+    let scene;
+    let chain;
+    let (out, draw, input, models) = match &setup.input {
+        Input::GBuffer(w, h) => {
+            scene = crate::jobs::scenes::lights::Scene::synthetic(*w, *h).map_err(|e| e.to_string())?;
+            crate::jobs::scenes::lights::Scene::check_constants(loaded.shader.program())
+                .map_err(|e| format!("{name}: not a light-model shader for this scene: {e}"))?;
+            let mut draw = scene.draw();
+            draw.record_lod = true;
+            // The command line's constants, except c4, which the scene sets.
+            let mut floats = setup.constants.float.clone();
+            floats.resize(floats.len().max(5), [0.0; 4]);
+            floats[4] = scene.material_scale();
+            draw.constants = Constants {
+                float: floats,
+                ..setup.constants.clone()
+            };
+            let out = run(&draw)?;
+            let models = crate::jobs::scenes::lights::compare(&scene, &out);
+            let counts = scene.pixels_per_model();
+            let input = format!(
+                "the synthetic G-buffer {w}×{h} (light models 0 / 1 / 2: {} / {} / {} pixels)",
+                thousands(counts[0]),
+                thousands(counts[1]),
+                thousands(counts[2])
+            );
+            (out, draw, input, Some(models))
+        }
+        Input::Image {
+            image,
+            name: image_name,
+            target,
+            sampler,
+            mips,
+        } => {
+            let (tw, th) = *target;
+            let mut draw = Draw::new(tw, th);
+            if loaded
+                .shader
+                .program()
+                .inputs
+                .iter()
+                .any(|d| d.reg.file == crate::core::isa::RegFile::Input && d.reg.index == 0)
+            {
+                draw.inputs.push((
+                    0,
+                    crate::jobs::luminance::block_start(
+                        image.width,
+                        image.height,
+                        image.width.div_ceil(tw),
+                        image.height.div_ceil(th),
+                    ),
+                ));
+            }
+            draw.constants = setup.constants.clone();
+            draw.record_lod = true;
+            chain = if *mips {
+                Some(MipChain::build(image.as_texture(), None)?)
+            } else {
+                None
+            };
+            if loaded.shader.program().sampler_type(0).is_some() {
+                let tex: TextureLevels = match &chain {
+                    Some(c) => c.into(),
+                    None => image.as_texture().into(),
+                };
+                draw.samplers.push((0, tex, *sampler));
+            }
+            let out = run(&draw)?;
+            let levels = chain.as_ref().map_or(1, |c| c.len());
+            let input = format!(
+                "{image_name} ({}×{}, {} level{}) → {tw}×{th} target",
+                image.width,
+                image.height,
+                levels,
+                if levels == 1 { "" } else { "s" }
+            );
+            (out, draw, input, None)
+        }
+    };
+    let costs = quad_costs(&out, setup.bins);
+    let counts_agree = analysis.executed.min <= costs.per_pixel.min
+        && costs.per_pixel.max <= analysis.executed.max;
+    let found = findings(&out, &draw, &loaded.file);
+    let gradients = out
+        .gradients
+        .iter()
+        .map(|g| SiteSummary::new(g, &loaded.file))
+        .collect();
+    Ok(ProfileRun {
+        input,
+        width: out.width,
+        height: out.height,
+        static_executed: analysis.executed,
+        counts_agree,
+        costs,
+        gradients,
+        findings: found,
+        warnings: loaded.warnings,
+        models,
+        file: loaded.file,
+    })
+}
+
+// ----- the command line ----------------------------------------------------------
+//
+// The arguments live here rather than in `main.rs` so that the binary only
+// names the subcommand; the value parsers follow `main.rs`'s.

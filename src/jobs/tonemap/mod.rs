@@ -1,0 +1,830 @@
+//! Tone mapping: the article's operator (Reinhard's global photographic
+//! operator) run as ps_3_0 assembly in the emulator over a whole image, with
+//! L̄w from the luminance pipeline, cross-checked pixel by pixel against an
+//! f64 CPU reference, and encoded to 8-bit sRGB for display.
+//!
+//! The operator, from the article's equations (2.2.3) and (2.2.4):
+//!
+//! ```text
+//! L  = (a / L̄w) · Lw                 Lw = 0.27 R + 0.67 G + 0.06 B
+//! Ld = L · (1 + L / L_white²) / (1 + L)
+//! colour = (R, G, B) · Ld / Lw        (Lw ≤ 0: black), saturated to [0, 1]
+//! ```
+//!
+//! with the key `a` (0.18 by default) and the white point `W` given in the
+//! image's luminance units (by default the scene's largest luminance), so
+//! that `L_white = (a / L̄w) · W` and a pixel with `Lw = W` maps to `Ld = 1`.
+//! The shader is `asm/tonemap/reinhard.psh`; its header explains every
+//! constant and what was fixed from the article's HLSL.
+//!
+//! # The cross-check and its bound
+//!
+//! [`reference_pixel`] evaluates the operator as written above in f64 (not
+//! in the shader's rearranged form). Every emulated channel must lie within
+//! a bound of it derived from the shader's f32 arithmetic, evaluated per
+//! pixel by [`channel_bounds`] as a running error analysis along the
+//! shader's instruction sequence. Each step's computed value is tracked as
+//! an exact value `v` (f64) and a bound `e` on how far the f32 value can be
+//! from it:
+//!
+//! * application constants (`a`, `1/(a·W²)`, the luminance weights) are
+//!   rounded to f32 once: `e` is that rounding, known exactly;
+//! * `mul`, `add` and each half of the unfused `mad` round their result:
+//!   `e' = e_in + u·(|v| + e_in)`, u = 2⁻²⁴, with the propagated input
+//!   error `e_in` (`|x|·e_y + |y|·e_x + e_x·e_y` for a product); a fused mad
+//!   rounds less, so the bound covers both;
+//! * `dp3` with any evaluation order: `γ₃·Σ|ŵᵢcᵢ|` (Higham, "Accuracy and
+//!   Stability of Numerical Algorithms", §3.1), γ₃ = 3u/(1 − 3u), plus the
+//!   weights' own rounding `Σ|cᵢ|·|ŵᵢ − wᵢ|`;
+//! * `rcp`: Microsoft requires "at least 1.0/(2²²) absolute error over the
+//!   range (1.0, 2.0)" with mantissa and exponent handled separately; the
+//!   result of a mantissa in (1, 2) lies in (0.5, 1), so the *relative*
+//!   error is at most 2⁻²² / 0.5 = 2⁻²¹. For an input known to within e of
+//!   x, `e' = e / (|x|·(|x| − e)) + 2⁻²¹ / (|x| − e)` (unbounded if e ≥ |x|).
+//!   The emulator's rcp is IEEE 1/x (error ≤ u), well inside;
+//! * every step adds 2⁻¹⁵⁰ for f32 underflow and 2⁻⁵²·|v| for the f64
+//!   evaluation of `v` itself;
+//! * `cmp` selects exactly; when `e ≥ |Lw|` the sign of the computed
+//!   luminance is not certain and the bound is the hull of black and the
+//!   colour for every luminance in `(0, Lw + e]` ("sign-ambiguous" pixels);
+//! * `_sat` is monotone: the allowed interval is `[sat(r − e), sat(r + e)]`
+//!   around the reference `r`, so a channel far above 1 must be exactly 1.
+//!
+//! The 8-bit codes of the emulated and reference channels are compared too.
+//! A code may differ only by 1 and only where the allowed interval straddles
+//! a rounding boundary of the sRGB encoding; such channels are counted and
+//! reported, never absorbed by a wider bound.
+
+use crate::core::cost::{self, Environment, Profile, Range};
+use crate::core::emu::{self, Address, Constants, Draw, Filter, LinearInput, SamplerState};
+use crate::core::load::{self, Options};
+use crate::core::image::{HdrImage, RenderTarget, TargetFormat};
+use crate::jobs::luminance::{self, LuminanceRun, PassCost, ShaderSource};
+use crate::core::image::LUMINANCE_WEIGHTS;
+use serde::Serialize;
+
+/// The key value the article (after Reinhard) suggests.
+pub const DEFAULT_KEY: f64 = 0.18;
+
+
+/// f32 unit roundoff, 2⁻²⁴.
+const U: f64 = f32::EPSILON as f64 / 2.0;
+/// Half the smallest f32 subnormal: the absolute error of an underflowing
+/// f32 result.
+const ETA: f64 = 7.006_492_321_624_085e-46; // 2^-150
+/// Relative error of `rcp` allowed by Microsoft's precision statement.
+const RCP: f64 = 4.768_371_582_031_25e-7; // 2^-21
+/// Slack for the f64 evaluation of each exact value.
+const F64: f64 = f64::EPSILON; // 2^-52
+
+/// Settings of a tone-mapping run.
+#[derive(Clone, Debug)]
+pub struct Settings {
+    /// The key a.
+    pub key: f64,
+    /// The white point in the image's luminance units; `None`: the scene's
+    /// largest luminance. `f64::INFINITY` gives Ld = L / (1 + L).
+    pub white: Option<f64>,
+    /// Emulator threads (`None`: all cores).
+    pub threads: Option<usize>,
+    /// Rows per draw (the image is drawn in bands of this many rows, for
+    /// progress and bounded memory; results do not depend on it). 0 picks
+    /// about 256 K pixels per band.
+    pub band_rows: u32,
+    /// The tone-mapping shader: [`TONEMAP_REINHARD`](crate::jobs::bundled::TONEMAP_REINHARD) by default, or any shader with
+    /// the same inputs (v0, s0, s1, c0–c2), which is then checked against
+    /// the same reference.
+    pub shader: ShaderSource,
+    /// The emulator's bounds, for the luminance passes and the tone map.
+    pub limits: crate::core::emu::EmuLimits,
+}
+
+impl Default for Settings {
+    fn default() -> Settings {
+        Settings {
+            key: DEFAULT_KEY,
+            white: None,
+            threads: None,
+            band_rows: 0,
+            shader: ShaderSource::new(crate::jobs::bundled::TONEMAP_REINHARD.path, crate::jobs::bundled::TONEMAP_REINHARD.text),
+            limits: crate::core::emu::EmuLimits::default(),
+        }
+    }
+}
+
+/// Why a tone-mapping run could not be made.
+#[derive(Debug)]
+pub enum TonemapError {
+    /// The key or white point is unusable.
+    BadValue(String),
+    /// The luminance pipeline could not run.
+    Pipeline(luminance::PipelineError),
+    /// The pipeline ran but its L̄w cannot scale anything.
+    LogAverage(f64),
+    Emu(emu::EmuError),
+    Shader(String),
+}
+
+impl std::fmt::Display for TonemapError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            TonemapError::BadValue(m) | TonemapError::Shader(m) => f.write_str(m),
+            TonemapError::Pipeline(e) => write!(f, "luminance pipeline: {e}"),
+            TonemapError::LogAverage(v) => write!(
+                f,
+                "the luminance pipeline gave L̄w = {v}, which cannot scale the image (it needs a positive finite value; does the image hold NaN or infinite pixels?)"
+            ),
+            TonemapError::Emu(e) => write!(f, "emulator: {e}"),
+        }
+    }
+}
+
+impl std::error::Error for TonemapError {}
+
+/// Where the white point came from.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum WhiteSource {
+    /// Given by the caller.
+    Given,
+    /// The scene's largest finite luminance (the article's default).
+    SceneMaximum,
+    /// The scene has no positive luminance, so nothing can white out; W = ∞.
+    NoPositiveLuminance,
+}
+
+/// The operator's parameters as the shader receives them.
+#[derive(Clone, Copy, Debug, Serialize)]
+pub struct Operator {
+    /// The key a.
+    pub key: f64,
+    /// The white point W, in the image's luminance units (may be ∞).
+    pub white: f64,
+    pub white_source: WhiteSource,
+    /// L̄w exactly as the shader samples it (the f32 in pass 2's target).
+    pub log_average: f64,
+}
+
+impl Operator {
+    /// k = a / L̄w, the scale from world luminance to L.
+    pub fn scale(&self) -> f64 {
+        self.key / self.log_average
+    }
+
+    /// L_white in the units of L: (a / L̄w) · W.
+    pub fn white_scaled(&self) -> f64 {
+        self.scale() * self.white
+    }
+
+    /// c0.y = 1 / (a · W²), exactly (0 for W = ∞).
+    pub fn c0y(&self) -> f64 {
+        1.0 / (self.key * self.white * self.white)
+    }
+
+    /// The float constants c0, c1, c2 the shader reads.
+    pub fn constants(&self) -> [[f32; 4]; 3] {
+        [
+            [self.key as f32, self.c0y() as f32, 0.0, 1.0],
+            [LUMINANCE_WEIGHTS[0] as f32, LUMINANCE_WEIGHTS[1] as f32, LUMINANCE_WEIGHTS[2] as f32, 0.0],
+            [0.5, 0.5, 0.0, 0.0],
+        ]
+    }
+}
+
+/// Refuses keys and white points the shader cannot use: both must be
+/// positive (W may be ∞), and a, 1 / (a · W²) must be normal f32 values (or
+/// exactly 0 for W = ∞) so that their f32 rounding is a relative error.
+pub fn check_values(key: f64, white: Option<f64>) -> Result<(), TonemapError> {
+    let normal32 = |v: f64| v.is_finite() && v >= f32::MIN_POSITIVE as f64 && v <= f32::MAX as f64;
+    if !(key > 0.0 && key.is_finite()) {
+        return Err(TonemapError::BadValue(format!(
+            "the key must be a positive finite number (the article suggests 0.18), not {key}"
+        )));
+    }
+    if !normal32(key) {
+        return Err(TonemapError::BadValue(format!(
+            "the key {key} is outside the range of a normal f32"
+        )));
+    }
+    if let Some(w) = white {
+        if w.is_nan() || w <= 0.0 {
+            return Err(TonemapError::BadValue(format!(
+                "the white point must be a positive luminance (or inf), not {w}"
+            )));
+        }
+        let c = 1.0 / (key * w * w);
+        if w.is_finite() && !normal32(c) {
+            return Err(TonemapError::BadValue(format!(
+                "white point {w:e} with key {key} gives 1/(a·W²) = {c:e}, outside the range of a normal f32"
+            )));
+        }
+    }
+    Ok(())
+}
+
+/// The operator in f64, as the article writes it, for one pixel: the linear
+/// colour before saturation. Pixels with Lw ≤ 0 (or NaN) are black.
+pub fn reference_unsaturated(op: &Operator, pixel: [f32; 4]) -> [f64; 3] {
+    let c = [pixel[0] as f64, pixel[1] as f64, pixel[2] as f64];
+    let lw = LUMINANCE_WEIGHTS[0] * c[0] + LUMINANCE_WEIGHTS[1] * c[1] + LUMINANCE_WEIGHTS[2] * c[2];
+    // NaN fails `> 0` and is black too.
+    if lw.is_nan() || lw <= 0.0 {
+        return [0.0; 3];
+    }
+    let l = op.scale() * lw;
+    let lwhite = op.white_scaled();
+    let ld = l * (1.0 + l / (lwhite * lwhite)) / (1.0 + l);
+    c.map(|ch| ch / lw * ld)
+}
+
+/// `_sat` in f64, NaN to 0 as the emulator does.
+fn sat(x: f64) -> f64 {
+    if x.is_nan() {
+        0.0
+    } else {
+        x.clamp(0.0, 1.0)
+    }
+}
+
+/// The reference's displayable linear colour of one pixel.
+pub fn reference_pixel(op: &Operator, pixel: [f32; 4]) -> [f64; 3] {
+    reference_unsaturated(op, pixel).map(sat)
+}
+
+/// A value the shader computes: exact value `v` and a bound `e` on the
+/// distance of the f32 result from it.
+#[derive(Clone, Copy, Debug)]
+struct Bounded {
+    v: f64,
+    e: f64,
+}
+
+impl Bounded {
+    fn exact(v: f64) -> Bounded {
+        Bounded { v, e: 0.0 }
+    }
+
+    /// An application constant rounded to f32.
+    fn constant(v: f64) -> Bounded {
+        Bounded {
+            v,
+            e: ((v as f32) as f64 - v).abs(),
+        }
+    }
+
+    /// One rounded f32 operation whose exact result is `v`, with propagated
+    /// input error `e_in`.
+    fn rounded(v: f64, e_in: f64) -> Bounded {
+        Bounded {
+            v,
+            e: e_in + U * (v.abs() + e_in) + ETA + F64 * v.abs(),
+        }
+    }
+
+    fn mul(self, o: Bounded) -> Bounded {
+        let v = self.v * o.v;
+        Bounded::rounded(v, self.v.abs() * o.e + o.v.abs() * self.e + self.e * o.e)
+    }
+
+    fn add(self, o: Bounded) -> Bounded {
+        Bounded::rounded(self.v + o.v, self.e + o.e)
+    }
+
+    fn rcp(self) -> Bounded {
+        let v = 1.0 / self.v;
+        let m = self.v.abs() - self.e;
+        if m.is_nan() || m <= 0.0 {
+            return Bounded {
+                v,
+                e: f64::INFINITY,
+            };
+        }
+        Bounded {
+            v,
+            e: self.e / (self.v.abs() * m) + RCP / m + ETA + F64 * v.abs(),
+        }
+    }
+}
+
+/// `dp3 r2.x, r1, c1`: the luminance with its bound (any evaluation order).
+fn dp3(c: [f64; 3]) -> Bounded {
+    let gamma3 = 3.0 * U / (1.0 - 3.0 * U);
+    let mut v = 0.0;
+    let mut magnitude = 0.0;
+    let mut weights = 0.0;
+    let mut nonzero = 0.0;
+    for (ch, w) in c.iter().zip(LUMINANCE_WEIGHTS) {
+        let w32 = (w as f32) as f64;
+        v += w * ch;
+        magnitude += (w32 * ch).abs();
+        weights += ch.abs() * (w32 - w).abs();
+        if *ch != 0.0 {
+            nonzero += 1.0;
+        }
+    }
+    // Each product and addition of a non-zero value can underflow.
+    let underflow = if nonzero > 0.0 {
+        (nonzero + 2.0) * ETA
+    } else {
+        0.0
+    };
+    Bounded {
+        v,
+        e: gamma3 * magnitude + weights + underflow + F64 * magnitude,
+    }
+}
+
+/// What the shader's per-pixel factor Ld / Lw comes to, for a luminance
+/// known as `lum`.
+fn factor(op: &Operator, lum: Bounded) -> Bounded {
+    let lw = Bounded::exact(op.log_average);
+    let key = Bounded::constant(op.key);
+    let c0y = Bounded::constant(op.c0y());
+    let one = Bounded::exact(1.0);
+    let k = lw.rcp().mul(key); //           rcp r0.y; mul r0.y
+    let wz = lw.mul(c0y); //                 mul r0.z, r0.x, c0.y
+    let l = lum.mul(k); //                   mul r2.y, r2.x, r0.y
+    let n = lum.mul(wz).add(one); //         mad r2.z, r2.x, r0.z, c0.w
+    let d = l.add(one).rcp(); //             add r2.w; rcp r2.w
+    n.mul(d).mul(k) //                       mul r2.z ×2
+}
+
+/// The interval each emulated channel must lie in, and whether the pixel's
+/// luminance sign was uncertain. `None` for non-finite pixels (not checked).
+pub fn channel_bounds(op: &Operator, pixel: [f32; 4]) -> Option<([(f64, f64); 3], bool)> {
+    let c = [pixel[0] as f64, pixel[1] as f64, pixel[2] as f64];
+    if c.iter().any(|v| !v.is_finite()) {
+        return None;
+    }
+    let lum = dp3(c);
+    let raw = reference_unsaturated(op, pixel);
+    if lum.v + lum.e <= 0.0 {
+        // The computed luminance is ≤ 0 for certain: cmp selects 0.
+        return Some(([(0.0, 0.0); 3], false));
+    }
+    if lum.v - lum.e > 0.0 {
+        let s = factor(op, lum);
+        let out = std::array::from_fn(|i| {
+            let b = Bounded::exact(c[i]).mul(s);
+            (sat(raw[i] - b.e), sat(raw[i] + b.e))
+        });
+        return Some((out, false));
+    }
+    // Sign uncertain: black, or the colour for any luminance in (0, hi].
+    let hi = lum.v + lum.e;
+    let s = factor(
+        op,
+        Bounded {
+            v: hi / 2.0,
+            e: hi / 2.0,
+        },
+    );
+    let out = std::array::from_fn(|i| {
+        let b = Bounded::exact(c[i]).mul(s);
+        let lo = (b.v - b.e).min(0.0).min(raw[i]);
+        let up = (b.v + b.e).max(0.0).max(raw[i]);
+        (sat(lo), sat(up))
+    });
+    Some((out, true))
+}
+
+/// The standard sRGB transfer function (IEC 61966-2-1) of a linear value in
+/// [0, 1].
+pub fn srgb_encode(linear: f64) -> f64 {
+    if linear <= 0.003_130_8 {
+        12.92 * linear
+    } else {
+        1.055 * linear.powf(1.0 / 2.4) - 0.055
+    }
+}
+
+/// A linear value as an 8-bit sRGB code: clamped to [0, 1] (NaN to 0),
+/// encoded, rounded to the nearest code.
+pub fn srgb8(linear: f64) -> u8 {
+    (srgb_encode(sat(linear)) * 255.0).round() as u8
+}
+
+/// Linear RGBA (row-major) to packed 8-bit sRGB RGB, alpha dropped.
+pub fn to_srgb8(linear: &[[f32; 4]]) -> Vec<u8> {
+    linear
+        .iter()
+        .flat_map(|p| [p[0], p[1], p[2]].map(|c| srgb8(c as f64)))
+        .collect()
+}
+
+/// Counts and extremes of the per-pixel cross-check.
+#[derive(Clone, Debug, Default, Serialize)]
+pub struct Crosscheck {
+    pub pixels: u64,
+    /// Pixels compared (all but the non-finite ones).
+    pub checked_pixels: u64,
+    pub nonfinite_pixels: u64,
+    /// Pixels with Lw exactly 0 (shown black).
+    pub zero_luminance_pixels: u64,
+    /// Pixels with Lw < 0 (shown black).
+    pub negative_luminance_pixels: u64,
+    /// Pixels whose computed luminance could have either sign.
+    pub sign_ambiguous_pixels: u64,
+    /// Pixels with a channel at or above 1 before saturation (clipped).
+    pub saturated_pixels: u64,
+    /// Largest |emulated − reference| over all channels.
+    pub max_error: f64,
+    /// The bound at that channel.
+    pub max_error_bound: f64,
+    /// Largest |emulated − reference| / bound over channels with a bound > 0.
+    pub largest_bound_fraction: f64,
+    /// Channels outside their bound (must be 0).
+    pub outside_bound: u64,
+    /// Channels whose 8-bit codes differ.
+    pub mismatched_8bit_channels: u64,
+    /// Pixels with at least one differing 8-bit code.
+    pub mismatched_8bit_pixels: u64,
+    /// Differing codes not explained by a bound straddling a rounding
+    /// boundary, or differing by more than 1 (must be 0).
+    pub unexplained_8bit: u64,
+    /// Differing codes of sign-ambiguous pixels, where f32 cannot tell
+    /// whether the luminance is positive: black and the scaled colour are
+    /// both within the bound (counted apart from the rounding cases).
+    pub ambiguous_8bit: u64,
+    /// The first channel outside its bound, for the report:
+    /// (x, y, channel, emulated, reference, low, high).
+    pub first_outside: Option<(u32, u32, usize, f64, f64, f64, f64)>,
+}
+
+impl Crosscheck {
+    pub fn agree(&self) -> bool {
+        self.outside_bound == 0 && self.unexplained_8bit == 0
+    }
+}
+
+/// Compares the emulated output with the reference, pixel by pixel.
+pub fn crosscheck(op: &Operator, image: &HdrImage, emulated: &[[f32; 4]]) -> Crosscheck {
+    let mut r = Crosscheck {
+        pixels: image.pixels.len() as u64,
+        ..Crosscheck::default()
+    };
+    let w = image.width.max(1) as usize;
+    for (i, (&p, o)) in image.pixels.iter().zip(emulated).enumerate() {
+        let lw = crate::core::image::luminance(p);
+        let Some((bounds, ambiguous)) = channel_bounds(op, p) else {
+            r.nonfinite_pixels += 1;
+            continue;
+        };
+        r.checked_pixels += 1;
+        r.sign_ambiguous_pixels += ambiguous as u64;
+        if lw == 0.0 {
+            r.zero_luminance_pixels += 1;
+        } else if lw < 0.0 {
+            r.negative_luminance_pixels += 1;
+        }
+        let raw = reference_unsaturated(op, p);
+        if raw.iter().any(|&v| v >= 1.0) {
+            r.saturated_pixels += 1;
+        }
+        let mut mismatched = false;
+        for ch in 0..3 {
+            let e = o[ch] as f64;
+            let reference = sat(raw[ch]);
+            let (lo, hi) = bounds[ch];
+            let err = (e - reference).abs();
+            let bound = (reference - lo).max(hi - reference);
+            if err > r.max_error {
+                r.max_error = err;
+                r.max_error_bound = bound;
+            }
+            if bound > 0.0 {
+                r.largest_bound_fraction = r.largest_bound_fraction.max(err / bound);
+            }
+            // `!(…)` so that NaN counts as outside.
+            if !(lo <= e && e <= hi) {
+                r.outside_bound += 1;
+                if r.first_outside.is_none() {
+                    r.first_outside =
+                        Some(((i % w) as u32, (i / w) as u32, ch, e, reference, lo, hi));
+                }
+            }
+            let (ce, cr) = (srgb8(e), srgb8(reference));
+            if ce != cr && ambiguous {
+                // Black and the colour are both right: no rounding rule.
+                r.ambiguous_8bit += 1;
+            } else if ce != cr {
+                mismatched = true;
+                r.mismatched_8bit_channels += 1;
+                if ce.abs_diff(cr) > 1 || srgb8(lo) == srgb8(hi) {
+                    r.unexplained_8bit += 1;
+                }
+            }
+        }
+        r.mismatched_8bit_pixels += mismatched as u64;
+    }
+    r
+}
+
+/// Everything a tone-mapping run produced.
+#[derive(Clone, Debug)]
+pub struct ToneMapped {
+    pub width: u32,
+    pub height: u32,
+    /// The luminance pipeline's run that gave L̄w (and its own cross-check).
+    pub luminance: LuminanceRun,
+    pub operator: Operator,
+    /// The shader's oC0 per pixel, row-major: linear, saturated.
+    pub linear: Vec<[f32; 4]>,
+    pub cost: PassCost,
+    pub check: Crosscheck,
+}
+
+impl ToneMapped {
+    /// The pipeline's L̄w, the emulator's counts and the per-pixel
+    /// cross-check all agree.
+    pub fn all_agree(&self) -> bool {
+        self.luminance.all_agree() && self.cost.counts_agree && self.check.agree()
+    }
+
+    /// The image as 8-bit sRGB, what `ps30 tonemap` writes.
+    pub fn srgb8(&self) -> Vec<u8> {
+        to_srgb8(&self.linear)
+    }
+}
+
+/// The largest finite luminance of an image (`None` if no pixel has a
+/// finite one).
+pub fn max_luminance(image: &HdrImage) -> Option<f64> {
+    image
+        .pixels
+        .iter()
+        .map(|&p| crate::core::image::luminance(p))
+        .filter(|l| l.is_finite())
+        .reduce(f64::max)
+}
+
+/// The white point the operator uses: the given one, or the scene's
+/// largest luminance (∞ if nothing in the scene is positive).
+pub fn white_point(image: &HdrImage, given: Option<f64>) -> (f64, WhiteSource) {
+    match given {
+        Some(w) => (w, WhiteSource::Given),
+        None => match max_luminance(image) {
+            Some(m) if m > 0.0 => (m, WhiteSource::SceneMaximum),
+            _ => (f64::INFINITY, WhiteSource::NoPositiveLuminance),
+        },
+    }
+}
+
+fn bundled(name: &str) -> ShaderSource {
+    let (n, t) = crate::jobs::bundled::listing(name).expect("bundled luminance shader");
+    ShaderSource::new(n, t)
+}
+
+/// Computes L̄w with the corrected luminance passes (125×128 blocks, R32F),
+/// then runs the tone-mapping shader over the image and cross-checks it.
+/// `progress(done, total)` is called after each band of rows.
+pub fn run(
+    image: &HdrImage,
+    settings: &Settings,
+    progress: &dyn Fn(u64, u64),
+) -> Result<ToneMapped, TonemapError> {
+    check_values(settings.key, settings.white)?;
+    let luminance = luminance::run(
+        image,
+        &bundled("corrected:unrolled"),
+        &bundled("corrected:pass2"),
+        &luminance::Settings {
+            threads: settings.threads,
+            limits: settings.limits,
+            ..luminance::Settings::default()
+        },
+    )
+    .map_err(TonemapError::Pipeline)?;
+    let lw32 = luminance.log_average as f32;
+    if !(lw32.is_finite() && lw32 > 0.0) {
+        return Err(TonemapError::LogAverage(luminance.log_average));
+    }
+    let (white, white_source) = white_point(image, settings.white);
+    check_values(settings.key, Some(white))?;
+    let op = Operator {
+        key: settings.key,
+        white,
+        white_source,
+        log_average: lw32 as f64,
+    };
+    let (linear, cost) = emulate(image, &op, settings, progress)?;
+    let check = crosscheck(&op, image, &linear);
+    Ok(ToneMapped {
+        width: image.width,
+        height: image.height,
+        luminance,
+        operator: op,
+        linear,
+        cost,
+        check,
+    })
+}
+
+/// Runs the shader over the image with the operator's constants: pass 2's
+/// 1×1 R32F target holding L̄w on s1, the image on s0.
+pub fn emulate(
+    image: &HdrImage,
+    op: &Operator,
+    settings: &Settings,
+    progress: &dyn Fn(u64, u64),
+) -> Result<(Vec<[f32; 4]>, PassCost), TonemapError> {
+    let src = &settings.shader;
+    let loaded = load::load_str(&src.name, &src.text, &Options::default())
+        .map_err(|e| TonemapError::Shader(e.diagnostics.render(&e.file)))?;
+    let compiled = emu::compile(&loaded.shader).map_err(TonemapError::Emu)?;
+    let analysis = cost::analyse(
+        &loaded.shader,
+        &loaded.file,
+        &Environment::default(),
+        &Profile::ps_3_0(),
+    )
+    .map_err(|e| TonemapError::Shader(e.to_string()))?;
+
+    let mut lw_target = RenderTarget::new(1, 1, TargetFormat::R32F);
+    lw_target.store(0, 0, [op.log_average as f32, 0.0, 0.0, 0.0]);
+    let clamp = SamplerState {
+        address_u: Address::Clamp,
+        address_v: Address::Clamp,
+        border: [0.0; 4],
+        ..SamplerState::filtered(Filter::Point)
+    };
+    let (w, h) = (image.width, image.height);
+    let band = match settings.band_rows {
+        0 => ((1u32 << 18) / w.max(1)).max(2),
+        n => n,
+    };
+    let mut linear = Vec::with_capacity(image.pixels.len());
+    let mut executed = Range {
+        min: u64::MAX,
+        max: 0,
+    };
+    let mut y0 = 0;
+    while y0 < h {
+        let rows = band.min(h - y0);
+        let mut draw = Draw::new(w, rows);
+        draw.limits = settings.limits;
+        // The image was admitted by its own pixel cap; a band of it is not a
+        // new target to refuse.
+        draw.limits.max_target_pixels = draw.limits.max_target_pixels.max(w as u64 * rows as u64);
+        // Texel centres: v0 = ((x + ½)/W, (y0 + y + ½)/H).
+        draw.inputs.push((
+            0,
+            LinearInput {
+                base: [
+                    (0.5 / w as f64) as f32,
+                    ((y0 as f64 + 0.5) / h as f64) as f32,
+                    0.0,
+                    0.0,
+                ],
+                ddx: [(1.0 / w as f64) as f32, 0.0, 0.0, 0.0],
+                ddy: [0.0, (1.0 / h as f64) as f32, 0.0, 0.0],
+            },
+        ));
+        draw.constants = Constants {
+            float: op.constants().to_vec(),
+            int: Vec::new(),
+            bool: Vec::new(),
+        };
+        draw.samplers.push((0, image.as_texture().into(), clamp));
+        draw.samplers
+            .push((1, lw_target.as_texture().into(), clamp));
+        let out = match settings.threads {
+            Some(t) => emu::run_with_threads(&compiled, &draw, t),
+            None => emu::run(&compiled, &draw),
+        }
+        .map_err(TonemapError::Emu)?;
+        match out.color.into_iter().next().flatten() {
+            Some(c) => linear.extend(c),
+            None => {
+                return Err(TonemapError::Shader(format!(
+                    "{} never writes oC0",
+                    src.name
+                )))
+            }
+        }
+        for &e in &out.executed {
+            executed.min = executed.min.min(e);
+            executed.max = executed.max.max(e);
+        }
+        y0 += rows;
+        progress(y0 as u64, h as u64);
+    }
+    let cost = PassCost {
+        shader: src.name.clone(),
+        slots: analysis.slots,
+        executed_static: analysis.executed,
+        executed_emulated: executed,
+        counts_agree: analysis.executed.min <= executed.min
+            && executed.max <= analysis.executed.max,
+        within_limits: analysis.verdict == cost::Verdict::Within,
+        findings: Vec::new(),
+    };
+    Ok((linear, cost))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn op(white: f64) -> Operator {
+        Operator {
+            key: 0.18,
+            white,
+            white_source: WhiteSource::Given,
+            log_average: 0.09,
+        }
+    }
+
+    #[test]
+    fn srgb_encoding_ends_and_breakpoint() {
+        assert_eq!(srgb8(0.0), 0);
+        assert_eq!(srgb8(1.0), 255);
+        assert_eq!(srgb8(2.0), 255);
+        assert_eq!(srgb8(-1.0), 0);
+        assert_eq!(srgb8(f64::NAN), 0);
+        // Middle grey 0.18 is sRGB 118 (0.4614 · 255 = 117.66).
+        assert_eq!(srgb8(0.18), 118);
+        // The standard's two pieces meet 2.9e-8 apart (the power piece is
+        // the lower): far from any 8-bit rounding boundary (code 10.31).
+        let below = srgb_encode(0.003_130_8);
+        let above = srgb_encode(0.003_130_8 + 1e-12);
+        assert!((above - below).abs() < 1e-7);
+        // So the 8-bit codes are monotone: a dense sweep of [0, 1].
+        let mut last = 0;
+        for i in 0..=1_000_000 {
+            let c = srgb8(i as f64 / 1e6);
+            assert!(c >= last, "code {c} after {last} at {i}");
+            last = c;
+        }
+    }
+
+    #[test]
+    fn a_pixel_at_the_white_point_is_white() {
+        let o = op(50.0);
+        // Grey pixel with Lw = W: R = G = B = 50 (the weights sum to 1).
+        let out = reference_unsaturated(&o, [50.0, 50.0, 50.0, 1.0]);
+        for c in out {
+            assert!((c - 1.0).abs() < 1e-12, "{c}");
+        }
+    }
+
+    #[test]
+    fn infinite_white_point_is_l_over_one_plus_l() {
+        let o = op(f64::INFINITY);
+        let out = reference_unsaturated(&o, [0.5, 0.5, 0.5, 1.0]);
+        let l = 0.18 / 0.09 * 0.5;
+        assert!((out[0] - l / (1.0 + l)).abs() < 1e-15);
+        assert_eq!(o.c0y(), 0.0);
+    }
+
+    #[test]
+    fn black_and_negative_pixels_are_black_with_a_zero_bound() {
+        let o = op(10.0);
+        for p in [[0.0, 0.0, 0.0, 1.0], [-0.5, -0.1, 0.2, 1.0]] {
+            assert_eq!(reference_pixel(&o, p), [0.0; 3]);
+            let (b, ambiguous) = channel_bounds(&o, p).unwrap();
+            assert!(!ambiguous);
+            assert_eq!(b, [(0.0, 0.0); 3]);
+        }
+    }
+
+    #[test]
+    fn cancelling_channels_make_the_sign_ambiguous() {
+        // 0.27·R + 0.06·B = 0 in exact arithmetic with R = 0.06·t, B = −0.27·t
+        // only up to rounding; a luminance tiny against the channels' size.
+        let o = op(10.0);
+        let p = [0.06f32, 0.0, -0.27, 1.0];
+        let (b, ambiguous) = channel_bounds(&o, p).unwrap();
+        assert!(ambiguous);
+        // Black is always allowed, and the R channel may show up to about k·R.
+        assert_eq!(b[2], (0.0, 0.0));
+        assert!(b[0].0 == 0.0 && b[0].1 > 0.1);
+    }
+
+    #[test]
+    fn ordinary_pixels_get_a_tight_bound() {
+        let o = op(10.0);
+        let (b, ambiguous) = channel_bounds(&o, [0.05, 0.04, 0.03, 1.0]).unwrap();
+        assert!(!ambiguous);
+        let r = reference_pixel(&o, [0.05, 0.04, 0.03, 1.0]);
+        for (ch, (lo, hi)) in b.iter().enumerate() {
+            assert!(*lo < r[ch] && r[ch] < *hi);
+            // A few rcp errors (2^-21) and roundings: well under 1e-5 relative.
+            assert!((hi - lo) / r[ch] < 1e-5, "{lo} {hi} {}", r[ch]);
+        }
+    }
+
+    #[test]
+    fn bad_values_are_refused() {
+        assert!(check_values(0.0, None).is_err());
+        assert!(check_values(f64::NAN, None).is_err());
+        assert!(check_values(-0.18, None).is_err());
+        assert!(check_values(f64::INFINITY, None).is_err());
+        assert!(check_values(0.18, Some(-1.0)).is_err());
+        assert!(check_values(0.18, Some(0.0)).is_err());
+        assert!(check_values(0.18, Some(f64::NAN)).is_err());
+        assert!(check_values(0.18, Some(1e-30)).is_err());
+        assert!(check_values(0.18, Some(f64::INFINITY)).is_ok());
+        assert!(check_values(0.18, Some(100.0)).is_ok());
+    }
+}

@@ -1,0 +1,12 @@
+//! Presentation: the text, JSON, Markdown pages and figures in which results
+//! reach a person. Nothing here computes a result; every function takes what
+//! a job or a core stage returned and renders it.
+
+pub mod check;
+pub mod luminance;
+pub mod plan;
+pub mod profile;
+pub mod report;
+pub mod tonemap;
+pub mod unroll;
+pub mod verify;

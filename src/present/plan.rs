@@ -1,0 +1,158 @@
+//! What `ps30 plan` prints: the candidates as a table with the
+//! recommendation, and the same as JSON.
+
+use crate::core::numbers::thousands;
+use crate::jobs::gen::plan::{largest_term, Candidate, Plan, F16_MAX};
+use crate::jobs::gen::profile_text;
+
+fn factor_text(f: f64) -> String {
+    if f == 1.0 {
+        "× 1".into()
+    } else if f == 0.0 {
+        "× 0".into()
+    } else if f < 1e-3 {
+        format!("× {f:.1e}")
+    } else {
+        format!("× {f:.4}")
+    }
+}
+
+/// The plan as a text table.
+pub fn plan_text(p: &Plan) -> String {
+    let (w, h) = (p.frame[0], p.frame[1]);
+    let mut s = format!(
+        "plan for a {w}×{h} frame ({} pixels); profile {}: {}; δ = {}\n\n",
+        thousands(w as u64 * h as u64),
+        p.profile.name,
+        profile_text(&p.profile),
+        p.delta as f32
+    );
+    let header = [
+        "#",
+        "variant",
+        "block",
+        "targets",
+        "passes",
+        "slots",
+        "executed/px",
+        "pass 2",
+        "slots",
+        "executed/px",
+        "frame total",
+        "padded",
+        "uncorrected",
+        "f16",
+        "listed as",
+    ];
+    let mut rows: Vec<Vec<String>> = vec![header.iter().map(|s| s.to_string()).collect()];
+    let opt = |v: Option<u64>| v.map_or("—".to_string(), thousands);
+    for (i, c) in p.candidates.iter().enumerate() {
+        let mark = if Some(&c.name) == p.recommended.as_ref() {
+            "*"
+        } else {
+            ""
+        };
+        rows.push(vec![
+            format!("{}{mark}", i + 1),
+            c.variant.name().to_string(),
+            format!("{}×{}", c.block[0], c.block[1]),
+            format!("{}×{}", c.targets[0], c.targets[1]),
+            c.passes.to_string(),
+            opt(c.slots[0]),
+            opt(c.executed_per_pixel[0]),
+            c.pass2_form
+                .map_or("(3rd pass)".to_string(), |f| f.name().to_string()),
+            opt(c.slots[1]),
+            opt(c.executed_per_pixel[1]),
+            opt(c.total_executed),
+            thousands(c.padded_samples),
+            factor_text(c.uncorrected_factor),
+            if c.f16_safe { "yes" } else { "no" }.to_string(),
+            c.listed_as.join("; "),
+        ]);
+    }
+    let cols = header.len();
+    let widths: Vec<usize> = (0..cols)
+        .map(|i| rows.iter().map(|r| r[i].chars().count()).max().unwrap_or(0))
+        .collect();
+    // Text columns left-aligned, numbers right-aligned.
+    let left = [1, 2, 3, 7, 14];
+    for r in &rows {
+        let mut line = String::new();
+        for (i, cell) in r.iter().enumerate() {
+            let pad = widths[i] - cell.chars().count();
+            if i > 0 {
+                line.push_str("  ");
+            }
+            if left.contains(&i) {
+                line.push_str(cell);
+                if i + 1 < cols {
+                    line.push_str(&" ".repeat(pad));
+                }
+            } else {
+                line.push_str(&" ".repeat(pad));
+                line.push_str(cell);
+            }
+        }
+        s.push_str(line.trim_end());
+        s.push('\n');
+    }
+    s.push('\n');
+    match p
+        .recommended
+        .as_ref()
+        .and_then(|n| p.candidates.iter().find(|c| &c.name == n))
+    {
+        Some(r) => s.push_str(&format!("recommended (*): {}\n", r.label())),
+        None => s.push_str("recommended: none\n"),
+    }
+    s.push_str(&format!("rule: {}\n", p.rule));
+    s.push_str(&format!("why: {}\n", p.why));
+    s.push_str(&format!(
+        "\ncolumns: slots and executed/px of pass 1 and of pass 2 (from the cost model on the generated listings); \
+frame total = pass 1 × {} target pixels + pass 2 × 1; padded = texels read outside the frame (BORDER: log2 δ each); \
+uncorrected = what they do to L̄w if pass 2 does not subtract them (the generated pass 2 does, exactly, with c0.y); \
+f16 = whether a D3DFMT_A16B16G16R16F target holds every block sum (block samples × {:.2} ≤ 65,504, i.e. at most {} samples; otherwise use R32F); \
+listed as = why the width × why the height: widest (that fits), k columns (the narrowest width covering the frame with k columns), divides W; \
+tallest (that fits), r rows (the smallest height covering the frame with r rows); the article's (its two choices)\n",
+        "nx·ny",
+        largest_term(p.delta),
+        thousands((F16_MAX / largest_term(p.delta)).floor() as u64)
+    ));
+    let x_padding: Vec<&Candidate> = p
+        .candidates
+        .iter()
+        .filter(|c| c.padded_samples_x > 0 && c.passes == 2)
+        .collect();
+    if !x_padding.is_empty() {
+        s.push_str("last column: `ps30 unroll` also writes a shader for the last column of blocks that reads only the frame's real width, which removes the padding in x (e.g. ");
+        let examples: Vec<String> = x_padding
+            .iter()
+            .take(2)
+            .map(|c| {
+                format!(
+                    "{}: {} of its {} padded samples",
+                    c.name,
+                    thousands(c.padded_samples_x),
+                    thousands(c.padded_samples)
+                )
+            })
+            .collect();
+        s.push_str(&examples.join("; "));
+        s.push_str(") at the cost of a second pass-1 draw\n");
+    }
+    for c in p.candidates.iter().filter(|c| c.passes == 3).take(3) {
+        if let Some(n) = &c.note {
+            s.push_str(&format!("{}: {n}\n", c.name));
+        }
+    }
+    for n in &p.notes {
+        s.push_str(&format!("note: {n}\n"));
+    }
+    s
+}
+
+/// The plan as JSON.
+pub fn plan_json(p: &Plan) -> serde_json::Value {
+    serde_json::to_value(p).unwrap_or(serde_json::Value::Null)
+}

@@ -1,0 +1,112 @@
+//! What `ps30 profile` prints: costs per pixel and per quad with
+//! histograms, divergence, gradient sites and findings, as text and JSON.
+
+use crate::core::numbers::thousands;
+use crate::core::emu::findings::diagnostic;
+use crate::jobs::profile::{CostStats, ProfileRun};
+use serde_json::{json, Value};
+
+fn histogram_text(s: &mut String, title: &str, stats: &CostStats) {
+    let most = stats
+        .histogram
+        .iter()
+        .map(|b| b.count)
+        .max()
+        .unwrap_or(0)
+        .max(1);
+    s.push_str(&format!("{title}\n"));
+    for b in &stats.histogram {
+        let range = if b.lo == b.hi {
+            format!("{}", b.lo)
+        } else {
+            format!("{}–{}", b.lo, b.hi)
+        };
+        let bar = "█".repeat(((b.count * 40).div_ceil(most)) as usize);
+        s.push_str(&format!(
+            "  {range:>13}  {:>9}  {bar}\n",
+            thousands(b.count)
+        ));
+    }
+}
+
+/// The text form of `ps30 profile` (findings rendered as warnings).
+pub fn text(r: &ProfileRun) -> String {
+    let c = &r.costs;
+    let mut s = format!("{} on {}\n", r.file.name, r.input);
+    s.push_str(&format!(
+        "static paths (cost model): shortest {}, longest {} executed slots per pixel; emulated {}–{}{}\n",
+        thousands(r.static_executed.min),
+        thousands(r.static_executed.max),
+        thousands(c.per_pixel.min),
+        thousands(c.per_pixel.max),
+        if r.counts_agree { " (within)" } else { " (OUTSIDE the static range)" }
+    ));
+    s.push_str(&format!(
+        "{:<22}{:>10}{:>12}{:>10}\n",
+        "executed slots", "min", "mean", "max"
+    ));
+    for (name, st) in [("  per pixel", &c.per_pixel), ("  per quad", &c.per_quad)] {
+        s.push_str(&format!(
+            "{name:<22}{:>10}{:>12.2}{:>10}\n",
+            thousands(st.min),
+            st.mean,
+            thousands(st.max)
+        ));
+    }
+    s.push_str(&format!(
+        "divergent quads: {} of {} ({:.1}%); pixels' own slots are {:.1}% of what their quads executed{}\n",
+        thousands(c.divergent_quads),
+        thousands(c.quads),
+        100.0 * c.divergent_quads as f64 / c.quads.max(1) as f64,
+        100.0 * c.lockstep_efficiency,
+        if c.divergent_quads > 0 {
+            format!(" ({:.1}% in the divergent ones)", 100.0 * c.divergent_efficiency)
+        } else {
+            String::new()
+        }
+    ));
+    histogram_text(&mut s, "slots per quad   quads", &c.per_quad);
+    if let Some(m) = &r.models {
+        let all: u64 = m.iter().map(|x| x.0).sum();
+        let ok: u64 = m.iter().map(|x| x.1).sum();
+        s.push_str(&format!(
+            "light models against the CPU computation: {} of {} pixels match bit for bit (model 0: {}/{}, 1: {}/{}, 2: {}/{})\n",
+            thousands(ok),
+            thousands(all),
+            m[0].1, m[0].0, m[1].1, m[1].0, m[2].1, m[2].0
+        ));
+    }
+    if r.findings.is_empty() {
+        s.push_str("gradients: no gradient of a temporary ran in a divergent quad; no LOD far from level 0\n");
+    } else {
+        for f in &r.findings {
+            s.push_str(&diagnostic(f).render(&r.file));
+        }
+    }
+    s
+}
+
+/// The JSON form of `ps30 profile`.
+pub fn to_json(r: &ProfileRun) -> Value {
+    json!({
+        "shader": r.file.name,
+        "input": r.input,
+        "target": [r.width, r.height],
+        "static_executed": {"min": r.static_executed.min, "max": r.static_executed.max},
+        "counts_agree": r.counts_agree,
+        "per_pixel": r.costs.per_pixel,
+        "per_quad": r.costs.per_quad,
+        "quads": r.costs.quads,
+        "divergent_quads": r.costs.divergent_quads,
+        "lockstep_efficiency": r.costs.lockstep_efficiency,
+        "divergent_efficiency": r.costs.divergent_efficiency,
+        "gradients": r.gradients,
+        "findings": r.findings,
+        "warnings": r.warnings.items.iter().map(|w| json!({
+            "line": r.file.line_of(w.span.start),
+            "message": w.message,
+        })).collect::<Vec<_>>(),
+        "models": r.models.map(|m| m.iter().map(|&(n, ok)| json!({"pixels": n, "match": ok})).collect::<Vec<_>>()),
+        "problem": r.problem(),
+    })
+}

@@ -1,0 +1,165 @@
+//! What `ps30 tonemap` prints: L̄w, the operator, the cost and the pixel
+//! cross-check, as text and JSON.
+
+use crate::core::numbers::{number, range_json, range_text, thousands};
+use crate::jobs::tonemap::{Operator, ToneMapped, WhiteSource};
+
+fn white_text(op: &Operator) -> String {
+    match op.white_source {
+        WhiteSource::Given => format!("white point {}", number(op.white)),
+        WhiteSource::SceneMaximum => format!(
+            "white point {} (the scene's largest luminance)",
+            number(op.white)
+        ),
+        WhiteSource::NoPositiveLuminance => {
+            "white point ∞ (no pixel has positive luminance)".to_string()
+        }
+    }
+}
+
+fn thousands_u(n: u64) -> String {
+    thousands(n)
+}
+
+/// `1 pixel`, `12 pixels`, with thousands separators.
+fn count(n: u64, one: &str, many: &str) -> String {
+    format!(
+        "{} {}",
+        thousands(n),
+        if n == 1 { one } else { many }
+    )
+}
+
+/// The text `ps30 tonemap` prints.
+pub fn text(image: &str, t: &ToneMapped, written: Option<&str>) -> String {
+    let op = &t.operator;
+    let lum = &t.luminance;
+    let c = &t.check;
+    let mut s = format!(
+        "{image}: {}×{}, L̄w {} (luminance pipeline; f64 reference {}, relative error {:.1e} of a {:.1e} bound: {})\n",
+        t.width,
+        t.height,
+        number(lum.log_average),
+        number(lum.reference_log_average),
+        lum.relative_error,
+        lum.relative_tolerance,
+        if lum.all_agree() { "agree" } else { "DISAGREE" }
+    );
+    s.push_str(&format!(
+        "key a = {}, {} → a/L̄w = {}, L_white = {}\n",
+        number(op.key),
+        white_text(op),
+        number(op.scale()),
+        number(op.white_scaled())
+    ));
+    s.push_str(&format!(
+        "shader {}: {} slots, {} executed per pixel (emulator counted {}{})\n",
+        t.cost.shader,
+        t.cost.slots,
+        range_text(t.cost.executed_static),
+        range_text(t.cost.executed_emulated),
+        if t.cost.counts_agree {
+            ", same"
+        } else {
+            ", DIFFERENT"
+        }
+    ));
+    s.push_str(&format!(
+        "cross-check against the f64 reference: {} pixels, largest difference {:.1e} (its bound {:.1e}; at most {:.0}% of the bound anywhere): {}\n",
+        thousands(c.checked_pixels),
+        c.max_error,
+        c.max_error_bound,
+        100.0 * c.largest_bound_fraction,
+        if c.agree() { "agree" } else { "DISAGREE" }
+    ));
+    s.push_str(&format!(
+        "8-bit sRGB: {} in {} differ from the reference's by one code, each where the bound straddles a rounding boundary{}\n",
+        count(c.mismatched_8bit_channels, "channel value", "channel values"),
+        count(c.mismatched_8bit_pixels, "pixel", "pixels"),
+        if c.unexplained_8bit > 0 {
+            format!(
+                "; {} NOT explained so",
+                count(c.unexplained_8bit, "difference is", "differences are")
+            )
+        } else {
+            String::new()
+        }
+    ));
+    if c.sign_ambiguous_pixels > 0 {
+        s.push_str(&format!(
+            "{} luminance is 0 to within f32 rounding (channels cancel), so either black or the scaled colour is right; {} of their codes differ from the reference's\n",
+            count(c.sign_ambiguous_pixels, "pixel's", "pixels'"),
+            thousands_u(c.ambiguous_8bit)
+        ));
+    }
+    if let Some((x, y, ch, e, r, lo, hi)) = c.first_outside {
+        s.push_str(&format!(
+            "{} channel values are outside their bound; the first: pixel ({x}, {y}) {}: emulated {e:.9}, reference {r:.9}, allowed [{lo:.9}, {hi:.9}]\n",
+            thousands(c.outside_bound),
+            ["R", "G", "B"][ch]
+        ));
+    }
+    s.push_str(&format!(
+        "pixels: {} clipped (a channel ≥ 1 before saturation), {} black (Lw = 0), {} with negative luminance (shown black){}\n",
+        thousands(c.saturated_pixels),
+        thousands(c.zero_luminance_pixels),
+        thousands(c.negative_luminance_pixels),
+        if c.nonfinite_pixels > 0 {
+            format!(
+                ", {} non-finite (not compared)",
+                thousands(c.nonfinite_pixels)
+            )
+        } else {
+            String::new()
+        }
+    ));
+    if let Some(p) = written {
+        s.push_str(&format!(
+            "wrote {p} ({}×{}, 8-bit sRGB)\n",
+            t.width, t.height
+        ));
+    }
+    s
+}
+
+/// The JSON `ps30 tonemap --json` prints.
+pub fn json(image: &str, t: &ToneMapped, written: Option<&str>) -> serde_json::Value {
+    let op = &t.operator;
+    let c = &t.check;
+    // JSON has no infinity: an infinite white point is null.
+    let finite = |v: f64| if v.is_finite() { Some(v) } else { None };
+    serde_json::json!({
+        "image": image,
+        "width": t.width,
+        "height": t.height,
+        "output": written,
+        "log_average": t.luminance.log_average,
+        "reference_log_average": t.luminance.reference_log_average,
+        "log_average_relative_error": t.luminance.relative_error,
+        "log_average_relative_tolerance": t.luminance.relative_tolerance,
+        "luminance_agrees": t.luminance.all_agree(),
+        "key": op.key,
+        "white": finite(op.white),
+        "white_source": op.white_source,
+        "white_scaled": finite(op.white_scaled()),
+        "scale": op.scale(),
+        "shader": &t.cost,
+        "executed_per_pixel": range_json(t.cost.executed_emulated),
+        "pixels": c.pixels,
+        "checked_pixels": c.checked_pixels,
+        "nonfinite_pixels": c.nonfinite_pixels,
+        "zero_luminance_pixels": c.zero_luminance_pixels,
+        "negative_luminance_pixels": c.negative_luminance_pixels,
+        "sign_ambiguous_pixels": c.sign_ambiguous_pixels,
+        "saturated_pixels": c.saturated_pixels,
+        "max_error": c.max_error,
+        "max_error_bound": c.max_error_bound,
+        "largest_bound_fraction": c.largest_bound_fraction,
+        "outside_bound": c.outside_bound,
+        "mismatched_8bit_channels": c.mismatched_8bit_channels,
+        "mismatched_8bit_pixels": c.mismatched_8bit_pixels,
+        "unexplained_8bit": c.unexplained_8bit,
+        "ambiguous_8bit": c.ambiguous_8bit,
+        "agree": t.all_agree(),
+    })
+}
