@@ -14,10 +14,10 @@
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use ps30::core::emu::{self, Address, Constants, Draw, Filter, LinearInput, SamplerState};
-use ps30::core::load::{load_str, Options};
 use ps30::core::image::{load, ImageLimits, RenderTarget, TargetFormat};
-use ps30::jobs::luminance::reference::{self, Policy};
+use ps30::core::load::{load_str, Options};
 use ps30::jobs::bundled::{CORRECTED_LOOP, CORRECTED_PASS2, CORRECTED_UNROLLED};
+use ps30::jobs::luminance::reference::{self, Policy};
 use std::hint::black_box;
 use std::path::Path;
 

@@ -18,9 +18,9 @@
 
 use proptest::prelude::*;
 use ps30::core::cost::{self, Analysis, Environment, Profile, Range, Verdict};
-use ps30::core::load::{self, Loaded, Options};
 use ps30::core::ir::{Shader, SrcMod};
 use ps30::core::isa::{Class, Opcode, RegFile, TABLE};
+use ps30::core::load::{self, Loaded, Options};
 
 // ---------------------------------------------------------------------------
 // Slot counts: Microsoft ps_3_0 instruction table ("Instruction slots"

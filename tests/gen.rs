@@ -23,10 +23,10 @@
 //! the wrong texels.
 
 use ps30::core::cost::{self, Environment, Profile, Verdict};
+use ps30::core::image::{load, HdrImage, ImageLimits};
 use ps30::core::load::{self, Options};
 use ps30::jobs::gen::set::{self, Bundle, Role};
 use ps30::jobs::gen::{plan, Pass1Form};
-use ps30::core::image::{load, HdrImage, ImageLimits};
 use ps30::jobs::luminance::{run, run_with_last_column, Settings, ShaderSource};
 use std::path::{Path, PathBuf};
 
@@ -324,10 +324,18 @@ fn request(frame: (u32, u32), picks: Vec<(Pass1Form, set::BlockChoice)>) -> set:
 fn plan_1280x1024_lists_the_articles_choices_with_the_articles_counts() {
     let p = plan::plan((1280, 1024), &Profile::ps_3_0(), 1e-4).unwrap();
     // The article's own listings, analysed: its executed counts.
-    let (_, loop_a) =
-        ps30::jobs::verify::analyse_listing(ps30::jobs::bundled::ARTICLE_LOOP.listing(), &[], &[(1, 128), (2, 56)]).unwrap();
-    let (_, unrolled_a) =
-        ps30::jobs::verify::analyse_listing(ps30::jobs::bundled::ARTICLE_UNROLLED.listing(), &[], &[(2, 128)]).unwrap();
+    let (_, loop_a) = ps30::jobs::verify::analyse_listing(
+        ps30::jobs::bundled::ARTICLE_LOOP.listing(),
+        &[],
+        &[(1, 128), (2, 56)],
+    )
+    .unwrap();
+    let (_, unrolled_a) = ps30::jobs::verify::analyse_listing(
+        ps30::jobs::bundled::ARTICLE_UNROLLED.listing(),
+        &[],
+        &[(2, 128)],
+    )
+    .unwrap();
     for (form, block, targets, article) in [
         (Pass1Form::Loop, [128, 56], [10, 19], loop_a),
         (Pass1Form::Unrolled, [125, 128], [11, 8], unrolled_a),
@@ -452,7 +460,11 @@ fn nested_pass2_and_the_macro_form_run_and_agree() {
         },
     )
     .unwrap();
-    assert!(r.all_agree(), "{}", ps30::present::luminance::run_text("nested", &r));
+    assert!(
+        r.all_agree(),
+        "{}",
+        ps30::present::luminance::run_text("nested", &r)
+    );
     assert_eq!(r.pass2.executed_emulated, cost::Range::exact(p2.executed));
 
     // --macro keeps REPEAT_BLOCK and loads to the same program.

@@ -3,11 +3,11 @@
 //! per quad (worked out by hand on a tiny ID map), the texld variant's
 //! diagnostics, and `ps30 profile` on top of it all.
 
+use ps30::core::emu::findings::FindingKind;
 use ps30::core::emu::{self, Compiled};
 use ps30::core::load::{load_str, Loaded, Options};
-use ps30::jobs::scenes::lights::{self, Scene};
-use ps30::core::emu::findings::FindingKind;
 use ps30::jobs::profile::{self, CostStats, Input, Setup};
+use ps30::jobs::scenes::lights::{self, Scene};
 
 fn load(src: (&str, &str)) -> Loaded {
     load_str(src.0, src.1, &Options::default()).unwrap()
@@ -21,7 +21,10 @@ fn compiled(src: (&str, &str)) -> Compiled {
 fn both_variants_match_the_cpu_computation_in_every_region() {
     for (w, h) in [(64, 64), (37, 23), (1, 1)] {
         let scene = Scene::synthetic(w, h).unwrap();
-        for src in [ps30::jobs::bundled::LIGHTS_SELECT.listing(), ps30::jobs::bundled::LIGHTS_TEXLD.listing()] {
+        for src in [
+            ps30::jobs::bundled::LIGHTS_SELECT.listing(),
+            ps30::jobs::bundled::LIGHTS_TEXLD.listing(),
+        ] {
             Scene::check_constants(load(src).shader.program()).unwrap();
             let run = lights::run(&compiled(src), &scene, Some(1)).unwrap();
             assert!(run.all_match(), "{} {w}x{h}: {:?}", src.0, run.per_model);
@@ -32,7 +35,12 @@ fn both_variants_match_the_cpu_computation_in_every_region() {
     // At 64×64 every model has pixels, and some quads hold all three.
     let scene = Scene::synthetic(64, 64).unwrap();
     assert!(scene.pixels_per_model().iter().all(|&n| n > 100));
-    let run = lights::run(&compiled(ps30::jobs::bundled::LIGHTS_SELECT.listing()), &scene, None).unwrap();
+    let run = lights::run(
+        &compiled(ps30::jobs::bundled::LIGHTS_SELECT.listing()),
+        &scene,
+        None,
+    )
+    .unwrap();
     let out = &run.output;
     assert!(
         out.quad_executed.contains(&34),
@@ -66,7 +74,12 @@ const TINY: [u8; 8] = [0, 1, 0, 0, 2, 2, 0, 0];
 #[test]
 fn per_quad_costs_on_a_tiny_gbuffer_match_the_hand_count() {
     let scene = Scene::from_ids(4, 2, &TINY).unwrap();
-    let run = lights::run(&compiled(ps30::jobs::bundled::LIGHTS_SELECT.listing()), &scene, Some(1)).unwrap();
+    let run = lights::run(
+        &compiled(ps30::jobs::bundled::LIGHTS_SELECT.listing()),
+        &scene,
+        Some(1),
+    )
+    .unwrap();
     assert!(run.all_match());
     let out = &run.output;
     // Shared: texld 1, mul 1, mov 1, dp3 1, if_lt 3 = 7; at the end mov 1, mov 1.
@@ -98,10 +111,18 @@ fn the_texld_variant_is_flagged_statically_and_counted_per_quad() {
         .map(|w| l.file.line_of(w.span.start))
         .collect();
     assert_eq!(lines, [34, 39, 43]);
-    assert!(load(ps30::jobs::bundled::LIGHTS_SELECT.listing()).warnings.items.is_empty());
+    assert!(load(ps30::jobs::bundled::LIGHTS_SELECT.listing())
+        .warnings
+        .items
+        .is_empty());
 
     let scene = Scene::from_ids(4, 2, &TINY).unwrap();
-    let run = lights::run(&compiled(ps30::jobs::bundled::LIGHTS_TEXLD.listing()), &scene, Some(1)).unwrap();
+    let run = lights::run(
+        &compiled(ps30::jobs::bundled::LIGHTS_TEXLD.listing()),
+        &scene,
+        Some(1),
+    )
+    .unwrap();
     let sites: Vec<(usize, bool, u64, u64)> = run
         .output
         .gradients
@@ -141,7 +162,12 @@ fn profile_reports_costs_and_findings() {
         threads: Some(1),
     };
     // The tiny map is not what --gbuffer draws; check the synthetic one.
-    let r = profile::profile(ps30::jobs::bundled::LIGHTS_SELECT.listing().0, ps30::jobs::bundled::LIGHTS_SELECT.listing().1, &setup).unwrap();
+    let r = profile::profile(
+        ps30::jobs::bundled::LIGHTS_SELECT.listing().0,
+        ps30::jobs::bundled::LIGHTS_SELECT.listing().1,
+        &setup,
+    )
+    .unwrap();
     assert_eq!((r.width, r.height), (4, 2));
     assert!(r.counts_agree);
     assert!(r.findings.is_empty());

@@ -10,8 +10,8 @@
 //! measured in tests/reference_values.rs) is far below those bounds.
 
 use ps30::core::image::{load, HdrImage, ImageLimits, TargetFormat};
-use ps30::jobs::luminance::{run, LuminanceRun, Settings, ShaderSource};
 use ps30::jobs::bundled::listing as bundled;
+use ps30::jobs::luminance::{run, LuminanceRun, Settings, ShaderSource};
 use serde_json::Value;
 
 mod common;
@@ -204,7 +204,9 @@ fn results_are_identical_with_one_and_two_threads() {
             &s,
         )
         .unwrap();
-        outs.push(serde_json::to_string(&ps30::present::luminance::run_json("forest.hdr", &r)).unwrap());
+        outs.push(
+            serde_json::to_string(&ps30::present::luminance::run_json("forest.hdr", &r)).unwrap(),
+        );
     }
     assert_eq!(outs[0], outs[1]);
 }
@@ -241,7 +243,11 @@ fn a_last_column_shader_that_reads_the_real_width_removes_the_padding_in_x() {
         &s,
     )
     .unwrap();
-    assert!(run.all_agree(), "{}", ps30::present::luminance::run_text("c", &run));
+    assert!(
+        run.all_agree(),
+        "{}",
+        ps30::present::luminance::run_text("c", &run)
+    );
     // 1024 = 8 · 128: no padding in y either, so none at all.
     assert_eq!(run.padded_samples, 0);
     assert_eq!(run.padding_factor, 1.0);

@@ -14,13 +14,13 @@
 //! with the writer and checks the front end reads back exactly that IR.
 
 use proptest::prelude::*;
-use ps30::core::load::{self, Options};
+use ps30::core::front::print;
 use ps30::core::ir::{
     BoolDef, Dst, FloatDef, InputDecl, Instruction, IntDef, Origin, Predicate, Program, Reg,
     SamplerDecl, Src, SrcMod, Swizzle, WriteMask,
 };
 use ps30::core::isa::{Class, Compare, Opcode, Operand, RegFile, SamplerType, TABLE, USAGES};
-use ps30::core::front::print;
+use ps30::core::load::{self, Options};
 
 // ---------------------------------------------------------------------------
 // Comparison.

@@ -18,9 +18,9 @@
 //!
 //! The texts and tokens are copied in as literals.
 
-use ps30::core::load::{self, Options};
 use ps30::core::ir::{Dst, Instruction, Program, Src, SrcMod, Swizzle};
 use ps30::core::isa::{Compare, Opcode, RegFile, SamplerType};
+use ps30::core::load::{self, Options};
 
 type Vector = (&'static str, &'static str, &'static [u32]);
 

@@ -41,7 +41,12 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
     let a = cost::analyse(&loaded.shader, &loaded.file, &env, &profile)?;
     let name = loaded.file.name.clone();
     if args.json {
-        let warnings: Vec<String> = loaded.warnings.items.iter().map(|w| w.to_string()).collect();
+        let warnings: Vec<String> = loaded
+            .warnings
+            .items
+            .iter()
+            .map(|w| w.to_string())
+            .collect();
         print_json(&check_json(&name, &a, &warnings))?;
     } else {
         say(ui, &check_text(&name, &a))?;

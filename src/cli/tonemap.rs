@@ -58,7 +58,11 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
     let name = args.image.display().to_string();
     let ok = result.all_agree();
     if args.exec.json {
-        print_json(&ps30::present::tonemap::json(&name, &result, written.as_deref()))?;
+        print_json(&ps30::present::tonemap::json(
+            &name,
+            &result,
+            written.as_deref(),
+        ))?;
     } else if !(ui.quiet && ok) {
         say(
             ui,

@@ -129,4 +129,3 @@ pub fn check_json(name: &str, a: &Analysis, warnings: &[String]) -> Value {
         "warnings": warnings,
     })
 }
-

@@ -1,9 +1,9 @@
 //! What `ps30 luminance` and `ps30 run` print: the passes' costs, the
 //! cross-check and its findings, as text and JSON.
 
-use crate::core::numbers::{range_json, range_text, thousands};
 use crate::core::emu::findings::Finding;
 use crate::core::image::RenderTarget;
+use crate::core::numbers::{range_json, range_text, thousands};
 use crate::jobs::luminance::{BlockCheck, LuminanceRun, PassCost, PassOutput};
 
 /// The JSON form of a run (`ps30 luminance --json`).

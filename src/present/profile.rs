@@ -1,8 +1,8 @@
 //! What `ps30 profile` prints: costs per pixel and per quad with
 //! histograms, divergence, gradient sites and findings, as text and JSON.
 
-use crate::core::numbers::thousands;
 use crate::core::emu::findings::diagnostic;
+use crate::core::numbers::thousands;
 use crate::jobs::profile::{CostStats, ProfileRun};
 use serde_json::{json, Value};
 

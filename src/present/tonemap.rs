@@ -23,11 +23,7 @@ fn thousands_u(n: u64) -> String {
 
 /// `1 pixel`, `12 pixels`, with thousands separators.
 fn count(n: u64, one: &str, many: &str) -> String {
-    format!(
-        "{} {}",
-        thousands(n),
-        if n == 1 { one } else { many }
-    )
+    format!("{} {}", thousands(n), if n == 1 { one } else { many })
 }
 
 /// The text `ps30 tonemap` prints.

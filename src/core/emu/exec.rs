@@ -27,7 +27,7 @@
 #![allow(clippy::needless_range_loop)]
 
 use super::compile::{Cond, Op};
-use super::texop::{quads_all, quads_any, SiteBatch};
+use super::quad::{quads_all, quads_any, SiteBatch};
 use super::{EmuError, RunCtx, LANES};
 
 /// A flow-control construct in progress.

@@ -2,10 +2,10 @@
 //! taken in divergent quads, and levels of detail far above the only level a
 //! sampler can read. Every job that runs a shader reports these the same way.
 
-use crate::core::numbers::{lod_text, thousands};
 use super::{Draw, DrawOutput, GradientSite, MipFilter};
 use crate::core::diag::{Diagnostic, SourceFile};
 use crate::core::isa::Opcode;
+use crate::core::numbers::{lod_text, thousands};
 use serde::Serialize;
 use serde_json::{json, Value};
 

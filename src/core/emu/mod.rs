@@ -77,6 +77,7 @@ mod compile;
 mod exec;
 pub mod findings;
 mod math;
+mod quad;
 mod sample;
 #[cfg(test)]
 mod testasm;

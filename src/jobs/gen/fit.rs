@@ -11,12 +11,12 @@
 //! listings: every `texld` costs at least one slot, so a listing with more
 //! unrolled `texld`s than the slot limit cannot fit.
 
-use crate::core::numbers::thousands;
 use super::asm::{self, Counts, Pass1Form, Pass2Form};
 use super::{measure, Checked, GenError};
 use crate::core::cost::{Environment, Profile};
-use crate::core::load;
 use crate::core::isa::MAX_REP_COUNT;
+use crate::core::load;
+use crate::core::numbers::thousands;
 use std::collections::HashMap;
 
 /// The pass-2 listing chosen for an intermediate target.

@@ -41,10 +41,10 @@ pub mod set;
 
 pub use asm::{Pass1Form, Pass2Form};
 
-use crate::core::numbers::thousands;
 use crate::core::cost::{self, Environment, Profile, Verdict};
-use crate::core::load::{self, Options};
 use crate::core::isa::Opcode;
+use crate::core::load::{self, Options};
+use crate::core::numbers::thousands;
 
 /// A generator failure that is not "does not fit": the front end refused
 /// text the generator wrote (a bug in ps30, reported with its diagnostics).

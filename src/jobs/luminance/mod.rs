@@ -32,9 +32,9 @@
 
 use crate::core::cost::{self, Environment, Profile, Range};
 use crate::core::emu::{self, Address, Constants, Draw, Filter, LinearInput, SamplerState};
-use crate::core::load::{self, Options};
 use crate::core::image::{HdrImage, RenderTarget, TargetFormat, Texture};
 use crate::core::isa::Opcode;
+use crate::core::load::{self, Options};
 pub mod reference;
 
 use reference::Policy;
@@ -378,7 +378,14 @@ fn draw_into(
     format: TargetFormat,
     threads: Option<usize>,
     file: &crate::core::diag::SourceFile,
-) -> Result<(RenderTarget, Range, Vec<crate::core::emu::findings::Finding>), PipelineError> {
+) -> Result<
+    (
+        RenderTarget,
+        Range,
+        Vec<crate::core::emu::findings::Finding>,
+    ),
+    PipelineError,
+> {
     let out = match threads {
         Some(t) => emu::run_with_threads(compiled, draw, t),
         None => emu::run(compiled, draw),
@@ -688,7 +695,9 @@ fn run_impl(
 fn reads_c0y(l: &load::Loaded) -> bool {
     l.shader.instructions().iter().any(|i| {
         i.src.iter().any(|s| {
-            s.reg.file == crate::core::isa::RegFile::Const && s.reg.index == 0 && s.swizzle.0.contains(&1)
+            s.reg.file == crate::core::isa::RegFile::Const
+                && s.reg.index == 0
+                && s.swizzle.0.contains(&1)
         })
     })
 }

@@ -43,7 +43,6 @@ pub const DEFAULT_DELTA: f64 = 1e-4;
 /// The unit roundoff of f64, `2^-53`.
 pub const F64_UNIT_ROUNDOFF: f64 = f64::EPSILON / 2.0;
 
-
 /// What to do with pixels whose luminance is negative (see the module docs).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize)]
 pub enum NegativePolicy {

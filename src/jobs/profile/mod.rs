@@ -32,16 +32,13 @@
 //! when a pixel differs from the CPU computation; LOD findings are
 //! warnings only.
 
-use crate::core::numbers::thousands;
 use crate::core::cost::{self, Environment, Profile, Range};
 use crate::core::diag::SourceFile;
-use crate::core::emu::{
-    self, Constants, Draw, DrawOutput, MipChain,
-    SamplerState, TextureLevels,
-};
-use crate::core::load::{self, Options};
-use crate::core::image::HdrImage;
 use crate::core::emu::findings::{findings, Finding, FindingKind, SiteSummary};
+use crate::core::emu::{self, Constants, Draw, DrawOutput, MipChain, SamplerState, TextureLevels};
+use crate::core::image::HdrImage;
+use crate::core::load::{self, Options};
+use crate::core::numbers::thousands;
 use serde::Serialize;
 
 /// Min, mean, max and a histogram of a list of slot counts.
@@ -254,7 +251,8 @@ pub fn profile(name: &str, text: &str, setup: &Setup) -> Result<ProfileRun, Stri
     let chain;
     let (out, draw, input, models) = match &setup.input {
         Input::GBuffer(w, h) => {
-            scene = crate::jobs::scenes::lights::Scene::synthetic(*w, *h).map_err(|e| e.to_string())?;
+            scene =
+                crate::jobs::scenes::lights::Scene::synthetic(*w, *h).map_err(|e| e.to_string())?;
             crate::jobs::scenes::lights::Scene::check_constants(loaded.shader.program())
                 .map_err(|e| format!("{name}: not a light-model shader for this scene: {e}"))?;
             let mut draw = scene.draw();

@@ -57,15 +57,14 @@
 
 use crate::core::cost::{self, Environment, Profile, Range};
 use crate::core::emu::{self, Address, Constants, Draw, Filter, LinearInput, SamplerState};
-use crate::core::load::{self, Options};
-use crate::core::image::{HdrImage, RenderTarget, TargetFormat};
-use crate::jobs::luminance::{self, LuminanceRun, PassCost, ShaderSource};
 use crate::core::image::LUMINANCE_WEIGHTS;
+use crate::core::image::{HdrImage, RenderTarget, TargetFormat};
+use crate::core::load::{self, Options};
+use crate::jobs::luminance::{self, LuminanceRun, PassCost, ShaderSource};
 use serde::Serialize;
 
 /// The key value the article (after Reinhard) suggests.
 pub const DEFAULT_KEY: f64 = 0.18;
-
 
 /// f32 unit roundoff, 2⁻²⁴.
 const U: f64 = f32::EPSILON as f64 / 2.0;
@@ -106,7 +105,10 @@ impl Default for Settings {
             white: None,
             threads: None,
             band_rows: 0,
-            shader: ShaderSource::new(crate::jobs::bundled::TONEMAP_REINHARD.path, crate::jobs::bundled::TONEMAP_REINHARD.text),
+            shader: ShaderSource::new(
+                crate::jobs::bundled::TONEMAP_REINHARD.path,
+                crate::jobs::bundled::TONEMAP_REINHARD.text,
+            ),
             limits: crate::core::emu::EmuLimits::default(),
         }
     }
@@ -185,7 +187,12 @@ impl Operator {
     pub fn constants(&self) -> [[f32; 4]; 3] {
         [
             [self.key as f32, self.c0y() as f32, 0.0, 1.0],
-            [LUMINANCE_WEIGHTS[0] as f32, LUMINANCE_WEIGHTS[1] as f32, LUMINANCE_WEIGHTS[2] as f32, 0.0],
+            [
+                LUMINANCE_WEIGHTS[0] as f32,
+                LUMINANCE_WEIGHTS[1] as f32,
+                LUMINANCE_WEIGHTS[2] as f32,
+                0.0,
+            ],
             [0.5, 0.5, 0.0, 0.0],
         ]
     }
@@ -226,7 +233,8 @@ pub fn check_values(key: f64, white: Option<f64>) -> Result<(), TonemapError> {
 /// colour before saturation. Pixels with Lw ≤ 0 (or NaN) are black.
 pub fn reference_unsaturated(op: &Operator, pixel: [f32; 4]) -> [f64; 3] {
     let c = [pixel[0] as f64, pixel[1] as f64, pixel[2] as f64];
-    let lw = LUMINANCE_WEIGHTS[0] * c[0] + LUMINANCE_WEIGHTS[1] * c[1] + LUMINANCE_WEIGHTS[2] * c[2];
+    let lw =
+        LUMINANCE_WEIGHTS[0] * c[0] + LUMINANCE_WEIGHTS[1] * c[1] + LUMINANCE_WEIGHTS[2] * c[2];
     // NaN fails `> 0` and is black too.
     if lw.is_nan() || lw <= 0.0 {
         return [0.0; 3];

@@ -6,9 +6,9 @@
 //! end and the cost model. Nothing here copies an expected value into the
 //! computation.
 
-use crate::core::numbers::thousands;
 use crate::core::cost::{self, Analysis, Environment, Profile};
 use crate::core::load::{self, Options};
+use crate::core::numbers::thousands;
 use crate::jobs::bundled::{ARTICLE_LOOP, ARTICLE_PASS2, ARTICLE_UNROLLED};
 use serde::Serialize;
 
@@ -246,15 +246,15 @@ pub fn article_claims() -> Result<Vec<Claim>, String> {
     ));
 
     // The second pass for the 11×8 target.
-    let (_, a) = analyse_listing(ARTICLE_PASS2.listing(), &[("xsize", t2.0), ("ysize", t2.1)], &[])?;
+    let (_, a) = analyse_listing(
+        ARTICLE_PASS2.listing(),
+        &[("xsize", t2.0), ("ysize", t2.1)],
+        &[],
+    )?;
     out.push(claim(
         "pass 2 fully unrolled for 11×8 fits in 512 slots",
         "yes (≤ 512)",
-        format!(
-            "{} slots, {} executed",
-            a.slots,
-            thousands(a.executed.max)
-        ),
+        format!("{} slots, {} executed", a.slots, thousands(a.executed.max)),
         a.slots <= profile.max_slots && a.executed.max <= profile.max_executed,
         "pass-2 listing with -D xsize=11 -D ysize=8",
     ));

@@ -20,14 +20,14 @@ pub mod claims;
 pub mod figures;
 pub mod generated;
 
-use figures::{box_downscale, BarChart, HeatMap};
 use crate::core::image::{HdrImage, ImageLimits};
-use crate::jobs::luminance::{self, LuminanceRun, ShaderSource};
+use crate::core::numbers::number;
 use crate::core::numbers::thousands;
 use crate::core::output::write_bytes;
-use crate::core::numbers::number;
+use crate::jobs::luminance::{self, LuminanceRun, ShaderSource};
 use crate::jobs::tonemap;
 use crate::jobs::verify;
+use figures::{box_downscale, BarChart, HeatMap};
 use serde::Serialize;
 use std::path::Path;
 
@@ -129,7 +129,8 @@ impl Generated {
 }
 
 fn bundled(name: &str) -> Result<ShaderSource, String> {
-    let (n, t) = crate::jobs::bundled::listing(name).ok_or_else(|| format!("no bundled shader {name}"))?;
+    let (n, t) =
+        crate::jobs::bundled::listing(name).ok_or_else(|| format!("no bundled shader {name}"))?;
     Ok(ShaderSource::new(n, t))
 }
 
@@ -292,7 +293,13 @@ pub fn budgets() -> Result<Vec<Budget>, String> {
             &[],
             "xsize = 11, ysize = 8",
         ),
-        ("tonemap", crate::jobs::bundled::TONEMAP_REINHARD.listing(), &[], &[], "none"),
+        (
+            "tonemap",
+            crate::jobs::bundled::TONEMAP_REINHARD.listing(),
+            &[],
+            &[],
+            "none",
+        ),
     ];
     list.iter()
         .map(|(name, listing, defines, ints, constants)| {
