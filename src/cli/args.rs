@@ -375,3 +375,27 @@ impl From<AddressArg> for Address {
         }
     }
 }
+
+/// `--float-rules`: the special values the emulator and the translation
+/// compute (see `ps30::core::float_rules`).
+#[derive(Clone, Copy, Debug, Default, clap::ValueEnum)]
+pub enum FloatRulesArg {
+    /// Microsoft's instruction pages: log(0) = -FLT_MAX, |x| in log and rsq, nrm(0) scaled by FLT_MAX.
+    #[default]
+    D3d9,
+    /// Plain IEEE results.
+    Ieee,
+    /// d3d9, and a product with a zero factor is 0 (0 × inf = 0).
+    D3d9ZeroMul,
+}
+
+impl From<FloatRulesArg> for ps30::core::float_rules::FloatRules {
+    fn from(r: FloatRulesArg) -> Self {
+        use ps30::core::float_rules::FloatRules;
+        match r {
+            FloatRulesArg::D3d9 => FloatRules::D3d9,
+            FloatRulesArg::Ieee => FloatRules::Ieee,
+            FloatRulesArg::D3d9ZeroMul => FloatRules::D3d9ZeroMul,
+        }
+    }
+}

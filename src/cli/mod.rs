@@ -17,6 +17,7 @@ pub mod plan;
 pub mod profile;
 pub mod run;
 pub mod tonemap;
+pub mod translate;
 pub mod ui;
 pub mod unroll;
 pub mod verify;
@@ -64,6 +65,11 @@ pub enum Command {
         after_help = "L̄w comes from the corrected luminance passes (125x128 blocks, R32F). The shader is\nasm/tonemap/reinhard.psh; every pixel is cross-checked against the f64 reference within a\nbound derived from the shader's f32 arithmetic (exit 1 if any pixel is outside it).\n\nExamples:\n  ps30 tonemap assets/hdr/courtyard_1280x1024.exr -o courtyard.png\n  ps30 tonemap assets/hdr/city.exr -o city.png --key 0.36 --white 5000\n  ps30 tonemap assets/hdr/forest.hdr --white inf --json"
     )]
     Tonemap(tonemap::Args),
+    /// Translate a shader to WGSL, SPIR-V, GLSL, HLSL or MSL (through naga), with its binding layout.
+    #[command(
+        after_help = "The module passes naga's validator before it is written; the header names the source,\nthe float rules and where every c#, i#, b#, sampler, input and output is bound.\n\nExamples:\n  ps30 translate asm/corrected/lum_pass1_unrolled.psh --to wgsl\n  ps30 translate tonemap:reinhard --to glsl -o reinhard.frag\n  ps30 translate asm/article/lum_pass2.psh -D xsize=11 -D ysize=8 --to spirv -o pass2.spv\n  ps30 translate lights:select --to hlsl --float-rules ieee"
+    )]
+    Translate(translate::Args),
     /// Per-pixel and per-quad costs over an image, divergence, and gradients
     /// that rely on undefined behaviour.
     #[command(

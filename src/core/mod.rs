@@ -13,6 +13,7 @@
 pub mod cost;
 pub mod diag;
 pub mod emu;
+pub mod float_rules;
 pub mod front;
 pub mod image;
 pub mod ir;
@@ -20,4 +21,5 @@ pub mod isa;
 pub mod load;
 pub mod numbers;
 pub mod output;
+pub mod translate;
 pub mod valid;
