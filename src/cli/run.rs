@@ -1,8 +1,8 @@
 //! `ps30 run`: one pass of any shader over an image into a render target.
 
 use super::args::{
-    constants, parse_float4, parse_float_const, AddressArg, ConstantArgs, ExecArgs, FilterArg,
-    FormatArg, SourceArgs,
+    constants, parse_float4, parse_float_const, AddressArg, BackendArgs, ConstantArgs, ExecArgs,
+    FilterArg, FormatArg, SourceArgs,
 };
 use super::io::{color_stderr, print_json, say, shader_source};
 use super::ui::Ui;
@@ -45,6 +45,8 @@ pub struct Args {
     output: Option<PathBuf>,
     #[command(flatten)]
     exec: ExecArgs,
+    #[command(flatten)]
+    draw: BackendArgs,
 }
 
 pub fn run(args: Args, ui: &Ui) -> super::Result {
@@ -70,6 +72,8 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         format: args.target_format.into(),
         threads: args.exec.threads(),
         limits: args.exec.limits(),
+        backend: args.draw.open()?,
+        float_rules: args.draw.rules(),
     };
     let out = {
         let _spinner = ui.spinner("running the shader");

@@ -15,6 +15,7 @@ pub mod diag;
 pub mod emu;
 pub mod float_rules;
 pub mod front;
+pub mod gpu;
 pub mod image;
 pub mod ir;
 pub mod isa;

@@ -3,16 +3,21 @@
 //! Each job has a folder of its own and computes results as plain data; how
 //! those results are printed is the business of [`crate::present`].
 //! [`bundled`] is the table of shaders shipped inside the binary, shared by
-//! every job. Jobs import the core and [`bundled`]; a job may use another
+//! every job, and [`backend`] the one way a job draws (emulator or GPU).
+//! Jobs import the core, [`bundled`] and [`backend`]; a job may use another
 //! job only where the arrow below points (no cycles):
 //!
 //! ```text
 //! verify ──▶ gen ──▶ luminance ◀── tonemap      profile ──▶ scenes
 //!    │                   ▲             ▲            │
 //!    └───────────────────┴─────────────┘            └──▶ luminance
+//!                        ▲             ▲
+//!                        └── compare ──┘
 //! ```
 
+pub mod backend;
 pub mod bundled;
+pub mod compare;
 pub mod gen;
 pub mod luminance;
 pub mod profile;

@@ -292,6 +292,9 @@ pub struct Draw<'a> {
     /// every execution costs about 9% of the instructions of a texture-bound
     /// shader such as the luminance pass. Divergence counts are always kept.
     pub record_lod: bool,
+    /// The special values of the arithmetic (`ps30 … --float-rules`),
+    /// shared with the translation that `core/gpu` draws.
+    pub float_rules: crate::core::float_rules::FloatRules,
 }
 
 impl<'a> Draw<'a> {
@@ -305,6 +308,7 @@ impl<'a> Draw<'a> {
             samplers: Vec::new(),
             limits: EmuLimits::default(),
             record_lod: false,
+            float_rules: crate::core::float_rules::FloatRules::D3d9,
         }
     }
 }
@@ -674,6 +678,14 @@ impl<'c, 'a> RunCtx<'c, 'a> {
         let y = 2 * qy + ((lane >> 1) & 1) as u64;
         (x, y, quad < self.quads && x < self.width && y < self.height)
     }
+}
+
+/// Checks a draw against a compiled shader as [`run`] does before any pixel
+/// runs — target size, constants, `i#` ranges for rep/loop, inputs and
+/// samplers supplied as declared, texture shapes — so that another backend
+/// (`core/gpu`) refuses exactly what the emulator refuses.
+pub fn check(compiled: &Compiled, draw: &Draw) -> Result<(), EmuError> {
+    RunCtx::new(compiled, draw).map(|_| ())
 }
 
 /// Runs a draw on rayon's global pool.

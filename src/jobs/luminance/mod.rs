@@ -32,9 +32,12 @@
 
 use crate::core::cost::{self, Environment, Profile, Range};
 use crate::core::emu::{self, Address, Constants, Draw, Filter, LinearInput, SamplerState};
+use crate::core::float_rules::FloatRules;
+use crate::core::gpu::TargetKind;
 use crate::core::image::{HdrImage, RenderTarget, TargetFormat, Texture};
 use crate::core::isa::Opcode;
 use crate::core::load::{self, Options};
+use crate::jobs::backend::{self, Backend, DrawError};
 pub mod reference;
 
 use reference::Policy;
@@ -72,6 +75,10 @@ pub struct Settings {
     pub threads: Option<usize>,
     /// The emulator's bounds (executed slots per pixel, target size).
     pub limits: emu::EmuLimits,
+    /// Who draws the passes.
+    pub backend: Backend,
+    /// The special values of the arithmetic.
+    pub float_rules: FloatRules,
 }
 
 impl Default for Settings {
@@ -83,6 +90,8 @@ impl Default for Settings {
             policy: Policy::ABS,
             threads: None,
             limits: emu::EmuLimits::default(),
+            backend: Backend::Emulator,
+            float_rules: FloatRules::D3d9,
         }
     }
 }
@@ -93,7 +102,7 @@ impl Default for Settings {
 pub enum PipelineError {
     Source(crate::core::diag::SourceError),
     Cost(String),
-    Emu(emu::EmuError),
+    Draw(DrawError),
     Reference(String),
     /// The shader and the requested block do not fit together.
     Mismatch(String),
@@ -106,7 +115,7 @@ impl std::fmt::Display for PipelineError {
             PipelineError::Cost(e) | PipelineError::Reference(e) | PipelineError::Mismatch(e) => {
                 f.write_str(e)
             }
-            PipelineError::Emu(e) => write!(f, "emulator: {e}"),
+            PipelineError::Draw(e) => write!(f, "{e}"),
         }
     }
 }
@@ -129,13 +138,15 @@ pub struct PassCost {
     pub slots: u64,
     /// Executed slots per pixel from the cost model.
     pub executed_static: Range,
-    /// Executed slots per pixel the emulator counted (min, max over pixels).
-    pub executed_emulated: Range,
+    /// Executed slots per pixel the emulator counted (min, max over
+    /// pixels); `None` when a GPU drew the pass (it counts nothing).
+    pub executed_emulated: Option<Range>,
     /// Warnings from the draw's quads (divergent gradients, a level of
     /// detail far from level 0 on a texture that has only level 0): see
     /// [`crate::jobs::profile`].
     pub findings: Vec<crate::core::emu::findings::Finding>,
-    /// Whether every pixel's count lies in the static range.
+    /// Whether every pixel's count lies in the static range (true when
+    /// nothing was counted).
     pub counts_agree: bool,
     pub within_limits: bool,
 }
@@ -371,42 +382,37 @@ fn sampler(texture: Texture<'_>) -> (u32, emu::TextureLevels<'_>, SamplerState) 
     )
 }
 
-/// Runs a draw and stores oC0 into a target of the run's format.
+/// Runs a draw on the run's backend and stores oC0 into a target of the
+/// run's format.
 fn draw_into(
-    compiled: &emu::Compiled,
+    loaded: &load::Loaded,
     draw: &Draw,
     format: TargetFormat,
+    backend: &Backend,
     threads: Option<usize>,
-    file: &crate::core::diag::SourceFile,
-) -> Result<
-    (
-        RenderTarget,
-        Range,
-        Vec<crate::core::emu::findings::Finding>,
-    ),
-    PipelineError,
-> {
-    let out = match threads {
-        Some(t) => emu::run_with_threads(compiled, draw, t),
-        None => emu::run(compiled, draw),
-    }
-    .map_err(PipelineError::Emu)?;
+) -> Result<(RenderTarget, Option<Range>, Vec<emu::findings::Finding>), PipelineError> {
+    let out = backend::draw(
+        backend,
+        &loaded.shader,
+        &loaded.file,
+        draw,
+        TargetKind::Format(format),
+        threads,
+    )
+    .map_err(PipelineError::Draw)?;
     let mut target = RenderTarget::new(out.width, out.height, format);
-    if let Some(Some(color)) = out.color.first() {
+    if let Some(color) = &out.color {
         for (i, v) in color.iter().enumerate() {
             target.store(i as u32 % out.width, i as u32 / out.width, *v);
         }
     }
-    let min = out.executed.iter().copied().min().unwrap_or(0);
-    let max = out.executed.iter().copied().max().unwrap_or(0);
-    let findings = crate::core::emu::findings::findings(&out, draw, file);
-    Ok((target, Range { min, max }, findings))
+    Ok((target, out.executed, out.findings))
 }
 
 fn pass_cost(
     loaded: &load::Loaded,
     env: &Environment,
-    emulated: Range,
+    emulated: Option<Range>,
     findings: Vec<crate::core::emu::findings::Finding>,
 ) -> Result<(PassCost, cost::Analysis), PipelineError> {
     let a = cost::analyse(&loaded.shader, &loaded.file, env, &Profile::ps_3_0())
@@ -418,7 +424,8 @@ fn pass_cost(
             executed_static: a.executed,
             executed_emulated: emulated,
             findings,
-            counts_agree: a.executed.min <= emulated.min && emulated.max <= a.executed.max,
+            counts_agree: emulated
+                .is_none_or(|e| a.executed.min <= e.min && e.max <= a.executed.max),
             within_limits: a.verdict == cost::Verdict::Within,
         },
         a,
@@ -532,17 +539,17 @@ fn run_impl(
         texels: &image.pixels,
     };
     let mut t1 = RenderTarget::new(nx, ny, s.format);
-    let mut emulated1 = Range::ZERO;
+    let mut emulated1 = Some(Range::ZERO);
     let mut findings1 = Vec::new();
     if main_cols > 0 {
-        let c1 = emu::compile(&l1.shader).map_err(PipelineError::Emu)?;
         let mut d1 = Draw::new(main_cols, ny);
+        d1.float_rules = s.float_rules;
         d1.limits = s.limits;
         d1.record_lod = true;
         d1.inputs.push((0, block_start(w, h, bw, bh)));
         d1.constants = constants(bw);
         d1.samplers.push(sampler(texture));
-        let (t, e, f) = draw_into(&c1, &d1, s.format, s.threads, &l1.file)?;
+        let (t, e, f) = draw_into(&l1, &d1, s.format, &s.backend, s.threads)?;
         for y in 0..ny {
             for x in 0..main_cols {
                 t1.store(x, y, t.texel(x, y));
@@ -560,8 +567,8 @@ fn run_impl(
     let pass1_last = match last {
         Some(src) => {
             let (ll, envl) = load_pass1(src, last_w, bh)?;
-            let cl = emu::compile(&ll.shader).map_err(PipelineError::Emu)?;
             let mut dl = Draw::new(1, ny);
+            dl.float_rules = s.float_rules;
             dl.limits = s.limits;
             dl.record_lod = true;
             let mut input = block_start(w, h, bw, bh);
@@ -569,7 +576,7 @@ fn run_impl(
             dl.inputs.push((0, input));
             dl.constants = constants(last_w);
             dl.samplers.push(sampler(texture));
-            let (t, e, f) = draw_into(&cl, &dl, s.format, s.threads, &ll.file)?;
+            let (t, e, f) = draw_into(&ll, &dl, s.format, &s.backend, s.threads)?;
             for y in 0..ny {
                 t1.store(nx - 1, y, t.texel(0, y));
             }
@@ -605,8 +612,8 @@ fn run_impl(
 
     // Pass 2.
     let l2 = load(pass2, &[("xsize", nx as u64), ("ysize", ny as u64)])?;
-    let c2 = emu::compile(&l2.shader).map_err(PipelineError::Emu)?;
     let mut d2 = Draw::new(1, 1);
+    d2.float_rules = s.float_rules;
     d2.limits = s.limits;
     d2.inputs.push((
         0,
@@ -623,7 +630,7 @@ fn run_impl(
     };
     d2.samplers.push(sampler(t1.as_texture()));
     d2.record_lod = true;
-    let (t2, emulated2, findings2) = draw_into(&c2, &d2, s.format, s.threads, &l2.file)?;
+    let (t2, emulated2, findings2) = draw_into(&l2, &d2, s.format, &s.backend, s.threads)?;
     let (pass2_cost, _) = pass_cost(&l2, &Environment::default(), emulated2, findings2)?;
     let log_average = t2.texel(0, 0)[0] as f64;
 
@@ -711,6 +718,8 @@ pub struct PassSetup {
     pub format: TargetFormat,
     pub threads: Option<usize>,
     pub limits: emu::EmuLimits,
+    pub backend: Backend,
+    pub float_rules: FloatRules,
 }
 
 /// What one pass produced.
@@ -728,9 +737,9 @@ pub fn run_pass(
     setup: &PassSetup,
 ) -> Result<PassOutput, PipelineError> {
     let (tw, th) = setup.target;
-    let compiled = emu::compile(&loaded.shader).map_err(PipelineError::Emu)?;
     let mut draw = Draw::new(tw, th);
     draw.limits = setup.limits;
+    draw.float_rules = setup.float_rules;
     let declared = |file: crate::core::isa::RegFile, index: u32| {
         loaded
             .shader
@@ -757,7 +766,7 @@ pub fn run_pass(
     }
     draw.record_lod = true;
     let (target, emulated, findings) =
-        draw_into(&compiled, &draw, setup.format, setup.threads, &loaded.file)?;
+        draw_into(loaded, &draw, setup.format, &setup.backend, setup.threads)?;
     // A draw sets every constant: what the application did not set is 0 /
     // false, for the cost model as for the emulator.
     let mut env = Environment::default();

@@ -553,7 +553,11 @@ fn tonemap_row(image: &str, t: &tonemap::ToneMapped, file: &str, size: (u32, u32
         white_source: op.white_source,
         scale: op.scale(),
         slots: t.cost.slots,
-        executed_per_pixel: t.cost.executed_emulated.max,
+        executed_per_pixel: t
+            .cost
+            .executed_emulated
+            .unwrap_or(t.cost.executed_static)
+            .max,
         max_error: c.max_error,
         max_error_bound: c.max_error_bound,
         largest_bound_fraction: c.largest_bound_fraction,
