@@ -281,7 +281,9 @@ fn check_program(p: &Program, diags: &mut Diagnostics, file: &SourceFile) -> Inf
                     "vFace is documented only as a comparison operand (setp, if_comp, break_comp)",
                 )
                 .with_label("vFace used as a value")
-                .with_note("Windows' runtime accepts it; only its sign is defined (negative: back face)")));
+                .with_note(
+                    "Windows' runtime accepts it; only its sign is defined (negative: back face)",
+                )));
             }
             if s.reg.file == RegFile::Const {
                 let abs = matches!(s.modifier, SrcMod::Abs | SrcMod::NegAbs);
