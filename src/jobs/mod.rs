@@ -13,6 +13,7 @@
 //! ```
 
 pub mod bundled;
+pub mod conformance;
 pub mod gen;
 pub mod luminance;
 pub mod profile;
