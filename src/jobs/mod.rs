@@ -11,6 +11,8 @@
 //!    │                   ▲             ▲            │
 //!    └───────────────────┴─────────────┘            └──▶ luminance
 //! ```
+//!
+//! [`conformance`] (the draws of the conformance corpus) uses no other job.
 
 pub mod bundled;
 pub mod conformance;
