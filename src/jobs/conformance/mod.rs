@@ -556,3 +556,140 @@ fn sampler(s: &SamplerSpec) -> Result<Binding, String> {
         state,
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A suite in memory: `shaders` as (name, text), `cases` as the JSON
+    /// list of cases.
+    fn suite(shaders: &[(&str, &str)], cases: &str) -> Suite {
+        let names: Vec<String> = shaders
+            .iter()
+            .map(|(n, _)| format!(r#""{n}": {{"file": "{n}.psh", "lines": [1], "tokens": []}}"#))
+            .collect();
+        let json = format!(
+            r#"{{"function": "f", "source": "s", "lines": [1, 2], "about": "",
+                "shaders": {{{}}}, "cases": {cases}}}"#,
+            names.join(", ")
+        );
+        let spec: SuiteSpec = serde_json::from_str(&json).unwrap();
+        let shaders = shaders
+            .iter()
+            .map(|(n, text)| {
+                let l = load::load_str(n, text, &Options::default());
+                let l = match l {
+                    Ok(l) => ShaderLoad::Loaded(Box::new(l)),
+                    Err(e) => ShaderLoad::Refused(Box::new(e)),
+                };
+                (n.to_string(), l)
+            })
+            .collect();
+        Suite {
+            dir: PathBuf::from("."),
+            spec,
+            shaders,
+        }
+    }
+
+    const TEXCOORD: &str = "ps_3_0\ndcl_texcoord0 v0\ndef c1, 0, 0, 0, 0\nif_lt v0.x, c1.x\ntexkill v0\nendif\nmov oC0, v0\n";
+
+    /// A left-half triangle pair over an 8×2 target whose texcoord0.x is
+    /// the clip-space x: negative on the left, where the shader kills.
+    fn half_quad_case(extra_target: bool, texcoord: &str) -> String {
+        let target = r#"{"name": "t", "width": 8, "height": 2, "format": "A8R8G8B8", "clear": "0xff0000ff"}"#;
+        let targets = if extra_target {
+            format!("{target}, {target}")
+        } else {
+            target.to_string()
+        };
+        format!(
+            r#"[{{"name": "c", "lines": [], "note": "", "targets": [{targets}],
+                "draws": [{{"shader": "s", "primitive": "triangle_strip", "positions": "clip",
+                  "vertices": [
+                    {{"position": [-1, -1, 0], "texcoord0": {texcoord}}},
+                    {{"position": [-1, 1, 0], "texcoord0": {texcoord}}},
+                    {{"position": [0.5, -1, 0], "texcoord0": [0.5, 1, 0, 1]}},
+                    {{"position": [0.5, 1, 0], "texcoord0": [0.5, 1, 0, 1]}}]}}]}}]"#
+        )
+    }
+
+    #[test]
+    fn covered_pixels_take_the_shader_and_the_rest_keep_the_clear_colour() {
+        let s = suite(&[("s", TEXCOORD)], &half_quad_case(true, "[-1, 1, 0, 1]"));
+        let r = render(&s, &s.spec.cases[0], &mut emulate).unwrap();
+        assert_eq!(r.backend_draws, 1, "both triangles share their planes");
+        let blue = Some([0.0, 0.0, 1.0, 1.0]);
+        // Screen x of the vertices: 0 and 6; texcoord0.x = x/4 - 1.
+        for x in 0..8u32 {
+            let want = match x {
+                0..=3 => blue, // killed: x/4 - 1 < 0
+                4..=5 => Some([x as f32 / 4.0 - 1.0, 1.0, 0.0, 1.0]),
+                _ => blue, // not covered
+            };
+            assert_eq!(r.targets[0].texel(x, 0), want, "x = {x}");
+            // oC1 is never written: the second target keeps its clear.
+            assert_eq!(r.targets[1].texel(x, 1), blue);
+        }
+        assert_eq!(r.targets[0].texel(8, 0), None);
+    }
+
+    #[test]
+    fn bad_cases_are_errors_that_name_the_case_and_draw() {
+        let err = |shaders: &[(&str, &str)], cases: &str| {
+            let s = suite(shaders, cases);
+            render(&s, &s.spec.cases[0], &mut emulate).unwrap_err()
+        };
+        let e = err(
+            &[("s", "ps_3_0\ndcl_texcoord1 v0\nmov oC0, v0\n")],
+            &half_quad_case(false, "[0, 0]"),
+        );
+        assert_eq!(e.place, "f/c, draw 0");
+        assert!(e.message.contains("no `texcoord1`"), "{e}");
+        let e = err(
+            &[("s", TEXCOORD)],
+            &half_quad_case(false, "[1, 2, 3, 4, 5]"),
+        );
+        assert!(e.message.contains("5 components"), "{e}");
+        let cases = half_quad_case(false, "[0, 0]").replace("[-1, -1, 0]", "[-1, -1, 0, 2]");
+        let e = err(&[("s", TEXCOORD)], &cases);
+        assert!(e.message.contains("w = 2"), "{e}");
+        let cases = half_quad_case(true, "[0, 0]").replacen("\"width\": 8", "\"width\": 4", 1);
+        let e = err(&[("s", TEXCOORD)], &cases);
+        assert!(e.message.contains("one size"), "{e}");
+        let e = err(
+            &[("s", "ps_3_0\nmov oC0, v0\n")],
+            &half_quad_case(false, "[0, 0]"),
+        );
+        assert!(e.message.contains("does not load"), "{e}");
+        let cases = half_quad_case(false, "[0, 0]").replace("\"draws\"", "\"targets2\"");
+        assert!(serde_json::from_str::<SuiteSpec>(&cases).is_err());
+    }
+
+    #[test]
+    fn a_backend_that_returns_the_wrong_size_is_an_error() {
+        let s = suite(&[("s", TEXCOORD)], &half_quad_case(false, "[0, 0]"));
+        let mut small = |shader: &Shader, draw: &Draw| {
+            let mut d = draw.clone();
+            d.target_width = 2;
+            emulate(shader, &d)
+        };
+        let e = render(&s, &s.spec.cases[0], &mut small).unwrap_err();
+        assert!(e.message.contains("2x2 result for a 8x2 draw"), "{e}");
+    }
+
+    #[test]
+    fn shader_files_stay_in_the_suites_folder() {
+        let dir = std::env::temp_dir().join(format!("ps30-conformance-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        std::fs::write(
+            dir.join("cases.json"),
+            r#"{"function": "f", "source": "s", "lines": [1, 2], "about": "",
+                "shaders": {"s": {"file": "../s.psh", "lines": [1], "tokens": []}}, "cases": []}"#,
+        )
+        .unwrap();
+        let e = Suite::load(&dir).unwrap_err();
+        std::fs::remove_dir_all(&dir).unwrap();
+        assert!(e.message.contains("not a file in the folder"), "{e}");
+    }
+}
