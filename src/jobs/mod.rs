@@ -14,10 +14,13 @@
 //!                        ▲             ▲
 //!                        └── compare ──┘
 //! ```
+//!
+//! [`conformance`] (the draws of the conformance corpus) uses no other job.
 
 pub mod backend;
 pub mod bundled;
 pub mod compare;
+pub mod conformance;
 pub mod gen;
 pub mod luminance;
 pub mod profile;

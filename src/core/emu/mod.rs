@@ -295,6 +295,34 @@ pub struct Draw<'a> {
     /// The special values of the arithmetic (`ps30 … --float-rules`),
     /// shared with the translation that `core/gpu` draws.
     pub float_rules: crate::core::float_rules::FloatRules,
+    /// Which side of the primitive the draw shows: the sign of `vFace`.
+    pub face: Face,
+}
+
+/// The facing of the primitive a draw rasterises, as `vFace` reports it.
+///
+/// Microsoft's ps_3_0 register page: vFace "will eventually contain the
+/// primitive area", but in ps_3_0 only its sign is valid — negative for a
+/// back face (counter-clockwise on screen), positive otherwise. The
+/// emulator gives +1 or −1 in every component; anything that depends on
+/// more than the sign is undefined in D3D9.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Face {
+    /// Clockwise on screen (D3D9's front face): vFace = +1.
+    #[default]
+    Front,
+    /// Counter-clockwise on screen: vFace = −1.
+    Back,
+}
+
+impl Face {
+    /// The value every component of `vFace` holds.
+    pub fn value(self) -> f32 {
+        match self {
+            Face::Front => 1.0,
+            Face::Back => -1.0,
+        }
+    }
 }
 
 impl<'a> Draw<'a> {
@@ -309,6 +337,7 @@ impl<'a> Draw<'a> {
             limits: EmuLimits::default(),
             record_lod: false,
             float_rules: crate::core::float_rules::FloatRules::D3d9,
+            face: Face::Front,
         }
     }
 }
@@ -540,6 +569,8 @@ pub(crate) struct RunCtx<'c, 'a> {
     pub quads: u64,
     pub cap: u64,
     pub record_lod: bool,
+    /// The value of every component of `vFace`.
+    pub face: f32,
 }
 
 impl<'c, 'a> RunCtx<'c, 'a> {
@@ -662,6 +693,7 @@ impl<'c, 'a> RunCtx<'c, 'a> {
             quads: quads_x * h.div_ceil(2),
             cap: draw.limits.max_executed_per_pixel,
             record_lod: draw.record_lod,
+            face: draw.face.value(),
         })
     }
 

@@ -56,8 +56,31 @@ pub struct GpuOutput {
     pub killed: Vec<bool>,
 }
 
+impl GpuOutput {
+    /// The output as an [`emu::DrawOutput`], for code written against the
+    /// emulator (the conformance harness takes any backend that returns
+    /// one): colours, depth and killed pixels as drawn; executed counts are
+    /// zero and the per-quad statistics empty — a GPU counts nothing.
+    pub fn into_draw_output(self) -> emu::DrawOutput {
+        let n = self.width as usize * self.height as usize;
+        emu::DrawOutput {
+            width: self.width,
+            height: self.height,
+            color: self.color,
+            depth: self.depth,
+            killed: self.killed,
+            executed: vec![0; n],
+            quads_x: self.width.div_ceil(2),
+            quad_executed: Vec::new(),
+            quad_divergent: Vec::new(),
+            gradients: Vec::new(),
+        }
+    }
+}
+
 /// The full-screen triangle: vertices (−1, −1), (3, −1), (−1, 3),
-/// counter-clockwise, so the pixels are front-facing (vFace = +1).
+/// counter-clockwise in WebGPU's normalised coordinates; the pipeline's
+/// `front_face` makes it front- or back-facing as [`Draw::face`] asks.
 const VERTEX_WGSL: &str =
     "@vertex fn vs(@builtin(vertex_index) i: u32) -> @builtin(position) vec4<f32> {
     let x = f32(i32(i & 1u) * 4 - 1);
@@ -128,7 +151,15 @@ pub fn run(
             compilation_options: Default::default(),
             buffers: &[],
         },
-        primitive: wgpu::PrimitiveState::default(),
+        // The triangle is counter-clockwise in WebGPU's terms; calling
+        // that winding the back face makes its pixels back-facing.
+        primitive: wgpu::PrimitiveState {
+            front_face: match draw.face {
+                emu::Face::Front => wgpu::FrontFace::Ccw,
+                emu::Face::Back => wgpu::FrontFace::Cw,
+            },
+            ..Default::default()
+        },
         depth_stencil: iface.depth.then(|| wgpu::DepthStencilState {
             format: wgpu::TextureFormat::Depth32Float,
             depth_write_enabled: Some(true),
