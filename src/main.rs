@@ -22,6 +22,7 @@ fn main() -> ExitCode {
         Command::Run(args) => cli::run::run(args, &ui),
         Command::Luminance(args) => cli::luminance::run(args, &ui),
         Command::Tonemap(args) => cli::tonemap::run(args, &ui),
+        Command::Compare(args) => cli::compare::run(args, &ui),
         Command::Translate(args) => cli::translate::run(args, &ui),
         Command::Profile(args) => cli::profile::run(args, &ui),
         Command::Verify(args) => cli::verify::run(args, &ui),

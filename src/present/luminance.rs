@@ -12,6 +12,7 @@ pub fn run_json(image: &str, r: &LuminanceRun) -> serde_json::Value {
         "image": image,
         "width": r.width,
         "height": r.height,
+        "drawn_by": r.drawn_by,
         "log_average": r.log_average,
         "reference_log_average": r.reference_log_average,
         "relative_error": r.relative_error,
@@ -95,6 +96,9 @@ pub fn run_text(image: &str, r: &LuminanceRun) -> String {
         r.target_format.d3d_name(),
         r.delta
     );
+    if r.drawn_by != "emulator" {
+        s.push_str(&format!("drawn on the {}\n", r.drawn_by));
+    }
     s.push_str(&pass_line("pass 1", &r.pass1));
     if let Some(p) = &r.pass1_last {
         s.push_str(&pass_line("pass 1 (last column)", p));
@@ -224,6 +228,9 @@ pub fn pass_text(
         t.height,
         t.format.d3d_name()
     );
+    if out.drawn_by != "emulator" {
+        s.push_str(&format!("drawn on the {}\n", out.drawn_by));
+    }
     s.push_str(&match out.cost.executed_emulated {
         Some(e) => format!(
             "slots {}, executed per pixel {} (cost model: {}{})\n",
@@ -262,6 +269,7 @@ pub fn pass_json(out: &PassOutput) -> serde_json::Value {
     serde_json::json!({
         "target": [t.width, t.height],
         "target_format": t.format.d3d_name(),
+        "drawn_by": out.drawn_by,
         "cost": &out.cost,
         "executed_per_pixel": out.cost.executed_emulated.map(range_json),
         "red": {"min": min, "max": max, "mean": mean},

@@ -41,6 +41,9 @@ pub fn text(image: &str, t: &ToneMapped, written: Option<&str>) -> String {
         lum.relative_tolerance,
         if lum.all_agree() { "agree" } else { "DISAGREE" }
     );
+    if lum.drawn_by != "emulator" {
+        s.push_str(&format!("drawn on the {}\n", lum.drawn_by));
+    }
     s.push_str(&format!(
         "key a = {}, {} → a/L̄w = {}, L_white = {}\n",
         number(op.key),
@@ -124,6 +127,7 @@ pub fn json(image: &str, t: &ToneMapped, written: Option<&str>) -> serde_json::V
         "width": t.width,
         "height": t.height,
         "output": written,
+        "drawn_by": t.luminance.drawn_by,
         "log_average": t.luminance.log_average,
         "reference_log_average": t.luminance.reference_log_average,
         "log_average_relative_error": t.luminance.relative_error,

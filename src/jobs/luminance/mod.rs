@@ -244,6 +244,8 @@ pub struct LuminanceRun {
     /// Non-finite pixels in the image.
     pub nonfinite_pixels: u64,
     pub negative_pixels: u64,
+    /// Who drew the passes: `emulator`, or `GPU: <device>`.
+    pub drawn_by: String,
 }
 
 impl LuminanceRun {
@@ -694,6 +696,7 @@ fn run_impl(
         ill_conditioned: ill,
         nonfinite_pixels: stats.non_finite,
         negative_pixels: stats.negative_luminance,
+        drawn_by: s.backend.describe(),
     })
 }
 
@@ -727,6 +730,8 @@ pub struct PassSetup {
 pub struct PassOutput {
     pub target: RenderTarget,
     pub cost: PassCost,
+    /// Who drew it: `emulator`, or `GPU: <device>`.
+    pub drawn_by: String,
 }
 
 /// Runs `loaded` over a `target` whose pixel (x, y) gets v0 = the start of
@@ -779,5 +784,9 @@ pub fn run_pass(
         );
     }
     let (cost, _) = pass_cost(loaded, &env, emulated, findings)?;
-    Ok(PassOutput { target, cost })
+    Ok(PassOutput {
+        target,
+        cost,
+        drawn_by: setup.backend.describe(),
+    })
 }

@@ -19,6 +19,7 @@
 pub mod claims;
 pub mod figures;
 pub mod generated;
+pub mod gpu;
 
 use crate::core::image::{HdrImage, ImageLimits};
 use crate::core::numbers::number;
