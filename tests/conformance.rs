@@ -7,8 +7,10 @@
 //! instructions in order, the declarations and definitions as a set, since
 //! Wine's arrays put them in any order); shaders Windows refuses must be
 //! refused with the recorded message; every other case is drawn by each
-//! backend — the emulator always; a GPU once ps30 has a GPU backend — and
-//! every probe converted to the render target's 8-bit format and compared.
+//! backend — the emulator always; the GPU backend (`core/gpu`, the
+//! translated shader on a Vulkan device) when there is an adapter, and
+//! always under `CI` — and every probe converted to the render target's
+//! 8-bit format and compared.
 //!
 //! The conversion is here, not in the library, until ps30's render targets
 //! have 8-bit formats of their own: D3D9 does not document how a shader's
@@ -30,6 +32,9 @@
 
 #[path = "common/tokens.rs"]
 mod tokens;
+
+#[path = "common/gpu.rs"]
+mod gpu_device;
 
 use ps30::core::emu::{Draw, DrawOutput};
 use ps30::core::ir::Shader;
@@ -230,10 +235,20 @@ struct Backends {
 }
 
 fn backends() -> Backends {
-    Backends {
-        run: vec![("emulator", Box::new(conformance::emulate))],
-        not_run: vec![("GPU", "not run: ps30 has no GPU backend yet")],
+    let mut run: Vec<(&'static str, Backend)> = vec![("emulator", Box::new(conformance::emulate))];
+    let mut not_run = Vec::new();
+    match gpu_device::gpu("every_case_gives_the_colours_wine_expects") {
+        Some(g) => run.push((
+            "GPU",
+            Box::new(|shader: &Shader, draw: &Draw| {
+                ps30::core::gpu::run(g, shader, draw, ps30::core::gpu::TargetKind::Raw)
+                    .map(|o| o.into_draw_output())
+                    .map_err(|e| e.to_string())
+            }),
+        )),
+        None => not_run.push(("GPU", "not run: no GPU adapter (see the line above)")),
     }
+    Backends { run, not_run }
 }
 
 #[test]
