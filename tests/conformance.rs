@@ -240,8 +240,8 @@ fn backends() -> Backends {
     match gpu_device::gpu("every_case_gives_the_colours_wine_expects") {
         Some(g) => run.push((
             "GPU",
-            Box::new(|shader: &Shader, draw: &Draw| {
-                ps30::core::gpu::run(g, shader, draw, ps30::core::gpu::TargetKind::Raw)
+            Box::new(move |shader: &Shader, draw: &Draw| {
+                ps30::core::gpu::run(&g, shader, draw, ps30::core::gpu::TargetKind::Raw)
                     .map(|o| o.into_draw_output())
                     .map_err(|e| e.to_string())
             }),

@@ -5,13 +5,13 @@
 
 use ps30::core::gpu::Gpu;
 use std::io::Write;
-use std::sync::OnceLock;
+use std::sync::{Arc, OnceLock};
 
 /// The device, or `None` (after saying so) when there is none.
-pub fn gpu(test: &str) -> Option<&'static Gpu> {
-    static GPU: OnceLock<Result<Gpu, String>> = OnceLock::new();
-    match GPU.get_or_init(|| Gpu::open().map_err(|e| e.to_string())) {
-        Ok(g) => Some(g),
+pub fn gpu(test: &str) -> Option<Arc<Gpu>> {
+    static GPU: OnceLock<Result<Arc<Gpu>, String>> = OnceLock::new();
+    match GPU.get_or_init(|| Gpu::open().map(Arc::new).map_err(|e| e.to_string())) {
+        Ok(g) => Some(g.clone()),
         Err(e) if std::env::var_os("CI").is_some() => {
             panic!("{test}: CI is set, so the GPU tests need an adapter: {e}")
         }

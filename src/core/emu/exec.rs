@@ -467,12 +467,12 @@ impl<'c, 'a> Worker<'c, 'a> {
                 }
                 Op::Mul { d, a, b } => {
                     if self.begin(s) {
-                        self.map2(d, a, b, |x, y| x * y)
+                        self.mul(d, a, b)
                     }
                 }
                 Op::Mad { d, a, b, c } => {
                     if self.begin(s) {
-                        self.map3(d, a, b, c, super::math::mad)
+                        self.mad(d, a, b, c)
                     }
                 }
                 Op::Min { d, a, b } => {
@@ -487,7 +487,7 @@ impl<'c, 'a> Worker<'c, 'a> {
                 }
                 Op::Lrp { d, a, b, c } => {
                     if self.begin(s) {
-                        self.map3(d, a, b, c, super::math::lrp)
+                        self.lrp(d, a, b, c)
                     }
                 }
                 Op::Cmp { d, a, b, c } => {
@@ -497,7 +497,7 @@ impl<'c, 'a> Worker<'c, 'a> {
                 }
                 Op::Frc { d, a } => {
                     if self.begin(s) {
-                        self.map1(d, a, super::math::frc)
+                        self.frc(d, a)
                     }
                 }
                 Op::Abs { d, a } => {
@@ -512,7 +512,7 @@ impl<'c, 'a> Worker<'c, 'a> {
                 }
                 Op::Rsq { d, a } => {
                     if self.begin(s) {
-                        self.scalar1(d, a, super::math::rsq)
+                        self.rsq(d, a)
                     }
                 }
                 Op::Exp { d, a } => {
@@ -522,7 +522,7 @@ impl<'c, 'a> Worker<'c, 'a> {
                 }
                 Op::Log { d, a } => {
                     if self.begin(s) {
-                        self.scalar1(d, a, super::math::log)
+                        self.log(d, a)
                     }
                 }
                 Op::Pow { d, a, b } => {

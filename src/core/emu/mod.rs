@@ -571,6 +571,8 @@ pub(crate) struct RunCtx<'c, 'a> {
     pub record_lod: bool,
     /// The value of every component of `vFace`.
     pub face: f32,
+    /// The draw's float rules.
+    pub rules: crate::core::float_rules::FloatRules,
 }
 
 impl<'c, 'a> RunCtx<'c, 'a> {
@@ -694,6 +696,7 @@ impl<'c, 'a> RunCtx<'c, 'a> {
             cap: draw.limits.max_executed_per_pixel,
             record_lod: draw.record_lod,
             face: draw.face.value(),
+            rules: draw.float_rules,
         })
     }
 

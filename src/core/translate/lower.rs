@@ -380,20 +380,63 @@ impl Lower<'_> {
     /// pinned (0 for b > 0, +∞ for b < 0); ieee `pow(a, b)`.
     fn pow(&mut self, a: Expr, b: Expr) -> Expr {
         if !self.rules.d3d9_specials() {
-            return self.fb.math(M::Pow, &[a, b]);
+            return self.powr(a, b);
         }
         let x = self.fb.math(M::Abs, &[a]);
         let p = self.fb.math(M::Pow, &[x, b]);
+        let p = self.zero_base(x, b, p);
         let (zero, one) = (self.fb.f32(0.0), self.fb.f32(1.0));
-        let inf = self.infinity();
-        let b_negative = self.fb.binary(B::Less, b, zero);
-        let zero_base = self.fb.select(b_negative, inf, zero);
-        let x_zero = self.fb.binary(B::Equal, x, zero);
-        let p = self.fb.select(x_zero, zero_base, p);
         let b_zero = self.fb.binary(B::Equal, b, zero);
         let x_one = self.fb.binary(B::Equal, x, one);
         let unit = self.fb.binary(B::LogicalOr, b_zero, x_one);
         self.fb.select(unit, one, p)
+    }
+
+    /// `p` = pow(x, b) with the zero base pinned where SPIR-V leaves it
+    /// undefined: 0 for b > 0, +∞ for b < 0 (a NaN b left alone).
+    fn zero_base(&mut self, x: Expr, b: Expr, p: Expr) -> Expr {
+        let zero = self.fb.f32(0.0);
+        let inf = self.infinity();
+        let x_zero = self.fb.binary(B::Equal, x, zero);
+        let b_positive = self.fb.binary(B::Greater, b, zero);
+        let b_negative = self.fb.binary(B::Less, b, zero);
+        let to_zero = self.fb.binary(B::LogicalAnd, x_zero, b_positive);
+        let to_inf = self.fb.binary(B::LogicalAnd, x_zero, b_negative);
+        let p = self.fb.select(to_zero, zero, p);
+        self.fb.select(to_inf, inf, p)
+    }
+
+    /// IEEE's powr(a, b): `pow`, and NaN where powr is undefined (a < 0,
+    /// a NaN operand, pow(0, 0), pow(∞, 0), pow(1, ±∞)) — WGSL leaves
+    /// those to the device, and llvmpipe gives 0 for some.
+    fn powr(&mut self, a: Expr, b: Expr) -> Expr {
+        let p = self.fb.math(M::Pow, &[a, b]);
+        let p = self.zero_base(a, b, p);
+        let (zero, one) = (self.fb.f32(0.0), self.fb.f32(1.0));
+        let inf = self.infinity();
+        let nan_bits = self.fb.u32(0x7fc0_0000);
+        let nan = self.fb.add(Expression::As {
+            expr: nan_bits,
+            kind: naga::ScalarKind::Float,
+            convert: None,
+        });
+        let negative = self.fb.binary(B::Less, a, zero);
+        let a_nan = self.fb.binary(B::NotEqual, a, a);
+        let b_nan = self.fb.binary(B::NotEqual, b, b);
+        let b_zero = self.fb.binary(B::Equal, b, zero);
+        let a_zero = self.fb.binary(B::Equal, a, zero);
+        let a_inf = self.fb.binary(B::Equal, a, inf);
+        let a_edge = self.fb.binary(B::LogicalOr, a_zero, a_inf);
+        let zero_power = self.fb.binary(B::LogicalAnd, a_edge, b_zero);
+        let a_one = self.fb.binary(B::Equal, a, one);
+        let b_abs = self.fb.math(M::Abs, &[b]);
+        let b_inf = self.fb.binary(B::Equal, b_abs, inf);
+        let one_inf = self.fb.binary(B::LogicalAnd, a_one, b_inf);
+        let mut undefined = negative;
+        for c in [a_nan, b_nan, zero_power, one_inf] {
+            undefined = self.fb.binary(B::LogicalOr, undefined, c);
+        }
+        self.fb.select(undefined, nan, p)
     }
 
     /// `nrm`'s scale for f = x² + y² + z²: d3d9 FLT_MAX when f = 0.

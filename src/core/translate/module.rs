@@ -363,6 +363,17 @@ pub enum Entry {
     Draw,
 }
 
+/// An output's location (no interpolation: it leaves the pipeline).
+fn output(location: u32) -> Binding {
+    Binding::Location {
+        location,
+        interpolation: None,
+        sampling: None,
+        blend_src: None,
+        per_primitive: false,
+    }
+}
+
 fn location(location: u32, centroid: bool, interpolate: bool) -> Binding {
     Binding::Location {
         location,
@@ -554,7 +565,7 @@ fn outputs(
         members.push(StructMember {
             name: Some(format!("oC{k}")),
             ty: t.vec4,
-            binding: Some(location(k, false, true)),
+            binding: Some(output(k)),
             offset,
         });
         offset += 16;
@@ -583,7 +594,7 @@ fn outputs(
                 members.push(StructMember {
                     name: Some("killed".into()),
                     ty: u32_ty,
-                    binding: Some(location(interface::DRAW_KILLED_LOCATION, false, false)),
+                    binding: Some(output(interface::DRAW_KILLED_LOCATION)),
                     offset,
                 });
                 offset += 4;

@@ -91,8 +91,10 @@ struct Def {
     exact: fn([f32; 4]) -> f64,
     /// Alternative evaluation orders of the same formula, in f32.
     orders: &'static [(&'static str, fn([f32; 4]) -> f32)],
-    /// c0 for the probe.
+    /// c0 for the probe (set by the application).
     c0: [f32; 4],
+    /// Lines the shader adds before the instruction (a `def`).
+    prologue: &'static str,
     /// The documented input range of src0.x (sincos: [−π, π]); outside it
     /// an input is special.
     domain: Option<(f32, f32)>,
@@ -240,6 +242,7 @@ fn defs() -> Vec<Def> {
             input: |i| unary(-126, 127, true)(i),
             exact: |v| (v[0] as f64).abs().log2(),
             orders: &[],
+            prologue: "",
             c0: [0.0; 4],
             domain: None,
             flushed: |v| d3d9_log(flush(v[0])),
@@ -267,6 +270,7 @@ fn defs() -> Vec<Def> {
             },
             exact: |v| (v[0] as f64).exp2(),
             orders: &[],
+            prologue: "",
             c0: [0.0; 4],
             domain: None,
             flushed: |v| flush(flush(v[0]).exp2()),
@@ -279,6 +283,7 @@ fn defs() -> Vec<Def> {
             input: |i| unary(-126, 126, true)(i),
             exact: |v| 1.0 / v[0] as f64,
             orders: &[],
+            prologue: "",
             c0: [0.0; 4],
             domain: None,
             flushed: |v| flush(1.0 / flush(v[0])),
@@ -289,6 +294,7 @@ fn defs() -> Vec<Def> {
             input: |i| unary(-126, 127, true)(i),
             exact: |v| 1.0 / (v[0] as f64).abs().sqrt(),
             orders: &[],
+            prologue: "",
             c0: [0.0; 4],
             domain: None,
             flushed: |v| flush(1.0 / flush(v[0]).abs().sqrt()),
@@ -299,6 +305,7 @@ fn defs() -> Vec<Def> {
             input: pow_input,
             exact: |v| (v[0] as f64).abs().powf(v[1] as f64),
             orders: &[],
+            prologue: "",
             c0: [0.0; 4],
             domain: None,
             flushed: |v| flush(flush(v[0]).abs().powf(flush(v[1]))),
@@ -327,6 +334,7 @@ fn defs() -> Vec<Def> {
                 ("unfused", |v| v[0] * v[1] + v[2]),
                 ("fused", |v| v[0].mul_add(v[1], v[2])),
             ],
+            prologue: "",
             c0: [0.0; 4],
             domain: None,
             flushed: |v| flush(flush(flush(v[0]) * flush(v[1])) + flush(v[2])),
@@ -348,6 +356,7 @@ fn defs() -> Vec<Def> {
                     v[3].mul_add(v[0], v[2].mul_add(v[1], v[1].mul_add(v[2], v[0] * v[3])))
                 }),
             ],
+            prologue: "",
             c0: [0.0; 4],
             domain: None,
             flushed: |v| {
@@ -365,6 +374,7 @@ fn defs() -> Vec<Def> {
             input: |i| unary(-24, 24, true)(i),
             exact: |v| (v[0] as f64) - (v[0] as f64).floor(),
             orders: &[],
+            prologue: "",
             c0: [0.0; 4],
             domain: None,
             flushed: |v| {
@@ -383,6 +393,7 @@ fn defs() -> Vec<Def> {
             input: angle_input,
             exact: |v| (v[0] as f64).cos(),
             orders: &[],
+            prologue: "",
             c0: [0.0; 4],
             domain: Some((-std::f32::consts::PI, std::f32::consts::PI)),
             flushed: |v| flush(flush(v[0]).cos()),
@@ -395,6 +406,7 @@ fn defs() -> Vec<Def> {
             input: subnormal_input,
             exact: |v| v[0] as f64 * 2f64.powi(-30),
             orders: &[],
+            prologue: "",
             c0: [9.313_226e-10, 0.0, 0.0, 0.0],
             domain: None,
             flushed: |v| flush(flush(v[0]) * 9.313_226e-10),
@@ -411,9 +423,21 @@ fn defs() -> Vec<Def> {
             },
             exact: |v| v[0] as f64 + 1.0e-40f32 as f64,
             orders: &[],
+            prologue: "",
             c0: [1.0e-40, 0.0, 0.0, 0.0],
             domain: None,
             flushed: |v| flush(flush(v[0])),
+            spec: CORRECTLY_ROUNDED,
+        },
+        Def {
+            instruction: "mul r1, r0, c1.x",
+            input: |i| unary(-100, 100, true)(i),
+            exact: |v| v[0] as f64 * 0.0,
+            orders: &[],
+            prologue: "def c1, 0, 0, 0, 0\n",
+            c0: [0.0; 4],
+            domain: None,
+            flushed: |v| flush(v[0]) * 0.0,
             spec: CORRECTLY_ROUNDED,
         },
         Def {
@@ -424,6 +448,7 @@ fn defs() -> Vec<Def> {
                 v[0] as f64 / f.sqrt()
             },
             orders: &[],
+            prologue: "",
             c0: [0.0; 4],
             domain: None,
             flushed: |v| {
@@ -459,9 +484,9 @@ fn d3d9_log(x: f32) -> f32 {
 }
 
 /// The probe shader for `instruction`.
-fn source(instruction: &str) -> String {
+fn source(prologue: &str, instruction: &str) -> String {
     format!(
-        "ps_3_0\ndcl_texcoord0 v0.xy\ndcl_2d s0\ntexld r0, v0, s0\nmov r1, c0.y\n{instruction}\nmov oC0, r1\n"
+        "ps_3_0\ndcl_texcoord0 v0.xy\ndcl_2d s0\n{prologue}texld r0, v0, s0\nmov r1, c0.y\n{instruction}\nmov oC0, r1\n"
     )
 }
 
@@ -471,7 +496,7 @@ pub fn run(gpu: &Gpu) -> Result<Vec<Probe>, CompareError> {
 }
 
 fn run_one(gpu: &Gpu, d: &Def) -> Result<Probe, CompareError> {
-    let text = source(d.instruction);
+    let text = source(d.prologue, d.instruction);
     let loaded = load::load_str("probe.psh", &text, &Options::default())
         .map_err(|e| CompareError::Other(format!("probe `{}`: {e}", d.instruction)))?;
     let n = SIDE * SIDE;
