@@ -171,6 +171,7 @@ pub fn all_text(x: &CrossCheck) -> String {
     }
     let verdict = |e: &Option<Explanation>| match e {
         Some(e) if e.finding => "FINDING",
+        Some(e) if e.device => "device",
         Some(_) => "explained",
         None => "",
     };
@@ -179,7 +180,16 @@ pub fn all_text(x: &CrossCheck) -> String {
         s.push_str(&format!(
             "  {:<9} {:<52} {:>3} of {:<3} {:>8}  {:.7} / {:.7} / {:.7}  {}\n",
             verdict(&c.explanation),
-            format!("{} {}", c.image, c.pass1),
+            format!(
+                "{} {}{}",
+                c.image,
+                c.pass1,
+                if c.target_format == "D3DFMT_R32F" {
+                    String::new()
+                } else {
+                    format!(" ({})", c.target_format)
+                }
+            ),
             c.blocks.identical,
             c.blocks.pixels,
             thousands(c.blocks.max_ulp),

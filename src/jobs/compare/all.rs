@@ -18,7 +18,7 @@ use super::probe::{self, Probe};
 use super::stats::ChannelStats;
 use super::{compare_draw, compare_luminance, CompareError, DrawComparison, LuminanceComparison};
 use crate::core::gpu::{DeviceInfo, Gpu, TargetKind};
-use crate::core::image::{self, HdrImage, ImageLimits};
+use crate::core::image::{self, HdrImage, ImageLimits, TargetFormat};
 use crate::core::load::{self, Options};
 use crate::jobs::backend::Backend;
 use crate::jobs::bundled;
@@ -88,44 +88,50 @@ pub fn run(
             })
             .ok_or_else(|| CompareError::Other(format!("no generated shader {file}")))
     };
-    // (pass 1, last column, pass 2, block) on the frame image.
-    let mut pipelines: Vec<(ShaderSource, Option<ShaderSource>, ShaderSource, (u32, u32))> = vec![
-        (
-            source(bundled::ARTICLE_LOOP),
-            None,
-            source(bundled::ARTICLE_PASS2),
-            (128, 56),
-        ),
+    // (pass 1, last column, pass 2, block, target format) on the frame image.
+    type Pipeline = (
+        ShaderSource,
+        Option<ShaderSource>,
+        ShaderSource,
+        (u32, u32),
+        TargetFormat,
+    );
+    let f32 = TargetFormat::R32F;
+    let (a1, a2) = (bundled::ARTICLE_LOOP, bundled::ARTICLE_PASS2);
+    let (c1, c2) = (bundled::CORRECTED_LOOP, bundled::CORRECTED_PASS2);
+    let mut pipelines: Vec<Pipeline> = vec![
+        (source(a1), None, source(a2), (128, 56), f32),
         (
             source(bundled::ARTICLE_UNROLLED),
             None,
-            source(bundled::ARTICLE_PASS2),
+            source(a2),
             (125, 128),
+            f32,
         ),
-        (
-            source(bundled::CORRECTED_LOOP),
-            None,
-            source(bundled::CORRECTED_PASS2),
-            (128, 56),
-        ),
+        (source(c1), None, source(c2), (128, 56), f32),
         (
             source(bundled::CORRECTED_UNROLLED),
             None,
-            source(bundled::CORRECTED_PASS2),
+            source(c2),
             (125, 128),
+            f32,
+        ),
+        // Finding 3: an f16 target cannot hold the sums.
+        (
+            source(bundled::CORRECTED_UNROLLED),
+            None,
+            source(c2),
+            (125, 128),
+            TargetFormat::Rgba16F,
         ),
     ];
     for c in &bundle.configs {
         let Some(pass2) = &c.pass2 else { continue };
         let block = (c.block[0], c.block[1]);
-        pipelines.push((generated(&c.pass1)?, None, generated(pass2)?, block));
+        let (p1, p2) = (generated(&c.pass1)?, generated(pass2)?);
+        pipelines.push((p1.clone(), None, p2.clone(), block, f32));
         if let Some(last) = &c.last_column {
-            pipelines.push((
-                generated(&c.pass1)?,
-                Some(generated(last)?),
-                generated(pass2)?,
-                block,
-            ));
+            pipelines.push((p1, Some(generated(last)?), p2, block, f32));
         }
     }
     let others: Vec<&&str> = names.iter().filter(|n| **n != FRAME_IMAGE).collect();
@@ -145,10 +151,11 @@ pub fn run(
     };
     let frame = load_image(FRAME_IMAGE)?;
     let mut lum = Vec::new();
-    for (p1, last, p2, block) in &pipelines {
+    for (p1, last, p2, block, format) in &pipelines {
         next(&format!("luminance: {}", p1.name));
         let s = luminance::Settings {
             block: *block,
+            format: *format,
             ..settings.clone()
         };
         lum.push(compare_luminance(

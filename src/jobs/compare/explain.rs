@@ -16,6 +16,10 @@ use serde::Serialize;
 pub struct Explanation {
     /// Nothing explains it: a bound is broken, or a special value differs.
     pub finding: bool,
+    /// Explained by something the device does that Direct3D 9 hardware
+    /// need not (flushing subnormals, storing f16 toward zero): the
+    /// results differ beyond rounding, and the cause is known.
+    pub device: bool,
     pub text: String,
 }
 
@@ -157,7 +161,27 @@ pub fn luminance(c: &LuminanceComparison, probes: &[Probe]) -> Explanation {
     if c.blocks.all_identical() && same_lw {
         return Explanation {
             finding: false,
+            device: false,
             text: "bit-identical: every block sum and L̄w".into(),
+        };
+    }
+    if c.blocks.f16_saturations > 0
+        && c.blocks.f16_saturations == c.blocks.inf_mismatches + c.blocks.nan_mismatches
+    {
+        return Explanation {
+            finding: false,
+            device: true,
+            text: format!(
+                "device: {} block sums beyond ±65,504 are stored in the f16 target as ±65,504 (the device rounds \
+                 toward zero, which Vulkan allows for colour attachments), where the emulator and Direct3D 9's \
+                 round-to-nearest store ±∞ (the finite sums differ by up to {} ulp, one half-step, for the same reason); so L̄w is {:.4} × the true value on the device and {:.4} × on the \
+                 emulator — finding 3 (an f16 target cannot hold the sums) holds on both, with a different wrong \
+                 answer",
+                thousands(c.blocks.f16_saturations),
+                thousands(c.blocks.max_ulp),
+                c.log_average.gpu / c.log_average.reference,
+                c.log_average.emulator / c.log_average.reference
+            ),
         };
     }
     let both_agree = c.gpu_agrees && c.emulator_agrees;
@@ -167,6 +191,7 @@ pub fn luminance(c: &LuminanceComparison, probes: &[Probe]) -> Explanation {
     if both_agree {
         return Explanation {
             finding: false,
+            device: false,
             text: format!(
                 "rounding: both backends are within the derived bound at all {n} blocks and for L̄w (relative error {:.1e} and {:.1e} of a {:.1e} bound); {why}",
                 c.log_average.gpu_relative_error, c.log_average.emulator_relative_error, c.log_average.tolerance
@@ -176,6 +201,7 @@ pub fn luminance(c: &LuminanceComparison, probes: &[Probe]) -> Explanation {
     if same_verdict {
         return Explanation {
             finding: false,
+            device: false,
             text: format!(
                 "both backends disagree with the f64 reference in the same way ({} of {n} blocks within their bound on each; L̄w {:.4} × and {:.4} × the true value): the shaders' own error, not the device's; {why}",
                 c.gpu_blocks_within,
@@ -186,6 +212,7 @@ pub fn luminance(c: &LuminanceComparison, probes: &[Probe]) -> Explanation {
     }
     Explanation {
         finding: true,
+        device: false,
         text: format!(
             "FINDING: the device has {} of {n} blocks within their bound, the emulator {}; L̄w relative error {:.1e} against {:.1e} (bound {:.1e}); {why}",
             c.gpu_blocks_within,
@@ -203,6 +230,7 @@ pub fn tonemap(c: &TonemapComparison, probes: &[Probe]) -> Explanation {
     if c.draw.all_identical() {
         return Explanation {
             finding: false,
+            device: false,
             text: "bit-identical".into(),
         };
     }
@@ -210,6 +238,7 @@ pub fn tonemap(c: &TonemapComparison, probes: &[Probe]) -> Explanation {
     if c.gpu_within == c.emulator_within && c.draw.special_mismatches() == 0 {
         Explanation {
             finding: false,
+            device: false,
             text: format!(
                 "rounding: {} of {} pixels within their derived bound of the f64 reference on both backends; {why}",
                 thousands(c.gpu_within),
@@ -219,6 +248,7 @@ pub fn tonemap(c: &TonemapComparison, probes: &[Probe]) -> Explanation {
     } else {
         Explanation {
             finding: true,
+            device: false,
             text: format!(
                 "FINDING: {} pixels within their bound on the device, {} on the emulator, {} NaN/∞ on one side only; {why}",
                 thousands(c.gpu_within),
@@ -235,6 +265,7 @@ pub fn draw(c: &DrawComparison, probes: &[Probe]) -> Explanation {
     if c.all_identical() {
         return Explanation {
             finding: false,
+            device: false,
             text: "bit-identical".into(),
         };
     }
@@ -266,7 +297,11 @@ pub fn draw(c: &DrawComparison, probes: &[Probe]) -> Explanation {
         || c.killed_mismatches > 0
         || (rest > 0 && clauses.is_empty())
         || (flushed > 0 && !flushes_subnormals(probes));
+    let device = flushed > 0 && !finding;
     let mut text = parts.join("; ");
+    if device {
+        text = format!("device: {text}");
+    }
     if finding {
         text = format!(
             "FINDING: {text} ({} NaN/∞ on one side only, {} pixels killed on one side only)",
@@ -274,7 +309,11 @@ pub fn draw(c: &DrawComparison, probes: &[Probe]) -> Explanation {
             c.killed_mismatches
         );
     }
-    Explanation { finding, text }
+    Explanation {
+        finding,
+        device,
+        text,
+    }
 }
 
 /// Whether nothing in the set is a finding.

@@ -223,6 +223,8 @@ pub struct LuminanceComparison {
     pub pass2: String,
     pub block: (u32, u32),
     pub targets: (u32, u32),
+    /// The pass-1 target's D3D9 format.
+    pub target_format: String,
     /// The pass-1 target (block sums) and pass 2's 1×1, compared.
     pub blocks: ChannelStats,
     pub log_average: LogAverages,
@@ -290,6 +292,7 @@ pub fn compare_luminance(
         pass2: pass2.name.clone(),
         block: e.block,
         targets: e.targets,
+        target_format: e.target_format.d3d_name().into(),
         blocks,
         log_average: LogAverages {
             gpu: g.log_average,

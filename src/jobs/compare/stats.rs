@@ -70,6 +70,11 @@ pub fn is_flush(a: f32, b: f32) -> bool {
     a.is_subnormal() && b == 0.0
 }
 
+/// Whether `a` is ±∞ and `b` the largest half of the same sign.
+pub fn is_saturation(a: f32, b: f32) -> bool {
+    a.is_infinite() && b.abs() == 65_504.0 && a.signum() == b.signum()
+}
+
 /// One pixel where the backends differ most.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Worst {
@@ -100,6 +105,10 @@ pub struct ChannelStats {
     /// backend that flushes subnormals to zero (as GPUs do) against one
     /// that keeps them (the emulator, IEEE).
     pub subnormal_flushes: u64,
+    /// Pixels where one side holds ±∞ and the other ±65,504 of the same
+    /// sign: an f16 target rounding toward zero against one rounding to
+    /// nearest.
+    pub f16_saturations: u64,
     /// Up to five pixels, the largest distances first (NaN/∞ mismatches
     /// before any distance).
     pub worst: Vec<Worst>,
@@ -117,6 +126,7 @@ impl ChannelStats {
             nan_mismatches: 0,
             inf_mismatches: 0,
             subnormal_flushes: 0,
+            f16_saturations: 0,
             worst: Vec::new(),
         };
         let mut ranked: Vec<(u64, usize, Option<u64>)> = Vec::new();
@@ -140,6 +150,9 @@ impl ChannelStats {
                     }
                 }
                 None => {
+                    if is_saturation(e, g) || is_saturation(g, e) {
+                        s.f16_saturations += 1;
+                    }
                     if e.is_nan() != g.is_nan() {
                         s.nan_mismatches += 1;
                     } else {
