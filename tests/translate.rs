@@ -61,3 +61,96 @@ fn every_bundled_shader_translates_to_every_target() {
         check(b.path, &shader, FloatRules::D3d9, Entry::Draw);
     }
 }
+
+/// The constant block's layout, as the WGSL output declares it (WGSL
+/// computes offsets from its own alignment rules), is the one
+/// `interface.rs` documents and `core/gpu` fills.
+#[test]
+fn the_constant_block_layout_is_the_documented_one() {
+    use ps30::core::translate::interface;
+    let shader = load("tonemap", ps30::jobs::bundled::TONEMAP_REINHARD.text);
+    let t = translate::translate(&shader, FloatRules::D3d9, Entry::Application).unwrap();
+    let Written::Text(wgsl) = translate::write(&t, Target::Wgsl, "").unwrap() else {
+        panic!("WGSL is text");
+    };
+    let back = naga::front::wgsl::parse_str(&wgsl).unwrap();
+    let mut layouter = naga::proc::Layouter::default();
+    layouter.update(back.to_ctx()).unwrap();
+    let (handle, ty) = back
+        .types
+        .iter()
+        .find(|(_, t)| t.name.as_deref() == Some("Ps30Constants"))
+        .expect("Ps30Constants");
+    let naga::TypeInner::Struct { members, .. } = &ty.inner else {
+        panic!("a struct");
+    };
+    let offsets: Vec<(String, u32)> = members
+        .iter()
+        .map(|m| (m.name.clone().unwrap(), m.offset))
+        .collect();
+    assert_eq!(
+        offsets,
+        [
+            ("c".to_string(), interface::FLOATS_OFFSET),
+            ("i".to_string(), interface::INTS_OFFSET),
+            ("b".to_string(), interface::BOOLS_OFFSET),
+            ("s".to_string(), interface::SAMPLERS_OFFSET),
+        ]
+    );
+    assert_eq!(layouter[handle].size, interface::CONSTANTS_SIZE);
+}
+
+/// The header names the source, the rules, and where the shader's
+/// constants, sampler, input and output are bound.
+#[test]
+fn the_header_says_what_an_application_binds() {
+    let b = ps30::jobs::bundled::CORRECTED_LOOP;
+    let shader = load(b.path, b.text);
+    let t = translate::translate(&shader, FloatRules::Ieee, Entry::Application).unwrap();
+    let h = header::comment(b.path, &t, Target::Glsl);
+    for want in [
+        "asm/corrected/lum_pass1_loop.psh: Direct3D 9 ps_3_0, translated by ps30 to GLSL 4.50 core",
+        "float rules: ieee",
+        "this shader reads c0, c1, c3",
+        "reads i1, i2",
+        "binding 1: s0's texture (2D), binding 2: its sampler",
+        "@location(0): v0 (dcl_texcoord0)",
+        "@location(0) out: oC0",
+    ] {
+        assert!(h.contains(want), "missing `{want}` in\n{h}");
+    }
+    assert!(h.lines().all(|l| l.is_empty() || l.starts_with("//")));
+}
+
+/// The translation writes the extra code a rule needs only under that
+/// rule: `-FLT_MAX` for log(0) appears in d3d9's WGSL, not in ieee's.
+#[test]
+fn rules_add_code_only_where_they_differ() {
+    let shader = load(
+        "log",
+        "ps_3_0\ndcl_texcoord0 v0\nlog r0, v0.x\nmov oC0, r0\n",
+    );
+    let wgsl = |rules| {
+        let t = translate::translate(&shader, rules, Entry::Application).unwrap();
+        match translate::write(&t, Target::Wgsl, "").unwrap() {
+            Written::Text(s) => s,
+            Written::Binary(_) => unreachable!(),
+        }
+    };
+    let flt_max = "-340282350000000000000000000000000000000f";
+    assert!(wgsl(FloatRules::D3d9).contains(flt_max));
+    assert!(!wgsl(FloatRules::Ieee).contains(flt_max));
+    assert!(wgsl(FloatRules::Ieee).contains("log2("));
+}
+
+/// Every generated shader (asm/generated/, six frame sizes) translates too.
+#[test]
+fn every_generated_shader_translates() {
+    let set = ps30::jobs::gen::set::generated_set().unwrap();
+    for (path, text) in &set.files {
+        let shader = load(path, text);
+        let t = translate::translate(&shader, FloatRules::D3d9, Entry::Application)
+            .unwrap_or_else(|e| panic!("{path}: {e}"));
+        translate::write(&t, Target::SpirV, "").unwrap_or_else(|e| panic!("{path}: {e}"));
+    }
+}

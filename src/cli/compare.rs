@@ -14,7 +14,7 @@ use ps30::core::emu::{Draw, SamplerState};
 use ps30::core::gpu::{Gpu, TargetKind};
 use ps30::core::image::{self, ImageLimits};
 use ps30::core::load;
-use ps30::jobs::compare::{self, all};
+use ps30::jobs::compare::{self, all, explain};
 use ps30::jobs::luminance::{self, block_start};
 use ps30::present::compare as show;
 use std::path::PathBuf;
@@ -110,27 +110,35 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         };
         let (p1, p2) = (shader_source(&args.pass1)?, shader_source(&args.pass2)?);
         let c = {
-            let _s = ui.spinner("running both passes on both backends");
-            compare::compare_luminance(&gpu, (&name, &img), &p1, None, &p2, &settings)?
+            let _s = ui.spinner("running both passes on both backends, and the probes");
+            let mut c = compare::compare_luminance(&gpu, (&name, &img), &p1, None, &p2, &settings)?;
+            c.explanation = Some(explain::luminance(&c, &compare::probe::run(&gpu)?));
+            c
         };
         if args.json {
             print_json(&show::luminance_json(gpu.info(), &c))?;
         } else {
             say(ui, &show::luminance_text(&c))?;
         }
-        return Ok(Outcome::from_ok(c.gpu_agrees == c.emulator_agrees));
+        return Ok(Outcome::from_ok(
+            c.explanation.as_ref().is_some_and(|e| !e.finding),
+        ));
     }
     if args.tonemap {
         let c = {
-            let _s = ui.spinner("tone mapping on both backends");
-            all::compare_tonemap(&gpu, &name, &img)?
+            let _s = ui.spinner("tone mapping on both backends, and the probes");
+            let mut c = all::compare_tonemap(&gpu, &name, &img)?;
+            c.explanation = Some(explain::tonemap(&c, &compare::probe::run(&gpu)?));
+            c
         };
         if args.json {
             print_json(&show::tonemap_json(gpu.info(), &c))?;
         } else {
             say(ui, &show::tonemap_text(&c))?;
         }
-        return Ok(Outcome::from_ok(c.gpu_within == c.emulator_within));
+        return Ok(Outcome::from_ok(
+            c.explanation.as_ref().is_some_and(|e| !e.finding),
+        ));
     }
     let spec = args.shader.as_deref().unwrap_or_default();
     let (tw, th) = args
@@ -179,7 +187,12 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
     let target = args
         .target_format
         .map_or(TargetKind::Raw, |f| TargetKind::Format(f.into()));
-    let c = compare::compare_draw(&gpu, &loaded, &draw, target, None)?;
+    let c = {
+        let _s = ui.spinner("drawing on both backends, and the probes");
+        let mut c = compare::compare_draw(&gpu, &loaded, &draw, target, None)?;
+        c.explanation = Some(explain::draw(&c, &compare::probe::run(&gpu)?));
+        c
+    };
     if args.json {
         print_json(&show::draw_json(gpu.info(), &c))?;
     } else {
