@@ -10,9 +10,10 @@
 //!                                                                              │
 //!                         ┌────────────────────┬────────────────────────────────┤
 //!                         ▼                    ▼                                ▼
-//!                    cost model      emulator (micro-ops,                  asm printer
-//!                 (slots, executed,   64 lanes = 16 quads)
-//!                  loop breakdown)           │
+//!                    cost model      emulator (micro-ops,    naga lowering ──▶ WGSL, SPIR-V, GLSL,
+//!                 (slots, executed,   64 lanes = 16 quads)      │          HLSL, MSL; asm printer
+//!                  loop breakdown)           │  float rules     ▼
+//!                                            │           GPU backend (wgpu, Vulkan)
 //!                                            ▼
 //!         images ──▶ render targets (R32F / A16B16G16R16F) ──▶ luminance pipeline ──▶ cross-check
 //!                                                                                 vs f64 reference
@@ -23,7 +24,8 @@
 //!
 //! * [`core`](mod@core) — the stages every job shares: the instruction table
 //!   and IR, the front end and printer, validation, the cost model, the
-//!   emulator and images;
+//!   emulator, the float rules, the translation to naga (WGSL, SPIR-V,
+//!   GLSL, HLSL, MSL), the GPU backend (wgpu, Vulkan) and images;
 //! * [`jobs`] — what ps30 does with them: the luminance pipeline with its
 //!   reference, tone mapping, profiling, the generator and planner, scenes,
 //!   the article's claims, and the draws of the conformance corpus;

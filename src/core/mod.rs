@@ -5,8 +5,10 @@
 //! in naga: the [`front`] end reads text into an AST and expands
 //! REPEAT_BLOCK, [`valid`] lowers it and checks the ps_3_0 rules into an
 //! [`ir::Shader`], and [`load`] runs the three in one call. The [`cost`]
-//! model and the [`emu`]lator take a validated shader; [`image`] reads and
-//! writes the pixels they work on. [`diag`] renders every stage's errors,
+//! model and the [`emu`]lator take a validated shader, and so does the
+//! [`translate`]ion to a naga module, which the [`gpu`] backend draws on a
+//! Vulkan device; the emulator and the translation compute by the same
+//! [`float_rules`]. [`image`] reads and writes the pixels they work on. [`diag`] renders every stage's errors,
 //! [`numbers`] formats figures the same way everywhere, and [`output`] writes
 //! files atomically. Nothing here imports from `jobs` or `present`.
 

@@ -82,6 +82,13 @@ impl Probe {
     }
 }
 
+/// One evaluation order of a probe's formula, in f32.
+type Order = fn([f32; 4]) -> f32;
+
+/// A precision requirement: its text, and whether `(input, exact, result)`
+/// meets it.
+type Spec = (&'static str, fn([f32; 4], f64, f32) -> bool);
+
 /// A probe's definition.
 struct Def {
     instruction: &'static str,
@@ -90,7 +97,7 @@ struct Def {
     /// The exact result (f64), when it is a number.
     exact: fn([f32; 4]) -> f64,
     /// Alternative evaluation orders of the same formula, in f32.
-    orders: &'static [(&'static str, fn([f32; 4]) -> f32)],
+    orders: &'static [(&'static str, Order)],
     /// c0 for the probe (set by the application).
     c0: [f32; 4],
     /// Lines the shader adds before the instruction (a `def`).
@@ -104,7 +111,7 @@ struct Def {
     /// The precision Vulkan requires of the SPIR-V the translation emits
     /// (Vulkan spec, "Precision and Operation of SPIR-V Instructions"), and
     /// whether a result meets it: `(text, ok(input, exact, result))`.
-    spec: (&'static str, fn([f32; 4], f64, f32) -> bool),
+    spec: Spec,
 }
 
 /// One unit in the last place of an f32 near `x`.
@@ -117,10 +124,9 @@ fn within_ulps(exact: f64, value: f32, n: f64) -> bool {
     (value as f64 - exact).abs() <= n * ulp(exact)
 }
 
-const CORRECTLY_ROUNDED: (&str, fn([f32; 4], f64, f32) -> bool) =
-    ("correctly rounded", |_, exact, v| {
-        within_ulps(exact, v, 0.5)
-    });
+const CORRECTLY_ROUNDED: Spec = ("correctly rounded", |_, exact, v| {
+    within_ulps(exact, v, 0.5)
+});
 
 /// A small deterministic generator (SplitMix64).
 fn mix(i: u32, k: u32) -> u64 {

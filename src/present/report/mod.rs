@@ -671,7 +671,10 @@ fn index_page(g: &Generated) -> String {
          instructions against the ps_3_0 limits |\n\
          | [tonemap.md](tonemap.md) | the article's tone-mapping operator as ps_3_0 assembly, run \
          on every bundled image ({ok} of {n} agree with the reference), with previews |\n\n\
-         Figures are in [figures/](figures/): {files}.\n",
+         Figures are in [figures/](figures/): {files}.\n\n\
+         [gpu-crosscheck.md](gpu-crosscheck.md) is not written by `verify`: `ps30 compare --all` \
+         writes it on the GPU it finds (the page names the device), every bundled shader on the \
+         emulator and on that device.\n",
         n = g.tonemap.len(),
         files = g
             .files
