@@ -181,7 +181,12 @@ pub fn run_text(image: &str, r: &LuminanceRun) -> String {
         return s;
     }
     s.push_str(&format!(
-        "L̄w: emulated {:.7}, reference {:.7} (every pixel once), relative error {:.2e}, tolerance {:.2e}: {}\n",
+        "L̄w: {} {:.7}, reference {:.7} (every pixel once), relative error {:.2e}, tolerance {:.2e}: {}\n",
+        if r.drawn_by == "emulator" {
+            "emulated"
+        } else {
+            "GPU"
+        },
         r.log_average,
         r.reference_log_average,
         r.relative_error,

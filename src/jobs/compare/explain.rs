@@ -172,9 +172,9 @@ pub fn luminance(c: &LuminanceComparison, probes: &[Probe]) -> Explanation {
             finding: false,
             device: true,
             text: format!(
-                "device: {} block sums beyond ±65,504 are stored in the f16 target as ±65,504 (the device rounds \
-                 toward zero, which Vulkan allows for colour attachments), where the emulator and Direct3D 9's \
-                 round-to-nearest store ±∞ (the finite sums differ by up to {} ulp, one half-step, for the same reason); so L̄w is {:.4} × the true value on the device and {:.4} × on the \
+                "{} block sums beyond ±65,504 are stored in the f16 target as ±65,504 (the device rounds \
+                 toward zero, which Vulkan allows for colour attachments), where the emulator rounds to nearest (the \
+                 Direct3D 10 rule; Direct3D 9 does not say) and stores ±∞ (the finite sums differ by up to {} ulp, one half-step, for the same reason); so L̄w is {:.4} × the true value on the device and {:.4} × on the \
                  emulator — finding 3 (an f16 target cannot hold the sums) holds on both, with a different wrong \
                  answer",
                 thousands(c.blocks.f16_saturations),
@@ -299,9 +299,6 @@ pub fn draw(c: &DrawComparison, probes: &[Probe]) -> Explanation {
         || (flushed > 0 && !flushes_subnormals(probes));
     let device = flushed > 0 && !finding;
     let mut text = parts.join("; ");
-    if device {
-        text = format!("device: {text}");
-    }
     if finding {
         text = format!(
             "FINDING: {text} ({} NaN/∞ on one side only, {} pixels killed on one side only)",
