@@ -100,6 +100,17 @@ pub fn run(
 ) -> Result<GpuOutput, GpuError> {
     let compiled = emu::compile(shader).map_err(GpuError::Draw)?;
     emu::check(&compiled, draw).map_err(GpuError::Draw)?;
+    if let Some(d) = shader
+        .program()
+        .samplers
+        .iter()
+        .find(|d| d.ty != crate::core::isa::SamplerType::Tex2d)
+    {
+        return Err(GpuError::Draw(emu::EmuError::UnsupportedSampler {
+            sampler: d.index,
+            ty: d.ty,
+        }));
+    }
     let (w, h) = (draw.target_width, draw.target_height);
     let max = gpu.limits.max_texture_dimension_2d;
     if w > max || h > max {
@@ -268,6 +279,9 @@ pub fn run(
     }
     if let Some(e) = pollster::block_on(validation.pop()) {
         return Err(GpuError::Failed(e.to_string()));
+    }
+    if let Some(e) = gpu.uncaptured.lock().ok().and_then(|mut e| e.take()) {
+        return Err(GpuError::Failed(e));
     }
     Ok(assemble(w, h, &iface, targets, &readbacks, data))
 }

@@ -65,6 +65,9 @@ impl DeviceInfo {
 /// An open device.
 pub struct Gpu {
     pub(crate) device: wgpu::Device,
+    /// An error wgpu reported outside the error scopes of a draw (wgpu's
+    /// default would panic); `run` returns it as [`GpuError::Failed`].
+    pub(crate) uncaptured: std::sync::Arc<std::sync::Mutex<Option<String>>>,
     pub(crate) queue: wgpu::Queue,
     pub(crate) features: wgpu::Features,
     pub(crate) limits: wgpu::Limits,
@@ -136,9 +139,17 @@ impl Gpu {
             ..Default::default()
         }))
         .map_err(|e| GpuError::Device(e.to_string()))?;
+        let uncaptured = std::sync::Arc::new(std::sync::Mutex::new(None));
+        let sink = uncaptured.clone();
+        device.on_uncaptured_error(std::sync::Arc::new(move |e: wgpu::Error| {
+            if let Ok(mut slot) = sink.lock() {
+                slot.get_or_insert_with(|| e.to_string());
+            }
+        }));
         let a = adapter.get_info();
         Ok(Gpu {
             device,
+            uncaptured,
             queue,
             features,
             limits,
