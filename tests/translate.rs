@@ -154,3 +154,45 @@ fn every_generated_shader_translates() {
         translate::write(&t, Target::SpirV, "").unwrap_or_else(|e| panic!("{path}: {e}"));
     }
 }
+
+/// Implicit derivatives in flow control that may differ between a quad's
+/// pixels turn WGSL's `derivative_uniformity` off and say where; the same
+/// sampling under a constant `if b#` or in straight-line code does not.
+#[test]
+fn derivatives_under_divergent_flow_are_named() {
+    let translate = |name: &str, body: &str| {
+        let text = format!("ps_3_0\ndcl_texcoord0 v0.xy\ndcl_2d s0\n{body}mov oC0, r0\n");
+        let shader = load(name, &text);
+        translate::translate(&shader, FloatRules::D3d9, Entry::Application)
+            .unwrap_or_else(|e| panic!("{name}: {e}"))
+    };
+    let divergent = translate(
+        "divergent",
+        "mov r0, c0\nif_gt v0.x, c0.x\ntexld r0, v0, s0\nendif\n",
+    );
+    assert!(divergent.derivative_uniformity_off);
+    assert!(
+        divergent
+            .notes
+            .iter()
+            .any(|n| n.contains("instruction 3, `texld`")),
+        "{:?}",
+        divergent.notes
+    );
+    let Written::Text(wgsl) = translate::write(&divergent, Target::Wgsl, "").unwrap() else {
+        panic!("WGSL is text")
+    };
+    assert!(
+        wgsl.contains("diagnostic(off, derivative_uniformity)"),
+        "{wgsl}"
+    );
+
+    let by_constant = translate("constant", "mov r0, c0\nif b0\ntexld r0, v0, s0\nendif\n");
+    assert!(
+        !by_constant.derivative_uniformity_off,
+        "{:?}",
+        by_constant.notes
+    );
+    let straight = translate("straight", "texld r0, v0, s0\n");
+    assert!(!straight.derivative_uniformity_off, "{:?}", straight.notes);
+}

@@ -29,10 +29,15 @@
 //! `derivative_uniformity` diagnostic is off. ps30 keeps the derivative
 //! where the shader has it (moving it out of the branch would change what
 //! the shader computes where flow is uniform) and, when naga's uniformity
-//! analysis rejects the module, turns that diagnostic off for the module
-//! and says so in [`Translation::notes`] and in the header. Loops count
-//! here: naga cannot prove a loop counter uniform, so a `texld` inside any
-//! `rep` needs the directive even when every pixel runs the same count.
+//! analysis rejects the module or ps30's own look at the shader finds a
+//! derivative under `if` on p0 or a comparison, in a loop a `break` can
+//! leave, or in a subroutine called from such a place (naga's analysis does
+//! not follow private variables, which other WGSL compilers treat as
+//! varying), turns that diagnostic off for the module and says so, naming
+//! the first such instruction, in [`Translation::notes`] and in the header.
+//! Loops count here: naga cannot prove a loop counter uniform, so a `texld`
+//! inside any `rep` needs the directive even when every pixel runs the
+//! same count.
 
 mod builder;
 mod flow;
@@ -170,18 +175,29 @@ pub fn translate(
     module::entry_point(&mut module, &cx, &interface, main, entry);
 
     let mut notes = Vec::new();
+    // naga's analysis does not follow private variables, which WGSL's
+    // uniformity rules treat as varying per pixel: ps30 also looks for
+    // itself (see `divergent_derivative`).
+    let at_risk = divergent_derivative(shader);
     let strict = validate(&module);
-    let (info, off) = match strict {
-        Ok(info) => (info, false),
-        Err(_) => {
+    let (info, off) = match (strict, at_risk) {
+        (Ok(info), None) => (info, false),
+        (_, at) => {
             derivative_uniformity_off(&mut module);
             let info = validate(&module).map_err(TranslateError::Invalid)?;
-            notes.push(
-                "implicit derivatives (texld, texldp, texldb, dsx, dsy) sit in flow control WGSL cannot prove uniform; \
-                 the module turns WGSL's derivative_uniformity diagnostic off, and where a quad's pixels do diverge the \
-                 result is undefined, as in Direct3D 9 (ps30 profile and the emulator's gradient findings say where)"
-                    .to_string(),
-            );
+            let place = at.map_or(String::new(), |i| {
+                format!(
+                    " (the first at instruction {}, `{}`)",
+                    i + 1,
+                    shader.instructions()[i].op
+                )
+            });
+            notes.push(format!(
+                "implicit derivatives (texld, texldp, texldb, dsx, dsy) sit in flow control that may differ between \
+                 the pixels of a quad{place}; the module turns WGSL's derivative_uniformity diagnostic off, and where a \
+                 quad's pixels do diverge the result is undefined, as in Direct3D 9 (ps30 profile and the emulator's \
+                 gradient findings say where)"
+            ));
             (info, true)
         }
     };
@@ -194,6 +210,72 @@ pub fn translate(
         derivative_uniformity_off: off,
         notes,
     })
+}
+
+/// The first implicit-derivative instruction (texld, texldp, texldb, dsx,
+/// dsy) that may run with part of a quad: inside an `if` on p0 or on a
+/// comparison, inside a rep/loop that a `break` can leave early, or in a
+/// subroutine called from such a place or by `callnz p0`. (`if b#` and
+/// loop counts come from constants, the same for every pixel.)
+fn divergent_derivative(shader: &Shader) -> Option<usize> {
+    use crate::core::isa::{Opcode as O, RegFile};
+    let ins = shader.instructions();
+    let info = shader.info();
+    let owner = |i: usize| -> Option<u32> {
+        info.labels
+            .iter()
+            .filter(|(_, &at)| at as usize <= i)
+            .max_by_key(|(_, &at)| at)
+            .map(|(&l, _)| l)
+    };
+    let mut divergent_labels = std::collections::BTreeSet::new();
+    // Repeat until no new label is found divergent (call depth ≤ 4).
+    for _ in 0..8 {
+        let mut stack: Vec<bool> = Vec::new();
+        for (i, x) in ins.iter().enumerate() {
+            let in_divergent_fn = owner(i).is_some_and(|l| divergent_labels.contains(&l));
+            let divergent = in_divergent_fn || stack.iter().any(|&d| d);
+            match x.op {
+                O::If => stack.push(
+                    x.src
+                        .first()
+                        .is_none_or(|s| s.reg.file != RegFile::ConstBool),
+                ),
+                O::Ifc => stack.push(true),
+                O::Rep | O::Loop => {
+                    let end = info
+                        .matching
+                        .get(i)
+                        .copied()
+                        .flatten()
+                        .map_or(i, |m| m as usize);
+                    stack.push(
+                        ins[i..end]
+                            .iter()
+                            .any(|y| matches!(y.op, O::Break | O::BreakC | O::BreakP)),
+                    );
+                }
+                O::EndIf | O::EndRep | O::EndLoop => {
+                    stack.pop();
+                }
+                O::Label => stack.clear(),
+                O::Call | O::CallNz => {
+                    let pred = x.op == O::CallNz
+                        && x.src
+                            .get(1)
+                            .is_some_and(|s| s.reg.file == RegFile::Predicate);
+                    if divergent || pred {
+                        if let Some(l) = x.src.first() {
+                            divergent_labels.insert(l.reg.index);
+                        }
+                    }
+                }
+                O::TexLd | O::TexLdP | O::TexLdB | O::Dsx | O::Dsy if divergent => return Some(i),
+                _ => {}
+            }
+        }
+    }
+    None
 }
 
 /// The key of `main` among the lowered functions (labels are 0..2047).
