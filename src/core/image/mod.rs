@@ -24,7 +24,7 @@ pub use mip::{full_chain_levels, MipChain};
 pub use openexr::write_exr;
 pub use pfm::write_pfm;
 pub use png::write_png_rgb8;
-pub use target::{RenderTarget, TargetFormat, Texture};
+pub use target::{unorm8, unorm8_value, Encoding, RenderTarget, TargetFormat, Texture};
 
 use std::fs::File;
 use std::io::{BufReader, BufWriter, Read, Seek};
