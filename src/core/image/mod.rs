@@ -20,7 +20,7 @@ mod radiance;
 mod target;
 
 pub use error::{ForeignError, ImageError};
-pub use mip::{full_chain_levels, MipChain};
+pub use mip::{chain_weights, full_chain_levels, side_taps, MipChain, OddSides};
 pub use openexr::write_exr;
 pub use pfm::write_pfm;
 pub use png::write_png_rgb8;

@@ -297,8 +297,8 @@ pub fn write_exr(path: &Path, target: &RenderTarget) -> Result<(), ImageError> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::core::image::TargetFormat;
     use crate::core::image::load;
+    use crate::core::image::TargetFormat;
 
     fn load_default(path: &Path) -> Result<HdrImage, ImageError> {
         load(path, &ImageLimits::default())

@@ -209,8 +209,8 @@ pub fn write_pfm(path: &Path, target: &RenderTarget) -> Result<(), ImageError> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::core::image::TargetFormat;
     use crate::core::image::load;
+    use crate::core::image::TargetFormat;
     use std::path::PathBuf;
 
     /// A PFM file from its header text and samples, rows given in FILE order

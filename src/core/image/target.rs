@@ -63,6 +63,19 @@ impl Encoding {
     }
 }
 
+impl Encoding {
+    /// [`Encoding::store`] of a value computed in f64, rounded once (no
+    /// detour through f32, which could round twice).
+    pub fn store_f64(self, c: f64) -> f32 {
+        match self {
+            Encoding::Unorm8 if c.is_nan() => 0.0,
+            Encoding::Unorm8 => unorm8_value((c.clamp(0.0, 1.0) * 255.0 + 0.5).floor() as u8),
+            Encoding::Half => f16::from_f64(c).to_f32(),
+            Encoding::Float => c as f32,
+        }
+    }
+}
+
 /// Direct3D 10's FLOAT → UNORM conversion for 8 bits: NaN → 0, clamp to
 /// [0, 1], scale by 255, add ½ and drop the fraction (computed exactly).
 pub fn unorm8(c: f32) -> u8 {
@@ -139,7 +152,26 @@ impl TargetFormat {
     /// [`Encoding::store`], the others read as 1 (see the module docs).
     pub fn round(self, value: [f32; 4]) -> [f32; 4] {
         let e = self.encoding();
-        std::array::from_fn(|c| if self.stores(c) { e.store(value[c]) } else { 1.0 })
+        std::array::from_fn(|c| {
+            if self.stores(c) {
+                e.store(value[c])
+            } else {
+                1.0
+            }
+        })
+    }
+
+    /// [`TargetFormat::round`] of a value computed in f64, each stored
+    /// channel rounded once ([`Encoding::store_f64`]).
+    pub fn round_f64(self, value: [f64; 4]) -> [f32; 4] {
+        let e = self.encoding();
+        std::array::from_fn(|c| {
+            if self.stores(c) {
+                e.store_f64(value[c])
+            } else {
+                1.0
+            }
+        })
     }
 
     /// The D3D9 name of the format.

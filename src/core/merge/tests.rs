@@ -172,7 +172,10 @@ fn unorm8_blends_on_clamped_sources_and_quantises_the_result() {
     }
     // The source is clamped to [0, 1] before blending: 3 × 0.5 counts as 1.
     let b = eq(DestColor, Zero, Add);
-    assert_eq!(codes(b.apply(f, [3.0, -1.0, f32::NAN, 0.5], d)), [32, 0, 0, 32]);
+    assert_eq!(
+        codes(b.apply(f, [3.0, -1.0, f32::NAN, 0.5], d)),
+        [32, 0, 0, 32]
+    );
     // Additive accumulation saturates at 1.
     let add = BlendState::with(Equation::ADDITIVE);
     assert_eq!(codes(add.apply(f, [0.75; 4], [0.75; 4])), [255; 4]);
