@@ -16,6 +16,7 @@ pub mod bundled;
 pub mod gen;
 pub mod luminance;
 pub mod profile;
+pub mod render;
 pub mod scenes;
 pub mod tonemap;
 pub mod verify;

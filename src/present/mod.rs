@@ -6,6 +6,7 @@ pub mod check;
 pub mod luminance;
 pub mod plan;
 pub mod profile;
+pub mod render;
 pub mod report;
 pub mod tonemap;
 pub mod unroll;
