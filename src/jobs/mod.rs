@@ -18,5 +18,6 @@ pub mod luminance;
 pub mod profile;
 pub mod render;
 pub mod scenes;
+pub mod studies;
 pub mod tonemap;
 pub mod verify;

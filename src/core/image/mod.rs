@@ -24,7 +24,9 @@ pub use mip::{chain_weights, full_chain_levels, side_taps, MipChain, OddSides};
 pub use openexr::write_exr;
 pub use pfm::write_pfm;
 pub use png::write_png_rgb8;
-pub use target::{unorm8, unorm8_value, Encoding, RenderTarget, TargetFormat, Texture};
+pub use target::{
+    half_from_f64, unorm8, unorm8_value, Encoding, RenderTarget, TargetFormat, Texture,
+};
 
 use std::fs::File;
 use std::io::{BufReader, BufWriter, Read, Seek};

@@ -70,8 +70,47 @@ impl Encoding {
         match self {
             Encoding::Unorm8 if c.is_nan() => 0.0,
             Encoding::Unorm8 => unorm8_value((c.clamp(0.0, 1.0) * 255.0 + 0.5).floor() as u8),
-            Encoding::Half => f16::from_f64(c).to_f32(),
+            Encoding::Half => half_from_f64(c) as f32,
             Encoding::Float => c as f32,
+        }
+    }
+}
+
+/// `x` rounded once to the nearest half float (ties to even; from 65,520 up
+/// ±∞; NaN stays NaN), returned as the f64 it equals. `half`'s own
+/// `f16::from_f64` goes through f32 on x86 with F16C and can round twice
+/// (331.87499999999994 becomes 332, not 331.75), so ps30 rounds here.
+pub fn half_from_f64(x: f64) -> f64 {
+    if x.is_nan() || x.is_infinite() || x == 0.0 {
+        return x;
+    }
+    if x.abs() >= 65_520.0 {
+        return f64::INFINITY.copysign(x);
+    }
+    // The binade of |x| from its exponent bits (x is a normal f64 here: the
+    // smallest half subnormal is far above f64's subnormals).
+    let exponent = (((x.to_bits() >> 52) & 0x7ff) as i32 - 1023).max(-14);
+    let spacing = 2f64.powi(exponent - 10);
+    (x / spacing).round_ties_even() * spacing
+}
+
+impl Encoding {
+    /// The largest error of storing any value of magnitude at most `v`
+    /// (within the encoding's range): half a code (½/255) for 8-bit UNORM
+    /// values in [0, 1]; half the spacing of the grid at `v` for half and
+    /// single floats (the spacing only grows with the magnitude), with the
+    /// subnormal spacing as the floor; ∞ past the largest finite half.
+    pub fn max_rounding_error(self, v: f64) -> f64 {
+        let v = v.abs();
+        let half_spacing = |bits: i32, min_exp: f64| {
+            let e = if v > 0.0 { v.log2().floor() } else { min_exp }.max(min_exp);
+            (e - bits as f64).exp2() / 2.0
+        };
+        match self {
+            Encoding::Unorm8 => 0.5 / 255.0,
+            Encoding::Half if v >= 65_520.0 => f64::INFINITY,
+            Encoding::Half => half_spacing(10, -14.0),
+            Encoding::Float => half_spacing(23, -126.0),
         }
     }
 }
@@ -366,6 +405,59 @@ mod tests {
         assert_eq!(unorm8_value(255), 1.0);
         assert_eq!(unorm8_value(0), 0.0);
         assert_eq!(unorm8_value(51), 0.2);
+    }
+
+    #[test]
+    fn the_rounding_bound_holds_at_grid_ends() {
+        let h = Encoding::Half;
+        // Halves in [1, 2) are 2^-10 apart; in [2048, 4096) 2 apart.
+        assert_eq!(h.max_rounding_error(1.0), 2f64.powi(-11));
+        assert_eq!(h.max_rounding_error(1.999), 2f64.powi(-11));
+        assert_eq!(h.max_rounding_error(3000.0), 1.0);
+        assert_eq!(
+            h.max_rounding_error(1e-9),
+            2f64.powi(-25),
+            "subnormal spacing 2^-24"
+        );
+        assert_eq!(h.max_rounding_error(0.0), 2f64.powi(-25));
+        assert_eq!(h.max_rounding_error(70_000.0), f64::INFINITY);
+        assert_eq!(Encoding::Float.max_rounding_error(1.5), 2f64.powi(-24));
+        assert_eq!(Encoding::Unorm8.max_rounding_error(0.3), 0.5 / 255.0);
+        // And it does bound the real rounding, on a sweep of values.
+        for i in 1..2000 {
+            let v = i as f64 * 0.731 + 1e-3;
+            let stored = half_from_f64(v);
+            assert!((stored - v).abs() <= h.max_rounding_error(v), "{v}");
+        }
+    }
+
+    #[test]
+    fn half_from_f64_rounds_once() {
+        // Just below the tie 331.875 between the halves 331.75 and 332.
+        let below = f64::from_bits(331.875f64.to_bits() - 1);
+        assert_eq!(half_from_f64(below), 331.75);
+        assert_eq!(
+            half_from_f64(331.875),
+            332.0,
+            "the tie goes to the even 332"
+        );
+        assert_eq!(half_from_f64(2049.0), 2048.0);
+        assert_eq!(half_from_f64(2051.0), 2052.0);
+        assert_eq!(half_from_f64(65_519.99), 65_504.0);
+        assert_eq!(half_from_f64(65_520.0), f64::INFINITY);
+        assert_eq!(half_from_f64(-70_000.0), f64::NEG_INFINITY);
+        assert_eq!(
+            half_from_f64(3f64 * 2f64.powi(-26)),
+            2f64.powi(-24),
+            "1.5 subnormal steps → 2 (even)"
+        );
+        assert_eq!(half_from_f64(2f64.powi(-26)), 0.0);
+        assert!(half_from_f64(f64::NAN).is_nan());
+        // Agrees with the f32 path wherever f32 holds the value exactly.
+        for i in 0..5000u32 {
+            let v = (i as f32 * 0.37 + 0.001) * if i % 2 == 0 { 1.0 } else { -1.0 };
+            assert_eq!(half_from_f64(v as f64), f16::from_f32(v).to_f64(), "{v}");
+        }
     }
 
     #[test]

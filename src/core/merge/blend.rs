@@ -40,7 +40,8 @@
 //!   has increased to 0.5 ULP", Direct3D 10.1 Features), the closest public
 //!   definition. The shader's f32 output is first converted to half, as the
 //!   target would store it. Computed in f64, where a product or sum of two
-//!   halves is exact, then rounded once to half.
+//!   halves is exact, then rounded once to half
+//!   ([`crate::core::image::half_from_f64`]).
 //! * single-float targets: every operation in f32 (IEEE).
 //! * 8-bit UNORM targets: the source is clamped to [0, 1] (NaN to 0), the
 //!   operations run in f32, and the result is clamped and quantised once, on
@@ -283,7 +284,7 @@ impl Precision {
     /// `x` rounded to the working precision.
     fn round(self, x: f64) -> f64 {
         match self {
-            Precision::Half => f16::from_f64(x).to_f64(),
+            Precision::Half => crate::core::image::half_from_f64(x),
             Precision::Single | Precision::Unorm => x as f32 as f64,
         }
     }

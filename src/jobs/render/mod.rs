@@ -310,10 +310,12 @@ fn draw(
                 }
                 .into()
             }
-            Source::Target(t) if t == d.target => return Err(DrawFailure::Message(format!(
+            Source::Target(t) if t == d.target => {
+                return Err(DrawFailure::Message(format!(
                 "s{s} samples `{}`, the target this draw renders to (Direct3D 9 does not allow it)",
                 spec.name
-            ))),
+            )))
+            }
             Source::Target(t) => match &states[t].mips {
                 Some(chain) => chain.into(),
                 None => states[t].target.as_texture().into(),
