@@ -8,6 +8,7 @@ pub mod plan;
 pub mod profile;
 pub mod render;
 pub mod report;
+pub mod study;
 pub mod tonemap;
 pub mod unroll;
 pub mod verify;

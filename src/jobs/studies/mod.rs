@@ -13,5 +13,6 @@
 //! Each returns plain data; `crate::present::study` prints it and writes
 //! its report page.
 
+pub mod article_chain;
 pub mod log_lights;
 pub mod mip_luminance;
