@@ -562,13 +562,15 @@ impl Resolver {
             let field = format!("{at}.samplers.{name}");
             let reg = register(name, 's', 16).map_err(|m| self.err(&field, m))?;
             let source = match self.list.target(&fs.texture) {
-                Some(t) if t == target => return Err(self.err(
-                    &format!("{field}.texture"),
-                    format!(
+                Some(t) if t == target => {
+                    return Err(self.err(
+                        &format!("{field}.texture"),
+                        format!(
                         "`{}` is the target this draw renders to (Direct3D 9 does not allow it)",
                         fs.texture
                     ),
-                )),
+                    ))
+                }
                 Some(t) => Source::Target(t),
                 None => Source::Texture(
                     self.list
