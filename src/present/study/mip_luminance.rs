@@ -257,6 +257,16 @@ pub fn page(s: &Study) -> Page {
     let crop_bilinear = crop
         .and_then(|f| f.bilinear.as_ref())
         .map_or(0.0, |r| r.relative_error);
+    // Per uncropped frame: |mip error| / |article error| with the default range.
+    let ratios = s
+        .frames
+        .iter()
+        .filter(|f| !f.image.contains("cropped"))
+        .filter_map(|f| {
+            let r = f.runs.iter().find(|r| r.range == ODD_RANGE)?;
+            Some(r.relative_error.abs() / f.article.relative_error.abs())
+        })
+        .fold((f64::INFINITY, 0f64), |(lo, hi), v| (lo.min(v), hi.max(v)));
     let narrow = s
         .frames
         .iter()
@@ -276,16 +286,17 @@ pub fn page(s: &Study) -> Page {
          the true L̄w (f64, δ = {delta}, every pixel once) and with the article's two passes.\n\n\
          ## In numbers\n\n\
          * **Against the article.** With {range} the mips are off by {m0} to {m1} on the bundled frames; \
-           the article's two passes by {a0:.1e} to {a1:.1e}, three orders of magnitude closer.\n\
+           the article's two passes by {a0:.1e} to {a1:.1e}: {r0:.0} to {r1:.0} times closer, frame by \
+           frame.\n\
          * **8-bit steps.** One code is (min + max)/255 stops: 16/255 = 0.063 stops = 4.4 % of L̄w for \
            {range}. The quantisation bound is (n + 1) half-codes for n levels after the base \
            (derivation in `src/jobs/studies/mip_luminance.rs`): 5.5 codes for an 11-level chain. \
-           Measured: {q0:+.2} to {q1:+.2} codes{drift}.\n\
+           Measured: {q0:+.2} to {q1:+.2} codes{drift}.\n  \
            A wider range holds more of the scene but makes each code coarser; a narrower one clamps: \
            with [2^−4, 2^4] the error reaches {narrow}.\n\
          * **Odd sides.** 1280 = 5 · 256: the chain of the article's frame ends 5 → 2 → 1, and the \
-           3-wide box at the edge gives the last three fifths of the columns weight ⅙ each where the \
-           first two get ¼. On `{SWEEP_IMAGE}` that alone moves L̄w by {odd_effect}. Cropped to \
+           3-wide box at the edge gives each of the last three fifths of the columns ⅙ of the weight \
+           and each of the first two fifths ¼. On `{SWEEP_IMAGE}` that alone moves L̄w by {odd_effect}. Cropped to \
            {cw}×{ch} (odd sides at {odd_sides}), the folded chain is off by {crop_fold}, \
            and a chain made by bilinear half-size draws — what D3DTEXF_LINEAR, the default \
            automatic-generation filter, does if a driver draws each level — by {crop_bilinear}: its \
@@ -314,6 +325,8 @@ pub fn page(s: &Study) -> Page {
         } else {
             ""
         },
+        r0 = ratios.0,
+        r1 = ratios.1,
         odd_effect = percent(odd_effect),
         cw = CROPS[0].0,
         ch = CROPS[0].1,
