@@ -130,13 +130,13 @@ fn half_targets_round_every_blend_operation_to_half() {
     // Products round too: the blend factor 51/255 = 0.2 is the half
     // 0.199951171875; 0.75 × that = 0.14996337890625 = 1228.5 steps of 2⁻¹³,
     // a tie that goes to the even 1228 · 2⁻¹³ = 0.14990234375. In single
-    // floats the same blend gives f32(0.75 · f32(0.2)) = 0.15000000596.
+    // floats the same blend gives f32(0.75 · f32(0.2)) = 0.15000000596 = f32(0.15).
     let mut b = eq(BlendFactor::Constant, BlendFactor::Zero, BlendOp::Add);
     b.factor = [51; 4];
     assert_eq!(b.apply(f, [0.75; 4], D)[0], 0.149_902_34);
     assert_eq!(
         b.apply(TargetFormat::A32B32G32R32F, [0.75; 4], D)[0],
-        0.150_000_01
+        0.15
     );
     // 1 − x rounds: 0.1 as a half is 0.0999755859375; 1 − that =
     // 0.9000244140625 lies between the halves 0.89990234375 and 0.900390625

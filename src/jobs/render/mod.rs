@@ -3,7 +3,7 @@
 //! mip-chain reductions between them, so that N lights can accumulate into
 //! one target and a later draw can read the result. It is what the
 //! article's lighting phase and its alternatives need, and what `ps30
-//! render` runs from a file a user writes ([`file`]).
+//! render` runs from a file a user writes ([`file`](mod@file)).
 //!
 //! A [`DrawList`] is plain data: named targets (size and D3D9 format),
 //! named textures (loaded images or synthetic inputs), and [`Step`]s. Every
