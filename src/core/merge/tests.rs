@@ -134,10 +134,7 @@ fn half_targets_round_every_blend_operation_to_half() {
     let mut b = eq(BlendFactor::Constant, BlendFactor::Zero, BlendOp::Add);
     b.factor = [51; 4];
     assert_eq!(b.apply(f, [0.75; 4], D)[0], 0.149_902_34);
-    assert_eq!(
-        b.apply(TargetFormat::A32B32G32R32F, [0.75; 4], D)[0],
-        0.15
-    );
+    assert_eq!(b.apply(TargetFormat::A32B32G32R32F, [0.75; 4], D)[0], 0.15);
     // 1 − x rounds: 0.1 as a half is 0.0999755859375; 1 − that =
     // 0.9000244140625 lies between the halves 0.89990234375 and 0.900390625
     // (steps of 2⁻¹¹), nearer the first.
