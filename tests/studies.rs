@@ -81,7 +81,7 @@ fn log_lights_against_raw_and_half_accumulation() {
         );
     }
     // K overlapping lights of brightness 1: 8 of them reach 7.996, past the
-    // log buffer's range (its products fall within two codes of 0).
+    // log buffer's range (its products fall to one code or less).
     let k8 = find(&s.overlaps, Method::LogRgba8, 8, 1.0);
     assert!(k8.range_ends_at.is_some_and(|e| e < 8.0));
     assert!(find(&s.overlaps, Method::LogRgba8, 4, 1.0)

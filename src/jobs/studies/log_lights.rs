@@ -17,7 +17,7 @@
 //!
 //! Each method's recovered value is compared with the true sum within a
 //! bound derived from its arithmetic; a pixel past the method's range (raw
-//! RGBA8 above 1; a log buffer whose product falls below half a code) is
+//! RGBA8 above 1; a log buffer whose product falls to one code or less) is
 //! counted as out of range instead. u = 2⁻²⁴ (f32), q = ½/255 (half an 8-bit
 //! code), and each light's f32 value `b · u(x)` is off by at most u of itself.
 //!
@@ -38,8 +38,8 @@
 //!   x = q·2^(Sₖ + Eₖ₋₁)/(1 − ρ), and the relative roundings by −log2(1 − ρ):
 //!   Eₖ = Eₖ₋₁ + u·ℓₖ − log2(1 − ρ) − log2(1 − x). Reading the code back as
 //!   f32 adds −log2(1 − u), and the recovery's `log` 2⁻²¹ of its result.
-//!   When x ≥ ½ the pixel is out of range (the product is within two codes
-//!   of 0; at code 0 the recovery gives FLT_MAX).
+//!   When x ≥ ½ the pixel is out of range (the product is at most one code,
+//!   1/255; at code 0 the recovery gives FLT_MAX).
 
 use crate::core::image::TargetFormat;
 use crate::core::merge::{BlendFactor, BlendOp, BlendState, ColorWrite, Equation, OutputState};

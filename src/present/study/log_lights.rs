@@ -211,7 +211,7 @@ pub fn page(s: &Study) -> Page {
          holds every intensity from 0 to b; K lights overlap completely. Every pixel is checked against \
          a bound derived from the method's arithmetic (the module docs of \
          `src/jobs/studies/log_lights.rs`); pixels past a method's range — raw RGBA8 above 1, a log \
-         buffer within two codes of 0 — are counted as out of range instead.\n\n\
+         buffer whose product falls to one code (1/255) or less — are counted as out of range instead.\n\n\
          ## In numbers\n\n\
          * **Range.** Raw RGBA8 is right up to {raw}; log lights up to {log} — log2(255) ≈ 7.99 is the \
            last light a code (1) can hold; A16B16G16R16F beyond the {sweep} swept (its largest finite \
