@@ -71,15 +71,11 @@ pub fn load_file(path: &Path, options: &Options) -> Result<Loaded, BadInput> {
     let file = SourceFile::new(path.display().to_string(), text);
     match load::load(file, options) {
         Ok(l) => {
-            for w in &l.warnings.items {
-                w.emit(&l.file, color_stderr());
-            }
+            l.warnings.emit(&l.file, color_stderr());
             Ok(l)
         }
         Err(e) => {
-            for d in &e.diagnostics.items {
-                d.emit(&e.file, color_stderr());
-            }
+            e.diagnostics.emit(&e.file, color_stderr());
             let n = e.diagnostics.errors().count();
             Err(BadInput(format!(
                 "{}: {n} error{}",

@@ -126,9 +126,7 @@ pub fn run(args: Args, _ui: &Ui) -> super::Result {
         threads: args.threads.map(|t| t as usize),
     };
     let r = profile(&src.name, &src.text, &setup).map_err(BadInput)?;
-    for w in &r.warnings.items {
-        w.emit(&r.file, color_stderr());
-    }
+    r.warnings.emit(&r.file, color_stderr());
     if args.json {
         print_json(&to_json(&r))?;
     } else {

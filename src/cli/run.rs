@@ -51,9 +51,7 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
     let src = shader_source(&args.shader)?;
     let file = SourceFile::new(src.name.clone(), src.text);
     let loaded = load::load(file, &args.source.options()).map_err(|e| {
-        for d in &e.diagnostics.items {
-            d.emit(&e.file, color_stderr());
-        }
+        e.diagnostics.emit(&e.file, color_stderr());
         BadInput(e.to_string())
     })?;
     let img = image::load(&args.image, &args.exec.image_limits())?;

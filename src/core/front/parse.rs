@@ -8,7 +8,7 @@
 //! and all errors are returned together.
 
 use super::ast::{Count, InstrAst, OperandAst, RegAst, RelAst, Stmt};
-use crate::core::diag::{Diagnostic, Diagnostics};
+use crate::core::diag::{excerpt, Diagnostic, Diagnostics};
 use crate::core::ir::Span;
 use nom::branch::alt;
 use nom::bytes::complete::{tag_no_case, take_while, take_while1};
@@ -168,7 +168,7 @@ impl<'a> Cursor<'a> {
 
     fn found(&self) -> String {
         match self.rest.split([',', ' ', '\t']).next() {
-            Some(t) if !t.is_empty() => format!("found `{t}`"),
+            Some(t) if !t.is_empty() => format!("found `{}`", excerpt(t)),
             _ => match self.rest.chars().next() {
                 Some(c) => format!("found `{c}`"),
                 None => "found the end of the line".to_string(),
