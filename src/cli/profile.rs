@@ -4,7 +4,7 @@
 
 use super::args::{
     constants, parse_bool_const, parse_define, parse_finite, parse_float4, parse_float_const,
-    parse_int_const, parse_size, AddressArg, FilterArg, MipFilterArg,
+    parse_int_const, parse_size, AddressArg, FilterArg, InputArgs, MipFilterArg,
 };
 use super::io::{color_stderr, print, print_json, shader_source};
 use super::ui::Ui;
@@ -73,6 +73,8 @@ pub struct Args {
     /// Print JSON instead of text.
     #[arg(long)]
     json: bool,
+    #[command(flatten)]
+    input: InputArgs,
 }
 
 impl Args {
@@ -117,7 +119,7 @@ impl Args {
 /// Validator warnings to stderr, the report to stdout; exit 1 when the run
 /// found a problem.
 pub fn run(args: Args, _ui: &Ui) -> super::Result {
-    let src = shader_source(&args.shader)?;
+    let src = shader_source(&args.shader, args.input.max_input_bytes)?;
     let setup = Setup {
         input: args.input()?,
         defines: args.define.clone(),

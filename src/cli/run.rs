@@ -2,7 +2,7 @@
 
 use super::args::{
     constants, parse_float4, parse_float_const, AddressArg, ConstantArgs, ExecArgs, FilterArg,
-    FormatArg, SourceArgs,
+    FormatArg, InputArgs, SourceArgs,
 };
 use super::io::{color_stderr, print_json, say, shader_source};
 use super::ui::Ui;
@@ -45,10 +45,12 @@ pub struct Args {
     output: Option<PathBuf>,
     #[command(flatten)]
     exec: ExecArgs,
+    #[command(flatten)]
+    input: InputArgs,
 }
 
 pub fn run(args: Args, ui: &Ui) -> super::Result {
-    let src = shader_source(&args.shader)?;
+    let src = shader_source(&args.shader, args.input.max_input_bytes)?;
     let file = SourceFile::new(src.name.clone(), src.text);
     let loaded = load::load(file, &args.source.options()).map_err(|e| {
         e.diagnostics.emit(&e.file, color_stderr());

@@ -1,7 +1,7 @@
 //! `ps30 tonemap`: the article's operator, run in the emulator, into an
 //! 8-bit sRGB PNG, cross-checked pixel by pixel.
 
-use super::args::{parse_key, parse_white, ExecArgs};
+use super::args::{parse_key, parse_white, ExecArgs, InputArgs};
 use super::io::{check_output_path, print_json, say, shader_source};
 use super::ui::Ui;
 use super::Outcome;
@@ -26,13 +26,15 @@ pub struct Args {
     shader: String,
     #[command(flatten)]
     exec: ExecArgs,
+    #[command(flatten)]
+    input: InputArgs,
 }
 
 pub fn run(args: Args, ui: &Ui) -> super::Result {
     if let Some(out) = &args.output {
         check_output_path(out)?;
     }
-    let shader = shader_source(&args.shader)?;
+    let shader = shader_source(&args.shader, args.input.max_input_bytes)?;
     let img = image::load(&args.image, &args.exec.image_limits())?;
     let settings = Settings {
         key: args.key,
