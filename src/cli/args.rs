@@ -275,20 +275,23 @@ impl ProfileArgs {
 }
 
 /// Options of every command that loads an image and runs the emulator.
-#[derive(Args)]
+#[derive(Args, Debug)]
 pub struct ExecArgs {
     /// Emulator threads (default: all cores).
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..=256))]
     pub threads: Option<u32>,
     /// Refuse images with more pixels than this.
-    #[arg(long, default_value_t = 1 << 26, value_parser = clap::value_parser!(u64).range(1..))]
+    #[arg(long, value_name = "N", default_value_t = ps30::core::image::ImageLimits::MAX_PIXELS, value_parser = clap::value_parser!(u64).range(1..))]
     pub max_pixels: u64,
     /// Stop a pixel that executes more instruction slots than this.
-    #[arg(long, default_value_t = 10_000_000, value_parser = clap::value_parser!(u64).range(1..))]
+    #[arg(long, value_name = "N", default_value_t = emu::EmuLimits::MAX_EXECUTED_PER_PIXEL, value_parser = clap::value_parser!(u64).range(1..))]
     pub max_executed_per_pixel: u64,
     /// Refuse render targets with more pixels than this.
-    #[arg(long, default_value_t = 1 << 24, value_parser = clap::value_parser!(u64).range(1..))]
+    #[arg(long, value_name = "N", default_value_t = emu::EmuLimits::MAX_TARGET_PIXELS, value_parser = clap::value_parser!(u64).range(1..))]
     pub max_target_pixels: u64,
+    /// Stop a draw that executes more instruction slots than this, all pixels together.
+    #[arg(long, value_name = "N", default_value_t = emu::EmuLimits::MAX_EXECUTED_TOTAL, value_parser = clap::value_parser!(u64).range(1..))]
+    pub max_executed_total: u64,
     /// Print JSON instead of text.
     #[arg(long)]
     pub json: bool,
@@ -300,6 +303,7 @@ impl ExecArgs {
         emu::EmuLimits {
             max_executed_per_pixel: self.max_executed_per_pixel,
             max_target_pixels: self.max_target_pixels,
+            max_executed_total: self.max_executed_total,
         }
     }
 

@@ -120,12 +120,17 @@ pub struct ImageLimits {
     pub max_pixels: u64,
 }
 
+impl ImageLimits {
+    /// Default of `max_pixels`: 4 Mpixel (2048×2048, 64 MiB as RGBA f32),
+    /// three times the largest bundled image; a command on an image this
+    /// large stays within a few hundred megabytes (see the README).
+    pub const MAX_PIXELS: u64 = 1 << 22;
+}
+
 impl Default for ImageLimits {
-    /// 64 Mpixel (1 GiB as RGBA f32): far beyond the test images, far below
-    /// what a corrupt header can claim.
     fn default() -> ImageLimits {
         ImageLimits {
-            max_pixels: 1 << 26,
+            max_pixels: ImageLimits::MAX_PIXELS,
         }
     }
 }
