@@ -1,7 +1,7 @@
 //! `ps30 expand`: the shader as plain assembly with every macro expanded.
 
 use super::args::{InputArgs, SourceArgs};
-use super::io::{load_file, print, print_json};
+use super::io::{check_output_path, load_file, print, print_json};
 use super::ui::Ui;
 use super::{BadInput, Outcome};
 use ps30::core::front::print::write_program;
@@ -23,6 +23,9 @@ pub struct Args {
 }
 
 pub fn run(args: Args, _ui: &Ui) -> super::Result {
+    if let Some(path) = &args.output {
+        check_output_path(path, &[&args.file])?;
+    }
     let loaded = load_file(
         &args.file,
         &args.source.options(),

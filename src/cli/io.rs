@@ -100,21 +100,13 @@ pub fn load_file(path: &Path, options: &Options, max_bytes: u64) -> Result<Loade
     }
 }
 
-/// Refuses an output path whose directory does not exist, before any work.
-pub fn check_output_path(path: &Path) -> Result<(), BadInput> {
-    let dir = path
-        .parent()
-        .filter(|d| !d.as_os_str().is_empty())
-        .unwrap_or(Path::new("."));
-    if !dir.is_dir() {
-        return Err(BadInput(format!(
-            "{}: the directory {} does not exist",
-            path.display(),
-            dir.display()
-        )));
-    }
-    if path.is_dir() {
-        return Err(BadInput(format!("{}: is a directory", path.display())));
-    }
-    Ok(())
+/// Refuses an output file before any work, by the rules of
+/// [`ps30::core::output`] (one of them: it is not one of `inputs`).
+pub fn check_output_path(path: &Path, inputs: &[&Path]) -> Result<(), BadInput> {
+    ps30::core::output::check(path, inputs).map_err(BadInput)
+}
+
+/// Refuses an output directory before any work, by the same rules.
+pub fn check_output_dir(dir: &Path) -> Result<(), BadInput> {
+    ps30::core::output::check_directory(dir).map_err(BadInput)
 }

@@ -4,7 +4,7 @@ use super::args::{
     constants, parse_float4, parse_float_const, AddressArg, ConstantArgs, ExecArgs, FilterArg,
     FormatArg, InputArgs, SourceArgs,
 };
-use super::io::{color_stderr, print_json, say, shader_source};
+use super::io::{check_output_path, color_stderr, print_json, say, shader_source};
 use super::ui::Ui;
 use super::{BadInput, Outcome};
 use ps30::core::diag::SourceFile;
@@ -13,7 +13,7 @@ use ps30::core::image::{self, write_exr, write_pfm};
 use ps30::core::load;
 use ps30::jobs::luminance::{run_pass, PassSetup};
 use ps30::present::luminance::{pass_json, pass_text};
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 #[derive(clap::Args)]
 pub struct Args {
@@ -50,6 +50,9 @@ pub struct Args {
 }
 
 pub fn run(args: Args, ui: &Ui) -> super::Result {
+    if let Some(path) = &args.output {
+        check_output_path(path, &[&args.image, Path::new(&args.shader)])?;
+    }
     let src = shader_source(&args.shader, args.input.max_input_bytes)?;
     let file = SourceFile::new(src.name.clone(), src.text);
     let loaded = load::load(file, &args.source.options()).map_err(|e| {

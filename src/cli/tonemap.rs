@@ -7,7 +7,7 @@ use super::ui::Ui;
 use super::Outcome;
 use ps30::core::image::{self, write_png_rgb8};
 use ps30::jobs::tonemap::{self, Settings};
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 #[derive(clap::Args)]
 pub struct Args {
@@ -32,7 +32,8 @@ pub struct Args {
 
 pub fn run(args: Args, ui: &Ui) -> super::Result {
     if let Some(out) = &args.output {
-        check_output_path(out)?;
+        let shader = Path::new(&args.shader);
+        check_output_path(out, &[&args.image, shader])?;
     }
     let shader = shader_source(&args.shader, args.input.max_input_bytes)?;
     let img = image::load(&args.image, &args.exec.image_limits())?;

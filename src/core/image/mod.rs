@@ -23,7 +23,7 @@ pub use error::{ForeignError, ImageError};
 pub use mip::{full_chain_levels, MipChain};
 pub use openexr::write_exr;
 pub use pfm::write_pfm;
-pub use png::write_png_rgb8;
+pub use png::{encode_png_rgb8, write_png_rgb8};
 pub use target::{RenderTarget, TargetFormat, Texture};
 
 use std::fs::File;
@@ -50,6 +50,10 @@ fn write_atomically(
 ) -> Result<(), ImageError> {
     use crate::core::output::{self, Failure};
     output::write_atomically(path, encode).map_err(|f| match f {
+        Failure::Refused(why) => ImageError::Refused {
+            path: path.to_path_buf(),
+            why,
+        },
         Failure::Io { action, source } => ImageError::io(path, action, source),
         Failure::Encode(source) => ImageError::Encode {
             path: path.to_path_buf(),
