@@ -63,6 +63,18 @@ fn write_atomically(
     })
 }
 
+/// The error for a text header whose lines end in CR LF (a Windows line
+/// ending): the PFM and Radiance layouts end each header line with LF alone,
+/// and a CR would be read as part of a field or as pixel data.
+fn crlf_error(path: &Path, format: &'static str) -> ImageError {
+    ImageError::bad_header(
+        path,
+        format,
+        "line endings",
+        "the header lines end in CR LF; this format ends each header line with LF alone (convert the header, e.g. with dos2unix on the header lines, or re-export the file)",
+    )
+}
+
 /// An RGBA image with f32 channels, as loaded from a file.
 ///
 /// Pixels are row-major and row 0 is the TOP row of the picture, whatever
