@@ -28,8 +28,8 @@ fn two_runs_write_the_same_bytes() {
     let (a, b) = (tempfile::tempdir().unwrap(), tempfile::tempdir().unwrap());
     let write = |dir: &Path, threads| {
         let mut batch = ps30::core::output::Batch::new(dir).unwrap();
-        let g = ps30::present::report::generate(&mut batch, dir, root, threads, &|_, _, _| {})
-            .unwrap();
+        let g =
+            ps30::present::report::generate(&mut batch, dir, root, threads, &|_, _, _| {}).unwrap();
         batch.commit().unwrap();
         g
     };

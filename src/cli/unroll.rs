@@ -3,9 +3,9 @@
 
 use super::args::{parse_delta, parse_size, ProfileArgs};
 use super::io::{check_output_dir, print, print_json};
-use ps30::core::output::Batch;
 use super::ui::Ui;
 use super::{BadInput, Outcome};
+use ps30::core::output::Batch;
 use ps30::jobs::gen::set::{self, BlockChoice, Bundle, Role};
 use ps30::jobs::gen::Pass1Form;
 use ps30::present::unroll::summary_text;

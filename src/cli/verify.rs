@@ -82,9 +82,13 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         .and_then(Path::parent)
         .and_then(Path::parent)
         .unwrap_or(Path::new(""));
-    let figures = report::generate(&mut batch, &args.reports, root, None, &|stage, done, total| {
-        bar.borrow_mut().set(Some(stage), done + 2, total + 2)
-    })
+    let figures = report::generate(
+        &mut batch,
+        &args.reports,
+        root,
+        None,
+        &|stage, done, total| bar.borrow_mut().set(Some(stage), done + 2, total + 2),
+    )
     .map_err(BadInput)?;
     batch.commit()?;
     drop(bar);
@@ -111,7 +115,8 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
 }
 
 /// The committed generated shaders compared with what the generator writes
-/// now (the stale files), or rewritten (`wrote …` / `removed …` lines).
+/// now (the stale files), or rewritten (`wrote …` / `removed …` lines) and
+/// compared again.
 fn check_generated(
     dir: &Path,
     set: &GeneratedSet,
@@ -126,5 +131,7 @@ fn check_generated(
         .map(|p| format!("wrote {p}"))
         .chain(removed.into_iter().map(|p| format!("removed {p}")))
         .collect();
-    Ok((Vec::new(), lines))
+    // What regeneration may not touch (files it did not write) stays a
+    // problem, named.
+    Ok((set::stale_files(dir, set), lines))
 }

@@ -79,7 +79,11 @@ impl SourceFile {
 
     /// The byte range of a 0-based line, line break included.
     fn line_bytes(&self, index: usize) -> Range<usize> {
-        let start = self.line_starts.get(index).copied().unwrap_or(self.text.len());
+        let start = self
+            .line_starts
+            .get(index)
+            .copied()
+            .unwrap_or(self.text.len());
         let end = self
             .line_starts
             .get(index + 1)
@@ -343,7 +347,10 @@ impl Diagnostics {
     /// more there are, if any.
     fn not_shown(&self) -> Option<String> {
         let rest = self.items.get(MAX_SHOWN..)?;
-        let errors = rest.iter().filter(|d| d.severity == Severity::Error).count() as u64;
+        let errors = rest
+            .iter()
+            .filter(|d| d.severity == Severity::Error)
+            .count() as u64;
         let warnings = rest.len() as u64 - errors;
         let count = |n: u64, what: &str| match n {
             0 => None,

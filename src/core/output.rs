@@ -216,11 +216,10 @@ pub fn write_atomically(
 ) -> Result<(), Failure> {
     let real = destination(path).map_err(Failure::Refused)?;
     let temp = stage(&real, encode)?;
-    temp.rename_to(&real)
-        .map_err(|source| Failure::Io {
-            action: "rename the temporary file to",
-            source,
-        })
+    temp.rename_to(&real).map_err(|source| Failure::Io {
+        action: "rename the temporary file to",
+        source,
+    })
 }
 
 /// Writes bytes atomically (the rules of [`destination`] apply: the
@@ -461,7 +460,10 @@ mod tests {
         fs::write(&target, b"old").unwrap();
         std::os::unix::fs::symlink("real.bin", &link).unwrap();
         write_bytes(&link, b"new").unwrap();
-        assert!(fs::symlink_metadata(&link).unwrap().file_type().is_symlink());
+        assert!(fs::symlink_metadata(&link)
+            .unwrap()
+            .file_type()
+            .is_symlink());
         assert_eq!(fs::read(&target).unwrap(), b"new");
     }
 

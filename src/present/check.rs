@@ -95,7 +95,10 @@ fn budget_text(min: u64, max: u64, limit: u64) -> String {
         )
     } else {
         let more = if max == u64::MAX { "more than " } else { "" };
-        format!("longest path OVER by {more}{}", thousands(max - u64::from(max == u64::MAX) - limit))
+        format!(
+            "longest path OVER by {more}{}",
+            thousands(max - u64::from(max == u64::MAX) - limit)
+        )
     }
 }
 

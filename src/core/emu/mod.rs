@@ -828,10 +828,9 @@ pub fn run_with_threads(
 /// memory cannot be had (instead of aborting the process).
 fn filled<T: Clone>(n: usize, value: T) -> Result<Vec<T>, EmuError> {
     let mut v = Vec::new();
-    v.try_reserve_exact(n)
-        .map_err(|_| EmuError::OutOfMemory {
-            bytes: (n as u64).saturating_mul(std::mem::size_of::<T>() as u64),
-        })?;
+    v.try_reserve_exact(n).map_err(|_| EmuError::OutOfMemory {
+        bytes: (n as u64).saturating_mul(std::mem::size_of::<T>() as u64),
+    })?;
     v.resize(n, value);
     Ok(v)
 }

@@ -176,7 +176,12 @@ fn block_tree(stmts: &[Stmt], defines: &BTreeMap<String, u64>) -> Result<Vec<Nod
     // Free the tree without recursing as deep as the source nests.
     if diags.has_errors() {
         drop_flat(top);
-        drop_flat(stack.into_iter().map(|(s, c, b)| Node::repeat(s, c, b)).collect());
+        drop_flat(
+            stack
+                .into_iter()
+                .map(|(s, c, b)| Node::repeat(s, c, b))
+                .collect(),
+        );
         return Err(diags);
     }
     Ok(top)
@@ -233,7 +238,9 @@ fn over_cap(top: &[Node], stmts: &[Stmt], total: Size, cap: u64) -> Option<Diagn
         return Some(
             Diagnostic::error(
                 culprit(|s| s.statements),
-                format!("REPEAT_BLOCK expansion would produce {n} statements, over the cap of {cap}"),
+                format!(
+                    "REPEAT_BLOCK expansion would produce {n} statements, over the cap of {cap}"
+                ),
             )
             .with_label("this block expands too far")
             .with_help(help(n)),

@@ -125,7 +125,10 @@ pub(super) fn read(
             path,
             FORMAT,
             "compression",
-            format!("{} (High-Throughput JPEG 2000) is not supported", header.compression),
+            format!(
+                "{} (High-Throughput JPEG 2000) is not supported",
+                header.compression
+            ),
         ));
     }
     rewind(&mut reader)?;
@@ -264,12 +267,19 @@ fn raw_attributes(bytes: &[u8]) -> Vec<(&str, &[u8])> {
     let mut pos = 8; // magic number and version
     let cstr = |at: usize| -> Option<(&str, usize)> {
         let len = bytes.get(at..)?.iter().position(|&b| b == 0)?;
-        Some((std::str::from_utf8(&bytes[at..at + len]).ok()?, at + len + 1))
+        Some((
+            std::str::from_utf8(&bytes[at..at + len]).ok()?,
+            at + len + 1,
+        ))
     };
     while bytes.get(pos).is_some_and(|&b| b != 0) {
         let Some((name, next)) = cstr(pos) else { break };
-        let Some((_type, next)) = cstr(next) else { break };
-        let Some(size) = bytes.get(next..next + 4) else { break };
+        let Some((_type, next)) = cstr(next) else {
+            break;
+        };
+        let Some(size) = bytes.get(next..next + 4) else {
+            break;
+        };
         let size = i32::from_le_bytes([size[0], size[1], size[2], size[3]]);
         let start = next + 4;
         let Some(value) = usize::try_from(size)
@@ -351,7 +361,9 @@ impl Coverage {
             exr::meta::BlockDescription::ScanLines => None,
         };
         let cells = match tiled {
-            Some(t) => size.width().div_ceil(t.width().max(1)) * size.height().div_ceil(t.height().max(1)),
+            Some(t) => {
+                size.width().div_ceil(t.width().max(1)) * size.height().div_ceil(t.height().max(1))
+            }
             None => size.height(),
         };
         Coverage {
@@ -362,7 +374,10 @@ impl Coverage {
     }
 
     fn add(&mut self, path: &Path, b: IntegerBounds) -> Result<(), ImageError> {
-        let (x, y) = (b.position.x().max(0) as usize, b.position.y().max(0) as usize);
+        let (x, y) = (
+            b.position.x().max(0) as usize,
+            b.position.y().max(0) as usize,
+        );
         let cells: Vec<usize> = match self.tiled {
             Some(t) => {
                 let across = self.size.width().div_ceil(t.width().max(1));

@@ -59,7 +59,11 @@ fn unknown_mnemonic(ast: &InstrAst) -> Diagnostic {
     }
     // No mnemonic is within two edits of a name more than two letters
     // longer than the longest one, so longer names are not compared.
-    let longest = crate::core::isa::TABLE.iter().map(|r| r.mnemonic.len()).max().unwrap_or(0);
+    let longest = crate::core::isa::TABLE
+        .iter()
+        .map(|r| r.mnemonic.len())
+        .max()
+        .unwrap_or(0);
     let best = crate::core::isa::TABLE
         .iter()
         .filter(|_| name.len() <= longest + 2)

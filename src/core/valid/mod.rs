@@ -520,7 +520,10 @@ fn check_program(p: &Program, diags: &mut Diagnostics, file: &SourceFile) -> Inf
     // a ret.
     if let Some(label) = current {
         if p.instructions.last().map(|i| i.op) != Some(Opcode::Ret) {
-            let at = info.labels.get(&label).map(|&i| &p.instructions[i as usize]);
+            let at = info
+                .labels
+                .get(&label)
+                .map(|&i| &p.instructions[i as usize]);
             if let Some(at) = at {
                 diags.push(
                     Diagnostic::error(

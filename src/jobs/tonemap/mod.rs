@@ -123,7 +123,10 @@ pub enum TonemapError {
     Pipeline(luminance::PipelineError),
     /// The pipeline ran but its L̄w cannot scale anything; the image has
     /// `non_finite` NaN or infinite pixels.
-    LogAverage { value: f64, non_finite: u64 },
+    LogAverage {
+        value: f64,
+        non_finite: u64,
+    },
     Emu(emu::EmuError),
     Shader(String),
 }

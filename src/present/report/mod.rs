@@ -20,10 +20,10 @@ pub mod claims;
 pub mod figures;
 pub mod generated;
 
+use crate::core::image::encode_png_rgb8;
 use crate::core::image::{HdrImage, ImageLimits};
 use crate::core::numbers::number;
 use crate::core::numbers::thousands;
-use crate::core::image::encode_png_rgb8;
 use crate::core::output::Batch;
 use crate::jobs::luminance::{self, LuminanceRun, ShaderSource};
 use crate::jobs::tonemap;
