@@ -15,7 +15,7 @@ use crate::core::ir::{Origin, Span};
 use codespan_reporting::diagnostic::{Diagnostic as CsDiagnostic, Label};
 use codespan_reporting::files::{self, Files};
 use codespan_reporting::term::{self, Config};
-use std::collections::HashMap;
+use std::collections::BTreeMap;
 use std::fmt;
 use std::io::Write;
 use std::ops::Range;
@@ -289,8 +289,9 @@ impl fmt::Display for Diagnostic {
 #[derive(Clone, Debug, Default)]
 pub struct Diagnostics {
     pub items: Vec<Diagnostic>,
-    /// Where each (span, message) already is in `items`.
-    seen: HashMap<(Span, String), usize>,
+    /// Where each (span, message) already is in `items` (a B-tree: as
+    /// small as a `Vec`, so results carrying diagnostics stay small).
+    seen: BTreeMap<(Span, String), usize>,
 }
 
 impl Diagnostics {

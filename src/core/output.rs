@@ -292,16 +292,14 @@ impl Batch {
     pub fn commit(mut self) -> Result<(), String> {
         let staged = std::mem::take(&mut self.staged);
         let total = staged.len();
-        let mut staged = staged.into_iter();
-        let mut done = 0;
-        for (temp, real) in staged.by_ref() {
+        // Temporary files after a failed rename are dropped, so removed.
+        for (done, (temp, real)) in staged.into_iter().enumerate() {
             if let Err(e) = temp.rename_to(&real) {
                 return Err(format!(
                     "{}: cannot rename the temporary file to it: {e} ({done} of {total} files were written)",
                     real.display()
                 ));
             }
-            done += 1;
         }
         self.created.clear();
         Ok(())

@@ -89,7 +89,8 @@ mod tests {
         let dir = tempfile::tempdir().unwrap();
         let path = dir.path().join("missing/out.png");
         let err = write_png_rgb8(&path, 1, 1, &[1, 2, 3]).unwrap_err();
-        assert!(matches!(err, ImageError::Io { .. }), "{err}");
+        assert!(matches!(err, ImageError::Refused { .. }), "{err}");
+        assert!(err.to_string().contains("does not exist"), "{err}");
         assert!(!path.exists());
     }
 }
