@@ -191,7 +191,7 @@ fn many_diagnostics_are_reported_in_linear_time_and_capped() {
         d,
         &["check", "errors.psh", "--max-input-bytes", "2000000"],
         2,
-        "99,940 more errors not shown",
+        "99940 more errors not shown",
     );
     assert_eq!(r.stderr.matches("unknown instruction").count(), 50);
     // 20,000 warnings on a shader that validates.
@@ -205,7 +205,7 @@ fn many_diagnostics_are_reported_in_linear_time_and_capped() {
         d,
         &["check", "warnings.psh", "--max-input-bytes", "2000000"],
         1,
-        "19,950 more warnings not shown",
+        "19950 more warnings not shown",
     );
     // A 10 MB line with one error: not echoed, the token cut short.
     write(
@@ -217,7 +217,7 @@ fn many_diagnostics_are_reported_in_linear_time_and_capped() {
         d,
         &["check", "long.psh", "--max-input-bytes", "20000000"],
         2,
-        "(10,000,000 characters)",
+        "(10000000 characters)",
     );
     assert!(r.stderr.len() < 2_000, "{} bytes of stderr", r.stderr.len());
 }

@@ -32,11 +32,7 @@ pub fn excerpt(text: &str) -> String {
     const MAX: usize = 40;
     match text.char_indices().nth(MAX) {
         None => text.to_string(),
-        Some((cut, _)) => format!(
-            "{}… ({} characters)",
-            &text[..cut],
-            crate::core::numbers::thousands(text.chars().count() as u64)
-        ),
+        Some((cut, _)) => format!("{}… ({} characters)", &text[..cut], text.chars().count()),
     }
 }
 
@@ -356,10 +352,7 @@ impl Diagnostics {
         let count = |n: u64, what: &str| match n {
             0 => None,
             1 => Some(format!("1 more {what}")),
-            n => Some(format!(
-                "{} more {what}s",
-                crate::core::numbers::thousands(n)
-            )),
+            n => Some(format!("{n} more {what}s")),
         };
         let parts: Vec<String> = [count(errors, "error"), count(warnings, "warning")]
             .into_iter()
