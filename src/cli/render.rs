@@ -2,11 +2,12 @@
 //! blending and write masks, mip-chain reductions — and writes its targets.
 
 use super::args::ExecArgs;
-use super::io::{print_json, say};
+use super::io::{check_output_dir, print_json, say};
 use super::ui::Ui;
 use super::{BadInput, Outcome};
 use ps30::core::emu::findings::diagnostic;
-use ps30::core::image::{write_exr, write_png_rgb8, RenderTarget};
+use ps30::core::image::{encode_exr, encode_png_rgb8, RenderTarget};
+use ps30::core::output::{self, Batch};
 use ps30::jobs::render::{self, file, StepDetail, StepReport, TargetState};
 use ps30::present::render as show;
 use std::path::{Path, PathBuf};
@@ -30,25 +31,53 @@ pub struct Args {
     exec: ExecArgs,
 }
 
-/// Writes `NAME.exr` and `NAME.png` for a target; returns the two paths.
-fn write_target(dir: &Path, stem: &str, t: &RenderTarget) -> Result<[String; 2], BadInput> {
-    let exr = dir.join(format!("{stem}.exr"));
-    let png = dir.join(format!("{stem}.png"));
-    write_exr(&exr, t)?;
-    write_png_rgb8(&png, t.width, t.height, &show::preview(t))?;
-    Ok([exr.display().to_string(), png.display().to_string()])
+/// The files of `-o DIR`, staged together and renamed all at once at the
+/// end, so a failed run leaves none of them; none may be an input.
+struct Outputs<'a> {
+    dir: &'a Path,
+    batch: Batch,
+    inputs: Vec<&'a Path>,
+    written: Vec<String>,
+}
+
+impl Outputs<'_> {
+    /// Stages `STEM.exr` and `STEM.png` for a target.
+    fn target(&mut self, stem: &str, t: &RenderTarget) -> Result<(), BadInput> {
+        let exr = self.dir.join(format!("{stem}.exr"));
+        let png = self.dir.join(format!("{stem}.png"));
+        for path in [&exr, &png] {
+            output::check(path, &self.inputs).map_err(BadInput)?;
+        }
+        self.batch.write_bytes(&exr, &encode_exr(&exr, t)?)?;
+        let preview = encode_png_rgb8(&png, t.width, t.height, &show::preview(t))?;
+        self.batch.write_bytes(&png, &preview)?;
+        self.written
+            .extend([exr.display().to_string(), png.display().to_string()]);
+        Ok(())
+    }
 }
 
 pub fn run(args: Args, ui: &Ui) -> super::Result {
+    if let Some(dir) = &args.output {
+        check_output_dir(dir)?;
+    }
     let limits = file::FileLimits {
         max_pixels: args.exec.max_pixels,
         max_steps: args.max_steps as usize,
     };
     let loaded = file::read(&args.list, &limits)?;
     let list = &loaded.list;
-    if let Some(dir) = &args.output {
-        std::fs::create_dir_all(dir).map_err(|e| BadInput(format!("{}: {e}", dir.display())))?;
-    }
+    let mut outputs = match &args.output {
+        Some(dir) => Some(Outputs {
+            dir,
+            batch: Batch::new(dir)?,
+            inputs: std::iter::once(args.list.as_path())
+                .chain(loaded.sources.iter().map(PathBuf::as_path))
+                .collect(),
+            written: Vec::new(),
+        }),
+        None => None,
+    };
     let name = args.list.display().to_string();
     if !args.exec.json {
         let mut head = format!(
@@ -67,35 +96,29 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         threads: args.exec.threads(),
         limits: args.exec.limits(),
     };
-    let mut written: Vec<String> = Vec::new();
     let mut failure: Option<BadInput> = None;
     let bar = std::cell::RefCell::new(ui.bar("steps", list.steps.len() as u64));
     let mut observe = |r: &StepReport, states: &[TargetState]| {
         bar.borrow_mut()
             .set(None, r.index as u64 + 1, list.steps.len() as u64);
-        if let StepDetail::Draw { findings, .. } = &r.detail {
+        if let (StepDetail::Draw { findings, .. }, render::Step::Draw(d)) =
+            (&r.detail, &list.steps[r.index])
+        {
             if !ui.quiet {
-                let shader = match &list.steps[r.index] {
-                    render::Step::Draw(d) => &list.shaders[d.shader].loaded.file,
-                    _ => return,
-                };
+                let shader = &list.shaders[d.shader].loaded.file;
                 for f in findings {
-                    diagnostic(f).emit(shader, super::io::color_stderr());
+                    eprint!("{}", diagnostic(f).render(shader));
                 }
             }
         }
         if !args.exec.json {
             let _ = say(ui, &show::step_line(list, r));
         }
-        if let (true, Some(dir), None) = (args.every_step, &args.output, &failure) {
+        if let (true, Some(out), None) = (args.every_step, outputs.as_mut(), &failure) {
             let t = list.target(&r.target).expect("the step's target exists");
-            match write_target(
-                dir,
-                &format!("{:03}-{}", r.index, r.target),
-                &states[t].target,
-            ) {
-                Ok(paths) => written.extend(paths),
-                Err(e) => failure = Some(e),
+            let stem = format!("{:03}-{}", r.index, r.target);
+            if let Err(e) = out.target(&stem, &states[t].target) {
+                failure = Some(e);
             }
         }
     };
@@ -104,10 +127,13 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
     if let Some(e) = failure {
         return Err(e);
     }
-    if let Some(dir) = &args.output {
+    let mut written = Vec::new();
+    if let Some(mut out) = outputs {
         for (spec, st) in list.targets.iter().zip(&states) {
-            written.extend(write_target(dir, &spec.name, &st.target)?);
+            out.target(&spec.name, &st.target)?;
         }
+        out.batch.commit()?;
+        written = out.written;
     }
     let agree = reports.iter().all(|r| match &r.detail {
         StepDetail::Draw { counts_agree, .. } => *counts_agree,
@@ -124,14 +150,10 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         ))?;
     } else {
         say(ui, &show::targets_text(list, &states))?;
-        if !ui.quiet && !written.is_empty() {
+        if let (false, Some(dir)) = (ui.quiet || written.is_empty(), &args.output) {
             say(
                 ui,
-                &format!(
-                    "wrote {} files in {}\n",
-                    written.len(),
-                    args.output.as_deref().unwrap_or(Path::new(".")).display()
-                ),
+                &format!("wrote {} files in {}\n", written.len(), dir.display()),
             )?;
         }
     }

@@ -3,11 +3,11 @@
 //! written up as a report page.
 
 use super::args::parse_size;
-use super::io::{check_output_path, print_json, say};
+use super::io::{check_output_dir, check_output_path, print_json, say};
 use super::ui::Ui;
 use super::{BadInput, Outcome};
-use ps30::core::image::{self, write_png_rgb8, ImageLimits};
-use ps30::core::output::write_bytes;
+use ps30::core::image::{self, encode_png_rgb8, ImageLimits};
+use ps30::core::output::Batch;
 use ps30::jobs::render;
 use ps30::jobs::studies::{article_chain, log_lights, mip_luminance};
 use ps30::present::report::IMAGES;
@@ -60,18 +60,19 @@ fn images_dir() -> PathBuf {
     }
 }
 
-/// Writes a page and its figures; returns what was written.
-fn write_page(dir: &Path, page: &Page) -> Result<Vec<String>, BadInput> {
+/// Stages a page and its figures; returns what will be written.
+fn stage_page(batch: &mut Batch, dir: &Path, page: &Page) -> Result<Vec<String>, BadInput> {
     let figures = dir.join("figures");
-    std::fs::create_dir_all(&figures)
-        .map_err(|e| BadInput(format!("{}: {e}", figures.display())))?;
+    batch.directory(&figures)?;
     let path = dir.join(&page.name);
-    write_bytes(&path, page.markdown.as_bytes())
-        .map_err(|e| BadInput(format!("{}: {e}", path.display())))?;
+    batch.write_bytes(&path, page.markdown.as_bytes())?;
     let mut written = vec![path.display().to_string()];
     for (name, canvas) in &page.figures {
         let p = figures.join(name);
-        canvas.write_png(&p)?;
+        batch.write_bytes(
+            &p,
+            &encode_png_rgb8(&p, canvas.width, canvas.height, &canvas.rgb)?,
+        )?;
         written.push(p.display().to_string());
     }
     Ok(written)
@@ -79,8 +80,9 @@ fn write_page(dir: &Path, page: &Page) -> Result<Vec<String>, BadInput> {
 
 pub fn run(args: Args, ui: &Ui) -> super::Result {
     if let Some(out) = &args.output {
-        check_output_path(out)?;
+        check_output_path(out, &[])?;
     }
+    check_output_dir(&args.reports)?;
     let settings = render::Settings {
         threads: args.threads.map(|t| t as usize),
         limits: Default::default(),
@@ -128,14 +130,15 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
             .map_err(BadInput)?;
             let written = match &args.output {
                 Some(out) => {
-                    write_png_rgb8(out, r.width, r.height, &r.tonemap.srgb8())?;
-                    Some(out.display().to_string())
+                    let png = encode_png_rgb8(out, r.width, r.height, &r.tonemap.srgb8())?;
+                    Some((out.display().to_string(), png))
                 }
                 None => None,
             };
+            let shown = written.as_ref().map(|(name, _)| name.as_str());
             (
-                study::article_chain::text(&r, written.as_deref()),
-                study::article_chain::json(&r, written.as_deref()),
+                study::article_chain::text(&r, shown),
+                study::article_chain::json(&r, shown),
                 study::article_chain::page(&r),
                 r.all_agree(),
                 written,
@@ -143,7 +146,13 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         }
     };
     drop(bar);
-    let written = write_page(&args.reports, &page)?;
+    let mut batch = Batch::new(&args.reports)?;
+    let mut written = stage_page(&mut batch, &args.reports, &page)?;
+    if let (Some(path), Some((name, bytes))) = (&args.output, &png) {
+        batch.write_bytes(path, bytes)?;
+        written.push(name.clone());
+    }
+    batch.commit()?;
     if args.json {
         let mut v = json;
         v["report"] = serde_json::json!(written);
@@ -151,9 +160,7 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
     } else {
         say(ui, &text)?;
         if !ui.quiet {
-            let mut files = written;
-            files.extend(png);
-            say(ui, &format!("report written: {}\n", files.join(", ")))?;
+            say(ui, &format!("report written: {}\n", written.join(", ")))?;
         }
     }
     Ok(Outcome::from_ok(ok))

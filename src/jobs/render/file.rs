@@ -189,6 +189,9 @@ struct FileBlend {
 pub struct Loaded {
     pub description: Option<String>,
     pub list: DrawList,
+    /// The files it read besides itself (images, shaders): a command must not
+    /// write over them.
+    pub sources: Vec<PathBuf>,
 }
 
 /// Reads and checks a draw-list file. Images and shader files are read
@@ -238,6 +241,7 @@ pub fn parse(text: &str, path: &Path, limits: &FileLimits) -> Result<Loaded, Fil
             steps: Vec::new(),
         },
         shader_keys: Vec::new(),
+        sources: Vec::new(),
     };
     if file.steps.len() > limits.max_steps {
         return Err(r.err(
@@ -262,6 +266,7 @@ pub fn parse(text: &str, path: &Path, limits: &FileLimits) -> Result<Loaded, Fil
     Ok(Loaded {
         description: file.description,
         list: r.list,
+        sources: r.sources,
     })
 }
 
@@ -274,6 +279,8 @@ struct Resolver {
     list: DrawList,
     /// (shader spec, defines) of each loaded shader, to load each once.
     shader_keys: Vec<(String, BTreeMap<String, u64>)>,
+    /// Files read (images, shader files).
+    sources: Vec<PathBuf>,
 }
 
 fn size(s: &str) -> Result<(u32, u32), String> {
@@ -395,8 +402,10 @@ impl Resolver {
         let (width, height, texels) = match (&t.image, &t.synthetic) {
             (Some(file), None) => {
                 let budget = self.limits.max_pixels.saturating_sub(self.pixels).max(1);
-                let img = image::load(&self.dir.join(file), &ImageLimits { max_pixels: budget })
+                let path = self.dir.join(file);
+                let img = image::load(&path, &ImageLimits { max_pixels: budget })
                     .map_err(|e| self.err(&format!("{at}.image"), e.to_string()))?;
+                self.sources.push(path);
                 (img.width, img.height, img.pixels)
             }
             (None, Some(kind)) => self.synthetic(&at, kind, t.size.as_deref())?,
@@ -753,6 +762,7 @@ impl Resolver {
                     .map_err(|e| self.err(field, format!("{}: {e}", file.display())))?;
                 let text = String::from_utf8(bytes)
                     .map_err(|_| self.err(field, format!("{}: not UTF-8 text", file.display())))?;
+                self.sources.push(file.clone());
                 (file.display().to_string(), text)
             }
         };
