@@ -376,3 +376,61 @@ fn clears_write_masks_and_discards_through_a_draw_list() {
         _ => panic!("a draw"),
     }
 }
+
+/// `-o DIR` is all or nothing, and never writes over an input: a run that
+/// fails at its second step leaves no file (and no directory it created);
+/// a target named like one of the list's images is refused before anything
+/// is written, and the image is untouched.
+#[test]
+fn render_outputs_are_all_or_nothing_and_never_an_input() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out");
+    let o = ps30(
+        &[
+            "render",
+            "drawlists/lights.json",
+            "-o",
+            out.to_str().unwrap(),
+            "--every-step",
+            "--max-executed-per-pixel",
+            "10",
+        ],
+        repo(),
+    );
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(stderr(&o).contains("steps[1]"), "{}", stderr(&o));
+    assert!(!out.exists(), "a failed run leaves nothing behind");
+
+    let src = repo().join("assets/hdr/sunset.pfm");
+    let image = dir.path().join("frame.exr");
+    let target = ps30::core::image::load(&src, &Default::default()).unwrap();
+    let rt = ps30::core::image::RenderTarget {
+        width: target.width,
+        height: target.height,
+        format: TargetFormat::A32B32G32R32F,
+        texels: target.pixels.clone(),
+    };
+    ps30::core::image::write_exr(&image, &rt).unwrap();
+    let before = std::fs::read(&image).unwrap();
+    let list = dir.path().join("list.json");
+    std::fs::write(
+        &list,
+        r#"{"targets": [{"name": "frame", "size": "4x4", "format": "R32F"}],
+            "textures": [{"name": "img", "image": "frame.exr"}],
+            "steps": [{"clear": "frame"}]}"#,
+    )
+    .unwrap();
+    let o = ps30(
+        &[
+            "render",
+            list.to_str().unwrap(),
+            "-o",
+            dir.path().to_str().unwrap(),
+        ],
+        repo(),
+    );
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(stderr(&o).contains("frame.exr"), "{}", stderr(&o));
+    assert_eq!(std::fs::read(&image).unwrap(), before);
+    assert!(!dir.path().join("frame.png").exists());
+}

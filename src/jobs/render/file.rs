@@ -63,10 +63,11 @@ pub struct FileLimits {
 }
 
 impl Default for FileLimits {
-    /// 2^26 pixels (1 GiB of texels), 10,000 steps.
+    /// As many pixels as one image may have ([`ImageLimits::MAX_PIXELS`]),
+    /// 10,000 steps.
     fn default() -> FileLimits {
         FileLimits {
-            max_pixels: 1 << 26,
+            max_pixels: ImageLimits::MAX_PIXELS,
             max_steps: 10_000,
         }
     }
