@@ -178,6 +178,48 @@ fn unorm8_blends_on_clamped_sources_and_quantises_the_result() {
     assert_eq!(codes(add.apply(f, [0.75; 4], [0.75; 4])), [255; 4]);
 }
 
+/// Every factor in an 8-bit target, on the source (F, ZERO) and on the
+/// destination (ZERO, F), as codes. With the destination's codes
+/// 32, 128, 255, 64 and the source 0.5, 0.25, 0.75, 0.625, a product is
+/// worked out in code units: e.g. DESTALPHA on the source is s · 64 codes
+/// (32, 16, 48, 40), SRCALPHA on the destination is 0.625 · each code
+/// (20, 80, 159.375 → 159, 40), BLENDFACTOR (255, 0, 51, 128) on the source
+/// is 127.5 → 128, 0, 38.25 → 38, 80; halves round up.
+#[test]
+fn every_factor_and_operation_in_an_8_bit_target() {
+    use BlendFactor::*;
+    let f = TargetFormat::A8R8G8B8;
+    let d = [32u8, 128, 255, 64].map(unorm8_value);
+    let codes = |v: [f32; 4]| v.map(|c| (c * 255.0).round() as u8);
+    let table: [(BlendFactor, [u8; 4], [u8; 4]); 13] = [
+        (Zero, [0, 0, 0, 0], [0, 0, 0, 0]),
+        (One, [128, 64, 191, 159], [32, 128, 255, 64]),
+        (SrcColor, [64, 16, 143, 100], [16, 32, 191, 40]),
+        (InvSrcColor, [64, 48, 48, 60], [16, 96, 64, 24]),
+        (SrcAlpha, [80, 40, 120, 100], [20, 80, 159, 40]),
+        (InvSrcAlpha, [48, 24, 72, 60], [12, 48, 96, 24]),
+        (DestAlpha, [32, 16, 48, 40], [8, 32, 64, 16]),
+        (InvDestAlpha, [96, 48, 143, 119], [24, 96, 191, 48]),
+        (DestColor, [16, 32, 191, 40], [4, 64, 255, 16]),
+        (InvDestColor, [112, 32, 0, 119], [28, 64, 0, 48]),
+        (SrcAlphaSat, [80, 40, 120, 159], [20, 80, 159, 64]),
+        (Constant, [128, 0, 38, 80], [32, 0, 51, 32]),
+        (InvConstant, [0, 64, 153, 79], [0, 128, 204, 32]),
+    ];
+    for (factor, on_src, on_dest) in table {
+        let mut b = eq(factor, Zero, BlendOp::Add);
+        b.factor = [255, 0, 51, 128];
+        assert_eq!(codes(b.apply(f, S, d)), on_src, "src {factor:?}");
+        let mut b = eq(Zero, factor, BlendOp::Add);
+        b.factor = [255, 0, 51, 128];
+        assert_eq!(codes(b.apply(f, S, d)), on_dest, "dest {factor:?}");
+    }
+    let b = eq(One, One, BlendOp::Min);
+    assert_eq!(codes(b.apply(f, S, d)), [32, 64, 191, 64]);
+    let b = eq(One, One, BlendOp::Max);
+    assert_eq!(codes(b.apply(f, S, d)), [128, 128, 255, 159]);
+}
+
 #[test]
 fn unorm8_quantisation_at_zero_the_half_step_and_one() {
     let f = TargetFormat::A8R8G8B8;
