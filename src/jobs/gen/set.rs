@@ -181,7 +181,7 @@ fn pass1_shader(
         )));
     }
     let mut h = vec![spec.title(fr)];
-    h.push("Generated: edit ps30's generator (src/gen/), not this file.".into());
+    h.push("Generated: edit ps30's generator (src/jobs/gen/), not this file.".into());
     h.push(String::new());
     h.extend(checked_lines(&profile, c.slots, c.executed));
     h.push(String::new());
@@ -390,7 +390,7 @@ fn pass2_shader(
             size(nx, ny),
             size(fr.w, fr.h)
         ),
-        "Generated: edit ps30's generator (src/gen/), not this file.".into(),
+        "Generated: edit ps30's generator (src/jobs/gen/), not this file.".into(),
         String::new(),
     ];
     h.extend(checked_lines(&profile, c.slots, c.executed));
