@@ -652,8 +652,38 @@ impl<'p, 'd> Checker<'p, 'd> {
         self.owner[idx] = self.current;
     }
 
-    /// After the last instruction: blocks never closed, mixed `_abs`
-    /// constant reads, the call graph; the total slot count.
+    /// A subroutine ends at its ret (Microsoft, `ret - ps`: the first ret
+    /// is the end of the main program or subroutine; ret is optional only at
+    /// the end of a shader without subroutines), so the last one must end
+    /// with one too: the others are followed by a `label`, which must follow
+    /// a ret.
+    fn check_final_ret(&mut self) {
+        let p = self.p;
+        if let Some(label) = self.current {
+            if p.instructions.last().map(|i| i.op) != Some(Opcode::Ret) {
+                let at = self
+                    .info
+                    .labels
+                    .get(&label)
+                    .map(|&i| &p.instructions[i as usize]);
+                if let Some(at) = at {
+                    self.diags.push(
+                        Diagnostic::error(
+                            at.origin.span,
+                            format!("subroutine l{label} does not end with ret"),
+                        )
+                        .with_label("the subroutine starts here and runs to the end of the file")
+                        .with_help("end every subroutine with ret; only a shader without subroutines may leave out the final ret")
+                        .in_origin(&at.origin, self.file),
+                    );
+                }
+            }
+        }
+    }
+
+    /// After the last instruction: blocks never closed, a last subroutine
+    /// without its ret, mixed `_abs` constant reads, the call graph; the
+    /// total slot count.
     fn finish(mut self) -> Info {
         let p = self.p;
         for o in self.stack.iter().rev() {
@@ -669,6 +699,7 @@ impl<'p, 'd> Checker<'p, 'd> {
                     .in_origin(&p.instructions[o.index].origin, self.file),
             );
         }
+        self.check_final_ret();
         if let (Some(a), Some(b)) = self.abs_consts {
             self.diags.push(
                 Diagnostic::error(a.max(b), "constants are read both with and without _abs")

@@ -188,6 +188,8 @@ pub struct Setup {
     pub constants: Constants,
     pub bins: usize,
     pub threads: Option<usize>,
+    /// Bounds of every draw (and of the G-buffer's size).
+    pub limits: emu::EmuLimits,
 }
 
 /// The result of `ps30 profile`.
@@ -245,6 +247,15 @@ pub fn profile(name: &str, text: &str, setup: &Setup) -> Result<ProfileRun, Stri
     let chain;
     let (out, draw, input, models) = match &setup.input {
         Input::GBuffer(w, h) => {
+            let pixels = u64::from(*w) * u64::from(*h);
+            if pixels > setup.limits.max_target_pixels {
+                return Err(emu::EmuError::TargetTooLarge {
+                    width: *w,
+                    height: *h,
+                    limit: setup.limits.max_target_pixels,
+                }
+                .to_string());
+            }
             scene =
                 crate::jobs::scenes::lights::Scene::synthetic(*w, *h).map_err(|e| e.to_string())?;
             let draw = gbuffer_draw(name, &loaded, setup, &scene)?;
@@ -332,6 +343,7 @@ fn gbuffer_draw<'s>(
         .map_err(|e| format!("{name}: not a light-model shader for this scene: {e}"))?;
     let mut draw = scene.draw();
     draw.record_lod = true;
+    draw.limits = setup.limits;
     // The command line's constants, except c4, which the scene sets.
     let mut floats = setup.constants.float.clone();
     floats.resize(floats.len().max(5), [0.0; 4]);
@@ -374,6 +386,7 @@ fn image_draw<'i>(
     }
     draw.constants = setup.constants.clone();
     draw.record_lod = true;
+    draw.limits = setup.limits;
     if loaded.shader.program().sampler_type(0).is_some() {
         let tex: TextureLevels = match chain {
             Some(c) => c.into(),

@@ -231,7 +231,7 @@ fn unrolled_claims(profile: &Profile) -> Result<Vec<Claim>, String> {
 fn per_sample(loaded: &load::Loaded, a: &Analysis) -> (u64, u64, u64) {
     let ins = loaded.shader.instructions();
     let in_macro: Vec<usize> = (0..ins.len())
-        .filter(|&i| !ins[i].origin.repeats.is_empty())
+        .filter(|&i| ins[i].origin.repeat.is_some())
         .collect();
     let macro_executed: u64 = in_macro
         .iter()
