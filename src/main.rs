@@ -15,6 +15,7 @@ fn main() -> ExitCode {
             return ExitCode::from(if e.use_stderr() { 2 } else { 0 });
         }
     };
+    cli::clean_up_on_interrupt();
     let ui = Ui::new(parsed.quiet);
     let outcome = match parsed.command {
         Command::Check(args) => cli::check::run(args, &ui),
@@ -25,6 +26,8 @@ fn main() -> ExitCode {
         Command::Compare(args) => cli::compare::run(args, &ui),
         Command::Translate(args) => cli::translate::run(args, &ui),
         Command::Profile(args) => cli::profile::run(args, &ui),
+        Command::Render(args) => cli::render::run(args, &ui),
+        Command::Study(args) => cli::study::run(args, &ui),
         Command::Verify(args) => cli::verify::run(args, &ui),
         Command::Unroll(args) => cli::unroll::run(args, &ui),
         Command::Plan(args) => cli::plan::run(args, &ui),

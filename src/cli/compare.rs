@@ -4,7 +4,7 @@
 
 use super::args::{
     constants, parse_delta, parse_float4, parse_float_const, parse_size, AddressArg, ConstantArgs,
-    FilterArg, FloatRulesArg, FormatArg, SourceArgs,
+    FilterArg, FloatRulesArg, FormatArg, InputArgs, SourceArgs,
 };
 use super::io::{color_stderr, print_json, say, shader_source};
 use super::ui::Ui;
@@ -60,6 +60,8 @@ pub struct Args {
     #[command(flatten)]
     source: SourceArgs,
     #[command(flatten)]
+    input: InputArgs,
+    #[command(flatten)]
     constants: ConstantArgs,
     /// Float constant set by the application, e.g. --const c3=0.27,0.67,0.06,0.01.
     #[arg(long = "const", value_name = "cN=X[,Y,Z,W]", value_parser = parse_float_const)]
@@ -108,7 +110,10 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
             float_rules: args.float_rules.into(),
             ..Default::default()
         };
-        let (p1, p2) = (shader_source(&args.pass1)?, shader_source(&args.pass2)?);
+        let (p1, p2) = (
+            shader_source(&args.pass1, args.input.max_input_bytes)?,
+            shader_source(&args.pass2, args.input.max_input_bytes)?,
+        );
         let c = {
             let _s = ui.spinner("running both passes on both backends, and the probes");
             let mut c = compare::compare_luminance(&gpu, (&name, &img), &p1, None, &p2, &settings)?;
@@ -144,12 +149,10 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
     let (tw, th) = args
         .target
         .ok_or_else(|| BadInput("--target WxH is needed for one draw".into()))?;
-    let src = shader_source(spec)?;
+    let src = shader_source(spec, args.input.max_input_bytes)?;
     let file = SourceFile::new(src.name.clone(), src.text);
     let loaded = load::load(file, &args.source.options()).map_err(|e| {
-        for d in &e.diagnostics.items {
-            d.emit(&e.file, color_stderr());
-        }
+        e.diagnostics.emit(&e.file, color_stderr());
         BadInput(e.to_string())
     })?;
     let program = loaded.shader.program();
@@ -204,6 +207,8 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
 }
 
 fn run_all(args: &Args, ui: &Ui) -> super::Result {
+    let path = args.reports.join("gpu-crosscheck.md");
+    super::io::check_output_path(&path, &[])?;
     let gpu = Arc::new(Gpu::open()?);
     // The device is printed first, on stdout, so a log of the run says
     // where it ran.
@@ -218,7 +223,6 @@ fn run_all(args: &Args, ui: &Ui) -> super::Result {
         })?
     };
     let page = ps30::present::report::gpu::page(&result);
-    let path = args.reports.join("gpu-crosscheck.md");
     ps30::core::output::write_bytes(&path, page.as_bytes())
         .map_err(|e| BadInput(format!("{}: {e}", path.display())))?;
     if args.json {

@@ -43,9 +43,23 @@ pub fn print_json(v: &impl serde::Serialize) -> Result<(), BadInput> {
     Ok(())
 }
 
-/// A file's text; not UTF-8 is bad input, with the offset of the first bad byte.
-pub fn read_text(path: &Path) -> Result<String, BadInput> {
-    let bytes = std::fs::read(path).map_err(|e| BadInput(format!("{}: {e}", path.display())))?;
+/// A file's text, at most `max_bytes` long (`--max-input-bytes`): a longer
+/// file (or `/dev/zero`) is refused after reading one byte past the cap.
+/// Not UTF-8 is bad input, with the offset of the first bad byte.
+pub fn read_text(path: &Path, max_bytes: u64) -> Result<String, BadInput> {
+    use std::io::Read;
+    let failed = |e: std::io::Error| BadInput(format!("{}: {e}", path.display()));
+    let mut bytes = Vec::new();
+    std::fs::File::open(path)
+        .and_then(|f| f.take(max_bytes.saturating_add(1)).read_to_end(&mut bytes))
+        .map_err(failed)?;
+    if bytes.len() as u64 > max_bytes {
+        return Err(BadInput(format!(
+            "{}: larger than the cap of {} bytes for a shader (raise it with --max-input-bytes)",
+            path.display(),
+            ps30::core::numbers::thousands(max_bytes)
+        )));
+    }
     String::from_utf8(bytes).map_err(|e| {
         BadInput(format!(
             "{}: not UTF-8 text (invalid byte at offset {})",
@@ -55,31 +69,27 @@ pub fn read_text(path: &Path) -> Result<String, BadInput> {
     })
 }
 
-/// A shader by bundled name or file path.
-pub fn shader_source(spec: &str) -> Result<ShaderSource, BadInput> {
+/// A shader by bundled name or file path (at most `max_bytes` long).
+pub fn shader_source(spec: &str, max_bytes: u64) -> Result<ShaderSource, BadInput> {
     if let Some((name, text)) = ps30::jobs::bundled::listing(spec) {
         return Ok(ShaderSource::new(name, text));
     }
-    let text = read_text(Path::new(spec))?;
+    let text = read_text(Path::new(spec), max_bytes)?;
     Ok(ShaderSource::new(spec, text))
 }
 
 /// Loads a shader file: warnings to stderr; on errors every diagnostic to
 /// stderr and a one-line summary as the error.
-pub fn load_file(path: &Path, options: &Options) -> Result<Loaded, BadInput> {
-    let text = read_text(path)?;
+pub fn load_file(path: &Path, options: &Options, max_bytes: u64) -> Result<Loaded, BadInput> {
+    let text = read_text(path, max_bytes)?;
     let file = SourceFile::new(path.display().to_string(), text);
     match load::load(file, options) {
         Ok(l) => {
-            for w in &l.warnings.items {
-                w.emit(&l.file, color_stderr());
-            }
+            l.warnings.emit(&l.file, color_stderr());
             Ok(l)
         }
         Err(e) => {
-            for d in &e.diagnostics.items {
-                d.emit(&e.file, color_stderr());
-            }
+            e.diagnostics.emit(&e.file, color_stderr());
             let n = e.diagnostics.errors().count();
             Err(BadInput(format!(
                 "{}: {n} error{}",
@@ -90,21 +100,13 @@ pub fn load_file(path: &Path, options: &Options) -> Result<Loaded, BadInput> {
     }
 }
 
-/// Refuses an output path whose directory does not exist, before any work.
-pub fn check_output_path(path: &Path) -> Result<(), BadInput> {
-    let dir = path
-        .parent()
-        .filter(|d| !d.as_os_str().is_empty())
-        .unwrap_or(Path::new("."));
-    if !dir.is_dir() {
-        return Err(BadInput(format!(
-            "{}: the directory {} does not exist",
-            path.display(),
-            dir.display()
-        )));
-    }
-    if path.is_dir() {
-        return Err(BadInput(format!("{}: is a directory", path.display())));
-    }
-    Ok(())
+/// Refuses an output file before any work, by the rules of
+/// [`ps30::core::output`] (one of them: it is not one of `inputs`).
+pub fn check_output_path(path: &Path, inputs: &[&Path]) -> Result<(), BadInput> {
+    ps30::core::output::check(path, inputs).map_err(BadInput)
+}
+
+/// Refuses an output directory before any work, by the same rules.
+pub fn check_output_dir(dir: &Path) -> Result<(), BadInput> {
+    ps30::core::output::check_directory(dir).map_err(BadInput)
 }

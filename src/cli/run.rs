@@ -2,9 +2,9 @@
 
 use super::args::{
     constants, parse_float4, parse_float_const, AddressArg, BackendArgs, ConstantArgs, ExecArgs,
-    FilterArg, FormatArg, SourceArgs,
+    FilterArg, FormatArg, InputArgs, SourceArgs,
 };
-use super::io::{color_stderr, print_json, say, shader_source};
+use super::io::{check_output_path, color_stderr, print_json, say, shader_source};
 use super::ui::Ui;
 use super::{BadInput, Outcome};
 use ps30::core::diag::SourceFile;
@@ -13,7 +13,7 @@ use ps30::core::image::{self, write_exr, write_pfm};
 use ps30::core::load;
 use ps30::jobs::luminance::{run_pass, PassSetup};
 use ps30::present::luminance::{pass_json, pass_text};
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 #[derive(clap::Args)]
 pub struct Args {
@@ -47,15 +47,18 @@ pub struct Args {
     exec: ExecArgs,
     #[command(flatten)]
     draw: BackendArgs,
+    #[command(flatten)]
+    input: InputArgs,
 }
 
 pub fn run(args: Args, ui: &Ui) -> super::Result {
-    let src = shader_source(&args.shader)?;
+    if let Some(path) = &args.output {
+        check_output_path(path, &[&args.image, Path::new(&args.shader)])?;
+    }
+    let src = shader_source(&args.shader, args.input.max_input_bytes)?;
     let file = SourceFile::new(src.name.clone(), src.text);
     let loaded = load::load(file, &args.source.options()).map_err(|e| {
-        for d in &e.diagnostics.items {
-            d.emit(&e.file, color_stderr());
-        }
+        e.diagnostics.emit(&e.file, color_stderr());
         BadInput(e.to_string())
     })?;
     let img = image::load(&args.image, &args.exec.image_limits())?;

@@ -1,7 +1,7 @@
 //! `ps30 translate`: a shader in WGSL, SPIR-V, GLSL, HLSL or MSL, through
 //! naga, with a header naming the source and the binding layout.
 
-use super::args::{FloatRulesArg, SourceArgs};
+use super::args::{FloatRulesArg, InputArgs, SourceArgs};
 use super::io::{color_stderr, print, print_json, shader_source};
 use super::ui::Ui;
 use super::{BadInput, Outcome};
@@ -26,6 +26,8 @@ pub struct Args {
     float_rules: FloatRulesArg,
     #[command(flatten)]
     source: SourceArgs,
+    #[command(flatten)]
+    input: InputArgs,
     /// Print JSON (source, target, float_rules, interface, notes, output, text) instead of the translation.
     #[arg(long)]
     json: bool,
@@ -64,14 +66,12 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         ));
     }
     if let Some(out) = &args.output {
-        super::io::check_output_path(out)?;
+        super::io::check_output_path(out, &[std::path::Path::new(&args.shader)])?;
     }
-    let src = shader_source(&args.shader)?;
+    let src = shader_source(&args.shader, args.input.max_input_bytes)?;
     let file = SourceFile::new(src.name.clone(), src.text);
     let loaded = load::load(file, &args.source.options()).map_err(|e| {
-        for d in &e.diagnostics.items {
-            d.emit(&e.file, color_stderr());
-        }
+        e.diagnostics.emit(&e.file, color_stderr());
         BadInput(e.to_string())
     })?;
     let translation =

@@ -8,7 +8,10 @@
 //! model and the [`emu`]lator take a validated shader, and so does the
 //! [`translate`]ion to a naga module, which the [`gpu`] backend draws on a
 //! Vulkan device; the emulator and the translation compute by the same
-//! [`float_rules`]. [`image`] reads and writes the pixels they work on. [`diag`] renders every stage's errors,
+//! [`float_rules`]. [`image`] reads and writes the pixels they work on, in
+//! the render-target formats of D3D9, and [`merge`] is the output merger
+//! that puts a draw's colours into a target (blending, the colour write
+//! mask, clears). [`diag`] renders every stage's errors,
 //! [`numbers`] formats figures the same way everywhere, and [`output`] writes
 //! files atomically. Nothing here imports from `jobs` or `present`.
 
@@ -22,6 +25,7 @@ pub mod image;
 pub mod ir;
 pub mod isa;
 pub mod load;
+pub mod merge;
 pub mod numbers;
 pub mod output;
 pub mod translate;

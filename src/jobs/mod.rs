@@ -7,13 +7,13 @@
 //! Jobs import the core, [`bundled`] and [`backend`]; a job may use another
 //! job only where the arrow below points (no cycles):
 //!
-//! ```text
-//! verify ──▶ gen ──▶ luminance ◀── tonemap      profile ──▶ scenes
-//!    │                   ▲             ▲            │
-//!    └───────────────────┴─────────────┘            └──▶ luminance
-//!                        ▲             ▲
-//!                        └── compare ──┘
-//! ```
+//! * `verify` → `gen`, `luminance`, `tonemap`
+//! * `gen` → `luminance`, `studies` (the plan lists the mip-chain method)
+//! * `tonemap` → `luminance`
+//! * `profile` → `scenes`, `luminance`
+//! * `studies` → `render`, `luminance`, `tonemap`, `scenes`
+//! * `render` → `scenes` (its synthetic textures)
+//! * `compare` → `luminance`, `tonemap`, `gen`, `scenes` (the shaders it draws twice)
 //!
 //! [`conformance`] (the draws of the conformance corpus) uses no other job.
 
@@ -24,6 +24,8 @@ pub mod conformance;
 pub mod gen;
 pub mod luminance;
 pub mod profile;
+pub mod render;
 pub mod scenes;
+pub mod studies;
 pub mod tonemap;
 pub mod verify;

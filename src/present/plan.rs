@@ -2,7 +2,7 @@
 //! recommendation, and the same as JSON.
 
 use crate::core::numbers::thousands;
-use crate::jobs::gen::plan::{largest_term, Candidate, Plan, F16_MAX};
+use crate::jobs::gen::plan::{largest_term, Candidate, MipCandidate, Plan, F16_MAX};
 use crate::jobs::gen::profile_text;
 
 fn factor_text(f: f64) -> String {
@@ -27,6 +27,15 @@ pub fn plan_text(p: &Plan) -> String {
         profile_text(&p.profile),
         p.delta as f32
     );
+    s.push_str(&table(&candidate_rows(p), &[1, 2, 3, 7, 14]));
+    s.push('\n');
+    s.push_str(&recommendation_text(p));
+    s
+}
+
+/// The header row and one row per candidate (the recommended one marked
+/// `*`).
+fn candidate_rows(p: &Plan) -> Vec<Vec<String>> {
     let header = [
         "#",
         "variant",
@@ -71,13 +80,18 @@ pub fn plan_text(p: &Plan) -> String {
             c.listed_as.join("; "),
         ]);
     }
-    let cols = header.len();
+    rows
+}
+
+/// `rows` as aligned columns: the columns in `left` left-aligned, the
+/// others (numbers) right-aligned.
+fn table(rows: &[Vec<String>], left: &[usize]) -> String {
+    let mut s = String::new();
+    let cols = rows.first().map_or(0, |r| r.len());
     let widths: Vec<usize> = (0..cols)
         .map(|i| rows.iter().map(|r| r[i].chars().count()).max().unwrap_or(0))
         .collect();
-    // Text columns left-aligned, numbers right-aligned.
-    let left = [1, 2, 3, 7, 14];
-    for r in &rows {
+    for r in rows {
         let mut line = String::new();
         for (i, cell) in r.iter().enumerate() {
             let pad = widths[i] - cell.chars().count();
@@ -97,7 +111,13 @@ pub fn plan_text(p: &Plan) -> String {
         s.push_str(line.trim_end());
         s.push('\n');
     }
-    s.push('\n');
+    s
+}
+
+/// The recommendation, the rule and why, what the columns mean, and the
+/// notes.
+fn recommendation_text(p: &Plan) -> String {
+    let mut s = String::new();
     match p
         .recommended
         .as_ref()
@@ -149,7 +169,40 @@ tallest (that fits), r rows (the smallest height covering the frame with r rows)
     for n in &p.notes {
         s.push_str(&format!("note: {n}\n"));
     }
+    s.push_str(&mip_text(&p.approximate));
     s
+}
+
+/// The mip-chain alternative: its cost and predicted error.
+fn mip_text(m: &MipCandidate) -> String {
+    format!(
+        "\napproximate alternative (not ranked): log-luminance in 8-bit alpha over [2^−{min}, 2^{max}], \
+         averaged by the mip chain ({levels} levels to 1×1)\n  \
+         asm/mip-luminance/encode.psh: {slots} slots, {per} executed per pixel, {total} for the frame \
+         (the mip generation is fixed-function, not counted)\n  \
+         predicted error of L̄w, worst case: {q:.3} stops from 8-bit steps ({n} half-codes of {stops} \
+         stops / 255){odd}: {rel:.1} % in all; luminances outside the range clamp (not predictable \
+         without the frame; `ps30 study mip-luminance` measures real frames)\n",
+        min = m.range.0,
+        max = m.range.1,
+        levels = m.levels,
+        slots = m.slots,
+        per = m.executed_per_pixel,
+        total = thousands(m.total_executed),
+        q = m.quantisation_stops,
+        n = m.levels + 1,
+        stops = m.range.0 + m.range.1,
+        odd = if m.odd_sides_stops > 0.0 {
+            format!(
+                " + {:.3} stops from the frame's odd sides (unequal weights in the chain, for a frame \
+                 at the top of the range where the chain weighs most and at the bottom elsewhere)",
+                m.odd_sides_stops
+            )
+        } else {
+            ", no odd sides".to_string()
+        },
+        rel = 100.0 * m.predicted_relative_error,
+    )
 }
 
 /// The plan as JSON.

@@ -4,7 +4,7 @@
 use super::sampler;
 use super::{Gpu, GpuError};
 use crate::core::emu::{self, Draw};
-use crate::core::image::TargetFormat;
+use crate::core::image::{unorm8_value, Encoding, TargetFormat};
 use crate::core::ir::Shader;
 use crate::core::translate::{self, interface, Entry};
 use std::borrow::Cow;
@@ -21,24 +21,40 @@ pub enum TargetKind {
 
 impl TargetKind {
     fn wgpu(self) -> wgpu::TextureFormat {
+        use wgpu::TextureFormat as W;
         match self {
-            TargetKind::Raw => wgpu::TextureFormat::Rgba32Float,
-            TargetKind::Format(TargetFormat::R32F) => wgpu::TextureFormat::R32Float,
-            TargetKind::Format(TargetFormat::Rgba16F) => wgpu::TextureFormat::Rgba16Float,
+            TargetKind::Raw => W::Rgba32Float,
+            TargetKind::Format(f) => match f {
+                TargetFormat::A8R8G8B8 => W::Rgba8Unorm,
+                TargetFormat::R16F => W::R16Float,
+                TargetFormat::G16R16F => W::Rg16Float,
+                TargetFormat::Rgba16F => W::Rgba16Float,
+                TargetFormat::R32F => W::R32Float,
+                TargetFormat::G32R32F => W::Rg32Float,
+                TargetFormat::A32B32G32R32F => W::Rgba32Float,
+            },
         }
     }
 
-    /// A stored texel as four floats; R32F reads back as (r, 1, 1, 1), the
-    /// D3D9 default for missing channels (as [`TargetFormat::round`]).
+    /// A stored texel as four floats; channels the format does not store
+    /// read back as 1, the D3D9 default (as [`TargetFormat::round`]).
     fn decode(self, b: &[u8]) -> [f32; 4] {
-        let f32_at = |i: usize| f32::from_le_bytes([b[i], b[i + 1], b[i + 2], b[i + 3]]);
-        match self {
-            TargetKind::Raw => std::array::from_fn(|c| f32_at(4 * c)),
-            TargetKind::Format(TargetFormat::R32F) => [f32_at(0), 1.0, 1.0, 1.0],
-            TargetKind::Format(TargetFormat::Rgba16F) => {
-                std::array::from_fn(|c| half::f16::from_le_bytes([b[2 * c], b[2 * c + 1]]).to_f32())
+        let format = match self {
+            TargetKind::Raw => TargetFormat::A32B32G32R32F,
+            TargetKind::Format(f) => f,
+        };
+        std::array::from_fn(|c| {
+            if !format.stores(c) {
+                return 1.0;
             }
-        }
+            match format.encoding() {
+                Encoding::Unorm8 => unorm8_value(b[c]),
+                Encoding::Half => half::f16::from_le_bytes([b[2 * c], b[2 * c + 1]]).to_f32(),
+                Encoding::Float => {
+                    f32::from_le_bytes([b[4 * c], b[4 * c + 1], b[4 * c + 2], b[4 * c + 3]])
+                }
+            }
+        })
     }
 }
 

@@ -17,8 +17,10 @@
 //!   bit-identical inputs and any difference comes from the shader's
 //!   instructions, not from interpolation hardware;
 //! * **targets**: one per written `oC#`, in the format asked for
-//!   ([`TargetKind`]): `R32Float` for D3DFMT_R32F, `Rgba16Float` for
-//!   D3DFMT_A16B16G16R16F — the device rounds what it stores — or
+//!   ([`TargetKind`]): the wgpu format that stores what the D3D9 one does
+//!   (`R32Float` for D3DFMT_R32F, `Rgba16Float` for D3DFMT_A16B16G16R16F,
+//!   `Rg16Float`, `R16Float`, `Rg32Float`, `Rgba32Float`, and `Rgba8Unorm`
+//!   for D3DFMT_A8R8G8B8) — the device rounds what it stores — or
 //!   `Rgba32Float`, the emulator's unrounded output;
 //! * **samplers**: `sampler.rs` maps each D3D9 state to a wgpu sampler and
 //!   texture view plus the `Ps30Sampler` values the shader applies itself;

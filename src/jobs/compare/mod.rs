@@ -18,7 +18,7 @@ pub mod stats;
 
 use crate::core::emu::{self, Draw};
 use crate::core::gpu::{self, Gpu, GpuError, TargetKind};
-use crate::core::image::{HdrImage, TargetFormat};
+use crate::core::image::HdrImage;
 use crate::core::load::Loaded;
 use crate::jobs::backend::Backend;
 use crate::jobs::luminance::{self, LuminanceRun, PipelineError, ShaderSource};
@@ -103,11 +103,12 @@ fn target_name(kind: TargetKind) -> String {
     }
 }
 
-/// The channels a target stores: R32F only red.
+/// The channels a target stores: R32F and R16F only red, the two-channel
+/// formats red and green.
 fn stored_channels(kind: TargetKind) -> &'static [usize] {
     match kind {
-        TargetKind::Format(TargetFormat::R32F) => &[0],
-        _ => &[0, 1, 2, 3],
+        TargetKind::Raw => &[0, 1, 2, 3],
+        TargetKind::Format(f) => &[0, 1, 2, 3][..f.channels()],
     }
 }
 
