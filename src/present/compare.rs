@@ -6,9 +6,9 @@
 
 use crate::core::gpu::DeviceInfo;
 use crate::core::numbers::thousands;
-use crate::jobs::compare::all::{CrossCheck, TonemapComparison};
 use crate::jobs::compare::explain::Explanation;
 use crate::jobs::compare::stats::{bucket_label, ChannelStats, BUCKETS};
+use crate::jobs::compare::{CrossCheck, TonemapComparison};
 use crate::jobs::compare::{DrawComparison, LuminanceComparison};
 
 fn ulp_text(u: Option<u64>) -> String {

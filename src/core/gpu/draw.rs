@@ -114,6 +114,55 @@ pub fn run(
     draw: &Draw,
     targets: TargetKind,
 ) -> Result<GpuOutput, GpuError> {
+    refuse(gpu, shader, draw)?;
+    let (w, h) = (draw.target_width, draw.target_height);
+    let t =
+        translate::translate(shader, draw.float_rules, Entry::Draw).map_err(GpuError::Translate)?;
+    let iface = t.interface.clone();
+    let device = &gpu.device;
+    let validation = device.push_error_scope(wgpu::ErrorFilter::Validation);
+    let memory = device.push_error_scope(wgpu::ErrorFilter::OutOfMemory);
+
+    let bindings = Bindings::new(gpu, draw, &iface)?;
+    let color_targets = color_targets(&iface, targets);
+    let pipeline = render_pipeline(device, t.module, &bindings, &color_targets, draw, &iface)?;
+    let attachments: Vec<Option<(wgpu::Texture, wgpu::TextureFormat)>> = color_targets
+        .iter()
+        .map(|c| {
+            c.as_ref()
+                .map(|c| (target_texture(device, w, h, c.format), c.format))
+        })
+        .collect();
+    let depth = iface
+        .depth
+        .then(|| target_texture(device, w, h, wgpu::TextureFormat::Depth32Float));
+
+    let mut encoder = device.create_command_encoder(&Default::default());
+    record_pass(
+        &mut encoder,
+        &attachments,
+        depth.as_ref(),
+        &pipeline,
+        &bindings.group,
+    );
+    let readbacks = copy_targets(device, &mut encoder, &attachments, depth.as_ref(), w, h);
+    gpu.queue.submit([encoder.finish()]);
+    let data = read_all(gpu, &readbacks)?;
+    if let Some(e) = pollster::block_on(memory.pop()) {
+        return Err(GpuError::Failed(e.to_string()));
+    }
+    if let Some(e) = pollster::block_on(validation.pop()) {
+        return Err(GpuError::Failed(e.to_string()));
+    }
+    if let Some(e) = gpu.uncaptured.lock().ok().and_then(|mut e| e.take()) {
+        return Err(GpuError::Failed(e));
+    }
+    Ok(assemble(w, h, &iface, targets, &readbacks, data))
+}
+
+/// Refuses what the emulator refuses ([`emu::check`]), samplers other than
+/// 2D (as the emulator does), and targets larger than the device's.
+fn refuse(gpu: &Gpu, shader: &Shader, draw: &Draw) -> Result<(), GpuError> {
     let compiled = emu::compile(shader).map_err(GpuError::Draw)?;
     emu::check(&compiled, draw).map_err(GpuError::Draw)?;
     if let Some(d) = shader
@@ -134,30 +183,15 @@ pub fn run(
             "a {w}×{h} target: the device's textures are at most {max} texels a side"
         )));
     }
-    let t =
-        translate::translate(shader, draw.float_rules, Entry::Draw).map_err(GpuError::Translate)?;
-    let iface = t.interface.clone();
-    let device = &gpu.device;
-    let validation = device.push_error_scope(wgpu::ErrorFilter::Validation);
-    let memory = device.push_error_scope(wgpu::ErrorFilter::OutOfMemory);
+    Ok(())
+}
 
-    let vertex = naga::front::wgsl::parse_str(VERTEX_WGSL)
-        .map_err(|e| GpuError::Failed(format!("vertex shader: {e}")))?;
-    let vs = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-        label: Some("ps30 full-screen triangle"),
-        source: wgpu::ShaderSource::Naga(Cow::Owned(vertex)),
-    });
-    let fs = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-        label: Some("ps30 translated shader"),
-        source: wgpu::ShaderSource::Naga(Cow::Owned(t.module)),
-    });
-
-    let bindings = Bindings::new(gpu, draw, &iface)?;
-    let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
-        label: None,
-        bind_group_layouts: &[Some(&bindings.layout)],
-        immediate_size: 0,
-    });
+/// One colour target per written `oC#` (slot k for `oC`k), then the
+/// texkill flag when the shader kills; trailing empty slots dropped.
+fn color_targets(
+    iface: &interface::Interface,
+    targets: TargetKind,
+) -> Vec<Option<wgpu::ColorTargetState>> {
     let format = targets.wgpu();
     let mut color_targets: Vec<Option<wgpu::ColorTargetState>> = vec![None; 4];
     for &k in &iface.outputs {
@@ -169,137 +203,143 @@ pub fn run(
     while color_targets.last().is_some_and(|c| c.is_none()) {
         color_targets.pop();
     }
-    let pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-        label: Some("ps30 draw"),
-        layout: Some(&layout),
-        vertex: wgpu::VertexState {
-            module: &vs,
-            entry_point: Some("vs"),
-            compilation_options: Default::default(),
-            buffers: &[],
-        },
-        // The triangle is counter-clockwise in WebGPU's terms; calling
-        // that winding the back face makes its pixels back-facing.
-        primitive: wgpu::PrimitiveState {
-            front_face: match draw.face {
-                emu::Face::Front => wgpu::FrontFace::Ccw,
-                emu::Face::Back => wgpu::FrontFace::Cw,
-            },
-            ..Default::default()
-        },
-        depth_stencil: iface.depth.then(|| wgpu::DepthStencilState {
-            format: wgpu::TextureFormat::Depth32Float,
-            depth_write_enabled: Some(true),
-            depth_compare: Some(wgpu::CompareFunction::Always),
-            stencil: Default::default(),
-            bias: Default::default(),
-        }),
-        multisample: Default::default(),
-        fragment: Some(wgpu::FragmentState {
-            module: &fs,
-            entry_point: Some("ps30_draw"),
-            compilation_options: Default::default(),
-            targets: &color_targets,
-        }),
-        multiview_mask: None,
-        cache: None,
-    });
+    color_targets
+}
 
-    let attachments: Vec<Option<(wgpu::Texture, wgpu::TextureFormat)>> = color_targets
-        .iter()
-        .map(|c| {
-            c.as_ref()
-                .map(|c| (target_texture(device, w, h, c.format), c.format))
-        })
-        .collect();
-    let depth = iface
-        .depth
-        .then(|| target_texture(device, w, h, wgpu::TextureFormat::Depth32Float));
+/// The pipeline: the full-screen triangle and the translated shader.
+fn render_pipeline(
+    device: &wgpu::Device,
+    fragment: naga::Module,
+    bindings: &Bindings,
+    color_targets: &[Option<wgpu::ColorTargetState>],
+    draw: &Draw,
+    iface: &interface::Interface,
+) -> Result<wgpu::RenderPipeline, GpuError> {
+    let vertex = naga::front::wgsl::parse_str(VERTEX_WGSL)
+        .map_err(|e| GpuError::Failed(format!("vertex shader: {e}")))?;
+    let vs = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+        label: Some("ps30 full-screen triangle"),
+        source: wgpu::ShaderSource::Naga(Cow::Owned(vertex)),
+    });
+    let fs = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+        label: Some("ps30 translated shader"),
+        source: wgpu::ShaderSource::Naga(Cow::Owned(fragment)),
+    });
+    let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+        label: None,
+        bind_group_layouts: &[Some(&bindings.layout)],
+        immediate_size: 0,
+    });
+    Ok(
+        device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+            label: Some("ps30 draw"),
+            layout: Some(&layout),
+            vertex: wgpu::VertexState {
+                module: &vs,
+                entry_point: Some("vs"),
+                compilation_options: Default::default(),
+                buffers: &[],
+            },
+            // The triangle is counter-clockwise in WebGPU's terms; calling
+            // that winding the back face makes its pixels back-facing.
+            primitive: wgpu::PrimitiveState {
+                front_face: match draw.face {
+                    emu::Face::Front => wgpu::FrontFace::Ccw,
+                    emu::Face::Back => wgpu::FrontFace::Cw,
+                },
+                ..Default::default()
+            },
+            depth_stencil: iface.depth.then(|| wgpu::DepthStencilState {
+                format: wgpu::TextureFormat::Depth32Float,
+                depth_write_enabled: Some(true),
+                depth_compare: Some(wgpu::CompareFunction::Always),
+                stencil: Default::default(),
+                bias: Default::default(),
+            }),
+            multisample: Default::default(),
+            fragment: Some(wgpu::FragmentState {
+                module: &fs,
+                entry_point: Some("ps30_draw"),
+                compilation_options: Default::default(),
+                targets: color_targets,
+            }),
+            multiview_mask: None,
+            cache: None,
+        }),
+    )
+}
+
+/// The render pass: every target cleared, one triangle drawn.
+fn record_pass(
+    encoder: &mut wgpu::CommandEncoder,
+    attachments: &[Option<(wgpu::Texture, wgpu::TextureFormat)>],
+    depth: Option<&wgpu::Texture>,
+    pipeline: &wgpu::RenderPipeline,
+    group: &wgpu::BindGroup,
+) {
     let views: Vec<Option<wgpu::TextureView>> = attachments
         .iter()
         .map(|a| a.as_ref().map(|(t, _)| t.create_view(&Default::default())))
         .collect();
-    let depth_view = depth.as_ref().map(|t| t.create_view(&Default::default()));
-
-    let mut encoder = device.create_command_encoder(&Default::default());
-    {
-        let color_attachments: Vec<Option<wgpu::RenderPassColorAttachment>> = views
-            .iter()
-            .map(|v| {
-                v.as_ref().map(|view| wgpu::RenderPassColorAttachment {
-                    view,
-                    depth_slice: None,
-                    resolve_target: None,
-                    ops: wgpu::Operations {
-                        load: wgpu::LoadOp::Clear(wgpu::Color::TRANSPARENT),
-                        store: wgpu::StoreOp::Store,
-                    },
-                })
+    let depth_view = depth.map(|t| t.create_view(&Default::default()));
+    let color_attachments: Vec<Option<wgpu::RenderPassColorAttachment>> = views
+        .iter()
+        .map(|v| {
+            v.as_ref().map(|view| wgpu::RenderPassColorAttachment {
+                view,
+                depth_slice: None,
+                resolve_target: None,
+                ops: wgpu::Operations {
+                    load: wgpu::LoadOp::Clear(wgpu::Color::TRANSPARENT),
+                    store: wgpu::StoreOp::Store,
+                },
             })
-            .collect();
-        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-            label: Some("ps30 draw"),
-            color_attachments: &color_attachments,
-            depth_stencil_attachment: depth_view.as_ref().map(|view| {
-                wgpu::RenderPassDepthStencilAttachment {
-                    view,
-                    depth_ops: Some(wgpu::Operations {
-                        load: wgpu::LoadOp::Clear(0.0),
-                        store: wgpu::StoreOp::Store,
-                    }),
-                    stencil_ops: None,
-                }
-            }),
-            ..Default::default()
-        });
-        pass.set_pipeline(&pipeline);
-        pass.set_bind_group(0, &bindings.group, &[]);
-        pass.draw(0..3, 0..1);
-    }
+        })
+        .collect();
+    let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+        label: Some("ps30 draw"),
+        color_attachments: &color_attachments,
+        depth_stencil_attachment: depth_view.as_ref().map(|view| {
+            wgpu::RenderPassDepthStencilAttachment {
+                view,
+                depth_ops: Some(wgpu::Operations {
+                    load: wgpu::LoadOp::Clear(0.0),
+                    store: wgpu::StoreOp::Store,
+                }),
+                stencil_ops: None,
+            }
+        }),
+        ..Default::default()
+    });
+    pass.set_pipeline(pipeline);
+    pass.set_bind_group(0, group, &[]);
+    pass.draw(0..3, 0..1);
+}
+
+/// Copies every target into a buffer the host can map.
+fn copy_targets(
+    device: &wgpu::Device,
+    encoder: &mut wgpu::CommandEncoder,
+    attachments: &[Option<(wgpu::Texture, wgpu::TextureFormat)>],
+    depth: Option<&wgpu::Texture>,
+    w: u32,
+    h: u32,
+) -> Vec<(Slot, Readback)> {
     let mut readbacks = Vec::new();
     for (k, a) in attachments.iter().enumerate() {
         if let Some((texture, format)) = a {
             let bytes = format.block_copy_size(None).unwrap_or(16);
-            readbacks.push((
-                Slot::Color(k),
-                copy_out(
-                    device,
-                    &mut encoder,
-                    texture,
-                    w,
-                    h,
-                    bytes,
-                    wgpu::TextureAspect::All,
-                ),
-            ));
+            let aspect = wgpu::TextureAspect::All;
+            let r = copy_out(device, encoder, texture, w, h, bytes, aspect);
+            readbacks.push((Slot::Color(k), r));
         }
     }
-    if let Some(d) = &depth {
-        readbacks.push((
-            Slot::Depth,
-            copy_out(
-                device,
-                &mut encoder,
-                d,
-                w,
-                h,
-                4,
-                wgpu::TextureAspect::DepthOnly,
-            ),
-        ));
+    if let Some(d) = depth {
+        let aspect = wgpu::TextureAspect::DepthOnly;
+        let r = copy_out(device, encoder, d, w, h, 4, aspect);
+        readbacks.push((Slot::Depth, r));
     }
-    gpu.queue.submit([encoder.finish()]);
-    let data = read_all(gpu, &readbacks)?;
-    if let Some(e) = pollster::block_on(memory.pop()) {
-        return Err(GpuError::Failed(e.to_string()));
-    }
-    if let Some(e) = pollster::block_on(validation.pop()) {
-        return Err(GpuError::Failed(e.to_string()));
-    }
-    if let Some(e) = gpu.uncaptured.lock().ok().and_then(|mut e| e.take()) {
-        return Err(GpuError::Failed(e));
-    }
-    Ok(assemble(w, h, &iface, targets, &readbacks, data))
+    readbacks
 }
 
 /// Which target a read-back buffer holds.
@@ -481,115 +521,35 @@ impl Bindings {
     fn new(gpu: &Gpu, draw: &Draw, iface: &translate::Interface) -> Result<Bindings, GpuError> {
         let device = &gpu.device;
         let filterable = gpu.float32_filterable();
-        let mut block = vec![0u8; interface::CONSTANTS_SIZE as usize];
-        let mut put = |offset: usize, words: [u32; 4]| {
-            for (i, w) in words.iter().enumerate() {
-                block[offset + 4 * i..offset + 4 * i + 4].copy_from_slice(&w.to_le_bytes());
-            }
-        };
-        for (i, v) in draw.constants.float.iter().enumerate() {
-            put(
-                interface::FLOATS_OFFSET as usize + 16 * i,
-                v.map(f32::to_bits),
-            );
-        }
-        for (i, v) in draw.constants.int.iter().enumerate() {
-            put(
-                interface::INTS_OFFSET as usize + 16 * i,
-                v.map(|x| x as u32),
-            );
-        }
-        for (i, &b) in draw.constants.bool.iter().enumerate() {
-            put(
-                interface::BOOLS_OFFSET as usize + 16 * i,
-                [b as u32, 0, 0, 0],
-            );
-        }
-
-        let mut layout_entries = vec![wgpu::BindGroupLayoutEntry {
-            binding: interface::CONSTANTS_BINDING,
-            visibility: wgpu::ShaderStages::FRAGMENT,
-            ty: wgpu::BindingType::Buffer {
+        let mut block = constant_block(draw);
+        let mut layout_entries = vec![entry(
+            interface::CONSTANTS_BINDING,
+            wgpu::BindingType::Buffer {
                 ty: wgpu::BufferBindingType::Uniform,
                 has_dynamic_offset: false,
                 min_binding_size: None,
             },
-            count: None,
-        }];
+        )];
         let mut views = Vec::new();
         let mut samplers = Vec::new();
         for s in &iface.samplers {
-            let bound = draw.samplers.iter().find(|b| b.0 == s.register);
-            let (levels, state) = match bound {
-                Some((_, tex, state)) => (tex.views(), *state),
-                // An unbound sampler reads (0, 0, 0, 1) (MS texldl---ps): a
-                // 1×1 texture of that value, clamped.
-                None => (
-                    Vec::new(),
-                    emu::SamplerState {
-                        address_u: emu::Address::Clamp,
-                        address_v: emu::Address::Clamp,
-                        ..Default::default()
-                    },
-                ),
-            };
-            let mapped = sampler::map(
-                &state,
-                levels.len().max(1) as u32,
-                s.register,
-                gpu.clamp_to_border(),
-            )?;
-            if mapped.filtering && !filterable {
-                return Err(GpuError::Unsupported(format!(
-                    "s{} filters linearly and the device cannot filter 32-bit float textures (FLOAT32_FILTERABLE)",
-                    s.register
-                )));
-            }
-            block[interface::SAMPLERS_OFFSET as usize + 64 * s.register as usize..][..64]
-                .copy_from_slice(&mapped.block);
-            let texture = upload(gpu, &levels, s.register)?;
-            views.push((
-                s.texture_binding,
-                texture.create_view(&wgpu::TextureViewDescriptor {
-                    base_mip_level: mapped.base_level,
-                    mip_level_count: Some(mapped.level_count),
-                    ..Default::default()
-                }),
-            ));
-            samplers.push((s.sampler_binding, device.create_sampler(&mapped.descriptor)));
-            layout_entries.push(wgpu::BindGroupLayoutEntry {
-                binding: s.texture_binding,
-                visibility: wgpu::ShaderStages::FRAGMENT,
-                ty: wgpu::BindingType::Texture {
-                    sample_type: wgpu::TextureSampleType::Float { filterable },
-                    view_dimension: wgpu::TextureViewDimension::D2,
-                    multisampled: false,
-                },
-                count: None,
-            });
-            layout_entries.push(wgpu::BindGroupLayoutEntry {
-                binding: s.sampler_binding,
-                visibility: wgpu::ShaderStages::FRAGMENT,
-                ty: wgpu::BindingType::Sampler(if filterable {
+            let (view, sampler) = bind_sampler(gpu, draw, s.register, &mut block)?;
+            views.push((s.texture_binding, view));
+            samplers.push((s.sampler_binding, sampler));
+            layout_entries.push(entry(s.texture_binding, texture_type(filterable, false)));
+            layout_entries.push(entry(
+                s.sampler_binding,
+                wgpu::BindingType::Sampler(if filterable {
                     wgpu::SamplerBindingType::Filtering
                 } else {
                     wgpu::SamplerBindingType::NonFiltering
                 }),
-                count: None,
-            });
+            ));
         }
         let inputs = (!iface.inputs.is_empty()).then(|| input_texture(gpu, draw, iface));
         if inputs.is_some() {
-            layout_entries.push(wgpu::BindGroupLayoutEntry {
-                binding: interface::DRAW_INPUTS_BINDING,
-                visibility: wgpu::ShaderStages::FRAGMENT,
-                ty: wgpu::BindingType::Texture {
-                    sample_type: wgpu::TextureSampleType::Float { filterable: false },
-                    view_dimension: wgpu::TextureViewDimension::D2Array,
-                    multisampled: false,
-                },
-                count: None,
-            });
+            let ty = texture_type(false, true);
+            layout_entries.push(entry(interface::DRAW_INPUTS_BINDING, ty));
         }
         let buffer = device.create_buffer(&wgpu::BufferDescriptor {
             label: Some("ps30 constants"),
@@ -613,15 +573,17 @@ impl Bindings {
             resource: buffer.as_entire_binding(),
         }];
         for (b, v) in &views {
+            let resource = wgpu::BindingResource::TextureView(v);
             entries.push(wgpu::BindGroupEntry {
                 binding: *b,
-                resource: wgpu::BindingResource::TextureView(v),
+                resource,
             });
         }
         for (b, s) in &samplers {
+            let resource = wgpu::BindingResource::Sampler(s);
             entries.push(wgpu::BindGroupEntry {
                 binding: *b,
-                resource: wgpu::BindingResource::Sampler(s),
+                resource,
             });
         }
         if let Some(v) = &input_view {
@@ -637,6 +599,100 @@ impl Bindings {
         });
         Ok(Bindings { layout, group })
     }
+}
+
+/// A binding the fragment stage sees.
+fn entry(binding: u32, ty: wgpu::BindingType) -> wgpu::BindGroupLayoutEntry {
+    wgpu::BindGroupLayoutEntry {
+        binding,
+        visibility: wgpu::ShaderStages::FRAGMENT,
+        ty,
+        count: None,
+    }
+}
+
+/// A float texture binding: 2D, or a 2D array (the draw's inputs).
+fn texture_type(filterable: bool, array: bool) -> wgpu::BindingType {
+    wgpu::BindingType::Texture {
+        sample_type: wgpu::TextureSampleType::Float { filterable },
+        view_dimension: if array {
+            wgpu::TextureViewDimension::D2Array
+        } else {
+            wgpu::TextureViewDimension::D2
+        },
+        multisampled: false,
+    }
+}
+
+/// The uniform block with the draw's `c#`, `i#` and `b#` at the offsets of
+/// [`interface`] (the sampler records are filled by [`bind_sampler`]).
+fn constant_block(draw: &Draw) -> Vec<u8> {
+    let mut block = vec![0u8; interface::CONSTANTS_SIZE as usize];
+    let mut put = |offset: usize, words: [u32; 4]| {
+        for (i, w) in words.iter().enumerate() {
+            block[offset + 4 * i..offset + 4 * i + 4].copy_from_slice(&w.to_le_bytes());
+        }
+    };
+    for (i, v) in draw.constants.float.iter().enumerate() {
+        put(
+            interface::FLOATS_OFFSET as usize + 16 * i,
+            v.map(f32::to_bits),
+        );
+    }
+    for (i, v) in draw.constants.int.iter().enumerate() {
+        put(
+            interface::INTS_OFFSET as usize + 16 * i,
+            v.map(|x| x as u32),
+        );
+    }
+    for (i, &b) in draw.constants.bool.iter().enumerate() {
+        put(
+            interface::BOOLS_OFFSET as usize + 16 * i,
+            [b as u32, 0, 0, 0],
+        );
+    }
+    block
+}
+
+/// Sampler `register`: its texture uploaded, its D3D9 state mapped to a
+/// wgpu sampler and view, and what the shader applies itself written into
+/// `block`'s record for it.
+fn bind_sampler(
+    gpu: &Gpu,
+    draw: &Draw,
+    register: u32,
+    block: &mut [u8],
+) -> Result<(wgpu::TextureView, wgpu::Sampler), GpuError> {
+    let bound = draw.samplers.iter().find(|b| b.0 == register);
+    let (levels, state) = match bound {
+        Some((_, tex, state)) => (tex.views(), *state),
+        // An unbound sampler reads (0, 0, 0, 1) (MS texldl---ps): a
+        // 1×1 texture of that value, clamped.
+        None => (
+            Vec::new(),
+            emu::SamplerState {
+                address_u: emu::Address::Clamp,
+                address_v: emu::Address::Clamp,
+                ..Default::default()
+            },
+        ),
+    };
+    let count = levels.len().max(1) as u32;
+    let mapped = sampler::map(&state, count, register, gpu.clamp_to_border())?;
+    if mapped.filtering && !gpu.float32_filterable() {
+        return Err(GpuError::Unsupported(format!(
+            "s{register} filters linearly and the device cannot filter 32-bit float textures (FLOAT32_FILTERABLE)"
+        )));
+    }
+    block[interface::SAMPLERS_OFFSET as usize + 64 * register as usize..][..64]
+        .copy_from_slice(&mapped.block);
+    let texture = upload(gpu, &levels, register)?;
+    let view = texture.create_view(&wgpu::TextureViewDescriptor {
+        base_mip_level: mapped.base_level,
+        mip_level_count: Some(mapped.level_count),
+        ..Default::default()
+    });
+    Ok((view, gpu.device.create_sampler(&mapped.descriptor)))
 }
 
 /// An `Rgba32Float` texture with `levels` (none: the 1×1 unbound value).

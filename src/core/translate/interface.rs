@@ -171,7 +171,9 @@ impl Interface {
                     if s.reg.file != file {
                         continue;
                     }
-                    let rows = super::lower::matrix_rows(ins.op)
+                    let rows = ins
+                        .op
+                        .matrix_shape()
                         .filter(|_| k == 1)
                         .map_or(1, |(n, _)| n);
                     v.extend((s.reg.index..s.reg.index + rows).filter(|r| !own.contains(r)));

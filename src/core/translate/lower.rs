@@ -18,19 +18,6 @@ use crate::core::ir::{Instruction, Reg, Src, SrcMod, Swizzle};
 use crate::core::isa::{Compare, Opcode, RegFile};
 use naga::{BinaryOperator as B, Expression, MathFunction as M, SwizzleComponent, VectorSize};
 
-/// How many consecutive registers a matrix instruction reads from `src1`,
-/// and its dot-product width.
-pub(super) fn matrix_rows(op: Opcode) -> Option<(u32, u32)> {
-    match op {
-        Opcode::M4x4 => Some((4, 4)),
-        Opcode::M4x3 => Some((3, 4)),
-        Opcode::M3x4 => Some((4, 3)),
-        Opcode::M3x3 => Some((3, 3)),
-        Opcode::M3x2 => Some((2, 3)),
-        _ => None,
-    }
-}
-
 /// The largest f32 below 1 (`frc`'s upper end under the D3D9 rules).
 const BELOW_ONE: f32 = 1.0 - f32::EPSILON / 2.0;
 
@@ -611,7 +598,7 @@ impl Lower<'_> {
 
     /// `m4x4` … `m3x2`: component k is the dot product with register src1 + k.
     fn matrix(&mut self, ins: &Instruction) -> Result<(), TranslateError> {
-        let (rows, dims) = matrix_rows(ins.op).unwrap_or((4, 4));
+        let (rows, dims) = ins.op.matrix_shape().unwrap_or((4, 4));
         let a = self.src(ins, 0)?;
         let m = *ins
             .src

@@ -166,7 +166,8 @@ pub fn translate(
     entry: Entry,
 ) -> Result<Translation, TranslateError> {
     let mut module = naga::Module::default();
-    let cx = Ctx::new(&mut module, shader)?;
+    let mut cx = Ctx::new(&mut module, shader)?;
+    cx.border = texture::add_border_function(&mut module, shader, &cx.t);
     let functions = lower_functions(&mut module, &cx, shader, rules)?;
     let main = *functions
         .get(&MAIN)

@@ -265,7 +265,7 @@ impl Ctx {
                 .iter()
                 .map(|d| (d.reg, 1))
                 .chain(ins.src.iter().enumerate().map(|(k, s)| {
-                    let rows = super::lower::matrix_rows(ins.op).filter(|_| k == 1);
+                    let rows = ins.op.matrix_shape().filter(|_| k == 1);
                     (s.reg, rows.map_or(1, |(n, _)| n))
                 }));
             for (reg, rows) in regs {
@@ -309,14 +309,6 @@ impl Ctx {
             int_defs.insert(d.index, c);
         }
         let bool_defs = p.bool_defs.iter().map(|d| (d.index, d.value)).collect();
-        let border = p
-            .samplers
-            .iter()
-            .any(|d| d.ty != SamplerType::Cube)
-            .then(|| {
-                m.functions
-                    .append(super::texture::border_function(&t), Span::UNDEFINED)
-            });
         Ok(Ctx {
             t,
             consts,
@@ -330,7 +322,8 @@ impl Ctx {
             p0,
             killed,
             textures,
-            border,
+            // Added by `core::translate` with `texture::add_border_function`.
+            border: None,
             float_defs,
             int_defs,
             bool_defs,

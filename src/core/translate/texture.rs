@@ -190,12 +190,30 @@ impl Lower<'_> {
     }
 }
 
+/// Adds `ps30_border` to the module when a 2D or volume sampler may need
+/// it (a cube map never samples its border).
+pub(super) fn add_border_function(
+    m: &mut naga::Module,
+    shader: &crate::core::ir::Shader,
+    t: &super::module::Types,
+) -> Option<naga::Handle<naga::Function>> {
+    let needed = shader
+        .program()
+        .samplers
+        .iter()
+        .any(|d| d.ty != SamplerType::Cube);
+    needed.then(|| {
+        m.functions
+            .append(border_function(t), naga::Span::UNDEFINED)
+    })
+}
+
 /// `ps30_border(value, coord, size, mode, colour)`: `value` when
 /// `mode.w` is 0, else `value + colour · (1 − w)` with w the weight of the
 /// taps inside the texture on the axes `mode.xyz` marks (point:
 /// 0 ≤ c < 1; linear: taps t0 = ⌊c·n − ½⌋ and t0 + 1 with weights 1 − f
 /// and f, each counted when it lies in [0, n)).
-pub(super) fn border_function(t: &super::module::Types) -> naga::Function {
+fn border_function(t: &super::module::Types) -> naga::Function {
     let mut fb = super::builder::Fb::new("ps30_border");
     let args = [
         ("value", t.vec4),

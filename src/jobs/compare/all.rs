@@ -14,44 +14,20 @@
 //! * the light-model shaders on their synthetic G-buffer.
 
 use super::explain;
-use super::probe::{self, Probe};
+use super::probe;
 use super::stats::ChannelStats;
-use super::{compare_draw, compare_luminance, CompareError, DrawComparison, LuminanceComparison};
-use crate::core::gpu::{DeviceInfo, Gpu, TargetKind};
+use super::{
+    compare_draw, compare_luminance, CompareError, CrossCheck, DrawComparison, TonemapComparison,
+};
+use crate::core::gpu::{Gpu, TargetKind};
 use crate::core::image::{self, HdrImage, ImageLimits, TargetFormat};
 use crate::core::load::{self, Options};
 use crate::jobs::backend::Backend;
 use crate::jobs::bundled;
 use crate::jobs::luminance::{self, ShaderSource};
 use crate::jobs::tonemap;
-use serde::Serialize;
 use std::path::Path;
 use std::sync::Arc;
-
-/// Tone mapping of one image on both backends.
-#[derive(Clone, Debug, Serialize)]
-pub struct TonemapComparison {
-    pub image: String,
-    /// The r, g, b channels of the linear result.
-    pub draw: DrawComparison,
-    pub pixels: u64,
-    /// Pixels within their derived bound of the f64 reference, per backend.
-    pub gpu_within: u64,
-    pub emulator_within: u64,
-    /// Why the backends differ; set once probes ran.
-    pub explanation: Option<super::explain::Explanation>,
-}
-
-/// Everything `ps30 compare --all` measured.
-#[derive(Clone, Debug, Serialize)]
-pub struct CrossCheck {
-    pub device: DeviceInfo,
-    pub float_rules: String,
-    pub probes: Vec<Probe>,
-    pub luminance: Vec<LuminanceComparison>,
-    pub tonemap: Vec<TonemapComparison>,
-    pub lights: Vec<DrawComparison>,
-}
 
 fn source(b: bundled::Bundled) -> ShaderSource {
     ShaderSource::new(b.path, b.text)
@@ -60,19 +36,19 @@ fn source(b: bundled::Bundled) -> ShaderSource {
 /// The image the article's frame size is: every pipeline variant runs on it.
 pub const FRAME_IMAGE: &str = "courtyard_1280x1024.exr";
 
-/// Runs the whole set. `images` is the folder of the bundled images and
-/// `names` the files in it; `progress(step, total, what)` is called before
-/// each step.
-pub fn run(
-    gpu: &Arc<Gpu>,
-    images: &Path,
-    names: &[&str],
-    progress: &dyn Fn(usize, usize, &str),
-) -> Result<CrossCheck, CompareError> {
-    let settings = luminance::Settings {
-        threads: None,
-        ..luminance::Settings::default()
-    };
+/// (pass 1, last column, pass 2, block, target format) on the frame image.
+type Pipeline = (
+    ShaderSource,
+    Option<ShaderSource>,
+    ShaderSource,
+    (u32, u32),
+    TargetFormat,
+);
+
+/// The pipelines run on the frame image: the article's and the corrected
+/// listings (loop and unrolled; the corrected unrolled pair also into an
+/// f16 target, finding 3) and the generated shaders for 1280×1024.
+fn frame_pipelines() -> Result<Vec<Pipeline>, CompareError> {
     let (bundle, _) = crate::jobs::gen::set::frame_set((1280, 1024))
         .map_err(|e| CompareError::Other(format!("generated shaders: {e}")))?;
     let generated = |file: &str| -> Result<ShaderSource, CompareError> {
@@ -88,24 +64,17 @@ pub fn run(
             })
             .ok_or_else(|| CompareError::Other(format!("no generated shader {file}")))
     };
-    // (pass 1, last column, pass 2, block, target format) on the frame image.
-    type Pipeline = (
-        ShaderSource,
-        Option<ShaderSource>,
-        ShaderSource,
-        (u32, u32),
-        TargetFormat,
-    );
     let f32 = TargetFormat::R32F;
     let (a1, a2) = (bundled::ARTICLE_LOOP, bundled::ARTICLE_PASS2);
     let (c1, c2) = (bundled::CORRECTED_LOOP, bundled::CORRECTED_PASS2);
+    let unrolled = (125, 128);
     let mut pipelines: Vec<Pipeline> = vec![
         (source(a1), None, source(a2), (128, 56), f32),
         (
             source(bundled::ARTICLE_UNROLLED),
             None,
             source(a2),
-            (125, 128),
+            unrolled,
             f32,
         ),
         (source(c1), None, source(c2), (128, 56), f32),
@@ -113,7 +82,7 @@ pub fn run(
             source(bundled::CORRECTED_UNROLLED),
             None,
             source(c2),
-            (125, 128),
+            unrolled,
             f32,
         ),
         // Finding 3: an f16 target cannot hold the sums.
@@ -121,7 +90,7 @@ pub fn run(
             source(bundled::CORRECTED_UNROLLED),
             None,
             source(c2),
-            (125, 128),
+            unrolled,
             TargetFormat::Rgba16F,
         ),
     ];
@@ -134,7 +103,33 @@ pub fn run(
             pipelines.push((p1, Some(generated(last)?), p2, block, f32));
         }
     }
-    let others: Vec<&&str> = names.iter().filter(|n| **n != FRAME_IMAGE).collect();
+    Ok(pipelines)
+}
+
+fn load_image(images: &Path, name: &str) -> Result<HdrImage, CompareError> {
+    image::load(&images.join(name), &ImageLimits::default())
+        .map_err(|e| CompareError::Other(e.to_string()))
+}
+
+/// Runs the whole set. `images` is the folder of the bundled images and
+/// `names` the files in it; `progress(step, total, what)` is called before
+/// each step.
+pub fn run(
+    gpu: &Arc<Gpu>,
+    images: &Path,
+    names: &[&str],
+    progress: &dyn Fn(usize, usize, &str),
+) -> Result<CrossCheck, CompareError> {
+    let settings = luminance::Settings {
+        threads: None,
+        ..luminance::Settings::default()
+    };
+    let pipelines = frame_pipelines()?;
+    let others: Vec<&str> = names
+        .iter()
+        .copied()
+        .filter(|n| *n != FRAME_IMAGE)
+        .collect();
     let total = 1 + pipelines.len() + others.len() + names.len() + 2;
     let mut step = 0;
     let mut next = |what: &str| {
@@ -145,11 +140,7 @@ pub fn run(
     next("instruction probes");
     let probes = probe::run(gpu)?;
 
-    let load_image = |name: &str| -> Result<HdrImage, CompareError> {
-        image::load(&images.join(name), &ImageLimits::default())
-            .map_err(|e| CompareError::Other(e.to_string()))
-    };
-    let frame = load_image(FRAME_IMAGE)?;
+    let frame = load_image(images, FRAME_IMAGE)?;
     let mut lum = Vec::new();
     for (p1, last, p2, block, format) in &pipelines {
         next(&format!("luminance: {}", p1.name));
@@ -158,28 +149,22 @@ pub fn run(
             format: *format,
             ..settings.clone()
         };
-        lum.push(compare_luminance(
-            gpu,
-            (FRAME_IMAGE, &frame),
-            p1,
-            last.as_ref(),
-            p2,
-            &s,
-        )?);
+        let image = (FRAME_IMAGE, &frame);
+        lum.push(compare_luminance(gpu, image, p1, last.as_ref(), p2, &s)?);
     }
-    let corrected = (
+    let (c1, c2) = (
         source(bundled::CORRECTED_UNROLLED),
         source(bundled::CORRECTED_PASS2),
     );
     for name in &others {
         next(&format!("luminance: {name}"));
-        let img = load_image(name)?;
+        let img = load_image(images, name)?;
         lum.push(compare_luminance(
             gpu,
             (name, &img),
-            &corrected.0,
+            &c1,
             None,
-            &corrected.1,
+            &c2,
             &settings,
         )?);
     }
@@ -190,26 +175,12 @@ pub fn run(
         let img = if *name == FRAME_IMAGE {
             frame.clone()
         } else {
-            load_image(name)?
+            load_image(images, name)?
         };
         tone.push(compare_tonemap(gpu, name, &img)?);
     }
+    let mut lights = compare_lights(gpu, &mut next)?;
 
-    let scene = crate::jobs::scenes::lights::Scene::synthetic(256, 256)
-        .map_err(|e| CompareError::Other(e.0))?;
-    let mut lights = Vec::new();
-    for b in [bundled::LIGHTS_SELECT, bundled::LIGHTS_TEXLD] {
-        next(b.name);
-        let loaded = load::load_str(b.path, b.text, &Options::default())
-            .map_err(|e| CompareError::Other(e.to_string()))?;
-        lights.push(compare_draw(
-            gpu,
-            &loaded,
-            &scene.draw(),
-            TargetKind::Raw,
-            None,
-        )?);
-    }
     for c in &mut lum {
         c.explanation = Some(explain::luminance(c, &probes));
     }
@@ -227,6 +198,29 @@ pub fn run(
         tonemap: tone,
         lights,
     })
+}
+
+/// The light-model shaders on their synthetic G-buffer, one step each.
+fn compare_lights(
+    gpu: &Arc<Gpu>,
+    next: &mut dyn FnMut(&str),
+) -> Result<Vec<DrawComparison>, CompareError> {
+    let scene = crate::jobs::scenes::lights::Scene::synthetic(256, 256)
+        .map_err(|e| CompareError::Other(e.0))?;
+    let mut lights = Vec::new();
+    for b in [bundled::LIGHTS_SELECT, bundled::LIGHTS_TEXLD] {
+        next(b.name);
+        let loaded = load::load_str(b.path, b.text, &Options::default())
+            .map_err(|e| CompareError::Other(e.to_string()))?;
+        lights.push(compare_draw(
+            gpu,
+            &loaded,
+            &scene.draw(),
+            TargetKind::Raw,
+            None,
+        )?);
+    }
+    Ok(lights)
 }
 
 /// Tone-maps `image` on both backends with the emulator's operator.

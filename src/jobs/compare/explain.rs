@@ -5,9 +5,8 @@
 //! for is explained; one beyond a bound, or a NaN/∞ on one side only that
 //! no rule accounts for, is a finding.
 
-use super::all::{CrossCheck, TonemapComparison};
 use super::probe::Probe;
-use super::{DrawComparison, LuminanceComparison};
+use super::{CrossCheck, DrawComparison, LuminanceComparison, TonemapComparison};
 use crate::core::numbers::thousands;
 use serde::Serialize;
 

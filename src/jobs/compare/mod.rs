@@ -112,6 +112,31 @@ fn stored_channels(kind: TargetKind) -> &'static [usize] {
     }
 }
 
+/// Tone mapping of one image on both backends.
+#[derive(Clone, Debug, Serialize)]
+pub struct TonemapComparison {
+    pub image: String,
+    /// The r, g, b channels of the linear result.
+    pub draw: DrawComparison,
+    pub pixels: u64,
+    /// Pixels within their derived bound of the f64 reference, per backend.
+    pub gpu_within: u64,
+    pub emulator_within: u64,
+    /// Why the backends differ; set once probes ran.
+    pub explanation: Option<explain::Explanation>,
+}
+
+/// Everything `ps30 compare --all` measured.
+#[derive(Clone, Debug, Serialize)]
+pub struct CrossCheck {
+    pub device: gpu::DeviceInfo,
+    pub float_rules: String,
+    pub probes: Vec<probe::Probe>,
+    pub luminance: Vec<LuminanceComparison>,
+    pub tonemap: Vec<TonemapComparison>,
+    pub lights: Vec<DrawComparison>,
+}
+
 /// Runs `draw` on the emulator and on `gpu` and compares what the targets
 /// hold: the emulator's values stored as `target` stores them (rounded to
 /// f16 for D3DFMT_A16B16G16R16F), the device's as it stored them.

@@ -242,6 +242,14 @@ fn dot4(v: [f32; 4]) -> [f64; 4] {
 }
 
 fn defs() -> Vec<Def> {
+    let mut defs = transcendental_defs();
+    defs.extend(arithmetic_defs());
+    defs.extend(denormal_defs());
+    defs
+}
+
+/// The probes of the transcendental instructions: log, exp, rcp, rsq, pow.
+fn transcendental_defs() -> Vec<Def> {
     vec![
         Def {
             instruction: "log r1, r0.x",
@@ -332,6 +340,13 @@ fn defs() -> Vec<Def> {
                 },
             ),
         },
+    ]
+}
+
+/// The probes of arithmetic: mad and dp4 (fused or not, in which order),
+/// frc, sincos and nrm.
+fn arithmetic_defs() -> Vec<Def> {
+    vec![
         Def {
             instruction: "mad r1, r0.x, r0.y, r0.z",
             input: mad_input,
@@ -357,7 +372,9 @@ fn defs() -> Vec<Def> {
                 ("left to right", |v| {
                     v[0] * v[3] + v[1] * v[2] + v[2] * v[1] + v[3] * v[0]
                 }),
-                ("pairwise", |v| (v[0] * v[3] + v[1] * v[2]) + (v[2] * v[1] + v[3] * v[0])),
+                ("pairwise", |v| {
+                    (v[0] * v[3] + v[1] * v[2]) + (v[2] * v[1] + v[3] * v[0])
+                }),
                 ("left to right, fused", |v| {
                     v[3].mul_add(v[0], v[2].mul_add(v[1], v[1].mul_add(v[2], v[0] * v[3])))
                 }),
@@ -370,10 +387,13 @@ fn defs() -> Vec<Def> {
                 let p = |a: f32, b: f32| flush(a * b);
                 flush(flush(flush(p(f[0], f[3]) + p(f[1], f[2])) + p(f[2], f[1])) + p(f[3], f[0]))
             },
-            spec: ("dot: products and sums each rounded, any order", |v, exact, r| {
-                let terms: f64 = dot4(v).iter().map(|t| t.abs()).sum();
-                (r as f64 - exact).abs() <= 8.0 * f32::EPSILON as f64 / 2.0 * terms
-            }),
+            spec: (
+                "dot: products and sums each rounded, any order",
+                |v, exact, r| {
+                    let terms: f64 = dot4(v).iter().map(|t| t.abs()).sum();
+                    (r as f64 - exact).abs() <= 8.0 * f32::EPSILON as f64 / 2.0 * terms
+                },
+            ),
         },
         Def {
             instruction: "frc r1, r0",
@@ -407,6 +427,42 @@ fn defs() -> Vec<Def> {
                 (r as f64 - exact).abs() <= 2f64.powi(-11)
             }),
         },
+        Def {
+            instruction: "nrm r1, r0",
+            input: vector_input,
+            exact: |v| {
+                let f = v[0] as f64 * v[0] as f64
+                    + v[1] as f64 * v[1] as f64
+                    + v[2] as f64 * v[2] as f64;
+                v[0] as f64 / f.sqrt()
+            },
+            orders: &[],
+            prologue: "",
+            c0: [0.0; 4],
+            domain: None,
+            flushed: |v| {
+                let f = v.map(flush);
+                let sq = |a: f32| flush(a * a);
+                let len = flush(flush(sq(f[0]) + sq(f[1])) + sq(f[2]));
+                let scale = if len == 0.0 {
+                    f32::MAX
+                } else {
+                    1.0 / len.sqrt()
+                };
+                flush(f[0] * scale)
+            },
+            spec: (
+                "inversesqrt 2 ulp, products rounded: taken as 4 ulp",
+                |_, exact, r| within_ulps(exact, r, 4.0),
+            ),
+        },
+    ]
+}
+
+/// The probes of subnormal inputs and results (mul, add) and of a
+/// multiplication by a def'd zero.
+fn denormal_defs() -> Vec<Def> {
+    vec![
         Def {
             instruction: "mul r1, r0, c0.x",
             input: subnormal_input,
@@ -445,28 +501,6 @@ fn defs() -> Vec<Def> {
             domain: None,
             flushed: |v| flush(v[0]) * 0.0,
             spec: CORRECTLY_ROUNDED,
-        },
-        Def {
-            instruction: "nrm r1, r0",
-            input: vector_input,
-            exact: |v| {
-                let f = v[0] as f64 * v[0] as f64 + v[1] as f64 * v[1] as f64 + v[2] as f64 * v[2] as f64;
-                v[0] as f64 / f.sqrt()
-            },
-            orders: &[],
-            prologue: "",
-            c0: [0.0; 4],
-            domain: None,
-            flushed: |v| {
-                let f = v.map(flush);
-                let sq = |a: f32| flush(a * a);
-                let len = flush(flush(sq(f[0]) + sq(f[1])) + sq(f[2]));
-                let scale = if len == 0.0 { f32::MAX } else { 1.0 / len.sqrt() };
-                flush(f[0] * scale)
-            },
-            spec: ("inversesqrt 2 ulp, products rounded: taken as 4 ulp", |_, exact, r| {
-                within_ulps(exact, r, 4.0)
-            }),
         },
     ]
 }

@@ -3,9 +3,9 @@
 //! page `ps30 compare --all` writes).
 
 use crate::core::numbers::thousands;
-use crate::jobs::compare::all::CrossCheck;
 use crate::jobs::compare::explain::{describe_probe, Explanation};
 use crate::jobs::compare::stats::{ChannelStats, Worst};
+use crate::jobs::compare::CrossCheck;
 
 fn why(e: &Option<Explanation>) -> String {
     match e {
