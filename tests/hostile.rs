@@ -585,3 +585,59 @@ fn a_subroutine_must_end_with_ret() {
         "subroutine l0 does not end with ret",
     );
 }
+
+/// Subroutines are analysed once each, not once per call path: the
+/// call-depth check on a graph with exponentially many paths, the cost
+/// model on one whose call sites multiply, and the longest chain the
+/// labels allow (l0…l2047).
+#[test]
+fn call_graphs_are_analysed_once_per_subroutine() {
+    let d = tempfile::tempdir().unwrap();
+    let d = d.path();
+    // 45 subroutines, each calling the next two: about 1.8e9 call paths
+    // from main to the last one.
+    let mut fib = String::from("ps_3_0\ndef c0, 1, 1, 1, 1\ncall l0\nmov oC0, c0\nret\n");
+    for k in 0..45 {
+        fib.push_str(&format!("label l{k}\n"));
+        for next in [k + 1, k + 2].into_iter().filter(|&n| n < 45) {
+            fib.push_str(&format!("call l{next}\n"));
+        }
+        fib.push_str("ret\n");
+    }
+    write(d, "fib.psh", &fib);
+    expect(d, &["check", "fib.psh"], 2, "calls nest 45 deep");
+
+    // 2,048 subroutines in one chain: main's call and 2,047 more.
+    let mut chain = String::from("ps_3_0\ndef c0, 1, 1, 1, 1\ncall l0\nmov oC0, c0\nret\n");
+    for k in 0..2047 {
+        chain.push_str(&format!("label l{k}\ncall l{}\nret\n", k + 1));
+    }
+    chain.push_str("label l2047\nret\n");
+    write(d, "chain.psh", &chain);
+    expect(d, &["check", "chain.psh"], 2, "calls nest 2048 deep");
+
+    // Four levels (the ps_3_0 limit) of 1,000 calls each: 10^12 entries of
+    // the innermost subroutine. Executed count, from the inside out, with
+    // call = 2 slots, ret = nop = mov = 1: l3 runs nop + ret = 2; each
+    // level above runs 1,000 × (2 + the level below) + its ret; main the
+    // same plus mov, without a label's ret counted twice.
+    let mut wide = String::from("ps_3_0\ndef c0, 1, 1, 1, 1\n");
+    wide.push_str(&"call l0\n".repeat(1000));
+    wide.push_str("mov oC0, c0\nret\n");
+    for k in 0..3 {
+        wide.push_str(&format!("label l{k}\n"));
+        wide.push_str(&format!("call l{}\n", k + 1).repeat(1000));
+        wide.push_str("ret\n");
+    }
+    wide.push_str("label l3\nnop\nret\n");
+    let mut executed: u64 = 2;
+    for _ in 0..3 {
+        executed = 1000 * (2 + executed) + 1;
+    }
+    executed = 1000 * (2 + executed) + 2;
+    assert_eq!(executed, 4_003_003_003_002);
+    write(d, "wide.psh", &wide);
+    let r = expect(d, &["check", "wide.psh", "--json"], 1, "\"executed\"");
+    let json: serde_json::Value = serde_json::from_str(&r.stdout).unwrap();
+    assert_eq!(json["executed"], executed, "{}", r.stdout);
+}

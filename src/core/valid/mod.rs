@@ -750,6 +750,49 @@ fn check_int_operand(p: &Program, ins: &Instruction, diags: &mut Diagnostics, fi
     }
 }
 
+/// The depth of the deepest call chain from main, or the first cycle met
+/// (the path from main to the call that closes it). Depth first, without
+/// recursion, remembering each subroutine's depth once it is known: the
+/// work is linear in the call graph however many call paths run through it.
+fn call_depth(graph: &BTreeMap<Option<u32>, BTreeSet<u32>>) -> Result<u32, Vec<u32>> {
+    let none = BTreeSet::new();
+    let callees = |n: Option<u32>| graph.get(&n).unwrap_or(&none).iter().copied();
+    let mut known: BTreeMap<u32, u32> = BTreeMap::new();
+    let mut path: Vec<u32> = Vec::new();
+    let mut on_path: BTreeSet<u32> = BTreeSet::new();
+    // One frame per subroutine on the path: its callees still to visit and
+    // the depth of its deepest chain so far.
+    let mut stack = vec![(callees(None), 0u32)];
+    loop {
+        let top = stack.len() - 1;
+        match stack[top].0.next() {
+            Some(c) if on_path.contains(&c) => {
+                let mut cycle = path.clone();
+                cycle.push(c);
+                return Err(cycle);
+            }
+            Some(c) => match known.get(&c) {
+                Some(&d) => stack[top].1 = stack[top].1.max(d + 1),
+                None => {
+                    path.push(c);
+                    on_path.insert(c);
+                    stack.push((callees(Some(c)), 0));
+                }
+            },
+            None => {
+                let (_, d) = stack.pop().expect("a frame is on the stack");
+                let Some(done) = path.pop() else {
+                    return Ok(d);
+                };
+                on_path.remove(&done);
+                known.insert(done, d);
+                let parent = stack.last_mut().expect("main's frame is below");
+                parent.1 = parent.1.max(d + 1);
+            }
+        }
+    }
+}
+
 /// Calls name defined labels; the call graph has no cycles and no chain
 /// deeper than the call-nesting limit.
 fn check_calls(
@@ -775,33 +818,11 @@ fn check_calls(
         }
         graph.entry(owner[idx]).or_default().insert(label);
     }
-    // Depth of the deepest call chain from main, detecting cycles.
-    fn depth(
-        node: Option<u32>,
-        graph: &BTreeMap<Option<u32>, BTreeSet<u32>>,
-        path: &mut Vec<u32>,
-    ) -> Result<u32, Vec<u32>> {
-        let mut best = 0;
-        if let Some(callees) = graph.get(&node) {
-            for &c in callees {
-                if path.contains(&c) {
-                    let mut cycle = path.clone();
-                    cycle.push(c);
-                    return Err(cycle);
-                }
-                path.push(c);
-                let d = depth(Some(c), graph, path)?;
-                path.pop();
-                best = best.max(d + 1);
-            }
-        }
-        Ok(best)
-    }
     let span = calls
         .first()
         .map(|&(i, _)| p.instructions[i].origin.span)
         .unwrap_or_default();
-    match depth(None, &graph, &mut Vec::new()) {
+    match call_depth(&graph) {
         Err(cycle) => {
             let names: Vec<String> = cycle.iter().map(|l| format!("l{l}")).collect();
             // Point at the call that closes the cycle.
