@@ -80,15 +80,29 @@ fn unknown_mnemonic(ast: &InstrAst) -> Diagnostic {
 }
 
 fn edit_distance(a: &str, b: &str) -> usize {
-    let b: Vec<char> = b.chars().collect();
-    let mut prev: Vec<usize> = (0..=b.len()).collect();
+    // Two rows on the stack: the names compared here are at most a few
+    // characters longer than the longest mnemonic (see the caller), so an
+    // unknown mnemonic costs no allocation however many there are.
+    const MAX: usize = 32;
+    let mut chars = ['\0'; MAX];
+    let mut len = 0;
+    for (slot, c) in chars.iter_mut().zip(b.chars()) {
+        *slot = c;
+        len += 1;
+    }
+    let b = &chars[..len];
+    let mut prev = [0usize; MAX + 1];
+    let mut cur = [0usize; MAX + 1];
+    for (j, p) in prev.iter_mut().enumerate().take(b.len() + 1) {
+        *p = j;
+    }
     for (i, ca) in a.chars().enumerate() {
-        let mut cur = vec![i + 1];
+        cur[0] = i + 1;
         for (j, cb) in b.iter().enumerate() {
             let sub = prev[j] + usize::from(ca != *cb);
-            cur.push(sub.min(prev[j + 1] + 1).min(cur[j] + 1));
+            cur[j + 1] = sub.min(prev[j + 1] + 1).min(cur[j] + 1);
         }
-        prev = cur;
+        std::mem::swap(&mut prev, &mut cur);
     }
     prev[b.len()]
 }
@@ -1218,5 +1232,22 @@ fn lower_def(ast: &InstrAst, origin: &Origin) -> R<Lowered> {
                 })
             })
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::edit_distance;
+
+    #[test]
+    fn edit_distance_counts_insertions_deletions_and_substitutions() {
+        assert_eq!(edit_distance("kitten", "sitting"), 3);
+        assert_eq!(edit_distance("tex1d", "texld"), 1);
+        assert_eq!(edit_distance("", "texldl"), 6);
+        assert_eq!(edit_distance("texldl", ""), 6);
+        assert_eq!(edit_distance("мov", "mov"), 1);
+        assert_eq!(edit_distance("mov", "mov"), 0);
+        // A long name against a short mnemonic: every extra letter counts.
+        assert_eq!(edit_distance(&"x".repeat(40), "mov"), 40);
     }
 }
