@@ -79,6 +79,7 @@ fn stage_page(batch: &mut Batch, dir: &Path, page: &Page) -> Result<Vec<String>,
 }
 
 pub fn run(args: Args, ui: &Ui) -> super::Result {
+    super::bound_threads(args.threads.map(|t| t as usize))?;
     if let Some(out) = &args.output {
         check_output_path(out, &[])?;
     }
