@@ -216,7 +216,9 @@ fn decode_pixels(
         _ => ParallelBlockDecompressor::new_with_thread_pool(chunks, false, pool),
     };
     match parallel {
-        Ok(blocks) => blocks.into_iter().try_for_each(|b| insert(b.map_err(decode_error)?)),
+        Ok(blocks) => blocks
+            .into_iter()
+            .try_for_each(|b| insert(b.map_err(decode_error)?)),
         Err(chunks) => chunks
             .sequential_decompressor(false)
             .try_for_each(|b| insert(b.map_err(decode_error)?)),

@@ -281,9 +281,7 @@ pub fn pass1_bounds_last_width(
         block_height: block.1,
         last_width,
     };
-    match reference::fold_blocks(image, delta, policy, tiling, |_, _| {
-        BoundFold::new(delta)
-    }) {
+    match reference::fold_blocks(image, delta, policy, tiling, |_, _| BoundFold::new(delta)) {
         Ok((_, folds)) => bounds_of(tiling, folds),
         Err(_) => (Vec::new(), 0),
     }
