@@ -277,7 +277,7 @@ impl ProfileArgs {
 /// Options of every command that loads an image and runs the emulator.
 #[derive(Args, Debug)]
 pub struct ExecArgs {
-    /// Emulator threads (default: all cores).
+    /// Threads for all of the command's work: decoding, emulation, cross-checks (default: all cores).
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..=256))]
     pub threads: Option<u32>,
     /// Refuse images with more pixels than this.

@@ -117,6 +117,20 @@ pub fn clean_up_on_interrupt() {
     });
 }
 
+/// Bounds all of a command's parallel work — decoding, emulation,
+/// cross-checks — to `threads` (`None`: all cores) by sizing rayon's global
+/// pool, which the library's parallel code runs on. Called once, before any
+/// work.
+pub fn bound_threads(threads: Option<usize>) -> std::result::Result<(), BadInput> {
+    match threads {
+        Some(n) => rayon::ThreadPoolBuilder::new()
+            .num_threads(n)
+            .build_global()
+            .map_err(|e| BadInput(format!("cannot start {n} worker threads: {e}"))),
+        None => Ok(()),
+    }
+}
+
 /// How a command ended.
 pub enum Outcome {
     Ok,

@@ -107,6 +107,7 @@ impl Args {
 /// Validator warnings to stderr, the report to stdout; exit 1 when the run
 /// found a problem.
 pub fn run(args: Args, _ui: &Ui) -> super::Result {
+    super::bound_threads(args.exec.threads())?;
     let src = shader_source(&args.shader, args.input.max_input_bytes)?;
     let setup = Setup {
         input: args.input()?,

@@ -50,6 +50,7 @@ pub struct Args {
 }
 
 pub fn run(args: Args, ui: &Ui) -> super::Result {
+    super::bound_threads(args.exec.threads())?;
     if let Some(path) = &args.output {
         check_output_path(path, &[&args.image, Path::new(&args.shader)])?;
     }
