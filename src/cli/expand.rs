@@ -4,12 +4,13 @@ use super::args::SourceArgs;
 use super::io::{load_file, print, print_json};
 use super::ui::Ui;
 use super::{BadInput, Outcome};
-use ps30::core::front::print::write_program;
 use std::path::PathBuf;
+use ps30::core::front::print::write_program;
 
 #[derive(clap::Args)]
 pub struct Args {
-    file: PathBuf,
+    /// Shader: assembly or ps_3_0 bytecode (`-` reads standard input).
+    file: String,
     #[command(flatten)]
     source: SourceArgs,
     /// Write to this file (atomically) instead of stdout.

@@ -1,13 +1,14 @@
-//! What every subcommand does at its edges: reading a shader (a file or a
-//! bundled name), printing to stdout (a closed pipe is success), emitting
-//! diagnostics, and refusing an output path before any work.
+//! What every subcommand does at its edges: reading a shader (a file, `-`
+//! for standard input, or a bundled name; assembly text or ps_3_0 bytecode,
+//! recognised by content), printing to stdout (a closed pipe is success),
+//! emitting diagnostics, and refusing an output path before any work.
 
 use super::ui::Ui;
 use super::BadInput;
-use ps30::core::diag::SourceFile;
+use ps30::core::diag::{SourceError, SourceFile};
 use ps30::core::load::{self, Loaded, Options};
 use ps30::jobs::luminance::ShaderSource;
-use std::io::{IsTerminal, Write};
+use std::io::{IsTerminal, Read, Write};
 use std::path::Path;
 
 /// Whether diagnostics on stderr take colour: a terminal, and `NO_COLOR`
@@ -21,11 +22,14 @@ pub fn color_stderr() -> bool {
 /// success, as a Unix filter does (every file it writes was written
 /// atomically before it printed).
 pub fn print(out: &str) -> std::io::Result<()> {
+    print_bytes(out.as_bytes())
+}
+
+/// Writes bytes (bytecode) to stdout, a closed pipe being success as in
+/// [`print`].
+pub fn print_bytes(out: &[u8]) -> std::io::Result<()> {
     let mut stdout = std::io::stdout().lock();
-    match stdout
-        .write_all(out.as_bytes())
-        .and_then(|()| stdout.flush())
-    {
+    match stdout.write_all(out).and_then(|()| stdout.flush()) {
         Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => std::process::exit(0),
         other => other,
     }
@@ -43,32 +47,57 @@ pub fn print_json(v: &impl serde::Serialize) -> Result<(), BadInput> {
     Ok(())
 }
 
-/// A file's text; not UTF-8 is bad input, with the offset of the first bad byte.
-pub fn read_text(path: &Path) -> Result<String, BadInput> {
-    let bytes = std::fs::read(path).map_err(|e| BadInput(format!("{}: {e}", path.display())))?;
-    String::from_utf8(bytes).map_err(|e| {
-        BadInput(format!(
-            "{}: not UTF-8 text (invalid byte at offset {})",
-            path.display(),
-            e.utf8_error().valid_up_to()
-        ))
-    })
-}
+/// What messages call standard input.
+pub const STDIN_NAME: &str = "<stdin>";
 
-/// A shader by bundled name or file path.
-pub fn shader_source(spec: &str) -> Result<ShaderSource, BadInput> {
-    if let Some((name, text)) = ps30::jobs::bundled::listing(spec) {
-        return Ok(ShaderSource::new(name, text));
+/// The bytes of a shader argument, with the name messages use: a file, or
+/// standard input for `-`.
+pub fn read_input(spec: &str) -> Result<(String, Vec<u8>), BadInput> {
+    if spec == "-" {
+        let mut bytes = Vec::new();
+        std::io::stdin()
+            .lock()
+            .read_to_end(&mut bytes)
+            .map_err(|e| BadInput(format!("{STDIN_NAME}: {e}")))?;
+        return Ok((STDIN_NAME.to_string(), bytes));
     }
-    let text = read_text(Path::new(spec))?;
-    Ok(ShaderSource::new(spec, text))
+    let bytes = std::fs::read(spec).map_err(|e| BadInput(format!("{spec}: {e}")))?;
+    Ok((spec.to_string(), bytes))
 }
 
-/// Loads a shader file: warnings to stderr; on errors every diagnostic to
-/// stderr and a one-line summary as the error.
-pub fn load_file(path: &Path, options: &Options) -> Result<Loaded, BadInput> {
-    let text = read_text(path)?;
-    let file = SourceFile::new(path.display().to_string(), text);
+/// A shader by bundled name, file path or `-` (standard input): assembly
+/// text or ps_3_0 bytecode, told apart by content, not by name.
+pub fn shader_file(spec: &str, options: &Options) -> Result<SourceFile, BadInput> {
+    if let Some((name, text)) = ps30::jobs::bundled::listing(spec) {
+        return Ok(SourceFile::new(name, text));
+    }
+    let (name, bytes) = read_input(spec)?;
+    Ok(load::source_file(&name, bytes, options)?)
+}
+
+/// A shader to run, as [`shader_file`] reads it.
+pub fn shader_source(spec: &str) -> Result<ShaderSource, BadInput> {
+    Ok(ShaderSource::from_file(shader_file(spec, &Options::default())?))
+}
+
+/// Prints a source error's diagnostics to stderr; the error is a one-line
+/// count (the diagnostics say the rest).
+pub fn report(e: &SourceError) -> BadInput {
+    for d in &e.diagnostics.items {
+        d.emit(&e.file, color_stderr());
+    }
+    let n = e.diagnostics.errors().count();
+    BadInput(format!(
+        "{}: {n} error{}",
+        e.file.name,
+        if n == 1 { "" } else { "s" }
+    ))
+}
+
+/// Loads a shader (see [`shader_file`]): warnings to stderr; on errors every
+/// diagnostic to stderr and a one-line summary as the error.
+pub fn load_file(spec: &str, options: &Options) -> Result<Loaded, BadInput> {
+    let file = shader_file(spec, options)?;
     match load::load(file, options) {
         Ok(l) => {
             for w in &l.warnings.items {
@@ -76,17 +105,7 @@ pub fn load_file(path: &Path, options: &Options) -> Result<Loaded, BadInput> {
             }
             Ok(l)
         }
-        Err(e) => {
-            for d in &e.diagnostics.items {
-                d.emit(&e.file, color_stderr());
-            }
-            let n = e.diagnostics.errors().count();
-            Err(BadInput(format!(
-                "{}: {n} error{}",
-                e.file.name,
-                if n == 1 { "" } else { "s" }
-            )))
-        }
+        Err(e) => Err(report(&e)),
     }
 }
 

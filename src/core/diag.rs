@@ -5,6 +5,12 @@
 //! codespan-reporting, both to a plain string (tests compare it) and to a
 //! colour terminal (the CLI), so a message always names `file:line:col`,
 //! shows the source line and puts a caret under the span.
+//!
+//! A compiled shader has no lines: its [`SourceFile`] holds the listing it
+//! disassembles to (what `ps30 disasm` prints, which the front end reads)
+//! and anchors from listing offsets to tokens, so its diagnostics name the
+//! file's token and byte offset instead of line:col and show the listing
+//! line with the caret under the operand.
 
 use crate::core::ir::{Origin, Span};
 use codespan_reporting::diagnostic::{Diagnostic as CsDiagnostic, Label};
@@ -18,6 +24,9 @@ pub struct SourceFile {
     pub name: String,
     pub text: String,
     line_starts: Vec<usize>,
+    /// For a compiled shader (`text` is its listing): `(text offset, token
+    /// index)` at each line and operand, in text order.
+    tokens: Option<Vec<(u32, u32)>>,
 }
 
 impl SourceFile {
@@ -29,6 +38,40 @@ impl SourceFile {
             name: name.into(),
             text,
             line_starts,
+            tokens: None,
+        }
+    }
+
+    /// A compiled shader, as its listing with the token each part of the
+    /// listing came from.
+    pub fn compiled(name: impl Into<String>, listing: String, anchors: Vec<(u32, u32)>) -> SourceFile {
+        SourceFile {
+            tokens: Some(anchors),
+            ..SourceFile::new(name, listing)
+        }
+    }
+
+    /// Whether this is a compiled shader's listing.
+    pub fn is_compiled(&self) -> bool {
+        self.tokens.is_some()
+    }
+
+    /// The token a listing offset came from (compiled shaders only).
+    pub fn token_at(&self, offset: u32) -> Option<u32> {
+        let anchors = self.tokens.as_ref()?;
+        let i = anchors.partition_point(|&(at, _)| at <= offset);
+        anchors.get(i.checked_sub(1)?).map(|&(_, token)| token)
+    }
+
+    /// Where an offset is, for a person: `name:line:col` in text, `name:
+    /// token T (byte 0xB)` in a compiled shader.
+    pub fn locate(&self, offset: u32) -> String {
+        match self.token_at(offset) {
+            Some(token) => format!("{}: token {token} (byte {:#x})", self.name, token as usize * 4),
+            None => {
+                let (line, col) = self.line_col(offset);
+                format!("{}:{line}:{col}", self.name)
+            }
         }
     }
 
@@ -157,13 +200,46 @@ impl Diagnostic {
 
     /// Renders the diagnostic as plain text.
     pub fn render(&self, file: &SourceFile) -> String {
+        if file.is_compiled() {
+            return self.render_compiled(file);
+        }
         let files = SimpleFile::new(file.name.as_str(), file.text.as_str());
         term::emit_into_string(&Config::default(), &files, &self.to_codespan())
             .unwrap_or_else(|_| self.fallback(file))
     }
 
+    /// A diagnostic in a compiled shader: token and byte instead of
+    /// line:col, and the listing line with a caret under the span.
+    fn render_compiled(&self, file: &SourceFile) -> String {
+        let mut out = format!("{self}\n  --> {}\n", file.locate(self.span.start));
+        let snippet = |span: Span, label: &str| {
+            let line = file.line_of(span.start);
+            let text = file.line_text(line);
+            let (_, col) = file.line_col(span.start);
+            let width = file.text[span.range()].lines().next().map_or(0, |l| l.chars().count()).max(1);
+            format!("   |\n   | {text}\n   | {}{} {label}\n", " ".repeat(col - 1), "^".repeat(width))
+        };
+        out.push_str(&snippet(self.span, &self.label));
+        for (span, label) in &self.secondary {
+            out.push_str(&format!("   = {label}: {}\n", file.locate(span.start)));
+            out.push_str(&snippet(*span, ""));
+        }
+        for note in &self.notes {
+            out.push_str(&format!("   = {note}\n"));
+        }
+        if let Some(help) = &self.help {
+            out.push_str(&format!("   = help: {help}\n"));
+        }
+        out.push('\n');
+        out
+    }
+
     /// Renders the diagnostic to a terminal stream, in colour when `color`.
     pub fn emit(&self, file: &SourceFile, color: bool) {
+        if file.is_compiled() {
+            eprint!("{}", self.render_compiled(file));
+            return;
+        }
         use codespan_reporting::term::termcolor::{ColorChoice, StandardStream};
         let choice = if color {
             ColorChoice::Auto
@@ -182,14 +258,13 @@ impl Diagnostic {
 
     /// `file:line:col: severity: message`, used when the renderer cannot be.
     fn fallback(&self, file: &SourceFile) -> String {
-        let (line, col) = file.line_col(self.span.start);
-        format!("{}:{}:{}: {}", file.name, line, col, self)
+        format!("{}: {}", self.location(file), self)
     }
 
-    /// `file:line:col`, for one-line summaries.
+    /// `file:line:col` (a compiled shader: `file: token T (byte 0xB)`), for
+    /// one-line summaries.
     pub fn location(&self, file: &SourceFile) -> String {
-        let (line, col) = file.line_col(self.span.start);
-        format!("{}:{}:{}", file.name, line, col)
+        file.locate(self.span.start)
     }
 }
 

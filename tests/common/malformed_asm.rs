@@ -106,8 +106,10 @@ pub const CASES: &[(&str, &str, usize, usize)] = &[
     ("mov r0, c0", "missing version line", 1, 1),
     ("", "missing version line", 1, 1),
     ("// only a comment\n", "missing version line", 1, 1),
-    ("ps_2_0\nmov r0, c0", "`ps_2_0` is not supported", 1, 1),
-    ("vs_3_0\nmov r0, c0", "`vs_3_0` is not supported", 1, 1),
+    ("ps_2_0\nmov r0, c0", "this is a ps_2_0 shader; ps30 reads ps_3_0 only", 1, 1),
+    ("vs_3_0\nmov r0, c0", "this is a vs_3_0 shader", 1, 1),
+    ("ps_1_4\ntexcrd r0, t0\nphase\n+mov r0, r1", "this is a ps_1_4 shader", 1, 1),
+    ("ps_2_a\ndcl t0\nmov oC0, t0", "this is a ps_2_a shader", 1, 1),
     ("ps_3_0\nps_3_0\nmov r0, c0", "the version line may appear only once", 2, 1),
     // --- declarations and definitions ---------------------------------------
     ("ps_3_0\nmov r0, c0\ndcl_texcoord0 v0", "declarations must come before the first instruction", 3, 1),

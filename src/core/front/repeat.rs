@@ -169,7 +169,9 @@ fn emit(nodes: &[Node], stmts: &[Stmt], reps: &mut Vec<Repetition>, out: &mut Ve
                 let span = match &stmts[*i] {
                     Stmt::Instr(instr) => instr.span,
                     Stmt::Version { span, .. } => *span,
-                    Stmt::RepeatBegin { span, .. } | Stmt::RepeatEnd { span } => *span,
+                    Stmt::RepeatBegin { span, .. }
+                    | Stmt::RepeatEnd { span }
+                    | Stmt::Comment { span, .. } => *span,
                 };
                 out.push(Expanded {
                     stmt: *i,

@@ -85,7 +85,7 @@ pub fn validate(
                 );
                 None
             }
-            Stmt::RepeatBegin { .. } | Stmt::RepeatEnd { .. } => None,
+            Stmt::RepeatBegin { .. } | Stmt::RepeatEnd { .. } | Stmt::Comment { .. } => None,
         };
         let Some(lowered) = lowered else { continue };
         let is_decl = !matches!(lowered, Lowered::Instr(_));

@@ -222,13 +222,18 @@ impl ProfileRun {
     }
 }
 
-/// Runs `ps30 profile`.
+/// Runs `ps30 profile` on assembly text.
 pub fn profile(name: &str, text: &str, setup: &Setup) -> Result<ProfileRun, String> {
+    profile_file(SourceFile::new(name, text), setup)
+}
+
+/// Runs `ps30 profile` on any source, text or compiled.
+pub fn profile_file(file: SourceFile, setup: &Setup) -> Result<ProfileRun, String> {
     let mut opts = Options::default();
     for (k, v) in &setup.defines {
         opts.defines.insert(k.clone(), *v);
     }
-    let loaded = load::load_str(name, text, &opts)
+    let loaded = load::load(file, &opts)
         .map_err(|e| format!("{}\n{e}", e.diagnostics.render(&e.file)))?;
     let compiled = emu::compile(&loaded.shader).map_err(|e| e.to_string())?;
     let mut env = Environment::default();
@@ -254,7 +259,7 @@ pub fn profile(name: &str, text: &str, setup: &Setup) -> Result<ProfileRun, Stri
             scene =
                 crate::jobs::scenes::lights::Scene::synthetic(*w, *h).map_err(|e| e.to_string())?;
             crate::jobs::scenes::lights::Scene::check_constants(loaded.shader.program())
-                .map_err(|e| format!("{name}: not a light-model shader for this scene: {e}"))?;
+                .map_err(|e| format!("{}: not a light-model shader for this scene: {e}", loaded.file.name))?;
             let mut draw = scene.draw();
             draw.record_lod = true;
             // The command line's constants, except c4, which the scene sets.
