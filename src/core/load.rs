@@ -63,7 +63,7 @@ impl fmt::Display for NotASource {
             NotASource::Bytecode { name, error } => write!(f, "{name}: {error}"),
             NotASource::NotText { name, offset } => write!(
                 f,
-                "{name}: neither ps_3_0 bytecode nor UTF-8 text (invalid byte at offset {offset})"
+                "{name}: not ps_3_0 bytecode and not UTF-8 text (invalid byte at offset {offset})"
             ),
             NotASource::Dxbc { name } => write!(
                 f,
