@@ -6,6 +6,6 @@ fn readme_lists_the_instruction_table() {
     let table = ps30::core::isa::markdown_table();
     assert!(
         readme.contains(&table),
-        "README.md's instruction list differs from src/isa.rs; replace it with:\n{table}"
+        "README.md's instruction list differs from src/core/isa.rs; replace it with:\n{table}"
     );
 }

@@ -2,7 +2,7 @@
 //! every shared image, black and negative pixels, the white point, and the
 //! `ps30 tonemap` command's exit codes and output.
 //!
-//! The bound every comparison uses is derived in `src/tonemap.rs` from the
+//! The bound every comparison uses is derived in `src/jobs/tonemap/mod.rs` from the
 //! shader's f32 arithmetic; nothing here widens it. The tests that perturb
 //! an output or the shader show that the check does fail when it should.
 

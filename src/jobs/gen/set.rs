@@ -190,7 +190,7 @@ fn pass1_shader(
             size(fr.w, fr.h)
         )),
     }
-    h.push("Generated: edit ps30's generator (src/gen/), not this file.".into());
+    h.push("Generated: edit ps30's generator (src/jobs/gen/), not this file.".into());
     h.push(String::new());
     h.extend(checked_lines(&profile, c.slots, c.executed));
     h.push(String::new());
@@ -341,7 +341,7 @@ fn pass2_shader(
             size(nx, ny),
             size(fr.w, fr.h)
         ),
-        "Generated: edit ps30's generator (src/gen/), not this file.".into(),
+        "Generated: edit ps30's generator (src/jobs/gen/), not this file.".into(),
         String::new(),
     ];
     h.extend(checked_lines(&profile, c.slots, c.executed));

@@ -507,7 +507,7 @@ fn blocks_page(
         "## Emulator against reference, per block\n\n\
          Each cell is log10(|emulated − reference| / bound) for one block: the emulated pass-1 sum \
          against the f64 reference's sum over the same texels, as a share of the block's bound \
-         derived from the f32 arithmetic (`src/pipeline.rs`). Both maps share one scale; the tick \
+         derived from the f32 arithmetic (`src/jobs/luminance/mod.rs`). Both maps share one scale; the tick \
          inside the legend marks 0, where the difference equals the bound. Blocks beyond their \
          bound (disagreeing) are also framed in red. A difference of exactly 0 is drawn at the \
          left end.\n\n\
@@ -587,7 +587,7 @@ fn tonemap_page(rows: &[TonemapRow]) -> String {
          positive are black.\n\n\
          Every pixel is compared with the f64 reference of the operator; each channel must lie \
          within a bound derived from the shader's f32 arithmetic (dp3, mul, mad, Microsoft's rcp \
-         precision, _sat; see `src/tonemap.rs`). The 8-bit sRGB codes are compared too: a code may \
+         precision, _sat; see `src/jobs/tonemap/mod.rs`). The 8-bit sRGB codes are compared too: a code may \
          differ by one only where the bound straddles a rounding boundary, and such channels are \
          counted here, not hidden.\n\n\
          | image | size | L̄w emulated | L̄w f64 reference | white point | a / L̄w | largest difference | its bound | most of a bound used | 8-bit codes off by one (pixels) | negative-luminance pixels | clipped pixels | agrees |\n\
