@@ -280,13 +280,8 @@ impl Decoder<'_> {
         };
         let index = self.word(at + 6, "a constant")?;
         let count = self.word(at + 8, "a constant")?;
-        let type_at = self.dword(at + 12, "a constant")? as usize;
-        let ty = self.ty(type_at, 0)?;
-        let default_at = self.dword(at + 16, "a constant")? as usize;
-        let default = match default_at {
-            0 => None,
-            _ => Some(self.default(default_at, &ty, set, &name)?),
-        };
+        let ty = self.ty(at + 12, 0)?;
+        let default = self.default(at + 16, &ty, set, &name)?;
         Ok(Constant {
             name,
             set,
@@ -297,10 +292,18 @@ impl Decoder<'_> {
         })
     }
 
-    /// One D3DXSHADER_TYPEINFO and its members.
-    fn ty(&mut self, at: usize, depth: u32) -> R<Type> {
+    /// The D3DXSHADER_TYPEINFO (and its members) whose offset is the dword
+    /// at `from`.
+    fn ty(&mut self, from: usize, depth: u32) -> R<Type> {
         if depth > MAX_DEPTH {
-            return err(at, format!("types nest more than {MAX_DEPTH} deep"));
+            return err(from, format!("types nest more than {MAX_DEPTH} deep"));
+        }
+        let at = self.dword(from, "a type offset")? as usize;
+        if at as u64 + 16 > self.bytes.len() as u64 {
+            return err(
+                from,
+                format!("a type at offset {at} runs past the end of the table ({} bytes)", self.bytes.len()),
+            );
         }
         self.spend(16, at)?;
         let class = match self.word(at, "a type")? {
@@ -330,10 +333,9 @@ impl Decoder<'_> {
                 let m_at = members_at + 8 * m;
                 self.spend(8, m_at)?;
                 let name = self.string_at(m_at, "a member's name")?;
-                let ty_at = self.dword(m_at + 4, "a member")? as usize;
                 members.push(Member {
                     name,
-                    ty: self.ty(ty_at, depth + 1)?,
+                    ty: self.ty(m_at + 4, depth + 1)?,
                 });
             }
         }
@@ -347,13 +349,18 @@ impl Decoder<'_> {
         })
     }
 
-    /// The words of a default value, checked to lie inside the table.
-    fn default(&mut self, at: usize, ty: &Type, set: RegisterSet, name: &str) -> R<Vec<u32>> {
+    /// The words of the default value whose offset is the dword at `from`
+    /// (offset 0: none), checked to lie inside the table.
+    fn default(&mut self, from: usize, ty: &Type, set: RegisterSet, name: &str) -> R<Option<Vec<u32>>> {
+        let at = self.dword(from, "a constant")? as usize;
+        if at == 0 {
+            return Ok(None);
+        }
         let words = ty.default_words(set);
         let end = (at as u64).saturating_add(words.saturating_mul(4));
         if end > self.bytes.len() as u64 {
             return err(
-                at,
+                from,
                 format!(
                     "the default value of `{name}` ({words} words at offset {at}) runs past the end of the table ({} bytes)",
                     self.bytes.len()
@@ -361,7 +368,10 @@ impl Decoder<'_> {
             );
         }
         self.spend(words as usize * 4, at)?;
-        (0..words as usize).map(|i| self.dword(at + 4 * i, "a default value")).collect()
+        (0..words as usize)
+            .map(|i| self.dword(at + 4 * i, "a default value"))
+            .collect::<R<Vec<u32>>>()
+            .map(Some)
     }
 }
 

@@ -294,11 +294,12 @@ impl fmt::Display for ReadError {
 
 impl std::error::Error for ReadError {}
 
-/// Whether bytes are a compiled Direct3D shader rather than text: their
-/// first token is a version token (`xx xx FE FF` or `xx xx FF FF`), bytes no
-/// UTF-8 text can start with. Detection is by content, never by extension.
+/// Whether bytes are compiled Direct3D 9 code rather than text: the high
+/// half of their first token is `0xFFFF` (pixel shader), `0xFFFE` (vertex
+/// shader) or `0xFEFF` (effect) — bytes no UTF-8 text holds. Detection is
+/// by content, never by extension.
 pub fn is_bytecode(bytes: &[u8]) -> bool {
-    bytes.len() >= 4 && bytes[3] == 0xFF && (bytes[2] == 0xFF || bytes[2] == 0xFE)
+    bytes.len() >= 4 && bytes[2] >= 0xFE && bytes[3] >= 0xFE
 }
 
 #[cfg(test)]

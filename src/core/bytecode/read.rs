@@ -112,7 +112,7 @@ fn version(tokens: &Tokens) -> Result<(), ReadError> {
     }
     let message = match (version_name(v), v >> 16) {
         (Some(name), _) => format!("a {name} shader (version token {v:#010x})"),
-        (None, 0xFEFF) => format!("a Direct3D effect (fx_{}_{}), not a shader", (v >> 8) & 0xFF, v & 0xFF),
+        (None, 0xFEFF) => format!("a Direct3D effect (version token {v:#010x}), not a shader"),
         (None, _) => format!("not a Direct3D 9 shader: the first token {v:#010x} is not a version token"),
     };
     Err(ReadError::at(0, message).with_help("ps30 reads ps_3_0 only"))
