@@ -157,6 +157,21 @@ fn lower_instruction(ast: &InstrAst, origin: &Origin) -> R<Instruction> {
         )
         .with_label("not allowed here"));
     }
+    // Instruction modifiers act on the result written to the destination
+    // (Microsoft's "Modifiers for ps_2_0 and above"), and the token that
+    // carries them is the destination's: without one they mean nothing and
+    // cannot be encoded.
+    let has_dst = matches!(
+        info.operands.first(),
+        Some(Operand::Dst | Operand::PredDst | Operand::KillSrc)
+    );
+    if pp && !has_dst {
+        return Err(Diagnostic::error(
+            suffix_span("pp"),
+            format!("`_pp` is not allowed on `{}`: it has no destination", info.mnemonic),
+        )
+        .with_label("nothing to write at partial precision"));
+    }
     let predicate = match &ast.predicate {
         None => None,
         Some(p) => {
