@@ -105,11 +105,19 @@ fn round_trip(name: &str, text: &str, options: &Options) -> Result<(), String> {
     let (from_text, tokens) = assemble(name, text.as_bytes(), options);
     let (from_tokens, again) = assemble(name, &bytes(&tokens), options);
     if again != tokens {
-        return Err(format!("{name}: tokens → listing → tokens differ\n{}", from_tokens.file.text));
+        return Err(format!(
+            "{name}: tokens → listing → tokens differ\n{}",
+            from_tokens.file.text
+        ));
     }
-    let (a, b) = (write_program(from_text.shader.program()), write_program(from_tokens.shader.program()));
+    let (a, b) = (
+        write_program(from_text.shader.program()),
+        write_program(from_tokens.shader.program()),
+    );
     if a != b {
-        return Err(format!("{name}: the tokens load to another program:\n{a}\n---\n{b}"));
+        return Err(format!(
+            "{name}: the tokens load to another program:\n{a}\n---\n{b}"
+        ));
     }
     let env = Environment::default();
     let cost = |l: &load::Loaded| {
@@ -179,13 +187,29 @@ fn constants_round_trip_by_their_bits() {
         0x3e38_51ec,    // 0.18
         0xcb80_0001,    // -16777218 (odd mantissa at 2^24)
     ] {
-        let tokens = [V, 0x0500_0051, 0xa00f_0000, bits, 0, 0, 0, 0x0200_0001, 0x800f_0800, 0xa0e4_0000, E];
+        let tokens = [
+            V,
+            0x0500_0051,
+            0xa00f_0000,
+            bits,
+            0,
+            0,
+            0,
+            0x0200_0001,
+            0x800f_0800,
+            0xa0e4_0000,
+            E,
+        ];
         let module = read::read(&bytes(&tokens), 100).unwrap();
         let text = listing::listing(&module).text;
         let (_, again) = assemble("c.fxo", text.as_bytes(), &Options::default());
         assert_eq!(again, tokens, "{bits:#x}:\n{text}");
     }
-    let e = read::read(&bytes(&[V, 0x0500_0051, 0xa00f_0000, 0x7f80_0000, 0, 0, 0, E]), 100).unwrap_err();
+    let e = read::read(
+        &bytes(&[V, 0x0500_0051, 0xa00f_0000, 0x7f80_0000, 0, 0, 0, E]),
+        100,
+    )
+    .unwrap_err();
     assert!(e.message.contains("inf"), "{e}");
 }
 
@@ -202,21 +226,90 @@ fn sample_table() -> Vec<u32> {
         "ps_3_0",
         V,
         &[
-            Const { name: "g_fKey", set: 2, index: 0, count: 1, ty: Ty::numeric(0, 3, 1, 1, 1), default: Some(vec![0.18f32.to_bits(), 0, 0, 0]) },
-            Const { name: "g_vTint", set: 2, index: 1, count: 1, ty: Ty::numeric(1, 3, 1, 4, 1), default: None },
-            Const { name: "g_mView", set: 2, index: 2, count: 4, ty: Ty::numeric(3, 3, 4, 4, 1), default: None },
-            Const { name: "g_mRows", set: 2, index: 6, count: 3, ty: Ty::numeric(2, 3, 3, 4, 1), default: None },
-            Const { name: "g_iSteps", set: 1, index: 0, count: 1, ty: Ty::numeric(1, 2, 1, 4, 1), default: Some(vec![16, 0, 1, 0]) },
-            Const { name: "g_bOn", set: 0, index: 2, count: 3, ty: Ty::numeric(0, 1, 1, 1, 3), default: Some(vec![1, 0, 1]) },
-            Const { name: "g_tex", set: 3, index: 0, count: 1, ty: Ty::object(12), default: None },
-            Const { name: "g_env", set: 3, index: 1, count: 1, ty: Ty::object(14), default: None },
             Const {
-                name: "g_lights", set: 2, index: 9, count: 4,
-                ty: Ty::structure(2, vec![("pos", Ty::numeric(1, 3, 1, 3, 1)), ("range", Ty::numeric(0, 3, 1, 1, 1))]),
+                name: "g_fKey",
+                set: 2,
+                index: 0,
+                count: 1,
+                ty: Ty::numeric(0, 3, 1, 1, 1),
+                default: Some(vec![0.18f32.to_bits(), 0, 0, 0]),
+            },
+            Const {
+                name: "g_vTint",
+                set: 2,
+                index: 1,
+                count: 1,
+                ty: Ty::numeric(1, 3, 1, 4, 1),
                 default: None,
             },
             Const {
-                name: "g_weights", set: 2, index: 13, count: 2, ty: Ty::numeric(0, 3, 1, 1, 2),
+                name: "g_mView",
+                set: 2,
+                index: 2,
+                count: 4,
+                ty: Ty::numeric(3, 3, 4, 4, 1),
+                default: None,
+            },
+            Const {
+                name: "g_mRows",
+                set: 2,
+                index: 6,
+                count: 3,
+                ty: Ty::numeric(2, 3, 3, 4, 1),
+                default: None,
+            },
+            Const {
+                name: "g_iSteps",
+                set: 1,
+                index: 0,
+                count: 1,
+                ty: Ty::numeric(1, 2, 1, 4, 1),
+                default: Some(vec![16, 0, 1, 0]),
+            },
+            Const {
+                name: "g_bOn",
+                set: 0,
+                index: 2,
+                count: 3,
+                ty: Ty::numeric(0, 1, 1, 1, 3),
+                default: Some(vec![1, 0, 1]),
+            },
+            Const {
+                name: "g_tex",
+                set: 3,
+                index: 0,
+                count: 1,
+                ty: Ty::object(12),
+                default: None,
+            },
+            Const {
+                name: "g_env",
+                set: 3,
+                index: 1,
+                count: 1,
+                ty: Ty::object(14),
+                default: None,
+            },
+            Const {
+                name: "g_lights",
+                set: 2,
+                index: 9,
+                count: 4,
+                ty: Ty::structure(
+                    2,
+                    vec![
+                        ("pos", Ty::numeric(1, 3, 1, 3, 1)),
+                        ("range", Ty::numeric(0, 3, 1, 1, 1)),
+                    ],
+                ),
+                default: None,
+            },
+            Const {
+                name: "g_weights",
+                set: 2,
+                index: 13,
+                count: 2,
+                ty: Ty::numeric(0, 3, 1, 1, 2),
                 default: Some(vec![one, 0, 0, 0, 0.5f32.to_bits(), 0, 0, 0]),
             },
         ],
@@ -227,11 +320,22 @@ fn sample_table() -> Vec<u32> {
 fn hand_built_constant_tables_decode_field_by_field() {
     let body = sample_table();
     let t = ctab::decode(&body[1..]).unwrap();
-    assert_eq!((t.creator.as_str(), t.target.as_str(), t.version), ("ps30 tests", "ps_3_0", V));
+    assert_eq!(
+        (t.creator.as_str(), t.target.as_str(), t.version),
+        ("ps30 tests", "ps_3_0", V)
+    );
     let rows: Vec<(String, RegisterSet, u16, u16, String)> = t
         .constants
         .iter()
-        .map(|c| (c.name.clone(), c.set, c.index, c.count, format!("{}{}", c.ty.hlsl(), c.ty.array())))
+        .map(|c| {
+            (
+                c.name.clone(),
+                c.set,
+                c.index,
+                c.count,
+                format!("{}{}", c.ty.hlsl(), c.ty.array()),
+            )
+        })
         .collect();
     let want: Vec<(String, RegisterSet, u16, u16, String)> = [
         ("g_fKey", RegisterSet::Float4, 0, 1, "float"),
@@ -242,7 +346,13 @@ fn hand_built_constant_tables_decode_field_by_field() {
         ("g_bOn", RegisterSet::Bool, 2, 3, "bool[3]"),
         ("g_tex", RegisterSet::Sampler, 0, 1, "sampler2D"),
         ("g_env", RegisterSet::Sampler, 1, 1, "samplerCUBE"),
-        ("g_lights", RegisterSet::Float4, 9, 4, "struct { float3 pos; float range; }[2]"),
+        (
+            "g_lights",
+            RegisterSet::Float4,
+            9,
+            4,
+            "struct { float3 pos; float range; }[2]",
+        ),
         ("g_weights", RegisterSet::Float4, 13, 2, "float[2]"),
     ]
     .iter()
@@ -250,13 +360,25 @@ fn hand_built_constant_tables_decode_field_by_field() {
     .collect();
     assert_eq!(rows, want);
     let c = |name: &str| t.constants.iter().find(|c| c.name == name).unwrap();
-    assert_eq!(c("g_fKey").register_defaults(), vec![vec![0.18f32.to_bits(), 0, 0, 0]]);
+    assert_eq!(
+        c("g_fKey").register_defaults(),
+        vec![vec![0.18f32.to_bits(), 0, 0, 0]]
+    );
     assert_eq!(c("g_iSteps").register_defaults(), vec![vec![16, 0, 1, 0]]);
-    assert_eq!(c("g_bOn").register_defaults(), vec![vec![1], vec![0], vec![1]]);
-    assert_eq!(c("g_weights").register_defaults()[1], vec![0.5f32.to_bits(), 0, 0, 0]);
+    assert_eq!(
+        c("g_bOn").register_defaults(),
+        vec![vec![1], vec![0], vec![1]]
+    );
+    assert_eq!(
+        c("g_weights").register_defaults()[1],
+        vec![0.5f32.to_bits(), 0, 0, 0]
+    );
     assert_eq!(c("g_vTint").default, None);
     let lights = &c("g_lights").ty;
-    assert_eq!((lights.class, lights.elements, lights.members.len()), (Class::Struct, 2, 2));
+    assert_eq!(
+        (lights.class, lights.elements, lights.members.len()),
+        (Class::Struct, 2, 2)
+    );
     assert_eq!(lights.members[1].name, "range");
     // D3DX's layout of a default: 4 words per register row for floats, one
     // per element for booleans.
@@ -313,7 +435,19 @@ fn a_table_travels_with_its_shader_and_is_listed_the_way_fxc_lists_it() {
 /// replaced by the dword `value`; in a shader: version, comment, end. The
 /// table starts at byte 12 (version, comment token, `CTAB`).
 fn bad_table(offset: usize, value: u32) -> Vec<u32> {
-    let mut body = table("c", "ps_3_0", V, &[Const { name: "k", set: 2, index: 0, count: 1, ty: Ty::numeric(0, 3, 1, 1, 1), default: None }]);
+    let mut body = table(
+        "c",
+        "ps_3_0",
+        V,
+        &[Const {
+            name: "k",
+            set: 2,
+            index: 0,
+            count: 1,
+            ty: Ty::numeric(0, 3, 1, 1, 1),
+            default: None,
+        }],
+    );
     body[1 + offset / 4] = value;
     let mut t = vec![V];
     t.extend(comment(&body));
@@ -335,7 +469,19 @@ fn corpus() -> Vec<(&'static str, Input, &'static str, usize)> {
     // default at 44), name "k" at 48, type at 52.
     let cycle = {
         // A struct whose only member's type is the struct itself.
-        let mut body = table("c", "ps_3_0", V, &[Const { name: "s", set: 2, index: 0, count: 1, ty: Ty::structure(1, vec![("m", Ty::numeric(0, 3, 1, 1, 1))]), default: None }]);
+        let mut body = table(
+            "c",
+            "ps_3_0",
+            V,
+            &[Const {
+                name: "s",
+                set: 2,
+                index: 0,
+                count: 1,
+                ty: Ty::structure(1, vec![("m", Ty::numeric(0, 3, 1, 1, 1))]),
+                default: None,
+            }],
+        );
         // Struct type at 52, its member info at 68 (name at 68, type at 72).
         body[1 + 72 / 4] = 52;
         let mut t = vec![V];
@@ -346,7 +492,19 @@ fn corpus() -> Vec<(&'static str, Input, &'static str, usize)> {
     let shared = {
         // 300 constants sharing one struct of 100 members sharing one leaf:
         // a few kilobytes that would decode to megabytes.
-        let mut body = table("c", "ps_3_0", V, &[Const { name: "s", set: 2, index: 0, count: 1, ty: Ty::structure(1, vec![("m", Ty::numeric(0, 3, 1, 1, 1))]), default: None }]);
+        let mut body = table(
+            "c",
+            "ps_3_0",
+            V,
+            &[Const {
+                name: "s",
+                set: 2,
+                index: 0,
+                count: 1,
+                ty: Ty::structure(1, vec![("m", Ty::numeric(0, 3, 1, 1, 1))]),
+                default: None,
+            }],
+        );
         let n = 300;
         body[1 + 12 / 4] = n; // constant count
         let info_at = (body.len() - 1) * 4;
@@ -368,41 +526,230 @@ fn corpus() -> Vec<(&'static str, Input, &'static str, usize)> {
     };
     vec![
         ("empty", Bytes(vec![]), "empty: no version token", 0),
-        ("a token cut off", Bytes(vec![0, 3, 0xff, 0xff, 1, 0]), "not a whole number of 4-byte tokens", 4),
-        ("no end token", Tokens(vec![V, 0x0200_0001, 0x800f_0000, 0xa0e4_0000]), "without an end token", 16),
-        ("bytes after the end", Tokens(vec![V, E, 0xdead_beef]), "4 bytes follow the end token", 8),
-        ("a length past the end", Tokens(vec![V, 0x0f00_0001, 0x800f_0000, E]), "claims 15 operand tokens, past the end", 4),
-        ("a zero-length mov", Tokens(vec![V, 0x0000_0001, E]), "says 0 operand tokens; its operands need more", 4),
-        ("a length too long", Tokens(vec![V, 0x0300_0001, 0x800f_0000, 0xa0e4_0000, 0xa0e4_0000, E]), "says 3 operand tokens; its operands take 2", 4),
-        ("an unknown opcode", Tokens(vec![V, 0x0200_1234, 0x800f_0000, 0xa0e4_0000, E]), "unknown opcode 0x1234", 4),
-        ("a vertex-shader opcode", Tokens(vec![V, 0x0200_0010, 0x800f_0000, 0xa0e4_0000, E]), "opcode 0x10 (lit) is not a ps_3_0 instruction", 4),
-        ("a ps_1_x opcode", Tokens(vec![V, 0x0100_0040, 0xb00f_0000, E]), "(texcoord) is not a ps_3_0", 4),
-        ("a comment claiming 32,767 tokens", Tokens(vec![V, 0x7fff_fffe, E]), "the comment claims 32767 tokens", 4),
-        ("a ps_2_0 stream", Tokens(vec![0xffff_0200, E]), "a ps_2_0 shader", 0),
-        ("a vs_3_0 stream", Tokens(vec![0xfffe_0300, E]), "a vs_3_0 shader", 0),
-        ("an effect", Tokens(vec![0xfeff_0901, E]), "a Direct3D effect (version token 0xfeff0901)", 0),
-        ("the co-issue bit", Tokens(vec![V, 0x4200_0001, 0x800f_0000, 0xa0e4_0000, E]), "co-issue", 4),
-        ("a comparison code of 7", Tokens(vec![V, 0x0207_0029, 0x8000_0000, 0x8000_0001, E]), "comparison code 7", 4),
-        ("a t# register", Tokens(vec![V, 0x0200_0001, 0x800f_0000, 0xb0e4_0000, E]), "register type 3", 12),
-        ("r40", Tokens(vec![V, 0x0200_0001, 0x800f_0028, 0xa0e4_0000, E]), "r40 does not exist: ps_3_0 has r0 to r31", 8),
-        ("a parameter with bit 31 clear", Tokens(vec![V, 0x0200_0001, 0x000f_0000, 0xa0e4_0000, E]), "bit 31 clear", 8),
-        ("a shift", Tokens(vec![V, 0x0200_0001, 0x810f_0000, 0xa0e4_0000, E]), "shift modifier", 8),
-        ("an empty write mask", Tokens(vec![V, 0x0200_0001, 0x8000_0000, 0xa0e4_0000, E]), "empty write mask", 8),
-        ("a _bx2 source", Tokens(vec![V, 0x0200_0001, 0x800f_0000, 0x84e4_0000, E]), "the modifier _bx2", 12),
-        ("relative through a0", Tokens(vec![V, 0x0300_0001, 0x800f_0000, 0x90e4_2000, 0xb000_0000, E]), "relative-address token 0xb0000000", 16),
-        ("a relative destination", Tokens(vec![V, 0x0200_0001, 0x800f_2000, 0xa0e4_0000, E]), "relatively addressed destination", 8),
-        ("defb 2", Tokens(vec![V, 0x0200_002f, 0xe00f_0800, 2, E]), "`defb` value 0x2", 12),
-        ("def NaN", Tokens(vec![V, 0x0500_0051, 0xa00f_0000, 0, 0x7fc0_0000, 0, 0, E]), "NaN", 16),
-        ("a dcl usage token with stray bits", Tokens(vec![V, 0x0200_001f, 0x8000_0105, 0x900f_0000, E]), "sets bits a declaration does not have", 8),
-        ("a table's header size", Tokens(bad_table(0, 27)), "the header says it is 27 bytes", 12),
-        ("a table claiming 2^30 constants", Tokens(bad_table(12, 1 << 30)), "1073741824 constants of 20 bytes", 24),
-        ("a name offset out of range", Tokens(bad_table(28, 0x10000)), "a constant's name is at offset 65536, past the end", 40),
-        ("a type offset out of range", Tokens(bad_table(40, 0x10000)), "a type at offset 65536 runs past the end", 52),
-        ("a default past the end", Tokens(bad_table(44, 72)), "the default value of `k` (4 words at offset 72) runs past the end", 56),
-        ("a register set of 7", Tokens(bad_table(32, 7)), "register set 7", 44),
-        ("a creator string without its zero", Tokens(bad_table(4, 79)), "the creator at offset 79 is not ended by a zero byte", 91),
-        ("a struct that contains itself", Tokens(cycle), "types nest more than 16 deep", 84),
-        ("types shared over and over", Tokens(shared), "more than 8 times its", 0),
+        (
+            "a token cut off",
+            Bytes(vec![0, 3, 0xff, 0xff, 1, 0]),
+            "not a whole number of 4-byte tokens",
+            4,
+        ),
+        (
+            "no end token",
+            Tokens(vec![V, 0x0200_0001, 0x800f_0000, 0xa0e4_0000]),
+            "without an end token",
+            16,
+        ),
+        (
+            "bytes after the end",
+            Tokens(vec![V, E, 0xdead_beef]),
+            "4 bytes follow the end token",
+            8,
+        ),
+        (
+            "a length past the end",
+            Tokens(vec![V, 0x0f00_0001, 0x800f_0000, E]),
+            "claims 15 operand tokens, past the end",
+            4,
+        ),
+        (
+            "a zero-length mov",
+            Tokens(vec![V, 0x0000_0001, E]),
+            "says 0 operand tokens; its operands need more",
+            4,
+        ),
+        (
+            "a length too long",
+            Tokens(vec![
+                V,
+                0x0300_0001,
+                0x800f_0000,
+                0xa0e4_0000,
+                0xa0e4_0000,
+                E,
+            ]),
+            "says 3 operand tokens; its operands take 2",
+            4,
+        ),
+        (
+            "an unknown opcode",
+            Tokens(vec![V, 0x0200_1234, 0x800f_0000, 0xa0e4_0000, E]),
+            "unknown opcode 0x1234",
+            4,
+        ),
+        (
+            "a vertex-shader opcode",
+            Tokens(vec![V, 0x0200_0010, 0x800f_0000, 0xa0e4_0000, E]),
+            "opcode 0x10 (lit) is not a ps_3_0 instruction",
+            4,
+        ),
+        (
+            "a ps_1_x opcode",
+            Tokens(vec![V, 0x0100_0040, 0xb00f_0000, E]),
+            "(texcoord) is not a ps_3_0",
+            4,
+        ),
+        (
+            "a comment claiming 32,767 tokens",
+            Tokens(vec![V, 0x7fff_fffe, E]),
+            "the comment claims 32767 tokens",
+            4,
+        ),
+        (
+            "a ps_2_0 stream",
+            Tokens(vec![0xffff_0200, E]),
+            "a ps_2_0 shader",
+            0,
+        ),
+        (
+            "a vs_3_0 stream",
+            Tokens(vec![0xfffe_0300, E]),
+            "a vs_3_0 shader",
+            0,
+        ),
+        (
+            "an effect",
+            Tokens(vec![0xfeff_0901, E]),
+            "a Direct3D effect (version token 0xfeff0901)",
+            0,
+        ),
+        (
+            "the co-issue bit",
+            Tokens(vec![V, 0x4200_0001, 0x800f_0000, 0xa0e4_0000, E]),
+            "co-issue",
+            4,
+        ),
+        (
+            "a comparison code of 7",
+            Tokens(vec![V, 0x0207_0029, 0x8000_0000, 0x8000_0001, E]),
+            "comparison code 7",
+            4,
+        ),
+        (
+            "a t# register",
+            Tokens(vec![V, 0x0200_0001, 0x800f_0000, 0xb0e4_0000, E]),
+            "register type 3",
+            12,
+        ),
+        (
+            "r40",
+            Tokens(vec![V, 0x0200_0001, 0x800f_0028, 0xa0e4_0000, E]),
+            "r40 does not exist: ps_3_0 has r0 to r31",
+            8,
+        ),
+        (
+            "a parameter with bit 31 clear",
+            Tokens(vec![V, 0x0200_0001, 0x000f_0000, 0xa0e4_0000, E]),
+            "bit 31 clear",
+            8,
+        ),
+        (
+            "a shift",
+            Tokens(vec![V, 0x0200_0001, 0x810f_0000, 0xa0e4_0000, E]),
+            "shift modifier",
+            8,
+        ),
+        (
+            "an empty write mask",
+            Tokens(vec![V, 0x0200_0001, 0x8000_0000, 0xa0e4_0000, E]),
+            "empty write mask",
+            8,
+        ),
+        (
+            "a _bx2 source",
+            Tokens(vec![V, 0x0200_0001, 0x800f_0000, 0x84e4_0000, E]),
+            "the modifier _bx2",
+            12,
+        ),
+        (
+            "relative through a0",
+            Tokens(vec![
+                V,
+                0x0300_0001,
+                0x800f_0000,
+                0x90e4_2000,
+                0xb000_0000,
+                E,
+            ]),
+            "relative-address token 0xb0000000",
+            16,
+        ),
+        (
+            "a relative destination",
+            Tokens(vec![V, 0x0200_0001, 0x800f_2000, 0xa0e4_0000, E]),
+            "relatively addressed destination",
+            8,
+        ),
+        (
+            "defb 2",
+            Tokens(vec![V, 0x0200_002f, 0xe00f_0800, 2, E]),
+            "`defb` value 0x2",
+            12,
+        ),
+        (
+            "def NaN",
+            Tokens(vec![V, 0x0500_0051, 0xa00f_0000, 0, 0x7fc0_0000, 0, 0, E]),
+            "NaN",
+            16,
+        ),
+        (
+            "a dcl usage token with stray bits",
+            Tokens(vec![V, 0x0200_001f, 0x8000_0105, 0x900f_0000, E]),
+            "sets bits a declaration does not have",
+            8,
+        ),
+        (
+            "a table's header size",
+            Tokens(bad_table(0, 27)),
+            "the header says it is 27 bytes",
+            12,
+        ),
+        (
+            "a table claiming 2^30 constants",
+            Tokens(bad_table(12, 1 << 30)),
+            "1073741824 constants of 20 bytes",
+            24,
+        ),
+        (
+            "a name offset out of range",
+            Tokens(bad_table(28, 0x10000)),
+            "a constant's name is at offset 65536, past the end",
+            40,
+        ),
+        (
+            "a type offset out of range",
+            Tokens(bad_table(40, 0x10000)),
+            "a type at offset 65536 runs past the end",
+            52,
+        ),
+        (
+            "a default past the end",
+            Tokens(bad_table(44, 72)),
+            "the default value of `k` (4 words at offset 72) runs past the end",
+            56,
+        ),
+        (
+            "a register set of 7",
+            Tokens(bad_table(32, 7)),
+            "register set 7",
+            44,
+        ),
+        (
+            "a creator string without its zero",
+            Tokens(bad_table(4, 79)),
+            "the creator at offset 79 is not ended by a zero byte",
+            91,
+        ),
+        (
+            "a struct that contains itself",
+            Tokens(cycle),
+            "types nest more than 16 deep",
+            84,
+        ),
+        (
+            "types shared over and over",
+            Tokens(shared),
+            "more than 8 times its",
+            0,
+        ),
     ]
 }
 
@@ -414,18 +761,21 @@ fn malformed_streams_are_refused_at_their_byte_without_panic_or_large_allocation
             Input::Tokens(t) => bytes(&t),
             Input::Bytes(b) => b,
         };
-        let (result, allocated) = allocated_by(|| std::panic::catch_unwind(|| read::read(&data, 100_000)));
+        let (result, allocated) =
+            allocated_by(|| std::panic::catch_unwind(|| read::read(&data, 100_000)));
         let bound = 64 * 1024 + 64 * data.len() as u64;
         match result {
             Err(_) => problems.push(format!("{what}: PANIC")),
             Ok(Ok(_)) => problems.push(format!("{what}: accepted")),
             // The sharing bomb is found wherever the budget runs out.
-            Ok(Err(e)) if !e.message.contains(message) || (byte != 0 && e.byte != byte) => {
-                problems.push(format!("{what}: `{e}`; expected `{message}` at byte {byte}"))
-            }
-            Ok(Err(_)) if allocated > bound => {
-                problems.push(format!("{what}: allocated {allocated} bytes for {} bytes of input", data.len()))
-            }
+            Ok(Err(e)) if !e.message.contains(message) || (byte != 0 && e.byte != byte) => problems
+                .push(format!(
+                    "{what}: `{e}`; expected `{message}` at byte {byte}"
+                )),
+            Ok(Err(_)) if allocated > bound => problems.push(format!(
+                "{what}: allocated {allocated} bytes for {} bytes of input",
+                data.len()
+            )),
             Ok(Err(_)) => {}
         }
     }
@@ -447,16 +797,22 @@ fn every_truncation_and_every_changed_byte_is_refused_or_read_back_exactly() {
     let check = |b: &[u8]| -> Result<(), String> {
         match std::panic::catch_unwind(|| read::read(b, 100_000)) {
             Err(_) => Err("PANIC".into()),
-            Ok(Err(e)) if e.byte > b.len() => Err(format!("offset {} past the input ({} bytes): {e}", e.byte, b.len())),
+            Ok(Err(e)) if e.byte > b.len() => Err(format!(
+                "offset {} past the input ({} bytes): {e}",
+                e.byte,
+                b.len()
+            )),
             Ok(Err(_)) => Ok(()),
             Ok(Ok(m)) => {
                 let direct = write::to_bytes(&write::encode(&m));
                 // And through the listing, as every command reads it.
                 let listed = std::panic::catch_unwind(|| -> Result<Vec<u8>, String> {
-                    let file = load::source_file("x", b.to_vec(), &Options::default()).map_err(|e| e.to_string())?;
+                    let file = load::source_file("x", b.to_vec(), &Options::default())
+                        .map_err(|e| e.to_string())?;
                     let (stmts, _) = ps30::core::front::parse::parse(&file.text);
-                    let expanded = ps30::core::front::repeat::expand(&stmts, &Default::default(), 100_000)
-                        .map_err(|d| d.items[0].message.clone())?;
+                    let expanded =
+                        ps30::core::front::repeat::expand(&stmts, &Default::default(), 100_000)
+                            .map_err(|d| d.items[0].message.clone())?;
                     write::assemble(&stmts, &expanded)
                         .map(|m| write::to_bytes(&write::encode(&m)))
                         .map_err(|d| format!("{}\n{}", d.items[0].message, file.text))
@@ -464,7 +820,9 @@ fn every_truncation_and_every_changed_byte_is_refused_or_read_back_exactly() {
                 .map_err(|_| "PANIC in the listing".to_string())?;
                 match (direct == b, listed) {
                     (true, Ok(l)) if l == b => Ok(()),
-                    (ok, other) => Err(format!("read but not written back (direct: {ok}, listing: {other:?})")),
+                    (ok, other) => Err(format!(
+                        "read but not written back (direct: {ok}, listing: {other:?})"
+                    )),
                 }
             }
         }
@@ -476,7 +834,13 @@ fn every_truncation_and_every_changed_byte_is_refused_or_read_back_exactly() {
         }
     }
     for i in 0..data.len() {
-        for v in [0x00, 0xff, data[i] ^ 0x01, data[i] ^ 0x80, data[i].wrapping_add(4)] {
+        for v in [
+            0x00,
+            0xff,
+            data[i] ^ 0x01,
+            data[i] ^ 0x80,
+            data[i].wrapping_add(4),
+        ] {
             let mut b = data.clone();
             b[i] = v;
             if let Err(e) = check(&b) {

@@ -132,7 +132,6 @@ const OLDER: &[(Vector, Option<&str>)] = &[
     (("ps_2_x shader 16", "ps.2.x\ncall l2047\nret\nlabel l2047\nret\n", &[0xffff0201, 0x01000019, 0xa0e417ff, 0x0000001c, 0x0100001e, 0xa0e417ff, 0x0000001c, 0x0000ffff]), None),
 ];
 
-
 /// The ps_3_0 vectors of Wine's failure tests (reason in the name), and
 /// its ps_2_0 ones: `ps30 asm` refuses all of them.
 #[rustfmt::skip]
@@ -186,7 +185,11 @@ fn read_back(name: &str, tokens: &[u32], problems: &mut Vec<String>) -> Option<S
     };
     let direct = write::encode(&module);
     if direct != tokens {
-        problems.push(format!("{name}: read + encode:\n  Wine: {}\n  ps30: {}", hex(tokens), hex(&direct)));
+        problems.push(format!(
+            "{name}: read + encode:\n  Wine: {}\n  ps30: {}",
+            hex(tokens),
+            hex(&direct)
+        ));
     }
     let l = listing::listing(&module);
     match write_text(&l.text) {
@@ -197,7 +200,10 @@ fn read_back(name: &str, tokens: &[u32], problems: &mut Vec<String>) -> Option<S
             hex(&again),
             l.text
         )),
-        Err(e) => problems.push(format!("{name}: its listing does not write: {e}\n{}", l.text)),
+        Err(e) => problems.push(format!(
+            "{name}: its listing does not write: {e}\n{}",
+            l.text
+        )),
     }
     Some(l.text)
 }
@@ -239,11 +245,17 @@ fn load_bytes(name: &str, tokens: &[u32]) -> Result<load::Loaded, String> {
 #[test]
 fn every_ps_3_0_vector_is_written_and_read_byte_for_byte() {
     let mut problems = Vec::new();
-    let all = PS30_VALID.iter().chain(PS30_INVALID.iter().map(|r| &r.vector));
+    let all = PS30_VALID
+        .iter()
+        .chain(PS30_INVALID.iter().map(|r| &r.vector));
     for &(name, text, tokens) in all {
         match write_text(text) {
             Ok(ours) if ours == tokens => {}
-            Ok(ours) => problems.push(format!("{name}: writer:\n  Wine: {}\n  ps30: {}", hex(tokens), hex(&ours))),
+            Ok(ours) => problems.push(format!(
+                "{name}: writer:\n  Wine: {}\n  ps30: {}",
+                hex(tokens),
+                hex(&ours)
+            )),
             Err(e) => problems.push(format!("{name}: the writer refused the text: {e}")),
         }
         read_back(name, tokens, &mut problems);
@@ -258,13 +270,24 @@ fn valid_vectors_assemble_and_their_tokens_load_to_the_same_program() {
         let file = load::source_file(name, text.as_bytes().to_vec(), &Options::default()).unwrap();
         match load::assemble(file, &Options::default()) {
             Ok((_, ours)) if ours == tokens => {}
-            Ok((_, ours)) => problems.push(format!("{name}: asm:\n  Wine: {}\n  ps30: {}", hex(tokens), hex(&ours))),
-            Err(e) => problems.push(format!("{name}: asm refused it:\n{}", e.diagnostics.render(&e.file))),
+            Ok((_, ours)) => problems.push(format!(
+                "{name}: asm:\n  Wine: {}\n  ps30: {}",
+                hex(tokens),
+                hex(&ours)
+            )),
+            Err(e) => problems.push(format!(
+                "{name}: asm refused it:\n{}",
+                e.diagnostics.render(&e.file)
+            )),
         }
-        let from_text = load::load_str(name, text, &Options::default()).map(|l| write_program(l.shader.program())).map_err(|e| e.to_string());
+        let from_text = load::load_str(name, text, &Options::default())
+            .map(|l| write_program(l.shader.program()))
+            .map_err(|e| e.to_string());
         let from_tokens = load_bytes(name, tokens).map(|l| write_program(l.shader.program()));
         if from_text != from_tokens {
-            problems.push(format!("{name}: text and tokens load differently:\n{from_text:?}\n{from_tokens:?}"));
+            problems.push(format!(
+                "{name}: text and tokens load differently:\n{from_text:?}\n{from_tokens:?}"
+            ));
         }
     }
     assert!(problems.is_empty(), "{}", problems.join("\n"));
@@ -277,7 +300,14 @@ fn invalid_vectors_are_refused_for_their_reason_as_text_and_as_tokens() {
         let (name, text, tokens) = r.vector;
         let from_text = load::load_str(name, text, &Options::default())
             .map(|_| ())
-            .map_err(|e| e.diagnostics.errors().next().expect("an error").message.clone());
+            .map_err(|e| {
+                e.diagnostics
+                    .errors()
+                    .next()
+                    .expect("an error")
+                    .message
+                    .clone()
+            });
         match from_text {
             Ok(()) => problems.push(format!("{name} accepted; expected: {}", r.reason)),
             Err(m) if !m.contains(r.message) => problems.push(format!(
@@ -289,7 +319,9 @@ fn invalid_vectors_are_refused_for_their_reason_as_text_and_as_tokens() {
         // The same program as tokens: the same verdict, placed by token.
         match load_bytes(name, tokens) {
             Ok(_) => problems.push(format!("{name}: its tokens were accepted")),
-            Err(m) if !m.contains(r.message) || !m.contains("token ") || !m.contains("(byte 0x") => {
+            Err(m)
+                if !m.contains(r.message) || !m.contains("token ") || !m.contains("(byte 0x") =>
+            {
                 problems.push(format!("{name}: from tokens: {m}"))
             }
             Err(_) => {}
@@ -297,10 +329,15 @@ fn invalid_vectors_are_refused_for_their_reason_as_text_and_as_tokens() {
         if let Some(repaired) = r.repaired {
             match write_text(repaired) {
                 Ok(ours) if instruction_tokens(&ours) == instruction_tokens(tokens) => {}
-                other => problems.push(format!("{name} repaired: {other:?}, Wine: {}", hex(tokens))),
+                other => {
+                    problems.push(format!("{name} repaired: {other:?}, Wine: {}", hex(tokens)))
+                }
             }
             if let Err(e) = load::load_str(name, repaired, &Options::default()) {
-                problems.push(format!("{name} repaired does not load:\n{}", e.diagnostics.render(&e.file)));
+                problems.push(format!(
+                    "{name} repaired does not load:\n{}",
+                    e.diagnostics.render(&e.file)
+                ));
             }
         }
     }
@@ -311,11 +348,25 @@ fn invalid_vectors_are_refused_for_their_reason_as_text_and_as_tokens() {
 fn vface_is_accepted_where_it_may_be_used() {
     // The vector's `mov r0, vFace` is refused even with the declaration:
     // vFace may only be compared.
-    let e = load::load_str("v.psh", "ps_3_0\ndcl vFace\nmov r0, vFace\n", &Options::default())
-        .expect_err("vFace as a value");
-    assert!(e.diagnostics.errors().next().unwrap().message.contains("only be compared"));
-    load::load_str("v.psh", "ps_3_0\ndcl vFace\nsetp_lt p0.x, vFace, c0.x\n", &Options::default())
-        .expect("vFace compared by setp");
+    let e = load::load_str(
+        "v.psh",
+        "ps_3_0\ndcl vFace\nmov r0, vFace\n",
+        &Options::default(),
+    )
+    .expect_err("vFace as a value");
+    assert!(e
+        .diagnostics
+        .errors()
+        .next()
+        .unwrap()
+        .message
+        .contains("only be compared"));
+    load::load_str(
+        "v.psh",
+        "ps_3_0\ndcl vFace\nsetp_lt p0.x, vFace, c0.x\n",
+        &Options::default(),
+    )
+    .expect("vFace compared by setp");
 }
 
 #[test]
@@ -328,33 +379,58 @@ fn older_vectors_are_refused_by_name_and_their_bodies_encode_the_same_as_ps_3_0(
             Err(e) => {
                 let first = e.diagnostics.errors().next().expect("an error");
                 let expected = format!("this is a {} shader", text.lines().next().unwrap());
-                if !first.message.contains(&expected) || e.file.line_col(first.span.start) != (1, 1) || e.diagnostics.items.len() != 1 {
-                    problems.push(format!("{name}: `{}`, expected `{expected}` at 1:1 and nothing else", first.message));
+                if !first.message.contains(&expected)
+                    || e.file.line_col(first.span.start) != (1, 1)
+                    || e.diagnostics.items.len() != 1
+                {
+                    problems.push(format!(
+                        "{name}: `{}`, expected `{expected}` at 1:1 and nothing else",
+                        first.message
+                    ));
                 }
             }
         }
         match load_bytes(name, tokens) {
             Ok(_) => problems.push(format!("{name}: its tokens were accepted")),
-            Err(m) if !m.contains(&format!("a {version} shader")) => problems.push(format!("{name}: tokens refused with `{m}`")),
+            Err(m) if !m.contains(&format!("a {version} shader")) => {
+                problems.push(format!("{name}: tokens refused with `{m}`"))
+            }
             Err(_) => {}
         }
         let body = text.split_once('\n').expect("a version line").1;
         let as_ps30 = format!("ps_3_0\n{body}");
         // The writer alone: every body without ps_2_x registers (t#).
-        match (write_text(&as_ps30), not_ps30.is_some_and(|m| m.contains("unknown register"))) {
+        match (
+            write_text(&as_ps30),
+            not_ps30.is_some_and(|m| m.contains("unknown register")),
+        ) {
             (Ok(ours), false) if ours[1..] == tokens[1..] => {}
             (Err(_), true) => {}
-            (other, _) => problems.push(format!("{name} as ps_3_0 through the writer: {other:?}, Wine: {}", hex(&tokens[1..]))),
+            (other, _) => problems.push(format!(
+                "{name} as ps_3_0 through the writer: {other:?}, Wine: {}",
+                hex(&tokens[1..])
+            )),
         }
         // And validation's verdict on it as a ps_3_0 program.
-        match (load::load_str(name, &as_ps30, &Options::default()), not_ps30) {
+        match (
+            load::load_str(name, &as_ps30, &Options::default()),
+            not_ps30,
+        ) {
             (Ok(_), None) => {}
-            (Ok(_), Some(why)) => problems.push(format!("{name} as ps_3_0 accepted; expected `{why}`")),
-            (Err(e), None) => problems.push(format!("{name} as ps_3_0 refused:\n{}", e.diagnostics.render(&e.file))),
+            (Ok(_), Some(why)) => {
+                problems.push(format!("{name} as ps_3_0 accepted; expected `{why}`"))
+            }
+            (Err(e), None) => problems.push(format!(
+                "{name} as ps_3_0 refused:\n{}",
+                e.diagnostics.render(&e.file)
+            )),
             (Err(e), Some(why)) => {
                 let first = e.diagnostics.errors().next().expect("an error");
                 if !first.message.contains(why) {
-                    problems.push(format!("{name} as ps_3_0: first error `{}`, expected `{why}`", first.message));
+                    problems.push(format!(
+                        "{name} as ps_3_0: first error `{}`, expected `{why}`",
+                        first.message
+                    ));
                 }
             }
         }
@@ -368,7 +444,10 @@ fn failure_vectors_are_refused_by_asm() {
     for (name, text) in FAILURES {
         let file = load::source_file(name, text.as_bytes().to_vec(), &Options::default()).unwrap();
         if let Ok((_, tokens)) = load::assemble(file, &Options::default()) {
-            problems.push(format!("failure_test shader {name}: written as {}", hex(&tokens)));
+            problems.push(format!(
+                "failure_test shader {name}: written as {}",
+                hex(&tokens)
+            ));
         }
     }
     assert!(problems.is_empty(), "{}", problems.join("\n"));

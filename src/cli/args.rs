@@ -6,13 +6,13 @@
 //! means the same thing and fails with the same message wherever it is
 //! given. Only the command line uses clap; the library sees plain values.
 
+use super::BadInput;
 use clap::Args;
+use ps30::core::bytecode::ctab::{ConstantTable, RegisterSet};
 use ps30::core::cost::Profile;
 use ps30::core::emu::{self, Address, Constants, Filter, MipFilter};
 use ps30::core::image::TargetFormat;
-use ps30::core::bytecode::ctab::{ConstantTable, RegisterSet};
 use ps30::core::load::Options;
-use super::BadInput;
 
 /// `WxH` with both sides 1..=65536.
 pub fn parse_size(s: &str) -> Result<(u32, u32), String> {
@@ -78,8 +78,7 @@ pub enum ConstRef {
 /// `cN` (with its range checked) or a constant's name.
 fn const_ref(s: &str, prefix: char, count: u32) -> Result<ConstRef, String> {
     let s = s.trim();
-    if s
-        .strip_prefix(prefix)
+    if s.strip_prefix(prefix)
         .is_some_and(|d| !d.is_empty() && d.chars().all(|c| c.is_ascii_digit()))
     {
         return parse_register(s, prefix, count).map(ConstRef::Register);
@@ -106,9 +105,9 @@ fn const_values<T>(
     per_register: usize,
     value: impl Fn(&str) -> Result<T, String>,
 ) -> Result<(ConstRef, Vec<T>), String> {
-    let (target, values) = s.split_once('=').ok_or(format!(
-        "expected {prefix}N=… or NAME=…, e.g. {prefix}3=…"
-    ))?;
+    let (target, values) = s
+        .split_once('=')
+        .ok_or(format!("expected {prefix}N=… or NAME=…, e.g. {prefix}3=…"))?;
     let target = const_ref(target, prefix, count)?;
     let values = values
         .split(',')

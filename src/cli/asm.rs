@@ -65,7 +65,11 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
     } else if !ui.quiet {
         let line = format!(
             "wrote {}: {} tokens ({} bytes), {} instruction slots",
-            if to_stdout { "standard output" } else { &args.output },
+            if to_stdout {
+                "standard output"
+            } else {
+                &args.output
+            },
             thousands(tokens.len() as u64),
             thousands(bytes.len() as u64),
             thousands(slots as u64)

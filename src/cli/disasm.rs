@@ -33,7 +33,13 @@ pub fn run(args: Args, _ui: &Ui) -> super::Result {
         bytes = to_bytes(&tokens);
     }
     let module = read(&bytes, options.max_expanded).map_err(|error| {
-        BadInput(load::NotASource::Bytecode { name: name.clone(), error }.to_string())
+        BadInput(
+            load::NotASource::Bytecode {
+                name: name.clone(),
+                error,
+            }
+            .to_string(),
+        )
     })?;
     let l = listing(&module);
     if args.json {

@@ -4,8 +4,8 @@ use super::args::SourceArgs;
 use super::io::{load_file, print, print_json};
 use super::ui::Ui;
 use super::{BadInput, Outcome};
-use std::path::PathBuf;
 use ps30::core::front::print::write_program;
+use std::path::PathBuf;
 
 #[derive(clap::Args)]
 pub struct Args {

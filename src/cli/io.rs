@@ -77,7 +77,10 @@ pub fn shader_file(spec: &str, options: &Options) -> Result<SourceFile, BadInput
 
 /// A shader to run, as [`shader_file`] reads it.
 pub fn shader_source(spec: &str) -> Result<ShaderSource, BadInput> {
-    Ok(ShaderSource::from_file(shader_file(spec, &Options::default())?))
+    Ok(ShaderSource::from_file(shader_file(
+        spec,
+        &Options::default(),
+    )?))
 }
 
 /// Prints a source error's diagnostics to stderr; the error is a one-line

@@ -3,8 +3,8 @@
 //! behaviour.
 
 use super::args::{
-    parse_bool_const, parse_define, parse_finite, parse_float4, parse_float_const,
-    parse_int_const, parse_size, AddressArg, ConstRef, FilterArg, MipFilterArg, Resolved,
+    parse_bool_const, parse_define, parse_finite, parse_float4, parse_float_const, parse_int_const,
+    parse_size, AddressArg, ConstRef, FilterArg, MipFilterArg, Resolved,
 };
 use super::io::{color_stderr, print, print_json, shader_source};
 use super::ui::Ui;

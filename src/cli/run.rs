@@ -2,8 +2,7 @@
 
 use super::args::{
     parse_float4, parse_float_const, AddressArg, ConstRef, ConstantArgs, ExecArgs, FilterArg,
-    Resolved,
-    FormatArg, SourceArgs,
+    FormatArg, Resolved, SourceArgs,
 };
 use super::io::{load_file, print_json, say};
 use super::ui::Ui;

@@ -44,7 +44,11 @@ impl SourceFile {
 
     /// A compiled shader, as its listing with the token each part of the
     /// listing came from.
-    pub fn compiled(name: impl Into<String>, listing: String, anchors: Vec<(u32, u32)>) -> SourceFile {
+    pub fn compiled(
+        name: impl Into<String>,
+        listing: String,
+        anchors: Vec<(u32, u32)>,
+    ) -> SourceFile {
         SourceFile {
             tokens: Some(anchors),
             ..SourceFile::new(name, listing)
@@ -67,7 +71,11 @@ impl SourceFile {
     /// token T (byte 0xB)` in a compiled shader.
     pub fn locate(&self, offset: u32) -> String {
         match self.token_at(offset) {
-            Some(token) => format!("{}: token {token} (byte {:#x})", self.name, token as usize * 4),
+            Some(token) => format!(
+                "{}: token {token} (byte {:#x})",
+                self.name,
+                token as usize * 4
+            ),
             None => {
                 let (line, col) = self.line_col(offset);
                 format!("{}:{line}:{col}", self.name)
@@ -216,8 +224,16 @@ impl Diagnostic {
             let line = file.line_of(span.start);
             let text = file.line_text(line);
             let (_, col) = file.line_col(span.start);
-            let width = file.text[span.range()].lines().next().map_or(0, |l| l.chars().count()).max(1);
-            format!("   |\n   | {text}\n   | {}{} {label}\n", " ".repeat(col - 1), "^".repeat(width))
+            let width = file.text[span.range()]
+                .lines()
+                .next()
+                .map_or(0, |l| l.chars().count())
+                .max(1);
+            format!(
+                "   |\n   | {text}\n   | {}{} {label}\n",
+                " ".repeat(col - 1),
+                "^".repeat(width)
+            )
         };
         out.push_str(&snippet(self.span, &self.label));
         for (span, label) in &self.secondary {

@@ -77,7 +77,11 @@ impl std::error::Error for NotASource {}
 
 /// A shader's source from its bytes: a compiled shader (its first token is
 /// a version token) becomes its listing; anything else must be UTF-8 text.
-pub fn source_file(name: &str, bytes: Vec<u8>, options: &Options) -> Result<SourceFile, NotASource> {
+pub fn source_file(
+    name: &str,
+    bytes: Vec<u8>,
+    options: &Options,
+) -> Result<SourceFile, NotASource> {
     if bytecode::is_bytecode(&bytes) {
         let module = bytecode::read::read(&bytes, options.max_expanded).map_err(|error| {
             NotASource::Bytecode {
@@ -213,14 +217,19 @@ pub fn constant_table_of(file: &SourceFile) -> Option<ctab::ConstantTable> {
 /// The first `CTAB` comment block, decoded.
 fn constant_table(stmts: &[ast::Stmt]) -> Result<Option<ctab::ConstantTable>, Diagnostic> {
     let found = stmts.iter().find_map(|s| match s {
-        ast::Stmt::Comment { tokens, span } if tokens.first() == Some(&bytecode::CTAB) => Some((tokens, *span)),
+        ast::Stmt::Comment { tokens, span } if tokens.first() == Some(&bytecode::CTAB) => {
+            Some((tokens, *span))
+        }
         _ => None,
     });
     let Some((tokens, span)) = found else {
         return Ok(None);
     };
     ctab::decode(&tokens[1..]).map(Some).map_err(|e| {
-        Diagnostic::error(span, format!("the constant table does not decode: {}", e.message))
-            .with_label(format!("at byte {} of the table", e.offset))
+        Diagnostic::error(
+            span,
+            format!("the constant table does not decode: {}", e.message),
+        )
+        .with_label(format!("at byte {} of the table", e.offset))
     })
 }

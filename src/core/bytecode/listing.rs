@@ -58,7 +58,10 @@ pub fn listing(module: &Module) -> Listing {
         match &item.kind {
             ItemKind::Comment(body) => l.comment(item.token, body, table.is_some()),
             ItemKind::Instr(ins) => {
-                if matches!(ins.op, Opcode::EndRep | Opcode::EndLoop | Opcode::EndIf | Opcode::Else) {
+                if matches!(
+                    ins.op,
+                    Opcode::EndRep | Opcode::EndLoop | Opcode::EndIf | Opcode::Else
+                ) {
                     depth = depth.saturating_sub(1);
                 }
                 if ins.op == Opcode::Label {
@@ -72,7 +75,10 @@ pub fn listing(module: &Module) -> Listing {
         }
     }
     let (texture, arithmetic) = slots(module);
-    let end = module.items.last().map_or(1, |i| i.token + 1 + length(&i.kind));
+    let end = module
+        .items
+        .last()
+        .map_or(1, |i| i.token + 1 + length(&i.kind));
     l.line(
         end,
         &format!(
@@ -110,7 +116,9 @@ pub fn slots(module: &Module) -> (u32, u32) {
         .collect();
     let (mut texture, mut arithmetic) = (0, 0);
     for item in &module.items {
-        let ItemKind::Instr(ins) = &item.kind else { continue };
+        let ItemKind::Instr(ins) = &item.kind else {
+            continue;
+        };
         let row = ins.op.info();
         let on_cube = ins
             .src
@@ -144,11 +152,17 @@ impl Builder {
         let what = match body.first() {
             Some(&CTAB) if table_above => "the constant table above (CTAB)".to_string(),
             Some(t) if t.to_le_bytes().iter().all(|b| b.is_ascii_alphanumeric()) => {
-                format!("a comment block `{}`", String::from_utf8_lossy(&t.to_le_bytes()))
+                format!(
+                    "a comment block `{}`",
+                    String::from_utf8_lossy(&t.to_le_bytes())
+                )
             }
             _ => "a comment block".to_string(),
         };
-        self.line(token, &format!("// {what}, {} tokens, kept as written:", body.len()));
+        self.line(
+            token,
+            &format!("// {what}, {} tokens, kept as written:", body.len()),
+        );
         if body.is_empty() {
             self.line(token, COMMENT_BLOCK);
         }
@@ -166,7 +180,9 @@ impl Builder {
         self.out.text.push_str(&" ".repeat(indent));
         let (line, anchors) = instruction_line(ins, token);
         let start = self.out.text.len() as u32;
-        self.out.anchors.extend(anchors.into_iter().map(|(at, t)| (start + at, t)));
+        self.out
+            .anchors
+            .extend(anchors.into_iter().map(|(at, t)| (start + at, t)));
         self.out.text.push_str(&line);
         self.out.text.push('\n');
     }
@@ -218,7 +234,15 @@ fn mnemonic(ins: &Instr) -> String {
     if let Some(c) = ins.compare {
         let _ = write!(m, "_{}", c.suffix());
     }
-    if let (Extra::Decl { usage, index, texture }, Some(d)) = (ins.extra, &ins.dst) {
+    if let (
+        Extra::Decl {
+            usage,
+            index,
+            texture,
+        },
+        Some(d),
+    ) = (ins.extra, &ins.dst)
+    {
         match texture {
             1 => m.push_str("_1d"),
             2 => m.push_str("_2d"),

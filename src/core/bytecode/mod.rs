@@ -121,7 +121,11 @@ pub enum Extra {
     None,
     /// A `dcl` usage token: usage (bits 0–3), usage index (16–19), sampler
     /// texture type (27–30).
-    Decl { usage: u8, index: u8, texture: u8 },
+    Decl {
+        usage: u8,
+        index: u8,
+        texture: u8,
+    },
     /// `def`: four floats, as their bits.
     Float([u32; 4]),
     Int([i32; 4]),
@@ -179,7 +183,17 @@ pub fn modifier_code(m: SrcMod) -> u8 {
 /// not have (D3DSPSM_*) as the error.
 pub fn modifier_from_code(code: u8) -> Result<SrcMod, &'static str> {
     const OTHERS: [&str; 11] = [
-        "", "", "_bias", "-…_bias", "_bx2", "-…_bx2", "1 - …", "_x2", "-…_x2", "_dz", "_dw",
+        "",
+        "",
+        "_bias",
+        "-…_bias",
+        "_bx2",
+        "-…_bx2",
+        "1 - …",
+        "_x2",
+        "-…_x2",
+        "_dz",
+        "_dw",
     ];
     match code {
         0 => Ok(SrcMod::None),
@@ -187,7 +201,10 @@ pub fn modifier_from_code(code: u8) -> Result<SrcMod, &'static str> {
         11 => Ok(SrcMod::Abs),
         12 => Ok(SrcMod::NegAbs),
         13 => Ok(SrcMod::Not),
-        c => Err(OTHERS.get(c as usize).copied().unwrap_or("an undefined code")),
+        c => Err(OTHERS
+            .get(c as usize)
+            .copied()
+            .unwrap_or("an undefined code")),
     }
 }
 

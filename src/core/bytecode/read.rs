@@ -113,7 +113,9 @@ fn version(tokens: &Tokens) -> Result<(), ReadError> {
     let message = match (version_name(v), v >> 16) {
         (Some(name), _) => format!("a {name} shader (version token {v:#010x})"),
         (None, 0xFEFF) => format!("a Direct3D effect (version token {v:#010x}), not a shader"),
-        (None, _) => format!("not a Direct3D 9 shader: the first token {v:#010x} is not a version token"),
+        (None, _) => {
+            format!("not a Direct3D 9 shader: the first token {v:#010x} is not a version token")
+        }
     };
     Err(ReadError::at(0, message).with_help("ps30 reads ps_3_0 only"))
 }
@@ -122,7 +124,10 @@ fn version(tokens: &Tokens) -> Result<(), ReadError> {
 fn comment(tokens: &Tokens, at: usize) -> Result<(ItemKind, usize), ReadError> {
     let t = tokens.get(at).unwrap_or_default();
     if t & 0x8000_0000 != 0 {
-        return Err(ReadError::at(at * 4, format!("comment token {t:#010x} has bit 31 set")));
+        return Err(ReadError::at(
+            at * 4,
+            format!("comment token {t:#010x} has bit 31 set"),
+        ));
     }
     let len = ((t >> 16) & 0x7FFF) as usize;
     let start = at + 1;
@@ -140,7 +145,10 @@ fn comment(tokens: &Tokens, at: usize) -> Result<(ItemKind, usize), ReadError> {
     let body: Vec<u32> = (start..start + len).filter_map(|i| tokens.get(i)).collect();
     if body.first() == Some(&CTAB) {
         super::ctab::decode(&body[1..]).map_err(|e| {
-            ReadError::at((start + 1) * 4 + e.offset, format!("constant table: {}", e.message))
+            ReadError::at(
+                (start + 1) * 4 + e.offset,
+                format!("constant table: {}", e.message),
+            )
         })?;
     }
     Ok((ItemKind::Comment(body), start + len))
@@ -199,18 +207,30 @@ fn instruction(tokens: &Tokens, at: usize) -> Result<(Instr, usize), ReadError> 
         (29, "reserved bit 29"),
     ] {
         if t & 1 << bit != 0 {
-            return Err(ReadError::at(byte, format!("`{}` token {t:#010x} sets {what}", row.mnemonic)));
+            return Err(ReadError::at(
+                byte,
+                format!("`{}` token {t:#010x} sets {what}", row.mnemonic),
+            ));
         }
     }
     let compare = if row.comparison {
         Some(Compare::from_code(control).ok_or_else(|| {
-            ReadError::at(byte, format!("`{}` with comparison code {control}, which is not 1 to 6", row.mnemonic))
+            ReadError::at(
+                byte,
+                format!(
+                    "`{}` with comparison code {control}, which is not 1 to 6",
+                    row.mnemonic
+                ),
+            )
         })?)
     } else {
         if control != row.control {
             return Err(ReadError::at(
                 byte,
-                format!("`{}` with control bits {control:#x}, which it does not take", row.mnemonic),
+                format!(
+                    "`{}` with control bits {control:#x}, which it does not take",
+                    row.mnemonic
+                ),
             ));
         }
         None
@@ -348,7 +368,11 @@ fn declaration(t: u32, byte: usize) -> Result<Extra, ReadError> {
             format!("`dcl` usage token {t:#010x} sets bits a declaration does not have"),
         ));
     }
-    let (usage, index, texture) = ((t & 0xF) as u8, ((t >> 16) & 0xF) as u8, ((t >> 27) & 0xF) as u8);
+    let (usage, index, texture) = (
+        (t & 0xF) as u8,
+        ((t >> 16) & 0xF) as u8,
+        ((t >> 27) & 0xF) as u8,
+    );
     if texture != 0 && (usage != 0 || index != 0) {
         return Err(ReadError::at(
             byte,
@@ -356,10 +380,16 @@ fn declaration(t: u32, byte: usize) -> Result<Extra, ReadError> {
         ));
     }
     if usage as usize >= crate::core::isa::USAGES.len() {
-        return Err(ReadError::at(byte, format!("`dcl` with usage code {usage}, which D3DDECLUSAGE does not have")));
+        return Err(ReadError::at(
+            byte,
+            format!("`dcl` with usage code {usage}, which D3DDECLUSAGE does not have"),
+        ));
     }
     if texture > 4 {
-        return Err(ReadError::at(byte, format!("`dcl` with sampler texture type {texture}, which does not exist")));
+        return Err(ReadError::at(
+            byte,
+            format!("`dcl` with sampler texture type {texture}, which does not exist"),
+        ));
     }
     Ok(Extra::Decl {
         usage,
@@ -374,7 +404,10 @@ fn literals(kind: Operand, ops: &mut Operands) -> Result<Extra, ReadError> {
         let (t, byte) = ops.take()?;
         return match t {
             0 | 1 => Ok(Extra::Bool(t == 1)),
-            _ => Err(ReadError::at(byte, format!("`defb` value {t:#x}: a boolean is 0 or 1"))),
+            _ => Err(ReadError::at(
+                byte,
+                format!("`defb` value {t:#x}: a boolean is 0 or 1"),
+            )),
         };
     }
     let mut v = [0u32; 4];
@@ -383,7 +416,10 @@ fn literals(kind: Operand, ops: &mut Operands) -> Result<Extra, ReadError> {
         if kind == Operand::FloatLits && !f32::from_bits(t).is_finite() {
             return Err(ReadError::at(
                 byte,
-                format!("`def` value {t:#010x} is {}, which assembly text cannot write", f32::from_bits(t)),
+                format!(
+                    "`def` value {t:#010x} is {}, which assembly text cannot write",
+                    f32::from_bits(t)
+                ),
             )
             .with_help("ps30 reads constants that are finite numbers"));
         }
@@ -397,23 +433,49 @@ fn literals(kind: Operand, ops: &mut Operands) -> Result<Extra, ReadError> {
 
 /// D3DSPR_* register types, for messages.
 const REGISTER_TYPES: [&str; 20] = [
-    "TEMP", "INPUT", "CONST", "ADDR/TEXTURE (a0, t#)", "RASTOUT", "ATTROUT", "OUTPUT (o#)",
-    "CONSTINT", "COLOROUT", "DEPTHOUT", "SAMPLER", "CONST2", "CONST3", "CONST4", "CONSTBOOL",
-    "LOOP", "TEMPFLOAT16", "MISCTYPE", "LABEL", "PREDICATE",
+    "TEMP",
+    "INPUT",
+    "CONST",
+    "ADDR/TEXTURE (a0, t#)",
+    "RASTOUT",
+    "ATTROUT",
+    "OUTPUT (o#)",
+    "CONSTINT",
+    "COLOROUT",
+    "DEPTHOUT",
+    "SAMPLER",
+    "CONST2",
+    "CONST3",
+    "CONST4",
+    "CONSTBOOL",
+    "LOOP",
+    "TEMPFLOAT16",
+    "MISCTYPE",
+    "LABEL",
+    "PREDICATE",
 ];
 
 /// The register of a parameter token, in range unless `relative`.
 fn register(t: u32, byte: usize, relative: bool) -> Result<Reg, ReadError> {
     if t & 0x8000_0000 == 0 {
-        return Err(ReadError::at(byte, format!("parameter token {t:#010x} has bit 31 clear")));
+        return Err(ReadError::at(
+            byte,
+            format!("parameter token {t:#010x} has bit 31 clear"),
+        ));
     }
     if t & 0xC000 != 0 {
-        return Err(ReadError::at(byte, format!("parameter token {t:#010x} sets reserved bits 14–15")));
+        return Err(ReadError::at(
+            byte,
+            format!("parameter token {t:#010x} sets reserved bits 14–15"),
+        ));
     }
     let ty = ((t >> 28) & 7 | (t >> 8) & 0x18) as u8;
     let number = t & 0x7FF;
     let Some((file, index)) = RegFile::from_token(ty, number) else {
-        let name = REGISTER_TYPES.get(ty as usize).copied().unwrap_or("undefined");
+        let name = REGISTER_TYPES
+            .get(ty as usize)
+            .copied()
+            .unwrap_or("undefined");
         let message = if REG_FILES.iter().any(|f| f.token_type == ty) {
             format!("register {number} of type {ty} ({name}) does not exist")
         } else {
@@ -425,7 +487,11 @@ fn register(t: u32, byte: usize, relative: bool) -> Result<Reg, ReadError> {
     if !relative && index >= info.count {
         return Err(ReadError::at(
             byte,
-            format!("{}{index} does not exist: ps_3_0 has {0}0 to {0}{1}", info.name, info.count - 1),
+            format!(
+                "{}{index} does not exist: ps_3_0 has {0}0 to {0}{1}",
+                info.name,
+                info.count - 1
+            ),
         ));
     }
     Ok(Reg { file, index })
@@ -434,19 +500,31 @@ fn register(t: u32, byte: usize, relative: bool) -> Result<Reg, ReadError> {
 /// A destination-format token.
 fn dest(t: u32, byte: usize) -> Result<Dest, ReadError> {
     if t & 1 << 13 != 0 {
-        return Err(ReadError::at(byte, "a relatively addressed destination (o[aL] is vs_3_0 only)"));
+        return Err(ReadError::at(
+            byte,
+            "a relatively addressed destination (o[aL] is vs_3_0 only)",
+        ));
     }
     let reg = register(t, byte, false)?;
     if (t >> 24) & 0xF != 0 {
-        return Err(ReadError::at(byte, format!("destination {t:#010x} has a shift modifier (ps_1_x only)")));
+        return Err(ReadError::at(
+            byte,
+            format!("destination {t:#010x} has a shift modifier (ps_1_x only)"),
+        ));
     }
     let result = ((t >> 20) & 0xF) as u8;
     if result & !(SAT | PP | CENTROID) != 0 {
-        return Err(ReadError::at(byte, format!("destination {t:#010x} has result modifier bits {result:#x}")));
+        return Err(ReadError::at(
+            byte,
+            format!("destination {t:#010x} has result modifier bits {result:#x}"),
+        ));
     }
     let mask = ((t >> 16) & 0xF) as u8;
     if mask == 0 {
-        return Err(ReadError::at(byte, format!("destination {t:#010x} writes no component (empty write mask)")));
+        return Err(ReadError::at(
+            byte,
+            format!("destination {t:#010x} writes no component (empty write mask)"),
+        ));
     }
     Ok(Dest {
         reg,
@@ -460,7 +538,10 @@ fn source(t: u32, byte: usize) -> Result<Source, ReadError> {
     let relative = t & 1 << 13 != 0;
     let reg = register(t, byte, relative)?;
     let modifier = modifier_from_code(((t >> 24) & 0xF) as u8).map_err(|name| {
-        ReadError::at(byte, format!("source {t:#010x} has the modifier {name}, which ps_3_0 does not have"))
+        ReadError::at(
+            byte,
+            format!("source {t:#010x} has the modifier {name}, which ps_3_0 does not have"),
+        )
     })?;
     let s = (t >> 16) & 0xFF;
     let swizzle = Swizzle([0, 1, 2, 3].map(|i| ((s >> (2 * i)) & 3) as u8));

@@ -19,7 +19,7 @@ use super::{
 use crate::core::diag::{Diagnostic, Diagnostics};
 use crate::core::front::ast::{InstrAst, OperandAst, RegAst, Stmt};
 use crate::core::front::repeat::Expanded;
-use crate::core::ir::{Reg, SrcMod, Span};
+use crate::core::ir::{Reg, Span, SrcMod};
 use crate::core::isa::{Class, Compare, Opcode, Operand, USAGES};
 use crate::core::valid::lower::{resolve_reg, swizzle, write_mask};
 use std::collections::HashMap;
@@ -94,7 +94,12 @@ pub fn assemble(stmts: &[Stmt], expanded: &[Expanded]) -> Result<Module, Diagnos
     let mut token = 1u32;
     for (n, e) in expanded.iter().enumerate() {
         let kind = match &stmts[e.stmt] {
-            Stmt::Version { major: 3, minor: 0, text, .. } if n == 0 && text.to_ascii_lowercase().starts_with("ps") => continue,
+            Stmt::Version {
+                major: 3,
+                minor: 0,
+                text,
+                ..
+            } if n == 0 && text.to_ascii_lowercase().starts_with("ps") => continue,
             Stmt::Version { text, span, .. } => {
                 diags.push(version_error(text, *span, n == 0));
                 continue;
@@ -128,7 +133,10 @@ pub fn assemble(stmts: &[Stmt], expanded: &[Expanded]) -> Result<Module, Diagnos
         token = token.saturating_add(1 + len);
     }
     if expanded.is_empty() {
-        diags.push(Diagnostic::error(Span::default(), "nothing to assemble: no version line"));
+        diags.push(Diagnostic::error(
+            Span::default(),
+            "nothing to assemble: no version line",
+        ));
     }
     match diags.has_errors() {
         true => Err(diags),
@@ -141,7 +149,8 @@ fn version_error(text: &str, span: Span, first: bool) -> Diagnostic {
         Diagnostic::error(span, format!("`{text}`: ps30 writes ps_3_0 only"))
             .with_label("not ps_3_0")
     } else {
-        Diagnostic::error(span, "a second version line").with_label("the version token comes once, first")
+        Diagnostic::error(span, "a second version line")
+            .with_label("the version token comes once, first")
     }
 }
 
@@ -180,18 +189,31 @@ fn suffixes(ast: &InstrAst, mut kind: impl FnMut(&str, Span) -> R<()>) -> R<(u8,
 
 /// An arithmetic, texture or flow-control instruction.
 fn operation(ast: &InstrAst) -> R<Instr> {
-    let (result, compare) = suffixes(ast, |s, span| Err(cannot(span, format!("`_{s}` is not a ps_3_0 modifier"))))?;
+    let (result, compare) = suffixes(ast, |s, span| {
+        Err(cannot(span, format!("`_{s}` is not a ps_3_0 modifier")))
+    })?;
     let op = Opcode::from_mnemonic(&ast.base, compare.is_some())
         .filter(|op| op.class() != Class::Declaration)
         .ok_or_else(|| cannot(ast.base_span, format!("unknown instruction `{}`", ast.base)))?;
     let row = op.info();
     if compare.is_some() != row.comparison {
-        return Err(cannot(ast.base_span, format!("`{}` with a comparison suffix it does not take, or without one it needs", row.mnemonic)));
+        return Err(cannot(
+            ast.base_span,
+            format!(
+                "`{}` with a comparison suffix it does not take, or without one it needs",
+                row.mnemonic
+            ),
+        ));
     }
     if ast.operands.len() != row.operands.len() {
         return Err(cannot(
             ast.span,
-            format!("`{}` has {} operands, not {}", row.mnemonic, row.operands.len(), ast.operands.len()),
+            format!(
+                "`{}` has {} operands, not {}",
+                row.mnemonic,
+                row.operands.len(),
+                ast.operands.len()
+            ),
         ));
     }
     let mut instr = Instr {
@@ -204,15 +226,26 @@ fn operation(ast: &InstrAst) -> R<Instr> {
     };
     for (kind, operand) in row.operands.iter().zip(&ast.operands) {
         let OperandAst::Reg(reg) = operand else {
-            return Err(cannot(operand.span(), "a literal where the instruction takes a register"));
+            return Err(cannot(
+                operand.span(),
+                "a literal where the instruction takes a register",
+            ));
         };
         match kind {
-            Operand::Dst | Operand::PredDst | Operand::KillSrc => instr.dst = Some(dest(reg, result)?),
+            Operand::Dst | Operand::PredDst | Operand::KillSrc => {
+                instr.dst = Some(dest(reg, result)?)
+            }
             _ => instr.src.push(source(reg)?),
         }
     }
     if result != 0 && instr.dst.is_none() {
-        return Err(cannot(ast.base_span, format!("`{}` has no destination to carry its result modifier", row.mnemonic)));
+        return Err(cannot(
+            ast.base_span,
+            format!(
+                "`{}` has no destination to carry its result modifier",
+                row.mnemonic
+            ),
+        ));
     }
     Ok(instr)
 }
@@ -241,13 +274,23 @@ fn declaration(ast: &InstrAst) -> R<Instr> {
             };
             match (USAGES.iter().position(|u| *u == name), n) {
                 (Some(code), Some(n)) => (usage, index) = (code as u8, n),
-                _ => return Err(cannot(span, format!("`_{s}` is not a declaration usage (index 0 to 15) or sampler type"))),
+                _ => {
+                    return Err(cannot(
+                        span,
+                        format!(
+                            "`_{s}` is not a declaration usage (index 0 to 15) or sampler type"
+                        ),
+                    ))
+                }
             }
         }
         Ok(())
     })?;
     if let Some(c) = compare {
-        return Err(cannot(ast.base_span, format!("`dcl` with the comparison `_{}`", c.suffix())));
+        return Err(cannot(
+            ast.base_span,
+            format!("`dcl` with the comparison `_{}`", c.suffix()),
+        ));
     }
     let [OperandAst::Reg(reg)] = ast.operands.as_slice() else {
         return Err(cannot(ast.span, "a declaration names one register"));
@@ -268,17 +311,25 @@ fn declaration(ast: &InstrAst) -> R<Instr> {
 
 /// `def`, `defi`, `defb`.
 fn definition(ast: &InstrAst) -> R<Instr> {
-    let (result, compare) = suffixes(ast, |s, span| Err(cannot(span, format!("`_{s}` on a definition"))))?;
+    let (result, compare) = suffixes(ast, |s, span| {
+        Err(cannot(span, format!("`_{s}` on a definition")))
+    })?;
     let (op, values) = match ast.base.as_str() {
         "def" => (Opcode::Def, 4),
         "defi" => (Opcode::DefI, 4),
         _ => (Opcode::DefB, 1),
     };
     if compare.is_some() || ast.operands.len() != values + 1 {
-        return Err(cannot(ast.span, format!("`{}` is a register and {values} values", ast.base)));
+        return Err(cannot(
+            ast.span,
+            format!("`{}` is a register and {values} values", ast.base),
+        ));
     }
     let OperandAst::Reg(reg) = &ast.operands[0] else {
-        return Err(cannot(ast.operands[0].span(), "the defined register comes first"));
+        return Err(cannot(
+            ast.operands[0].span(),
+            "the defined register comes first",
+        ));
     };
     let dst = dest(reg, result)?;
     let literal = &ast.operands[1..];
@@ -312,7 +363,12 @@ fn definition(ast: &InstrAst) -> R<Instr> {
 /// A literal as its token: a float rounded to single precision as
 /// validation rounds it, or a 32-bit integer.
 fn number(operand: &OperandAst, integer: bool) -> R<u32> {
-    let OperandAst::Number { value, integer: written_int, span } = *operand else {
+    let OperandAst::Number {
+        value,
+        integer: written_int,
+        span,
+    } = *operand
+    else {
         return Err(cannot(operand.span(), "a number is expected here"));
     };
     if integer {
@@ -331,7 +387,10 @@ fn number(operand: &OperandAst, integer: bool) -> R<u32> {
 /// A register in destination format.
 fn dest(reg: &RegAst, result: u8) -> R<Dest> {
     if reg.negate || reg.not || reg.abs || reg.relative.is_some() {
-        return Err(cannot(reg.span, "a destination takes no `-`, `!`, `_abs` or `[aL]`"));
+        return Err(cannot(
+            reg.span,
+            "a destination takes no `-`, `!`, `_abs` or `[aL]`",
+        ));
     }
     Ok(Dest {
         reg: resolve_reg(reg)?,
@@ -360,13 +419,19 @@ fn source(reg: &RegAst) -> R<Source> {
             let numbered = base.file.info().numbered;
             let index = (base.index as i64).saturating_add(rel.offset);
             if (!numbered && rel.offset != 0) || index > 0x7ff {
-                return Err(cannot(rel.span, "the register number does not fit the 11 bits of a token"));
+                return Err(cannot(
+                    rel.span,
+                    "the register number does not fit the 11 bits of a token",
+                ));
             }
             (index as u32, true)
         }
     };
     Ok(Source {
-        reg: Reg { file: base.file, index },
+        reg: Reg {
+            file: base.file,
+            index,
+        },
         relative,
         swizzle: swizzle(reg)?,
         modifier,

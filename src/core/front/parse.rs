@@ -86,7 +86,10 @@ pub const MAX_COMMENT_TOKENS: usize = 0x7fff;
 
 /// A `//#comment` or `//#+` line (trimmed, starting at `start`): whether it
 /// continues a block, its tokens and its span. `None` for any other line.
-fn comment_block_line(line: &str, start: usize) -> Option<Result<(bool, Vec<u32>, Span), Diagnostic>> {
+fn comment_block_line(
+    line: &str,
+    start: usize,
+) -> Option<Result<(bool, Vec<u32>, Span), Diagnostic>> {
     let (more, rest) = if let Some(rest) = line.strip_prefix(COMMENT_BLOCK) {
         (false, rest)
     } else {

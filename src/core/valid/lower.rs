@@ -168,7 +168,10 @@ fn lower_instruction(ast: &InstrAst, origin: &Origin) -> R<Instruction> {
     if pp && !has_dst {
         return Err(Diagnostic::error(
             suffix_span("pp"),
-            format!("`_pp` is not allowed on `{}`: it has no destination", info.mnemonic),
+            format!(
+                "`_pp` is not allowed on `{}`: it has no destination",
+                info.mnemonic
+            ),
         )
         .with_label("nothing to write at partial precision"));
     }

@@ -31,10 +31,10 @@
 //! second-order terms is applied explicitly where the sums are formed.
 
 use crate::core::cost::{self, Environment, Profile, Range};
+use crate::core::diag::SourceFile;
 use crate::core::emu::{self, Address, Constants, Draw, Filter, LinearInput, SamplerState};
 use crate::core::image::{HdrImage, RenderTarget, TargetFormat, Texture};
 use crate::core::isa::Opcode;
-use crate::core::diag::SourceFile;
 use crate::core::load::{self, Options};
 pub mod reference;
 

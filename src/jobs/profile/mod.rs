@@ -233,8 +233,8 @@ pub fn profile_file(file: SourceFile, setup: &Setup) -> Result<ProfileRun, Strin
     for (k, v) in &setup.defines {
         opts.defines.insert(k.clone(), *v);
     }
-    let loaded = load::load(file, &opts)
-        .map_err(|e| format!("{}\n{e}", e.diagnostics.render(&e.file)))?;
+    let loaded =
+        load::load(file, &opts).map_err(|e| format!("{}\n{e}", e.diagnostics.render(&e.file)))?;
     let compiled = emu::compile(&loaded.shader).map_err(|e| e.to_string())?;
     let mut env = Environment::default();
     for (i, v) in setup.constants.int.iter().enumerate() {
@@ -258,8 +258,14 @@ pub fn profile_file(file: SourceFile, setup: &Setup) -> Result<ProfileRun, Strin
         Input::GBuffer(w, h) => {
             scene =
                 crate::jobs::scenes::lights::Scene::synthetic(*w, *h).map_err(|e| e.to_string())?;
-            crate::jobs::scenes::lights::Scene::check_constants(loaded.shader.program())
-                .map_err(|e| format!("{}: not a light-model shader for this scene: {e}", loaded.file.name))?;
+            crate::jobs::scenes::lights::Scene::check_constants(loaded.shader.program()).map_err(
+                |e| {
+                    format!(
+                        "{}: not a light-model shader for this scene: {e}",
+                        loaded.file.name
+                    )
+                },
+            )?;
             let mut draw = scene.draw();
             draw.record_lod = true;
             // The command line's constants, except c4, which the scene sets.
