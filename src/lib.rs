@@ -1,11 +1,14 @@
 //! # ps30 — Direct3D 9 pixel shader 3.0 assembly you can parse, measure, run and generate
 //!
-//! ps30 reads ps_3_0 assembly (with a real `REPEAT_BLOCK` macro), checks it
-//! against the ps_3_0 rules, counts its instruction slots and executed
-//! instructions against the 512 / 65,535 budgets, runs it on HDR images and
-//! cross-checks the result against a CPU reference.
+//! ps30 reads ps_3_0 assembly (with a real `REPEAT_BLOCK` macro) and
+//! compiled ps_3_0 bytecode, checks it against the ps_3_0 rules, counts its
+//! instruction slots and executed instructions against the 512 / 65,535
+//! budgets, runs it on HDR images and cross-checks the result against a CPU
+//! reference; it writes bytecode back exactly as Microsoft's assembler does.
 //!
 //! ```text
+//! bytecode ──read──▶ tokens ──listing──┐            (and back: AST ──write──▶ tokens)
+//!                                      ▼
 //! asm text ──parse──▶ AST (spans) ──expand REPEAT_BLOCK──▶ AST ──validate──▶ Shader (Program + Info)
 //!                                                                              │
 //!                         ┌────────────────────┬────────────────────────────────┤
@@ -22,8 +25,8 @@
 //! at the top of the repository draws the whole map):
 //!
 //! * [`core`](mod@core) — the stages every job shares: the instruction table
-//!   and IR, the front end and printer, validation, the cost model, the
-//!   emulator and images;
+//!   and IR, the front end and printer, bytecode in and out, validation, the
+//!   cost model, the emulator and images;
 //! * [`jobs`] — what ps30 does with them: the luminance pipeline with its
 //!   reference, tone mapping, profiling, the generator and planner, scenes,
 //!   and the article's claims;

@@ -1,7 +1,10 @@
 //! The nom parser: assembly text → [`Stmt`]s with byte spans.
 //!
 //! ps_3_0 assembly is line oriented: one statement per line, comments start
-//! with `//` or `;`. Each line is read by a small recursive-descent reader
+//! with `//` or `;`. One kind of comment line is read: `//#comment` (and its
+//! `//#+` continuation lines) holds the tokens of a comment block of a
+//! compiled shader, in hexadecimal, so that a listing keeps the constant
+//! table and other blocks byte for byte (other assemblers skip the lines). Each line is read by a small recursive-descent reader
 //! (`Cursor`) whose tokens are nom parsers; the reader turns a failed token
 //! into a diagnostic that points at the exact column and says what was
 //! expected. Parsing never stops at the first bad line: every line is read,
