@@ -29,7 +29,7 @@
 //!   cost model, the emulator and images;
 //! * [`jobs`] — what ps30 does with them: the luminance pipeline with its
 //!   reference, tone mapping, profiling, the generator and planner, scenes,
-//!   and the article's claims;
+//!   the article's claims, and the draws of the conformance corpus;
 //! * [`present`] — text, JSON, Markdown pages and figures of those results.
 //!
 //! The command line (`src/main.rs` and `src/cli/`) sits on top and is not

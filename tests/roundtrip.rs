@@ -796,7 +796,13 @@ fn program_strategy() -> impl Strategy<Value = Program> {
                             index,
                         },
                         usage: USAGES[usage].to_string(),
-                        usage_index,
+                        // position0 is not a pixel shader input (Windows'
+                        // runtime refuses it; ps30 too).
+                        usage_index: if USAGES[usage] == "position" {
+                            usage_index.max(1)
+                        } else {
+                            usage_index
+                        },
                         mask,
                         centroid,
                         pp,

@@ -11,8 +11,11 @@
 //!    │                   ▲             ▲            │
 //!    └───────────────────┴─────────────┘            └──▶ luminance
 //! ```
+//!
+//! [`conformance`] (the draws of the conformance corpus) uses no other job.
 
 pub mod bundled;
+pub mod conformance;
 pub mod gen;
 pub mod luminance;
 pub mod profile;

@@ -148,9 +148,9 @@ impl<'c, 'a> Worker<'c, 'a> {
                 rows[row as usize + c] = [value[c]; LANES];
             }
         }
-        // vFace: +1 (front face) in every component.
+        // vFace: the draw's facing in every component.
         for c in 0..4 {
-            rows[layout.face as usize + c] = [1.0; LANES];
+            rows[layout.face as usize + c] = [ctx.face; LANES];
         }
         Worker {
             ctx,

@@ -292,6 +292,34 @@ pub struct Draw<'a> {
     /// every execution costs about 9% of the instructions of a texture-bound
     /// shader such as the luminance pass. Divergence counts are always kept.
     pub record_lod: bool,
+    /// Which side of the primitive the draw shows: the sign of `vFace`.
+    pub face: Face,
+}
+
+/// The facing of the primitive a draw rasterises, as `vFace` reports it.
+///
+/// Microsoft's ps_3_0 register page: vFace "will eventually contain the
+/// primitive area", but in ps_3_0 only its sign is valid — negative for a
+/// back face (counter-clockwise on screen), positive otherwise. The
+/// emulator gives +1 or −1 in every component; anything that depends on
+/// more than the sign is undefined in D3D9.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Face {
+    /// Clockwise on screen (D3D9's front face): vFace = +1.
+    #[default]
+    Front,
+    /// Counter-clockwise on screen: vFace = −1.
+    Back,
+}
+
+impl Face {
+    /// The value every component of `vFace` holds.
+    pub fn value(self) -> f32 {
+        match self {
+            Face::Front => 1.0,
+            Face::Back => -1.0,
+        }
+    }
 }
 
 impl<'a> Draw<'a> {
@@ -305,6 +333,7 @@ impl<'a> Draw<'a> {
             samplers: Vec::new(),
             limits: EmuLimits::default(),
             record_lod: false,
+            face: Face::Front,
         }
     }
 }
@@ -536,6 +565,8 @@ pub(crate) struct RunCtx<'c, 'a> {
     pub quads: u64,
     pub cap: u64,
     pub record_lod: bool,
+    /// The value of every component of `vFace`.
+    pub face: f32,
 }
 
 impl<'c, 'a> RunCtx<'c, 'a> {
@@ -658,6 +689,7 @@ impl<'c, 'a> RunCtx<'c, 'a> {
             quads: quads_x * h.div_ceil(2),
             cap: draw.limits.max_executed_per_pixel,
             record_lod: draw.record_lod,
+            face: draw.face.value(),
         })
     }
 

@@ -382,6 +382,30 @@ fn inputs_vpos_and_vface() {
 }
 
 #[test]
+fn vface_holds_the_sign_of_the_draws_face() {
+    // Every component is ±1; `cmp` (a ≥ 0) and `if_lt` see the sign.
+    let text = "def c0, 0, 1, 0, 0
+         def c1, 1, 0, 0, 0
+         dcl vFace
+         cmp r0, vFace, c0, c1
+         mov r0.w, vFace.y
+         if_lt vFace, c0.x
+           mov r0.z, c1.x
+         endif
+         mov oC0, r0";
+    for (face, want) in [
+        (Face::Front, [0.0, 1.0, 0.0, 1.0]),
+        (Face::Back, [1.0, 0.0, 1.0, -1.0]),
+    ] {
+        let mut d = Draw::new(2, 2);
+        d.face = face;
+        let out = run_text(text, &d);
+        assert_eq!(out.color[0].as_ref().unwrap(), &vec![want; 4], "{face:?}");
+    }
+    assert_eq!(Draw::new(1, 1).face, Face::Front);
+}
+
+#[test]
 fn application_constants_and_def_override() {
     let text = "def c1, 5, 5, 5, 5
          add oC0, c0, c1";

@@ -919,6 +919,19 @@ fn lower_dcl(ast: &InstrAst, origin: &Origin) -> R<Lowered> {
                 )
                 .with_label("0 … 15"));
             }
+            // Not in Microsoft's dcl_usage page, but Windows' runtime
+            // refuses it: Wine's dlls/d3d9/tests/visual.c,
+            // test_position_index, expects D3DERR_INVALIDCALL from
+            // CreatePixelShader for `dcl_position0 v0` and accepts
+            // `dcl_position1 v0`.
+            if name == "position" && usage_index == 0 {
+                return Err(Diagnostic::error(
+                    span,
+                    "position0 cannot be a pixel shader input",
+                )
+                .with_label("Windows' runtime refuses this declaration")
+                .with_help("the pixel's position is vPos; a copy of the vertex position needs another usage, such as position1 or texcoord"));
+            }
             Ok(Lowered::Input(InputDecl {
                 reg,
                 usage: name.to_string(),

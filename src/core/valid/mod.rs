@@ -267,14 +267,23 @@ fn check_program(p: &Program, diags: &mut Diagnostics, file: &SourceFile) -> Inf
                 }
                 _ => {}
             }
+            // Microsoft's ps_3_0 register page allows vFace only as the
+            // condition of setp_comp, if_comp and break_comp, but Windows'
+            // runtime creates shaders that read it elsewhere (Wine's
+            // dlls/d3d9/tests/visual.c, vface_register_test: `cmp r0,
+            // vFace, c0, r1`, created and drawn on Windows drivers). So a
+            // warning, not an error: only the sign is defined either way.
             if s.reg.file == RegFile::Face
                 && !matches!(ins.op, Opcode::Setp | Opcode::Ifc | Opcode::BreakC)
             {
-                diags.push(err(Diagnostic::error(
+                diags.push(err(Diagnostic::warning(
                     span,
-                    "vFace may only be compared (setp, if_comp, break_comp)",
+                    "vFace is documented only as a comparison operand (setp, if_comp, break_comp)",
                 )
-                .with_label("vFace used as a value")));
+                .with_label("vFace used as a value")
+                .with_note(
+                    "Windows' runtime accepts it; only its sign is defined (negative: back face)",
+                )));
             }
             if s.reg.file == RegFile::Const {
                 let abs = matches!(s.modifier, SrcMod::Abs | SrcMod::NegAbs);
