@@ -32,7 +32,12 @@ fuzz_target!(|data: &[u8]| {
     };
     let file = load::source_file("fuzz.fxo", data.to_vec(), &options).expect("it read once");
     if let Ok(loaded) = load::load(file, &options) {
-        if let Ok(a) = analyse(&loaded.shader, &loaded.file, &Environment::default(), &Profile::ps_3_0()) {
+        if let Ok(a) = analyse(
+            &loaded.shader,
+            &loaded.file,
+            &Environment::default(),
+            &Profile::ps_3_0(),
+        ) {
             assert!(a.executed.min <= a.executed.max);
         }
     }
