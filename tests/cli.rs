@@ -718,7 +718,7 @@ fn asm(dir: &std::path::Path, args: &[&str], name: &str) -> std::path::PathBuf {
 }
 
 fn json(o: &Output) -> serde_json::Value {
-    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(o));
     serde_json::from_slice(&o.stdout).unwrap()
 }
 

@@ -36,7 +36,7 @@ pub fn parse(text: &str) -> (Vec<Stmt>, Diagnostics) {
         let lead = raw.len() - raw.trim_start().len();
         if let Some(block) = comment_block_line(raw.trim(), line_start + lead) {
             match block {
-                Ok((more, tokens, span)) => {
+                Ok(BlockLine { more, tokens, span }) => {
                     let extended = extend_comment_block(&mut stmts, more, in_block, tokens, span);
                     in_block = extended.is_ok();
                     if let Err(d) = extended {
@@ -87,12 +87,17 @@ pub const COMMENT_MORE: &str = "//#+";
 /// Most tokens one comment block holds: its length field has 15 bits.
 pub const MAX_COMMENT_TOKENS: usize = 0x7fff;
 
-/// A `//#comment` or `//#+` line (trimmed, starting at `start`): whether it
-/// continues a block, its tokens and its span. `None` for any other line.
-fn comment_block_line(
-    line: &str,
-    start: usize,
-) -> Option<Result<(bool, Vec<u32>, Span), Diagnostic>> {
+/// One `//#comment` or `//#+` line.
+struct BlockLine {
+    /// A `//#+` line: it continues the block above.
+    more: bool,
+    tokens: Vec<u32>,
+    span: Span,
+}
+
+/// A `//#comment` or `//#+` line (trimmed, starting at `start`); `None`
+/// for any other line.
+fn comment_block_line(line: &str, start: usize) -> Option<Result<BlockLine, Diagnostic>> {
     let (more, rest) = if let Some(rest) = line.strip_prefix(COMMENT_BLOCK) {
         (false, rest)
     } else {
@@ -126,7 +131,7 @@ fn comment_block_line(
             }
         }
     }
-    Some(Ok((more, tokens, span)))
+    Some(Ok(BlockLine { more, tokens, span }))
 }
 
 /// Starts a comment block (`more` false), or adds a `//#+` line to the
