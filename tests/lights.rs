@@ -160,6 +160,7 @@ fn profile_reports_costs_and_findings() {
         constants: Default::default(),
         bins: 12,
         threads: Some(1),
+        limits: Default::default(),
     };
     // The tiny map is not what --gbuffer draws; check the synthetic one.
     let r = profile::profile(

@@ -2,7 +2,7 @@
 //! validated, then written atomically, exactly as Microsoft's assembler
 //! would write it.
 
-use super::args::SourceArgs;
+use super::args::{InputArgs, SourceArgs};
 use super::io::{check_output_path, color_stderr, print_bytes, print_json, report, shader_file};
 use super::ui::Ui;
 use super::{BadInput, Outcome};
@@ -18,6 +18,8 @@ pub struct Args {
     file: String,
     #[command(flatten)]
     source: SourceArgs,
+    #[command(flatten)]
+    input: InputArgs,
     /// Where to write the bytecode (atomically); `-` writes it to standard output.
     #[arg(short, long, value_name = "FILE")]
     output: String,
@@ -37,14 +39,12 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         return Err(BadInput("--json and -o - both want standard output".into()));
     }
     if !to_stdout {
-        check_output_path(Path::new(&args.output))?;
+        check_output_path(Path::new(&args.output), &[Path::new(&args.file)])?;
     }
     let options = args.source.options();
-    let file = shader_file(&args.file, &options)?;
+    let file = shader_file(&args.file, &options, args.input.max_input_bytes)?;
     let (loaded, tokens) = load::assemble(file, &options).map_err(|e| report(&e))?;
-    for w in &loaded.warnings.items {
-        w.emit(&loaded.file, color_stderr());
-    }
+    loaded.warnings.emit(&loaded.file, color_stderr());
     let bytes = to_bytes(&tokens);
     if to_stdout {
         print_bytes(&bytes)?;

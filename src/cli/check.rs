@@ -1,6 +1,6 @@
 //! `ps30 check`: slots and executed instructions against the limits.
 
-use super::args::{ConstantArgs, LimitArgs, Resolved, SourceArgs};
+use super::args::{ConstantArgs, InputArgs, LimitArgs, Resolved, SourceArgs};
 use super::io::{load_file, print_json, say};
 use super::ui::Ui;
 use super::Outcome;
@@ -19,13 +19,19 @@ pub struct Args {
     constants: ConstantArgs,
     #[command(flatten)]
     limits: LimitArgs,
+    #[command(flatten)]
+    input: InputArgs,
     /// Print JSON instead of text.
     #[arg(long)]
     json: bool,
 }
 
 pub fn run(args: Args, ui: &Ui) -> super::Result {
-    let loaded = load_file(&args.file, &args.source.options())?;
+    let loaded = load_file(
+        &args.file,
+        &args.source.options(),
+        args.input.max_input_bytes,
+    )?;
     let given = Resolved::new(
         &[],
         &args.constants.ints,

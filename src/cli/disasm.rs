@@ -1,7 +1,7 @@
 //! `ps30 disasm`: a compiled shader as an assembly listing in the style of
 //! fxc's, which `ps30 asm` turns back into the same tokens.
 
-use super::args::SourceArgs;
+use super::args::{InputArgs, SourceArgs};
 use super::io::{print, print_json, read_input, report};
 use super::ui::Ui;
 use super::{BadInput, Outcome};
@@ -15,6 +15,8 @@ pub struct Args {
     file: String,
     #[command(flatten)]
     source: SourceArgs,
+    #[command(flatten)]
+    input: InputArgs,
     /// Print JSON (constant table, comment blocks, instructions with their offsets, listing).
     #[arg(long)]
     json: bool,
@@ -24,7 +26,7 @@ pub fn run(args: Args, _ui: &Ui) -> super::Result {
     let options = args.source.options();
     let (name, mut bytes) = match ps30::jobs::bundled::listing(&args.file) {
         Some((name, text)) => (name.to_string(), text.as_bytes().to_vec()),
-        None => read_input(&args.file)?,
+        None => read_input(&args.file, args.input.max_input_bytes)?,
     };
     if !bytecode::is_bytecode(&bytes) {
         // Assembly: what ps30 asm would write.

@@ -1,11 +1,11 @@
 //! `ps30 expand`: the shader as plain assembly with every macro expanded.
 
-use super::args::SourceArgs;
-use super::io::{load_file, print, print_json};
+use super::args::{InputArgs, SourceArgs};
+use super::io::{check_output_path, load_file, print, print_json};
 use super::ui::Ui;
 use super::{BadInput, Outcome};
 use ps30::core::front::print::write_program;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 #[derive(clap::Args)]
 pub struct Args {
@@ -13,6 +13,8 @@ pub struct Args {
     file: String,
     #[command(flatten)]
     source: SourceArgs,
+    #[command(flatten)]
+    input: InputArgs,
     /// Write to this file (atomically) instead of stdout.
     #[arg(short, long)]
     output: Option<PathBuf>,
@@ -22,7 +24,14 @@ pub struct Args {
 }
 
 pub fn run(args: Args, _ui: &Ui) -> super::Result {
-    let loaded = load_file(&args.file, &args.source.options())?;
+    if let Some(path) = &args.output {
+        check_output_path(path, &[Path::new(&args.file)])?;
+    }
+    let loaded = load_file(
+        &args.file,
+        &args.source.options(),
+        args.input.max_input_bytes,
+    )?;
     let text = format!(
         "// expanded from {} by ps30 expand: {} instruction slots\n{}",
         loaded.file.name,

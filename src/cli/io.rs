@@ -51,44 +51,52 @@ pub fn print_json(v: &impl serde::Serialize) -> Result<(), BadInput> {
 pub const STDIN_NAME: &str = "<stdin>";
 
 /// The bytes of a shader argument, with the name messages use: a file, or
-/// standard input for `-`.
-pub fn read_input(spec: &str) -> Result<(String, Vec<u8>), BadInput> {
+/// standard input for `-`, at most `max_bytes` long (`--max-input-bytes`): a
+/// longer input (or `/dev/zero`) is refused after reading one byte past the
+/// cap.
+pub fn read_input(spec: &str, max_bytes: u64) -> Result<(String, Vec<u8>), BadInput> {
+    let name = if spec == "-" { STDIN_NAME } else { spec };
+    let failed = |e: std::io::Error| BadInput(format!("{name}: {e}"));
+    let mut bytes = Vec::new();
+    let cap = max_bytes.saturating_add(1);
     if spec == "-" {
-        let mut bytes = Vec::new();
-        std::io::stdin()
-            .lock()
-            .read_to_end(&mut bytes)
-            .map_err(|e| BadInput(format!("{STDIN_NAME}: {e}")))?;
-        return Ok((STDIN_NAME.to_string(), bytes));
+        std::io::stdin().lock().take(cap).read_to_end(&mut bytes)
+    } else {
+        std::fs::File::open(spec).and_then(|f| f.take(cap).read_to_end(&mut bytes))
     }
-    let bytes = std::fs::read(spec).map_err(|e| BadInput(format!("{spec}: {e}")))?;
-    Ok((spec.to_string(), bytes))
+    .map_err(failed)?;
+    if bytes.len() as u64 > max_bytes {
+        return Err(BadInput(format!(
+            "{name}: larger than the cap of {} bytes for a shader (raise it with --max-input-bytes)",
+            ps30::core::numbers::thousands(max_bytes)
+        )));
+    }
+    Ok((name.to_string(), bytes))
 }
 
 /// A shader by bundled name, file path or `-` (standard input): assembly
 /// text or ps_3_0 bytecode, told apart by content, not by name.
-pub fn shader_file(spec: &str, options: &Options) -> Result<SourceFile, BadInput> {
+pub fn shader_file(spec: &str, options: &Options, max_bytes: u64) -> Result<SourceFile, BadInput> {
     if let Some((name, text)) = ps30::jobs::bundled::listing(spec) {
         return Ok(SourceFile::new(name, text));
     }
-    let (name, bytes) = read_input(spec)?;
+    let (name, bytes) = read_input(spec, max_bytes)?;
     Ok(load::source_file(&name, bytes, options)?)
 }
 
 /// A shader to run, as [`shader_file`] reads it.
-pub fn shader_source(spec: &str) -> Result<ShaderSource, BadInput> {
+pub fn shader_source(spec: &str, max_bytes: u64) -> Result<ShaderSource, BadInput> {
     Ok(ShaderSource::from_file(shader_file(
         spec,
         &Options::default(),
+        max_bytes,
     )?))
 }
 
 /// Prints a source error's diagnostics to stderr; the error is a one-line
 /// count (the diagnostics say the rest).
 pub fn report(e: &SourceError) -> BadInput {
-    for d in &e.diagnostics.items {
-        d.emit(&e.file, color_stderr());
-    }
+    e.diagnostics.emit(&e.file, color_stderr());
     let n = e.diagnostics.errors().count();
     BadInput(format!(
         "{}: {n} error{}",
@@ -99,34 +107,24 @@ pub fn report(e: &SourceError) -> BadInput {
 
 /// Loads a shader (see [`shader_file`]): warnings to stderr; on errors every
 /// diagnostic to stderr and a one-line summary as the error.
-pub fn load_file(spec: &str, options: &Options) -> Result<Loaded, BadInput> {
-    let file = shader_file(spec, options)?;
+pub fn load_file(spec: &str, options: &Options, max_bytes: u64) -> Result<Loaded, BadInput> {
+    let file = shader_file(spec, options, max_bytes)?;
     match load::load(file, options) {
         Ok(l) => {
-            for w in &l.warnings.items {
-                w.emit(&l.file, color_stderr());
-            }
+            l.warnings.emit(&l.file, color_stderr());
             Ok(l)
         }
         Err(e) => Err(report(&e)),
     }
 }
 
-/// Refuses an output path whose directory does not exist, before any work.
-pub fn check_output_path(path: &Path) -> Result<(), BadInput> {
-    let dir = path
-        .parent()
-        .filter(|d| !d.as_os_str().is_empty())
-        .unwrap_or(Path::new("."));
-    if !dir.is_dir() {
-        return Err(BadInput(format!(
-            "{}: the directory {} does not exist",
-            path.display(),
-            dir.display()
-        )));
-    }
-    if path.is_dir() {
-        return Err(BadInput(format!("{}: is a directory", path.display())));
-    }
-    Ok(())
+/// Refuses an output file before any work, by the rules of
+/// [`ps30::core::output`] (one of them: it is not one of `inputs`).
+pub fn check_output_path(path: &Path, inputs: &[&Path]) -> Result<(), BadInput> {
+    ps30::core::output::check(path, inputs).map_err(BadInput)
+}
+
+/// Refuses an output directory before any work, by the same rules.
+pub fn check_output_dir(dir: &Path) -> Result<(), BadInput> {
+    ps30::core::output::check_directory(dir).map_err(BadInput)
 }

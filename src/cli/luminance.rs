@@ -1,6 +1,6 @@
 //! `ps30 luminance`: both passes on an HDR image, cross-checked.
 
-use super::args::{parse_delta, parse_size, ExecArgs, FormatArg};
+use super::args::{parse_delta, parse_size, ExecArgs, FormatArg, InputArgs};
 use super::io::{print_json, say, shader_source};
 use super::ui::Ui;
 use super::Outcome;
@@ -37,6 +37,8 @@ pub struct Args {
     negative: NegativeArg,
     #[command(flatten)]
     exec: ExecArgs,
+    #[command(flatten)]
+    input: InputArgs,
 }
 
 /// Reference policy flag values.
@@ -59,14 +61,17 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         threads: args.exec.threads(),
         limits: args.exec.limits(),
     };
-    let (pass1, pass2) = (shader_source(&args.pass1)?, shader_source(&args.pass2)?);
+    let (pass1, pass2) = (
+        shader_source(&args.pass1, args.input.max_input_bytes)?,
+        shader_source(&args.pass2, args.input.max_input_bytes)?,
+    );
     let run = {
         let _spinner = ui.spinner("running both passes");
         match &args.last_column {
             Some(last) => luminance::run_with_last_column(
                 &img,
                 &pass1,
-                &shader_source(last)?,
+                &shader_source(last, args.input.max_input_bytes)?,
                 &pass2,
                 &settings,
             )?,

@@ -6,7 +6,9 @@
 //!
 //! Exit codes: 0 ok; 1 the check found a problem (a limit exceeded, a claim
 //! or cross-check that disagrees); 2 bad input or usage. A closed stdout
-//! (e.g. piping into `head`) counts as success.
+//! (e.g. piping into `head`) counts as success. Interrupted by SIGINT,
+//! SIGTERM or SIGHUP, the command removes its temporary output files and
+//! exits with 130.
 
 pub mod args;
 pub mod asm;
@@ -97,6 +99,22 @@ pub enum Command {
         after_help = "Exit codes: 0 a two-pass plan fits; 1 none does (a third pass would be needed, or\nnothing fits the profile); 2 bad input.\n\nExamples:\n  ps30 plan --frame 1280x1024\n  ps30 plan --frame 1920x1080 --max-slots 1024 --json"
     )]
     Plan(plan::Args),
+}
+
+/// Exit code of a run interrupted by a signal (128 + SIGINT, as shells
+/// report a Ctrl-C).
+pub const INTERRUPTED: i32 = 130;
+
+/// On SIGINT, SIGTERM or SIGHUP: remove the temporary files of outputs
+/// being written (nothing half-written stays behind) and exit with
+/// [`INTERRUPTED`].
+pub fn clean_up_on_interrupt() {
+    // Without a handler (one cannot be installed) the default action still
+    // ends the process; only its temporary files may stay.
+    let _ = ctrlc::set_handler(|| {
+        ps30::core::output::remove_temporaries();
+        std::process::exit(INTERRUPTED);
+    });
 }
 
 /// How a command ended.

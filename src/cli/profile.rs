@@ -4,13 +4,13 @@
 
 use super::args::{
     parse_bool_const, parse_define, parse_finite, parse_float4, parse_float_const, parse_int_const,
-    parse_size, AddressArg, ConstRef, FilterArg, MipFilterArg, Resolved,
+    parse_size, AddressArg, ConstRef, ExecArgs, FilterArg, InputArgs, MipFilterArg, Resolved,
 };
 use super::io::{color_stderr, print, print_json, shader_source};
 use super::ui::Ui;
 use super::{BadInput, Outcome};
 use ps30::core::emu::SamplerState;
-use ps30::core::image::{self, ImageLimits};
+use ps30::core::image;
 use ps30::core::load;
 use ps30::jobs::profile::{profile_file, Input, Setup};
 use ps30::present::profile::{text, to_json};
@@ -66,15 +66,10 @@ pub struct Args {
     /// Histogram bins.
     #[arg(long, default_value_t = 12, value_parser = clap::value_parser!(u64).range(1..=1000))]
     bins: u64,
-    /// Emulator threads (default: all cores).
-    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=256))]
-    threads: Option<u32>,
-    /// Refuse images with more pixels than this.
-    #[arg(long, default_value_t = 1 << 26)]
-    max_pixels: u64,
-    /// Print JSON instead of text.
-    #[arg(long)]
-    json: bool,
+    #[command(flatten)]
+    exec: ExecArgs,
+    #[command(flatten)]
+    input: InputArgs,
 }
 
 impl Args {
@@ -96,12 +91,7 @@ impl Args {
         Ok(match (self.gbuffer, &self.image, self.target) {
             (Some((w, h)), _, _) => Input::GBuffer(w, h),
             (None, Some(path), Some(target)) => Input::Image {
-                image: image::load(
-                    path,
-                    &ImageLimits {
-                        max_pixels: self.max_pixels,
-                    },
-                )?,
+                image: image::load(path, &self.exec.image_limits())?,
                 name: path.display().to_string(),
                 target,
                 sampler: self.sampler(),
@@ -119,7 +109,7 @@ impl Args {
 /// Validator warnings to stderr, the report to stdout; exit 1 when the run
 /// found a problem.
 pub fn run(args: Args, _ui: &Ui) -> super::Result {
-    let src = shader_source(&args.shader)?;
+    let src = shader_source(&args.shader, args.input.max_input_bytes)?;
     let setup = Setup {
         input: args.input()?,
         defines: args.define.clone(),
@@ -131,13 +121,12 @@ pub fn run(args: Args, _ui: &Ui) -> super::Result {
         )?
         .constants(),
         bins: args.bins as usize,
-        threads: args.threads.map(|t| t as usize),
+        threads: args.exec.threads(),
+        limits: args.exec.limits(),
     };
     let r = profile_file(src.file, &setup).map_err(BadInput)?;
-    for w in &r.warnings.items {
-        w.emit(&r.file, color_stderr());
-    }
-    if args.json {
+    r.warnings.emit(&r.file, color_stderr());
+    if args.exec.json {
         print_json(&to_json(&r))?;
     } else {
         print(&text(&r))?;

@@ -2,9 +2,9 @@
 
 use super::args::{
     parse_float4, parse_float_const, AddressArg, ConstRef, ConstantArgs, ExecArgs, FilterArg,
-    FormatArg, Resolved, SourceArgs,
+    FormatArg, InputArgs, Resolved, SourceArgs,
 };
-use super::io::{load_file, print_json, say};
+use super::io::{check_output_path, load_file, print_json, say};
 use super::ui::Ui;
 use super::Outcome;
 use ps30::core::emu::SamplerState;
@@ -13,7 +13,7 @@ use ps30::jobs::luminance::{run_pass, PassSetup};
 use ps30::present::constants::{table_json, table_text};
 use ps30::present::luminance::{pass_json, pass_text};
 use serde_json::Value;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 #[derive(clap::Args)]
 pub struct Args {
@@ -46,10 +46,19 @@ pub struct Args {
     output: Option<PathBuf>,
     #[command(flatten)]
     exec: ExecArgs,
+    #[command(flatten)]
+    input: InputArgs,
 }
 
 pub fn run(args: Args, ui: &Ui) -> super::Result {
-    let loaded = load_file(&args.shader, &args.source.options())?;
+    if let Some(path) = &args.output {
+        check_output_path(path, &[&args.image, Path::new(&args.shader)])?;
+    }
+    let loaded = load_file(
+        &args.shader,
+        &args.source.options(),
+        args.input.max_input_bytes,
+    )?;
     let img = image::load(&args.image, &args.exec.image_limits())?;
     let address = args.address.into();
     let setup = PassSetup {

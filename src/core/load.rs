@@ -142,20 +142,17 @@ fn stages(file: SourceFile, options: &Options) -> Result<Stages, SourceError> {
     let (stmts, mut diags) = parse::parse(&file.text);
     if let Some(d) = other_version(&stmts) {
         // The rest would be judged by the wrong rules: the version says it all.
-        return fail(file, Diagnostics { items: vec![d] });
+        return fail(file, only(d));
     }
     if diags.has_errors() {
         // Still report macro problems of the lines that did parse.
         if let Err(more) = repeat::expand(&stmts, &options.defines, options.max_expanded) {
-            diags.items.extend(more.items);
+            diags.extend(more);
         }
         // And the checks of each line that did parse on its own.
         for stmt in &stmts {
             if let ast::Stmt::Instr(instr) = stmt {
-                let origin = Origin {
-                    span: instr.span,
-                    repeats: Vec::new(),
-                };
+                let origin = Origin::at(instr.span);
                 if let Err(d) = crate::core::valid::lower::lower(instr, &origin) {
                     diags.push(d);
                 }
@@ -165,7 +162,7 @@ fn stages(file: SourceFile, options: &Options) -> Result<Stages, SourceError> {
     }
     let constants = match constant_table(&stmts) {
         Ok(t) => t,
-        Err(d) => return fail(file, Diagnostics { items: vec![d] }),
+        Err(d) => return fail(file, only(d)),
     };
     let expanded = match repeat::expand(&stmts, &options.defines, options.max_expanded) {
         Ok(e) => e,
@@ -187,6 +184,13 @@ fn stages(file: SourceFile, options: &Options) -> Result<Stages, SourceError> {
         }
         Err(d) => fail(file, d),
     }
+}
+
+/// One diagnostic as the list of a file.
+fn only(d: Diagnostic) -> Diagnostics {
+    let mut all = Diagnostics::default();
+    all.push(d);
+    all
 }
 
 /// A first statement that names another shader model (`ps_2_0`, `vs_3_0`).

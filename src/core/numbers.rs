@@ -18,12 +18,23 @@ pub fn thousands(v: u64) -> String {
     out
 }
 
-/// A range as `64,853` or `1,000–2,000`.
+/// A count as [`thousands`] spells it, or `more than 18,446,744,073,709,551,614`
+/// for a count that saturated: the cost model's arithmetic stops at
+/// `u64::MAX` instead of wrapping, so that value means "at least this".
+pub fn count(v: u64) -> String {
+    if v == u64::MAX {
+        format!("more than {}", thousands(u64::MAX - 1))
+    } else {
+        thousands(v)
+    }
+}
+
+/// A range as `64,853` or `1,000–2,000` (saturated ends as [`count`] says).
 pub fn range_text(r: Range) -> String {
     if r.is_exact() {
-        thousands(r.min)
+        count(r.min)
     } else {
-        format!("{}–{}", thousands(r.min), thousands(r.max))
+        format!("{}–{}", count(r.min), count(r.max))
     }
 }
 

@@ -10,6 +10,34 @@ use std::path::Path;
 /// Writes `rgb` (`width * height` pixels of 3 bytes, row-major, top row
 /// first, already sRGB-encoded) as a PNG file, atomically.
 pub fn write_png_rgb8(path: &Path, width: u32, height: u32, rgb: &[u8]) -> Result<(), ImageError> {
+    check_length(path, width, height, rgb)?;
+    write_atomically(path, "PNG", |w| {
+        PngEncoder::new(w).write_image(rgb, width, height, ExtendedColorType::Rgb8)?;
+        Ok(())
+    })
+}
+
+/// The PNG file [`write_png_rgb8`] writes, as bytes (for a
+/// [`crate::core::output::Batch`]); `path` is only named in errors.
+pub fn encode_png_rgb8(
+    path: &Path,
+    width: u32,
+    height: u32,
+    rgb: &[u8],
+) -> Result<Vec<u8>, ImageError> {
+    check_length(path, width, height, rgb)?;
+    let mut out = Vec::new();
+    PngEncoder::new(&mut out)
+        .write_image(rgb, width, height, ExtendedColorType::Rgb8)
+        .map_err(|e| ImageError::Encode {
+            path: path.to_path_buf(),
+            format: "PNG",
+            source: Box::new(e),
+        })?;
+    Ok(out)
+}
+
+fn check_length(path: &Path, width: u32, height: u32, rgb: &[u8]) -> Result<(), ImageError> {
     let expected = u64::from(width) * u64::from(height) * 3;
     if rgb.len() as u64 != expected {
         return Err(ImageError::DataLength {
@@ -19,10 +47,7 @@ pub fn write_png_rgb8(path: &Path, width: u32, height: u32, rgb: &[u8]) -> Resul
             found: rgb.len() as u64,
         });
     }
-    write_atomically(path, "PNG", |w| {
-        PngEncoder::new(w).write_image(rgb, width, height, ExtendedColorType::Rgb8)?;
-        Ok(())
-    })
+    Ok(())
 }
 
 #[cfg(test)]
@@ -64,7 +89,8 @@ mod tests {
         let dir = tempfile::tempdir().unwrap();
         let path = dir.path().join("missing/out.png");
         let err = write_png_rgb8(&path, 1, 1, &[1, 2, 3]).unwrap_err();
-        assert!(matches!(err, ImageError::Io { .. }), "{err}");
+        assert!(matches!(err, ImageError::Refused { .. }), "{err}");
+        assert!(err.to_string().contains("does not exist"), "{err}");
         assert!(!path.exists());
     }
 }

@@ -188,6 +188,8 @@ pub struct Setup {
     pub constants: Constants,
     pub bins: usize,
     pub threads: Option<usize>,
+    /// Bounds of every draw (and of the G-buffer's size).
+    pub limits: emu::EmuLimits,
 }
 
 /// The result of `ps30 profile`.
@@ -256,6 +258,15 @@ pub fn profile_file(file: SourceFile, setup: &Setup) -> Result<ProfileRun, Strin
     let chain;
     let (out, draw, input, models) = match &setup.input {
         Input::GBuffer(w, h) => {
+            let pixels = u64::from(*w) * u64::from(*h);
+            if pixels > setup.limits.max_target_pixels {
+                return Err(emu::EmuError::TargetTooLarge {
+                    width: *w,
+                    height: *h,
+                    limit: setup.limits.max_target_pixels,
+                }
+                .to_string());
+            }
             scene =
                 crate::jobs::scenes::lights::Scene::synthetic(*w, *h).map_err(|e| e.to_string())?;
             crate::jobs::scenes::lights::Scene::check_constants(loaded.shader.program()).map_err(
@@ -268,6 +279,7 @@ pub fn profile_file(file: SourceFile, setup: &Setup) -> Result<ProfileRun, Strin
             )?;
             let mut draw = scene.draw();
             draw.record_lod = true;
+            draw.limits = setup.limits;
             // The command line's constants, except c4, which the scene sets.
             let mut floats = setup.constants.float.clone();
             floats.resize(floats.len().max(5), [0.0; 4]);
@@ -315,6 +327,7 @@ pub fn profile_file(file: SourceFile, setup: &Setup) -> Result<ProfileRun, Strin
             }
             draw.constants = setup.constants.clone();
             draw.record_lod = true;
+            draw.limits = setup.limits;
             chain = if *mips {
                 Some(MipChain::build(image.as_texture(), None)?)
             } else {
