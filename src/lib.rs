@@ -5,6 +5,10 @@
 //! instruction slots and executed instructions against the 512 / 65,535
 //! budgets, runs it on HDR images and cross-checks the result against a CPU
 //! reference; it writes bytecode back exactly as Microsoft's assembler does.
+//! Draws meet in render targets of D3D9's formats through the output merger
+//! (blending, write masks, clears), so lights accumulate and mip chains
+//! reduce, as in the article's lighting phase and the alternatives it is
+//! measured against.
 //!
 //! ```text
 //! bytecode ──read──▶ tokens ──listing──┐            (and back: AST ──write──▶ tokens)
@@ -17,8 +21,10 @@
 //!                 (slots, executed,   64 lanes = 16 quads)
 //!                  loop breakdown)           │
 //!                                            ▼
-//!         images ──▶ render targets (R32F / A16B16G16R16F) ──▶ luminance pipeline ──▶ cross-check
-//!                                                                                 vs f64 reference
+//!         images ──▶ output merger ──▶ render targets (8-bit, half, single; mip chains)
+//!                                            │
+//!                                            ▼
+//!         draw lists, luminance passes, tone mapping, studies ──▶ cross-checks vs f64 references
 //! ```
 //!
 //! The crate is built in levels, and imports point one way (`ARCHITECTURE.md`
@@ -26,10 +32,12 @@
 //!
 //! * [`core`](mod@core) — the stages every job shares: the instruction table
 //!   and IR, the front end and printer, bytecode in and out, validation, the
-//!   cost model, the emulator and images;
+//!   cost model, the emulator, images and render targets, and the output
+//!   merger;
 //! * [`jobs`] — what ps30 does with them: the luminance pipeline with its
 //!   reference, tone mapping, profiling, the generator and planner, scenes,
-//!   the article's claims, and the draws of the conformance corpus;
+//!   draw lists, the studies of the alternatives, the article's claims, and
+//!   the draws of the conformance corpus;
 //! * [`present`] — text, JSON, Markdown pages and figures of those results.
 //!
 //! The command line (`src/main.rs` and `src/cli/`) sits on top and is not

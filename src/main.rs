@@ -26,6 +26,8 @@ fn main() -> ExitCode {
         Command::Luminance(args) => cli::luminance::run(args, &ui),
         Command::Tonemap(args) => cli::tonemap::run(args, &ui),
         Command::Profile(args) => cli::profile::run(args, &ui),
+        Command::Render(args) => cli::render::run(args, &ui),
+        Command::Study(args) => cli::study::run(args, &ui),
         Command::Verify(args) => cli::verify::run(args, &ui),
         Command::Unroll(args) => cli::unroll::run(args, &ui),
         Command::Plan(args) => cli::plan::run(args, &ui),

@@ -12,7 +12,7 @@ fn ps30(args: &[&str]) -> Output {
     bin::ps30(args, bin::repo())
 }
 
-const COMMANDS: [&str; 8] = [
+const COMMANDS: [&str; 10] = [
     "check",
     "expand",
     "asm",
@@ -20,6 +20,8 @@ const COMMANDS: [&str; 8] = [
     "run",
     "luminance",
     "tonemap",
+    "render",
+    "study",
     "verify",
 ];
 

@@ -8,7 +8,9 @@
 //! reads compiled shaders into a listing the front end reads like text, and
 //! writes the tokens back. The [`cost`]
 //! model and the [`emu`]lator take a validated shader; [`image`] reads and
-//! writes the pixels they work on. [`diag`] renders every stage's errors,
+//! writes the pixels they work on, in the render-target formats of D3D9, and
+//! [`merge`] is the output merger that puts a draw's colours into a target
+//! (blending, the colour write mask, clears). [`diag`] renders every stage's errors,
 //! [`numbers`] formats figures the same way everywhere, and [`output`] writes
 //! files atomically. Nothing here imports from `jobs` or `present`.
 
@@ -21,6 +23,7 @@ pub mod image;
 pub mod ir;
 pub mod isa;
 pub mod load;
+pub mod merge;
 pub mod numbers;
 pub mod output;
 pub mod valid;

@@ -42,11 +42,28 @@ pub const LIGHTS_SELECT: Bundled = bundled!("lights:select", "asm/lights/select.
 /// `asm/lights/select_texld.psh`: the same with texld, which ps30 flags.
 pub const LIGHTS_TEXLD: Bundled = bundled!("lights:texld", "asm/lights/select_texld.psh");
 
+/// `asm/lights/directional.psh`: the same light models with the light
+/// (direction, half vector, colour) set per draw, for drawing several lights.
+pub const LIGHTS_DIRECTIONAL: Bundled =
+    bundled!("lights:directional", "asm/lights/directional.psh");
+
+/// Log-luminance encoded into 8-bit alpha, for averaging by the mip chain
+/// (`asm/mip-luminance/`).
+pub const MIP_LUMINANCE_ENCODE: Bundled =
+    bundled!("mip-luminance:encode", "asm/mip-luminance/encode.psh");
+
+/// The log-lights comparison (`asm/log-lights/`): a light stored raw, the
+/// same light stored as exp2(−light), and the recovery −log2.
+pub const LOG_LIGHTS_LIGHT: Bundled = bundled!("log-lights:light", "asm/log-lights/light.psh");
+pub const LOG_LIGHTS_LOG: Bundled = bundled!("log-lights:log", "asm/log-lights/log.psh");
+pub const LOG_LIGHTS_RECOVER: Bundled =
+    bundled!("log-lights:recover", "asm/log-lights/recover.psh");
+
 /// The article's tone-mapping operator in ps_3_0 (`asm/tonemap/`).
 pub const TONEMAP_REINHARD: Bundled = bundled!("tonemap:reinhard", "asm/tonemap/reinhard.psh");
 
 /// Every bundled shader, in the order listings show them.
-pub const ALL: [Bundled; 9] = [
+pub const ALL: [Bundled; 14] = [
     ARTICLE_LOOP,
     ARTICLE_UNROLLED,
     ARTICLE_PASS2,
@@ -55,6 +72,11 @@ pub const ALL: [Bundled; 9] = [
     CORRECTED_PASS2,
     LIGHTS_SELECT,
     LIGHTS_TEXLD,
+    LIGHTS_DIRECTIONAL,
+    MIP_LUMINANCE_ENCODE,
+    LOG_LIGHTS_LIGHT,
+    LOG_LIGHTS_LOG,
+    LOG_LIGHTS_RECOVER,
     TONEMAP_REINHARD,
 ];
 

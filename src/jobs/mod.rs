@@ -6,11 +6,12 @@
 //! every job. Jobs import the core and [`bundled`]; a job may use another
 //! job only where the arrow below points (no cycles):
 //!
-//! ```text
-//! verify ──▶ gen ──▶ luminance ◀── tonemap      profile ──▶ scenes
-//!    │                   ▲             ▲            │
-//!    └───────────────────┴─────────────┘            └──▶ luminance
-//! ```
+//! * `verify` → `gen`, `luminance`, `tonemap`
+//! * `gen` → `luminance`, `studies` (the plan lists the mip-chain method)
+//! * `tonemap` → `luminance`
+//! * `profile` → `scenes`, `luminance`
+//! * `studies` → `render`, `luminance`, `tonemap`, `scenes`
+//! * `render` → `scenes` (its synthetic textures)
 //!
 //! [`conformance`] (the draws of the conformance corpus) uses no other job.
 
@@ -19,6 +20,8 @@ pub mod conformance;
 pub mod gen;
 pub mod luminance;
 pub mod profile;
+pub mod render;
 pub mod scenes;
+pub mod studies;
 pub mod tonemap;
 pub mod verify;

@@ -20,11 +20,13 @@ mod radiance;
 mod target;
 
 pub use error::{ForeignError, ImageError};
-pub use mip::{full_chain_levels, MipChain};
-pub use openexr::write_exr;
+pub use mip::{chain_weights, full_chain_levels, side_taps, MipChain, OddSides};
+pub use openexr::{encode_exr, write_exr};
 pub use pfm::write_pfm;
 pub use png::{encode_png_rgb8, write_png_rgb8};
-pub use target::{RenderTarget, TargetFormat, Texture};
+pub use target::{
+    half_from_f64, unorm8, unorm8_value, Encoding, RenderTarget, TargetFormat, Texture,
+};
 
 use std::fs::File;
 use std::io::{BufReader, BufWriter, Read, Seek};
