@@ -45,12 +45,12 @@
 //!
 //! ```
 //! use ps30::core::{cost, load};
-//! let src = "ps_3_0\ndefi i0, 128, 0, 0, 0\nrep i0\n  add r0, r0, r0\nendrep\nmov oC0, r0\n";
+//! let src = "ps_3_0\ndefi i0, 128, 0, 0, 0\nmov r0, c0\nrep i0\n  add r0, r0, r0\nendrep\nmov oC0, r0\n";
 //! let loaded = load::load_str("example.psh", src, &load::Options::default()).unwrap();
 //! let analysis = cost::analyse(&loaded.shader, &loaded.file, &cost::Environment::default(),
 //!                              &cost::Profile::ps_3_0()).unwrap();
-//! assert_eq!(analysis.slots, 7);                       // rep 3 + add 1 + endrep 2 + mov 1
-//! assert_eq!(analysis.executed.max, 128 * 6 + 1);      // (3 + 1 + 2) per iteration
+//! assert_eq!(analysis.slots, 8);                       // mov 1 + rep 3 + add 1 + endrep 2 + mov 1
+//! assert_eq!(analysis.executed.max, 1 + 128 * 6 + 1);  // (3 + 1 + 2) per iteration
 //! ```
 
 // Diagnostics are large on purpose (message, label, help, notes) and only

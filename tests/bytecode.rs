@@ -789,7 +789,7 @@ fn malformed_streams_are_refused_at_their_byte_without_panic_or_large_allocation
 #[test]
 fn every_truncation_and_every_changed_byte_is_refused_or_read_back_exactly() {
     let src = format!(
-        "ps_3_0\n{}dcl_texcoord0_centroid v0.xy\ndcl_2d s0\ndefi i0, 2, 0, 1, 0\ndef c5, 0.5, -0, 1e-20, 3\nloop aL, i0\n  add r0, r0, v[aL]\nendloop\nsetp_gt p0.x, r0.x, c5.x\n(!p0.x) texldl r1, r0, s0\ncall l3\nmov oC0, -r1_abs.wzyx\nret\nlabel l3\nret\n",
+        "ps_3_0\n{}dcl_texcoord0_centroid v0.xy\ndcl_texcoord1 v1\ndcl_2d s0\ndefi i0, 2, 0, 1, 0\ndef c5, 0.5, -0, 1e-20, 3\nmov r0, c5\nloop aL, i0\n  add r0, r0, v[aL]\nendloop\nsetp_gt p0.x, r0.x, c5.x\n(!p0.x) texldl r1, r0, s0\ncall l3\nmov oC0, -r1_abs.wzyx\nret\nlabel l3\nret\n",
         comment_lines(&sample_table())
     );
     let (_, tokens) = assemble("real.psh", src.as_bytes(), &Options::default());

@@ -199,7 +199,7 @@ fn many_diagnostics_are_reported_in_linear_time_and_capped() {
     write(
         d,
         "warnings.psh",
-        &format!("ps_3_0\ndcl_2d s0\ndcl_texcoord0 v0.xy\n{body}mov oC0, r0\n"),
+        &format!("ps_3_0\ndcl_2d s0\ndcl_texcoord0 v0.xy\nmov r1, c0\n{body}mov oC0, r0\n"),
     );
     expect(
         d,

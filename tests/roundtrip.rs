@@ -201,6 +201,8 @@ mov_sat r1.xyz, -c1.wzyx
 mov_pp r2.xw, v0.xyxx
 MOV R3, C0.RGBA
 mov r3.rg, c0.bbba
+mov r1.w, c1.x
+mov r2.yz, c1
 add r0, r0, r1
 sub r0.x, -r1_abs.y, v1.w
 mad_sat_pp r3, r0.xxyy, c0.wzyx, -r2_abs
@@ -266,8 +268,18 @@ defb b0, true
 defb b1, false
 def c0, 1, 2, 3, 4
 dcl_texcoord0 v0
+dcl_texcoord1 v1
+dcl_texcoord2 v2
+dcl_texcoord3 v3
+dcl_texcoord4 v4
+dcl_texcoord5 v5
+dcl_texcoord6 v6
+dcl_texcoord8 v8
 dcl vFace
 mov r0, c0
+mov r3, c0
+mov r5, c0
+mov r6, c0
 loop aL, i0
     add r0, r0, v[aL]
     mad r1, v[aL + 2]_abs.x, c0.y, -r0
@@ -836,9 +848,13 @@ fn program_strategy() -> impl Strategy<Value = Program> {
                     });
                 }
                 for (&index, &ty) in &samplers {
+                    // `_centroid` and `_pp` on some of them, by register
+                    // number, so that every combination comes up.
                     program.samplers.push(SamplerDecl {
                         index,
                         ty,
+                        centroid: index % 4 >= 2,
+                        pp: index % 2 == 1,
                         origin: Origin::default(),
                     });
                 }
@@ -908,14 +924,62 @@ fn program_strategy() -> impl Strategy<Value = Program> {
                     Just(program),
                     prop::collection::vec(instruction_strategy(decls), 1..40),
                     prop::option::of(face_compare).prop_map(move |f| f.filter(|_| vface)),
+                    Just(const_abs),
                 )
             },
         )
-        .prop_map(|(mut program, body, face)| {
-            program.instructions = body;
+        .prop_map(|(mut program, body, face, const_abs)| {
+            program.instructions = first_writes(&body, const_abs);
+            program.instructions.extend(body);
             program.instructions.extend(face);
             program
         })
+}
+
+/// `mov r#, c0` for every temporary the body reads (a matrix operand reads
+/// the registers after it too): ps_3_0 refuses reads of temporaries no
+/// earlier instruction writes.
+fn first_writes(body: &[Instruction], const_abs: bool) -> Vec<Instruction> {
+    let mut read = std::collections::BTreeSet::new();
+    for ins in body {
+        let rows = match ins.op {
+            Opcode::M4x4 | Opcode::M3x4 => 4,
+            Opcode::M4x3 | Opcode::M3x3 => 3,
+            Opcode::M3x2 => 2,
+            _ => 1,
+        };
+        let operands = ins.src.iter().map(|s| s.reg);
+        let killed = ins.dst.filter(|_| ins.op == Opcode::TexKill).map(|d| d.reg);
+        for reg in operands.chain(killed).filter(|r| r.file == RegFile::Temp) {
+            read.extend((reg.index..reg.index + rows).filter(|&r| r < 32));
+        }
+    }
+    let konst = Src {
+        modifier: if const_abs { SrcMod::Abs } else { SrcMod::None },
+        ..Src::plain(Reg {
+            file: RegFile::Const,
+            index: 0,
+        })
+    };
+    read.into_iter()
+        .map(|index| Instruction {
+            op: Opcode::Mov,
+            sat: false,
+            pp: false,
+            centroid: false,
+            compare: None,
+            predicate: None,
+            dst: Some(Dst {
+                reg: Reg {
+                    file: RegFile::Temp,
+                    index,
+                },
+                mask: WriteMask::ALL,
+            }),
+            src: vec![konst.clone()],
+            origin: Origin::default(),
+        })
+        .collect()
 }
 
 proptest! {

@@ -150,7 +150,7 @@ pub const CASES: &[(&str, &str, usize, usize)] = &[
     ("ps_3_0\nbreak", "break outside rep or loop", 2, 1),
     ("ps_3_0\nbreak_gt r0.x, r1.x", "break outside rep or loop", 2, 1),
     ("ps_3_0\n(p0.x) rep i0\nendrep", "`rep` cannot be predicated", 2, 2),
-    ("ps_3_0\nif_gt r0.x, r1.x\nmov oC0, r0\nendif", "oC0 is written inside dynamic flow control or predication", 3, 1),
+    ("ps_3_0\nif_gt c0.x, c0.y\nmov oC0, c0\nendif", "oC0 is written inside dynamic flow control or predication", 3, 1),
     ("ps_3_0\n(p0) mov oC0, r0", "oC0 is written inside dynamic flow control or predication", 2, 1),
     ("ps_3_0\ndefi i0, 300, 0, 0, 0\nrep i0\nendrep", "the iteration count (.x = 300) must be in 0..=255", 3, 1),
     ("ps_3_0\ndefi i0, 1, 0, 200, 0\nloop aL, i0\nendloop", "the loop step (.z = 200) must be in -128..=127", 3, 1),

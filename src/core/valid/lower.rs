@@ -307,7 +307,11 @@ fn operands(ast: &InstrAst, info: &OpInfo) -> R<(Option<Dst>, Vec<Src>)> {
             Operand::PredDst => dst = Some(predicate_destination(reg)?),
             Operand::Src | Operand::ScalarSrc => {
                 let s = float_source(reg)?;
-                if *kind == Operand::ScalarSrc && !s.swizzle.is_replicate() {
+                // vFace is a scalar register (dimension 1 in Microsoft's
+                // ps_3_0 register table, and the operand of if_comp and
+                // break_comp its page names): it needs no swizzle to be one.
+                let scalar = s.swizzle.is_replicate() || s.reg.file == RegFile::Face;
+                if *kind == Operand::ScalarSrc && !scalar {
                     return Err(Diagnostic::error(
                         reg.span,
                         format!(
@@ -921,7 +925,7 @@ fn lower_dcl(ast: &InstrAst, origin: &Origin) -> R<Lowered> {
     no_modifiers(r, "a declared register")?;
     let m = dcl_suffixes(ast)?;
     match (reg.file, m.kind) {
-        (RegFile::Sampler, Some((k, span))) => sampler_decl(r, reg, k, span, origin),
+        (RegFile::Sampler, Some((k, span))) => sampler_decl(r, reg, (k, span), &m, origin),
         (RegFile::Sampler, None) => Err(Diagnostic::error(
             ast.base_span,
             "a sampler declaration needs a type",
@@ -1008,8 +1012,15 @@ fn dcl_suffixes(ast: &InstrAst) -> R<DclSuffixes<'_>> {
     Ok(m)
 }
 
-/// `dcl_2d` / `dcl_cube` / `dcl_volume s#` (type `k` at `span`).
-fn sampler_decl(r: &RegAst, reg: Reg, k: &str, span: Span, origin: &Origin) -> R<Lowered> {
+/// `dcl_2d` / `dcl_cube` / `dcl_volume s#` (type `k` at `span`), with its
+/// `_centroid` / `_pp`.
+fn sampler_decl(
+    r: &RegAst,
+    reg: Reg,
+    (k, span): (&str, Span),
+    m: &DclSuffixes,
+    origin: &Origin,
+) -> R<Lowered> {
     let ty = match k {
         "2d" => SamplerType::Tex2d,
         "cube" => SamplerType::Cube,
@@ -1037,6 +1048,8 @@ fn sampler_decl(r: &RegAst, reg: Reg, k: &str, span: Span, origin: &Origin) -> R
     Ok(Lowered::Sampler(SamplerDecl {
         index: reg.index,
         ty,
+        centroid: m.centroid,
+        pp: m.pp,
         origin: origin.clone(),
     }))
 }
