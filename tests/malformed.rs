@@ -15,6 +15,10 @@
 //! several errors (all reported), and the ps_3_0 failure vectors of Wine's
 //! assembler tests (dlls/d3dcompiler_43/tests/asm.c), copied in as literals.
 
+// Loading results carry the whole source error (diagnostics and file) on
+// purpose, as in the library; here they pass through `catch_unwind`.
+#![allow(clippy::result_large_err)]
+
 use ps30::core::diag::{Diagnostic, SourceError};
 use ps30::core::load::{self, Options};
 use std::alloc::{GlobalAlloc, Layout, System};

@@ -976,7 +976,7 @@ fn first_writes(body: &[Instruction], const_abs: bool) -> Vec<Instruction> {
                 },
                 mask: WriteMask::ALL,
             }),
-            src: vec![konst.clone()],
+            src: vec![konst],
             origin: Origin::default(),
         })
         .collect()
