@@ -8,8 +8,9 @@
 //! inside `loop` (and every input `v[aL + n]` reads declared), read ports,
 //! subroutine structure, outputs outside dynamic flow control; reads of
 //! temporaries no earlier code writes ([`init`]); then, as warnings,
-//! gradients under dynamic flow control ([`gradient`]). Rules are the ps_3_0 rules of Microsoft's documentation;
-//! where sources disagree, the choice is written next to the check.
+//! gradients under dynamic flow control ([`gradient`]). Rules are the
+//! ps_3_0 rules of Microsoft's documentation; where sources disagree, the
+//! choice is written next to the check.
 
 pub mod gradient;
 pub mod init;
