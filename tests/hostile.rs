@@ -199,7 +199,7 @@ fn many_diagnostics_are_reported_in_linear_time_and_capped() {
     write(
         d,
         "warnings.psh",
-        &format!("ps_3_0\ndcl_2d s0\ndcl_texcoord0 v0.xy\n{body}mov oC0, r0\n"),
+        &format!("ps_3_0\ndcl_2d s0\ndcl_texcoord0 v0.xy\nmov r1, c0\n{body}mov oC0, r0\n"),
     );
     expect(
         d,
@@ -640,4 +640,48 @@ fn call_graphs_are_analysed_once_per_subroutine() {
     let r = expect(d, &["check", "wide.psh", "--json"], 1, "\"executed\"");
     let json: serde_json::Value = serde_json::from_str(&r.stdout).unwrap();
     assert_eq!(json["executed"], executed, "{}", r.stdout);
+}
+
+/// Compiled shaders at the bounds: a megabyte of one-token instructions
+/// stops at the statement cap (raised, it loads and is merely over the slot
+/// limit), and comment blocks at their largest (32,767 tokens each, almost a
+/// megabyte) are listed, loaded and written back within the limits.
+#[test]
+fn compiled_shaders_at_the_bounds() {
+    let d = tempfile::tempdir().unwrap();
+    let d = d.path();
+    let bytes =
+        |tokens: &[u32]| -> Vec<u8> { tokens.iter().flat_map(|t| t.to_le_bytes()).collect() };
+    let mut nops = vec![0xffff_0300u32];
+    nops.extend(std::iter::repeat_n(0, 262_000));
+    nops.push(0xffff);
+    fs::write(d.join("nops.fxo"), bytes(&nops)).unwrap();
+    expect(
+        d,
+        &["check", "nops.fxo"],
+        2,
+        "more than 100000 instructions and comments",
+    );
+    expect(
+        d,
+        &["check", "nops.fxo", "--max-expanded", "300000"],
+        1,
+        "262,000 / 512",
+    );
+    let mut comments = vec![0xffff_0300u32];
+    for _ in 0..7 {
+        comments.push(0x7fff_fffe);
+        comments.extend(std::iter::repeat_n(0xabab_abab, 0x7fff));
+    }
+    comments.extend([0x0200_0001, 0x800f_0800, 0xa0e4_0000, 0xffff]);
+    fs::write(d.join("comments.fxo"), bytes(&comments)).unwrap();
+    expect(d, &["check", "comments.fxo"], 0, "verdict: within limits");
+    // version 1 + 7 × (comment token 1 + 32,767) + mov 3 + end 1 = 229,381
+    expect(
+        d,
+        &["asm", "comments.fxo", "-o", "again.fxo"],
+        0,
+        "229,381 tokens",
+    );
+    assert_eq!(fs::read(d.join("again.fxo")).unwrap(), bytes(&comments));
 }

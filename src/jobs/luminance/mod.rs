@@ -31,6 +31,7 @@
 //! second-order terms is applied explicitly where the sums are formed.
 
 use crate::core::cost::{self, Environment, Profile, Range};
+use crate::core::diag::SourceFile;
 use crate::core::emu::{self, Address, Constants, Draw, Filter, LinearInput, SamplerState};
 use crate::core::image::{HdrImage, RenderTarget, TargetFormat, Texture};
 use crate::core::isa::Opcode;
@@ -43,19 +44,28 @@ use serde::Serialize;
 /// f32 unit roundoff.
 const U32: f64 = f32::EPSILON as f64 / 2.0;
 
-/// A shader source to run.
+/// A shader source to run: assembly text, or a compiled shader as its
+/// listing ([`load::source_file`]).
 #[derive(Clone, Debug)]
 pub struct ShaderSource {
-    pub name: String,
-    pub text: String,
+    pub file: SourceFile,
 }
 
 impl ShaderSource {
+    /// Assembly text.
     pub fn new(name: impl Into<String>, text: impl Into<String>) -> ShaderSource {
         ShaderSource {
-            name: name.into(),
-            text: text.into(),
+            file: SourceFile::new(name, text),
         }
+    }
+
+    /// Any source, text or compiled.
+    pub fn from_file(file: SourceFile) -> ShaderSource {
+        ShaderSource { file }
+    }
+
+    pub fn name(&self) -> &str {
+        &self.file.name
     }
 }
 
@@ -119,7 +129,7 @@ fn load(src: &ShaderSource, defines: &[(&str, u64)]) -> Result<load::Loaded, Pip
     for (k, v) in defines {
         opts.defines.insert(k.to_string(), *v);
     }
-    load::load_str(&src.name, &src.text, &opts).map_err(PipelineError::Source)
+    load::load(src.file.clone(), &opts).map_err(PipelineError::Source)
 }
 
 /// One pass's cost: static analysis next to what the emulator counted.
@@ -526,7 +536,7 @@ fn load_pass1(
     if reads != bw as u64 * bh as u64 {
         return Err(PipelineError::Mismatch(format!(
             "{} reads {reads} texels per pixel with i1 = {bw}, i2 = {bh}, but a {bw}×{bh} block has {}; an unrolled shader fixes the block width to its REPEAT_BLOCK count",
-            src.name,
+            src.name(),
             bw as u64 * bh as u64
         )));
     }

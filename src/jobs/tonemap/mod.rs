@@ -735,7 +735,7 @@ pub fn emulate(
     progress: &dyn Fn(u64, u64),
 ) -> Result<(Vec<[f32; 4]>, PassCost), TonemapError> {
     let src = &settings.shader;
-    let loaded = load::load_str(&src.name, &src.text, &Options::default())
+    let loaded = load::load(src.file.clone(), &Options::default())
         .map_err(|e| TonemapError::Shader(e.diagnostics.render(&e.file)))?;
     let compiled = emu::compile(&loaded.shader).map_err(TonemapError::Emu)?;
     let analysis = cost::analyse(
@@ -804,7 +804,7 @@ pub fn emulate(
             None => {
                 return Err(TonemapError::Shader(format!(
                     "{} never writes oC0",
-                    src.name
+                    src.name()
                 )))
             }
         }
@@ -816,7 +816,7 @@ pub fn emulate(
         progress(y0 as u64, h as u64);
     }
     let cost = PassCost {
-        shader: src.name.clone(),
+        shader: src.name().to_string(),
         slots: analysis.slots,
         executed_static: analysis.executed,
         executed_emulated: executed,
