@@ -1,31 +1,42 @@
-//! The luminance pipeline's speed against the f64 CPU reference, measured in
-//! one run on the article's frame size (`courtyard_1280x1024.exr`):
+//! The luminance pipeline's speed, measured side by side in one criterion
+//! group on the article's frame size (`courtyard_1280x1024.exr`), so that
+//! every ratio comes from one run:
 //!
-//! * `reference/f64`: the CPU reference's L̄w (every pixel once);
+//! * `reference/f64`: the CPU reference's L̄w (every pixel once), one thread;
+//! * `native/f32`: the floor — what pass 1 computes, written as a plain f32
+//!   loop (luminance dot, `f32::log2`, block sums), one thread;
 //! * `emulate/unrolled`: both passes of the corrected unrolled shaders
-//!   (125×128 blocks), one emulator thread;
-//! * `emulate/unrolled+lod`: the same with `Draw::record_lod` on pass 1,
-//!   as `ps30 luminance` runs it (the LOD statistic behind its warning);
-//! * `emulate/loop`: both passes of the corrected loop shaders (128×56
-//!   blocks), one emulator thread;
-//! * `gpu/unrolled`, `gpu/loop`: the same draws on the GPU backend (the
-//!   first Vulkan adapter: llvmpipe here), each pass as `--backend gpu`
-//!   runs it — translation, pipeline, the image uploaded, the draw, the
-//!   target read back. Skipped, with a line saying so, without an adapter.
+//!   (125×128 blocks), one emulator thread; `emulate/unrolled+lod` the same
+//!   with `Draw::record_lod` on pass 1, as `ps30 luminance` runs it;
+//!   `emulate/loop`: the corrected loop shaders (128×56 blocks);
+//! * `pass1/1t`, `pass1/2t`: pass 1 alone on one and two emulator threads;
+//! * `phase/decode`, `phase/crosscheck`: decoding the file, and the f64
+//!   cross-check's one scan (every term, the block bounds, the reference);
+//! * `command/luminance|tonemap|run/Nt`: what `ps30 luminance`, `ps30
+//!   tonemap` and `ps30 run` compute (decoding included, no printing) with
+//!   all their work on N threads, as `--threads N` runs them;
+//! * `gpu/unrolled`, `gpu/loop`: the `emulate/*` draws on the GPU backend
+//!   (the first Vulkan adapter: llvmpipe here), each pass as `--backend
+//!   gpu` runs it — translation, pipeline, the image uploaded, the draw,
+//!   the target read back. Skipped, with a line saying so, without an
+//!   adapter.
 //!
-//! The target is `emulate/unrolled` within 3× of `reference/f64`.
-//! The cross-check (block bounds) is not part of the timed work.
+//! The cross-check's bounds are not part of the `emulate/*` entries.
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use ps30::core::emu::{self, Address, Constants, Draw, Filter, LinearInput, SamplerState};
-use ps30::core::image::{load, ImageLimits, RenderTarget, TargetFormat};
-use ps30::core::load::{load_str, Options};
+use ps30::core::gpu::{self, Gpu, TargetKind};
+use ps30::core::image::{load, HdrImage, ImageLimits, RenderTarget, TargetFormat};
+use ps30::core::ir::Shader;
+use ps30::core::load::{load_str, Loaded, Options};
 use ps30::jobs::bundled::{CORRECTED_LOOP, CORRECTED_PASS2, CORRECTED_UNROLLED};
 use ps30::jobs::luminance::reference::{self, Policy};
+use ps30::jobs::luminance::{self, run_pass, PassSetup, ShaderSource};
+use ps30::jobs::tonemap;
 use std::hint::black_box;
 use std::path::Path;
 
-fn shader(src: (&str, &str), defines: &[(&str, u64)]) -> ps30::core::ir::Shader {
+fn shader(src: (&str, &str), defines: &[(&str, u64)]) -> Shader {
     let mut opts = Options::default();
     for (k, v) in defines {
         opts.defines.insert(k.to_string(), *v);
@@ -33,8 +44,46 @@ fn shader(src: (&str, &str), defines: &[(&str, u64)]) -> ps30::core::ir::Shader 
     load_str(src.0, src.1, &opts).unwrap().shader
 }
 
-/// How a pass is drawn: oC0 per pixel.
-type Backend<'a> = &'a dyn Fn(usize, &Draw) -> Vec<[f32; 4]>;
+/// Both passes, as the emulator and the GPU backend take them.
+struct Passes {
+    shaders: [Shader; 2],
+    compiled: [emu::Compiled; 2],
+}
+
+impl Passes {
+    fn new(pass1: Shader, pass2: Shader) -> Passes {
+        let compiled = [&pass1, &pass2].map(|s| emu::compile(s).unwrap());
+        Passes {
+            shaders: [pass1, pass2],
+            compiled,
+        }
+    }
+}
+
+/// Who draws a pass: the emulator on a number of threads, or a GPU.
+#[derive(Clone, Copy)]
+enum Drawer<'a> {
+    Emulator(&'a Passes, usize),
+    Gpu(&'a Gpu, &'a Passes),
+}
+
+impl Drawer<'_> {
+    /// Pass `k`'s oC0, one value per pixel.
+    fn draw(self, k: usize, d: &Draw) -> Vec<[f32; 4]> {
+        let out = match self {
+            Drawer::Emulator(p, threads) => {
+                emu::run_with_threads(&p.compiled[k], d, threads)
+                    .unwrap()
+                    .color
+            }
+            Drawer::Gpu(g, p) => {
+                let kind = TargetKind::Format(TargetFormat::R32F);
+                gpu::run(g, &p.shaders[k], d, kind).unwrap().color
+            }
+        };
+        out.into_iter().next().flatten().unwrap()
+    }
+}
 
 fn state() -> SamplerState {
     SamplerState {
@@ -45,14 +94,8 @@ fn state() -> SamplerState {
     }
 }
 
-/// Pass 1 (`run(0, …)`) then pass 2 (`run(1, …)`); returns L̄w.
-fn two_pass(
-    img: &ps30::core::image::HdrImage,
-    run: Backend,
-    bw: u32,
-    bh: u32,
-    record_lod: bool,
-) -> f32 {
+/// Pass 1: the `nx × ny` R32F target.
+fn pass1(img: &HdrImage, by: Drawer, bw: u32, bh: u32, record_lod: bool) -> RenderTarget {
     let (w, h) = (img.width, img.height);
     let (nx, ny) = (w.div_ceil(bw), h.div_ceil(bh));
     let mut d1 = Draw::new(nx, ny);
@@ -76,11 +119,19 @@ fn two_pass(
         bool: Vec::new(),
     };
     d1.samplers.push((0, img.as_texture().into(), state()));
-    let out1 = run(0, &d1);
+    let out1 = by.draw(0, &d1);
     let mut t1 = RenderTarget::new(nx, ny, TargetFormat::R32F);
     for (i, v) in out1.iter().enumerate() {
         t1.store(i as u32 % nx, i as u32 / nx, *v);
     }
+    t1
+}
+
+/// Pass 1 then pass 2; returns L̄w.
+fn two_pass(img: &HdrImage, by: Drawer, bw: u32, bh: u32, record_lod: bool) -> f32 {
+    let (w, h) = (img.width, img.height);
+    let (nx, ny) = (w.div_ceil(bw), h.div_ceil(bh));
+    let t1 = pass1(img, by, bw, bh, record_lod);
     let mut d2 = Draw::new(1, 1);
     d2.inputs.push((
         0,
@@ -91,73 +142,202 @@ fn two_pass(
         [1.0 / nx as f32, 1.0 / ny as f32, 0.0, 1.0],
     ];
     d2.samplers.push((0, t1.as_texture().into(), state()));
-    run(1, &d2)[0][0]
+    by.draw(1, &d2)[0][0]
 }
 
-/// The emulator on one thread.
-fn emulator(passes: &[emu::Compiled; 2]) -> impl Fn(usize, &Draw) -> Vec<[f32; 4]> + '_ {
-    move |k, d| {
-        emu::run_with_threads(&passes[k], d, 1).unwrap().color[0]
-            .take()
-            .unwrap()
+/// The floor: pass 1's arithmetic as a plain f32 loop over 125×128 blocks
+/// (black outside the image, as BORDER addressing reads), returning the sum
+/// of the block sums so nothing is optimised away.
+fn native_f32(img: &HdrImage, bw: u32, bh: u32) -> f32 {
+    let (w, h) = (img.width, img.height);
+    let black = 1e-4f32.log2();
+    let mut total = 0.0;
+    for by in 0..h.div_ceil(bh) {
+        for bx in 0..w.div_ceil(bw) {
+            let mut sum = 0f32;
+            for y in by * bh..(by + 1) * bh {
+                for x in bx * bw..(bx + 1) * bw {
+                    sum += if x < w && y < h {
+                        let p = img.pixels[(y * w + x) as usize];
+                        (0.27 * p[0] + 0.67 * p[1] + 0.06 * p[2] + 1e-4)
+                            .abs()
+                            .log2()
+                    } else {
+                        black
+                    };
+                }
+            }
+            total += sum;
+        }
     }
+    total
 }
 
-/// The GPU backend, targets in R32Float.
-fn gpu<'a>(
-    g: &'a ps30::core::gpu::Gpu,
-    passes: &'a [ps30::core::ir::Shader; 2],
-) -> impl Fn(usize, &Draw) -> Vec<[f32; 4]> + 'a {
-    move |k, d| {
-        let kind = ps30::core::gpu::TargetKind::Format(TargetFormat::R32F);
-        ps30::core::gpu::run(g, &passes[k], d, kind).unwrap().color[0]
-            .take()
-            .unwrap()
-    }
+/// Runs `f` with all of its parallel work on `threads` threads.
+fn on_threads<T: Send>(threads: usize, f: impl FnOnce() -> T + Send) -> T {
+    rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .build()
+        .unwrap()
+        .install(f)
+}
+
+/// `ps30 run corrected:loop` over the image into a 10×8 target (128×128
+/// blocks), as the README's example does on another image.
+fn run_command(path: &Path, loop1: &Loaded, threads: usize) -> f32 {
+    let img = load(path, &ImageLimits::default()).unwrap();
+    let setup = PassSetup {
+        target: (10, 8),
+        constants: Constants {
+            float: vec![
+                [0.0; 4],
+                [1.0 / 1280.0, 1.0 / 1024.0, 0.0, 1.0],
+                [0.0; 4],
+                [0.27, 0.67, 0.06, 0.01],
+            ],
+            int: vec![[0; 4], [128, 0, 0, 0], [128, 0, 0, 0]],
+            bool: Vec::new(),
+        },
+        sampler: state(),
+        format: TargetFormat::R32F,
+        threads: Some(threads),
+        limits: emu::EmuLimits::default(),
+        backend: ps30::jobs::backend::Backend::Emulator,
+        float_rules: ps30::core::float_rules::FloatRules::D3d9,
+    };
+    run_pass(loop1, &img, &setup).unwrap().target.texel(0, 0)[0]
 }
 
 fn luminance(c: &mut Criterion) {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/hdr/courtyard_1280x1024.exr");
     let img = load(&path, &ImageLimits::default()).unwrap();
-    let unrolled = [
+    let unrolled = Passes::new(
         shader(CORRECTED_UNROLLED.listing(), &[]),
         shader(CORRECTED_PASS2.listing(), &[("xsize", 11), ("ysize", 8)]),
-    ];
-    let looped = [
+    );
+    let looped = Passes::new(
         shader(CORRECTED_LOOP.listing(), &[]),
         shader(CORRECTED_PASS2.listing(), &[("xsize", 10), ("ysize", 19)]),
-    ];
-    let compiled = |s: &[ps30::core::ir::Shader; 2]| s.clone().map(|s| emu::compile(&s).unwrap());
-    let (emu_unrolled, emu_looped) = (compiled(&unrolled), compiled(&looped));
-    let device = ps30::core::gpu::Gpu::open();
+    );
+    let device = Gpu::open();
+    let loop1 = load_str(
+        CORRECTED_LOOP.listing().0,
+        CORRECTED_LOOP.listing().1,
+        &Options::default(),
+    )
+    .unwrap();
+    let source = |b: &ps30::jobs::bundled::Bundled| ShaderSource::new(b.listing().0, b.listing().1);
+    let (p1, p2) = (source(&CORRECTED_UNROLLED), source(&CORRECTED_PASS2));
     let mut g = c.benchmark_group("courtyard_1280x1024");
-    g.sample_size(20);
+    g.sample_size(10);
     g.bench_function("reference/f64", |b| {
-        b.iter(|| reference::log_average(black_box(&img), 1e-4, Policy::ABS).log_average)
+        b.iter(|| {
+            on_threads(1, || {
+                reference::log_average(black_box(&img), 1e-4, Policy::ABS).log_average
+            })
+        })
     });
-    let e = emulator(&emu_unrolled);
+    g.bench_function("native/f32", |b| {
+        b.iter(|| native_f32(black_box(&img), 125, 128))
+    });
     g.bench_function("emulate/unrolled", |b| {
-        b.iter(|| two_pass(black_box(&img), &e, 125, 128, false))
+        b.iter(|| {
+            two_pass(
+                black_box(&img),
+                Drawer::Emulator(&unrolled, 1),
+                125,
+                128,
+                false,
+            )
+        })
     });
     g.bench_function("emulate/unrolled+lod", |b| {
-        b.iter(|| two_pass(black_box(&img), &e, 125, 128, true))
+        b.iter(|| {
+            two_pass(
+                black_box(&img),
+                Drawer::Emulator(&unrolled, 1),
+                125,
+                128,
+                true,
+            )
+        })
     });
-    let e = emulator(&emu_looped);
     g.bench_function("emulate/loop", |b| {
-        b.iter(|| two_pass(black_box(&img), &e, 128, 56, false))
+        b.iter(|| {
+            two_pass(
+                black_box(&img),
+                Drawer::Emulator(&looped, 1),
+                128,
+                56,
+                false,
+            )
+        })
     });
+    for t in [1, 2] {
+        g.bench_function(format!("pass1/{t}t"), |b| {
+            b.iter(|| {
+                pass1(
+                    black_box(&img),
+                    Drawer::Emulator(&unrolled, t),
+                    125,
+                    128,
+                    false,
+                )
+            })
+        });
+    }
     match &device {
         Ok(d) => {
-            let run = gpu(d, &unrolled);
             g.bench_function("gpu/unrolled", |b| {
-                b.iter(|| two_pass(black_box(&img), &run, 125, 128, false))
+                b.iter(|| two_pass(black_box(&img), Drawer::Gpu(d, &unrolled), 125, 128, false))
             });
-            let run = gpu(d, &looped);
             g.bench_function("gpu/loop", |b| {
-                b.iter(|| two_pass(black_box(&img), &run, 128, 56, false))
+                b.iter(|| two_pass(black_box(&img), Drawer::Gpu(d, &looped), 128, 56, false))
             });
         }
         Err(e) => eprintln!("gpu/unrolled, gpu/loop: skipped: {e}"),
+    }
+    g.bench_function("phase/decode", |b| {
+        b.iter(|| on_threads(1, || load(&path, &ImageLimits::default()).unwrap().width))
+    });
+    g.bench_function("phase/crosscheck", |b| {
+        b.iter(|| {
+            on_threads(1, || {
+                luminance::pass1_bounds(black_box(&img), (125, 128), 1e-4, Policy::ABS).1
+            })
+        })
+    });
+    for t in [1, 2] {
+        g.bench_function(format!("command/luminance/{t}t"), |b| {
+            b.iter(|| {
+                on_threads(t, || {
+                    let img = load(&path, &ImageLimits::default()).unwrap();
+                    let settings = luminance::Settings {
+                        threads: Some(t),
+                        ..Default::default()
+                    };
+                    luminance::run(&img, &p1, &p2, &settings)
+                        .unwrap()
+                        .log_average
+                })
+            })
+        });
+        g.bench_function(format!("command/tonemap/{t}t"), |b| {
+            b.iter(|| {
+                on_threads(t, || {
+                    let img = load(&path, &ImageLimits::default()).unwrap();
+                    let settings = tonemap::Settings {
+                        threads: Some(t),
+                        ..Default::default()
+                    };
+                    let out = tonemap::run(&img, &settings, &|_, _| {}).unwrap();
+                    out.srgb8().len()
+                })
+            })
+        });
+        g.bench_function(format!("command/run/{t}t"), |b| {
+            b.iter(|| on_threads(t, || run_command(&path, &loop1, t)))
+        });
     }
     g.finish();
 }

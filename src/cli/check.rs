@@ -1,16 +1,18 @@
 //! `ps30 check`: slots and executed instructions against the limits.
 
-use super::args::{ConstantArgs, InputArgs, LimitArgs, SourceArgs};
+use super::args::{ConstantArgs, InputArgs, LimitArgs, Resolved, SourceArgs};
 use super::io::{load_file, print_json, say};
 use super::ui::Ui;
 use super::Outcome;
 use ps30::core::cost::{self, Environment, Profile, Verdict};
 use ps30::present::check::{check_json, check_text};
-use std::path::PathBuf;
+use ps30::present::constants::{table_json, table_text};
+use serde_json::Value;
 
 #[derive(clap::Args)]
 pub struct Args {
-    file: PathBuf,
+    /// Shader: assembly or ps_3_0 bytecode (`-` reads standard input).
+    file: String,
     #[command(flatten)]
     source: SourceArgs,
     #[command(flatten)]
@@ -30,9 +32,15 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         &args.source.options(),
         args.input.max_input_bytes,
     )?;
+    let given = Resolved::new(
+        &[],
+        &args.constants.ints,
+        &args.constants.bools,
+        loaded.constants.as_ref(),
+    )?;
     let env = Environment {
-        ints: args.constants.ints.into_iter().collect(),
-        bools: args.constants.bools.into_iter().collect(),
+        ints: given.ints.into_iter().collect(),
+        bools: given.bools.into_iter().collect(),
     };
     for r in env.ints.keys() {
         if !ui.quiet && loaded.shader.program().int_def(*r).is_some() {
@@ -53,9 +61,21 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
             .iter()
             .map(|w| w.to_string())
             .collect();
-        print_json(&check_json(&name, &a, &warnings))?;
+        let mut json = check_json(&name, &a, &warnings);
+        json["constant_table"] = loaded.constants.as_ref().map_or(Value::Null, table_json);
+        print_json(&json)?;
     } else {
-        say(ui, &check_text(&name, &a))?;
+        let mut text = check_text(&name, &a);
+        if let Some(t) = &loaded.constants {
+            text.push('\n');
+            text.push_str(&table_text(t));
+        }
+        if loaded.file.is_compiled() {
+            text.push_str(&format!(
+                "(a compiled shader: lines are those of `ps30 disasm {name}`)\n"
+            ));
+        }
+        say(ui, &text)?;
     }
     Ok(Outcome::from_ok(a.verdict == Verdict::Within))
 }

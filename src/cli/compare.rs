@@ -3,13 +3,12 @@
 //! `reports/gpu-crosscheck.md`).
 
 use super::args::{
-    constants, parse_delta, parse_float4, parse_float_const, parse_size, AddressArg, ConstantArgs,
-    FilterArg, FloatRulesArg, FormatArg, InputArgs, SourceArgs,
+    parse_delta, parse_float4, parse_float_const, parse_size, AddressArg, ConstRef, ConstantArgs,
+    FilterArg, FloatRulesArg, FormatArg, InputArgs, Resolved, SourceArgs,
 };
 use super::io::{color_stderr, print_json, say, shader_source};
 use super::ui::Ui;
 use super::{BadInput, Outcome};
-use ps30::core::diag::SourceFile;
 use ps30::core::emu::{Draw, SamplerState};
 use ps30::core::gpu::{Gpu, TargetKind};
 use ps30::core::image::{self, ImageLimits};
@@ -63,9 +62,10 @@ pub struct Args {
     input: InputArgs,
     #[command(flatten)]
     constants: ConstantArgs,
-    /// Float constant set by the application, e.g. --const c3=0.27,0.67,0.06,0.01.
-    #[arg(long = "const", value_name = "cN=X[,Y,Z,W]", value_parser = parse_float_const)]
-    floats: Vec<(u32, [f32; 4])>,
+    /// Float constant set by the application, by register or by its name in the
+    /// shader's constant table, e.g. --const c3=0.27,0.67,0.06,0.01 or --const g_fKey=0.18.
+    #[arg(long = "const", value_name = "cN|NAME=X[,Y,Z,W]", value_parser = parse_float_const)]
+    floats: Vec<(ConstRef, Vec<f32>)>,
     #[arg(long, value_enum, default_value = "point")]
     filter: FilterArg,
     #[arg(long, value_enum, default_value = "border")]
@@ -150,8 +150,7 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         .target
         .ok_or_else(|| BadInput("--target WxH is needed for one draw".into()))?;
     let src = shader_source(spec, args.input.max_input_bytes)?;
-    let file = SourceFile::new(src.name.clone(), src.text);
-    let loaded = load::load(file, &args.source.options()).map_err(|e| {
+    let loaded = load::load(src.file, &args.source.options()).map_err(|e| {
         e.diagnostics.emit(&e.file, color_stderr());
         BadInput(e.to_string())
     })?;
@@ -173,7 +172,13 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
             ),
         ));
     }
-    draw.constants = constants(&args.floats, &args.constants.ints, &args.constants.bools);
+    draw.constants = Resolved::new(
+        &args.floats,
+        &args.constants.ints,
+        &args.constants.bools,
+        loaded.constants.as_ref(),
+    )?
+    .constants();
     let address = args.address.into();
     if program.sampler_type(0).is_some() {
         draw.samplers.push((

@@ -5,11 +5,12 @@ use super::io::{check_output_path, load_file, print, print_json};
 use super::ui::Ui;
 use super::{BadInput, Outcome};
 use ps30::core::front::print::write_program;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 #[derive(clap::Args)]
 pub struct Args {
-    file: PathBuf,
+    /// Shader: assembly or ps_3_0 bytecode (`-` reads standard input).
+    file: String,
     #[command(flatten)]
     source: SourceArgs,
     #[command(flatten)]
@@ -24,7 +25,7 @@ pub struct Args {
 
 pub fn run(args: Args, _ui: &Ui) -> super::Result {
     if let Some(path) = &args.output {
-        check_output_path(path, &[&args.file])?;
+        check_output_path(path, &[Path::new(&args.file)])?;
     }
     let loaded = load_file(
         &args.file,

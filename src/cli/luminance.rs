@@ -51,6 +51,7 @@ enum NegativeArg {
 }
 
 pub fn run(args: Args, ui: &Ui) -> super::Result {
+    super::bound_threads(args.exec.threads())?;
     let img = image::load(&args.image, &args.exec.image_limits())?;
     let settings = Settings {
         block: args.block,

@@ -3,15 +3,16 @@
 //! behaviour.
 
 use super::args::{
-    constants, parse_bool_const, parse_define, parse_finite, parse_float4, parse_float_const,
-    parse_int_const, parse_size, AddressArg, ExecArgs, FilterArg, InputArgs, MipFilterArg,
+    parse_bool_const, parse_define, parse_finite, parse_float4, parse_float_const, parse_int_const,
+    parse_size, AddressArg, ConstRef, ExecArgs, FilterArg, InputArgs, MipFilterArg, Resolved,
 };
 use super::io::{color_stderr, print, print_json, shader_source};
 use super::ui::Ui;
 use super::{BadInput, Outcome};
 use ps30::core::emu::SamplerState;
 use ps30::core::image;
-use ps30::jobs::profile::{profile, Input, Setup};
+use ps30::core::load;
+use ps30::jobs::profile::{profile_file, Input, Setup};
 use ps30::present::profile::{text, to_json};
 
 #[derive(clap::Args, Debug)]
@@ -31,15 +32,16 @@ pub struct Args {
     /// Bind a REPEAT_BLOCK count name, e.g. -D xsize=11.
     #[arg(short = 'D', value_name = "NAME=N", value_parser = parse_define)]
     define: Vec<(String, u64)>,
-    /// Integer constant, e.g. --int i2=128 or --int i0=16,0,1,0.
-    #[arg(long = "int", value_name = "iN=X[,Y,Z,W]", value_parser = parse_int_const)]
-    ints: Vec<(u32, [i32; 4])>,
-    /// Boolean constant, e.g. --bool b0=true.
-    #[arg(long = "bool", value_name = "bN=true|false", value_parser = parse_bool_const)]
-    bools: Vec<(u32, bool)>,
-    /// Float constant, e.g. --const c3=0.27,0.67,0.06,0.01.
-    #[arg(long = "const", value_name = "cN=X[,Y,Z,W]", value_parser = parse_float_const)]
-    floats: Vec<(u32, [f32; 4])>,
+    /// Integer constant, by register or by name, e.g. --int i2=128 or --int i0=16,0,1,0.
+    #[arg(long = "int", value_name = "iN|NAME=X[,Y,Z,W]", value_parser = parse_int_const)]
+    ints: Vec<(ConstRef, Vec<i32>)>,
+    /// Boolean constant, by register or by name, e.g. --bool b0=true.
+    #[arg(long = "bool", value_name = "bN|NAME=true|false", value_parser = parse_bool_const)]
+    bools: Vec<(ConstRef, Vec<bool>)>,
+    /// Float constant, by register or by its name in the shader's constant table,
+    /// e.g. --const c3=0.27,0.67,0.06,0.01 or --const g_fKey=0.18.
+    #[arg(long = "const", value_name = "cN|NAME=X[,Y,Z,W]", value_parser = parse_float_const)]
+    floats: Vec<(ConstRef, Vec<f32>)>,
     /// s0's MAGFILTER and MINFILTER (with --image).
     #[arg(long, value_enum, default_value = "point")]
     filter: FilterArg,
@@ -107,16 +109,23 @@ impl Args {
 /// Validator warnings to stderr, the report to stdout; exit 1 when the run
 /// found a problem.
 pub fn run(args: Args, _ui: &Ui) -> super::Result {
+    super::bound_threads(args.exec.threads())?;
     let src = shader_source(&args.shader, args.input.max_input_bytes)?;
     let setup = Setup {
         input: args.input()?,
         defines: args.define.clone(),
-        constants: constants(&args.floats, &args.ints, &args.bools),
+        constants: Resolved::new(
+            &args.floats,
+            &args.ints,
+            &args.bools,
+            load::constant_table_of(&src.file).as_ref(),
+        )?
+        .constants(),
         bins: args.bins as usize,
         threads: args.exec.threads(),
         limits: args.exec.limits(),
     };
-    let r = profile(&src.name, &src.text, &setup).map_err(BadInput)?;
+    let r = profile_file(src.file, &setup).map_err(BadInput)?;
     r.warnings.emit(&r.file, color_stderr());
     if args.exec.json {
         print_json(&to_json(&r))?;

@@ -1,18 +1,18 @@
 //! `ps30 run`: one pass of any shader over an image into a render target.
 
 use super::args::{
-    constants, parse_float4, parse_float_const, AddressArg, BackendArgs, ConstantArgs, ExecArgs,
-    FilterArg, FormatArg, InputArgs, SourceArgs,
+    parse_float4, parse_float_const, AddressArg, BackendArgs, ConstRef, ConstantArgs, ExecArgs,
+    FilterArg, FormatArg, InputArgs, Resolved, SourceArgs,
 };
-use super::io::{check_output_path, color_stderr, print_json, say, shader_source};
+use super::io::{check_output_path, load_file, print_json, say};
 use super::ui::Ui;
-use super::{BadInput, Outcome};
-use ps30::core::diag::SourceFile;
+use super::Outcome;
 use ps30::core::emu::SamplerState;
 use ps30::core::image::{self, write_exr, write_pfm};
-use ps30::core::load;
 use ps30::jobs::luminance::{run_pass, PassSetup};
+use ps30::present::constants::{table_json, table_text};
 use ps30::present::luminance::{pass_json, pass_text};
+use serde_json::Value;
 use std::path::{Path, PathBuf};
 
 #[derive(clap::Args)]
@@ -28,9 +28,10 @@ pub struct Args {
     source: SourceArgs,
     #[command(flatten)]
     constants: ConstantArgs,
-    /// Float constant set by the application, e.g. --const c3=0.27,0.67,0.06,0.01.
-    #[arg(long = "const", value_name = "cN=X[,Y,Z,W]", value_parser = parse_float_const)]
-    floats: Vec<(u32, [f32; 4])>,
+    /// Float constant set by the application, by register or by its name in the
+    /// shader's constant table, e.g. --const c3=0.27,0.67,0.06,0.01 or --const g_fKey=0.18.
+    #[arg(long = "const", value_name = "cN|NAME=X[,Y,Z,W]", value_parser = parse_float_const)]
+    floats: Vec<(ConstRef, Vec<f32>)>,
     #[arg(long, value_enum, default_value = "point")]
     filter: FilterArg,
     #[arg(long, value_enum, default_value = "border")]
@@ -52,20 +53,26 @@ pub struct Args {
 }
 
 pub fn run(args: Args, ui: &Ui) -> super::Result {
+    super::bound_threads(args.exec.threads())?;
     if let Some(path) = &args.output {
         check_output_path(path, &[&args.image, Path::new(&args.shader)])?;
     }
-    let src = shader_source(&args.shader, args.input.max_input_bytes)?;
-    let file = SourceFile::new(src.name.clone(), src.text);
-    let loaded = load::load(file, &args.source.options()).map_err(|e| {
-        e.diagnostics.emit(&e.file, color_stderr());
-        BadInput(e.to_string())
-    })?;
+    let loaded = load_file(
+        &args.shader,
+        &args.source.options(),
+        args.input.max_input_bytes,
+    )?;
     let img = image::load(&args.image, &args.exec.image_limits())?;
     let address = args.address.into();
     let setup = PassSetup {
         target: args.target,
-        constants: constants(&args.floats, &args.constants.ints, &args.constants.bools),
+        constants: Resolved::new(
+            &args.floats,
+            &args.constants.ints,
+            &args.constants.bools,
+            loaded.constants.as_ref(),
+        )?
+        .constants(),
         sampler: SamplerState {
             address_u: address,
             address_v: address,
@@ -93,14 +100,19 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         }
     }
     if args.exec.json {
-        print_json(&pass_json(&out))?;
+        let mut json = pass_json(&out);
+        json["constant_table"] = loaded.constants.as_ref().map_or(Value::Null, table_json);
+        print_json(&json)?;
     } else {
-        let text = pass_text(
+        let mut text = pass_text(
             &loaded.file.name,
             &args.image.display().to_string(),
             &out,
             args.output.as_deref().filter(|_| !ui.quiet),
         );
+        if let Some(t) = &loaded.constants {
+            text.push_str(&table_text(t));
+        }
         say(ui, &text)?;
     }
     Ok(Outcome::from_ok(

@@ -33,6 +33,7 @@ pub struct Args {
 }
 
 pub fn run(args: Args, ui: &Ui) -> super::Result {
+    super::bound_threads(args.exec.threads())?;
     if let Some(out) = &args.output {
         let shader = Path::new(&args.shader);
         check_output_path(out, &[&args.image, shader])?;

@@ -5,7 +5,6 @@ use super::args::{FloatRulesArg, InputArgs, SourceArgs};
 use super::io::{color_stderr, print, print_json, shader_source};
 use super::ui::Ui;
 use super::{BadInput, Outcome};
-use ps30::core::diag::SourceFile;
 use ps30::core::load;
 use ps30::core::translate::{self, header, Entry, Target, Written};
 use std::io::IsTerminal;
@@ -69,8 +68,7 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         super::io::check_output_path(out, &[std::path::Path::new(&args.shader)])?;
     }
     let src = shader_source(&args.shader, args.input.max_input_bytes)?;
-    let file = SourceFile::new(src.name.clone(), src.text);
-    let loaded = load::load(file, &args.source.options()).map_err(|e| {
+    let loaded = load::load(src.file, &args.source.options()).map_err(|e| {
         e.diagnostics.emit(&e.file, color_stderr());
         BadInput(e.to_string())
     })?;

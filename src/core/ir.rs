@@ -289,11 +289,15 @@ pub struct InputDecl {
     pub origin: Origin,
 }
 
-/// `dcl_2d s#`, `dcl_cube s#`, `dcl_volume s#`.
+/// `dcl_2d s#`, `dcl_cube s#`, `dcl_volume s#`, with the `_centroid` and
+/// `_pp` Microsoft's assembler accepts and encodes there (they change
+/// nothing ps30 models, and are written back as they were given).
 #[derive(Clone, Debug, PartialEq)]
 pub struct SamplerDecl {
     pub index: u32,
     pub ty: SamplerType,
+    pub centroid: bool,
+    pub pp: bool,
     pub origin: Origin,
 }
 

@@ -4,7 +4,9 @@
 //! One instruction table ([`isa`]) and one IR ([`ir`]) join the stages, as
 //! in naga: the [`front`] end reads text into an AST and expands
 //! REPEAT_BLOCK, [`valid`] lowers it and checks the ps_3_0 rules into an
-//! [`ir::Shader`], and [`load`] runs the three in one call. The [`cost`]
+//! [`ir::Shader`], and [`load`] runs the three in one call. [`bytecode`]
+//! reads compiled shaders into a listing the front end reads like text, and
+//! writes the tokens back. The [`cost`]
 //! model and the [`emu`]lator take a validated shader, and so does the
 //! [`translate`]ion to a naga module, which the [`gpu`] backend draws on a
 //! Vulkan device; the emulator and the translation compute by the same
@@ -15,6 +17,7 @@
 //! [`numbers`] formats figures the same way everywhere, and [`output`] writes
 //! files atomically. Nothing here imports from `jobs` or `present`.
 
+pub mod bytecode;
 pub mod cost;
 pub mod diag;
 pub mod emu;

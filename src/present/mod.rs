@@ -4,6 +4,8 @@
 
 pub mod check;
 pub mod compare;
+pub mod constants;
+pub mod disasm;
 pub mod luminance;
 pub mod plan;
 pub mod profile;

@@ -23,6 +23,14 @@ pub enum Stmt {
     RepeatEnd {
         span: Span,
     },
+    /// A comment block of a compiled shader, kept token for token: a
+    /// `//#comment` line and its `//#+` continuation lines, each token in
+    /// hexadecimal (the constant table `CTAB` is one). Validation ignores
+    /// it; the bytecode writer emits it where it stands.
+    Comment {
+        tokens: Vec<u32>,
+        span: Span,
+    },
 }
 
 /// A REPEAT_BLOCK count: a literal or a name bound with `-D name=value`.

@@ -143,7 +143,7 @@ pub fn run(
     let frame = load_image(images, FRAME_IMAGE)?;
     let mut lum = Vec::new();
     for (p1, last, p2, block, format) in &pipelines {
-        next(&format!("luminance: {}", p1.name));
+        next(&format!("luminance: {}", p1.name()));
         let s = luminance::Settings {
             block: *block,
             format: *format,

@@ -306,16 +306,16 @@ pub fn compare_luminance(
             for (k, v) in defines {
                 opts.defines.insert(k.to_string(), v as u64);
             }
-            let l = crate::core::load::load_str(&src.name, &src.text, &opts)
+            let l = crate::core::load::load(src.file.clone(), &opts)
                 .map_err(|e| CompareError::Other(e.to_string()))?;
             shaders.push(l.shader);
         }
     }
     Ok(LuminanceComparison {
         image: image.0.to_string(),
-        pass1: pass1.name.clone(),
-        pass1_last: last.map(|l| l.name.clone()),
-        pass2: pass2.name.clone(),
+        pass1: pass1.name().to_string(),
+        pass1_last: last.map(|l| l.name().to_string()),
+        pass2: pass2.name().to_string(),
         block: e.block,
         targets: e.targets,
         target_format: e.target_format.d3d_name().into(),

@@ -755,24 +755,24 @@ impl Resolver {
         if let Some(i) = self.shader_keys.iter().position(|k| *k == key) {
             return Ok(i);
         }
-        let (name, text) = match crate::jobs::bundled::listing(spec) {
-            Some((path, text)) => (path.to_string(), text.to_string()),
-            None => {
-                let file = self.dir.join(spec);
-                let bytes = std::fs::read(&file)
-                    .map_err(|e| self.err(field, format!("{}: {e}", file.display())))?;
-                let text = String::from_utf8(bytes)
-                    .map_err(|_| self.err(field, format!("{}: not UTF-8 text", file.display())))?;
-                self.sources.push(file.clone());
-                (file.display().to_string(), text)
-            }
-        };
         let options = Options {
             defines: key.1.clone(),
             ..Options::default()
         };
-        let loaded =
-            load::load_str(&name, &text, &options).map_err(|e| self.err(field, e.to_string()))?;
+        // A file is assembly or ps_3_0 bytecode, told apart by content.
+        let source = match crate::jobs::bundled::listing(spec) {
+            Some((path, text)) => crate::core::diag::SourceFile::new(path, text),
+            None => {
+                let file = self.dir.join(spec);
+                let bytes = std::fs::read(&file)
+                    .map_err(|e| self.err(field, format!("{}: {e}", file.display())))?;
+                self.sources.push(file.clone());
+                load::source_file(&file.display().to_string(), bytes, &options)
+                    .map_err(|e| self.err(field, e.to_string()))?
+            }
+        };
+        let name = source.name.clone();
+        let loaded = load::load(source, &options).map_err(|e| self.err(field, e.to_string()))?;
         self.list.shaders.push(ShaderSpec { name, loaded });
         self.shader_keys.push(key);
         Ok(self.list.shaders.len() - 1)
