@@ -684,7 +684,9 @@ fn index_page(g: &Generated) -> String {
          A16B16G16R16F, L̄w, tone map (`ps30 study article-chain`) |\n\n\
          [gpu-crosscheck.md](gpu-crosscheck.md) is not written by `verify`: `ps30 compare --all` \
          writes it on the GPU it finds (the page names the device), every bundled shader on the \
-         emulator and on that device.\n",
+         emulator and on that device. The committed page is an NVIDIA H100's; \
+         [gpu-crosscheck-llvmpipe.md](gpu-crosscheck-llvmpipe.md) is the same command's page on \
+         Mesa's llvmpipe (`--reports DIR` and a rename), for comparison.\n",
         n = g.tonemap.len(),
         files = g
             .files
