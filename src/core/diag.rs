@@ -21,8 +21,14 @@ pub struct SourceFile {
 }
 
 impl SourceFile {
+    /// A source named `name`. A UTF-8 byte-order mark at the start (which
+    /// editors on Windows often write) is not part of the text and is
+    /// dropped, so spans count from the first real character.
     pub fn new(name: impl Into<String>, text: impl Into<String>) -> SourceFile {
-        let text = text.into();
+        let mut text = text.into();
+        if text.starts_with('\u{feff}') {
+            text.drain(..'\u{feff}'.len_utf8());
+        }
         let mut line_starts = vec![0];
         line_starts.extend(text.match_indices('\n').map(|(i, _)| i + 1));
         SourceFile {
@@ -61,7 +67,7 @@ impl SourceFile {
     }
 }
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub enum Severity {
     Warning,
     Error,
@@ -81,6 +87,10 @@ pub struct Diagnostic {
     pub help: Option<String>,
     /// Further notes (e.g. which REPEAT_BLOCK repetition).
     pub notes: Vec<String>,
+    /// Other places with exactly the same problem (message, label and help),
+    /// folded into this one by [`Diagnostics::grouped`]: one report, with
+    /// the count and the lines, instead of one per unrolled copy.
+    pub also: Vec<Span>,
 }
 
 impl Diagnostic {
@@ -93,6 +103,7 @@ impl Diagnostic {
             secondary: Vec::new(),
             help: None,
             notes: Vec::new(),
+            also: Vec::new(),
         }
     }
 
@@ -136,7 +147,7 @@ impl Diagnostic {
         self
     }
 
-    fn to_codespan(&self) -> CsDiagnostic<()> {
+    fn to_codespan(&self, file: &SourceFile) -> CsDiagnostic<()> {
         let base = match self.severity {
             Severity::Error => CsDiagnostic::error(),
             Severity::Warning => CsDiagnostic::warning(),
@@ -147,6 +158,7 @@ impl Diagnostic {
             labels.push(Label::secondary((), span.range()).with_message(text.clone()));
         }
         let mut notes = self.notes.clone();
+        notes.extend(self.also_note(file));
         if let Some(help) = &self.help {
             notes.push(format!("help: {help}"));
         }
@@ -157,27 +169,57 @@ impl Diagnostic {
 
     /// Renders the diagnostic as plain text.
     pub fn render(&self, file: &SourceFile) -> String {
-        let files = SimpleFile::new(file.name.as_str(), file.text.as_str());
-        term::emit_into_string(&Config::default(), &files, &self.to_codespan())
-            .unwrap_or_else(|_| self.fallback(file))
+        self.render_styled(file, false)
     }
 
-    /// Renders the diagnostic to a terminal stream, in colour when `color`.
-    pub fn emit(&self, file: &SourceFile, color: bool) {
-        use codespan_reporting::term::termcolor::{ColorChoice, StandardStream};
-        let choice = if color {
-            ColorChoice::Auto
-        } else {
-            ColorChoice::Never
-        };
-        let stream = StandardStream::stderr(choice);
-        let mut lock = stream.lock();
+    /// Renders the diagnostic as text, with ANSI colours when `color` (for
+    /// a terminal). The caller decides where it goes.
+    pub fn render_styled(&self, file: &SourceFile, color: bool) -> String {
+        use codespan_reporting::term::termcolor::Ansi;
         let files = SimpleFile::new(file.name.as_str(), file.text.as_str());
-        if term::emit_to_write_style(&mut lock, &Config::default(), &files, &self.to_codespan())
-            .is_err()
-        {
-            eprintln!("{}", self.fallback(file));
+        let diagnostic = self.to_codespan(file);
+        let config = Config::default();
+        let rendered = if color {
+            let mut out = Ansi::new(Vec::new());
+            term::emit_to_write_style(&mut out, &config, &files, &diagnostic)
+                .ok()
+                .and_then(|()| String::from_utf8(out.into_inner()).ok())
+        } else {
+            term::emit_into_string(&config, &files, &diagnostic).ok()
+        };
+        rendered.unwrap_or_else(|| self.fallback(file) + "\n")
+    }
+
+    /// The note that lists the other places of a grouped diagnostic.
+    fn also_note(&self, file: &SourceFile) -> Option<String> {
+        if self.also.is_empty() {
+            return None;
         }
+        let (first, last) = self.line_range(file);
+        Some(format!(
+            "the same {} at {} (lines {first}–{last} in all)",
+            match self.severity {
+                Severity::Error => "error",
+                Severity::Warning => "warning",
+            },
+            match self.also.len() {
+                1 => "1 more place".to_string(),
+                n => format!("{n} more places"),
+            },
+        ))
+    }
+
+    /// How many places this diagnostic stands for (1 unless grouped).
+    pub fn count(&self) -> usize {
+        1 + self.also.len()
+    }
+
+    /// The first and last line of every place it stands for.
+    pub fn line_range(&self, file: &SourceFile) -> (usize, usize) {
+        let lines = std::iter::once(self.span)
+            .chain(self.also.iter().copied())
+            .map(|s| file.line_of(s.start));
+        lines.fold((usize::MAX, 0), |(lo, hi), l| (lo.min(l), hi.max(l)))
     }
 
     /// `file:line:col: severity: message`, used when the renderer cannot be.
@@ -247,14 +289,62 @@ impl Diagnostics {
         self.items.sort_by_key(|d| (d.span.start, d.severity));
     }
 
-    /// Renders every diagnostic as plain text, followed by a count line.
+    /// Renders every diagnostic as plain text, identical ones grouped.
     pub fn render(&self, file: &SourceFile) -> String {
-        let mut out = String::new();
-        for d in &self.items {
-            out.push_str(&d.render(file));
-        }
-        out
+        self.grouped().iter().map(|d| d.render(file)).collect()
     }
+
+    /// The diagnostics with identical ones — the same severity, message,
+    /// label and help at different places, as the copies of one unrolled
+    /// instruction give — folded into the first of them (its
+    /// [`Diagnostic::also`] lists the others). Order is kept. Every command
+    /// prints and serialises diagnostics through this, so one problem is one
+    /// line, with its count and lines, in text and JSON alike.
+    pub fn grouped(&self) -> Vec<Diagnostic> {
+        group(&self.items)
+    }
+}
+
+/// [`Diagnostics::grouped`] for any list of diagnostics.
+pub fn group(items: &[Diagnostic]) -> Vec<Diagnostic> {
+    let keys = items.iter().map(|d| {
+        (
+            d.severity,
+            d.message.as_str(),
+            d.label.as_str(),
+            d.help.as_deref(),
+        )
+    });
+    group_indices(keys)
+        .into_iter()
+        .map(|members| {
+            let mut first = items[members[0]].clone();
+            for &i in &members[1..] {
+                first.also.push(items[i].span);
+                first.also.extend(items[i].also.iter().copied());
+            }
+            first
+        })
+        .collect()
+}
+
+/// The rule that groups identical findings, for every kind of finding
+/// (validator diagnostics here, draw findings in
+/// [`crate::core::emu::findings`]): the indices of `keys` grouped by equal
+/// key, each group in order and the groups in order of first appearance.
+pub fn group_indices<K: Eq + std::hash::Hash>(keys: impl Iterator<Item = K>) -> Vec<Vec<usize>> {
+    let mut groups: Vec<Vec<usize>> = Vec::new();
+    let mut index: std::collections::HashMap<K, usize> = std::collections::HashMap::new();
+    for (i, key) in keys.enumerate() {
+        match index.get(&key) {
+            Some(&g) => groups[g].push(i),
+            None => {
+                index.insert(key, groups.len());
+                groups.push(vec![i]);
+            }
+        }
+    }
+    groups
 }
 
 /// A source that could not be turned into a shader, with its diagnostics.

@@ -9,7 +9,7 @@
 use crate::core::diag::{Diagnostics, SourceError, SourceFile};
 use crate::core::front::{ast, parse, repeat};
 use crate::core::ir::{Origin, Shader};
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, BTreeSet};
 
 /// Options of the front end.
 #[derive(Clone, Debug)]
@@ -32,13 +32,38 @@ impl Default for Options {
 /// A shader loaded from source, with the warnings found on the way.
 #[derive(Clone, Debug)]
 pub struct Loaded {
+    /// The source, for diagnostics.
     pub file: SourceFile,
+    /// The validated shader.
     pub shader: Shader,
+    /// Warnings of validation (errors make no `Loaded`).
     pub warnings: Diagnostics,
+    /// The names the source uses as REPEAT_BLOCK counts (what `-D` can
+    /// bind; see [`crate::core::audit`]).
+    pub defines_used: BTreeSet<String>,
+}
+
+/// The names used as REPEAT_BLOCK counts in `stmts`.
+fn count_names(stmts: &[ast::Stmt]) -> BTreeSet<String> {
+    stmts
+        .iter()
+        .filter_map(|s| match s {
+            ast::Stmt::RepeatBegin {
+                count: ast::Count::Name { name, .. },
+                ..
+            } => Some(name.clone()),
+            _ => None,
+        })
+        .collect()
 }
 
 /// Parses, expands and validates a source file.
 pub fn load(file: SourceFile, options: &Options) -> Result<Loaded, SourceError> {
+    if let Some(d) = parse::missing_version(&file.text) {
+        let mut diagnostics = Diagnostics::default();
+        diagnostics.push(d);
+        return Err(SourceError { file, diagnostics });
+    }
     let (stmts, mut diags) = parse::parse(&file.text);
     if diags.has_errors() {
         // Still report macro problems of the lines that did parse.
@@ -76,6 +101,7 @@ pub fn load(file: SourceFile, options: &Options) -> Result<Loaded, SourceError> 
         Ok((shader, mut warnings)) => {
             warnings.sort();
             Ok(Loaded {
+                defines_used: count_names(&stmts),
                 file,
                 shader,
                 warnings,

@@ -7,9 +7,11 @@
 //! [`ir::Shader`], and [`load`] runs the three in one call. The [`cost`]
 //! model and the [`emu`]lator take a validated shader; [`image`] reads and
 //! writes the pixels they work on. [`diag`] renders every stage's errors,
-//! [`numbers`] formats figures the same way everywhere, and [`output`] writes
-//! files atomically. Nothing here imports from `jobs` or `present`.
+//! [`numbers`] formats figures the same way everywhere, [`output`] writes
+//! files atomically, and [`audit`] holds the constants a draw is given
+//! against what its shader reads. Nothing here imports from `jobs` or `present`.
 
+pub mod audit;
 pub mod cost;
 pub mod diag;
 pub mod emu;

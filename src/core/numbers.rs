@@ -18,6 +18,21 @@ pub fn thousands(v: u64) -> String {
     out
 }
 
+/// `1 error`, `12 errors`, `1,310,720 pixels`: a count with its noun in the
+/// right number, thousands separated.
+pub fn count(n: u64, one: &str, many: &str) -> String {
+    format!("{} {}", thousands(n), if n == 1 { one } else { many })
+}
+
+/// `a`, `a and b`, `a, b and c`.
+pub fn list(items: &[&str]) -> String {
+    match items {
+        [] => String::new(),
+        [one] => one.to_string(),
+        [init @ .., last] => format!("{} and {last}", init.join(", ")),
+    }
+}
+
 /// A range as `64,853` or `1,000–2,000`.
 pub fn range_text(r: Range) -> String {
     if r.is_exact() {
@@ -89,5 +104,9 @@ mod tests {
         assert_eq!(number(1.5e-9), "1.5000e-9");
         assert_eq!(thousands(64853), "64,853");
         assert_eq!(thousands(999), "999");
+        assert_eq!(count(1, "line", "lines"), "1 line");
+        assert_eq!(list(&["c1", "i1", "i2"]), "c1, i1 and i2");
+        assert_eq!(count(0, "line", "lines"), "0 lines");
+        assert_eq!(count(12_345, "pixel", "pixels"), "12,345 pixels");
     }
 }

@@ -15,7 +15,7 @@ use serde_json::{json, Value};
 pub const LOD_WARNING: f32 = 1.0;
 
 /// What a finding is about.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum FindingKind {
     DivergentGradient,
@@ -168,4 +168,38 @@ pub fn diagnostic(f: &Finding) -> Diagnostic {
     Diagnostic::warning(f.site.span, f.message.clone())
         .with_label(f.label.clone())
         .with_help(f.help.clone())
+}
+
+/// Identical findings (same kind, message, label and help) at several
+/// places: the first, how many, and the first and last source line.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FindingGroup<'a> {
+    pub first: &'a Finding,
+    pub count: usize,
+    pub lines: (usize, usize),
+}
+
+/// The findings grouped by [`crate::core::diag::group_indices`], the rule
+/// every finding is grouped by: the 117 unrolled copies of one `texld`
+/// are one finding with a count.
+pub fn grouped(found: &[Finding]) -> Vec<FindingGroup<'_>> {
+    let keys = found.iter().map(|f| {
+        (
+            f.kind,
+            f.message.as_str(),
+            f.label.as_str(),
+            f.help.as_str(),
+        )
+    });
+    crate::core::diag::group_indices(keys)
+        .into_iter()
+        .map(|members| {
+            let lines = members.iter().map(|&i| found[i].site.line);
+            FindingGroup {
+                first: &found[members[0]],
+                count: members.len(),
+                lines: (lines.clone().min().unwrap_or(0), lines.max().unwrap_or(0)),
+            }
+        })
+        .collect()
 }
