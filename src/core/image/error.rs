@@ -59,6 +59,9 @@ pub enum ImageError {
         format: &'static str,
         source: ForeignError,
     },
+    /// ps30 cannot write this file: its extension names no format ps30
+    /// writes, or the format cannot hold the values.
+    Unwritable { path: PathBuf, problem: String },
     /// A buffer handed to a writer does not hold `width * height` pixels.
     DataLength {
         path: PathBuf,
@@ -102,6 +105,7 @@ impl ImageError {
             | ImageError::TrailingData { path, .. }
             | ImageError::Decode { path, .. }
             | ImageError::Encode { path, .. }
+            | ImageError::Unwritable { path, .. }
             | ImageError::DataLength { path, .. } => path,
         }
     }
@@ -153,6 +157,7 @@ impl fmt::Display for ImageError {
             ImageError::Encode { format, source, .. } => {
                 write!(f, "{path}: cannot encode {format} file: {source}")
             }
+            ImageError::Unwritable { problem, .. } => write!(f, "{path}: {problem}"),
             ImageError::DataLength {
                 what,
                 expected,

@@ -4,7 +4,8 @@
 //! reference on real HDR photographs, so it must read the formats such images
 //! come in (OpenEXR, Radiance RGBE, PFM) into one in-memory form,
 //! [`HdrImage`], and write what the emulated passes produce
-//! ([`RenderTarget`]s as OpenEXR or PFM, tone-mapped results as PNG).
+//! ([`RenderTarget`]s as OpenEXR, PFM, Radiance or PNG, chosen by the
+//! output's extension: [`OutputFormat`]; tone-mapped results as PNG).
 //!
 //! Reading never trusts a header: the claimed size is checked against
 //! [`ImageLimits`] before any pixel memory is allocated, and every failure is
@@ -17,6 +18,7 @@ mod openexr;
 mod pfm;
 mod png;
 mod radiance;
+mod save;
 mod target;
 
 pub use error::{ForeignError, ImageError};
@@ -24,6 +26,7 @@ pub use mip::{full_chain_levels, MipChain};
 pub use openexr::write_exr;
 pub use pfm::write_pfm;
 pub use png::write_png_rgb8;
+pub use save::{unorm8, write_radiance, write_rgb_float, write_target, OutputFormat, Written};
 pub use target::{RenderTarget, TargetFormat, Texture};
 
 use std::fs::File;

@@ -1,5 +1,5 @@
-//! 8-bit sRGB PNG output, for looking at tone-mapped results with any image
-//! viewer.
+//! 8-bit PNG output, for looking at results with any image viewer:
+//! tone-mapped images (sRGB) and render targets (see `save`).
 
 use super::write_atomically;
 use super::ImageError;
@@ -10,17 +10,35 @@ use std::path::Path;
 /// Writes `rgb` (`width * height` pixels of 3 bytes, row-major, top row
 /// first, already sRGB-encoded) as a PNG file, atomically.
 pub fn write_png_rgb8(path: &Path, width: u32, height: u32, rgb: &[u8]) -> Result<(), ImageError> {
-    let expected = u64::from(width) * u64::from(height) * 3;
-    if rgb.len() as u64 != expected {
+    write_png(path, width, height, 3, rgb)
+}
+
+/// Writes 8-bit samples, `channels` per pixel (1 grey, 2 grey + alpha, 3
+/// RGB, 4 RGBA), row-major, top row first, as a PNG file, atomically.
+pub(crate) fn write_png(
+    path: &Path,
+    width: u32,
+    height: u32,
+    channels: usize,
+    samples: &[u8],
+) -> Result<(), ImageError> {
+    let expected = u64::from(width) * u64::from(height) * channels as u64;
+    if samples.len() as u64 != expected {
         return Err(ImageError::DataLength {
             path: path.to_path_buf(),
-            what: "the RGB8 buffer",
+            what: "the 8-bit sample buffer",
             expected,
-            found: rgb.len() as u64,
+            found: samples.len() as u64,
         });
     }
+    let colour = match channels {
+        1 => ExtendedColorType::L8,
+        2 => ExtendedColorType::La8,
+        3 => ExtendedColorType::Rgb8,
+        _ => ExtendedColorType::Rgba8,
+    };
     write_atomically(path, "PNG", |w| {
-        PngEncoder::new(w).write_image(rgb, width, height, ExtendedColorType::Rgb8)?;
+        PngEncoder::new(w).write_image(samples, width, height, colour)?;
         Ok(())
     })
 }
