@@ -8,16 +8,24 @@
 //!
 //! ```text
 //! verify ──▶ gen ──▶ luminance ◀── tonemap      profile ──▶ scenes
-//!    │                   ▲             ▲            │
-//!    └───────────────────┴─────────────┘            └──▶ luminance
+//!    │        ▲          ▲   ▲         │            │
+//!    │        └─ blocks ─┘   │         │            └──▶ luminance
+//!    │             ▲         │         │
+//!    └─────────────┴─────────┴─────────┘   (tonemap ──▶ blocks)
 //! ```
 //!
-//! [`conformance`] (the draws of the conformance corpus) uses no other job.
+//! [`blocks`] chooses the luminance passes' blocks for an image (the
+//! planner's, with generated shaders, or a named shader's own).
+//!
+//! [`conformance`] (the draws of the conformance corpus) uses no other job;
+//! [`outputs`] (what a pass wrote, channel by channel) only the core.
 
+pub mod blocks;
 pub mod bundled;
 pub mod conformance;
 pub mod gen;
 pub mod luminance;
+pub mod outputs;
 pub mod profile;
 pub mod scenes;
 pub mod tonemap;

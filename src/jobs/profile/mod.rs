@@ -188,6 +188,18 @@ pub struct Setup {
     pub constants: Constants,
     pub bins: usize,
     pub threads: Option<usize>,
+    /// The emulator's bounds (executed slots per pixel, target size).
+    pub limits: emu::EmuLimits,
+}
+
+/// The float constants the input sets itself: the G-buffer scene sets c4
+/// (see [`Scene::material_scale`](crate::jobs::scenes::lights::Scene::material_scale)),
+/// an image sets none.
+pub fn floats_set_by(input: &Input) -> &'static [u32] {
+    match input {
+        Input::GBuffer(..) => &[4],
+        Input::Image { .. } => &[],
+    }
 }
 
 /// The result of `ps30 profile`.
@@ -222,14 +234,21 @@ impl ProfileRun {
     }
 }
 
-/// Runs `ps30 profile`.
+/// Runs `ps30 profile` on a source (loaded with `setup.defines`); a source
+/// that does not load gives its first error (the command line loads the
+/// shader itself, with every diagnostic, and calls [`profile_loaded`]).
 pub fn profile(name: &str, text: &str, setup: &Setup) -> Result<ProfileRun, String> {
     let mut opts = Options::default();
     for (k, v) in &setup.defines {
         opts.defines.insert(k.clone(), *v);
     }
-    let loaded = load::load_str(name, text, &opts)
-        .map_err(|e| format!("{}\n{e}", e.diagnostics.render(&e.file)))?;
+    let loaded = load::load_str(name, text, &opts).map_err(|e| e.to_string())?;
+    profile_loaded(loaded, setup)
+}
+
+/// Runs `ps30 profile` on a loaded shader.
+pub fn profile_loaded(loaded: load::Loaded, setup: &Setup) -> Result<ProfileRun, String> {
+    let name = loaded.file.name.clone();
     let compiled = emu::compile(&loaded.shader).map_err(|e| e.to_string())?;
     let mut env = Environment::default();
     for (i, v) in setup.constants.int.iter().enumerate() {
@@ -253,9 +272,11 @@ pub fn profile(name: &str, text: &str, setup: &Setup) -> Result<ProfileRun, Stri
         Input::GBuffer(w, h) => {
             scene =
                 crate::jobs::scenes::lights::Scene::synthetic(*w, *h).map_err(|e| e.to_string())?;
-            crate::jobs::scenes::lights::Scene::check_constants(loaded.shader.program())
-                .map_err(|e| format!("{name}: not a light-model shader for this scene: {e}"))?;
+            crate::jobs::scenes::lights::Scene::check_constants(loaded.shader.program()).map_err(
+                |e| format!("{name}: not a light-model shader for the G-buffer scene: {e}"),
+            )?;
             let mut draw = scene.draw();
+            draw.limits = setup.limits;
             draw.record_lod = true;
             // The command line's constants, except c4, which the scene sets.
             let mut floats = setup.constants.float.clone();
@@ -285,6 +306,7 @@ pub fn profile(name: &str, text: &str, setup: &Setup) -> Result<ProfileRun, Stri
         } => {
             let (tw, th) = *target;
             let mut draw = Draw::new(tw, th);
+            draw.limits = setup.limits;
             if loaded
                 .shader
                 .program()

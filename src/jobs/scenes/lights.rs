@@ -283,12 +283,23 @@ impl Scene {
             (2, [HALF[0], HALF[1], HALF[2], 0.0]),
             (3, [WRAP[0], WRAP[1], 0.0, 0.0]),
         ];
+        let list = |v: [f32; 4]| format!("{}, {}, {}, {}", v[0], v[1], v[2], v[3]);
         for (c, v) in want {
-            if program.float_def(c) != Some(v) {
-                return Err(SceneError(format!(
-                    "the shader's c{c} is {:?}, the CPU computation assumes {v:?}",
-                    program.float_def(c)
-                )));
+            match program.float_def(c) {
+                Some(d) if d == v => {}
+                Some(d) => {
+                    return Err(SceneError(format!(
+                        "the shader defines c{c} = ({}), but the scene's CPU computation assumes ({})",
+                        list(d),
+                        list(v)
+                    )))
+                }
+                None => {
+                    return Err(SceneError(format!(
+                        "the shader does not define c{c} with `def`; the scene's CPU computation assumes c{c} = ({})",
+                        list(v)
+                    )))
+                }
             }
         }
         Ok(())
