@@ -3,10 +3,12 @@
 //! a job or a core stage returned and renders it.
 
 pub mod check;
+pub mod json;
 pub mod luminance;
 pub mod plan;
 pub mod profile;
 pub mod report;
+pub mod shaders;
 pub mod tonemap;
 pub mod unroll;
 pub mod verify;
