@@ -15,7 +15,7 @@ fn main() -> ExitCode {
             return ExitCode::from(if e.use_stderr() { 2 } else { 0 });
         }
     };
-    let ui = Ui::new(parsed.quiet);
+    let ui = Ui::new(parsed.quiet, parsed.color);
     let outcome = match parsed.command {
         Command::Check(args) => cli::check::run(args, &ui),
         Command::Expand(args) => cli::expand::run(args, &ui),
@@ -23,15 +23,18 @@ fn main() -> ExitCode {
         Command::Luminance(args) => cli::luminance::run(args, &ui),
         Command::Tonemap(args) => cli::tonemap::run(args, &ui),
         Command::Profile(args) => cli::profile::run(args, &ui),
+        Command::Shaders(args) => cli::shaders::run(args, &ui),
         Command::Verify(args) => cli::verify::run(args, &ui),
         Command::Unroll(args) => cli::unroll::run(args, &ui),
         Command::Plan(args) => cli::plan::run(args, &ui),
+        Command::Completions(args) => cli::completions::run(args, &ui),
+        Command::Man(args) => cli::man::run(args, &ui),
     };
     match outcome {
         Ok(Outcome::Ok) => ExitCode::SUCCESS,
         Ok(Outcome::Problem) => ExitCode::from(1),
         Err(BadInput(msg)) => {
-            eprintln!("error: {msg}");
+            cli::io::eprint(&format!("error: {msg}\n"));
             ExitCode::from(2)
         }
     }

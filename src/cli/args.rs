@@ -7,8 +7,9 @@
 //! given. Only the command line uses clap; the library sees plain values.
 
 use clap::Args;
-use ps30::core::cost::Profile;
-use ps30::core::emu::{self, Address, Constants, Filter, MipFilter};
+use ps30::core::audit::Given;
+use ps30::core::cost::{Environment, Profile};
+use ps30::core::emu::{self, Address, Constants, Filter, MipFilter, SamplerState};
 use ps30::core::image::TargetFormat;
 use ps30::core::load::Options;
 
@@ -176,9 +177,12 @@ impl SourceArgs {
     }
 }
 
-/// Integer and boolean constants set by the application.
+/// Float, integer and boolean constants set by the application.
 #[derive(Args)]
 pub struct ConstantArgs {
+    /// Float constant set by the application, e.g. --const c3=0.27,0.67,0.06,0.01.
+    #[arg(long = "const", value_name = "cN=X[,Y,Z,W]", value_parser = parse_float_const)]
+    pub floats: Vec<(u32, [f32; 4])>,
     /// Integer constant set by the application, e.g. --int i1=128 or --int i0=16,0,1,0.
     #[arg(long = "int", value_name = "iN=X[,Y,Z,W]", value_parser = parse_int_const)]
     pub ints: Vec<(u32, [i32; 4])>,
@@ -187,29 +191,51 @@ pub struct ConstantArgs {
     pub bools: Vec<(u32, bool)>,
 }
 
-/// The register files of a draw from `--const`, `--int` and `--bool` values
-/// (registers nobody set stay 0, as in a draw).
-pub fn constants(
-    floats: &[(u32, [f32; 4])],
-    ints: &[(u32, [i32; 4])],
-    bools: &[(u32, bool)],
-) -> Constants {
-    fn set<T: Copy>(file: &mut Vec<T>, zero: T, i: u32, v: T) {
-        let i = i as usize;
-        file.resize(file.len().max(i + 1), zero);
-        file[i] = v;
+impl ConstantArgs {
+    /// What the application gives, for the audit: these registers (and
+    /// `extra_floats`, which the command sets itself) and the `-D` names.
+    pub fn given(&self, extra_floats: &[u32], source: &SourceArgs) -> Given {
+        Given {
+            floats: self
+                .floats
+                .iter()
+                .map(|c| c.0)
+                .chain(extra_floats.iter().copied())
+                .collect(),
+            ints: self.ints.iter().map(|c| c.0).collect(),
+            bools: self.bools.iter().map(|c| c.0).collect(),
+            defines: source.define.iter().map(|(n, _)| n.clone()).collect(),
+        }
     }
-    let mut c = Constants::default();
-    for &(i, v) in floats {
-        set(&mut c.float, [0.0; 4], i, v);
+
+    /// The integer and boolean constants the cost model may use.
+    pub fn environment(&self) -> Environment {
+        Environment {
+            ints: self.ints.iter().copied().collect(),
+            bools: self.bools.iter().copied().collect(),
+        }
     }
-    for &(i, v) in ints {
-        set(&mut c.int, [0; 4], i, v);
+
+    /// The register files of a draw (registers nobody set stay 0, as in a
+    /// draw; the audit refuses a run that reads one).
+    pub fn constants(&self) -> Constants {
+        fn set<T: Copy>(file: &mut Vec<T>, zero: T, i: u32, v: T) {
+            let i = i as usize;
+            file.resize(file.len().max(i + 1), zero);
+            file[i] = v;
+        }
+        let mut c = Constants::default();
+        for &(i, v) in &self.floats {
+            set(&mut c.float, [0.0; 4], i, v);
+        }
+        for &(i, v) in &self.ints {
+            set(&mut c.int, [0; 4], i, v);
+        }
+        for &(i, v) in &self.bools {
+            set(&mut c.bool, false, i, v);
+        }
+        c
     }
-    for &(i, v) in bools {
-        set(&mut c.bool, false, i, v);
-    }
-    c
 }
 
 /// `ps30 check`'s limits.
@@ -304,10 +330,39 @@ impl ExecArgs {
     }
 }
 
+/// s0's sampler state for commands that draw over an image.
+#[derive(Args)]
+pub struct SamplerArgs {
+    /// s0's MAGFILTER and MINFILTER: point (nearest texel) or linear (bilinear).
+    #[arg(long, value_enum, default_value = "point")]
+    pub filter: FilterArg,
+    /// s0's ADDRESSU and ADDRESSV: what a read outside [0, 1] returns.
+    #[arg(long, value_enum, value_name = "MODE", default_value = "border")]
+    pub address: AddressArg,
+    /// Border colour R,G,B,A for --address border.
+    #[arg(long, value_name = "R,G,B,A", value_parser = parse_float4, default_value = "0,0,0,0", allow_negative_numbers = true)]
+    pub border: [f32; 4],
+}
+
+impl SamplerArgs {
+    /// The sampler state these flags describe (no mips).
+    pub fn state(&self) -> SamplerState {
+        let address = self.address.into();
+        SamplerState {
+            address_u: address,
+            address_v: address,
+            border: self.border,
+            ..SamplerState::filtered(self.filter.into())
+        }
+    }
+}
+
 /// Render-target formats.
 #[derive(Clone, Copy, clap::ValueEnum)]
 pub enum FormatArg {
+    /// D3DFMT_R32F: one 32-bit float channel (red).
     F32,
+    /// D3DFMT_A16B16G16R16F: four half-float channels, ±65,504 at most.
     F16,
 }
 
@@ -323,7 +378,9 @@ impl From<FormatArg> for TargetFormat {
 /// MAGFILTER / MINFILTER.
 #[derive(Clone, Copy, Debug, clap::ValueEnum)]
 pub enum FilterArg {
+    /// The nearest texel.
     Point,
+    /// Bilinear: the four nearest texels, weighted.
     Linear,
 }
 
@@ -339,8 +396,11 @@ impl From<FilterArg> for Filter {
 /// MIPFILTER.
 #[derive(Clone, Copy, Debug, clap::ValueEnum)]
 pub enum MipFilterArg {
+    /// Level 0 only.
     None,
+    /// The nearest level.
     Point,
+    /// A blend of the two nearest levels.
     Linear,
 }
 
@@ -357,10 +417,15 @@ impl From<MipFilterArg> for MipFilter {
 /// ADDRESSU / ADDRESSV.
 #[derive(Clone, Copy, Debug, clap::ValueEnum)]
 pub enum AddressArg {
+    /// The border colour (--border).
     Border,
+    /// The nearest edge texel.
     Clamp,
+    /// Repeat the image.
     Wrap,
+    /// Repeat, every other copy mirrored.
     Mirror,
+    /// Mirror once about 0, then clamp.
     Mirroronce,
 }
 

@@ -1,16 +1,17 @@
 //! `ps30 check`: slots and executed instructions against the limits.
 
 use super::args::{ConstantArgs, LimitArgs, SourceArgs};
-use super::io::{load_file, print_json, say};
+use super::io::{audit, load_shader, print_json, say};
 use super::ui::Ui;
 use super::Outcome;
-use ps30::core::cost::{self, Environment, Profile, Verdict};
-use ps30::present::check::{check_json, check_text};
-use std::path::PathBuf;
+use ps30::core::cost::{self, Profile, Verdict};
+use ps30::present::check::{check_json, check_text, check_text_short};
 
 #[derive(clap::Args)]
 pub struct Args {
-    file: PathBuf,
+    /// The shader: a file, or a bundled name such as article:loop (`ps30 shaders` lists them).
+    #[arg(value_name = "SHADER")]
+    shader: String,
     #[command(flatten)]
     source: SourceArgs,
     #[command(flatten)]
@@ -23,33 +24,22 @@ pub struct Args {
 }
 
 pub fn run(args: Args, ui: &Ui) -> super::Result {
-    let loaded = load_file(&args.file, &args.source.options())?;
-    let env = Environment {
-        ints: args.constants.ints.into_iter().collect(),
-        bools: args.constants.bools.into_iter().collect(),
-    };
-    for r in env.ints.keys() {
-        if !ui.quiet && loaded.shader.program().int_def(*r).is_some() {
-            eprintln!("note: i{r} is defined in the shader (defi), which overrides --int i{r}");
-        }
-    }
+    let loaded = load_shader(ui, &args.shader, &args.source.options())?;
+    let given = args.constants.given(&[], &args.source);
+    let found = audit(ui, &loaded, &given, false)?;
+    let env = args.constants.environment();
     let profile = Profile {
         max_slots: args.limits.max_slots,
         max_executed: args.limits.max_executed,
         ..Profile::ps_3_0()
     };
     let a = cost::analyse(&loaded.shader, &loaded.file, &env, &profile)?;
-    let name = loaded.file.name.clone();
     if args.json {
-        let warnings: Vec<String> = loaded
-            .warnings
-            .items
-            .iter()
-            .map(|w| w.to_string())
-            .collect();
-        print_json(&check_json(&name, &a, &warnings))?;
+        print_json(&check_json(&loaded, &a, &found))?;
+    } else if ui.quiet {
+        say(ui, &check_text_short(&loaded.file.name, &a))?;
     } else {
-        say(ui, &check_text(&name, &a))?;
+        say(ui, &check_text(&loaded.file.name, &a))?;
     }
     Ok(Outcome::from_ok(a.verdict == Verdict::Within))
 }

@@ -1,20 +1,17 @@
-//! What every subcommand does at its edges: reading a shader (a file or a
-//! bundled name), printing to stdout (a closed pipe is success), emitting
-//! diagnostics, and refusing an output path before any work.
+//! What every subcommand does at its edges: reading a shader (a bundled name
+//! or a file), printing to stdout (a closed pipe is success), writing to
+//! stderr (a closed stderr is no reason to stop), emitting diagnostics, and
+//! refusing an output path before any work.
 
 use super::ui::Ui;
 use super::BadInput;
-use ps30::core::diag::SourceFile;
+use ps30::core::audit::{self, Finding, Given, Kind};
+use ps30::core::diag::{Diagnostics, SourceFile};
 use ps30::core::load::{self, Loaded, Options};
+use ps30::jobs::bundled::{self, Named};
 use ps30::jobs::luminance::ShaderSource;
-use std::io::{IsTerminal, Write};
+use std::io::Write;
 use std::path::Path;
-
-/// Whether diagnostics on stderr take colour: a terminal, and `NO_COLOR`
-/// unset or empty (no-color.org).
-pub fn color_stderr() -> bool {
-    std::env::var_os("NO_COLOR").is_none_or(|v| v.is_empty()) && std::io::stderr().is_terminal()
-}
 
 /// Writes to stdout. A reader that went away (`ps30 … | head`) is not an
 /// error: there is nobody left to tell anything, so the command ends with
@@ -31,6 +28,17 @@ pub fn print(out: &str) -> std::io::Result<()> {
     }
 }
 
+/// Writes to stderr, ignoring failure: when stderr is closed or full
+/// (`ps30 … 2>&1 | head`), messages have nowhere to go, and the command still
+/// ends with the exit code its work earned. The only way the binary writes
+/// to stderr (`eprintln!` would panic on a closed stream).
+pub fn eprint(text: &str) {
+    let mut stderr = std::io::stderr().lock();
+    let _ = stderr
+        .write_all(text.as_bytes())
+        .and_then(|()| stderr.flush());
+}
+
 /// Prints human-readable text, its status words coloured when stdout
 /// takes colour (JSON and assembly go through [`print`] untouched).
 pub fn say(ui: &Ui, out: &str) -> std::io::Result<()> {
@@ -43,50 +51,118 @@ pub fn print_json(v: &impl serde::Serialize) -> Result<(), BadInput> {
     Ok(())
 }
 
-/// A file's text; not UTF-8 is bad input, with the offset of the first bad byte.
+/// Diagnostics to stderr, compiler-style, coloured as `ui` says.
+pub fn emit(ui: &Ui, diagnostics: &Diagnostics, file: &SourceFile) {
+    for d in diagnostics.grouped() {
+        eprint(&d.render_styled(file, ui.color_stderr));
+    }
+}
+
+/// A file's text. Not UTF-8 is bad input naming the line and column of the
+/// first bad byte; a UTF-8 byte-order mark at the start is dropped (see
+/// [`SourceFile::new`]).
 pub fn read_text(path: &Path) -> Result<String, BadInput> {
     let bytes = std::fs::read(path).map_err(|e| BadInput(format!("{}: {e}", path.display())))?;
     String::from_utf8(bytes).map_err(|e| {
+        let bytes = e.as_bytes();
+        let at = e.utf8_error().valid_up_to();
+        let before = std::str::from_utf8(&bytes[..at]).unwrap_or_default();
+        let line = before.matches('\n').count() + 1;
+        let column = before.rsplit('\n').next().unwrap_or("").chars().count() + 1;
         BadInput(format!(
-            "{}: not UTF-8 text (invalid byte at offset {})",
+            "{}:{line}:{column}: not UTF-8 text (byte 0x{:02X} at offset {at} starts no UTF-8 character); save the file as UTF-8",
             path.display(),
-            e.utf8_error().valid_up_to()
+            bytes[at]
         ))
     })
 }
 
-/// A shader by bundled name or file path.
+/// A shader argument, by the one rule of [`bundled::resolve`]: a bundled
+/// name (`ps30 shaders` lists them) or a file. A file that cannot be read
+/// gets the closest bundled name as a suggestion when there is one.
 pub fn shader_source(spec: &str) -> Result<ShaderSource, BadInput> {
-    if let Some((name, text)) = ps30::jobs::bundled::listing(spec) {
-        return Ok(ShaderSource::new(name, text));
+    let path = match bundled::resolve(spec) {
+        Named::Bundled(b) => return Ok(ShaderSource::new(b.path, b.text)),
+        Named::File(path) => Path::new(path),
+    };
+    if !path.exists() {
+        let hint = match bundled::suggest(spec) {
+            Some(name) => {
+                format!("; did you mean `{name}`? (`ps30 shaders` lists the bundled shaders)")
+            }
+            None if spec.contains(':') => {
+                "; no bundled shader has this name either (`ps30 shaders` lists them)".to_string()
+            }
+            None => String::new(),
+        };
+        return Err(BadInput(format!("{spec}: no such file{hint}")));
     }
-    let text = read_text(Path::new(spec))?;
+    let text = read_text(path)?;
     Ok(ShaderSource::new(spec, text))
 }
 
-/// Loads a shader file: warnings to stderr; on errors every diagnostic to
-/// stderr and a one-line summary as the error.
-pub fn load_file(path: &Path, options: &Options) -> Result<Loaded, BadInput> {
-    let text = read_text(path)?;
-    let file = SourceFile::new(path.display().to_string(), text);
+/// Loads a shader argument (bundled name or file): warnings to stderr; on
+/// errors every diagnostic to stderr and a one-line summary as the error.
+pub fn load_shader(ui: &Ui, spec: &str, options: &Options) -> Result<Loaded, BadInput> {
+    let src = shader_source(spec)?;
+    let file = SourceFile::new(src.name, src.text);
     match load::load(file, options) {
         Ok(l) => {
-            for w in &l.warnings.items {
-                w.emit(&l.file, color_stderr());
+            if !ui.quiet {
+                emit(ui, &l.warnings, &l.file);
             }
             Ok(l)
         }
-        Err(e) => {
-            for d in &e.diagnostics.items {
-                d.emit(&e.file, color_stderr());
-            }
-            let n = e.diagnostics.errors().count();
-            Err(BadInput(format!(
-                "{}: {n} error{}",
-                e.file.name,
-                if n == 1 { "" } else { "s" }
-            )))
+        Err(e) => Err(source_error(ui, &e)),
+    }
+}
+
+/// A shader that did not load: its diagnostics to stderr, and the summary
+/// line `main` prints after them.
+pub fn source_error(ui: &Ui, e: &ps30::core::diag::SourceError) -> BadInput {
+    emit(ui, &e.diagnostics, &e.file);
+    let n = e.diagnostics.errors().count();
+    BadInput(format!(
+        "{}: {}",
+        e.file.name,
+        ps30::core::numbers::count(n as u64, "error", "errors")
+    ))
+}
+
+/// The constants given to a shader held against what it reads and defines
+/// (see [`ps30::core::audit`]): warnings to stderr (unless quiet), and, when
+/// the shader is about to `run`, bad input if it reads a register nobody
+/// set — nothing runs on zeros nobody chose. A command that only counts
+/// (`check`) passes `run = false`: its counts already give the range an
+/// unset loop count allows.
+pub fn audit(ui: &Ui, loaded: &Loaded, given: &Given, run: bool) -> Result<Vec<Finding>, BadInput> {
+    let found: Vec<Finding> = audit::audit(&loaded.shader, &loaded.defines_used, given)
+        .into_iter()
+        .filter(|f| run || f.kind != Kind::Unset)
+        .collect();
+    if !ui.quiet {
+        for f in found.iter().filter(|f| f.kind != Kind::Unset) {
+            eprint(&render_finding(ui, &loaded.file, f));
         }
+    }
+    let Some(error) = audit::unset_diagnostic(&found) else {
+        return Ok(found);
+    };
+    eprint(&error.render_styled(&loaded.file, ui.color_stderr));
+    let unset = audit::unset_names(&found);
+    Err(BadInput(format!(
+        "{}: reads {} that nothing sets; nothing was run",
+        loaded.file.name,
+        ps30::core::numbers::list(&unset)
+    )))
+}
+
+/// An audit finding as text: compiler-style where the shader mentions the
+/// register, one line and its help where it does not.
+fn render_finding(ui: &Ui, file: &SourceFile, f: &Finding) -> String {
+    match f.span {
+        Some(_) => f.diagnostic().render_styled(file, ui.color_stderr),
+        None => format!("warning: {}\n  = help: {}\n", f.message(), f.help()),
     }
 }
 
@@ -107,4 +183,11 @@ pub fn check_output_path(path: &Path) -> Result<(), BadInput> {
         return Err(BadInput(format!("{}: is a directory", path.display())));
     }
     Ok(())
+}
+
+/// [`check_output_path`] for an image, whose extension must also name a
+/// format ps30 writes (see [`ps30::core::image::OutputFormat`]).
+pub fn check_image_output(path: &Path) -> Result<(), BadInput> {
+    ps30::core::image::OutputFormat::of(path)?;
+    check_output_path(path)
 }

@@ -1,25 +1,21 @@
 //! `ps30 run`: one pass of any shader over an image into a render target.
 
-use super::args::{
-    constants, parse_float4, parse_float_const, AddressArg, ConstantArgs, ExecArgs, FilterArg,
-    FormatArg, SourceArgs,
-};
-use super::io::{color_stderr, print_json, say, shader_source};
+use super::args::{ConstantArgs, ExecArgs, FormatArg, SamplerArgs, SourceArgs};
+use super::io::{audit, load_shader, print_json, say};
 use super::ui::Ui;
-use super::{BadInput, Outcome};
-use ps30::core::diag::SourceFile;
-use ps30::core::emu::SamplerState;
-use ps30::core::image::{self, write_exr, write_pfm};
-use ps30::core::load;
+use super::Outcome;
+use ps30::core::image;
 use ps30::jobs::luminance::{run_pass, PassSetup};
 use ps30::present::luminance::{pass_json, pass_text};
 use std::path::PathBuf;
 
 #[derive(clap::Args)]
 pub struct Args {
-    /// Shader file or bundled name (see `ps30 luminance --help`).
+    /// The shader: a file, or a bundled name such as corrected:loop (`ps30 shaders` lists them).
+    #[arg(value_name = "SHADER")]
     shader: String,
-    #[arg(long)]
+    /// The image s0 samples: OpenEXR, Radiance .hdr or PFM.
+    #[arg(long, value_name = "IMAGE")]
     image: PathBuf,
     /// Render-target size WxH.
     #[arg(long, value_name = "WxH", value_parser = super::args::parse_size)]
@@ -28,45 +24,32 @@ pub struct Args {
     source: SourceArgs,
     #[command(flatten)]
     constants: ConstantArgs,
-    /// Float constant set by the application, e.g. --const c3=0.27,0.67,0.06,0.01.
-    #[arg(long = "const", value_name = "cN=X[,Y,Z,W]", value_parser = parse_float_const)]
-    floats: Vec<(u32, [f32; 4])>,
-    #[arg(long, value_enum, default_value = "point")]
-    filter: FilterArg,
-    #[arg(long, value_enum, default_value = "border")]
-    address: AddressArg,
-    /// Border colour R,G,B,A for --address border.
-    #[arg(long, value_parser = parse_float4, default_value = "0,0,0,0")]
-    border: [f32; 4],
+    #[command(flatten)]
+    sampler: SamplerArgs,
+    /// Render-target format.
     #[arg(long, value_enum, default_value = "f32")]
     target_format: FormatArg,
-    /// Write the target here (.exr or .pfm), atomically.
-    #[arg(short, long)]
+    /// Write the target here (atomically), in the format its extension names: .exr, .pfm, .hdr or .png.
+    #[arg(short, long, value_name = "FILE")]
     output: Option<PathBuf>,
+    /// With --json: every texel of every written output (large).
+    #[arg(long)]
+    texels: bool,
     #[command(flatten)]
     exec: ExecArgs,
 }
 
 pub fn run(args: Args, ui: &Ui) -> super::Result {
-    let src = shader_source(&args.shader)?;
-    let file = SourceFile::new(src.name.clone(), src.text);
-    let loaded = load::load(file, &args.source.options()).map_err(|e| {
-        for d in &e.diagnostics.items {
-            d.emit(&e.file, color_stderr());
-        }
-        BadInput(e.to_string())
-    })?;
+    if let Some(path) = &args.output {
+        super::io::check_image_output(path)?;
+    }
+    let loaded = load_shader(ui, &args.shader, &args.source.options())?;
+    let found = audit(ui, &loaded, &args.constants.given(&[], &args.source), true)?;
     let img = image::load(&args.image, &args.exec.image_limits())?;
-    let address = args.address.into();
     let setup = PassSetup {
         target: args.target,
-        constants: constants(&args.floats, &args.constants.ints, &args.constants.bools),
-        sampler: SamplerState {
-            address_u: address,
-            address_v: address,
-            border: args.border,
-            ..SamplerState::filtered(args.filter.into())
-        },
+        constants: args.constants.constants(),
+        sampler: args.sampler.state(),
         format: args.target_format.into(),
         threads: args.exec.threads(),
         limits: args.exec.limits(),
@@ -75,24 +58,17 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         let _spinner = ui.spinner("running the shader");
         run_pass(&loaded, &img, &setup)?
     };
-    if let Some(path) = &args.output {
-        let is_pfm = path
-            .extension()
-            .is_some_and(|e| e.eq_ignore_ascii_case("pfm"));
-        if is_pfm {
-            write_pfm(path, &out.target)?;
-        } else {
-            write_exr(path, &out.target)?;
-        }
-    }
+    let written = match &args.output {
+        Some(path) => Some((path.as_path(), image::write_target(path, &out.target)?)),
+        None => None,
+    };
     if args.exec.json {
-        print_json(&pass_json(&out))?;
+        print_json(&pass_json(&loaded, &found, &out, args.texels))?;
     } else {
         let text = pass_text(
-            &loaded.file.name,
             &args.image.display().to_string(),
             &out,
-            args.output.as_deref().filter(|_| !ui.quiet),
+            written.as_ref().map(|(p, w)| (*p, w)).filter(|_| !ui.quiet),
         );
         say(ui, &text)?;
     }
