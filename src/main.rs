@@ -15,6 +15,7 @@ fn main() -> ExitCode {
             return ExitCode::from(if e.use_stderr() { 2 } else { 0 });
         }
     };
+    cli::clean_up_on_interrupt();
     let ui = Ui::new(parsed.quiet, parsed.color);
     let outcome = match parsed.command {
         Command::Check(args) => cli::check::run(args, &ui),

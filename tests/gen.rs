@@ -307,16 +307,24 @@ fn stale_missing_and_extra_files_are_named() {
     let (second, _) = &all.files[1];
     std::fs::write(dir.path().join(first), "ps_3_0\n").unwrap();
     std::fs::remove_file(dir.path().join(second)).unwrap();
-    std::fs::write(dir.path().join("640x480/extra.psh"), "ps_3_0\n").unwrap();
+    // One file the generator once wrote (its header) and one it did not.
+    let old = format!("{} an older shader\nps_3_0\n", set::MARK);
+    std::fs::write(dir.path().join("640x480/extra.psh"), old).unwrap();
+    std::fs::write(dir.path().join("640x480/mine.psh"), "ps_3_0\n").unwrap();
     let problems = set::stale_files(dir.path(), &all);
-    assert_eq!(problems.len(), 3, "{problems:#?}");
+    assert_eq!(problems.len(), 4, "{problems:#?}");
     assert!(problems[0].contains(first.as_str()) && problems[0].contains("stale"));
     assert!(problems[1].contains(second.as_str()) && problems[1].contains("missing"));
-    assert!(problems[2].contains("extra.psh"));
-    // Regenerating repairs all three.
+    assert!(problems[2].contains("extra.psh") && problems[2].contains("to remove it"));
+    assert!(problems[3].contains("mine.psh") && problems[3].contains("remove it yourself"));
+    // Regenerating repairs the first three and leaves the foreign file.
     let (written, removed) = set::write_set(dir.path(), &all).unwrap();
     assert_eq!((written.len(), removed.len()), (2, 1));
-    assert!(set::stale_files(dir.path(), &all).is_empty());
+    let left = set::stale_files(dir.path(), &all);
+    assert_eq!(left.len(), 1, "{left:#?}");
+    assert!(dir.path().join("640x480/mine.psh").exists());
+    // Every generated file starts with the mark regeneration trusts.
+    assert!(all.files.iter().all(|(_, t)| t.starts_with(set::MARK)));
 }
 
 fn request(frame: (u32, u32), picks: Vec<(Pass1Form, set::BlockChoice)>) -> set::Request {

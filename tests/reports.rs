@@ -26,8 +26,14 @@ fn files(dir: &Path) -> BTreeMap<String, Vec<u8>> {
 fn two_runs_write_the_same_bytes() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let (a, b) = (tempfile::tempdir().unwrap(), tempfile::tempdir().unwrap());
-    let ga = ps30::present::report::generate(a.path(), root, Some(1), &|_, _, _| {}).unwrap();
-    let gb = ps30::present::report::generate(b.path(), root, None, &|_, _, _| {}).unwrap();
+    let write = |dir: &Path, threads| {
+        let mut batch = ps30::core::output::Batch::new(dir).unwrap();
+        let g =
+            ps30::present::report::generate(&mut batch, dir, root, threads, &|_, _, _| {}).unwrap();
+        batch.commit().unwrap();
+        g
+    };
+    let (ga, gb) = (write(a.path(), Some(1)), write(b.path(), None));
     assert!(ga.all_agree() && gb.all_agree());
     assert_eq!(ga.files, gb.files);
     let (fa, fb) = (files(a.path()), files(b.path()));

@@ -198,7 +198,10 @@ fn nan_pixels_are_refused_not_a_panic() {
     let mut img = synthetic();
     img.pixels[3] = [f32::NAN, 0.0, 0.0, 1.0];
     let err = tonemap::run(&img, &Settings::default(), &|_, _| {}).unwrap_err();
-    assert!(matches!(err, tonemap::TonemapError::LogAverage(_)), "{err}");
+    assert!(
+        matches!(err, tonemap::TonemapError::LogAverage { .. }),
+        "{err}"
+    );
 }
 
 // ---- the command ----

@@ -43,7 +43,8 @@ fuzz_target!(|data: &[u8]| {
                     width: 2,
                     height: 2,
                     texels: &texels,
-                },
+                }
+                .into(),
                 SamplerState::default(),
             ));
         }

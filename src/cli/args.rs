@@ -177,6 +177,18 @@ impl SourceArgs {
     }
 }
 
+/// Default cap on a shader file's size: 1 MiB holds a listing of more than
+/// 100,000 lines, far past the 32,768 slots of any ps_3_0 part.
+pub const DEFAULT_MAX_INPUT_BYTES: u64 = 1 << 20;
+
+/// The cap on shader files read from disk.
+#[derive(Args, Debug)]
+pub struct InputArgs {
+    /// Refuse shader files larger than this many bytes.
+    #[arg(long, value_name = "N", default_value_t = DEFAULT_MAX_INPUT_BYTES, value_parser = clap::value_parser!(u64).range(1..))]
+    pub max_input_bytes: u64,
+}
+
 /// Float, integer and boolean constants set by the application.
 #[derive(Args)]
 pub struct ConstantArgs {
@@ -289,20 +301,23 @@ impl ProfileArgs {
 }
 
 /// Options of every command that loads an image and runs the emulator.
-#[derive(Args)]
+#[derive(Args, Debug)]
 pub struct ExecArgs {
     /// Emulator threads (default: all cores).
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..=256))]
     pub threads: Option<u32>,
     /// Refuse images with more pixels than this.
-    #[arg(long, default_value_t = 1 << 26, value_parser = clap::value_parser!(u64).range(1..))]
+    #[arg(long, value_name = "N", default_value_t = ps30::core::image::ImageLimits::MAX_PIXELS, value_parser = clap::value_parser!(u64).range(1..))]
     pub max_pixels: u64,
     /// Stop a pixel that executes more instruction slots than this.
-    #[arg(long, default_value_t = 10_000_000, value_parser = clap::value_parser!(u64).range(1..))]
+    #[arg(long, value_name = "N", default_value_t = emu::EmuLimits::MAX_EXECUTED_PER_PIXEL, value_parser = clap::value_parser!(u64).range(1..))]
     pub max_executed_per_pixel: u64,
     /// Refuse render targets with more pixels than this.
-    #[arg(long, default_value_t = 1 << 24, value_parser = clap::value_parser!(u64).range(1..))]
+    #[arg(long, value_name = "N", default_value_t = emu::EmuLimits::MAX_TARGET_PIXELS, value_parser = clap::value_parser!(u64).range(1..))]
     pub max_target_pixels: u64,
+    /// Stop a draw that executes more instruction slots than this, all pixels together.
+    #[arg(long, value_name = "N", default_value_t = emu::EmuLimits::MAX_EXECUTED_TOTAL, value_parser = clap::value_parser!(u64).range(1..))]
+    pub max_executed_total: u64,
     /// Print JSON instead of text.
     #[arg(long)]
     pub json: bool,
@@ -314,6 +329,7 @@ impl ExecArgs {
         emu::EmuLimits {
             max_executed_per_pixel: self.max_executed_per_pixel,
             max_target_pixels: self.max_target_pixels,
+            max_executed_total: self.max_executed_total,
         }
     }
 

@@ -1,6 +1,6 @@
 //! `ps30 check`: slots and executed instructions against the limits.
 
-use super::args::{ConstantArgs, LimitArgs, SourceArgs};
+use super::args::{ConstantArgs, InputArgs, LimitArgs, SourceArgs};
 use super::io::{audit, load_shader, print_json, say};
 use super::ui::Ui;
 use super::Outcome;
@@ -18,13 +18,20 @@ pub struct Args {
     constants: ConstantArgs,
     #[command(flatten)]
     limits: LimitArgs,
+    #[command(flatten)]
+    input: InputArgs,
     /// Print JSON instead of text.
     #[arg(long)]
     json: bool,
 }
 
 pub fn run(args: Args, ui: &Ui) -> super::Result {
-    let loaded = load_shader(ui, &args.shader, &args.source.options())?;
+    let loaded = load_shader(
+        ui,
+        &args.shader,
+        &args.source.options(),
+        args.input.max_input_bytes,
+    )?;
     let given = args.constants.given(&[], &args.source);
     let found = audit(ui, &loaded, &given, false)?;
     let env = args.constants.environment();

@@ -1,6 +1,6 @@
 //! `ps30 expand`: the shader as plain assembly with every macro expanded.
 
-use super::args::SourceArgs;
+use super::args::{InputArgs, SourceArgs};
 use super::io::{audit, load_shader, print, print_json};
 use super::ui::Ui;
 use super::{BadInput, Outcome};
@@ -15,6 +15,8 @@ pub struct Args {
     shader: String,
     #[command(flatten)]
     source: SourceArgs,
+    #[command(flatten)]
+    input: InputArgs,
     /// Write to this file (atomically) instead of stdout.
     #[arg(short, long, value_name = "FILE")]
     output: Option<PathBuf>,
@@ -25,9 +27,14 @@ pub struct Args {
 
 pub fn run(args: Args, ui: &Ui) -> super::Result {
     if let Some(path) = &args.output {
-        super::io::check_output_path(path)?;
+        super::io::check_output_path(path, &[std::path::Path::new(&args.shader)])?;
     }
-    let loaded = load_shader(ui, &args.shader, &args.source.options())?;
+    let loaded = load_shader(
+        ui,
+        &args.shader,
+        &args.source.options(),
+        args.input.max_input_bytes,
+    )?;
     let given = Given {
         defines: args.source.define.iter().map(|(n, _)| n.clone()).collect(),
         ..Given::default()

@@ -51,18 +51,31 @@ pub fn print_json(v: &impl serde::Serialize) -> Result<(), BadInput> {
     Ok(())
 }
 
-/// Diagnostics to stderr, compiler-style, coloured as `ui` says.
+/// Diagnostics to stderr, compiler-style, coloured as `ui` says: identical
+/// ones grouped, the first [`ps30::core::diag::MAX_SHOWN`] shown.
 pub fn emit(ui: &Ui, diagnostics: &Diagnostics, file: &SourceFile) {
-    for d in diagnostics.grouped() {
-        eprint(&d.render_styled(file, ui.color_stderr));
-    }
+    eprint(&diagnostics.render_styled(file, ui.color_stderr));
 }
 
-/// A file's text. Not UTF-8 is bad input naming the line and column of the
-/// first bad byte; a UTF-8 byte-order mark at the start is dropped (see
+/// A file's text, at most `max_bytes` long (`--max-input-bytes`): a longer
+/// file (or `/dev/zero`) is refused after reading one byte past the cap.
+/// Not UTF-8 is bad input naming the line and column of the first bad
+/// byte; a UTF-8 byte-order mark at the start is dropped (see
 /// [`SourceFile::new`]).
-pub fn read_text(path: &Path) -> Result<String, BadInput> {
-    let bytes = std::fs::read(path).map_err(|e| BadInput(format!("{}: {e}", path.display())))?;
+pub fn read_text(path: &Path, max_bytes: u64) -> Result<String, BadInput> {
+    use std::io::Read;
+    let failed = |e: std::io::Error| BadInput(format!("{}: {e}", path.display()));
+    let mut bytes = Vec::new();
+    std::fs::File::open(path)
+        .and_then(|f| f.take(max_bytes.saturating_add(1)).read_to_end(&mut bytes))
+        .map_err(failed)?;
+    if bytes.len() as u64 > max_bytes {
+        return Err(BadInput(format!(
+            "{}: larger than the cap of {} bytes for a shader (raise it with --max-input-bytes)",
+            path.display(),
+            ps30::core::numbers::thousands(max_bytes)
+        )));
+    }
     String::from_utf8(bytes).map_err(|e| {
         let bytes = e.as_bytes();
         let at = e.utf8_error().valid_up_to();
@@ -78,9 +91,10 @@ pub fn read_text(path: &Path) -> Result<String, BadInput> {
 }
 
 /// A shader argument, by the one rule of [`bundled::resolve`]: a bundled
-/// name (`ps30 shaders` lists them) or a file. A file that cannot be read
-/// gets the closest bundled name as a suggestion when there is one.
-pub fn shader_source(spec: &str) -> Result<ShaderSource, BadInput> {
+/// name (`ps30 shaders` lists them) or a file (at most `max_bytes` long). A
+/// file that does not exist gets the closest bundled name as a suggestion
+/// when there is one.
+pub fn shader_source(spec: &str, max_bytes: u64) -> Result<ShaderSource, BadInput> {
     let path = match bundled::resolve(spec) {
         Named::Bundled(b) => return Ok(ShaderSource::new(b.path, b.text)),
         Named::File(path) => Path::new(path),
@@ -97,14 +111,19 @@ pub fn shader_source(spec: &str) -> Result<ShaderSource, BadInput> {
         };
         return Err(BadInput(format!("{spec}: no such file{hint}")));
     }
-    let text = read_text(path)?;
+    let text = read_text(path, max_bytes)?;
     Ok(ShaderSource::new(spec, text))
 }
 
 /// Loads a shader argument (bundled name or file): warnings to stderr; on
 /// errors every diagnostic to stderr and a one-line summary as the error.
-pub fn load_shader(ui: &Ui, spec: &str, options: &Options) -> Result<Loaded, BadInput> {
-    let src = shader_source(spec)?;
+pub fn load_shader(
+    ui: &Ui,
+    spec: &str,
+    options: &Options,
+    max_bytes: u64,
+) -> Result<Loaded, BadInput> {
+    let src = shader_source(spec, max_bytes)?;
     let file = SourceFile::new(src.name, src.text);
     match load::load(file, options) {
         Ok(l) => {
@@ -125,7 +144,7 @@ pub fn source_error(ui: &Ui, e: &ps30::core::diag::SourceError) -> BadInput {
     BadInput(format!(
         "{}: {}",
         e.file.name,
-        ps30::core::numbers::count(n as u64, "error", "errors")
+        ps30::core::numbers::plural(n as u64, "error", "errors")
     ))
 }
 
@@ -166,28 +185,20 @@ fn render_finding(ui: &Ui, file: &SourceFile, f: &Finding) -> String {
     }
 }
 
-/// Refuses an output path whose directory does not exist, before any work.
-pub fn check_output_path(path: &Path) -> Result<(), BadInput> {
-    let dir = path
-        .parent()
-        .filter(|d| !d.as_os_str().is_empty())
-        .unwrap_or(Path::new("."));
-    if !dir.is_dir() {
-        return Err(BadInput(format!(
-            "{}: the directory {} does not exist",
-            path.display(),
-            dir.display()
-        )));
-    }
-    if path.is_dir() {
-        return Err(BadInput(format!("{}: is a directory", path.display())));
-    }
-    Ok(())
+/// Refuses an output file before any work, by the rules of
+/// [`ps30::core::output`] (one of them: it is not one of `inputs`).
+pub fn check_output_path(path: &Path, inputs: &[&Path]) -> Result<(), BadInput> {
+    ps30::core::output::check(path, inputs).map_err(BadInput)
+}
+
+/// Refuses an output directory before any work, by the same rules.
+pub fn check_output_dir(dir: &Path) -> Result<(), BadInput> {
+    ps30::core::output::check_directory(dir).map_err(BadInput)
 }
 
 /// [`check_output_path`] for an image, whose extension must also name a
 /// format ps30 writes (see [`ps30::core::image::OutputFormat`]).
-pub fn check_image_output(path: &Path) -> Result<(), BadInput> {
+pub fn check_image_output(path: &Path, inputs: &[&Path]) -> Result<(), BadInput> {
     ps30::core::image::OutputFormat::of(path)?;
-    check_output_path(path)
+    check_output_path(path, inputs)
 }

@@ -1,6 +1,6 @@
 //! `ps30 luminance`: both passes on an HDR image, cross-checked.
 
-use super::args::{parse_delta, parse_size, ExecArgs, FormatArg};
+use super::args::{parse_delta, parse_size, ExecArgs, FormatArg, InputArgs};
 use super::io::{print_json, say, shader_source};
 use super::ui::Ui;
 use super::{BadInput, Outcome};
@@ -43,6 +43,8 @@ pub struct Args {
     negative: NegativeArg,
     #[command(flatten)]
     exec: ExecArgs,
+    #[command(flatten)]
+    input: InputArgs,
 }
 
 /// Reference policy flag values.
@@ -80,7 +82,7 @@ impl Args {
                 last: None,
             });
         };
-        let pass1 = shader_source(spec)?;
+        let pass1 = shader_source(spec, self.input.max_input_bytes)?;
         let name = match bundled::resolve(spec) {
             Named::Bundled(b) => Some(b.name),
             Named::File(_) => None,
@@ -96,8 +98,15 @@ impl Args {
         };
         Ok(Passes {
             pass1,
-            pass2: shader_source(self.pass2.as_deref().unwrap_or("corrected:pass2"))?,
-            last: self.last_column.as_deref().map(shader_source).transpose()?,
+            pass2: shader_source(
+                self.pass2.as_deref().unwrap_or("corrected:pass2"),
+                self.input.max_input_bytes,
+            )?,
+            last: self
+                .last_column
+                .as_deref()
+                .map(|s| shader_source(s, self.input.max_input_bytes))
+                .transpose()?,
             block,
             choice,
         })

@@ -6,7 +6,9 @@
 //!
 //! Exit codes: 0 ok; 1 the check found a problem (a limit exceeded, a claim
 //! or cross-check that disagrees); 2 bad input or usage. A closed stdout
-//! (e.g. piping into `head`) counts as success.
+//! (e.g. piping into `head`) counts as success. Interrupted by SIGINT,
+//! SIGTERM or SIGHUP, the command removes its temporary output files and
+//! exits with 130.
 
 pub mod args;
 pub mod check;
@@ -112,6 +114,22 @@ pub enum Command {
         after_help = "Examples:\n  ps30 man > ps30.1 && man ./ps30.1\n  ps30 man check | man -l -\n  for c in check run luminance; do ps30 man $c > ps30-$c.1; done"
     )]
     Man(man::Args),
+}
+
+/// Exit code of a run interrupted by a signal (128 + SIGINT, as shells
+/// report a Ctrl-C).
+pub const INTERRUPTED: i32 = 130;
+
+/// On SIGINT, SIGTERM or SIGHUP: remove the temporary files of outputs
+/// being written (nothing half-written stays behind) and exit with
+/// [`INTERRUPTED`].
+pub fn clean_up_on_interrupt() {
+    // Without a handler (one cannot be installed) the default action still
+    // ends the process; only its temporary files may stay.
+    let _ = ctrlc::set_handler(|| {
+        ps30::core::output::remove_temporaries();
+        std::process::exit(INTERRUPTED);
+    });
 }
 
 /// How a command ended.

@@ -3,7 +3,8 @@
 //! behaviour.
 
 use super::args::{
-    parse_finite, parse_size, ConstantArgs, ExecArgs, MipFilterArg, SamplerArgs, SourceArgs,
+    parse_finite, parse_size, ConstantArgs, ExecArgs, InputArgs, MipFilterArg, SamplerArgs,
+    SourceArgs,
 };
 use super::io::{audit, load_shader, print_json, say};
 use super::ui::Ui;
@@ -51,6 +52,8 @@ pub struct Args {
     bins: u64,
     #[command(flatten)]
     exec: ExecArgs,
+    #[command(flatten)]
+    input: InputArgs,
 }
 
 impl Args {
@@ -86,7 +89,12 @@ impl Args {
 /// Validator warnings to stderr, the report to stdout; exit 1 when the run
 /// found a problem.
 pub fn run(args: Args, ui: &Ui) -> super::Result {
-    let loaded = load_shader(ui, &args.shader, &args.source.options())?;
+    let loaded = load_shader(
+        ui,
+        &args.shader,
+        &args.source.options(),
+        args.input.max_input_bytes,
+    )?;
     let input = args.input()?;
     let given = args.constants.given(floats_set_by(&input), &args.source);
     let found = audit(ui, &loaded, &given, true)?;

@@ -1,13 +1,13 @@
 //! `ps30 run`: one pass of any shader over an image into a render target.
 
-use super::args::{ConstantArgs, ExecArgs, FormatArg, SamplerArgs, SourceArgs};
+use super::args::{ConstantArgs, ExecArgs, FormatArg, InputArgs, SamplerArgs, SourceArgs};
 use super::io::{audit, load_shader, print_json, say};
 use super::ui::Ui;
 use super::Outcome;
 use ps30::core::image;
 use ps30::jobs::luminance::{run_pass, PassSetup};
 use ps30::present::luminance::{pass_json, pass_text};
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 #[derive(clap::Args)]
 pub struct Args {
@@ -37,13 +37,20 @@ pub struct Args {
     texels: bool,
     #[command(flatten)]
     exec: ExecArgs,
+    #[command(flatten)]
+    input: InputArgs,
 }
 
 pub fn run(args: Args, ui: &Ui) -> super::Result {
     if let Some(path) = &args.output {
-        super::io::check_image_output(path)?;
+        super::io::check_image_output(path, &[&args.image, Path::new(&args.shader)])?;
     }
-    let loaded = load_shader(ui, &args.shader, &args.source.options())?;
+    let loaded = load_shader(
+        ui,
+        &args.shader,
+        &args.source.options(),
+        args.input.max_input_bytes,
+    )?;
     let found = audit(ui, &loaded, &args.constants.given(&[], &args.source), true)?;
     let img = image::load(&args.image, &args.exec.image_limits())?;
     let setup = PassSetup {

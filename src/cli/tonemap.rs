@@ -1,13 +1,13 @@
 //! `ps30 tonemap`: the article's operator, run in the emulator, into an
 //! 8-bit sRGB PNG, cross-checked pixel by pixel.
 
-use super::args::{parse_key, parse_white, ExecArgs};
+use super::args::{parse_key, parse_white, ExecArgs, InputArgs};
 use super::io::{check_image_output, print_json, say, shader_source};
 use super::ui::Ui;
 use super::Outcome;
 use ps30::core::image::{self, write_png_rgb8, write_rgb_float, OutputFormat};
 use ps30::jobs::tonemap::{self, Settings};
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 #[derive(clap::Args)]
 pub struct Args {
@@ -29,13 +29,15 @@ pub struct Args {
     shader: String,
     #[command(flatten)]
     exec: ExecArgs,
+    #[command(flatten)]
+    input: InputArgs,
 }
 
 pub fn run(args: Args, ui: &Ui) -> super::Result {
     if let Some(out) = &args.output {
-        check_image_output(out)?;
+        check_image_output(out, &[&args.image, Path::new(&args.shader)])?;
     }
-    let shader = shader_source(&args.shader)?;
+    let shader = shader_source(&args.shader, args.input.max_input_bytes)?;
     let img = image::load(&args.image, &args.exec.image_limits())?;
     let settings = Settings {
         key: args.key,

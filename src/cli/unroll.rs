@@ -2,9 +2,10 @@
 //! for a frame and a profile.
 
 use super::args::{parse_delta, parse_size, ProfileArgs};
-use super::io::{print, print_json};
+use super::io::{check_output_dir, print, print_json};
 use super::ui::Ui;
 use super::{BadInput, Outcome};
+use ps30::core::output::Batch;
 use ps30::jobs::gen::set::{self, BlockChoice, Bundle, Role};
 use ps30::jobs::gen::Pass1Form;
 use ps30::present::unroll::summary_text;
@@ -60,6 +61,9 @@ enum OnlyArg {
 }
 
 pub fn run(args: Args, _ui: &Ui) -> super::Result {
+    if let Some(dir) = &args.output {
+        check_output_dir(dir)?;
+    }
     let choice = match args.block {
         Some((w, h)) => BlockChoice::Given(w, h),
         None => BlockChoice::Fit,
@@ -84,11 +88,11 @@ pub fn run(args: Args, _ui: &Ui) -> super::Result {
         return Ok(outcome);
     }
     if let Some(dir) = &args.output {
+        let mut batch = Batch::new(dir)?;
         for g in &bundle.shaders {
-            let path = dir.join(&g.file);
-            ps30::core::output::write_bytes(&path, g.text.as_bytes())
-                .map_err(|e| BadInput(format!("{}: {e}", path.display())))?;
+            batch.write_bytes(&dir.join(&g.file), g.text.as_bytes())?;
         }
+        batch.commit()?;
     }
     if args.json {
         print_json(&bundle)?;

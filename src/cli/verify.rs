@@ -2,11 +2,11 @@
 //! mapping of every bundled image and the committed generated shaders, with
 //! the pages of `reports/`.
 
-use super::io::{print_json, say};
+use super::io::{check_output_dir, print_json, say};
 use super::ui::Ui;
 use super::{BadInput, Outcome};
 use ps30::core::image::{self, ImageLimits};
-use ps30::core::output::write_bytes;
+use ps30::core::output::Batch;
 use ps30::jobs::gen::set::{self, GeneratedSet};
 use ps30::jobs::verify::{self as claims, CROSSCHECK_IMAGE, GENERATED_DIR};
 use ps30::present::report::{self, claims as pages, generated};
@@ -42,6 +42,10 @@ fn in_source_tree(rel: &str) -> PathBuf {
 }
 
 pub fn run(args: Args, ui: &Ui) -> super::Result {
+    check_output_dir(&args.reports)?;
+    if let Some(dir) = args.generated.as_ref().filter(|_| args.regenerate) {
+        check_output_dir(dir)?;
+    }
     let bar = std::cell::RefCell::new(ui.bar("article claims", 12));
     let mut found = claims::article_claims().map_err(BadInput)?;
     let set = set::generated_set()?;
@@ -64,13 +68,13 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         args.reports.join("luminance-crosscheck.md"),
         args.reports.join("generated-shaders.md"),
     ];
+    let mut batch = Batch::new(&args.reports)?;
     for (path, text) in pages.iter().zip([
         pages::claims_report(&found),
         pages::crosscheck_report(&rows),
         generated::summary_report(&set),
     ]) {
-        write_bytes(path, text.as_bytes())
-            .map_err(|e| BadInput(format!("{}: {e}", path.display())))?;
+        batch.write_bytes(path, text.as_bytes())?;
     }
     // The repository root the bundled images were found under.
     let root = image_path
@@ -78,10 +82,15 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         .and_then(Path::parent)
         .and_then(Path::parent)
         .unwrap_or(Path::new(""));
-    let figures = report::generate(&args.reports, root, None, &|stage, done, total| {
-        bar.borrow_mut().set(Some(stage), done + 2, total + 2)
-    })
+    let figures = report::generate(
+        &mut batch,
+        &args.reports,
+        root,
+        None,
+        &|stage, done, total| bar.borrow_mut().set(Some(stage), done + 2, total + 2),
+    )
     .map_err(BadInput)?;
+    batch.commit()?;
     drop(bar);
     let summary = Summary {
         claims: &found,
@@ -106,7 +115,8 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
 }
 
 /// The committed generated shaders compared with what the generator writes
-/// now (the stale files), or rewritten (`wrote …` / `removed …` lines).
+/// now (the stale files), or rewritten (`wrote …` / `removed …` lines) and
+/// compared again.
 fn check_generated(
     dir: &Path,
     set: &GeneratedSet,
@@ -115,12 +125,13 @@ fn check_generated(
     if !regenerate {
         return Ok((set::stale_files(dir, set), Vec::new()));
     }
-    let (written, removed) =
-        set::write_set(dir, set).map_err(|e| BadInput(format!("{}: {e}", dir.display())))?;
+    let (written, removed) = set::write_set(dir, set)?;
     let lines = written
         .into_iter()
         .map(|p| format!("wrote {p}"))
         .chain(removed.into_iter().map(|p| format!("removed {p}")))
         .collect();
-    Ok((Vec::new(), lines))
+    // What regeneration may not touch (files it did not write) stays a
+    // problem, named.
+    Ok((set::stale_files(dir, set), lines))
 }

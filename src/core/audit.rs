@@ -18,7 +18,7 @@
 //! An error tells the user how to set the register (zero included, if zero
 //! is really meant). Only reads count: a shader may declare what it likes.
 
-use crate::core::diag::{Diagnostic, Diagnostics};
+use crate::core::diag::Diagnostic;
 use crate::core::ir::{Shader, Span};
 use crate::core::isa::RegFile;
 use std::collections::{BTreeMap, BTreeSet};
@@ -161,7 +161,7 @@ fn read_label(f: &Finding) -> String {
         n => format!(
             "{} read here (and by {})",
             f.what,
-            crate::core::numbers::count(n as u64 - 1, "more instruction", "more instructions")
+            crate::core::numbers::plural(n as u64 - 1, "more instruction", "more instructions")
         ),
     }
 }
@@ -318,13 +318,6 @@ pub fn audit(shader: &Shader, defines_used: &BTreeSet<String>, given: &Given) ->
         }
     }
     found
-}
-
-/// The findings as diagnostics (errors for unset reads, warnings else).
-pub fn diagnostics(found: &[Finding]) -> Diagnostics {
-    Diagnostics {
-        items: found.iter().map(Finding::diagnostic).collect(),
-    }
 }
 
 /// The registers read but never set, by name (`c1, i2`), for one-line

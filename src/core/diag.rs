@@ -5,12 +5,36 @@
 //! codespan-reporting, both to a plain string (tests compare it) and to a
 //! colour terminal (the CLI), so a message always names `file:line:col`,
 //! shows the source line and puts a caret under the span.
+//!
+//! Reporting stays linear in what is shown: duplicates are found through an
+//! index, line numbers through the file's line table (built once), at most
+//! [`MAX_SHOWN`] diagnostics are rendered (a last line says how many more
+//! there were), and a line longer than [`MAX_LINE_SHOWN`] is not echoed.
 
 use crate::core::ir::{Origin, Span};
 use codespan_reporting::diagnostic::{Diagnostic as CsDiagnostic, Label};
-use codespan_reporting::files::SimpleFile;
+use codespan_reporting::files::{self, Files};
 use codespan_reporting::term::{self, Config};
+use std::collections::BTreeMap;
 use std::fmt;
+use std::io::Write;
+use std::ops::Range;
+
+/// The most diagnostics rendered for one file; the rest are counted.
+pub const MAX_SHOWN: usize = 50;
+
+/// Longest source line (in bytes) echoed under a diagnostic; a longer one is
+/// reported as `file:line:col` and the message only.
+pub const MAX_LINE_SHOWN: usize = 500;
+
+/// A piece of source text quoted in a message, cut to 40 characters.
+pub fn excerpt(text: &str) -> String {
+    const MAX: usize = 40;
+    match text.char_indices().nth(MAX) {
+        None => text.to_string(),
+        Some((cut, _)) => format!("{}… ({} characters)", &text[..cut], text.chars().count()),
+    }
+}
 
 /// A named source text; spans index into `text`.
 #[derive(Clone, Debug)]
@@ -55,6 +79,21 @@ impl SourceFile {
         self.line_col(offset).0
     }
 
+    /// The byte range of a 0-based line, line break included.
+    fn line_bytes(&self, index: usize) -> Range<usize> {
+        let start = self
+            .line_starts
+            .get(index)
+            .copied()
+            .unwrap_or(self.text.len());
+        let end = self
+            .line_starts
+            .get(index + 1)
+            .copied()
+            .unwrap_or(self.text.len());
+        start..end
+    }
+
     /// The text of a 1-based line, without its line break.
     pub fn line_text(&self, line: usize) -> &str {
         let start = self.line_starts.get(line - 1).copied().unwrap_or(0);
@@ -64,6 +103,39 @@ impl SourceFile {
             .copied()
             .unwrap_or(self.text.len());
         self.text[start..end].trim_end_matches(['\n', '\r'])
+    }
+}
+
+/// The renderer reads lines through the table built once in
+/// [`SourceFile::new`], instead of rebuilding it for every diagnostic.
+impl<'a> Files<'a> for SourceFile {
+    type FileId = ();
+    type Name = &'a str;
+    type Source = &'a str;
+
+    fn name(&'a self, (): ()) -> Result<&'a str, files::Error> {
+        Ok(&self.name)
+    }
+
+    fn source(&'a self, (): ()) -> Result<&'a str, files::Error> {
+        Ok(&self.text)
+    }
+
+    fn line_index(&'a self, (): (), byte_index: usize) -> Result<usize, files::Error> {
+        Ok(self
+            .line_starts
+            .binary_search(&byte_index)
+            .unwrap_or_else(|next| next - 1))
+    }
+
+    fn line_range(&'a self, (): (), line_index: usize) -> Result<Range<usize>, files::Error> {
+        if line_index > self.line_starts.len() {
+            return Err(files::Error::LineTooLarge {
+                given: line_index,
+                max: self.line_starts.len() - 1,
+            });
+        }
+        Ok(self.line_bytes(line_index))
     }
 }
 
@@ -136,7 +208,7 @@ impl Diagnostic {
 
     /// Adds notes saying which REPEAT_BLOCK repetitions the problem is in.
     pub fn in_origin(mut self, origin: &Origin, file: &SourceFile) -> Diagnostic {
-        for r in &origin.repeats {
+        for r in origin.repeats() {
             self.notes.push(format!(
                 "in repetition {} of {} of the REPEAT_BLOCK at line {}",
                 r.index + 1,
@@ -167,6 +239,16 @@ impl Diagnostic {
             .with_notes(notes)
     }
 
+    /// Whether a line this diagnostic points at is too long to echo.
+    fn has_long_line(&self, file: &SourceFile) -> bool {
+        std::iter::once(self.span)
+            .chain(self.secondary.iter().map(|(s, _)| *s))
+            .any(|span| {
+                let line = file.line_index((), span.start as usize).unwrap_or(0);
+                file.line_bytes(line).len() > MAX_LINE_SHOWN
+            })
+    }
+
     /// Renders the diagnostic as plain text.
     pub fn render(&self, file: &SourceFile) -> String {
         self.render_styled(file, false)
@@ -175,19 +257,13 @@ impl Diagnostic {
     /// Renders the diagnostic as text, with ANSI colours when `color` (for
     /// a terminal). The caller decides where it goes.
     pub fn render_styled(&self, file: &SourceFile, color: bool) -> String {
-        use codespan_reporting::term::termcolor::Ansi;
-        let files = SimpleFile::new(file.name.as_str(), file.text.as_str());
-        let diagnostic = self.to_codespan(file);
-        let config = Config::default();
-        let rendered = if color {
-            let mut out = Ansi::new(Vec::new());
-            term::emit_to_write_style(&mut out, &config, &files, &diagnostic)
-                .ok()
-                .and_then(|()| String::from_utf8(out.into_inner()).ok())
+        let mut out = Vec::new();
+        if color {
+            self.write(file, &mut term::termcolor::Ansi::new(&mut out));
         } else {
-            term::emit_into_string(&config, &files, &diagnostic).ok()
-        };
-        rendered.unwrap_or_else(|| self.fallback(file) + "\n")
+            self.write(file, &mut term::termcolor::NoColor::new(&mut out));
+        }
+        String::from_utf8_lossy(&out).into_owned()
     }
 
     /// The note that lists the other places of a grouped diagnostic.
@@ -222,6 +298,23 @@ impl Diagnostic {
         lines.fold((usize::MAX, 0), |(lo, hi), l| (lo.min(l), hi.max(l)))
     }
 
+    /// Writes the diagnostic to a (colour) stream: compiler-style with the
+    /// source line, or as one line when that line is too long to echo.
+    pub fn write(&self, file: &SourceFile, w: &mut dyn term::termcolor::WriteColor) {
+        if self.has_long_line(file)
+            || term::emit_to_write_style(w, &Config::default(), file, &self.to_codespan(file))
+                .is_err()
+        {
+            let _ = writeln!(w, "{}", self.fallback(file));
+            if let Some(note) = self.also_note(file) {
+                let _ = writeln!(w, "  = {note}");
+            }
+            if let Some(help) = &self.help {
+                let _ = writeln!(w, "  = help: {help}");
+            }
+        }
+    }
+
     /// `file:line:col: severity: message`, used when the renderer cannot be.
     fn fallback(&self, file: &SourceFile) -> String {
         let (line, col) = file.line_col(self.span.start);
@@ -249,16 +342,17 @@ impl fmt::Display for Diagnostic {
 #[derive(Clone, Debug, Default)]
 pub struct Diagnostics {
     pub items: Vec<Diagnostic>,
+    /// Where each (span, message) already is in `items` (a B-tree: as
+    /// small as a `Vec`, so results carrying diagnostics stay small).
+    seen: BTreeMap<(Span, String), usize>,
 }
 
 impl Diagnostics {
     pub fn push(&mut self, d: Diagnostic) {
         // The same problem in every repetition of a macro is reported once.
-        if let Some(existing) = self
-            .items
-            .iter_mut()
-            .find(|e| e.span == d.span && e.message == d.message)
-        {
+        let key = (d.span, d.message.clone());
+        if let Some(&i) = self.seen.get(&key) {
+            let existing = &mut self.items[i];
             if !existing.notes.iter().any(|n| n.starts_with("and in")) && d.notes != existing.notes
             {
                 existing
@@ -267,7 +361,15 @@ impl Diagnostics {
             }
             return;
         }
+        self.seen.insert(key, self.items.len());
         self.items.push(d);
+    }
+
+    /// Adds every diagnostic of `other`.
+    pub fn extend(&mut self, other: Diagnostics) {
+        for d in other.items {
+            self.push(d);
+        }
     }
 
     pub fn has_errors(&self) -> bool {
@@ -287,11 +389,66 @@ impl Diagnostics {
     /// Sorts by position so output reads top to bottom.
     pub fn sort(&mut self) {
         self.items.sort_by_key(|d| (d.span.start, d.severity));
+        self.seen = self
+            .items
+            .iter()
+            .enumerate()
+            .map(|(i, d)| ((d.span, d.message.clone()), i))
+            .collect();
     }
 
-    /// Renders every diagnostic as plain text, identical ones grouped.
+    /// The line after the first [`MAX_SHOWN`] diagnostics saying how many
+    /// more there are, if any.
+    fn not_shown(grouped: &[Diagnostic]) -> Option<String> {
+        let rest = grouped.get(MAX_SHOWN..)?;
+        let errors = rest
+            .iter()
+            .filter(|d| d.severity == Severity::Error)
+            .count() as u64;
+        let warnings = rest.len() as u64 - errors;
+        let count = |n: u64, what: &str| match n {
+            0 => None,
+            1 => Some(format!("1 more {what}")),
+            n => Some(format!("{n} more {what}s")),
+        };
+        let parts: Vec<String> = [count(errors, "error"), count(warnings, "warning")]
+            .into_iter()
+            .flatten()
+            .collect();
+        Some(format!(
+            "... and {} not shown (only the first {MAX_SHOWN} are)\n",
+            parts.join(" and ")
+        ))
+    }
+
+    /// Renders the first [`MAX_SHOWN`] diagnostics as plain text (identical
+    /// ones grouped), and a line counting the rest.
     pub fn render(&self, file: &SourceFile) -> String {
-        self.grouped().iter().map(|d| d.render(file)).collect()
+        let mut out = Vec::new();
+        self.write(file, &mut term::termcolor::NoColor::new(&mut out));
+        String::from_utf8_lossy(&out).into_owned()
+    }
+
+    /// Writes what [`Diagnostics::render`] renders to a (colour) stream.
+    pub fn write(&self, file: &SourceFile, w: &mut dyn term::termcolor::WriteColor) {
+        let grouped = self.grouped();
+        for d in grouped.iter().take(MAX_SHOWN) {
+            d.write(file, w);
+        }
+        if let Some(line) = Self::not_shown(&grouped) {
+            let _ = w.write_all(line.as_bytes());
+        }
+    }
+
+    /// What [`Diagnostics::render`] renders, with ANSI colours when `color`.
+    pub fn render_styled(&self, file: &SourceFile, color: bool) -> String {
+        let mut out = Vec::new();
+        if color {
+            self.write(file, &mut term::termcolor::Ansi::new(&mut out));
+        } else {
+            self.write(file, &mut term::termcolor::NoColor::new(&mut out));
+        }
+        String::from_utf8_lossy(&out).into_owned()
     }
 
     /// The diagnostics with identical ones — the same severity, message,
@@ -299,9 +456,22 @@ impl Diagnostics {
     /// instruction give — folded into the first of them (its
     /// [`Diagnostic::also`] lists the others). Order is kept. Every command
     /// prints and serialises diagnostics through this, so one problem is one
-    /// line, with its count and lines, in text and JSON alike.
+    /// report, with its count and lines, in text and JSON alike.
     pub fn grouped(&self) -> Vec<Diagnostic> {
         group(&self.items)
+    }
+
+    /// Writes them to stderr, in colour when `color`, through one buffer.
+    pub fn emit(&self, file: &SourceFile, color: bool) {
+        use term::termcolor::{BufferedStandardStream, ColorChoice};
+        let choice = if color {
+            ColorChoice::Auto
+        } else {
+            ColorChoice::Never
+        };
+        let mut stream = BufferedStandardStream::stderr(choice);
+        self.write(file, &mut stream);
+        let _ = stream.flush();
     }
 }
 

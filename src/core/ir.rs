@@ -17,6 +17,7 @@
 use crate::core::isa::{Compare, Opcode, RegFile, SamplerType};
 use std::collections::BTreeMap;
 use std::fmt;
+use std::sync::Arc;
 
 /// A byte range in a source file.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default, PartialOrd, Ord)]
@@ -61,8 +62,37 @@ pub struct Repetition {
 #[derive(Clone, Debug, PartialEq, Eq, Hash, Default)]
 pub struct Origin {
     pub span: Span,
+    /// The innermost enclosing repetition, linked to the ones around it;
+    /// `None` outside macros. Statements of one repetition share the chain,
+    /// so an expansion holds one link per repetition made, not one copy of
+    /// the whole chain per statement.
+    pub repeat: Option<Arc<RepeatLink>>,
+}
+
+/// One repetition of a REPEAT_BLOCK and the repetition around it.
+#[derive(Debug, PartialEq, Eq, Hash)]
+pub struct RepeatLink {
+    pub repetition: Repetition,
+    pub outer: Option<Arc<RepeatLink>>,
+}
+
+impl Origin {
+    /// An origin outside every macro.
+    pub fn at(span: Span) -> Origin {
+        Origin { span, repeat: None }
+    }
+
     /// Enclosing repetitions, outermost first; empty outside macros.
-    pub repeats: Vec<Repetition>,
+    pub fn repeats(&self) -> Vec<Repetition> {
+        let mut out = Vec::new();
+        let mut link = self.repeat.as_deref();
+        while let Some(l) = link {
+            out.push(l.repetition);
+            link = l.outer.as_deref();
+        }
+        out.reverse();
+        out
+    }
 }
 
 /// A register: file and number (`r3` is `Temp`, 3; `vPos` is `Position`, 0).

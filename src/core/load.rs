@@ -68,15 +68,12 @@ pub fn load(file: SourceFile, options: &Options) -> Result<Loaded, SourceError> 
     if diags.has_errors() {
         // Still report macro problems of the lines that did parse.
         if let Err(more) = repeat::expand(&stmts, &options.defines, options.max_expanded) {
-            diags.items.extend(more.items);
+            diags.extend(more);
         }
         // And the checks of each line that did parse on its own.
         for stmt in &stmts {
             if let ast::Stmt::Instr(instr) = stmt {
-                let origin = Origin {
-                    span: instr.span,
-                    repeats: Vec::new(),
-                };
+                let origin = Origin::at(instr.span);
                 if let Err(d) = crate::core::valid::lower::lower(instr, &origin) {
                     diags.push(d);
                 }

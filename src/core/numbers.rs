@@ -20,7 +20,7 @@ pub fn thousands(v: u64) -> String {
 
 /// `1 error`, `12 errors`, `1,310,720 pixels`: a count with its noun in the
 /// right number, thousands separated.
-pub fn count(n: u64, one: &str, many: &str) -> String {
+pub fn plural(n: u64, one: &str, many: &str) -> String {
     format!("{} {}", thousands(n), if n == 1 { one } else { many })
 }
 
@@ -33,12 +33,23 @@ pub fn list(items: &[&str]) -> String {
     }
 }
 
-/// A range as `64,853` or `1,000–2,000`.
+/// A count as [`thousands`] spells it, or `more than 18,446,744,073,709,551,614`
+/// for a count that saturated: the cost model's arithmetic stops at
+/// `u64::MAX` instead of wrapping, so that value means "at least this".
+pub fn count(v: u64) -> String {
+    if v == u64::MAX {
+        format!("more than {}", thousands(u64::MAX - 1))
+    } else {
+        thousands(v)
+    }
+}
+
+/// A range as `64,853` or `1,000–2,000` (saturated ends as [`count`] says).
 pub fn range_text(r: Range) -> String {
     if r.is_exact() {
-        thousands(r.min)
+        count(r.min)
     } else {
-        format!("{}–{}", thousands(r.min), thousands(r.max))
+        format!("{}–{}", count(r.min), count(r.max))
     }
 }
 
@@ -104,9 +115,9 @@ mod tests {
         assert_eq!(number(1.5e-9), "1.5000e-9");
         assert_eq!(thousands(64853), "64,853");
         assert_eq!(thousands(999), "999");
-        assert_eq!(count(1, "line", "lines"), "1 line");
+        assert_eq!(plural(1, "line", "lines"), "1 line");
         assert_eq!(list(&["c1", "i1", "i2"]), "c1, i1 and i2");
-        assert_eq!(count(0, "line", "lines"), "0 lines");
-        assert_eq!(count(12_345, "pixel", "pixels"), "12,345 pixels");
+        assert_eq!(plural(0, "line", "lines"), "0 lines");
+        assert_eq!(plural(12_345, "pixel", "pixels"), "12,345 pixels");
     }
 }

@@ -87,6 +87,9 @@ pub fn check_text(name: &str, a: &Analysis) -> String {
 fn budget_text(min: u64, max: u64, limit: u64) -> String {
     if max <= limit {
         format!("ok ({} to spare)", thousands(limit - max))
+    } else if min == u64::MAX {
+        // Saturated: at least this much over, no honest percentage.
+        format!("OVER by more than {}", thousands(u64::MAX - 1 - limit))
     } else if min > limit {
         format!(
             "OVER by {} ({:.1}%)",
@@ -94,7 +97,11 @@ fn budget_text(min: u64, max: u64, limit: u64) -> String {
             (min - limit) as f64 * 100.0 / limit as f64
         )
     } else {
-        format!("longest path OVER by {}", thousands(max - limit))
+        let more = if max == u64::MAX { "more than " } else { "" };
+        format!(
+            "longest path OVER by {more}{}",
+            thousands(max - u64::from(max == u64::MAX) - limit)
+        )
     }
 }
 
@@ -128,6 +135,8 @@ pub fn check_json(loaded: &Loaded, a: &Analysis, found: &[audit::Finding]) -> Va
         "limits": json::limits(&a.profile),
         "slots": a.slots,
         "executed": json::range(a.executed),
+        // u64::MAX is "at least this many": the count saturated.
+        "executed_saturated": a.executed.max == u64::MAX,
         "data_dependent": a.data_dependent,
         "reasons": a.reasons,
         "within_limits": a.verdict == Verdict::Within,

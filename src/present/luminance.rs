@@ -6,7 +6,7 @@ use crate::core::cost::Profile;
 use crate::core::emu::findings::{grouped, Finding};
 use crate::core::image::Written;
 use crate::core::load::Loaded;
-use crate::core::numbers::{count, range_text, thousands};
+use crate::core::numbers::{plural, range_text, thousands};
 use crate::jobs::luminance::{
     BlockCheck, Comparison, LuminanceRun, PassCost, PassOutput, FIT_TOLERANCE,
 };
@@ -181,7 +181,7 @@ pub fn findings_text(shader: &str, findings: &[Finding]) -> String {
                     "{shader}:{}:{} and {} ({} in all, lines {}–{})",
                     f.site.line,
                     f.site.column,
-                    count(g.count as u64 - 1, "more place", "more places"),
+                    plural(g.count as u64 - 1, "more place", "more places"),
                     thousands(g.count as u64),
                     g.lines.0,
                     g.lines.1
@@ -357,7 +357,7 @@ pub fn pass_text(image: &str, out: &PassOutput, written: Option<(&Path, &Written
         if w.clamped > 0 {
             s.push_str(&format!(
                 "; {} outside [0, 1] clamped",
-                count(w.clamped, "value", "values")
+                plural(w.clamped, "value", "values")
             ));
         }
         s.push_str(")\n");

@@ -1,7 +1,7 @@
 //! What `ps30 tonemap` prints: L̄w, the operator, the cost and the pixel
 //! cross-check, as text and JSON.
 
-use crate::core::numbers::{count, number, range_text, thousands};
+use crate::core::numbers::{number, plural, range_text, thousands};
 use crate::jobs::tonemap::{Operator, ToneMapped, WhiteSource};
 use crate::present::json as shape;
 
@@ -62,12 +62,12 @@ pub fn text(image: &str, t: &ToneMapped, written: Option<&str>) -> String {
     ));
     s.push_str(&format!(
         "8-bit sRGB: {} in {} differ from the reference's by one code, each where the bound straddles a rounding boundary{}\n",
-        count(c.mismatched_8bit_channels, "channel value", "channel values"),
-        count(c.mismatched_8bit_pixels, "pixel", "pixels"),
+        plural(c.mismatched_8bit_channels, "channel value", "channel values"),
+        plural(c.mismatched_8bit_pixels, "pixel", "pixels"),
         if c.unexplained_8bit > 0 {
             format!(
                 "; {} NOT explained so",
-                count(c.unexplained_8bit, "difference is", "differences are")
+                plural(c.unexplained_8bit, "difference is", "differences are")
             )
         } else {
             String::new()
@@ -76,7 +76,7 @@ pub fn text(image: &str, t: &ToneMapped, written: Option<&str>) -> String {
     if c.sign_ambiguous_pixels > 0 {
         s.push_str(&format!(
             "{} luminance is 0 to within f32 rounding (channels cancel), so either black or the scaled colour is right; {} of their codes differ from the reference's\n",
-            count(c.sign_ambiguous_pixels, "pixel's", "pixels'"),
+            plural(c.sign_ambiguous_pixels, "pixel's", "pixels'"),
             thousands(c.ambiguous_8bit)
         ));
     }

@@ -48,7 +48,7 @@ pub const CASES: &[(&str, &str, usize, usize)] = &[
     ("ps_3_0\ncall l2048\nret", "register `l2048` is out of range", 2, 6),
     ("ps_3_0\n(p1) mov r0, r1", "register `p1` is out of range", 2, 2),
     ("ps_3_0\nmov r, c0", "register `r` needs a number", 2, 5),
-    ("ps_3_0\nmov r0, ü0", "expected a register", 2, 9),
+    ("ps_3_0\nmov r0, ü0", "unexpected U+00FC", 2, 9),
     ("ps_3_0\nmov r0, c0[aL]", "`c` registers cannot be relatively addressed", 2, 11),
     ("ps_3_0\nmov vPos, r0", "`vPos` cannot be written", 2, 5),
     ("ps_3_0\nadd r0, s0, r1", "`s0` cannot be read here", 2, 9),
@@ -188,7 +188,7 @@ pub const CASES: &[(&str, &str, usize, usize)] = &[
     ("ps_3_0\nadd r0 r1, r2", "expected `,` or the end of the line, found `r1`", 2, 8),
     ("ps_3_0\nadd r0, r1 + r2", "expected `,` or the end of the line, found `+`", 2, 12),
     ("ps_3_0\n,mov r0, c0", "expected an instruction, found `,`", 2, 1),
-    ("ps_3_0\nmovü r0, r1", "unexpected character after `mov`", 2, 4),
+    ("ps_3_0\nmovü r0, r1", "unexpected U+00FC", 2, 4),
     ("ps_3_0\n(p0 mov r0, r1", "expected `)` to close the predicate", 2, 5),
     // --- columns: tabs, CRLF, leading blanks, multi-byte text before the error
     ("ps_3_0\n\tmov r0,\tq0", "unknown register `q0`", 2, 10),

@@ -263,13 +263,27 @@ pub struct EmuLimits {
     pub max_executed_per_pixel: u64,
     /// Largest `width × height` accepted.
     pub max_target_pixels: u64,
+    /// Executed instruction slots allowed for the whole draw, every pixel
+    /// together; exceeding it is [`EmuError::TotalExecutedLimit`].
+    pub max_executed_total: u64,
+}
+
+impl EmuLimits {
+    /// Default of `max_executed_per_pixel`: 152 times the 65,535 of ps_3_0.
+    pub const MAX_EXECUTED_PER_PIXEL: u64 = 10_000_000;
+    /// Default of `max_target_pixels`: 2048×2048.
+    pub const MAX_TARGET_PIXELS: u64 = 1 << 22;
+    /// Default of `max_executed_total`: a few seconds of emulation on two
+    /// cores for the slowest instructions measured (see the README).
+    pub const MAX_EXECUTED_TOTAL: u64 = 500_000_000;
 }
 
 impl Default for EmuLimits {
     fn default() -> EmuLimits {
         EmuLimits {
-            max_executed_per_pixel: 10_000_000,
-            max_target_pixels: 1 << 24,
+            max_executed_per_pixel: EmuLimits::MAX_EXECUTED_PER_PIXEL,
+            max_target_pixels: EmuLimits::MAX_TARGET_PIXELS,
+            max_executed_total: EmuLimits::MAX_EXECUTED_TOTAL,
         }
     }
 }
@@ -426,6 +440,16 @@ pub enum EmuError {
         executed: u64,
         limit: u64,
     },
+    /// The draw as a whole (a target of `pixels` pixels) ran more executed
+    /// slots than the limit allows.
+    TotalExecutedLimit {
+        limit: u64,
+        pixels: u64,
+    },
+    /// The target's memory could not be had (`bytes` asked for).
+    OutOfMemory {
+        bytes: u64,
+    },
     /// `call`/`callnz` nested deeper than ps_3_0's 4 levels.
     CallDepth {
         x: u32,
@@ -500,6 +524,17 @@ impl fmt::Display for EmuError {
                 f,
                 "pixel ({}, {}) executed {} instruction slots, more than the limit of {} (raise it with --max-executed-per-pixel)",
                 x, y, executed, limit
+            ),
+            EmuError::TotalExecutedLimit { limit, pixels } => write!(
+                f,
+                "the draw over {} pixels executed more than {} instruction slots in all (raise the limit with --max-executed-total)",
+                crate::core::numbers::thousands(*pixels),
+                crate::core::numbers::thousands(*limit)
+            ),
+            EmuError::OutOfMemory { bytes } => write!(
+                f,
+                "the draw's outputs need {} bytes, more than this machine can give (lower the target size)",
+                crate::core::numbers::thousands(*bytes)
             ),
             EmuError::CallDepth { x, y, index } => write!(
                 f,
@@ -724,26 +759,38 @@ pub fn run_with_threads(
 ) -> Result<DrawOutput, EmuError> {
     let ctx = RunCtx::new(compiled, draw)?;
     let n = (ctx.width * ctx.height) as usize;
+    let q = ctx.quads as usize;
+    let color = (0..4)
+        .map(|i| {
+            compiled
+                .writes_output(i)
+                .then(|| filled(n, [0.0; 4]))
+                .transpose()
+        })
+        .collect::<Result<_, _>>()?;
     let mut out = DrawOutput {
         width: draw.target_width,
         height: draw.target_height,
-        color: (0..4)
-            .map(|i| compiled.writes_output(i).then(|| vec![[0.0; 4]; n]))
-            .collect(),
-        depth: compiled.writes_output(4).then(|| vec![0.0; n]),
-        killed: vec![false; n],
-        executed: vec![0; n],
+        color,
+        depth: compiled
+            .writes_output(4)
+            .then(|| filled(n, 0.0))
+            .transpose()?,
+        killed: filled(n, false)?,
+        executed: filled(n, 0)?,
         quads_x: ctx.quads_x as u32,
-        quad_executed: vec![0; ctx.quads as usize],
-        quad_divergent: vec![false; ctx.quads as usize],
+        quad_executed: filled(q, 0)?,
+        quad_divergent: filled(q, false)?,
         gradients: compiled.sites.clone(),
     };
     let mut written = 0u8;
     let batches = ctx.batches();
+    let mut total = Total::new(&ctx, draw.limits.max_executed_total);
     if threads == 1 {
         let mut worker = Worker::new(&ctx);
         for b in 0..batches {
             let r = worker.run(b)?;
+            total.add(&r)?;
             written |= scatter(&ctx, &mut out, b, &r);
         }
     } else {
@@ -755,18 +802,23 @@ pub fn run_with_threads(
                 // Batches after the first failure stop early; the ones before
                 // it always finish, so the reported error does not depend on
                 // scheduling.
+                // Once the batches done (in any order) are over the total
+                // limit, the rest are skipped: the draw fails either way.
                 let first_err = AtomicU64::new(u64::MAX);
                 let results: Vec<Option<Result<Box<BatchOut>, EmuError>>> = (start..end)
                     .into_par_iter()
                     .map_init(
                         || Worker::new(&ctx),
                         |w, b| {
-                            if b > first_err.load(Ordering::Relaxed) {
+                            if b > first_err.load(Ordering::Relaxed) || total.over() {
                                 return None;
                             }
                             let r = w.run(b);
-                            if r.is_err() {
-                                first_err.fetch_min(b, Ordering::Relaxed);
+                            match &r {
+                                Ok(out) => total.race(out),
+                                Err(_) => {
+                                    first_err.fetch_min(b, Ordering::Relaxed);
+                                }
                             }
                             Some(r)
                         },
@@ -774,8 +826,12 @@ pub fn run_with_threads(
                     .collect();
                 for (b, r) in (start..end).zip(results) {
                     match r {
-                        Some(Ok(r)) => written |= scatter(&ctx, &mut out, b, &r),
+                        Some(Ok(r)) => {
+                            total.add(&r)?;
+                            written |= scatter(&ctx, &mut out, b, &r)
+                        }
                         Some(Err(e)) => return Err(e),
+                        None if total.over() => return Err(total.error()),
                         None => {}
                     }
                 }
@@ -798,6 +854,75 @@ pub fn run_with_threads(
         out.depth = None;
     }
     Ok(out)
+}
+
+/// A vector of `n` copies of `value`, or [`EmuError::OutOfMemory`] when the
+/// memory cannot be had (instead of aborting the process).
+fn filled<T: Clone>(n: usize, value: T) -> Result<Vec<T>, EmuError> {
+    let mut v = Vec::new();
+    v.try_reserve_exact(n).map_err(|_| EmuError::OutOfMemory {
+        bytes: (n as u64).saturating_mul(std::mem::size_of::<T>() as u64),
+    })?;
+    v.resize(n, value);
+    Ok(v)
+}
+
+/// The draw's executed slots so far (helper lanes included: they are work
+/// too). A draw fails exactly when the sum over all its batches is over the
+/// limit, whatever the thread count; the message names nothing that
+/// depends on which batches ran first.
+struct Total {
+    limit: u64,
+    /// Batches merged so far, in batch order.
+    executed: u64,
+    /// Batches finished so far, in any order (shared by the workers).
+    finished: AtomicU64,
+    pixels: u64,
+}
+
+impl Total {
+    fn new(ctx: &RunCtx, limit: u64) -> Total {
+        Total {
+            limit,
+            executed: 0,
+            finished: AtomicU64::new(0),
+            pixels: ctx.width * ctx.height,
+        }
+    }
+
+    fn slots(r: &BatchOut) -> u64 {
+        r.executed.iter().fold(0u64, |a, &e| a.saturating_add(e))
+    }
+
+    /// A worker finished a batch.
+    fn race(&self, r: &BatchOut) {
+        let _ = self
+            .finished
+            .fetch_update(Ordering::Relaxed, Ordering::Relaxed, |v| {
+                Some(v.saturating_add(Total::slots(r)))
+            });
+    }
+
+    /// Whether the batches finished so far are already over the limit.
+    fn over(&self) -> bool {
+        self.finished.load(Ordering::Relaxed) > self.limit
+    }
+
+    fn error(&self) -> EmuError {
+        EmuError::TotalExecutedLimit {
+            limit: self.limit,
+            pixels: self.pixels,
+        }
+    }
+
+    /// Merges a batch.
+    fn add(&mut self, r: &BatchOut) -> Result<(), EmuError> {
+        self.executed = self.executed.saturating_add(Total::slots(r));
+        if self.executed > self.limit {
+            return Err(self.error());
+        }
+        Ok(())
+    }
 }
 
 /// A rayon pool with `threads` threads, built once per thread count and kept

@@ -8,7 +8,7 @@
 //! and all errors are returned together.
 
 use super::ast::{Count, InstrAst, OperandAst, RegAst, RelAst, Stmt};
-use crate::core::diag::{Diagnostic, Diagnostics};
+use crate::core::diag::{excerpt, Diagnostic, Diagnostics};
 use crate::core::ir::Span;
 use nom::branch::alt;
 use nom::bytes::complete::{tag_no_case, take_while, take_while1};
@@ -30,7 +30,14 @@ pub fn parse(text: &str) -> (Vec<Stmt>, Diagnostics) {
         let code = strip_comment(line.trim_end_matches(['\n', '\r']));
         let lead = code.len() - code.trim_start().len();
         let code = code.trim();
-        if !code.is_empty() {
+        if let Some((at, c)) = code.char_indices().find(|&(_, c)| odd_char(c)) {
+            let at = line_start + lead + at;
+            diags.push(odd_char_error(c, Span::new(at, at + c.len_utf8()), at == 0));
+            stmts.extend(macro_placeholder(
+                code,
+                Span::new(line_start + lead, line_start + lead + code.len()),
+            ));
+        } else if !code.is_empty() {
             let start = line_start + lead;
             let mut cursor = Cursor {
                 text: code,
@@ -53,6 +60,56 @@ pub fn parse(text: &str) -> (Vec<Stmt>, Diagnostics) {
         line_start += line.len();
     }
     (stmts, diags)
+}
+
+/// Whether `c` cannot be part of ps_3_0 assembly outside a comment: the
+/// language is printable ASCII, spaces and tabs.
+fn odd_char(c: char) -> bool {
+    !(c == ' ' || c == '\t' || c.is_ascii_graphic())
+}
+
+/// The error for a character assembly cannot hold, naming it by code point
+/// (and by name where it is a usual suspect: pasted text, a foreign line
+/// ending, a look-alike letter).
+fn odd_char_error(c: char, span: Span, file_start: bool) -> Diagnostic {
+    let code = format!("U+{:04X}", c as u32);
+    let (what, help) = match c {
+        '\u{feff}' if file_start => (
+            "a UTF-8 byte-order mark starts the file".to_string(),
+            "save the file as UTF-8 without a byte-order mark (BOM)",
+        ),
+        '\r' => (
+            "a carriage return (CR) that does not end a line: the file uses lone-CR line endings".to_string(),
+            "ps30 reads LF or CR LF line endings; convert the file",
+        ),
+        '\0' => (
+            "a NUL byte".to_string(),
+            "the file holds binary data here; assembly is plain text",
+        ),
+        '\u{a0}' => (
+            "a no-break space".to_string(),
+            "replace it with an ordinary space (it often comes from pasted text)",
+        ),
+        '\u{200b}' | '\u{200c}' | '\u{200d}' | '\u{2060}' | '\u{feff}' => (
+            "an invisible zero-width character".to_string(),
+            "delete it (it often comes from pasted text)",
+        ),
+        '\u{0370}'..='\u{03ff}' | '\u{0400}'..='\u{04ff}' => (
+            format!("the {} letter `{c}`", if (c as u32) < 0x400 { "Greek" } else { "Cyrillic" }),
+            "type it as a Latin letter: mnemonics and registers are ASCII, and this one only looks like one",
+        ),
+        c if c.is_control() => (
+            "a control character".to_string(),
+            "assembly is plain text; delete it",
+        ),
+        c => (
+            format!("the character `{c}`"),
+            "ps_3_0 assembly is ASCII outside comments",
+        ),
+    };
+    Diagnostic::error(span, format!("unexpected {code}: {what}"))
+        .with_label(format!("{code} here"))
+        .with_help(help)
 }
 
 /// What a REPEAT_BLOCK line that did not parse stands for: a block of 0
@@ -168,7 +225,7 @@ impl<'a> Cursor<'a> {
 
     fn found(&self) -> String {
         match self.rest.split([',', ' ', '\t']).next() {
-            Some(t) if !t.is_empty() => format!("found `{t}`"),
+            Some(t) if !t.is_empty() => format!("found `{}`", excerpt(t)),
             _ => match self.rest.chars().next() {
                 Some(c) => format!("found `{c}`"),
                 None => "found the end of the line".to_string(),
@@ -559,7 +616,9 @@ pub fn missing_version(text: &str) -> Option<Diagnostic> {
         let lead = code.len() - code.trim_start().len();
         let code = code.trim();
         if !code.is_empty() {
-            if is_version_line(code) {
+            // A version line, or a line with a character assembly cannot
+            // hold (the parser names it where it stands).
+            if is_version_line(code) || code.chars().any(odd_char) {
                 return None;
             }
             let start = line_start + lead;

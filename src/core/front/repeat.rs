@@ -7,13 +7,17 @@
 
 use super::ast::{Count, Stmt};
 use crate::core::diag::{Diagnostic, Diagnostics};
-use crate::core::ir::{Origin, Repetition, Span};
+use crate::core::ir::{Origin, RepeatLink, Repetition, Span};
 use std::collections::BTreeMap;
+use std::sync::Arc;
 
-/// Default cap on the number of statements an expansion may produce.
-/// ps_3_0 programs have at most 32,768 slots, so a legitimate expansion is
-/// far below this; raise it with `--max-expanded`.
+/// Default cap on the statements an expansion may produce, and on the
+/// repetitions it may make. ps_3_0 programs have at most 32,768 slots, so a
+/// legitimate expansion is far below this; raise it with `--max-expanded`.
 pub const DEFAULT_MAX_EXPANDED: u64 = 100_000;
+
+/// Deepest REPEAT_BLOCK nesting accepted (the article nests two).
+pub const MAX_DEPTH: usize = 64;
 
 /// One statement of the expanded program: which source statement, and in
 /// which repetitions.
@@ -23,44 +27,117 @@ pub struct Expanded {
     pub origin: Origin,
 }
 
+/// What expanding a part of the source costs: statements produced and
+/// repetitions made. A block whose body produces nothing costs nothing and
+/// is skipped, however large its count.
+#[derive(Clone, Copy, Default)]
+struct Size {
+    statements: u64,
+    repetitions: u64,
+}
+
+impl Size {
+    fn add(self, other: Size) -> Size {
+        Size {
+            statements: self.statements.saturating_add(other.statements),
+            repetitions: self.repetitions.saturating_add(other.repetitions),
+        }
+    }
+}
+
 enum Node {
     Leaf(usize),
     Repeat {
         span: Span,
         count: u32,
         body: Vec<Node>,
+        /// The whole block's expansion (count × body, plus its repetitions).
+        size: Size,
     },
 }
 
-/// Expands every REPEAT_BLOCK. `defines` binds names used as counts.
+impl Node {
+    fn size(&self) -> Size {
+        match self {
+            Node::Leaf(_) => Size {
+                statements: 1,
+                repetitions: 0,
+            },
+            Node::Repeat { size, .. } => *size,
+        }
+    }
+
+    /// A block of `count` repetitions of `body`.
+    fn repeat(span: Span, count: u32, body: Vec<Node>) -> Node {
+        let inner = body.iter().fold(Size::default(), |a, n| a.add(n.size()));
+        let count = u64::from(count);
+        let size = if inner.statements == 0 {
+            Size::default()
+        } else {
+            Size {
+                statements: inner.statements.saturating_mul(count),
+                repetitions: inner.repetitions.saturating_add(1).saturating_mul(count),
+            }
+        };
+        Node::Repeat {
+            span,
+            count: count as u32,
+            body,
+            size,
+        }
+    }
+}
+
+/// Expands every REPEAT_BLOCK. `defines` binds names used as counts;
+/// `max_expanded` caps both the statements produced and the repetitions
+/// made, checked before anything is expanded.
 pub fn expand(
     stmts: &[Stmt],
     defines: &BTreeMap<String, u64>,
     max_expanded: u64,
 ) -> Result<Vec<Expanded>, Diagnostics> {
+    let top = block_tree(stmts, defines)?;
+    let total = top.iter().fold(Size::default(), |a, n| a.add(n.size()));
+    if let Some(d) = over_cap(&top, stmts, total, max_expanded) {
+        let mut diags = Diagnostics::default();
+        diags.push(d);
+        return Err(diags);
+    }
+    let mut out = Vec::with_capacity(total.statements as usize);
+    emit(&top, stmts, &None, &mut out);
+    Ok(out)
+}
+
+/// The blocks of the source as a tree, checking balance and depth (an
+/// explicit stack: no recursion on the source's nesting).
+fn block_tree(stmts: &[Stmt], defines: &BTreeMap<String, u64>) -> Result<Vec<Node>, Diagnostics> {
     let mut diags = Diagnostics::default();
-    // Build the block tree, checking balance.
     let mut stack: Vec<(Span, u32, Vec<Node>)> = Vec::new();
     let mut top: Vec<Node> = Vec::new();
+    let mut too_deep = false;
     for (i, stmt) in stmts.iter().enumerate() {
         match stmt {
             Stmt::RepeatBegin { count, span } => {
-                let n = match resolve(count, defines) {
-                    Ok(n) => n,
-                    Err(d) => {
-                        diags.push(d);
-                        0
-                    }
-                };
+                let n = resolve(count, defines).unwrap_or_else(|d| {
+                    diags.push(d);
+                    0
+                });
+                if stack.len() == MAX_DEPTH && !too_deep {
+                    too_deep = true;
+                    diags.push(
+                        Diagnostic::error(
+                            *span,
+                            format!("REPEAT_BLOCK nested more than {MAX_DEPTH} deep"),
+                        )
+                        .with_label(format!("block {} levels deep", MAX_DEPTH + 1))
+                        .with_help("flatten the nesting: a block of n repetitions around a block of m is one block of n·m when nothing else sits between them"),
+                    );
+                }
                 stack.push((*span, n, Vec::new()));
             }
             Stmt::RepeatEnd { span } => match stack.pop() {
                 Some((bspan, count, body)) => {
-                    let node = Node::Repeat {
-                        span: bspan,
-                        count,
-                        body,
-                    };
+                    let node = Node::repeat(bspan, count, body);
                     match stack.last_mut() {
                         Some(parent) => parent.2.push(node),
                         None => top.push(node),
@@ -81,38 +158,106 @@ pub fn expand(
             },
         }
     }
-    for (span, _, _) in stack.iter().rev() {
-        diags.push(
-            Diagnostic::error(*span, "BEGIN_REPEAT_BLOCK is never closed")
-                .with_label("opened here")
-                .with_help("add END_REPEAT_BLOCK after the block's last line"),
-        );
+    // Report the outermost unclosed block first; a deep pile of unclosed
+    // blocks is one problem, told once.
+    if let Some((span, _, _)) = stack.first() {
+        let more = stack.len() - 1;
+        let mut d = Diagnostic::error(*span, "BEGIN_REPEAT_BLOCK is never closed")
+            .with_label("opened here")
+            .with_help("add END_REPEAT_BLOCK after the block's last line");
+        if more > 0 {
+            d = d.with_note(format!(
+                "and {more} more block{} opened after it",
+                if more == 1 { " is" } else { "s are" }
+            ));
+        }
+        diags.push(d);
     }
+    // Free the tree without recursing as deep as the source nests.
     if diags.has_errors() {
+        drop_flat(top);
+        drop_flat(
+            stack
+                .into_iter()
+                .map(|(s, c, b)| Node::repeat(s, c, b))
+                .collect(),
+        );
         return Err(diags);
     }
+    Ok(top)
+}
 
-    // Size before expanding: refuse bombs without allocating them.
-    let total = size(&top);
-    if total > max_expanded {
-        let culprit = largest_repeat(&top);
-        let span = culprit.unwrap_or_default();
-        diags.push(
+/// Drops a tree of any depth with a loop instead of recursion.
+fn drop_flat(mut nodes: Vec<Node>) {
+    while let Some(n) = nodes.pop() {
+        if let Node::Repeat { body, .. } = n {
+            nodes.extend(body);
+        }
+    }
+}
+
+/// The error for an expansion over the cap, pointed at the block that
+/// expands the most (or, without macros, at the first statement past it).
+fn over_cap(top: &[Node], stmts: &[Stmt], total: Size, cap: u64) -> Option<Diagnostic> {
+    let help = |n: u64| {
+        format!("ps_3_0 shaders have at most 32,768 instruction slots; if you really need this, raise the cap with --max-expanded {n}")
+    };
+    let has_macro = top.iter().any(|n| matches!(n, Node::Repeat { .. }));
+    if total.statements > cap && !has_macro {
+        let span = top
+            .get(cap as usize)
+            .and_then(|n| match n {
+                Node::Leaf(i) => Some(stmt_span(&stmts[*i])),
+                Node::Repeat { .. } => None,
+            })
+            .unwrap_or_default();
+        return Some(
             Diagnostic::error(
                 span,
-                format!("REPEAT_BLOCK expansion would produce {total} statements, over the cap of {max_expanded}"),
+                format!(
+                    "the file has {} statements, over the cap of {cap}",
+                    total.statements
+                ),
+            )
+            .with_label("the first statement past the cap")
+            .with_help(help(total.statements)),
+        );
+    }
+    let culprit = |key: fn(Size) -> u64| {
+        top.iter()
+            .filter_map(|n| match n {
+                Node::Repeat { span, size, .. } => Some((key(*size), *span)),
+                Node::Leaf(_) => None,
+            })
+            .max_by_key(|(s, _)| *s)
+            .map(|(_, span)| span)
+            .unwrap_or_default()
+    };
+    if total.statements > cap {
+        let n = total.statements;
+        return Some(
+            Diagnostic::error(
+                culprit(|s| s.statements),
+                format!(
+                    "REPEAT_BLOCK expansion would produce {n} statements, over the cap of {cap}"
+                ),
             )
             .with_label("this block expands too far")
-            .with_help(format!(
-                "ps_3_0 shaders have at most 32,768 instruction slots; if you really need this, raise the cap with --max-expanded {total}"
-            )),
+            .with_help(help(n)),
         );
-        return Err(diags);
     }
-    let mut out = Vec::with_capacity(total as usize);
-    let mut reps = Vec::new();
-    emit(&top, stmts, &mut reps, &mut out);
-    Ok(out)
+    if total.repetitions > cap {
+        let n = total.repetitions;
+        return Some(
+            Diagnostic::error(
+                culprit(|s| s.repetitions),
+                format!("REPEAT_BLOCK expansion would make {n} repetitions, over the cap of {cap}"),
+            )
+            .with_label("this block repeats too often")
+            .with_help(format!("the cap bounds repetitions as well as statements; raise it with --max-expanded {n}")),
+        );
+    }
+    None
 }
 
 fn resolve(count: &Count, defines: &BTreeMap<String, u64>) -> Result<u32, Diagnostic> {
@@ -139,55 +284,45 @@ fn resolve(count: &Count, defines: &BTreeMap<String, u64>) -> Result<u32, Diagno
     })
 }
 
-fn size(nodes: &[Node]) -> u64 {
-    nodes.iter().fold(0u64, |acc, n| {
-        acc.saturating_add(match n {
-            Node::Leaf(_) => 1,
-            Node::Repeat { count, body, .. } => (*count as u64).saturating_mul(size(body)),
-        })
-    })
+fn stmt_span(stmt: &Stmt) -> Span {
+    match stmt {
+        Stmt::Instr(instr) => instr.span,
+        Stmt::Version { span, .. } => *span,
+        Stmt::RepeatBegin { span, .. } | Stmt::RepeatEnd { span } => *span,
+    }
 }
 
-/// The outermost repeat with the largest expansion (to point the error at).
-fn largest_repeat(nodes: &[Node]) -> Option<Span> {
-    nodes
-        .iter()
-        .filter_map(|n| match n {
-            Node::Repeat { span, count, body } => {
-                Some(((*count as u64).saturating_mul(size(body)), *span))
-            }
-            Node::Leaf(_) => None,
-        })
-        .max_by_key(|(s, _)| *s)
-        .map(|(_, span)| span)
-}
-
-fn emit(nodes: &[Node], stmts: &[Stmt], reps: &mut Vec<Repetition>, out: &mut Vec<Expanded>) {
+/// Writes the expansion; blocks that produce nothing are skipped. Recursion
+/// is bounded by [`MAX_DEPTH`].
+fn emit(nodes: &[Node], stmts: &[Stmt], outer: &Option<Arc<RepeatLink>>, out: &mut Vec<Expanded>) {
     for node in nodes {
         match node {
-            Node::Leaf(i) => {
-                let span = match &stmts[*i] {
-                    Stmt::Instr(instr) => instr.span,
-                    Stmt::Version { span, .. } => *span,
-                    Stmt::RepeatBegin { span, .. } | Stmt::RepeatEnd { span } => *span,
-                };
-                out.push(Expanded {
-                    stmt: *i,
-                    origin: Origin {
-                        span,
-                        repeats: reps.clone(),
-                    },
-                });
-            }
-            Node::Repeat { span, count, body } => {
+            Node::Leaf(i) => out.push(Expanded {
+                stmt: *i,
+                origin: Origin {
+                    span: stmt_span(&stmts[*i]),
+                    repeat: outer.clone(),
+                },
+            }),
+            Node::Repeat {
+                span,
+                count,
+                body,
+                size,
+            } => {
+                if size.statements == 0 {
+                    continue;
+                }
                 for index in 0..*count {
-                    reps.push(Repetition {
-                        macro_span: *span,
-                        index,
-                        count: *count,
-                    });
-                    emit(body, stmts, reps, out);
-                    reps.pop();
+                    let link = Some(Arc::new(RepeatLink {
+                        repetition: Repetition {
+                            macro_span: *span,
+                            index,
+                            count: *count,
+                        },
+                        outer: outer.clone(),
+                    }));
+                    emit(body, stmts, &link, out);
                 }
             }
         }

@@ -19,6 +19,9 @@ pub enum ImageError {
         action: &'static str,
         source: io::Error,
     },
+    /// The output path breaks a rule of [`crate::core::output`]; `why`
+    /// names the path.
+    Refused { path: PathBuf, why: String },
     /// The file starts with none of the magic numbers ps30 reads.
     UnknownFormat { path: PathBuf, first_bytes: Vec<u8> },
     /// The header promises more pixels than [`super::ImageLimits`] allows.
@@ -98,6 +101,7 @@ impl ImageError {
     pub fn path(&self) -> &Path {
         match self {
             ImageError::Io { path, .. }
+            | ImageError::Refused { path, .. }
             | ImageError::UnknownFormat { path, .. }
             | ImageError::TooLarge { path, .. }
             | ImageError::BadHeader { path, .. }
@@ -118,6 +122,7 @@ impl fmt::Display for ImageError {
             ImageError::Io { action, source, .. } => {
                 write!(f, "{path}: cannot {action}: {source}")
             }
+            ImageError::Refused { why, .. } => f.write_str(why),
             ImageError::UnknownFormat { first_bytes, .. } => write!(
                 f,
                 "{path}: not an OpenEXR, Radiance HDR or PFM file (first bytes {first_bytes:02x?}; \

@@ -25,7 +25,7 @@ pub use error::{ForeignError, ImageError};
 pub use mip::{full_chain_levels, MipChain};
 pub use openexr::write_exr;
 pub use pfm::write_pfm;
-pub use png::write_png_rgb8;
+pub use png::{encode_png_rgb8, write_png_rgb8};
 pub use save::{unorm8, write_radiance, write_rgb_float, write_target, OutputFormat, Written};
 pub use target::{RenderTarget, TargetFormat, Texture};
 
@@ -53,6 +53,10 @@ fn write_atomically(
 ) -> Result<(), ImageError> {
     use crate::core::output::{self, Failure};
     output::write_atomically(path, encode).map_err(|f| match f {
+        Failure::Refused(why) => ImageError::Refused {
+            path: path.to_path_buf(),
+            why,
+        },
         Failure::Io { action, source } => ImageError::io(path, action, source),
         Failure::Encode(source) => ImageError::Encode {
             path: path.to_path_buf(),
@@ -60,6 +64,18 @@ fn write_atomically(
             source,
         },
     })
+}
+
+/// The error for a text header whose lines end in CR LF (a Windows line
+/// ending): the PFM and Radiance layouts end each header line with LF alone,
+/// and a CR would be read as part of a field or as pixel data.
+fn crlf_error(path: &Path, format: &'static str) -> ImageError {
+    ImageError::bad_header(
+        path,
+        format,
+        "line endings",
+        "the header lines end in CR LF; this format ends each header line with LF alone (convert the header, e.g. with dos2unix on the header lines, or re-export the file)",
+    )
 }
 
 /// An RGBA image with f32 channels, as loaded from a file.
@@ -123,12 +139,17 @@ pub struct ImageLimits {
     pub max_pixels: u64,
 }
 
+impl ImageLimits {
+    /// Default of `max_pixels`: 4 Mpixel (2048×2048, 64 MiB as RGBA f32),
+    /// three times the largest bundled image; a command on an image this
+    /// large stays within a few hundred megabytes (see the README).
+    pub const MAX_PIXELS: u64 = 1 << 22;
+}
+
 impl Default for ImageLimits {
-    /// 64 Mpixel (1 GiB as RGBA f32): far beyond the test images, far below
-    /// what a corrupt header can claim.
     fn default() -> ImageLimits {
         ImageLimits {
-            max_pixels: 1 << 26,
+            max_pixels: ImageLimits::MAX_PIXELS,
         }
     }
 }

@@ -1,11 +1,14 @@
 //! OpenEXR input and output through the `exr` crate (pure Rust; it decodes
 //! every compression the test images use, including the lossy DWAB).
 //!
-//! Reading happens in steps: the headers alone first, so that absurd sizes
-//! and unusable channel sets are refused before any pixel memory is
-//! allocated; for DWA files, the size counters of every chunk (see
-//! [`check_dwa_chunks`]); then the pixels of the first layer. The layer's
-//! data window is the image (the display window is ignored).
+//! Reading happens in steps: the first header's raw attributes (see
+//! [`check_raw_header`]: an inverted data window, a channel named twice, a
+//! compression this reader does not decode), then the headers as the `exr`
+//! crate reads them, so that absurd sizes and unusable channel sets are
+//! refused before any pixel memory is allocated; then the chunk table (see
+//! [`check_chunks`]: every scan line or tile exactly once, and for DWA files
+//! the size counters of every chunk); then the pixels of the first layer.
+//! The layer's data window is the image (the display window is ignored).
 //!
 //! Render targets are written losslessly (ZIP) in their own sample type:
 //! R32F as one f32 channel `R`, Rgba16F as half channels `R`, `G`, `B`, `A`.
@@ -14,6 +17,7 @@ use super::write_atomically;
 use super::{HdrImage, ImageError, ImageLimits, RenderTarget, TargetFormat};
 use exr::block::chunk::CompressedBlock;
 use exr::block::reader::ChunksReader;
+use exr::math::Vec2;
 use exr::meta::attribute::IntegerBounds;
 use exr::meta::header::Header;
 use exr::prelude::{
@@ -85,6 +89,10 @@ pub(super) fn read(
     limits: &ImageLimits,
 ) -> Result<HdrImage, ImageError> {
     let decode_error = |e| decode_error(path, e);
+    check_raw_header(path, &mut reader)?;
+    reader
+        .rewind()
+        .map_err(|e| ImageError::io(path, "read", e))?;
     let meta = MetaData::read_from_buffered(&mut reader, false).map_err(decode_error)?;
     for header in &meta.headers {
         let size = header.layer_size;
@@ -111,11 +119,20 @@ pub(super) fn read(
         |reader: &mut dyn Seek| reader.rewind().map_err(|e| ImageError::io(path, "read", e));
     if matches!(
         header.compression,
-        Compression::DWAA(_) | Compression::DWAB(_)
+        Compression::HTJ2K32 | Compression::HTJ2K256
     ) {
-        rewind(&mut reader)?;
-        check_dwa_chunks(path, &mut reader)?;
+        return Err(ImageError::bad_header(
+            path,
+            FORMAT,
+            "compression",
+            format!(
+                "{} (High-Throughput JPEG 2000) is not supported",
+                header.compression
+            ),
+        ));
     }
+    rewind(&mut reader)?;
+    check_chunks(path, &mut reader)?;
 
     rewind(&mut reader)?;
     let image = exr::prelude::read()
@@ -167,16 +184,130 @@ fn decode_error(path: &Path, e: exr::error::Error) -> ImageError {
     }
 }
 
-/// Guards against a flaw in the `exr` crate (1.74): every DWA chunk starts
-/// with eleven u64 counters, and the decoder reserves memory for the sizes
-/// and counts they record (e.g. the DC count) before it inflates anything.
-/// A corrupt counter makes it ask for terabytes, and a failed allocation
-/// aborts the whole process: no error, no unwinding. One changed
-/// byte in `assets/hdr/city.exr` was enough. So every chunk the decoder will
-/// read (layer 0, full resolution, located through the same offset table)
-/// is checked first: none of its counters may exceed what the chunk's
-/// pixels can need.
-fn check_dwa_chunks(path: &Path, reader: impl Read + Seek) -> Result<(), ImageError> {
+/// Compression methods by their number in the file, as the OpenEXR file
+/// layout lists them (0–9); later numbers are newer methods this reader
+/// does not decode.
+const COMPRESSIONS: [&str; 10] = [
+    "none", "RLE", "ZIPS", "ZIP", "PIZ", "PXR24", "B44", "B44A", "DWAA", "DWAB",
+];
+
+/// Largest first header read byte by byte (a real one is a few kilobytes).
+const MAX_RAW_HEADER: u64 = 1 << 20;
+
+/// Checks what the `exr` crate lets through or reports vaguely, on the
+/// first header's raw attributes: the data window must not be inverted, no
+/// channel may be named twice, and the compression must be one of
+/// [`COMPRESSIONS`] (a later one is named by its number).
+fn check_raw_header(path: &Path, reader: impl Read) -> Result<(), ImageError> {
+    let mut bytes = Vec::new();
+    reader
+        .take(MAX_RAW_HEADER)
+        .read_to_end(&mut bytes)
+        .map_err(|e| ImageError::io(path, "read", e))?;
+    let bad = |field: &str, problem: String| ImageError::bad_header(path, FORMAT, field, problem);
+    for (name, value) in raw_attributes(&bytes) {
+        match name {
+            "dataWindow" if value.len() == 16 => {
+                let v: Vec<i32> = value
+                    .chunks_exact(4)
+                    .map(|c| i32::from_le_bytes([c[0], c[1], c[2], c[3]]))
+                    .collect();
+                if v[2] < v[0] || v[3] < v[1] {
+                    return Err(bad(
+                        "dataWindow",
+                        format!(
+                            "the window ({}, {})–({}, {}) is inverted: its maximum is left of or above its minimum",
+                            v[0], v[1], v[2], v[3]
+                        ),
+                    ));
+                }
+            }
+            "channels" => {
+                let mut seen: Vec<&[u8]> = Vec::new();
+                let mut rest = value;
+                while let Some(end) = rest.iter().position(|&b| b == 0).filter(|&e| e > 0) {
+                    let channel = &rest[..end];
+                    if seen.contains(&channel) {
+                        return Err(bad(
+                            "channels",
+                            format!(
+                                "channel {} is listed twice",
+                                String::from_utf8_lossy(channel)
+                            ),
+                        ));
+                    }
+                    seen.push(channel);
+                    rest = rest.get(end + 1 + 16..).unwrap_or_default();
+                }
+            }
+            "compression" if value.len() == 1 && value[0] as usize >= COMPRESSIONS.len() => {
+                let name = match value[0] {
+                    10 => "HTJ2K256 (High-Throughput JPEG 2000)".to_string(),
+                    11 => "HTJ2K32 (High-Throughput JPEG 2000)".to_string(),
+                    n => format!("method {n}, newer than this reader knows,"),
+                };
+                return Err(bad(
+                    "compression",
+                    format!(
+                        "compression {name} is not supported; this reader decodes methods 0–9 ({})",
+                        COMPRESSIONS.join(", ")
+                    ),
+                ));
+            }
+            _ => {}
+        }
+    }
+    Ok(())
+}
+
+/// The attributes of the first header, `(name, value)`, as far as they can
+/// be read; the `exr` crate reports whatever is malformed.
+fn raw_attributes(bytes: &[u8]) -> Vec<(&str, &[u8])> {
+    let mut out = Vec::new();
+    let mut pos = 8; // magic number and version
+    let cstr = |at: usize| -> Option<(&str, usize)> {
+        let len = bytes.get(at..)?.iter().position(|&b| b == 0)?;
+        Some((
+            std::str::from_utf8(&bytes[at..at + len]).ok()?,
+            at + len + 1,
+        ))
+    };
+    while bytes.get(pos).is_some_and(|&b| b != 0) {
+        let Some((name, next)) = cstr(pos) else { break };
+        let Some((_type, next)) = cstr(next) else {
+            break;
+        };
+        let Some(size) = bytes.get(next..next + 4) else {
+            break;
+        };
+        let size = i32::from_le_bytes([size[0], size[1], size[2], size[3]]);
+        let start = next + 4;
+        let Some(value) = usize::try_from(size)
+            .ok()
+            .and_then(|n| bytes.get(start..start.checked_add(n)?))
+        else {
+            break;
+        };
+        out.push((name, value));
+        pos = start + value.len();
+    }
+    out
+}
+
+/// Walks the chunk table of layer 0 at full resolution, the chunks the
+/// decoder will read:
+///
+/// * every scan line (or tile) must be covered by exactly one chunk: the
+///   `exr` crate decodes a table that points two entries at one chunk, or
+///   chunks that all claim y = 0, into an image with black rows;
+/// * it guards against a flaw in the `exr` crate (1.74): every DWA chunk
+///   starts with eleven u64 counters, and the decoder reserves memory for
+///   the sizes and counts they record (e.g. the DC count) before it
+///   inflates anything. A corrupt counter makes it ask for terabytes, and a
+///   failed allocation aborts the whole process: no error, no unwinding. One
+///   changed byte in `assets/hdr/city.exr` was enough. So none of a DWA
+///   chunk's counters may exceed what the chunk's pixels can need.
+fn check_chunks(path: &Path, reader: impl Read + Seek) -> Result<(), ImageError> {
     let chunks = exr::block::read(reader, false)
         .and_then(|r| {
             r.filter_chunks(false, |_, tile, block| {
@@ -187,6 +318,11 @@ fn check_dwa_chunks(path: &Path, reader: impl Read + Seek) -> Result<(), ImageEr
     let Some(header) = chunks.headers().first().cloned() else {
         return Ok(()); // no layer, nothing to decode
     };
+    let dwa = matches!(
+        header.compression,
+        Compression::DWAA(_) | Compression::DWAB(_)
+    );
+    let mut coverage = Coverage::new(&header);
     for chunk in chunks {
         let chunk = chunk.map_err(|e| decode_error(path, e))?;
         let (tile, data) = match &chunk.compressed_block {
@@ -201,9 +337,84 @@ fn check_dwa_chunks(path: &Path, reader: impl Read + Seek) -> Result<(), ImageEr
         let bounds = tile
             .and_then(|tile| header.get_absolute_block_pixel_coordinates(tile))
             .map_err(|e| decode_error(path, e))?;
-        check_dwa_counters(path, &header, bounds, data)?;
+        coverage.add(path, bounds)?;
+        if dwa {
+            check_dwa_counters(path, &header, bounds, data)?;
+        }
     }
-    Ok(())
+    coverage.complete(path)
+}
+
+/// How many chunks cover each pixel row (scan-line files) or each tile
+/// (tiled files) of the full-resolution level.
+struct Coverage {
+    tiled: Option<Vec2<usize>>,
+    size: Vec2<usize>,
+    counts: Vec<u8>,
+}
+
+impl Coverage {
+    fn new(header: &Header) -> Coverage {
+        let size = header.layer_size;
+        let tiled = match header.blocks {
+            exr::meta::BlockDescription::Tiles(t) => Some(t.tile_size),
+            exr::meta::BlockDescription::ScanLines => None,
+        };
+        let cells = match tiled {
+            Some(t) => {
+                size.width().div_ceil(t.width().max(1)) * size.height().div_ceil(t.height().max(1))
+            }
+            None => size.height(),
+        };
+        Coverage {
+            tiled,
+            size,
+            counts: vec![0; cells],
+        }
+    }
+
+    fn add(&mut self, path: &Path, b: IntegerBounds) -> Result<(), ImageError> {
+        let (x, y) = (
+            b.position.x().max(0) as usize,
+            b.position.y().max(0) as usize,
+        );
+        let cells: Vec<usize> = match self.tiled {
+            Some(t) => {
+                let across = self.size.width().div_ceil(t.width().max(1));
+                vec![(y / t.height().max(1)) * across + x / t.width().max(1)]
+            }
+            None => (y..y + b.size.height()).collect(),
+        };
+        for cell in cells {
+            let Some(count) = self.counts.get_mut(cell) else {
+                continue; // outside the image: the decoder refuses it
+            };
+            *count = count.saturating_add(1);
+            if *count > 1 {
+                let what = match self.tiled {
+                    Some(_) => format!("the tile at ({x}, {y})"),
+                    None => format!("scan line {cell}"),
+                };
+                let problem =
+                    format!("{what} is stored in more than one chunk; the file is corrupt");
+                return Err(ImageError::bad_header(path, FORMAT, "chunk table", problem));
+            }
+        }
+        Ok(())
+    }
+
+    fn complete(&self, path: &Path) -> Result<(), ImageError> {
+        let missing = self.counts.iter().filter(|&&c| c == 0).count();
+        if let Some(first) = self.counts.iter().position(|&c| c == 0) {
+            let what = match self.tiled {
+                Some(_) => format!("{missing} tile(s), the first number {first} in row order,"),
+                None => format!("{missing} scan line(s), the first y = {first},"),
+            };
+            let problem = format!("{what} are in no chunk; the file is corrupt");
+            return Err(ImageError::bad_header(path, FORMAT, "chunk table", problem));
+        }
+        Ok(())
+    }
 }
 
 /// Checks the counters of one DWA chunk covering `bounds`.

@@ -133,7 +133,8 @@ fn parse_dimension(path: &Path, field: &'static str, text: &str) -> Result<u32, 
 }
 
 /// Skips whitespace, then reads one header token and the single whitespace
-/// byte (or the end of the file) that ends it.
+/// byte (or the end of the file) that ends it; a CR is refused (CR LF line
+/// endings).
 fn next_token(
     path: &Path,
     reader: &mut impl BufRead,
@@ -156,6 +157,9 @@ fn next_token(
                 });
             }
             None => break,
+            // A CR can only come from CR LF line endings: after the scale,
+            // its LF would be read as the first byte of pixel data.
+            Some(b'\r') => return Err(super::crlf_error(path, FORMAT)),
             Some(b) => {
                 reader.consume(1);
                 match (b.is_ascii_whitespace(), token.is_empty()) {

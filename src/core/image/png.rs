@@ -22,6 +22,49 @@ pub(crate) fn write_png(
     channels: usize,
     samples: &[u8],
 ) -> Result<(), ImageError> {
+    check_length(path, width, height, channels, samples)?;
+    write_atomically(path, "PNG", |w| {
+        PngEncoder::new(w).write_image(samples, width, height, colour_type(channels))?;
+        Ok(())
+    })
+}
+
+/// The PNG file [`write_png_rgb8`] writes, as bytes (for a
+/// [`crate::core::output::Batch`]); `path` is only named in errors.
+pub fn encode_png_rgb8(
+    path: &Path,
+    width: u32,
+    height: u32,
+    rgb: &[u8],
+) -> Result<Vec<u8>, ImageError> {
+    check_length(path, width, height, 3, rgb)?;
+    let mut out = Vec::new();
+    PngEncoder::new(&mut out)
+        .write_image(rgb, width, height, ExtendedColorType::Rgb8)
+        .map_err(|e| ImageError::Encode {
+            path: path.to_path_buf(),
+            format: "PNG",
+            source: Box::new(e),
+        })?;
+    Ok(out)
+}
+
+fn colour_type(channels: usize) -> ExtendedColorType {
+    match channels {
+        1 => ExtendedColorType::L8,
+        2 => ExtendedColorType::La8,
+        3 => ExtendedColorType::Rgb8,
+        _ => ExtendedColorType::Rgba8,
+    }
+}
+
+fn check_length(
+    path: &Path,
+    width: u32,
+    height: u32,
+    channels: usize,
+    samples: &[u8],
+) -> Result<(), ImageError> {
     let expected = u64::from(width) * u64::from(height) * channels as u64;
     if samples.len() as u64 != expected {
         return Err(ImageError::DataLength {
@@ -31,16 +74,7 @@ pub(crate) fn write_png(
             found: samples.len() as u64,
         });
     }
-    let colour = match channels {
-        1 => ExtendedColorType::L8,
-        2 => ExtendedColorType::La8,
-        3 => ExtendedColorType::Rgb8,
-        _ => ExtendedColorType::Rgba8,
-    };
-    write_atomically(path, "PNG", |w| {
-        PngEncoder::new(w).write_image(samples, width, height, colour)?;
-        Ok(())
-    })
+    Ok(())
 }
 
 #[cfg(test)]
@@ -82,7 +116,8 @@ mod tests {
         let dir = tempfile::tempdir().unwrap();
         let path = dir.path().join("missing/out.png");
         let err = write_png_rgb8(&path, 1, 1, &[1, 2, 3]).unwrap_err();
-        assert!(matches!(err, ImageError::Io { .. }), "{err}");
+        assert!(matches!(err, ImageError::Refused { .. }), "{err}");
+        assert!(err.to_string().contains("does not exist"), "{err}");
         assert!(!path.exists());
     }
 }

@@ -2,6 +2,10 @@
 //! parses the header (and so the dimensions) before it touches any pixel, so
 //! the size limit is checked before the pixel buffer exists.
 //!
+//! Two things the decoder lets through or reports vaguely are checked here,
+//! under the policy of every reader: header lines ending in CR LF are
+//! refused by name, and bytes after the last pixel are an error (as in PFM).
+//!
 //! RGBE stores an 8-bit mantissa per channel and one shared 8-bit exponent;
 //! the decoder turns `(m, e)` into `m * 2^(e - 136)` exactly (no half-unit
 //! offset), and `e = 0` into 0. The `EXPOSURE` header is not applied.
@@ -16,7 +20,7 @@ const FORMAT: &str = "Radiance HDR";
 
 pub(super) fn read(
     path: &Path,
-    reader: impl BufRead,
+    mut reader: impl BufRead,
     limits: &ImageLimits,
 ) -> Result<HdrImage, ImageError> {
     let decode_error = |e: image::ImageError| ImageError::Decode {
@@ -24,13 +28,28 @@ pub(super) fn read(
         format: FORMAT,
         source: Box::new(e),
     };
-    let decoder = HdrDecoder::new(reader).map_err(decode_error)?;
+    let head = reader
+        .fill_buf()
+        .map_err(|e| ImageError::io(path, "read", e))?;
+    if crlf_header(head) {
+        return Err(super::crlf_error(path, FORMAT));
+    }
+    let decoder = HdrDecoder::new(&mut reader).map_err(decode_error)?;
     let (width, height) = decoder.dimensions();
     limits.check(path, FORMAT, width.into(), height.into())?;
 
     // The decoder writes RGB f32 in native byte order.
     let mut bytes = vec![0u8; width as usize * height as usize * 12];
     decoder.read_image(&mut bytes).map_err(decode_error)?;
+    let extra = std::io::copy(&mut reader, &mut std::io::sink())
+        .map_err(|e| ImageError::io(path, "read", e))?;
+    if extra > 0 {
+        return Err(ImageError::TrailingData {
+            path: path.to_path_buf(),
+            format: FORMAT,
+            extra_bytes: extra,
+        });
+    }
     let pixels = bytes
         .chunks_exact(12)
         .map(|rgb| {
@@ -44,6 +63,20 @@ pub(super) fn read(
         height,
         pixels,
     })
+}
+
+/// Whether a header line, up to the resolution line (`-Y 512 +X 768`),
+/// ends in CR LF; `head` is the start of the file.
+fn crlf_header(head: &[u8]) -> bool {
+    for line in head.split(|&b| b == b'\n').take(64) {
+        if line.ends_with(b"\r") {
+            return true;
+        }
+        if line.starts_with(b"-Y") || line.starts_with(b"+Y") {
+            break;
+        }
+    }
+    false
 }
 
 #[cfg(test)]

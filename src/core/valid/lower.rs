@@ -50,12 +50,23 @@ pub fn lower(ast: &InstrAst, origin: &Origin) -> R<Lowered> {
 
 fn unknown_mnemonic(ast: &InstrAst) -> Diagnostic {
     let name = &ast.base;
-    let d = Diagnostic::error(ast.base_span, format!("unknown instruction `{name}`"));
+    let d = Diagnostic::error(
+        ast.base_span,
+        format!("unknown instruction `{}`", crate::core::diag::excerpt(name)),
+    );
     if let Some((_, why)) = NOT_PS30.iter().find(|(m, _)| m == name) {
         return d.with_label("not a ps_3_0 instruction").with_help(*why);
     }
+    // No mnemonic is within two edits of a name more than two letters
+    // longer than the longest one, so longer names are not compared.
+    let longest = crate::core::isa::TABLE
+        .iter()
+        .map(|r| r.mnemonic.len())
+        .max()
+        .unwrap_or(0);
     let best = crate::core::isa::TABLE
         .iter()
+        .filter(|_| name.len() <= longest + 2)
         .map(|r| (edit_distance(name, r.mnemonic), r.mnemonic))
         .min();
     match best {

@@ -522,6 +522,30 @@ fn check_program(p: &Program, diags: &mut Diagnostics, file: &SourceFile) -> Inf
                 .in_origin(&p.instructions[o.index].origin, file),
         );
     }
+    // A subroutine ends at its ret (Microsoft, `ret - ps`: the first ret
+    // is the end of the main program or subroutine; ret is optional only at
+    // the end of a shader without subroutines), so the last one must end
+    // with one too: the others are followed by a `label`, which must follow
+    // a ret.
+    if let Some(label) = current {
+        if p.instructions.last().map(|i| i.op) != Some(Opcode::Ret) {
+            let at = info
+                .labels
+                .get(&label)
+                .map(|&i| &p.instructions[i as usize]);
+            if let Some(at) = at {
+                diags.push(
+                    Diagnostic::error(
+                        at.origin.span,
+                        format!("subroutine l{label} does not end with ret"),
+                    )
+                    .with_label("the subroutine starts here and runs to the end of the file")
+                    .with_help("end every subroutine with ret; only a shader without subroutines may leave out the final ret")
+                    .in_origin(&at.origin, file),
+                );
+            }
+        }
+    }
     if let (Some(a), Some(b)) = abs_consts {
         diags.push(
             Diagnostic::error(a.max(b), "constants are read both with and without _abs")

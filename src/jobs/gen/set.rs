@@ -178,13 +178,13 @@ fn pass1_shader(
     let mut h = Vec::new();
     match role {
         Role::LastColumn => h.push(format!(
-            "ps30 unroll: luminance pass 1 for the LAST column of {} blocks, {} form, reading {taps}×{rows} texels, for a {} frame",
+            "{HEADER} luminance pass 1 for the LAST column of {} blocks, {} form, reading {taps}×{rows} texels, for a {} frame",
             size(bw, bh),
             form.name(),
             size(fr.w, fr.h)
         )),
         _ => h.push(format!(
-            "ps30 unroll: luminance pass 1, {} form, {} blocks, for a {} frame",
+            "{HEADER} luminance pass 1, {} form, {} blocks, for a {} frame",
             form.name(),
             size(bw, bh),
             size(fr.w, fr.h)
@@ -336,7 +336,7 @@ fn pass2_shader(
     let n = fr.n();
     let mut h = vec![
         format!(
-            "ps30 unroll: luminance pass 2, {}, for the {} intermediate target of a {} frame",
+            "{HEADER} luminance pass 2, {}, for the {} intermediate target of a {} frame",
             choice.form.name(),
             size(nx, ny),
             size(fr.w, fr.h)
@@ -775,43 +775,80 @@ pub fn generated_set() -> Result<GeneratedSet, GenError> {
     Ok(GeneratedSet { files, frames })
 }
 
-/// What is wrong with the committed files under `dir`: missing, stale
-/// (different from what the generator writes now) or unexpected `.psh`
-/// files, each naming the file.
+/// The first words of every generated shader's header.
+const HEADER: &str = "ps30 unroll:";
+
+/// The start of the first line of every file the generator writes (the
+/// header as a comment): regeneration removes only files that begin with it.
+pub const MARK: &str = "// ps30 unroll:";
+
+/// A generated file is a few kilobytes; a larger one is not one of them.
+const MAX_GENERATED_BYTES: u64 = 1 << 20;
+
+/// The text of a regular file (through links) of at most
+/// [`MAX_GENERATED_BYTES`]; `None` for anything else (missing, a FIFO, a
+/// device, too large, not UTF-8), which is never read.
+fn read_regular(path: &Path) -> Option<String> {
+    let meta = std::fs::metadata(path).ok()?;
+    if !meta.is_file() || meta.len() > MAX_GENERATED_BYTES {
+        return None;
+    }
+    std::fs::read_to_string(path).ok()
+}
+
+/// Whether `path` is a regular file (not a link) that the generator wrote,
+/// by its first line.
+fn written_by_generator(path: &Path) -> bool {
+    std::fs::symlink_metadata(path).is_ok_and(|m| m.is_file())
+        && read_regular(path).is_some_and(|t| t.starts_with(MARK))
+}
+
+/// Lists what differs between the committed set under `dir` and `set`:
+/// stale or missing files, and `.psh` files the generator does not write.
 pub fn stale_files(dir: &Path, set: &GeneratedSet) -> Vec<String> {
     let mut problems = Vec::new();
     for (rel, text) in &set.files {
         let path = dir.join(rel);
-        match std::fs::read_to_string(&path) {
-            Ok(t) if &t == text => {}
-            Ok(_) => problems.push(format!(
+        match read_regular(&path) {
+            Some(t) if &t == text => {}
+            Some(_) => problems.push(format!(
                 "{} is stale: the generator now writes something else (run `ps30 verify --regenerate`)",
                 path.display()
             )),
-            Err(e) => problems.push(format!(
-                "{} is missing ({e}) (run `ps30 verify --regenerate`)",
+            None if path.exists() => problems.push(format!(
+                "{} is not a regular text file the generator could have written (replace it, or run `ps30 verify --regenerate`)",
+                path.display()
+            )),
+            None => problems.push(format!(
+                "{} is missing (run `ps30 verify --regenerate`)",
                 path.display()
             )),
         }
     }
     for extra in existing_psh(dir) {
         if !set.files.iter().any(|(rel, _)| *rel == extra) {
-            problems.push(format!(
-                "{} is not a file the generator writes (remove it, or run `ps30 verify --regenerate`)",
-                dir.join(&extra).display()
-            ));
+            let path = dir.join(&extra);
+            problems.push(if written_by_generator(&path) {
+                format!("{} is not a file the generator writes now (run `ps30 verify --regenerate` to remove it)", path.display())
+            } else {
+                format!("{} is not a file the generator writes, nor one it wrote (remove it yourself)", path.display())
+            });
         }
     }
     problems
 }
 
-/// `.psh` files under `dir` (one level of frame directories), relative.
+/// `.psh` files under `dir`, one level of frame directories down, relative.
+/// Directories reached through symbolic links are not looked into.
 pub fn existing_psh(dir: &Path) -> Vec<String> {
     let mut out = Vec::new();
     let Ok(frames) = std::fs::read_dir(dir) else {
         return out;
     };
     for f in frames.flatten() {
+        if !f.file_type().is_ok_and(|t| t.is_dir()) {
+            continue;
+        }
         let Ok(files) = std::fs::read_dir(f.path()) else {
             continue;
         };
@@ -826,23 +863,47 @@ pub fn existing_psh(dir: &Path) -> Vec<String> {
     out
 }
 
-/// Rewrites the committed set under `dir` (atomically, file by file) and
-/// removes `.psh` files the generator no longer writes. Returns the paths
-/// written and removed.
-pub fn write_set(dir: &Path, set: &GeneratedSet) -> std::io::Result<(Vec<String>, Vec<String>)> {
+/// Rewrites the committed set under `dir`, all files or none (see
+/// [`crate::core::output::Batch`]), then removes the `.psh` files the
+/// generator no longer writes — only regular files whose first line is the
+/// generator's [`MARK`], only in the frame directories the set writes into,
+/// never through a symbolic link. Returns the paths written and removed.
+pub fn write_set(dir: &Path, set: &GeneratedSet) -> Result<(Vec<String>, Vec<String>), String> {
+    let mut batch = crate::core::output::Batch::new(dir)?;
+    let mut frames: Vec<&str> = set
+        .files
+        .iter()
+        .filter_map(|(rel, _)| rel.split('/').next())
+        .collect();
+    frames.dedup();
+    for frame in &frames {
+        let d = dir.join(frame);
+        if std::fs::symlink_metadata(&d).is_ok_and(|m| m.file_type().is_symlink()) {
+            return Err(format!(
+                "{}: is a symbolic link; ps30 writes and removes generated shaders only in real directories",
+                d.display()
+            ));
+        }
+        batch.directory(&d)?;
+    }
     let mut written = Vec::new();
     for (rel, text) in &set.files {
         let path = dir.join(rel);
-        if std::fs::read_to_string(&path).ok().as_deref() != Some(text.as_str()) {
-            crate::core::output::write_bytes(&path, text.as_bytes())?;
+        if read_regular(&path).as_deref() != Some(text.as_str()) {
+            batch.write_bytes(&path, text.as_bytes())?;
             written.push(path.display().to_string());
         }
     }
+    batch.commit()?;
     let mut removed = Vec::new();
     for extra in existing_psh(dir) {
-        if !set.files.iter().any(|(rel, _)| *rel == extra) {
-            let path = dir.join(&extra);
-            std::fs::remove_file(&path)?;
+        let in_frame = extra.split('/').next().is_some_and(|f| frames.contains(&f));
+        let path = dir.join(&extra);
+        if in_frame
+            && !set.files.iter().any(|(rel, _)| *rel == extra)
+            && written_by_generator(&path)
+        {
+            std::fs::remove_file(&path).map_err(|e| format!("{}: {e}", path.display()))?;
             removed.push(path.display().to_string());
         }
     }

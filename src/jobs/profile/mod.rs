@@ -270,6 +270,15 @@ pub fn profile_loaded(loaded: load::Loaded, setup: &Setup) -> Result<ProfileRun,
     let chain;
     let (out, draw, input, models) = match &setup.input {
         Input::GBuffer(w, h) => {
+            let pixels = u64::from(*w) * u64::from(*h);
+            if pixels > setup.limits.max_target_pixels {
+                return Err(emu::EmuError::TargetTooLarge {
+                    width: *w,
+                    height: *h,
+                    limit: setup.limits.max_target_pixels,
+                }
+                .to_string());
+            }
             scene =
                 crate::jobs::scenes::lights::Scene::synthetic(*w, *h).map_err(|e| e.to_string())?;
             crate::jobs::scenes::lights::Scene::check_constants(loaded.shader.program()).map_err(
@@ -326,6 +335,7 @@ pub fn profile_loaded(loaded: load::Loaded, setup: &Setup) -> Result<ProfileRun,
             }
             draw.constants = setup.constants.clone();
             draw.record_lod = true;
+            draw.limits = setup.limits;
             chain = if *mips {
                 Some(MipChain::build(image.as_texture(), None)?)
             } else {

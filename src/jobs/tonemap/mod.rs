@@ -121,8 +121,12 @@ pub enum TonemapError {
     BadValue(String),
     /// The luminance pipeline could not run.
     Pipeline(luminance::PipelineError),
-    /// The pipeline ran but its L̄w cannot scale anything.
-    LogAverage(f64),
+    /// The pipeline ran but its L̄w cannot scale anything; the image has
+    /// `non_finite` NaN or infinite pixels.
+    LogAverage {
+        value: f64,
+        non_finite: u64,
+    },
     Emu(emu::EmuError),
     /// The tone-mapping shader does not load (its diagnostics are inside).
     Source(crate::core::diag::SourceError),
@@ -135,9 +139,13 @@ impl std::fmt::Display for TonemapError {
         match self {
             TonemapError::BadValue(m) | TonemapError::Shader(m) => f.write_str(m),
             TonemapError::Pipeline(e) => write!(f, "luminance pipeline: {e}"),
-            TonemapError::LogAverage(v) => write!(
+            TonemapError::LogAverage { value, non_finite: 0 } => write!(
                 f,
-                "the luminance pipeline gave L̄w = {v}, which cannot scale the image (it needs a positive finite value; does the image hold NaN or infinite pixels?)"
+                "the luminance pipeline gave L̄w = {value}, which cannot scale the image (it needs a positive finite value); every pixel is finite, so the shader's f32 arithmetic overflowed or underflowed on this image's values"
+            ),
+            TonemapError::LogAverage { value, non_finite } => write!(
+                f,
+                "the luminance pipeline gave L̄w = {value}, which cannot scale the image (it needs a positive finite value): {non_finite} pixels are NaN or infinite"
             ),
             TonemapError::Emu(e) => write!(f, "emulator: {e}"),
             TonemapError::Source(e) => write!(f, "{e}"),
@@ -614,7 +622,10 @@ pub fn run(
     .map_err(TonemapError::Pipeline)?;
     let lw32 = luminance.log_average as f32;
     if !(lw32.is_finite() && lw32 > 0.0) {
-        return Err(TonemapError::LogAverage(luminance.log_average));
+        return Err(TonemapError::LogAverage {
+            value: luminance.log_average,
+            non_finite: image.stats().non_finite,
+        });
     }
     let (white, white_source) = white_point(image, settings.white);
     check_values(settings.key, Some(white))?;

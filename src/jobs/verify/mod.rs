@@ -160,7 +160,7 @@ pub fn article_claims() -> Result<Vec<Claim>, String> {
     // divided by the number of samples (runs of one macro instruction).
     let ins = loaded.shader.instructions();
     let in_macro: Vec<usize> = (0..ins.len())
-        .filter(|&i| !ins[i].origin.repeats.is_empty())
+        .filter(|&i| ins[i].origin.repeat.is_some())
         .collect();
     let macro_executed: u64 = in_macro
         .iter()

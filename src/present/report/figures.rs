@@ -1,14 +1,11 @@
 //! Figures for `reports/`: a tiny deterministic rasteriser that draws heat
 //! maps, bar charts and downscaled previews into 8-bit RGB canvases and
-//! writes them as PNG (atomically, through [`crate::core::image::write_png_rgb8`]).
+//! leaves them to be encoded as PNG ([`crate::core::image::encode_png_rgb8`]).
 //!
 //! Everything is integer pixel arithmetic or plain f64 with a fixed order,
 //! so the same inputs give the same bytes on every run and for every thread
 //! count. Text labels are not rasterised: the Markdown around each figure
 //! carries them, and each figure's caption gives its value range.
-
-use crate::core::image::{write_png_rgb8, ImageError};
-use std::path::Path;
 
 /// An RGB image with 8-bit channels, row-major, top row first.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -60,10 +57,6 @@ impl Canvas {
                 self.put(x, y, c);
             }
         }
-    }
-
-    pub fn write_png(&self, path: &Path) -> Result<(), ImageError> {
-        write_png_rgb8(path, self.width, self.height, &self.rgb)
     }
 }
 

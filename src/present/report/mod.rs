@@ -20,10 +20,11 @@ pub mod claims;
 pub mod figures;
 pub mod generated;
 
+use crate::core::image::encode_png_rgb8;
 use crate::core::image::{HdrImage, ImageLimits};
 use crate::core::numbers::number;
 use crate::core::numbers::thousands;
-use crate::core::output::write_bytes;
+use crate::core::output::Batch;
 use crate::jobs::luminance::{self, LuminanceRun, ShaderSource};
 use crate::jobs::tonemap;
 use crate::jobs::verify;
@@ -134,17 +135,19 @@ fn bundled(name: &str) -> Result<ShaderSource, String> {
     Ok(ShaderSource::new(n, t))
 }
 
-/// Writes the figures and pages into `dir`, reading the bundled images from
+/// Stages the figures and pages for `dir` in `batch` (the caller commits
+/// it: all files or none), reading the bundled images from
 /// `root/assets/hdr`. `progress(stage, done, total)` is called as stages
 /// finish.
 pub fn generate(
+    batch: &mut Batch,
     dir: &Path,
     root: &Path,
     threads: Option<usize>,
     progress: &dyn Fn(&str, u64, u64),
 ) -> Result<Generated, String> {
     let figures = dir.join("figures");
-    std::fs::create_dir_all(&figures).map_err(|e| format!("{}: {e}", figures.display()))?;
+    batch.directory(&figures)?;
     let total = 3 + IMAGES.len() as u64;
     let mut out = Generated {
         files: Vec::new(),
@@ -152,20 +155,18 @@ pub fn generate(
         block_figures: Vec::new(),
         tonemap: Vec::new(),
     };
-    let write = |out: &mut Generated, name: &str, text: &str| -> Result<(), String> {
-        let path = dir.join(name);
-        write_bytes(&path, text.as_bytes()).map_err(|e| format!("{}: {e}", path.display()))?;
+    let write = |batch: &mut Batch, out: &mut Generated, name: &str, text: &str| {
+        batch.write_bytes(&dir.join(name), text.as_bytes())?;
         out.files.push(name.to_string());
-        Ok(())
+        Ok::<(), String>(())
     };
-    let write_png =
-        |out: &mut Generated, name: &str, canvas: &figures::Canvas| -> Result<(), String> {
-            canvas
-                .write_png(&figures.join(name))
-                .map_err(|e| e.to_string())?;
-            out.files.push(format!("figures/{name}"));
-            Ok(())
-        };
+    let write_png = |batch: &mut Batch, out: &mut Generated, name: &str, c: &figures::Canvas| {
+        let path = figures.join(name);
+        let png = encode_png_rgb8(&path, c.width, c.height, &c.rgb).map_err(|e| e.to_string())?;
+        batch.write_bytes(&path, &png)?;
+        out.files.push(format!("figures/{name}"));
+        Ok::<(), String>(())
+    };
 
     progress("shader budgets", 0, total);
     out.budgets = budgets()?;
@@ -185,9 +186,9 @@ pub fn generate(
         max_fraction: 1.25,
         plot_width: 500,
     };
-    write_png(&mut out, "budgets.png", &chart.render())?;
+    write_png(batch, &mut out, "budgets.png", &chart.render())?;
     let page = budgets_page(&out.budgets);
-    write(&mut out, "budgets.md", &page)?;
+    write(batch, &mut out, "budgets.md", &page)?;
 
     progress("per-block heat maps", 1, total);
     let cross = load_image(root, verify::CROSSCHECK_IMAGE)?;
@@ -209,11 +210,11 @@ pub fn generate(
     let runs: Vec<(String, String, LuminanceRun)> = runs.into_iter().collect::<Result<_, _>>()?;
     let (figs, canvases) = block_figures(&cross, &runs);
     for (f, c) in figs.iter().zip(&canvases) {
-        write_png(&mut out, &f.file, c)?;
+        write_png(batch, &mut out, &f.file, c)?;
     }
     out.block_figures = figs;
     let page = blocks_page(&cross, &runs, &out.block_figures);
-    write(&mut out, "luminance-blocks.md", &page)?;
+    write(batch, &mut out, "luminance-blocks.md", &page)?;
 
     for (i, name) in IMAGES.iter().enumerate() {
         progress(&format!("tone mapping {name}"), 2 + i as u64, total);
@@ -231,14 +232,14 @@ pub fn generate(
             height: ph,
             rgb: tonemap::to_srgb8(&small),
         };
-        write_png(&mut out, &file, &canvas)?;
+        write_png(batch, &mut out, &file, &canvas)?;
         out.tonemap.push(tonemap_row(&rel, &t, &file, (pw, ph)));
     }
     progress("pages", 2 + IMAGES.len() as u64, total);
     let page = tonemap_page(&out.tonemap);
-    write(&mut out, "tonemap.md", &page)?;
+    write(batch, &mut out, "tonemap.md", &page)?;
     let page = index_page(&out);
-    write(&mut out, "README.md", &page)?;
+    write(batch, &mut out, "README.md", &page)?;
     progress("done", total, total);
     Ok(out)
 }

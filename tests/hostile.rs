@@ -1,0 +1,613 @@
+//! Hostile inputs through the real binary, each run as a child process
+//! under hard limits: 1 GiB of address space and 20 s of CPU time
+//! (`setrlimit`), and a wall-clock deadline after which it is killed. A
+//! regression that hangs, recurses without bound or allocates gigabytes
+//! fails here by hitting a limit, not by a timed assertion on a fast path.
+//! Large inputs are generated in the test.
+#![cfg(unix)]
+
+use std::fs;
+use std::os::unix::process::CommandExt;
+use std::path::Path;
+use std::process::{Command, Stdio};
+use std::time::{Duration, Instant};
+
+#[path = "common/bin.rs"]
+#[allow(dead_code)] // only repo() is used here
+mod bin;
+
+/// What a bounded run left: exit code (None when killed by a signal or the
+/// deadline), stdout, stderr.
+struct Run {
+    code: Option<i32>,
+    stdout: String,
+    stderr: String,
+}
+
+/// Address space the child may map: the binary, rayon's threads and their
+/// malloc arenas take about 200 MB of it before any work.
+const MEMORY: u64 = 1 << 30;
+/// CPU seconds the child may use.
+const CPU_SECONDS: u64 = 20;
+/// Wall-clock deadline (the machine may be shared).
+const DEADLINE: Duration = Duration::from_secs(90);
+
+fn run_in(dir: &Path, args: &[&str]) -> Run {
+    let out = dir.join(".stdout");
+    let err = dir.join(".stderr");
+    let mut cmd = Command::new(env!("CARGO_BIN_EXE_ps30"));
+    cmd.args(args)
+        .current_dir(dir)
+        .env_remove("NO_COLOR")
+        .stdin(Stdio::null())
+        .stdout(fs::File::create(&out).unwrap())
+        .stderr(fs::File::create(&err).unwrap());
+    // SAFETY: only async-signal-safe calls (setrlimit) between fork and exec.
+    unsafe {
+        cmd.pre_exec(|| {
+            let limit = |resource, value: u64| {
+                let l = libc::rlimit {
+                    rlim_cur: value as libc::rlim_t,
+                    rlim_max: value as libc::rlim_t,
+                };
+                if libc::setrlimit(resource, &l) != 0 {
+                    return Err(std::io::Error::last_os_error());
+                }
+                Ok(())
+            };
+            limit(libc::RLIMIT_AS, MEMORY)?;
+            limit(libc::RLIMIT_CPU, CPU_SECONDS)
+        });
+    }
+    let mut child = cmd.spawn().expect("start ps30");
+    let start = Instant::now();
+    let status = loop {
+        if let Some(s) = child.try_wait().unwrap() {
+            break Some(s);
+        }
+        if start.elapsed() > DEADLINE {
+            let _ = child.kill();
+            let _ = child.wait();
+            break None;
+        }
+        std::thread::sleep(Duration::from_millis(20));
+    };
+    let read = |p: &Path| String::from_utf8_lossy(&fs::read(p).unwrap()).into_owned();
+    let run = Run {
+        code: status.and_then(|s| s.code()),
+        stdout: read(&out),
+        stderr: read(&err),
+    };
+    let _ = fs::remove_file(out);
+    let _ = fs::remove_file(err);
+    run
+}
+
+/// Runs `args` in `dir` and checks the exit code and that stderr (or
+/// stdout) says `says`.
+#[track_caller]
+fn expect(dir: &Path, args: &[&str], code: i32, says: &str) -> Run {
+    let r = run_in(dir, args);
+    assert_eq!(
+        r.code,
+        Some(code),
+        "ps30 {args:?}: exit {:?} (None: killed by a limit)\nstderr: {}",
+        r.code,
+        &r.stderr[..r.stderr.len().min(3000)]
+    );
+    assert!(
+        r.stderr.contains(says) || r.stdout.contains(says),
+        "ps30 {args:?} does not say {says:?}:\nstderr: {}\nstdout: {}",
+        &r.stderr[..r.stderr.len().min(3000)],
+        &r.stdout[..r.stdout.len().min(3000)]
+    );
+    r
+}
+
+fn write(dir: &Path, name: &str, text: &str) {
+    fs::write(dir.join(name), text).unwrap();
+}
+
+fn names(dir: &Path) -> Vec<String> {
+    let mut v: Vec<String> = fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .filter(|n| !n.starts_with(".std"))
+        .collect();
+    v.sort();
+    v
+}
+
+#[test]
+fn repeat_blocks_that_produce_nothing_cost_nothing() {
+    let d = tempfile::tempdir().unwrap();
+    let d = d.path();
+    write(
+        d,
+        "empty.psh",
+        "ps_3_0\nBEGIN_REPEAT_BLOCK(4294967295)\nEND_REPEAT_BLOCK\nmov oC0, c0\n",
+    );
+    expect(d, &["check", "empty.psh"], 0, "within limits");
+    write(
+        d,
+        "nested.psh",
+        "ps_3_0\nBEGIN_REPEAT_BLOCK(4294967295)\nBEGIN_REPEAT_BLOCK(4294967295)\nEND_REPEAT_BLOCK\nEND_REPEAT_BLOCK\nmov oC0, c0\n",
+    );
+    expect(d, &["check", "nested.psh"], 0, "within limits");
+}
+
+#[test]
+fn deep_repeat_nesting_is_refused_where_it_starts() {
+    let d = tempfile::tempdir().unwrap();
+    let d = d.path();
+    let deep = |n: usize, body: &str| {
+        format!(
+            "ps_3_0\n{}{body}{}mov oC0, c0\n",
+            "BEGIN_REPEAT_BLOCK(1)\n".repeat(n),
+            "END_REPEAT_BLOCK\n".repeat(n)
+        )
+    };
+    // 70,000 levels once overflowed the stack (exit 134).
+    write(d, "deep.psh", &deep(70_000, "mov r0, c0\n"));
+    expect(
+        d,
+        &["check", "deep.psh", "--max-input-bytes", "4000000"],
+        2,
+        "deep.psh:66:1",
+    );
+    // 50,000 statements 2,000 deep once took 4.6 GB.
+    write(d, "wide.psh", &deep(2_000, &"mov r0, c0\n".repeat(50_000)));
+    expect(d, &["check", "wide.psh"], 2, "nested more than 64 deep");
+    // At the depth limit the expansion is one chain per repetition: 50,000
+    // statements 64 deep are measured (over 512 slots: exit 1).
+    write(d, "ok.psh", &deep(64, &"mov r0, c0\n".repeat(50_000)));
+    expect(d, &["check", "ok.psh"], 1, "EXCEEDS");
+    // Repetitions are bounded as well as statements: 99,990 repetitions of
+    // a chain of 63 blocks around one statement.
+    let src = format!(
+        "ps_3_0\nBEGIN_REPEAT_BLOCK(99990)\n{}nop\n{}END_REPEAT_BLOCK\nmov oC0, c0\n",
+        "BEGIN_REPEAT_BLOCK(1)\n".repeat(63),
+        "END_REPEAT_BLOCK\n".repeat(63)
+    );
+    write(d, "reps.psh", &src);
+    expect(
+        d,
+        &["check", "reps.psh"],
+        2,
+        "repetitions, over the cap of 100000",
+    );
+}
+
+#[test]
+fn many_diagnostics_are_reported_in_linear_time_and_capped() {
+    let d = tempfile::tempdir().unwrap();
+    let d = d.path();
+    // 99,990 different errors: the first 50 are shown.
+    let distinct: String = (0..99_990).map(|i| format!("foo{i} r0, r1\n")).collect();
+    write(d, "errors.psh", &format!("ps_3_0\n{distinct}"));
+    let r = expect(
+        d,
+        &["check", "errors.psh", "--max-input-bytes", "2000000"],
+        2,
+        "99940 more errors not shown",
+    );
+    assert_eq!(r.stderr.matches("unknown instruction").count(), 50);
+    // 99,990 times the same error: one report with its count and lines.
+    write(
+        d,
+        "same.psh",
+        &format!("ps_3_0\n{}", "foo r0, r1\n".repeat(99_990)),
+    );
+    let r = expect(
+        d,
+        &["check", "same.psh", "--max-input-bytes", "2000000"],
+        2,
+        "the same error at 99989 more places (lines 2–99991 in all)",
+    );
+    assert_eq!(r.stderr.matches("unknown instruction").count(), 1);
+    // 20,000 warnings on a shader that validates.
+    let body = "if_gt v0.x, c0.x\ntexld r0, r1, s0\nendif\n".repeat(20_000);
+    write(
+        d,
+        "warnings.psh",
+        &format!("ps_3_0\ndcl_2d s0\ndcl_texcoord0 v0.xy\n{body}mov oC0, r0\n"),
+    );
+    expect(
+        d,
+        &["check", "warnings.psh", "--max-input-bytes", "2000000"],
+        1,
+        "the same warning at 19999 more places",
+    );
+    // A 10 MB line with one error: not echoed, the token cut short.
+    write(
+        d,
+        "long.psh",
+        &format!("ps_3_0\n{}\n", "a".repeat(10_000_000)),
+    );
+    let r = expect(
+        d,
+        &["check", "long.psh", "--max-input-bytes", "20000000"],
+        2,
+        "(10000000 characters)",
+    );
+    assert!(r.stderr.len() < 2_000, "{} bytes of stderr", r.stderr.len());
+}
+
+#[test]
+fn input_size_is_capped() {
+    let d = tempfile::tempdir().unwrap();
+    let d = d.path();
+    expect(d, &["check", "/dev/zero"], 2, "--max-input-bytes");
+    write(
+        d,
+        "lines.psh",
+        &format!("ps_3_0\n{}", "nop\n".repeat(1_000_000)),
+    );
+    expect(
+        d,
+        &["check", "lines.psh"],
+        2,
+        "larger than the cap of 1,048,576 bytes",
+    );
+    // Within the byte cap, a file without macros past the statement cap
+    // says so in its own words.
+    write(
+        d,
+        "plain.psh",
+        &format!("ps_3_0\n{}mov oC0, c0\n", "nop\n".repeat(100_000)),
+    );
+    expect(
+        d,
+        &["check", "plain.psh"],
+        2,
+        "the file has 100002 statements",
+    );
+}
+
+#[test]
+fn default_bounds_stop_huge_draws() {
+    let d = tempfile::tempdir().unwrap();
+    let d = d.path();
+    let img = bin::repo().join("assets/hdr/forest.hdr");
+    let img = img.to_str().unwrap();
+    // 585,000 slots per pixel over 4 Mpixel: hours of work without a bound.
+    expect(
+        d,
+        &[
+            "run",
+            "corrected:loop",
+            "--image",
+            img,
+            "--target",
+            "2048x2048",
+            "--int",
+            "i1=255",
+            "--int",
+            "i2=255",
+            "--const",
+            "c0=0,0,0,0",
+            "--const",
+            "c1=0.0009765625,0.001953125,0,1",
+            "--const",
+            "c3=0.27,0.67,0.06,0.01",
+        ],
+        2,
+        "--max-executed-total",
+    );
+    // A 64 GiB target asked for by raising the bound fails, not aborts.
+    expect(
+        d,
+        &[
+            "run",
+            "corrected:loop",
+            "--image",
+            img,
+            "--target",
+            "65536x65536",
+            "--max-target-pixels",
+            "99999999999",
+            "--int",
+            "i1=1",
+            "--int",
+            "i2=1",
+            "--const",
+            "c0=0,0,0,0",
+            "--const",
+            "c1=0.0009765625,0.001953125,0,1",
+            "--const",
+            "c3=0.27,0.67,0.06,0.01",
+        ],
+        2,
+        "more than this machine can give",
+    );
+    // profile has the same bound flags, and checks its G-buffer against them.
+    expect(
+        d,
+        &["profile", "lights:select", "--gbuffer", "65536x65536"],
+        2,
+        "--max-target-pixels",
+    );
+    expect(d, &["profile", "--help"], 0, "--max-executed-total");
+}
+
+#[test]
+fn saturated_counts_say_more_than() {
+    let d = tempfile::tempdir().unwrap();
+    let d = d.path();
+    let sub = |n: usize, next: &str| {
+        format!("label l{n}\nrep i0\nrep i0\nrep i0\nrep i0\n{next}\nendrep\nendrep\nendrep\nendrep\nret\n")
+    };
+    let src = format!(
+        "ps_3_0\ndefi i0, 255, 0, 1, 0\ndef c0, 1, 1, 1, 1\ncall l0\nmov oC0, c0\nret\n{}{}{}{}",
+        sub(0, "call l1"),
+        sub(1, "call l2"),
+        sub(2, "call l3"),
+        sub(3, "nop")
+    );
+    write(d, "sat.psh", &src);
+    let r = expect(
+        d,
+        &["check", "sat.psh"],
+        1,
+        "more than 18,446,744,073,709,551,614",
+    );
+    assert!(!r.stdout.contains('%'), "{}", r.stdout);
+}
+
+#[test]
+fn outputs_never_replace_links_devices_fifos_or_inputs() {
+    let d = tempfile::tempdir().unwrap();
+    let d = d.path();
+    let src = bin::repo().join("asm/article/lum_pass2.psh");
+    fs::copy(&src, d.join("src.psh")).unwrap();
+    let expand = |out: &str| {
+        run_in(
+            d,
+            &[
+                "expand", "src.psh", "-D", "xsize=2", "-D", "ysize=2", "-o", out,
+            ],
+        )
+    };
+    // A link is followed: the file it points to is written, the link stays.
+    write(d, "target.psh", "old");
+    std::os::unix::fs::symlink("target.psh", d.join("link.psh")).unwrap();
+    assert_eq!(expand("link.psh").code, Some(0));
+    assert!(fs::symlink_metadata(d.join("link.psh"))
+        .unwrap()
+        .file_type()
+        .is_symlink());
+    assert!(fs::read_to_string(d.join("target.psh"))
+        .unwrap()
+        .contains("ps_3_0"));
+    // A FIFO is refused (writing to it would block, replacing it destroys it).
+    let fifo = std::ffi::CString::new(d.join("fifo.psh").to_str().unwrap()).unwrap();
+    assert_eq!(unsafe { libc::mkfifo(fifo.as_ptr(), 0o644) }, 0);
+    let r = expand("fifo.psh");
+    assert_eq!(r.code, Some(2));
+    assert!(r.stderr.contains("is a FIFO"), "{}", r.stderr);
+    // A device, a dangling link, a directory, the input itself.
+    for (out, says) in [
+        ("/dev/null", "is a character device"),
+        (".", "names a directory"),
+        ("/", "names a directory"),
+        ("src.psh", "is also the input"),
+    ] {
+        let r = expand(out);
+        assert_eq!(r.code, Some(2), "{out}: {}", r.stderr);
+        assert!(r.stderr.contains(says), "{out}: {}", r.stderr);
+    }
+    std::os::unix::fs::symlink("nowhere", d.join("dangling.psh")).unwrap();
+    assert!(expand("dangling.psh").stderr.contains("does not exist"));
+    // Images: the input as the output, directly or through a link.
+    fs::copy(bin::repo().join("assets/hdr/sunset.pfm"), d.join("img.pfm")).unwrap();
+    std::os::unix::fs::symlink("img.pfm", d.join("alias.pfm")).unwrap();
+    let before = fs::read(d.join("img.pfm")).unwrap();
+    expect(
+        d,
+        &["tonemap", "img.pfm", "-o", "img.pfm"],
+        2,
+        "is also the input img.pfm",
+    );
+    expect(
+        d,
+        &[
+            "run",
+            "corrected:loop",
+            "--image",
+            "img.pfm",
+            "--target",
+            "2x2",
+            "--int",
+            "i1=1",
+            "--int",
+            "i2=1",
+            "-o",
+            "alias.pfm",
+        ],
+        2,
+        "is also the input img.pfm",
+    );
+    assert_eq!(fs::read(d.join("img.pfm")).unwrap(), before);
+    assert!(
+        !names(d).iter().any(|n| n.ends_with(".tmp")),
+        "{:?}",
+        names(d)
+    );
+}
+
+#[test]
+fn a_multi_file_output_that_fails_writes_nothing() {
+    let d = tempfile::tempdir().unwrap();
+    let d = d.path();
+    // The last file of `unroll --fit` cannot be written (a directory is in
+    // its way): the run fails and leaves neither the other files nor the
+    // directory it created nor a temporary file.
+    let out = d.join("out");
+    let r = run_in(d, &["unroll", "--fit", "-o", "out/none"]);
+    assert_eq!(r.code, Some(2), "{}", r.stderr);
+    fs::create_dir(&out).unwrap();
+    fs::create_dir(out.join("pass2_11x8.psh")).unwrap();
+    let r = run_in(d, &["unroll", "--fit", "-o", "out"]);
+    assert_eq!(r.code, Some(2), "{}", r.stderr);
+    assert!(r.stderr.contains("pass2_11x8.psh"), "{}", r.stderr);
+    assert_eq!(names(&out), vec!["pass2_11x8.psh".to_string()]);
+    // A new directory is created, and removed again on failure.
+    let r = run_in(d, &["unroll", "--fit", "-o", "fresh"]);
+    assert_eq!(r.code, Some(0), "{}", r.stderr);
+    assert_eq!(names(&d.join("fresh")).len(), 6);
+}
+
+#[test]
+fn regeneration_removes_only_what_the_generator_wrote() {
+    let d = tempfile::tempdir().unwrap();
+    let d = d.path();
+    let gen = d.join("gen");
+    let elsewhere = d.join("elsewhere");
+    fs::create_dir_all(gen.join("640x480")).unwrap();
+    fs::create_dir_all(&elsewhere).unwrap();
+    // Foreign files next to the generated ones, a subfolder the generator
+    // does not write, and a link into another directory.
+    write(&gen, "640x480/mine.psh", "ps_3_0\n// my own shader\n");
+    fs::create_dir(gen.join("mine")).unwrap();
+    write(&gen, "mine/other.psh", "// ps30 unroll: looks generated\n");
+    write(&elsewhere, "keep.psh", "// ps30 unroll: looks generated\n");
+    std::os::unix::fs::symlink(&elsewhere, gen.join("linked")).unwrap();
+    write(
+        &gen,
+        "640x480/old.psh",
+        "// ps30 unroll: an older shader\nps_3_0\n",
+    );
+    let reports = d.join("reports");
+    let r = run_in(
+        d,
+        &[
+            "verify",
+            "--regenerate",
+            "--generated",
+            "gen",
+            "--reports",
+            "reports",
+            "-q",
+        ],
+    );
+    // Exit 1: the foreign file is still there, and named.
+    assert_eq!(r.code, Some(1), "{}{}", r.stdout, r.stderr);
+    assert!(r.stdout.contains("mine.psh"), "{}", r.stdout);
+    assert!(gen.join("640x480/mine.psh").exists());
+    assert!(gen.join("mine/other.psh").exists());
+    assert!(elsewhere.join("keep.psh").exists());
+    assert!(!gen.join("640x480/old.psh").exists());
+    assert!(reports.join("README.md").exists());
+}
+
+/// A small OpenEXR file (ZIP, 16 lines per chunk: 3 chunks for 40 lines)
+/// and where its chunk offset table starts.
+fn small_exr(path: &Path) -> (Vec<u8>, usize) {
+    use ps30::core::image::{write_exr, RenderTarget, TargetFormat};
+    let target = RenderTarget::new(4, 40, TargetFormat::R32F);
+    write_exr(path, &target).unwrap();
+    let b = fs::read(path).unwrap();
+    // Header: magic and version, then name\0 type\0 size value… until \0.
+    let mut pos = 8;
+    while b[pos] != 0 {
+        for _ in 0..2 {
+            pos += b[pos..].iter().position(|&c| c == 0).unwrap() + 1;
+        }
+        let size = i32::from_le_bytes(b[pos..pos + 4].try_into().unwrap()) as usize;
+        pos += 4 + size;
+    }
+    (b, pos + 1)
+}
+
+#[test]
+fn corrupt_exr_chunk_tables_are_refused() {
+    let d = tempfile::tempdir().unwrap();
+    let d = d.path();
+    let (b, table) = small_exr(&d.join("ok.exr"));
+    let offset = |b: &[u8], i: usize| {
+        u64::from_le_bytes(b[table + 8 * i..table + 8 * i + 8].try_into().unwrap()) as usize
+    };
+    // Two table entries pointing at the first chunk.
+    let mut dup = b.clone();
+    let first = offset(&b, 0) as u64;
+    dup[table + 8..table + 16].copy_from_slice(&first.to_le_bytes());
+    fs::write(d.join("dup.exr"), dup).unwrap();
+    // Every chunk claiming y = 0.
+    let mut y0 = b.clone();
+    for i in 0..3 {
+        let at = offset(&b, i);
+        y0[at..at + 4].copy_from_slice(&0i32.to_le_bytes());
+    }
+    fs::write(d.join("y0.exr"), y0).unwrap();
+    for f in ["dup.exr", "y0.exr"] {
+        expect(
+            d,
+            &[
+                "luminance",
+                f,
+                "--block",
+                "2x8",
+                "--pass1",
+                "corrected:loop",
+            ],
+            2,
+            "chunk table",
+        );
+    }
+    expect(
+        d,
+        &[
+            "luminance",
+            "ok.exr",
+            "--block",
+            "2x8",
+            "--pass1",
+            "corrected:loop",
+        ],
+        0,
+        "agree",
+    );
+}
+
+#[test]
+fn odd_characters_are_named_where_they_stand() {
+    let d = tempfile::tempdir().unwrap();
+    let d = d.path();
+    for (bytes, says) in [
+        // A byte-order mark at the start is accepted (see
+        // a_byte_order_mark_at_the_start_is_accepted); anywhere else it is
+        // an invisible character.
+        (
+            &b"ps_3_0\nmov \xef\xbb\xbfoC0, c0\n"[..],
+            "U+FEFF: an invisible zero-width character",
+        ),
+        (b"ps_3_0\rmov oC0, c0\r", "U+000D"),
+        (b"ps_3_0\nmov\xc2\xa0oC0, c0\n", "U+00A0: a no-break space"),
+        (b"ps_3_0\nmov\xe2\x80\x8b oC0, c0\n", "U+200B"),
+        (
+            b"ps_3_0\nm\xd0\xbev oC0, c0\n",
+            "U+043E: the Cyrillic letter",
+        ),
+        (b"ps_3_0\nmov oC0,\x00 c0\n", "U+0000: a NUL byte"),
+    ] {
+        fs::write(d.join("odd.psh"), bytes).unwrap();
+        expect(d, &["check", "odd.psh"], 2, says);
+    }
+}
+
+#[test]
+fn a_subroutine_must_end_with_ret() {
+    let d = tempfile::tempdir().unwrap();
+    let d = d.path();
+    write(
+        d,
+        "noret.psh",
+        "ps_3_0\ncall l0\nmov oC0, c0\nret\nlabel l0\nnop\n",
+    );
+    expect(
+        d,
+        &["check", "noret.psh"],
+        2,
+        "subroutine l0 does not end with ret",
+    );
+}
