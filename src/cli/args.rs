@@ -204,16 +204,12 @@ pub struct ConstantArgs {
 }
 
 impl ConstantArgs {
-    /// What the application gives, for the audit: these registers (and
-    /// `extra_floats`, which the command sets itself) and the `-D` names.
-    pub fn given(&self, extra_floats: &[u32], source: &SourceArgs) -> Given {
+    /// What the application gives, for the audit: these registers, the
+    /// `-D` names, and `preset_floats`, which the command sets itself.
+    pub fn given(&self, preset_floats: &[u32], source: &SourceArgs) -> Given {
         Given {
-            floats: self
-                .floats
-                .iter()
-                .map(|c| c.0)
-                .chain(extra_floats.iter().copied())
-                .collect(),
+            floats: self.floats.iter().map(|c| c.0).collect(),
+            preset_floats: preset_floats.iter().copied().collect(),
             ints: self.ints.iter().map(|c| c.0).collect(),
             bools: self.bools.iter().map(|c| c.0).collect(),
             defines: source.define.iter().map(|(n, _)| n.clone()).collect(),

@@ -60,7 +60,7 @@ enum OnlyArg {
     Pass2,
 }
 
-pub fn run(args: Args, _ui: &Ui) -> super::Result {
+pub fn run(args: Args, ui: &Ui) -> super::Result {
     if let Some(dir) = &args.output {
         check_output_dir(dir)?;
     }
@@ -96,6 +96,11 @@ pub fn run(args: Args, _ui: &Ui) -> super::Result {
     }
     if args.json {
         print_json(&bundle)?;
+    } else if ui.quiet && args.output.is_some() {
+        // Quiet, with the files written: only what did not fit.
+        for p in &bundle.problems {
+            print(&format!("does not fit: {p}\n"))?;
+        }
     } else {
         print(&summary_text(&bundle))?;
         match &args.output {

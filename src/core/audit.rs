@@ -35,6 +35,9 @@ pub struct Given {
     pub bools: BTreeSet<u32>,
     /// `-D` names (REPEAT_BLOCK counts).
     pub defines: BTreeSet<String>,
+    /// `c#` the command sets itself (a scene's constants): they count as
+    /// set, and are never reported as unread or overridden.
+    pub preset_floats: BTreeSet<u32>,
 }
 
 impl Given {
@@ -44,7 +47,7 @@ impl Given {
             floats: floats.iter().copied().collect(),
             ints: ints.iter().copied().collect(),
             bools: bools.iter().copied().collect(),
-            defines: BTreeSet::new(),
+            ..Given::default()
         }
     }
 }
@@ -270,7 +273,8 @@ pub fn audit(shader: &Shader, defines_used: &BTreeSet<String>, given: &Given) ->
     let name = |file: u8, i: u32| format!("{}{i}", ["c", "i", "b"][file as usize]);
     let mut found = Vec::new();
     for (&(file, i), &(span, n)) in &reads {
-        if defined(file, i).is_none() && !sets[file as usize].contains(&i) {
+        let preset = file == 0 && given.preset_floats.contains(&i);
+        if defined(file, i).is_none() && !sets[file as usize].contains(&i) && !preset {
             found.push(Finding {
                 kind: Kind::Unset,
                 what: name(file, i),

@@ -350,6 +350,7 @@ pub fn pass_text(image: &str, out: &PassOutput, written: Option<(&Path, &Written
             ", DIFFERENT"
         }
     ));
+    s.push_str(&limits_text(&out.cost));
     s.push_str(&findings_text(&out.cost.shader, &out.cost.findings));
     s.push_str(&outputs_text(&out.outputs, t.format.d3d_name()));
     if let Some((path, w)) = written {
