@@ -87,6 +87,35 @@ pub fn number(v: f64) -> String {
     }
 }
 
+/// [`number`] with the thousands of its integer part separated:
+/// `-39,147.4`, `60,677`, `0.0808638`; `1.5000e-9` as it is.
+pub fn number_grouped(v: f64) -> String {
+    group_integer_part(&number(v))
+}
+
+/// `v` with `places` decimals and the thousands of its integer part
+/// separated: `60,677.00`.
+pub fn decimal(v: f64, places: usize) -> String {
+    group_integer_part(&format!("{v:.places$}"))
+}
+
+/// Commas in the integer digits of a formatted number (not in an exponent
+/// or a fraction).
+fn group_integer_part(s: &str) -> String {
+    if s.contains(['e', 'E', '∞', 'N']) {
+        return s.to_string();
+    }
+    let (sign, rest) = match s.strip_prefix('-') {
+        Some(r) => ("-", r),
+        None => ("", s),
+    };
+    let (int, frac) = rest.split_at(rest.find('.').unwrap_or(rest.len()));
+    match int.parse::<u64>() {
+        Ok(n) => format!("{sign}{}{frac}", thousands(n)),
+        Err(_) => s.to_string(),
+    }
+}
+
 /// `125×128`.
 pub fn size(w: u32, h: u32) -> String {
     format!("{w}×{h}")
@@ -117,6 +146,10 @@ mod tests {
         assert_eq!(thousands(999), "999");
         assert_eq!(plural(1, "line", "lines"), "1 line");
         assert_eq!(list(&["c1", "i1", "i2"]), "c1, i1 and i2");
+        assert_eq!(number_grouped(-39147.398438), "-39,147.4");
+        assert_eq!(number_grouped(0.0808638), "0.0808638");
+        assert_eq!(decimal(60677.0, 2), "60,677.00");
+        assert_eq!(decimal(-0.5, 2), "-0.50");
         assert_eq!(plural(0, "line", "lines"), "0 lines");
         assert_eq!(plural(12_345, "pixel", "pixels"), "12,345 pixels");
     }

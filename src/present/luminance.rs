@@ -6,7 +6,7 @@ use crate::core::cost::Profile;
 use crate::core::emu::findings::{grouped, Finding};
 use crate::core::image::Written;
 use crate::core::load::Loaded;
-use crate::core::numbers::{plural, range_text, thousands};
+use crate::core::numbers::{decimal, number_grouped, plural, range_text, thousands};
 use crate::jobs::luminance::{
     BlockCheck, Comparison, LuminanceRun, PassCost, PassOutput, FIT_TOLERANCE,
 };
@@ -217,41 +217,52 @@ pub fn run_text(image: &str, r: &LuminanceRun, choice: &Choice) -> String {
         .iter()
         .max_by(|a, b| (a.difference / a.tolerance).total_cmp(&(b.difference / b.tolerance)));
     s.push_str(&format!(
-        "blocks: {agreeing} of {} agree with the f64 reference",
-        r.blocks.len()
+        "blocks: {} of {} agree with the f64 reference",
+        thousands(agreeing as u64),
+        thousands(r.blocks.len() as u64)
     ));
     if let Some(w) = worst {
         s.push_str(&format!(
-            " (largest difference/tolerance: {:.3} at block {},{}: {:.4} vs {:.4}, tolerance {:.3})",
+            " (largest difference/tolerance: {:.3} at block {},{}: {} vs {}, tolerance {})",
             w.difference / w.tolerance,
             w.x,
             w.y,
-            w.emulated,
-            w.reference,
-            w.tolerance
+            decimal(w.emulated, 4),
+            decimal(w.reference, 4),
+            decimal(w.tolerance, 3)
         ));
     }
     s.push('\n');
     let bad: Vec<&BlockCheck> = r.blocks.iter().filter(|b| !b.agree).collect();
     if r.nonfinite_pixels > 0 {
         s.push_str(&format!(
-            "{} pixels are NaN or infinite: their blocks and L̄w are not finite, on a GPU as in the reference\n",
-            r.nonfinite_pixels
+            "{} NaN or infinite: their blocks and L̄w are not finite, on a GPU as in the reference\n",
+            plural(r.nonfinite_pixels, "pixel is", "pixels are")
         ));
     }
     let overflowed = r.blocks.iter().filter(|b| b.overflow).count();
     if overflowed > 0 {
         s.push_str(&format!(
-            "{overflowed} block sums overflow {} (beyond ±65,504): the target cannot hold them\n",
-            r.target_format.d3d_name()
+            "{} {} (beyond ±65,504): the target cannot hold {}\n",
+            plural(
+                overflowed as u64,
+                "block sum overflows",
+                "block sums overflow"
+            ),
+            r.target_format.d3d_name(),
+            if overflowed == 1 { "it" } else { "them" }
         ));
     }
     if !bad.is_empty() {
         s.push_str("disagreeing blocks (column, row: emulated vs reference, difference):\n");
         for b in bad.iter().take(12) {
             s.push_str(&format!(
-                "  {:>3},{:<3} {:>14.3} vs {:>14.3}  {:>12.3}\n",
-                b.x, b.y, b.emulated, b.reference, b.difference
+                "  {:>3},{:<3} {:>15} vs {:>15}  {:>13}\n",
+                b.x,
+                b.y,
+                decimal(b.emulated, 3),
+                decimal(b.reference, 3),
+                decimal(b.difference, 3)
             ));
         }
         if bad.len() > 12 {
@@ -301,18 +312,18 @@ pub fn run_text(image: &str, r: &LuminanceRun, choice: &Choice) -> String {
     ));
     if r.padded_samples > 0 {
         s.push_str(&format!(
-            "padding: {} samples read outside the image; left uncorrected they scale L̄w by {:.4}\n",
-            thousands(r.padded_samples),
+            "padding: {} read outside the image; left uncorrected they scale L̄w by {:.4}\n",
+            plural(r.padded_samples, "sample", "samples"),
             r.padding_factor
         ));
     }
     if !r.fit() {
         s.push_str(&format!(
-            "UNFIT for this image: the derived bound allows L̄w to be off by {:.0}% (the cross-check needs at most {:.0}% to mean anything): {} real pixels against {} padded samples in {}×{} blocks; let ps30 plan the blocks (no --pass1) or give a smaller --block\n",
+            "UNFIT for this image: the derived bound allows L̄w to be off by {:.0}% (the cross-check needs at most {:.0}% to mean anything): {} against {} in {}×{} blocks; let ps30 plan the blocks (no --pass1) or give a smaller --block\n",
             100.0 * r.relative_tolerance,
             100.0 * FIT_TOLERANCE,
-            thousands(r.width as u64 * r.height as u64),
-            thousands(r.padded_samples),
+            plural(r.width as u64 * r.height as u64, "real pixel", "real pixels"),
+            plural(r.padded_samples, "padded sample", "padded samples"),
             r.block.0,
             r.block.1
         ));
@@ -322,8 +333,13 @@ pub fn run_text(image: &str, r: &LuminanceRun, choice: &Choice) -> String {
     }
     if r.ill_conditioned > 0 {
         s.push_str(&format!(
-            "note: {} pixels have δ + L so close to 0 that f32 cannot bound their term\n",
-            r.ill_conditioned
+            "note: {} δ + L so close to 0 that f32 cannot bound {} term\n",
+            plural(r.ill_conditioned, "pixel has", "pixels have"),
+            if r.ill_conditioned == 1 {
+                "its"
+            } else {
+                "their"
+            }
         ));
     }
     s
@@ -370,7 +386,7 @@ pub fn pass_text(image: &str, out: &PassOutput, written: Option<(&Path, &Written
 /// the shader writes that the target does not keep.
 fn outputs_text(outputs: &[OutputRegister], format: &str) -> String {
     let mut s = String::new();
-    let value = |v: Option<f64>| v.map_or("none".to_string(), |v| format!("{v:.6}"));
+    let value = |v: Option<f64>| v.map_or("none".to_string(), number_grouped);
     for o in outputs {
         for c in &o.stored {
             s.push_str(&format!(

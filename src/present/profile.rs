@@ -3,7 +3,7 @@
 
 use crate::core::audit;
 use crate::core::emu::findings::diagnostic;
-use crate::core::numbers::thousands;
+use crate::core::numbers::{decimal, thousands};
 use crate::jobs::profile::{CostStats, ProfileRun};
 use crate::present::json;
 use serde_json::{json, Value};
@@ -19,9 +19,9 @@ fn histogram_text(s: &mut String, title: &str, stats: &CostStats) {
     s.push_str(&format!("{title}\n"));
     for b in &stats.histogram {
         let range = if b.lo == b.hi {
-            format!("{}", b.lo)
+            thousands(b.lo)
         } else {
-            format!("{}–{}", b.lo, b.hi)
+            format!("{}–{}", thousands(b.lo), thousands(b.hi))
         };
         let bar = "█".repeat(((b.count * 40).div_ceil(most)) as usize);
         s.push_str(&format!(
@@ -43,15 +43,23 @@ pub fn text(r: &ProfileRun) -> String {
         thousands(c.per_pixel.max),
         if r.counts_agree { " (within)" } else { " (OUTSIDE the static range)" }
     ));
+    if !r.within_limits {
+        let p = crate::core::cost::Profile::ps_3_0();
+        s.push_str(&format!(
+            "OVER the ps_3_0 limits of {} slots and {} executed per pixel (ps30 check says where)\n",
+            thousands(p.max_slots),
+            thousands(p.max_executed)
+        ));
+    }
     s.push_str(&format!(
         "{:<22}{:>10}{:>12}{:>10}\n",
         "executed slots", "min", "mean", "max"
     ));
     for (name, st) in [("  per pixel", &c.per_pixel), ("  per quad", &c.per_quad)] {
         s.push_str(&format!(
-            "{name:<22}{:>10}{:>12.2}{:>10}\n",
+            "{name:<22}{:>10}{:>12}{:>10}\n",
             thousands(st.min),
-            st.mean,
+            decimal(st.mean, 2),
             thousands(st.max)
         ));
     }
@@ -107,6 +115,7 @@ pub fn to_json(r: &ProfileRun, found: &[audit::Finding]) -> Value {
         "executed": json::range(r.static_executed),
         "executed_emulated": {"min": r.costs.per_pixel.min, "max": r.costs.per_pixel.max},
         "counts_agree": r.counts_agree,
+        "within_limits": r.within_limits,
         "per_pixel": stats_json(&r.costs.per_pixel),
         "per_quad": stats_json(&r.costs.per_quad),
         "quads": r.costs.quads,

@@ -105,7 +105,7 @@ pub fn text(s: &Summary) -> String {
         } else if s.stale.is_empty() {
             "up to date".to_string()
         } else {
-            format!("{} PROBLEMS", s.stale.len())
+            crate::core::numbers::plural(s.stale.len() as u64, "PROBLEM", "PROBLEMS")
         }
     ));
     for r in s.rewritten.iter().chain(s.stale) {

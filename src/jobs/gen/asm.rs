@@ -253,7 +253,7 @@ pub(crate) fn pass1(form: Pass1Form, taps: u32, rows: u32, counts: Counts) -> Ve
     v.push(Item::Rep {
         reg: 2,
         comment: match counts {
-            Counts::Defined => format!("{rows} lines"),
+            Counts::Defined => crate::core::numbers::plural(rows as u64, "line", "lines"),
             Counts::Application => "i2 lines".to_string(),
         },
         end_comment: String::new(),

@@ -78,7 +78,8 @@ impl<'p> Fitter<'p> {
         }
         if !rep_ok(rows) || rows > p.max_rep_count {
             return Some(format!(
-                "{rows} lines need a rep count of {rows}; the profile allows 0 to {}",
+                "{} need a rep count of {rows}; the profile allows 0 to {}",
+                crate::core::numbers::plural(rows as u64, "line", "lines"),
                 p.max_rep_count
             ));
         }

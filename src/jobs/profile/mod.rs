@@ -27,7 +27,8 @@
 //!     also means neighbouring pixels skip texels. The luminance pass is the
 //!     example: its neighbours read blocks 125 × 128 texels apart, λ = 7.
 //!
-//! Exit status of the command: 1 when a divergent-gradient finding exists,
+//! Exit status of the command: 1 when the shader does not fit the ps_3_0
+//! limits, when a divergent-gradient finding exists,
 //! when emulated counts leave the cost model's range, or (G-buffer input)
 //! when a pixel differs from the CPU computation; LOD findings are
 //! warnings only.
@@ -210,6 +211,8 @@ pub struct ProfileRun {
     pub width: u32,
     pub height: u32,
     pub static_executed: Range,
+    /// The static slots and executed count fit the ps_3_0 limits.
+    pub within_limits: bool,
     pub counts_agree: bool,
     pub costs: QuadCosts,
     pub gradients: Vec<SiteSummary>,
@@ -224,6 +227,7 @@ impl ProfileRun {
     /// Whether the run found a problem (see the module docs).
     pub fn problem(&self) -> bool {
         !self.counts_agree
+            || !self.within_limits
             || self
                 .findings
                 .iter()
@@ -374,6 +378,7 @@ pub fn profile_loaded(loaded: load::Loaded, setup: &Setup) -> Result<ProfileRun,
         width: out.width,
         height: out.height,
         static_executed: analysis.executed,
+        within_limits: analysis.verdict == cost::Verdict::Within,
         counts_agree,
         costs,
         gradients,
