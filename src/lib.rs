@@ -3,7 +3,10 @@
 //! ps30 reads ps_3_0 assembly (with a real `REPEAT_BLOCK` macro), checks it
 //! against the ps_3_0 rules, counts its instruction slots and executed
 //! instructions against the 512 / 65,535 budgets, runs it on HDR images and
-//! cross-checks the result against a CPU reference.
+//! cross-checks the result against a CPU reference. Draws meet in render
+//! targets of D3D9's formats through the output merger (blending, write
+//! masks, clears), so lights accumulate and mip chains reduce, as in the
+//! article's lighting phase and the alternatives it is measured against.
 //!
 //! ```text
 //! asm text ──parse──▶ AST (spans) ──expand REPEAT_BLOCK──▶ AST ──validate──▶ Shader (Program + Info)
@@ -14,8 +17,10 @@
 //!                 (slots, executed,   64 lanes = 16 quads)
 //!                  loop breakdown)           │
 //!                                            ▼
-//!         images ──▶ render targets (R32F / A16B16G16R16F) ──▶ luminance pipeline ──▶ cross-check
-//!                                                                                 vs f64 reference
+//!         images ──▶ output merger ──▶ render targets (8-bit, half, single; mip chains)
+//!                                            │
+//!                                            ▼
+//!         draw lists, luminance passes, tone mapping, studies ──▶ cross-checks vs f64 references
 //! ```
 //!
 //! The crate is built in levels, and imports point one way (`ARCHITECTURE.md`
@@ -23,10 +28,11 @@
 //!
 //! * [`core`](mod@core) — the stages every job shares: the instruction table
 //!   and IR, the front end and printer, validation, the cost model, the
-//!   emulator and images;
+//!   emulator, images and render targets, and the output merger;
 //! * [`jobs`] — what ps30 does with them: the luminance pipeline with its
 //!   reference, tone mapping, profiling, the generator and planner, scenes,
-//!   the article's claims, and the draws of the conformance corpus;
+//!   draw lists, the studies of the alternatives, the article's claims, and
+//!   the draws of the conformance corpus;
 //! * [`present`] — text, JSON, Markdown pages and figures of those results.
 //!
 //! The command line (`src/main.rs` and `src/cli/`) sits on top and is not
@@ -45,6 +51,9 @@
 // Diagnostics are large on purpose (message, label, help, notes) and only
 // travel on the error path, where their size costs nothing measurable.
 #![allow(clippy::result_large_err)]
+// The library prints nothing: results are data, and the binary decides what
+// reaches a stream.
+#![cfg_attr(not(test), deny(clippy::print_stdout, clippy::print_stderr))]
 
 pub mod core;
 pub mod jobs;

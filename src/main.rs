@@ -1,6 +1,10 @@
 //! The `ps30` binary: parses the command line and dispatches to one module
 //! of [`cli`] per subcommand (exit codes are documented there).
 
+// The binary writes only through `cli::io` (a closed stream is never a
+// panic): no print macros.
+#![deny(clippy::print_stdout, clippy::print_stderr)]
+
 mod cli;
 
 use clap::Parser;
@@ -25,6 +29,8 @@ fn main() -> ExitCode {
         Command::Tonemap(args) => cli::tonemap::run(args, &ui),
         Command::Profile(args) => cli::profile::run(args, &ui),
         Command::Shaders(args) => cli::shaders::run(args, &ui),
+        Command::Render(args) => cli::render::run(args, &ui),
+        Command::Study(args) => cli::study::run(args, &ui),
         Command::Verify(args) => cli::verify::run(args, &ui),
         Command::Unroll(args) => cli::unroll::run(args, &ui),
         Command::Plan(args) => cli::plan::run(args, &ui),

@@ -12,7 +12,16 @@ fn ps30(args: &[&str]) -> Output {
     bin::ps30(args, bin::repo())
 }
 
-const COMMANDS: [&str; 6] = ["check", "expand", "run", "luminance", "tonemap", "verify"];
+const COMMANDS: [&str; 8] = [
+    "check",
+    "expand",
+    "run",
+    "luminance",
+    "tonemap",
+    "render",
+    "study",
+    "verify",
+];
 
 #[test]
 fn every_command_has_help_with_an_example() {

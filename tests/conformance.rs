@@ -10,11 +10,11 @@
 //! backend — the emulator always; a GPU once ps30 has a GPU backend — and
 //! every probe converted to the render target's 8-bit format and compared.
 //!
-//! The conversion is here, not in the library, until ps30's render targets
-//! have 8-bit formats of their own: D3D9 does not document how a shader's
-//! float colour becomes an 8-bit UNORM channel, so this uses Direct3D 10's
-//! rule ("Data Conversion Rules", FLOAT → UNORM): NaN → 0, clamp to [0, 1],
-//! × 255, round to the nearest integer, ties to even. X8R8G8B8 keeps no
+//! The conversion is the library's D3DFMT_A8R8G8B8 rule
+//! (`ps30::core::image::unorm8`): D3D9 does not document how a shader's
+//! float colour becomes an 8-bit UNORM channel, so ps30 uses Direct3D 10's
+//! ("Data Conversion Rules", FLOAT → UNORM): NaN → 0, clamp to [0, 1],
+//! × 255, add 0.5 and drop the fraction (round half up). X8R8G8B8 keeps no
 //! alpha, so its probes never compare alpha.
 //!
 //! The tolerance is Wine's, per channel in 8-bit steps: ±1 (or ±2) where
@@ -48,11 +48,7 @@ fn corpus() -> Vec<Suite> {
 /// A float colour channel as an 8-bit UNORM render target stores it
 /// (Direct3D 10's FLOAT → UNORM rule; see the module comment).
 fn unorm8(v: f32) -> u32 {
-    if v.is_nan() {
-        return 0;
-    }
-    // f32 × 255 is exact in f64.
-    (f64::from(v.clamp(0.0, 1.0)) * 255.0).round_ties_even() as u32
+    u32::from(ps30::core::image::unorm8(v))
 }
 
 /// The D3DCOLOR a texel of an A8R8G8B8 / X8R8G8B8 target holds.
@@ -79,7 +75,8 @@ fn d3d10_unorm_conversion() {
     assert_eq!(unorm8(-0.5), 0);
     assert_eq!(unorm8(f32::NAN), 0);
     assert_eq!(unorm8(f32::INFINITY), 255);
-    assert_eq!(unorm8(0.5), 128); // 127.5: ties to even
+    assert_eq!(unorm8(0.5), 128); // 127.5: halves round up
+    assert_eq!(unorm8(2.5 / 255.0), 3); // 2.5 (in f64: 2.5000000xx) rounds up
     assert_eq!(unorm8(1.5 / 255.0), 2); // 1.5 (in f64: 1.5000000xx) rounds up
     assert_eq!(stored([1.0, 0.5, 0.0, 0.25]), D3dColor(0x40ff8000));
     assert!(matches(

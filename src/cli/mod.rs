@@ -19,8 +19,10 @@ pub mod luminance;
 pub mod man;
 pub mod plan;
 pub mod profile;
+pub mod render;
 pub mod run;
 pub mod shaders;
+pub mod study;
 pub mod tonemap;
 pub mod ui;
 pub mod unroll;
@@ -89,6 +91,16 @@ pub enum Command {
         after_help = "Every command that reads a shader takes a bundled name (family:variant) or a file path.\n\nExamples:\n  ps30 shaders\n  ps30 shaders article:loop\n  ps30 shaders --json"
     )]
     Shaders(shaders::Args),
+    /// Run a draw list: clears, draws with blending and write masks, mip-chain reductions.
+    #[command(
+        after_help = "The draw list is JSON: named targets (size, D3D9 format), textures (images or the\nsynthetic G-buffer of asm/lights/), and steps: {\"clear\": T, \"color\": [r,g,b,a]},\n{\"draw\": T, \"shader\": S, \"inputs\", \"constants\", \"samplers\", \"blend\", \"write\"},\n{\"mips\": T, \"odd\": \"fold\"|\"bilinear\"}. Every draw covers its whole target; the output\nmerger blends in the target's precision. The README's `ps30 render` section has the format.\n\nExit codes: 0 ok; 1 a draw's executed count left the cost model's range; 2 bad input.\n\nExamples:\n  ps30 render drawlists/lights.json\n  ps30 render drawlists/log-lights.json -o out/ --every-step\n  ps30 render drawlists/lights.json --json"
+    )]
+    Render(render::Args),
+    /// Measure the alternatives to the article's methods, and the article's own chain, with a report page.
+    #[command(
+        after_help = "Studies:\n  mip-luminance  log-luminance in 8-bit alpha averaged by the mip chain, on every bundled\n                 image and two odd-sized crops, against the truth and the article's two passes\n  log-lights     lights as exp2(-light) multiplied into RGBA8, against raw RGBA8 and\n                 A16B16G16R16F: brightness 0.1, 1, 2, 3 and 1 to 8 overlapping lights\n  article-chain  lights of asm/lights/ added into A16B16G16R16F, L̄w, tone map (-o PNG)\n\nEach prints its numbers and writes reports/NAME.md with its figures (--reports DIR\nelsewhere). Exit 1 when a result is outside its derived bound or a cross-check disagrees.\n\nExamples:\n  ps30 study log-lights\n  ps30 study mip-luminance --json\n  ps30 study article-chain -o frame.png"
+    )]
+    Study(study::Args),
     /// Check every figure the article states and write the report to reports/.
     #[command(
         after_help = "Also regenerates the shaders of asm/generated/ in memory and fails (exit 1) if a\ncommitted file is missing, stale or unexpected; --regenerate rewrites them instead.\n\nExample:\n  ps30 verify --json"

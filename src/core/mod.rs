@@ -6,7 +6,9 @@
 //! REPEAT_BLOCK, [`valid`] lowers it and checks the ps_3_0 rules into an
 //! [`ir::Shader`], and [`load`] runs the three in one call. The [`cost`]
 //! model and the [`emu`]lator take a validated shader; [`image`] reads and
-//! writes the pixels they work on. [`diag`] renders every stage's errors,
+//! writes the pixels they work on, in the render-target formats of D3D9, and
+//! [`merge`] is the output merger that puts a draw's colours into a target
+//! (blending, the colour write mask, clears). [`diag`] renders every stage's errors,
 //! [`numbers`] formats figures the same way everywhere, [`output`] writes
 //! files atomically, and [`audit`] holds the constants a draw is given
 //! against what its shader reads. Nothing here imports from `jobs` or `present`.
@@ -20,6 +22,7 @@ pub mod image;
 pub mod ir;
 pub mod isa;
 pub mod load;
+pub mod merge;
 pub mod numbers;
 pub mod output;
 pub mod valid;

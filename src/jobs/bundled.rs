@@ -79,6 +79,40 @@ pub const LIGHTS_TEXLD: Bundled = bundled!(
     "the same selection with texld in the branches (gradients undefined)"
 );
 
+/// `asm/lights/directional.psh`: the same light models with the light
+/// (direction, half vector, colour) set per draw, for drawing several lights.
+pub const LIGHTS_DIRECTIONAL: Bundled = bundled!(
+    "lights:directional",
+    "asm/lights/directional.psh",
+    "one light of many: the light models with the light in c5–c7, set per draw"
+);
+
+/// Log-luminance encoded into 8-bit alpha, for averaging by the mip chain
+/// (`asm/mip-luminance/`).
+pub const MIP_LUMINANCE_ENCODE: Bundled = bundled!(
+    "mip-luminance:encode",
+    "asm/mip-luminance/encode.psh",
+    "log-luminance encoded into 8-bit alpha, to be averaged by the mip chain"
+);
+
+/// The log-lights comparison (`asm/log-lights/`): a light stored raw, the
+/// same light stored as exp2(−light), and the recovery −log2.
+pub const LOG_LIGHTS_LIGHT: Bundled = bundled!(
+    "log-lights:light",
+    "asm/log-lights/light.psh",
+    "a light stored raw into RGBA8 (additive blending, saturates at 1)"
+);
+pub const LOG_LIGHTS_LOG: Bundled = bundled!(
+    "log-lights:log",
+    "asm/log-lights/log.psh",
+    "a light stored as exp2(-light), for multiplicative blending"
+);
+pub const LOG_LIGHTS_RECOVER: Bundled = bundled!(
+    "log-lights:recover",
+    "asm/log-lights/recover.psh",
+    "the light recovered from a log-lights buffer: -log2(value)"
+);
+
 /// The article's tone-mapping operator in ps_3_0 (`asm/tonemap/`).
 pub const TONEMAP_REINHARD: Bundled = bundled!(
     "tonemap:reinhard",
@@ -87,7 +121,7 @@ pub const TONEMAP_REINHARD: Bundled = bundled!(
 );
 
 /// Every bundled shader, in the order listings show them.
-pub const ALL: [Bundled; 9] = [
+pub const ALL: [Bundled; 14] = [
     ARTICLE_LOOP,
     ARTICLE_UNROLLED,
     ARTICLE_PASS2,
@@ -96,6 +130,11 @@ pub const ALL: [Bundled; 9] = [
     CORRECTED_PASS2,
     LIGHTS_SELECT,
     LIGHTS_TEXLD,
+    LIGHTS_DIRECTIONAL,
+    MIP_LUMINANCE_ENCODE,
+    LOG_LIGHTS_LIGHT,
+    LOG_LIGHTS_LOG,
+    LOG_LIGHTS_RECOVER,
     TONEMAP_REINHARD,
 ];
 

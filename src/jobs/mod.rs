@@ -6,13 +6,13 @@
 //! every job. Jobs import the core and [`bundled`]; a job may use another
 //! job only where the arrow below points (no cycles):
 //!
-//! ```text
-//! verify ──▶ gen ──▶ luminance ◀── tonemap      profile ──▶ scenes
-//!    │        ▲          ▲   ▲         │            │
-//!    │        └─ blocks ─┘   │         │            └──▶ luminance
-//!    │             ▲         │         │
-//!    └─────────────┴─────────┴─────────┘   (tonemap ──▶ blocks)
-//! ```
+//! * `verify` → `gen`, `luminance`, `tonemap`
+//! * `gen` → `luminance`, `studies` (the plan lists the mip-chain method)
+//! * `blocks` → `gen`, `luminance`
+//! * `tonemap` → `blocks`, `luminance`
+//! * `profile` → `scenes`, `luminance`
+//! * `studies` → `render`, `luminance`, `tonemap`, `scenes`
+//! * `render` → `scenes` (its synthetic textures)
 //!
 //! [`blocks`] chooses the luminance passes' blocks for an image (the
 //! planner's, with generated shaders, or a named shader's own).
@@ -27,6 +27,8 @@ pub mod gen;
 pub mod luminance;
 pub mod outputs;
 pub mod profile;
+pub mod render;
 pub mod scenes;
+pub mod studies;
 pub mod tonemap;
 pub mod verify;

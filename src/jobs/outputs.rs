@@ -4,7 +4,7 @@
 //! every stored channel — so `ps30 run` reports everything the shader
 //! produced, not only `oC0.r`.
 
-use crate::core::image::{RenderTarget, TargetFormat};
+use crate::core::image::RenderTarget;
 use crate::core::ir::Shader;
 use crate::core::isa::RegFile;
 use serde::Serialize;
@@ -69,10 +69,7 @@ pub fn summarise(shader: &Shader, target: &RenderTarget) -> Vec<OutputRegister> 
                     dropped: String::new(),
                 };
             }
-            let stores = |c: usize| match target.format {
-                TargetFormat::R32F => c == 0,
-                TargetFormat::Rgba16F => true,
-            };
+            let stores = |c: usize| target.format.stores(c);
             let bound = index == 0;
             OutputRegister {
                 register: format!("oC{index}"),
@@ -123,7 +120,7 @@ mod tests {
     fn every_written_register_and_channel_is_listed() {
         let src = "ps_3_0\ndef c0, 1, 2, 3, 4\nmov oC0.xy, c0\nmov oC0.w, c0\nmov oC1, c0\nmov oDepth, c0.x\n";
         let l = load_str("t.psh", src, &Options::default()).unwrap();
-        let mut t = RenderTarget::new(2, 1, TargetFormat::R32F);
+        let mut t = RenderTarget::new(2, 1, crate::core::image::TargetFormat::R32F);
         t.store(0, 0, [1.0, 2.0, 0.0, 4.0]);
         t.store(1, 0, [f32::NEG_INFINITY, 0.0, 0.0, 0.0]);
         let out = summarise(&l.shader, &t);

@@ -2,7 +2,7 @@
 //! recommendation, and the same as JSON.
 
 use crate::core::numbers::thousands;
-use crate::jobs::gen::plan::{largest_term, Candidate, Plan, F16_MAX};
+use crate::jobs::gen::plan::{largest_term, Candidate, MipCandidate, Plan, F16_MAX};
 use crate::jobs::gen::profile_text;
 
 fn factor_text(f: f64) -> String {
@@ -149,7 +149,40 @@ tallest (that fits), r rows (the smallest height covering the frame with r rows)
     for n in &p.notes {
         s.push_str(&format!("note: {n}\n"));
     }
+    s.push_str(&mip_text(&p.approximate));
     s
+}
+
+/// The mip-chain alternative: its cost and predicted error.
+fn mip_text(m: &MipCandidate) -> String {
+    format!(
+        "\napproximate alternative (not ranked): log-luminance in 8-bit alpha over [2^−{min}, 2^{max}], \
+         averaged by the mip chain ({levels} levels to 1×1)\n  \
+         asm/mip-luminance/encode.psh: {slots} slots, {per} executed per pixel, {total} for the frame \
+         (the mip generation is fixed-function, not counted)\n  \
+         predicted error of L̄w, worst case: {q:.3} stops from 8-bit steps ({n} half-codes of {stops} \
+         stops / 255){odd}: {rel:.1} % in all; luminances outside the range clamp (not predictable \
+         without the frame; `ps30 study mip-luminance` measures real frames)\n",
+        min = m.range.0,
+        max = m.range.1,
+        levels = m.levels,
+        slots = m.slots,
+        per = m.executed_per_pixel,
+        total = thousands(m.total_executed),
+        q = m.quantisation_stops,
+        n = m.levels + 1,
+        stops = m.range.0 + m.range.1,
+        odd = if m.odd_sides_stops > 0.0 {
+            format!(
+                " + {:.3} stops from the frame's odd sides (unequal weights in the chain, for a frame \
+                 at the top of the range where the chain weighs most and at the bottom elsewhere)",
+                m.odd_sides_stops
+            )
+        } else {
+            ", no odd sides".to_string()
+        },
+        rel = 100.0 * m.predicted_relative_error,
+    )
 }
 
 /// The plan as JSON.

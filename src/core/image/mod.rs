@@ -22,12 +22,14 @@ mod save;
 mod target;
 
 pub use error::{ForeignError, ImageError};
-pub use mip::{full_chain_levels, MipChain};
-pub use openexr::write_exr;
+pub use mip::{chain_weights, full_chain_levels, side_taps, weight_bound, MipChain, OddSides};
+pub use openexr::{encode_exr, write_exr};
 pub use pfm::write_pfm;
 pub use png::{encode_png_rgb8, write_png_rgb8};
-pub use save::{unorm8, write_radiance, write_rgb_float, write_target, OutputFormat, Written};
-pub use target::{RenderTarget, TargetFormat, Texture};
+pub use save::{write_radiance, write_rgb_float, write_target, OutputFormat, Written};
+pub use target::{
+    half_from_f64, unorm8, unorm8_value, Encoding, RenderTarget, TargetFormat, Texture,
+};
 
 use std::fs::File;
 use std::io::{BufReader, BufWriter, Read, Seek};

@@ -10,11 +10,13 @@
 //! the size counters of every chunk); then the pixels of the first layer.
 //! The layer's data window is the image (the display window is ignored).
 //!
-//! Render targets are written losslessly (ZIP) in their own sample type:
-//! R32F as one f32 channel `R`, Rgba16F as half channels `R`, `G`, `B`, `A`.
+//! Render targets are written losslessly (ZIP) with the channels their
+//! format stores, in their own sample type (half for the half formats, f32
+//! otherwise): R32F as one f32 channel `R`, Rgba16F as half `R`, `G`, `B`,
+//! `A`.
 
 use super::write_atomically;
-use super::{HdrImage, ImageError, ImageLimits, RenderTarget, TargetFormat};
+use super::{HdrImage, ImageError, ImageLimits, RenderTarget};
 use exr::block::chunk::CompressedBlock;
 use exr::block::reader::ChunksReader;
 use exr::math::Vec2;
@@ -462,9 +464,20 @@ fn check_dwa_counters(
 }
 
 /// Writes a render target as OpenEXR (ZIP-compressed scan lines), keeping its
-/// exact stored values: R32F as one f32 channel `R`, Rgba16F as half channels
-/// `R`, `G`, `B`, `A`.
+/// exact stored values: the channels the format stores (`R`; `R`, `G`; or
+/// `R`, `G`, `B`, `A`), as half for the half formats and as f32 for the
+/// others (an 8-bit code k as the f32 value k/255 it reads back as).
 pub fn write_exr(path: &Path, target: &RenderTarget) -> Result<(), ImageError> {
+    let bytes = encode_exr(path, target)?;
+    write_atomically(path, FORMAT, |w| {
+        std::io::Write::write_all(w, &bytes)?;
+        Ok(())
+    })
+}
+
+/// The OpenEXR file [`write_exr`] writes, as bytes (for a
+/// [`crate::core::output::Batch`]); `path` is only named in errors.
+pub fn encode_exr(path: &Path, target: &RenderTarget) -> Result<Vec<u8>, ImageError> {
     let expected = target.width as u64 * target.height as u64;
     if target.texels.len() as u64 != expected {
         return Err(ImageError::DataLength {
@@ -475,31 +488,36 @@ pub fn write_exr(path: &Path, target: &RenderTarget) -> Result<(), ImageError> {
         });
     }
     let texels = &target.texels;
-    let channels: Vec<AnyChannel<FlatSamples>> = match target.format {
-        TargetFormat::R32F => {
-            let red = texels.iter().map(|t| t[0]).collect();
-            vec![AnyChannel::new("R", FlatSamples::F32(red))]
-        }
-        TargetFormat::Rgba16F => ["R", "G", "B", "A"]
-            .iter()
-            .enumerate()
-            .map(|(i, name)| {
-                let samples = texels.iter().map(|t| f16::from_f32(t[i])).collect();
-                AnyChannel::new(*name, FlatSamples::F16(samples))
-            })
-            .collect(),
-    };
+    let half = target.format.encoding() == super::Encoding::Half;
+    let channels: Vec<AnyChannel<FlatSamples>> = ["R", "G", "B", "A"]
+        .iter()
+        .enumerate()
+        .take(target.format.channels())
+        .map(|(i, name)| {
+            let samples = if half {
+                FlatSamples::F16(texels.iter().map(|t| f16::from_f32(t[i])).collect())
+            } else {
+                FlatSamples::F32(texels.iter().map(|t| t[i]).collect())
+            };
+            AnyChannel::new(*name, samples)
+        })
+        .collect();
     let layer = Layer::new(
         (target.width as usize, target.height as usize),
         LayerAttributes::default(),
         Encoding::SMALL_LOSSLESS,
         AnyChannels::sort(channels.into()),
     );
-    let image = Image::from_layer(layer);
-    write_atomically(path, FORMAT, |w| {
-        image.write().to_buffered(w)?;
-        Ok(())
-    })
+    let mut out = std::io::Cursor::new(Vec::new());
+    Image::from_layer(layer)
+        .write()
+        .to_buffered(&mut out)
+        .map_err(|e| ImageError::Encode {
+            path: path.to_path_buf(),
+            format: FORMAT,
+            source: Box::new(e),
+        })?;
+    Ok(out.into_inner())
 }
 
 /// Writes linear RGB floats as OpenEXR with f32 channels `R`, `G`, `B`.
@@ -542,6 +560,7 @@ pub fn write_rgb_f32(
 mod tests {
     use super::*;
     use crate::core::image::load;
+    use crate::core::image::TargetFormat;
 
     fn load_default(path: &Path) -> Result<HdrImage, ImageError> {
         load(path, &ImageLimits::default())

@@ -10,7 +10,7 @@
 //! magnitude is not applied to the samples.
 
 use super::write_atomically;
-use super::{HdrImage, ImageError, ImageLimits, RenderTarget, TargetFormat};
+use super::{HdrImage, ImageError, ImageLimits, RenderTarget};
 use std::io::{self, BufRead, Read, Write};
 use std::path::Path;
 
@@ -177,8 +177,9 @@ fn next_token(
     Ok(String::from_utf8_lossy(&token).into_owned())
 }
 
-/// Writes a render target as little-endian PFM: R32F as grey (`Pf`),
-/// Rgba16F as RGB (`PF`; PFM has no alpha, so alpha is dropped).
+/// Writes a render target as little-endian PFM: one-channel formats (R16F,
+/// R32F) as grey (`Pf`), the others as RGB (`PF`; PFM has no alpha, so alpha
+/// is dropped, and a two-channel format's B is the 1 it reads back as).
 pub fn write_pfm(path: &Path, target: &RenderTarget) -> Result<(), ImageError> {
     let expected = target.width as u64 * target.height as u64;
     if target.texels.len() as u64 != expected {
@@ -189,9 +190,9 @@ pub fn write_pfm(path: &Path, target: &RenderTarget) -> Result<(), ImageError> {
             found: target.texels.len() as u64,
         });
     }
-    let (magic, channels) = match target.format {
-        TargetFormat::R32F => ("Pf", 1),
-        TargetFormat::Rgba16F => ("PF", 3),
+    let (magic, channels) = match target.format.channels() {
+        1 => ("Pf", 1),
+        _ => ("PF", 3),
     };
     write_atomically(path, FORMAT, |w| {
         write!(w, "{magic}\n{} {}\n-1\n", target.width, target.height)?;
@@ -213,6 +214,7 @@ pub fn write_pfm(path: &Path, target: &RenderTarget) -> Result<(), ImageError> {
 mod tests {
     use super::*;
     use crate::core::image::load;
+    use crate::core::image::TargetFormat;
     use std::path::PathBuf;
 
     /// A PFM file from its header text and samples, rows given in FILE order

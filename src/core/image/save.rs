@@ -7,7 +7,7 @@
 //! | `.exr` | OpenEXR | exact stored values: R32F one float channel, A16B16G16R16F four half channels |
 //! | `.pfm` | PFM | exact f32 values: R32F grey (`Pf`), A16B16G16R16F RGB (`PF`, no alpha) |
 //! | `.hdr` | Radiance RGBE | RGB with 8-bit mantissas and a shared exponent; negative or non-finite values are refused |
-//! | `.png` | 8-bit PNG | each stored channel clamped to [0, 1] and scaled to 0–255, rounded to nearest, as a D3DFMT_A8R8G8B8 target stores it; R32F as grey; the count of clamped values is reported |
+//! | `.png` | 8-bit PNG | each stored channel as a D3DFMT_A8R8G8B8 target stores it ([`super::unorm8`]: clamped to [0, 1], NaN to 0, times 255, rounded half up); one-channel formats as grey, two-channel ones as RGB with blue 0; the count of clamped values is reported |
 //!
 //! Extensions are matched without regard to case. Tone mapping writes its
 //! own 8-bit sRGB PNG (see `jobs::tonemap`) and uses this rule for the
@@ -77,10 +77,7 @@ pub struct Written {
 /// module docs), atomically.
 pub fn write_target(path: &Path, target: &RenderTarget) -> Result<Written, ImageError> {
     let format = OutputFormat::of(path)?;
-    let channels = match target.format {
-        TargetFormat::R32F => 1,
-        TargetFormat::Rgba16F => 4,
-    };
+    let channels = target.format.channels();
     let mut clamped = 0;
     match format {
         OutputFormat::OpenExr => super::write_exr(path, target)?,
@@ -100,25 +97,21 @@ pub fn write_target(path: &Path, target: &RenderTarget) -> Result<Written, Image
             write_radiance(path, target.width, target.height, &rgb)?;
         }
         OutputFormat::Png => {
-            let mut bytes = Vec::with_capacity(target.texels.len() * channels);
+            // Two channels (R, G) are written as RGB with blue 0: PNG's
+            // two-channel type is grey and alpha.
+            let written = if channels == 2 { 3 } else { channels };
+            let mut bytes = Vec::with_capacity(target.texels.len() * written);
             for t in &target.texels {
-                for &v in &t[..channels] {
-                    let (byte, was_clamped) = unorm8(v);
-                    clamped += was_clamped as u64;
-                    bytes.push(byte);
+                for c in 0..written {
+                    let v = if c < channels { t[c] } else { 0.0 };
+                    clamped += u64::from(!(0.0..=1.0).contains(&v));
+                    bytes.push(super::unorm8(v));
                 }
             }
-            super::png::write_png(path, target.width, target.height, channels, &bytes)?;
+            super::png::write_png(path, target.width, target.height, written, &bytes)?;
         }
     }
     Ok(Written { format, clamped })
-}
-
-/// A float as a D3DFMT_A8R8G8B8 target stores it: clamped to [0, 1] (NaN to
-/// 0), times 255, rounded to nearest; and whether it was clamped.
-pub fn unorm8(v: f32) -> (u8, bool) {
-    let c = if v.is_nan() { 0.0 } else { v.clamp(0.0, 1.0) };
-    ((c * 255.0).round() as u8, c != v)
 }
 
 /// Writes linear RGB floats as Radiance RGBE, refusing what RGBE cannot

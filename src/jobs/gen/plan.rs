@@ -29,6 +29,18 @@
 //! The rule: among candidates that finish in two passes, the fewest executed
 //! instructions for the frame; ties go to fewer padded samples, then to the
 //! unrolled form, then to the wider block.
+//!
+//! # The approximate alternative
+//!
+//! Beside the exact forms, the plan lists the mip-chain method
+//! (`jobs::studies::mip_luminance`): log-luminance encoded into
+//! 8-bit alpha over a chosen range, averaged by the mip chain. It is not
+//! ranked with the others — it trades accuracy for a single cheap pass —
+//! so it comes with its predicted error instead ([`MipCandidate`]): the
+//! quantisation bound (n + 1 half-codes for n levels after the base, times
+//! the range in stops), and the most the frame's odd sides can move the
+//! mean (½·Σ|w − 1/N| times the range). What clamping costs depends on the
+//! frame's content; the plan only says which luminances clamp.
 
 use super::asm::{Pass1Form, Pass2Form};
 use super::fit::{balanced, Fitter};
@@ -106,6 +118,67 @@ impl Candidate {
     }
 }
 
+/// The mip-chain method for the frame, with its predicted error.
+#[derive(Clone, Debug, Serialize)]
+pub struct MipCandidate {
+    pub name: String,
+    /// [2^−min, 2^max] as (min, max): luminances outside clamp.
+    pub range: (f64, f64),
+    /// The chain's levels after the base (the 1 × 1 is the last).
+    pub levels: u32,
+    /// The encoding shader (`asm/mip-luminance/encode.psh`): slots and
+    /// executed instructions per pixel, from the cost model.
+    pub slots: u64,
+    pub executed_per_pixel: u64,
+    /// Executed instructions for the frame: the encoding at every pixel; the
+    /// mip generation is fixed-function and not counted.
+    pub total_executed: u64,
+    /// The quantisation bound on log2 L̄w, in stops: (n + 1)·½/255·(min + max).
+    pub quantisation_stops: f64,
+    /// The most the frame's odd sides can move log2 L̄w, in stops:
+    /// ½·Σ|w − 1/N|·(min + max) (0 for power-of-two sides).
+    pub odd_sides_stops: f64,
+    /// Both together as a relative error of L̄w: 2^(sum) − 1.
+    pub predicted_relative_error: f64,
+}
+
+/// The mip-chain candidate for a frame and a range.
+pub fn mip_candidate(frame: (u32, u32), range: (f64, f64)) -> Result<MipCandidate, GenError> {
+    use crate::core::cost::{analyse, Environment};
+    use crate::core::image::weight_bound;
+    use crate::core::image::{full_chain_levels, OddSides};
+    let b = crate::jobs::bundled::MIP_LUMINANCE_ENCODE;
+    let loaded = crate::core::load::load_str(b.path, b.text, &Default::default())
+        .map_err(|e| GenError(e.to_string()))?;
+    let a = analyse(
+        &loaded.shader,
+        &loaded.file,
+        &Environment::default(),
+        &Profile::ps_3_0(),
+    )
+    .map_err(|e| GenError(e.to_string()))?;
+    let (w, h) = frame;
+    let levels = full_chain_levels(w, h) - 1;
+    let stops = range.0 + range.1;
+    let quantisation_stops = (levels as f64 + 1.0) * 0.5 / 255.0 * stops;
+    let odd_sides_stops = weight_bound(w, h, OddSides::Fold) * stops;
+    Ok(MipCandidate {
+        name: format!("mips-alpha8-{}-{}", range.0, range.1),
+        range,
+        levels,
+        slots: a.slots,
+        executed_per_pixel: a.executed.max,
+        total_executed: a.executed.max * w as u64 * h as u64,
+        quantisation_stops,
+        odd_sides_stops,
+        predicted_relative_error: (quantisation_stops + odd_sides_stops).exp2() - 1.0,
+    })
+}
+
+/// The range the plan's mip-chain candidate uses unless told otherwise:
+/// [2^−8, 2^8].
+pub const DEFAULT_LOG_RANGE: (f64, f64) = (8.0, 8.0);
+
 /// A ranked plan.
 #[derive(Clone, Debug, Serialize)]
 pub struct Plan {
@@ -120,6 +193,9 @@ pub struct Plan {
     pub why: String,
     /// Forms or article choices the profile rules out, and why.
     pub notes: Vec<String>,
+    /// The mip-chain method: approximate, listed with its predicted error,
+    /// not ranked.
+    pub approximate: MipCandidate,
 }
 
 /// The recommendation rule, as the plan states it.
@@ -320,8 +396,19 @@ pub fn candidates(
     Ok(out)
 }
 
-/// Plans a frame under a profile.
+/// Plans a frame under a profile, with the mip-chain candidate over
+/// [`DEFAULT_LOG_RANGE`].
 pub fn plan(frame: (u32, u32), profile: &Profile, delta: f64) -> Result<Plan, GenError> {
+    plan_with_range(frame, profile, delta, DEFAULT_LOG_RANGE)
+}
+
+/// [`plan`] with the mip-chain candidate over [2^−min, 2^max].
+pub fn plan_with_range(
+    frame: (u32, u32),
+    profile: &Profile,
+    delta: f64,
+    log_range: (f64, f64),
+) -> Result<Plan, GenError> {
     let mut fitter = Fitter::new(profile);
     let mut notes = Vec::new();
     let mut all = Vec::new();
@@ -344,6 +431,7 @@ pub fn plan(frame: (u32, u32), profile: &Profile, delta: f64) -> Result<Plan, Ge
         rule: RULE.to_string(),
         why,
         notes,
+        approximate: mip_candidate(frame, log_range)?,
     })
 }
 

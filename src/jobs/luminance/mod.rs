@@ -404,9 +404,11 @@ fn half_ulp16(x: f64) -> f64 {
 }
 
 fn storage_bound(format: TargetFormat, value: f64) -> f64 {
-    match format {
-        TargetFormat::R32F => 0.0,
-        TargetFormat::Rgba16F => half_ulp16(value),
+    match format.encoding() {
+        crate::core::image::Encoding::Float => 0.0,
+        crate::core::image::Encoding::Half => half_ulp16(value),
+        // Pass-1 sums are far outside [0, 1]: an 8-bit target cannot hold them.
+        crate::core::image::Encoding::Unorm8 => f64::INFINITY,
     }
 }
 

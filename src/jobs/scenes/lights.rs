@@ -232,6 +232,19 @@ impl Scene {
     /// shader's operation order (dp3 summed left to right, mad and mad_sat
     /// unfused, the specular power by four squarings).
     pub fn expected(&self, x: u32, y: u32) -> [f32; 4] {
+        self.shade(x, y, LIGHT, HALF)
+    }
+
+    /// What `asm/lights/directional.psh` computes at pixel (x, y) for
+    /// `light`: [`Scene::expected`]'s models with the light's L and H, times
+    /// its colour, in the same f32 operation order.
+    pub fn expected_light(&self, x: u32, y: u32, light: &Light) -> [f32; 4] {
+        let v = self.shade(x, y, light.direction, light.half);
+        let c = light.color;
+        [v[0] * c[0], v[1] * c[1], v[2] * c[2], 1.0]
+    }
+
+    fn shade(&self, x: u32, y: u32, l: [f32; 3], h: [f32; 3]) -> [f32; 4] {
         let g = self.gbuffer[(y * self.width + x) as usize];
         let v0 = self.texcoord().at(x as f32, y as f32);
         let c4 = self.material_scale();
@@ -239,7 +252,7 @@ impl Scene {
         let model = model_of(g[3]);
         let m = self.material(model, u, v);
         let dot = |a: [f32; 4], b: [f32; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-        let ndl = dot(g, LIGHT);
+        let ndl = dot(g, l);
         match model {
             0 => {
                 let k = ndl.max(0.0);
@@ -254,7 +267,7 @@ impl Scene {
             }
             _ => {
                 let k = ndl.max(0.0);
-                let mut s = dot(g, HALF).max(0.0);
+                let mut s = dot(g, h).max(0.0);
                 for _ in 0..4 {
                     s *= s;
                 }
@@ -303,6 +316,37 @@ impl Scene {
             }
         }
         Ok(())
+    }
+}
+
+/// One light of `asm/lights/directional.psh`: the constants c5 (L), c6 (H)
+/// and c7 (colour) of its draw.
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
+pub struct Light {
+    /// L: unit vector towards the light.
+    pub direction: [f32; 3],
+    /// H = normalize(L + (0, 0, 1)), for a viewer on +z.
+    pub half: [f32; 3],
+    /// Colour and intensity (HDR: any value ≥ 0).
+    pub color: [f32; 3],
+}
+
+impl Light {
+    /// A light towards `towards` (normalised here, in f64) with `color`.
+    pub fn new(towards: [f64; 3], color: [f32; 3]) -> Light {
+        let l = normalize(towards);
+        let h = normalize([l[0], l[1], l[2] + 1.0]);
+        Light {
+            direction: l.map(|c| c as f32),
+            half: h.map(|c| c as f32),
+            color,
+        }
+    }
+
+    /// c5, c6, c7 of the light's draw (w = 0).
+    pub fn constants(&self) -> [[f32; 4]; 3] {
+        let four = |v: [f32; 3]| [v[0], v[1], v[2], 0.0];
+        [four(self.direction), four(self.half), four(self.color)]
     }
 }
 

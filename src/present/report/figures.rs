@@ -1,6 +1,7 @@
 //! Figures for `reports/`: a tiny deterministic rasteriser that draws heat
-//! maps, bar charts and downscaled previews into 8-bit RGB canvases and
-//! leaves them to be encoded as PNG ([`crate::core::image::encode_png_rgb8`]).
+//! maps, bar charts, line charts and downscaled previews into 8-bit RGB
+//! canvases and leaves them to be encoded as PNG
+//! ([`crate::core::image::encode_png_rgb8`]).
 //!
 //! Everything is integer pixel arithmetic or plain f64 with a fixed order,
 //! so the same inputs give the same bytes on every run and for every thread
@@ -270,6 +271,124 @@ impl BarChart<'_> {
     }
 }
 
+/// One line of a [`LineChart`]: points in data units, joined in order. A
+/// point with a non-finite coordinate breaks the line.
+#[derive(Clone, Debug)]
+pub struct Series {
+    pub points: Vec<(f64, f64)>,
+    pub color: [u8; 3],
+}
+
+/// A line chart: series over an x range and a y range (linear or log10),
+/// light guides at the given ticks, optional horizontal reference lines,
+/// and axes. Values beyond the y range are drawn at its edge (clipped, not
+/// dropped), so a curve that leaves the chart is seen to leave it. Labels
+/// are the page's business (see the module docs).
+#[derive(Clone, Debug)]
+pub struct LineChart<'a> {
+    pub series: &'a [Series],
+    pub x_range: (f64, f64),
+    pub y_range: (f64, f64),
+    /// Plot y as log10 (y_range and y_ticks then must be positive).
+    pub log_y: bool,
+    /// Plot area in pixels (without margins).
+    pub width: u32,
+    pub height: u32,
+    pub x_ticks: &'a [f64],
+    pub y_ticks: &'a [f64],
+    /// Dashed horizontal lines at these y values.
+    pub hlines: &'a [(f64, [u8; 3])],
+}
+
+impl LineChart<'_> {
+    fn px(&self, x: f64) -> f64 {
+        let (a, b) = self.x_range;
+        MARGIN as f64 + (x - a) / (b - a) * self.width as f64
+    }
+
+    /// The pixel row of `y`, clamped to the plot; `None` for NaN.
+    fn py(&self, y: f64) -> Option<f64> {
+        let (a, b) = self.y_range;
+        let t = if self.log_y {
+            if y.is_nan() {
+                return None;
+            }
+            let y = if y > 0.0 {
+                y.log10()
+            } else {
+                f64::NEG_INFINITY
+            };
+            (y - a.log10()) / (b.log10() - a.log10())
+        } else {
+            if y.is_nan() {
+                return None;
+            }
+            (y - a) / (b - a)
+        };
+        let t = t.clamp(0.0, 1.0);
+        Some(MARGIN as f64 + (1.0 - t) * self.height as f64)
+    }
+
+    pub fn render(&self) -> Canvas {
+        let w = self.width as i64 + 2 * MARGIN + 1;
+        let h = self.height as i64 + 2 * MARGIN + AXIS;
+        let mut c = Canvas::new(w as u32, h as u32, WHITE);
+        let (left, top) = (MARGIN, MARGIN);
+        let bottom = top + self.height as i64;
+        for &x in self.x_ticks {
+            let px = self.px(x).round() as i64;
+            c.fill(px, top, 1, self.height as i64, LIGHT);
+            c.fill(px, bottom + 1, 1, AXIS / 2, BLACK);
+        }
+        for &y in self.y_ticks {
+            if let Some(py) = self.py(y) {
+                let py = py.round() as i64;
+                c.fill(left, py, self.width as i64, 1, LIGHT);
+                c.fill(left - AXIS / 2, py, AXIS / 2, 1, BLACK);
+            }
+        }
+        for &(y, color) in self.hlines {
+            if let Some(py) = self.py(y) {
+                let py = py.round() as i64;
+                let mut x = left;
+                while x < left + self.width as i64 {
+                    c.fill(x, py, 6, 1, color);
+                    x += 10;
+                }
+            }
+        }
+        for s in self.series {
+            let mut last: Option<(f64, f64)> = None;
+            for &(x, y) in &s.points {
+                let p = if x.is_finite() {
+                    self.py(y).map(|py| (self.px(x), py))
+                } else {
+                    None
+                };
+                if let (Some(a), Some(b)) = (last, p) {
+                    segment(&mut c, a, b, s.color);
+                }
+                last = p;
+            }
+        }
+        c.fill(left, top, 1, self.height as i64 + 1, BLACK);
+        c.fill(left, bottom, self.width as i64 + 1, 1, BLACK);
+        c
+    }
+}
+
+/// A 2-pixel-wide line from `a` to `b` (pixel coordinates), one dot per
+/// step of the longer axis.
+fn segment(c: &mut Canvas, a: (f64, f64), b: (f64, f64), color: [u8; 3]) {
+    let steps = (b.0 - a.0).abs().max((b.1 - a.1).abs()).ceil().max(1.0) as i64;
+    for i in 0..=steps {
+        let t = i as f64 / steps as f64;
+        let x = (a.0 + (b.0 - a.0) * t).round() as i64;
+        let y = (a.1 + (b.1 - a.1) * t).round() as i64;
+        c.fill(x, y, 2, 2, color);
+    }
+}
+
 /// Downscales linear RGBA pixels by an integer factor f = ⌈width / max_width⌉
 /// with a box filter: each output pixel is the plain mean, in linear light,
 /// of the f × f input pixels it covers (fewer at the right and bottom edges).
@@ -368,6 +487,34 @@ mod tests {
         assert_eq!(c.get(left + 420, y1), RED, "beyond 100 % (400 px)");
         assert_eq!(c.get(left + 440, y1), RED);
         assert_ne!(c.get(left + 442, y1), RED);
+    }
+
+    #[test]
+    fn line_charts_put_points_where_their_values_are_and_clip_the_rest() {
+        let series = [Series {
+            points: vec![(0.0, 1.0), (10.0, 100.0), (20.0, 1e9)],
+            color: [1, 2, 3],
+        }];
+        let chart = LineChart {
+            series: &series,
+            x_range: (0.0, 20.0),
+            y_range: (1.0, 1e4),
+            log_y: true,
+            width: 200,
+            height: 100,
+            x_ticks: &[10.0],
+            y_ticks: &[100.0],
+            hlines: &[],
+        };
+        let c = chart.render();
+        let (left, top) = (MARGIN as u32, MARGIN as u32);
+        // (10, 100): x at 100 px, y half-way up the 4 decades: 50 px.
+        assert_eq!(c.get(left + 100, top + 50), [1, 2, 3]);
+        // (0, 1) sits on the bottom axis corner; 1e9 is clipped to the top.
+        assert_eq!(c.get(left + 200, top), [1, 2, 3]);
+        // The guide at y = 100 away from the line, and the axis.
+        assert_eq!(c.get(left + 20, top + 50), LIGHT);
+        assert_eq!(c.get(left, top + 10), BLACK);
     }
 
     #[test]

@@ -667,7 +667,16 @@ fn index_page(g: &Generated) -> String {
          instructions against the ps_3_0 limits |\n\
          | [tonemap.md](tonemap.md) | the article's tone-mapping operator as ps_3_0 assembly, run \
          on every bundled image ({ok} of {n} agree with the reference), with previews |\n\n\
-         Figures are in [figures/](figures/): {files}.\n",
+         Figures are in [figures/](figures/): {files}.\n\n\
+         Written by `ps30 study NAME`, one command each (their figures are in `figures/` too):\n\n\
+         | report | what it shows |\n|---|---|\n\
+         | [mip-luminance.md](mip-luminance.md) | log-luminance in 8-bit alpha averaged by the mip \
+         chain, on every bundled image, against the truth and the article's two passes (`ps30 study \
+         mip-luminance`) |\n\
+         | [log-lights.md](log-lights.md) | lights as exp2(−light) multiplied into RGBA8, against raw \
+         RGBA8 and A16B16G16R16F accumulation (`ps30 study log-lights`) |\n\
+         | [article-chain.md](article-chain.md) | the article's chain: lights added into \
+         A16B16G16R16F, L̄w, tone map (`ps30 study article-chain`) |\n",
         n = g.tonemap.len(),
         files = g
             .files

@@ -1,0 +1,167 @@
+//! `ps30 render`: runs a draw list a user wrote (JSON) — clears, draws with
+//! blending and write masks, mip-chain reductions — and writes its targets.
+
+use super::args::ExecArgs;
+use super::io::{check_output_dir, eprint, print_json, say};
+use super::ui::Ui;
+use super::{BadInput, Outcome};
+use ps30::core::emu::findings::diagnostic;
+use ps30::core::image::{encode_exr, encode_png_rgb8, RenderTarget};
+use ps30::core::output::{self, Batch};
+use ps30::jobs::render::{self, file, StepDetail, StepReport, TargetState};
+use ps30::present::render as show;
+use std::path::{Path, PathBuf};
+
+#[derive(clap::Args)]
+pub struct Args {
+    /// The draw list (JSON; see `ps30 render --help`).
+    list: PathBuf,
+    /// Write every target at the end into DIR as NAME.exr (its exact stored
+    /// values) and NAME.png (a preview); DIR is created if missing.
+    #[arg(short, long, value_name = "DIR")]
+    output: Option<PathBuf>,
+    /// With -o: also write each target a step changes, after that step, as
+    /// NNN-NAME.exr and NNN-NAME.png.
+    #[arg(long, requires = "output")]
+    every_step: bool,
+    /// Refuse a list with more steps than this.
+    #[arg(long, value_name = "N", default_value_t = 10_000, value_parser = clap::value_parser!(u64).range(1..=1_000_000))]
+    max_steps: u64,
+    #[command(flatten)]
+    exec: ExecArgs,
+}
+
+/// The files of `-o DIR`, staged together and renamed all at once at the
+/// end, so a failed run leaves none of them; none may be an input.
+struct Outputs<'a> {
+    dir: &'a Path,
+    batch: Batch,
+    inputs: Vec<&'a Path>,
+    written: Vec<String>,
+}
+
+impl Outputs<'_> {
+    /// Stages `STEM.exr` and `STEM.png` for a target.
+    fn target(&mut self, stem: &str, t: &RenderTarget) -> Result<(), BadInput> {
+        let exr = self.dir.join(format!("{stem}.exr"));
+        let png = self.dir.join(format!("{stem}.png"));
+        for path in [&exr, &png] {
+            output::check(path, &self.inputs).map_err(BadInput)?;
+        }
+        self.batch.write_bytes(&exr, &encode_exr(&exr, t)?)?;
+        let preview = encode_png_rgb8(&png, t.width, t.height, &show::preview(t))?;
+        self.batch.write_bytes(&png, &preview)?;
+        self.written
+            .extend([exr.display().to_string(), png.display().to_string()]);
+        Ok(())
+    }
+}
+
+pub fn run(args: Args, ui: &Ui) -> super::Result {
+    if let Some(dir) = &args.output {
+        check_output_dir(dir)?;
+    }
+    let limits = file::FileLimits {
+        max_pixels: args.exec.max_pixels,
+        max_steps: args.max_steps as usize,
+    };
+    let loaded = file::read(&args.list, &limits)?;
+    let list = &loaded.list;
+    if !ui.quiet {
+        for w in &loaded.warnings {
+            eprint(&format!("warning: {w}\n"));
+        }
+    }
+    let mut outputs = match &args.output {
+        Some(dir) => Some(Outputs {
+            dir,
+            batch: Batch::new(dir)?,
+            inputs: std::iter::once(args.list.as_path())
+                .chain(loaded.sources.iter().map(PathBuf::as_path))
+                .collect(),
+            written: Vec::new(),
+        }),
+        None => None,
+    };
+    let name = args.list.display().to_string();
+    if !args.exec.json {
+        let mut head = format!(
+            "{name}: {} targets, {} textures, {} shaders, {} steps\n",
+            list.targets.len(),
+            list.textures.len(),
+            list.shaders.len(),
+            list.steps.len()
+        );
+        if let Some(d) = &loaded.description {
+            head.push_str(&format!("  {d}\n"));
+        }
+        say(ui, &head)?;
+    }
+    let settings = render::Settings {
+        threads: args.exec.threads(),
+        limits: args.exec.limits(),
+    };
+    let mut failure: Option<BadInput> = None;
+    let bar = std::cell::RefCell::new(ui.bar("steps", list.steps.len() as u64));
+    let mut observe = |r: &StepReport, states: &[TargetState]| {
+        bar.borrow_mut()
+            .set(None, r.index as u64 + 1, list.steps.len() as u64);
+        if let (StepDetail::Draw { findings, .. }, render::Step::Draw(d)) =
+            (&r.detail, &list.steps[r.index])
+        {
+            if !ui.quiet {
+                let shader = &list.shaders[d.shader].loaded.file;
+                let all: Vec<_> = findings.iter().map(diagnostic).collect();
+                for d in ps30::core::diag::group(&all) {
+                    eprint(&d.render_styled(shader, ui.color_stderr));
+                }
+            }
+        }
+        if !args.exec.json {
+            let _ = say(ui, &show::step_line(list, r));
+        }
+        if let (true, Some(out), None) = (args.every_step, outputs.as_mut(), &failure) {
+            let t = list.target(&r.target).expect("the step's target exists");
+            let stem = format!("{:03}-{}", r.index, r.target);
+            if let Err(e) = out.target(&stem, &states[t].target) {
+                failure = Some(e);
+            }
+        }
+    };
+    let (reports, states) = render::run(list, &settings, &mut observe)?;
+    drop(bar);
+    if let Some(e) = failure {
+        return Err(e);
+    }
+    let mut written = Vec::new();
+    if let Some(mut out) = outputs {
+        for (spec, st) in list.targets.iter().zip(&states) {
+            out.target(&spec.name, &st.target)?;
+        }
+        out.batch.commit()?;
+        written = out.written;
+    }
+    let agree = reports.iter().all(|r| match &r.detail {
+        StepDetail::Draw { counts_agree, .. } => *counts_agree,
+        _ => true,
+    });
+    if args.exec.json {
+        print_json(&show::json(
+            &name,
+            loaded.description.as_deref(),
+            list,
+            &reports,
+            &states,
+            &written,
+        ))?;
+    } else {
+        say(ui, &show::targets_text(list, &states))?;
+        if let (false, Some(dir)) = (ui.quiet || written.is_empty(), &args.output) {
+            say(
+                ui,
+                &format!("wrote {} files in {}\n", written.len(), dir.display()),
+            )?;
+        }
+    }
+    Ok(Outcome::from_ok(agree))
+}

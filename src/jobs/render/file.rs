@@ -1,0 +1,832 @@
+//! The draw-list file a user writes: JSON with named targets, textures and
+//! steps, read into a checked [`DrawList`]. Every problem is reported with
+//! the file and where in it (`steps[3].samplers.s0.texture: …`, or the line
+//! and column for JSON syntax), before anything runs.
+//!
+//! ```json
+//! {
+//!   "description": "two lights added into a half-float target",
+//!   "targets":  [ { "name": "light", "size": "64x64", "format": "A16B16G16R16F" } ],
+//!   "textures": [ { "name": "gbuffer", "synthetic": "lights-gbuffer", "size": "64x64" } ],
+//!   "steps": [
+//!     { "clear": "light", "color": [0, 0, 0, 0] },
+//!     { "draw": "light", "shader": "lights:directional",
+//!       "inputs": { "v0": "texcoord" },
+//!       "constants": { "c5": [0.48, 0.6, 0.64, 0], "c7": [1, 1, 1, 1] },
+//!       "samplers": { "s0": { "texture": "gbuffer", "address": "clamp" } },
+//!       "blend": { "src": "ONE", "dest": "ONE", "op": "ADD" } },
+//!     { "mips": "light" }
+//!   ]
+//! }
+//! ```
+//!
+//! * **targets**: `name`, `size` (`WxH`), `format` (a D3D9 name, with or
+//!   without `D3DFMT_`). Targets start cleared to 0.
+//! * **textures**: `name` and either `image` (an OpenEXR, Radiance or PFM
+//!   file, relative to the draw-list file) or `synthetic`:
+//!   `lights-gbuffer` (with `size`) or `lights-material-0` … `-2`, the inputs
+//!   of `asm/lights/` ([`crate::jobs::scenes::lights`]).
+//! * **steps**, each one of:
+//!   * `{"clear": TARGET, "color": [R, G, B, A]}` — a D3DCOLOR, bytes 0–255
+//!     (default 0, 0, 0, 0);
+//!   * `{"draw": TARGET, "shader": …, …}` — `shader` is a bundled name or a
+//!     file; `defines` (REPEAT_BLOCK counts), `inputs` (`"v0": "texcoord"` for
+//!     pixel centres in [0, 1], or `{"base": […], "ddx": […], "ddy": […]}`),
+//!     `constants` (`"c5": [x, y, z, w]`), `ints`, `bools`, `samplers`
+//!     (`"s0": {"texture": NAME, "filter": "point"|"linear", "mip":
+//!     "none"|"point"|"linear", "address": "wrap"|"mirror"|"clamp"|"border"|
+//!     "mirroronce", "border": [r, g, b, a], "lod_bias": B, "max_mip_level":
+//!     N}`; NAME is a texture or an earlier target; unset states take
+//!     Direct3D 9's defaults: point, no mips, wrap), `blend` (`src`, `dest`,
+//!     `op`, optional `alpha` with its own `src`, `dest`, `op` for
+//!     SEPARATEALPHABLENDENABLE, optional `factor` bytes; absent: blending
+//!     off) and `write` (COLORWRITEENABLE letters, default `rgba`);
+//!   * `{"mips": TARGET, "odd": "fold"|"bilinear"}` — reduce the target
+//!     through its mip chain (default `fold`).
+
+use super::{DrawList, DrawStep, ShaderSpec, Source, Step, TargetSpec, TextureData};
+use crate::core::emu::{Address, Constants, Filter, LinearInput, MipFilter, SamplerState};
+use crate::core::image::{self, ImageLimits, OddSides, TargetFormat};
+use crate::core::load::{self, Options};
+use crate::core::merge::{BlendFactor, BlendOp, BlendState, ColorWrite, Equation, OutputState};
+use serde::Deserialize;
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+
+/// Bounds on what a file may ask for, checked before anything is allocated.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct FileLimits {
+    /// Pixels of every target and texture together (16 bytes each).
+    pub max_pixels: u64,
+    /// Steps in the list.
+    pub max_steps: usize,
+}
+
+impl Default for FileLimits {
+    /// As many pixels as one image may have ([`ImageLimits::MAX_PIXELS`]),
+    /// 10,000 steps.
+    fn default() -> FileLimits {
+        FileLimits {
+            max_pixels: ImageLimits::MAX_PIXELS,
+            max_steps: 10_000,
+        }
+    }
+}
+
+/// A problem in a draw-list file: the file, where in it, and what.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct FileError {
+    pub path: PathBuf,
+    pub at: String,
+    pub message: String,
+}
+
+impl std::fmt::Display for FileError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        if self.at.is_empty() {
+            write!(f, "{}: {}", self.path.display(), self.message)
+        } else {
+            write!(f, "{}: {}: {}", self.path.display(), self.at, self.message)
+        }
+    }
+}
+
+impl std::error::Error for FileError {}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct FileList {
+    #[serde(default)]
+    description: Option<String>,
+    targets: Vec<FileTarget>,
+    #[serde(default)]
+    textures: Vec<FileTexture>,
+    steps: Vec<FileStep>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct FileTarget {
+    name: String,
+    size: String,
+    format: String,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct FileTexture {
+    name: String,
+    image: Option<String>,
+    synthetic: Option<String>,
+    size: Option<String>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct FileStep {
+    clear: Option<String>,
+    color: Option<[u8; 4]>,
+    draw: Option<String>,
+    shader: Option<String>,
+    defines: Option<BTreeMap<String, u64>>,
+    inputs: Option<BTreeMap<String, FileInput>>,
+    constants: Option<BTreeMap<String, Vec<f64>>>,
+    ints: Option<BTreeMap<String, Vec<i32>>>,
+    bools: Option<BTreeMap<String, bool>>,
+    samplers: Option<BTreeMap<String, FileSampler>>,
+    blend: Option<FileBlend>,
+    write: Option<String>,
+    mips: Option<String>,
+    odd: Option<String>,
+}
+
+#[derive(Deserialize)]
+#[serde(untagged)]
+enum FileInput {
+    Named(String),
+    Linear {
+        base: Vec<f64>,
+        #[serde(default)]
+        ddx: Vec<f64>,
+        #[serde(default)]
+        ddy: Vec<f64>,
+    },
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct FileSampler {
+    texture: String,
+    filter: Option<String>,
+    mip: Option<String>,
+    address: Option<String>,
+    border: Option<[f64; 4]>,
+    lod_bias: Option<f64>,
+    max_mip_level: Option<u32>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct FileEquation {
+    src: String,
+    dest: String,
+    #[serde(default)]
+    op: Option<String>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct FileBlend {
+    src: String,
+    dest: String,
+    #[serde(default)]
+    op: Option<String>,
+    alpha: Option<FileEquation>,
+    factor: Option<[u8; 4]>,
+}
+
+/// A draw list read from a file, with its description.
+#[derive(Clone, Debug)]
+pub struct Loaded {
+    pub description: Option<String>,
+    pub list: DrawList,
+    /// The files it read besides itself (images, shaders): a command must not
+    /// write over them.
+    pub sources: Vec<PathBuf>,
+    /// Warnings of the constants audit (see [`crate::core::audit`]): values
+    /// a draw gives that its shader's `def` overrides or never reads, `-D`
+    /// names it never uses, each prefixed with the step's field.
+    pub warnings: Vec<String>,
+}
+
+/// Reads and checks a draw-list file. Images and shader files are read
+/// relative to the file's directory.
+pub fn read(path: &Path, limits: &FileLimits) -> Result<Loaded, FileError> {
+    let fail = |at: &str, message: String| FileError {
+        path: path.to_path_buf(),
+        at: at.to_string(),
+        message,
+    };
+    let bytes = std::fs::read(path).map_err(|e| fail("", e.to_string()))?;
+    let text = String::from_utf8(bytes).map_err(|e| {
+        fail(
+            "",
+            format!(
+                "not UTF-8 text (invalid byte at offset {})",
+                e.utf8_error().valid_up_to()
+            ),
+        )
+    })?;
+    parse(&text, path, limits)
+}
+
+/// [`read`] on text already in memory; `path` names it in errors and is
+/// where relative paths start from.
+pub fn parse(text: &str, path: &Path, limits: &FileLimits) -> Result<Loaded, FileError> {
+    let file: FileList = serde_json::from_str(text).map_err(|e| FileError {
+        path: path.to_path_buf(),
+        at: format!("line {} column {}", e.line(), e.column()),
+        message: e
+            .to_string()
+            .split(" at line ")
+            .next()
+            .unwrap_or("")
+            .to_string(),
+    })?;
+    let dir = path.parent().unwrap_or(Path::new("")).to_path_buf();
+    let mut r = Resolver {
+        path: path.to_path_buf(),
+        dir,
+        limits: *limits,
+        pixels: 0,
+        list: DrawList {
+            targets: Vec::new(),
+            textures: Vec::new(),
+            shaders: Vec::new(),
+            steps: Vec::new(),
+        },
+        shader_keys: Vec::new(),
+        sources: Vec::new(),
+        warnings: Vec::new(),
+    };
+    if file.steps.len() > limits.max_steps {
+        return Err(r.err(
+            "steps",
+            format!(
+                "{} steps, more than the limit of {}",
+                file.steps.len(),
+                limits.max_steps
+            ),
+        ));
+    }
+    for (i, t) in file.targets.iter().enumerate() {
+        r.target(i, t)?;
+    }
+    for (i, t) in file.textures.iter().enumerate() {
+        r.texture(i, t)?;
+    }
+    for (i, s) in file.steps.iter().enumerate() {
+        let step = r.step(i, s)?;
+        r.list.steps.push(step);
+    }
+    Ok(Loaded {
+        description: file.description,
+        list: r.list,
+        sources: r.sources,
+        warnings: r.warnings,
+    })
+}
+
+struct Resolver {
+    path: PathBuf,
+    dir: PathBuf,
+    limits: FileLimits,
+    /// Pixels of targets and textures so far.
+    pixels: u64,
+    list: DrawList,
+    /// (shader spec, defines) of each loaded shader, to load each once.
+    shader_keys: Vec<(String, BTreeMap<String, u64>)>,
+    /// Files read (images, shader files).
+    sources: Vec<PathBuf>,
+    /// Audit warnings so far.
+    warnings: Vec<String>,
+}
+
+fn size(s: &str) -> Result<(u32, u32), String> {
+    let (w, h) = s
+        .split_once(['x', 'X'])
+        .ok_or_else(|| format!("`{s}` is not a size WxH"))?;
+    let side = |v: &str| {
+        v.trim()
+            .parse::<u32>()
+            .ok()
+            .filter(|&n| (1..=65_536).contains(&n))
+    };
+    match (side(w), side(h)) {
+        (Some(w), Some(h)) => Ok((w, h)),
+        _ => Err(format!(
+            "`{s}`: both sides must be integers from 1 to 65536"
+        )),
+    }
+}
+
+/// `v` as 1 to 4 finite f32s (missing components 0).
+fn vec4(v: &[f64]) -> Result<[f32; 4], String> {
+    if v.is_empty() || v.len() > 4 {
+        return Err(format!("expected 1 to 4 numbers, got {}", v.len()));
+    }
+    let mut out = [0f32; 4];
+    for (o, &x) in out.iter_mut().zip(v) {
+        let f = x as f32;
+        if !f.is_finite() {
+            return Err(format!("{x} is not a finite f32"));
+        }
+        *o = f;
+    }
+    Ok(out)
+}
+
+/// `c5` → 5 for register letter `c` with `count` registers.
+fn register(name: &str, letter: char, count: u32) -> Result<u32, String> {
+    name.strip_prefix(letter)
+        .and_then(|n| n.parse::<u32>().ok())
+        .filter(|&n| n < count)
+        .ok_or_else(|| {
+            format!(
+                "`{name}` is not a register {letter}0 … {letter}{}",
+                count - 1
+            )
+        })
+}
+
+fn set<T: Copy>(file: &mut Vec<T>, zero: T, i: u32, v: T) {
+    let i = i as usize;
+    file.resize(file.len().max(i + 1), zero);
+    file[i] = v;
+}
+
+impl Resolver {
+    fn err(&self, at: &str, message: String) -> FileError {
+        FileError {
+            path: self.path.clone(),
+            at: at.to_string(),
+            message,
+        }
+    }
+
+    fn spend(&mut self, at: &str, w: u32, h: u32) -> Result<(), FileError> {
+        self.pixels += w as u64 * h as u64;
+        if self.pixels > self.limits.max_pixels {
+            return Err(self.err(
+                at,
+                format!(
+                    "targets and textures would hold {} pixels, more than the limit of {} (raise it with --max-pixels)",
+                    self.pixels, self.limits.max_pixels
+                ),
+            ));
+        }
+        Ok(())
+    }
+
+    fn name_free(&self, at: &str, name: &str) -> Result<(), FileError> {
+        let taken = self.list.targets.iter().any(|t| t.name == name)
+            || self.list.textures.iter().any(|t| t.name == name);
+        if taken || name.is_empty() {
+            return Err(self.err(
+                at,
+                format!("the name `{name}` is empty or already used by a target or texture"),
+            ));
+        }
+        Ok(())
+    }
+
+    fn target(&mut self, i: usize, t: &FileTarget) -> Result<(), FileError> {
+        let at = format!("targets[{i}]");
+        self.name_free(&format!("{at}.name"), &t.name)?;
+        let (width, height) = size(&t.size).map_err(|m| self.err(&format!("{at}.size"), m))?;
+        let format = TargetFormat::from_name(&t.format).ok_or_else(|| {
+            let known: Vec<&str> = TargetFormat::ALL.iter().map(|f| f.d3d_name()).collect();
+            self.err(
+                &format!("{at}.format"),
+                format!(
+                    "unknown format `{}` (one of {})",
+                    t.format,
+                    known.join(", ")
+                ),
+            )
+        })?;
+        self.spend(&at, width, height)?;
+        self.list.targets.push(TargetSpec {
+            name: t.name.clone(),
+            width,
+            height,
+            format,
+        });
+        Ok(())
+    }
+
+    fn texture(&mut self, i: usize, t: &FileTexture) -> Result<(), FileError> {
+        let at = format!("textures[{i}]");
+        self.name_free(&format!("{at}.name"), &t.name)?;
+        let (width, height, texels) = match (&t.image, &t.synthetic) {
+            (Some(file), None) => {
+                let budget = self.limits.max_pixels.saturating_sub(self.pixels).max(1);
+                let path = self.dir.join(file);
+                let img = image::load(&path, &ImageLimits { max_pixels: budget })
+                    .map_err(|e| self.err(&format!("{at}.image"), e.to_string()))?;
+                self.sources.push(path);
+                (img.width, img.height, img.pixels)
+            }
+            (None, Some(kind)) => self.synthetic(&at, kind, t.size.as_deref())?,
+            _ => {
+                return Err(self.err(
+                    &at,
+                    "give either `image` (a file) or `synthetic` (lights-gbuffer, lights-material-0 … -2)".into(),
+                ))
+            }
+        };
+        self.spend(&at, width, height)?;
+        self.list.textures.push(TextureData {
+            name: t.name.clone(),
+            width,
+            height,
+            texels,
+        });
+        Ok(())
+    }
+
+    fn synthetic(
+        &self,
+        at: &str,
+        kind: &str,
+        size_text: Option<&str>,
+    ) -> Result<(u32, u32, Vec<[f32; 4]>), FileError> {
+        use crate::jobs::scenes::lights::{Scene, MATERIAL_SIZE};
+        match kind {
+            "lights-gbuffer" => {
+                let text = size_text
+                    .ok_or_else(|| self.err(at, "lights-gbuffer needs a `size`".into()))?;
+                let (w, h) = size(text).map_err(|m| self.err(&format!("{at}.size"), m))?;
+                let scene =
+                    Scene::synthetic(w, h).map_err(|e| self.err(&format!("{at}.size"), e.0))?;
+                Ok((w, h, scene.gbuffer))
+            }
+            _ => {
+                let m = kind
+                    .strip_prefix("lights-material-")
+                    .and_then(|m| m.parse::<usize>().ok())
+                    .filter(|&m| m < 3)
+                    .ok_or_else(|| {
+                        self.err(
+                            &format!("{at}.synthetic"),
+                            format!("unknown synthetic texture `{kind}` (lights-gbuffer, lights-material-0, -1, -2)"),
+                        )
+                    })?;
+                let scene = Scene::from_ids(1, 1, &[0]).map_err(|e| self.err(at, e.0))?;
+                let texels = scene.materials[m].clone();
+                Ok((MATERIAL_SIZE, MATERIAL_SIZE, texels))
+            }
+        }
+    }
+
+    fn step(&mut self, i: usize, s: &FileStep) -> Result<Step, FileError> {
+        let at = format!("steps[{i}]");
+        let kinds = [&s.clear, &s.draw, &s.mips];
+        if kinds.iter().filter(|k| k.is_some()).count() != 1 {
+            return Err(self.err(
+                &at,
+                "a step is exactly one of {\"clear\": TARGET}, {\"draw\": TARGET, …}, {\"mips\": TARGET}".into(),
+            ));
+        }
+        let draw_fields = s.shader.is_some()
+            || s.defines.is_some()
+            || s.inputs.is_some()
+            || s.constants.is_some()
+            || s.ints.is_some()
+            || s.bools.is_some()
+            || s.samplers.is_some()
+            || s.blend.is_some()
+            || s.write.is_some();
+        let target = |name: &str, field: &str| {
+            self.list.target(name).ok_or_else(|| {
+                self.err(
+                    &format!("{at}.{field}"),
+                    format!("no target named `{name}`"),
+                )
+            })
+        };
+        if let Some(name) = &s.clear {
+            if draw_fields || s.odd.is_some() {
+                return Err(self.err(&at, "a clear takes only `color`".into()));
+            }
+            return Ok(Step::Clear {
+                target: target(name, "clear")?,
+                color: s.color.unwrap_or([0; 4]),
+            });
+        }
+        if let Some(name) = &s.mips {
+            if draw_fields || s.color.is_some() {
+                return Err(self.err(&at, "a mips step takes only `odd`".into()));
+            }
+            let odd = match s.odd.as_deref().unwrap_or("fold") {
+                "fold" => OddSides::Fold,
+                "bilinear" => OddSides::Bilinear,
+                other => {
+                    return Err(self.err(
+                        &format!("{at}.odd"),
+                        format!("`{other}` is not fold or bilinear"),
+                    ))
+                }
+            };
+            return Ok(Step::Mips {
+                target: target(name, "mips")?,
+                odd,
+            });
+        }
+        if s.color.is_some() || s.odd.is_some() {
+            return Err(self.err(
+                &at,
+                "`color` belongs to a clear, `odd` to a mips step".into(),
+            ));
+        }
+        let name = s.draw.as_deref().unwrap_or_default();
+        let target = target(name, "draw")?;
+        self.draw(&at, target, s).map(Step::Draw)
+    }
+
+    fn draw(&mut self, at: &str, target: usize, s: &FileStep) -> Result<DrawStep, FileError> {
+        let spec = s
+            .shader
+            .as_deref()
+            .ok_or_else(|| self.err(at, "a draw needs a `shader`".into()))?;
+        let shader = self.shader(
+            &format!("{at}.shader"),
+            spec,
+            s.defines.clone().unwrap_or_default(),
+        )?;
+        let t = &self.list.targets[target];
+        let (w, h) = (t.width, t.height);
+        let mut inputs = Vec::new();
+        for (name, input) in s.inputs.iter().flatten() {
+            let field = format!("{at}.inputs.{name}");
+            let v = register(name, 'v', 10).map_err(|m| self.err(&field, m))?;
+            let value = match input {
+                FileInput::Named(n) if n == "texcoord" => super::texcoord(w, h),
+                FileInput::Named(n) => {
+                    return Err(self.err(
+                        &field,
+                        format!("`{n}` is not \"texcoord\" or {{\"base\": …}}"),
+                    ))
+                }
+                FileInput::Linear { base, ddx, ddy } => {
+                    let four = |v: &[f64], part: &str| -> Result<[f32; 4], FileError> {
+                        if v.is_empty() {
+                            return Ok([0.0; 4]);
+                        }
+                        vec4(v).map_err(|m| self.err(&format!("{field}.{part}"), m))
+                    };
+                    LinearInput {
+                        base: four(base, "base")?,
+                        ddx: four(ddx, "ddx")?,
+                        ddy: four(ddy, "ddy")?,
+                    }
+                }
+            };
+            inputs.push((v, value));
+        }
+        let constants = self.constants(at, s)?;
+        let mut samplers = Vec::new();
+        for (name, fs) in s.samplers.iter().flatten() {
+            let field = format!("{at}.samplers.{name}");
+            let reg = register(name, 's', 16).map_err(|m| self.err(&field, m))?;
+            let source = match self.list.target(&fs.texture) {
+                Some(t) if t == target => {
+                    return Err(self.err(
+                        &format!("{field}.texture"),
+                        format!(
+                        "`{}` is the target this draw renders to (Direct3D 9 does not allow it)",
+                        fs.texture
+                    ),
+                    ))
+                }
+                Some(t) => Source::Target(t),
+                None => Source::Texture(
+                    self.list
+                        .textures
+                        .iter()
+                        .position(|t| t.name == fs.texture)
+                        .ok_or_else(|| {
+                            self.err(
+                                &format!("{field}.texture"),
+                                format!("no texture or target named `{}`", fs.texture),
+                            )
+                        })?,
+                ),
+            };
+            samplers.push((reg, source, self.sampler_state(&field, fs)?));
+        }
+        let blend = match &s.blend {
+            None => BlendState::OFF,
+            Some(b) => self.blend(&format!("{at}.blend"), b)?,
+        };
+        let write = match &s.write {
+            None => ColorWrite::ALL,
+            Some(letters) => ColorWrite::from_letters(letters).ok_or_else(|| {
+                self.err(
+                    &format!("{at}.write"),
+                    format!("`{letters}` is not a set of the letters r, g, b, a"),
+                )
+            })?,
+        };
+        self.audit(at, shader, s)?;
+        Ok(DrawStep {
+            target,
+            shader,
+            inputs,
+            constants,
+            samplers,
+            output: OutputState { blend, write },
+        })
+    }
+
+    /// The draw's constants held against what its shader reads: a register
+    /// read that neither the shader nor the step sets is an error naming the
+    /// step; the other findings become warnings.
+    fn audit(&mut self, at: &str, shader: usize, s: &FileStep) -> Result<(), FileError> {
+        use crate::core::audit::{self, Given, Kind};
+        fn regs<V>(
+            m: &Option<BTreeMap<String, V>>,
+            letter: char,
+        ) -> std::collections::BTreeSet<u32> {
+            m.iter()
+                .flatten()
+                .filter_map(|(name, _)| name.strip_prefix(letter)?.parse().ok())
+                .collect()
+        }
+        let given = Given {
+            floats: regs(&s.constants, 'c'),
+            ints: regs(&s.ints, 'i'),
+            bools: regs(&s.bools, 'b'),
+            defines: s.defines.iter().flatten().map(|(n, _)| n.clone()).collect(),
+            ..Given::default()
+        };
+        let loaded = &self.list.shaders[shader].loaded;
+        let found = audit::audit(&loaded.shader, &loaded.defines_used, &given);
+        let unset = audit::unset_names(&found);
+        if !unset.is_empty() {
+            let message = format!(
+                "{} reads {}, which neither the shader nor this step sets (give them in `constants`, `ints` or `bools`, zeros too if zeros are meant)",
+                loaded.file.name,
+                crate::core::numbers::list(&unset)
+            );
+            return Err(self.err(at, message));
+        }
+        for f in found.iter().filter(|f| f.kind != Kind::Unset) {
+            self.warnings
+                .push(format!("{at}: {} ({})", f.message(), f.help()));
+        }
+        Ok(())
+    }
+
+    fn constants(&self, at: &str, s: &FileStep) -> Result<Constants, FileError> {
+        let mut c = Constants::default();
+        for (name, v) in s.constants.iter().flatten() {
+            let field = format!("{at}.constants.{name}");
+            let reg = register(name, 'c', 224).map_err(|m| self.err(&field, m))?;
+            let value = vec4(v).map_err(|m| self.err(&field, m))?;
+            set(&mut c.float, [0.0; 4], reg, value);
+        }
+        for (name, v) in s.ints.iter().flatten() {
+            let field = format!("{at}.ints.{name}");
+            let reg = register(name, 'i', 16).map_err(|m| self.err(&field, m))?;
+            if v.is_empty() || v.len() > 4 {
+                return Err(self.err(&field, "expected 1 to 4 integers".into()));
+            }
+            let mut value = [0i32; 4];
+            value[..v.len()].copy_from_slice(v);
+            set(&mut c.int, [0; 4], reg, value);
+        }
+        for (name, &v) in s.bools.iter().flatten() {
+            let field = format!("{at}.bools.{name}");
+            let reg = register(name, 'b', 16).map_err(|m| self.err(&field, m))?;
+            set(&mut c.bool, false, reg, v);
+        }
+        Ok(c)
+    }
+
+    fn sampler_state(&self, field: &str, fs: &FileSampler) -> Result<SamplerState, FileError> {
+        let bad = |part: &str, v: &str, allowed: &str| {
+            self.err(
+                &format!("{field}.{part}"),
+                format!("`{v}` is not one of {allowed}"),
+            )
+        };
+        let filter = match fs.filter.as_deref().unwrap_or("point") {
+            "point" => Filter::Point,
+            "linear" => Filter::Linear,
+            v => return Err(bad("filter", v, "point, linear")),
+        };
+        let mip_filter = match fs.mip.as_deref().unwrap_or("none") {
+            "none" => MipFilter::None,
+            "point" => MipFilter::Point,
+            "linear" => MipFilter::Linear,
+            v => return Err(bad("mip", v, "none, point, linear")),
+        };
+        let address = match fs.address.as_deref().unwrap_or("wrap") {
+            "wrap" => Address::Wrap,
+            "mirror" => Address::Mirror,
+            "clamp" => Address::Clamp,
+            "border" => Address::Border,
+            "mirroronce" => Address::MirrorOnce,
+            v => return Err(bad("address", v, "wrap, mirror, clamp, border, mirroronce")),
+        };
+        let border = match fs.border {
+            Some(b) => vec4(&b).map_err(|m| self.err(&format!("{field}.border"), m))?,
+            None => [0.0; 4],
+        };
+        let lod_bias = fs.lod_bias.unwrap_or(0.0) as f32;
+        if !lod_bias.is_finite() {
+            return Err(self.err(&format!("{field}.lod_bias"), "not a finite f32".into()));
+        }
+        Ok(SamplerState {
+            mag_filter: filter,
+            min_filter: filter,
+            mip_filter,
+            mip_lod_bias: lod_bias,
+            max_mip_level: fs.max_mip_level.unwrap_or(0),
+            address_u: address,
+            address_v: address,
+            border,
+        })
+    }
+
+    fn equation(
+        &self,
+        field: &str,
+        src: &str,
+        dest: &str,
+        op: Option<&str>,
+    ) -> Result<Equation, FileError> {
+        let factor = |part: &str, name: &str| {
+            BlendFactor::from_name(name).ok_or_else(|| {
+                let known: Vec<&str> = BlendFactor::ALL.iter().map(|f| f.d3d_name()).collect();
+                self.err(
+                    &format!("{field}.{part}"),
+                    format!(
+                        "unknown blend factor `{name}` (one of {})",
+                        known.join(", ")
+                    ),
+                )
+            })
+        };
+        let op = match op {
+            None => BlendOp::Add,
+            Some(name) => BlendOp::from_name(name).ok_or_else(|| {
+                self.err(
+                    &format!("{field}.op"),
+                    format!(
+                        "unknown blend operation `{name}` (ADD, SUBTRACT, REVSUBTRACT, MIN, MAX)"
+                    ),
+                )
+            })?,
+        };
+        Ok(Equation {
+            src: factor("src", src)?,
+            dest: factor("dest", dest)?,
+            op,
+        })
+    }
+
+    fn blend(&self, field: &str, b: &FileBlend) -> Result<BlendState, FileError> {
+        let color = self.equation(field, &b.src, &b.dest, b.op.as_deref())?;
+        let alpha = match &b.alpha {
+            None => None,
+            Some(a) => {
+                Some(self.equation(&format!("{field}.alpha"), &a.src, &a.dest, a.op.as_deref())?)
+            }
+        };
+        Ok(BlendState {
+            enabled: true,
+            color,
+            alpha,
+            factor: b.factor.unwrap_or([255; 4]),
+        })
+    }
+
+    fn shader(
+        &mut self,
+        field: &str,
+        spec: &str,
+        defines: BTreeMap<String, u64>,
+    ) -> Result<usize, FileError> {
+        let key = (spec.to_string(), defines);
+        if let Some(i) = self.shader_keys.iter().position(|k| *k == key) {
+            return Ok(i);
+        }
+        let (name, text) = match crate::jobs::bundled::resolve(spec) {
+            crate::jobs::bundled::Named::Bundled(b) => (b.path.to_string(), b.text.to_string()),
+            crate::jobs::bundled::Named::File(_) => {
+                let file = self.dir.join(spec);
+                let bytes = std::fs::read(&file).map_err(|e| {
+                    let hint = crate::jobs::bundled::suggest(spec)
+                        .map(|n| format!("; did you mean the bundled `{n}`?"))
+                        .unwrap_or_default();
+                    self.err(field, format!("{}: {e}{hint}", file.display()))
+                })?;
+                let text = String::from_utf8(bytes)
+                    .map_err(|_| self.err(field, format!("{}: not UTF-8 text", file.display())))?;
+                self.sources.push(file.clone());
+                (file.display().to_string(), text)
+            }
+        };
+        let options = Options {
+            defines: key.1.clone(),
+            ..Options::default()
+        };
+        let loaded =
+            load::load_str(&name, &text, &options).map_err(|e| self.err(field, e.to_string()))?;
+        self.list.shaders.push(ShaderSpec { name, loaded });
+        self.shader_keys.push(key);
+        Ok(self.list.shaders.len() - 1)
+    }
+}

@@ -1,0 +1,395 @@
+//! Draw lists: several draws meeting in render targets — each with its
+//! shader, constants, textures, blend state and write mask — with clears and
+//! mip-chain reductions between them, so that N lights can accumulate into
+//! one target and a later draw can read the result. It is what the
+//! article's lighting phase and its alternatives need, and what `ps30
+//! render` runs from a file a user writes ([`file`](mod@file)).
+//!
+//! A [`DrawList`] is plain data: named targets (size and D3D9 format),
+//! named textures (loaded images or synthetic inputs), and [`Step`]s. Every
+//! draw covers its whole target (a full-screen quad: pixel (x, y) runs the
+//! shader once, v# as given); the emulator runs the shader and the output
+//! merger ([`crate::core::merge`]) writes its colours. A target can be bound
+//! to a sampler of a later draw, never of a draw into itself (Direct3D 9
+//! calls that set-up illegal, the article notes); after a [`Step::Mips`] it
+//! is sampled with its mip chain, whose last level is the 1 × 1 reduction.
+//!
+//! The runner reports each step ([`StepReport`]) to an observer as it
+//! finishes, with the targets as they are then, so a caller can write every
+//! intermediate target without the runner keeping copies.
+
+pub mod file;
+
+use crate::core::cost::{self, Environment, Profile, Range};
+use crate::core::emu::{
+    self, findings::Finding, Compiled, Constants, Draw, EmuError, LinearInput, SamplerState,
+    TextureLevels,
+};
+use crate::core::image::{MipChain, OddSides, RenderTarget, TargetFormat, Texture};
+use crate::core::load;
+use crate::core::merge::{self, MergeStats, OutputState};
+use serde::Serialize;
+
+/// A texture a draw list reads: an image or a synthetic input, owned.
+#[derive(Clone, Debug, PartialEq)]
+pub struct TextureData {
+    pub name: String,
+    pub width: u32,
+    pub height: u32,
+    /// `width × height` texels, row-major, top row first.
+    pub texels: Vec<[f32; 4]>,
+}
+
+/// A render target of a draw list.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct TargetSpec {
+    pub name: String,
+    pub width: u32,
+    pub height: u32,
+    pub format: TargetFormat,
+}
+
+/// A shader a draw list runs, loaded once however many draws use it.
+#[derive(Clone, Debug)]
+pub struct ShaderSpec {
+    /// The bundled name or the file it came from.
+    pub name: String,
+    pub loaded: load::Loaded,
+}
+
+/// What a sampler reads.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Source {
+    /// A texture of [`DrawList::textures`].
+    Texture(usize),
+    /// A target of [`DrawList::targets`], as it is when the draw runs.
+    Target(usize),
+}
+
+/// One draw: a full-screen quad over `target`.
+#[derive(Clone, Debug)]
+pub struct DrawStep {
+    pub target: usize,
+    /// Index into [`DrawList::shaders`].
+    pub shader: usize,
+    /// `(v#, value)`.
+    pub inputs: Vec<(u32, LinearInput)>,
+    pub constants: Constants,
+    pub samplers: Vec<(u32, Source, SamplerState)>,
+    pub output: OutputState,
+}
+
+/// One step of a draw list.
+#[derive(Clone, Debug)]
+pub enum Step {
+    /// `Clear(D3DCLEAR_TARGET)` with a D3DCOLOR (R, G, B, A bytes).
+    Clear {
+        target: usize,
+        color: [u8; 4],
+    },
+    Draw(DrawStep),
+    /// Build the target's full mip chain in its format (the reduction to
+    /// 1 × 1); later draws sample it with its levels.
+    Mips {
+        target: usize,
+        odd: OddSides,
+    },
+}
+
+/// A runnable draw list.
+#[derive(Clone, Debug)]
+pub struct DrawList {
+    pub targets: Vec<TargetSpec>,
+    pub textures: Vec<TextureData>,
+    pub shaders: Vec<ShaderSpec>,
+    pub steps: Vec<Step>,
+}
+
+/// How a draw list runs.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Settings {
+    /// Emulator threads (`None`: all cores).
+    pub threads: Option<usize>,
+    pub limits: emu::EmuLimits,
+}
+
+/// What one step did.
+#[derive(Clone, Debug, Serialize)]
+pub struct StepReport {
+    pub index: usize,
+    /// `clear`, `draw` or `mips`.
+    pub kind: &'static str,
+    pub target: String,
+    pub detail: StepDetail,
+}
+
+/// The kind-specific part of a [`StepReport`].
+#[derive(Clone, Debug, Serialize)]
+#[serde(untagged)]
+pub enum StepDetail {
+    Clear {
+        color: [u8; 4],
+    },
+    Draw {
+        shader: String,
+        /// Executed slots per pixel, from the cost model with the draw's
+        /// integer and boolean constants.
+        executed_static: Range,
+        /// What the emulator counted (min, max over pixels).
+        executed: Range,
+        counts_agree: bool,
+        merged: MergeStats,
+        #[serde(skip)]
+        findings: Vec<Finding>,
+    },
+    Mips {
+        odd: OddSides,
+        levels: usize,
+        /// The 1 × 1 level: the reduction of the target.
+        mean: [f32; 4],
+    },
+}
+
+/// A target as it is during and after a run.
+#[derive(Clone, Debug, PartialEq)]
+pub struct TargetState {
+    pub target: RenderTarget,
+    /// The mip chain of its last [`Step::Mips`], until it is drawn into again.
+    pub mips: Option<MipChain>,
+}
+
+/// Why a draw list could not run (a result that disagrees is not an error).
+#[derive(Debug)]
+pub enum RenderError {
+    /// Step `index`, and what went wrong there.
+    Step {
+        index: usize,
+        message: String,
+    },
+    Emu {
+        index: usize,
+        error: EmuError,
+    },
+    /// A shader the emulator cannot compile.
+    Compile {
+        shader: String,
+        error: EmuError,
+    },
+}
+
+impl std::fmt::Display for RenderError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            RenderError::Step { index, message } => write!(f, "steps[{index}]: {message}"),
+            RenderError::Emu { index, error } => write!(f, "steps[{index}]: emulator: {error}"),
+            RenderError::Compile { shader, error } => write!(f, "{shader}: emulator: {error}"),
+        }
+    }
+}
+
+impl std::error::Error for RenderError {}
+
+/// Runs every step in order. `observe` sees each step's report and every
+/// target as it is after that step. Returns the reports and the targets at
+/// the end.
+pub fn run(
+    list: &DrawList,
+    settings: &Settings,
+    observe: &mut dyn FnMut(&StepReport, &[TargetState]),
+) -> Result<(Vec<StepReport>, Vec<TargetState>), RenderError> {
+    let mut states: Vec<TargetState> = list
+        .targets
+        .iter()
+        .map(|t| TargetState {
+            target: RenderTarget::new(t.width, t.height, t.format),
+            mips: None,
+        })
+        .collect();
+    let compiled: Vec<Compiled> = list
+        .shaders
+        .iter()
+        .map(|s| {
+            emu::compile(&s.loaded.shader).map_err(|error| RenderError::Compile {
+                shader: s.name.clone(),
+                error,
+            })
+        })
+        .collect::<Result<_, _>>()?;
+    let mut reports = Vec::with_capacity(list.steps.len());
+    for (index, step) in list.steps.iter().enumerate() {
+        let report = match step {
+            Step::Clear { target, color } => {
+                let state = &mut states[*target];
+                merge::clear(&mut state.target, *color);
+                state.mips = None;
+                report(
+                    index,
+                    "clear",
+                    list,
+                    *target,
+                    StepDetail::Clear { color: *color },
+                )
+            }
+            Step::Mips { target, odd } => {
+                let state = &mut states[*target];
+                let chain = MipChain::reduce(state.target.as_texture(), state.target.format, *odd)
+                    .map_err(|message| RenderError::Step { index, message })?;
+                let detail = StepDetail::Mips {
+                    odd: *odd,
+                    levels: chain.len(),
+                    mean: chain.last_texel(),
+                };
+                state.mips = Some(chain);
+                report(index, "mips", list, *target, detail)
+            }
+            Step::Draw(d) => {
+                let detail = draw(list, &compiled[d.shader], d, &mut states, settings)
+                    .map_err(|e| e.at(index))?;
+                report(index, "draw", list, d.target, detail)
+            }
+        };
+        observe(&report, &states);
+        reports.push(report);
+    }
+    Ok((reports, states))
+}
+
+fn report(
+    index: usize,
+    kind: &'static str,
+    list: &DrawList,
+    target: usize,
+    detail: StepDetail,
+) -> StepReport {
+    StepReport {
+        index,
+        kind,
+        target: list.targets[target].name.clone(),
+        detail,
+    }
+}
+
+/// A draw's failure before its step index is known.
+enum DrawFailure {
+    Message(String),
+    Emu(EmuError),
+}
+
+impl DrawFailure {
+    fn at(self, index: usize) -> RenderError {
+        match self {
+            DrawFailure::Message(message) => RenderError::Step { index, message },
+            DrawFailure::Emu(error) => RenderError::Emu { index, error },
+        }
+    }
+}
+
+/// Runs one draw and merges its colours into its target.
+fn draw(
+    list: &DrawList,
+    compiled: &Compiled,
+    d: &DrawStep,
+    states: &mut [TargetState],
+    settings: &Settings,
+) -> Result<StepDetail, DrawFailure> {
+    let spec = &list.targets[d.target];
+    let shader = &list.shaders[d.shader];
+    let mut emu_draw = Draw::new(spec.width, spec.height);
+    emu_draw.limits = settings.limits;
+    emu_draw.record_lod = true;
+    emu_draw.inputs = d.inputs.clone();
+    emu_draw.constants = d.constants.clone();
+    for &(s, source, state) in &d.samplers {
+        let levels: TextureLevels<'_> = match source {
+            Source::Texture(t) => {
+                let t = &list.textures[t];
+                Texture {
+                    width: t.width,
+                    height: t.height,
+                    texels: &t.texels,
+                }
+                .into()
+            }
+            Source::Target(t) if t == d.target => {
+                return Err(DrawFailure::Message(format!(
+                "s{s} samples `{}`, the target this draw renders to (Direct3D 9 does not allow it)",
+                spec.name
+            )))
+            }
+            Source::Target(t) => match &states[t].mips {
+                Some(chain) => chain.into(),
+                None => states[t].target.as_texture().into(),
+            },
+        };
+        emu_draw.samplers.push((s, levels, state));
+    }
+    let out = match settings.threads {
+        Some(t) => emu::run_with_threads(compiled, &emu_draw, t),
+        None => emu::run(compiled, &emu_draw),
+    }
+    .map_err(DrawFailure::Emu)?;
+    let findings = emu::findings::findings(&out, &emu_draw, &shader.loaded.file);
+    let executed = Range {
+        min: out.executed.iter().copied().min().unwrap_or(0),
+        max: out.executed.iter().copied().max().unwrap_or(0),
+    };
+    let executed_static = static_count(shader, &d.constants)?;
+    drop(emu_draw);
+    let state = &mut states[d.target];
+    let merged = match out.color.first().and_then(|c| c.as_ref()) {
+        Some(colors) => merge::merge(&mut state.target, colors, &out.killed, &d.output)
+            .map_err(|e| DrawFailure::Message(e.to_string()))?,
+        // No oC0 written: the target is not updated.
+        None => MergeStats {
+            written: 0,
+            killed: out.killed.iter().filter(|&&k| k).count() as u64,
+        },
+    };
+    state.mips = None;
+    Ok(StepDetail::Draw {
+        shader: shader.name.clone(),
+        counts_agree: executed_static.min <= executed.min && executed.max <= executed_static.max,
+        executed_static,
+        executed,
+        merged,
+        findings,
+    })
+}
+
+/// The cost model's executed range for a draw: every integer and boolean
+/// constant as the draw sets it (0 / false where it sets none).
+fn static_count(shader: &ShaderSpec, c: &Constants) -> Result<Range, DrawFailure> {
+    let mut env = Environment::default();
+    for i in 0..16usize {
+        env.ints
+            .insert(i as u32, c.int.get(i).copied().unwrap_or([0; 4]));
+        env.bools
+            .insert(i as u32, c.bool.get(i).copied().unwrap_or(false));
+    }
+    let a = cost::analyse(
+        &shader.loaded.shader,
+        &shader.loaded.file,
+        &env,
+        &Profile::ps_3_0(),
+    )
+    .map_err(|e| DrawFailure::Message(format!("{}: {e}", shader.name)))?;
+    Ok(a.executed)
+}
+
+/// The texture coordinate of pixel centres over a `w × h` target:
+/// v = ((x + ½)/w, (y + ½)/h, 0, 0), the full-screen quad's usual mapping.
+pub fn texcoord(w: u32, h: u32) -> LinearInput {
+    let (w, h) = (w as f32, h as f32);
+    LinearInput {
+        base: [0.5 / w, 0.5 / h, 0.0, 0.0],
+        ddx: [1.0 / w, 0.0, 0.0, 0.0],
+        ddy: [0.0, 1.0 / h, 0.0, 0.0],
+    }
+}
+
+impl DrawList {
+    /// The index of the target named `name`.
+    pub fn target(&self, name: &str) -> Option<usize> {
+        self.targets.iter().position(|t| t.name == name)
+    }
+}
