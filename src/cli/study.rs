@@ -95,7 +95,7 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
             (
                 study::log_lights::text(&s),
                 study::log_lights::json(&s),
-                study::log_lights::page(&s),
+                study::log_lights::page(&s).map_err(BadInput)?,
                 s.all_agree(),
                 None,
             )
@@ -113,7 +113,7 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
             (
                 study::mip_luminance::text(&s),
                 study::mip_luminance::json(&s),
-                study::mip_luminance::page(&s),
+                study::mip_luminance::page(&s).map_err(BadInput)?,
                 s.all_agree(),
                 None,
             )
@@ -139,7 +139,7 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
             (
                 study::article_chain::text(&r, shown),
                 study::article_chain::json(&r, shown),
-                study::article_chain::page(&r),
+                study::article_chain::page(&r).map_err(BadInput)?,
                 r.all_agree(),
                 written,
             )

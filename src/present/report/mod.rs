@@ -180,13 +180,28 @@ pub fn generate(
             ]
         })
         .collect();
+    // The bundled name of each row (`article:loop`), the path left to the page.
+    let rows: Vec<String> = out
+        .budgets
+        .iter()
+        .map(|b| b.shader.split(" (").next().unwrap_or(&b.shader).to_string())
+        .collect();
     let chart = BarChart {
+        labels: figures::Labels {
+            title: "Bundled shaders against the ps_3_0 budgets",
+            x: "share of the limit (512 slots; 65,535 executed per pixel)",
+            y: "shader",
+        },
+        rows: &rows,
         groups: &groups,
-        colors: &[SLOTS_COLOR, EXECUTED_COLOR],
+        bars: &[
+            ("instruction slots", SLOTS_COLOR),
+            ("executed per pixel", EXECUTED_COLOR),
+        ],
         max_fraction: 1.25,
-        plot_width: 500,
+        width: 900,
     };
-    write_png(batch, &mut out, "budgets.png", &chart.render())?;
+    write_png(batch, &mut out, "budgets.png", &chart.render()?)?;
     let page = budgets_page(&out.budgets);
     write(batch, &mut out, "budgets.md", &page)?;
 
@@ -208,7 +223,7 @@ pub fn generate(
         },
     );
     let runs: Vec<(String, String, LuminanceRun)> = runs.into_iter().collect::<Result<_, _>>()?;
-    let (figs, canvases) = block_figures(&cross, &runs);
+    let (figs, canvases) = block_figures(&cross, &runs)?;
     for (f, c) in figs.iter().zip(&canvases) {
         write_png(batch, &mut out, &f.file, c)?;
     }
@@ -347,12 +362,19 @@ fn budgets_page(budgets: &[Budget]) -> String {
     s
 }
 
-/// Pixel boundaries of blocks of `block` over `size` pixels, at half scale.
-fn edges(size: u32, block: u32) -> Vec<u32> {
+/// Boundaries of blocks of `block` over `size` pixels, in image pixels.
+fn edges(size: u32, block: u32) -> Vec<f64> {
     let n = size.div_ceil(block);
-    (0..=n)
-        .map(|k| ((k * block).min(size) as f64 / 2.0).round() as u32)
-        .collect()
+    (0..=n).map(|k| (k * block).min(size) as f64).collect()
+}
+
+/// The size of a heat map of a `w × h` image: 640 pixels of map, the
+/// image's aspect ratio, room for the title, axes and colour bar.
+fn heat_map_size(w: u32, h: u32) -> (u32, u32) {
+    (
+        640 + 150 + 70,
+        (640.0 * h as f64 / w as f64).round() as u32 + 90,
+    )
 }
 
 /// log10(difference / bound), the error heat maps' quantity.
@@ -379,11 +401,11 @@ fn block_means(image: &HdrImage, run: &LuminanceRun) -> Vec<f64> {
 fn block_figures(
     image: &HdrImage,
     runs: &[(String, String, LuminanceRun)],
-) -> (Vec<BlockFigure>, Vec<figures::Canvas>) {
+) -> Result<(Vec<BlockFigure>, Vec<figures::Canvas>), String> {
     let mut figs = Vec::new();
     let mut canvases = Vec::new();
     let Some((p1, p2, first)) = runs.first() else {
-        return (figs, canvases);
+        return Ok((figs, canvases));
     };
     let xe = edges(image.width, first.block.0);
     let ye = edges(image.height, first.block.1);
@@ -393,16 +415,28 @@ fn block_figures(
     let lo = means.iter().copied().fold(f64::INFINITY, f64::min);
     let hi = means.iter().copied().fold(f64::NEG_INFINITY, f64::max);
     let range = ((lo * 10.0).floor() / 10.0, (hi * 10.0).ceil() / 10.0);
+    let size = heat_map_size(image.width, image.height);
+    let title = format!(
+        "Mean log2(δ + L) per {}×{} block ({})",
+        first.block.0, first.block.1, p1
+    );
     canvases.push(
         HeatMap {
+            labels: figures::Labels {
+                title: &title,
+                x: "x (image pixels)",
+                y: "y (image pixels)",
+            },
+            colorbar: "mean log2(δ + L) over the block",
             values: &means,
             x_edges: &xe,
             y_edges: &ye,
             range,
             marks: &[],
             flagged: &[],
+            size,
         }
-        .render(),
+        .render()?,
     );
     figs.push(BlockFigure {
         file: "blocks-log-luminance.png".into(),
@@ -437,16 +471,24 @@ fn block_figures(
             })
             .collect();
         let flagged: Vec<bool> = r.blocks.iter().map(|b| !b.agree).collect();
+        let title = format!("Block error against its bound: {p1} + {p2}");
         canvases.push(
             HeatMap {
+                labels: figures::Labels {
+                    title: &title,
+                    x: "x (image pixels)",
+                    y: "y (image pixels)",
+                },
+                colorbar: "log10(|emulated − reference| / bound); 0: the bound",
                 values: &values,
                 x_edges: &xe,
                 y_edges: &ye,
                 range: (lo, hi),
                 marks: &[0.0],
                 flagged: &flagged,
+                size,
             }
-            .render(),
+            .render()?,
         );
         figs.push(BlockFigure {
             file: format!("blocks-error-{}.png", p1.split(':').next().unwrap_or("run")),
@@ -458,7 +500,7 @@ fn block_figures(
             blocks_agreeing: agreeing(r),
         });
     }
-    (figs, canvases)
+    Ok((figs, canvases))
 }
 
 fn blocks_page(
