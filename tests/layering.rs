@@ -1,6 +1,7 @@
 //! The shape of the crate, checked: imports point one way (core ← jobs ←
 //! presentation ← command line), the library holds no command-line types,
-//! and no two modules import each other, directly or around a cycle.
+//! no two modules import each other, directly or around a cycle, and no
+//! function is longer than a reader can hold ([`MAX_FUNCTION_LINES`]).
 //!
 //! The check reads the sources: every `crate::…` and `super::…` path in
 //! code (comments and strings stripped), including the groups of `use`
@@ -49,7 +50,8 @@ fn modules(src: &Path) -> BTreeMap<Module, PathBuf> {
     out
 }
 
-/// The source without comments, string and character literals.
+/// The source without comments, string and character literals. Line breaks
+/// inside them are kept, so line numbers stay those of the source.
 fn code_only(text: &str) -> String {
     let b = text.as_bytes();
     let mut out = String::with_capacity(text.len());
@@ -62,11 +64,13 @@ fn code_only(text: &str) -> String {
                 }
             }
             b'/' if b.get(i + 1) == Some(&b'*') => {
+                let start = i;
                 i += 2;
                 while i + 1 < b.len() && !(b[i] == b'*' && b[i + 1] == b'/') {
                     i += 1;
                 }
                 i += 2;
+                push_line_breaks(&mut out, &b[start..i.min(b.len())]);
             }
             b'r' if b.get(i + 1) == Some(&b'#') || b.get(i + 1) == Some(&b'"') => {
                 // raw string r"…" or r#"…"#
@@ -90,16 +94,19 @@ fn code_only(text: &str) -> String {
                 while j < b.len() && !b[j..].starts_with(&close) {
                     j += 1;
                 }
-                i = j + close.len();
                 out.push_str("\"\"");
+                push_line_breaks(&mut out, &b[i..j.min(b.len())]);
+                i = j + close.len();
             }
             b'"' => {
+                let start = i;
                 i += 1;
                 while i < b.len() && b[i] != b'"' {
                     i += if b[i] == b'\\' { 2 } else { 1 };
                 }
                 i += 1;
                 out.push_str("\"\"");
+                push_line_breaks(&mut out, &b[start..i.min(b.len())]);
             }
             b'\'' if b.get(i + 2) == Some(&b'\'') || (b.get(i + 1) == Some(&b'\\')) => {
                 // a char literal ('x' or '\n'); lifetimes ('a) are left alone
@@ -121,6 +128,13 @@ fn code_only(text: &str) -> String {
         }
     }
     out
+}
+
+/// Appends the line breaks of `cut`, text left out of [`code_only`]'s output.
+fn push_line_breaks(out: &mut String, cut: &[u8]) {
+    for _ in cut.iter().filter(|&&c| c == b'\n') {
+        out.push('\n');
+    }
 }
 
 /// Expands a `use` tree (`a::{b, c::{d, e}}`) into plain paths.
@@ -468,4 +482,174 @@ fn the_reader_sees_imports() {
             .any(|p| p.contains("jobs") || p.contains("present")),
         "{paths:?}"
     );
+}
+
+// ----- function length ---------------------------------------------------------
+
+/// The longest a function in `src/` may be, from its `fn` line to its
+/// closing brace: long functions are split along their natural seams (one
+/// function per instruction family, per check, per phase).
+const MAX_FUNCTION_LINES: usize = 150;
+
+/// Functions allowed to be longer, as (file under `src/`, function name,
+/// why). Only tables belong here: a function whose length is its data, one
+/// row per line, reads no better split. None does today (the instruction
+/// table, `core/isa.rs`'s `TABLE`, is a constant, not a function).
+const LONG_FUNCTIONS_ALLOWED: &[(&str, &str, &str)] = &[];
+
+/// A function found in source code.
+#[derive(Debug, PartialEq)]
+struct Function {
+    name: String,
+    /// 1-based line of its `fn`.
+    line: usize,
+    /// Lines from its `fn` to its closing brace, both included.
+    lines: usize,
+}
+
+/// Every function with a body in `code` (the output of [`code_only`], so no
+/// brace of a comment or a string counts), nested ones included.
+fn functions(code: &str) -> Vec<Function> {
+    let b = code.as_bytes();
+    let line_starts: Vec<usize> = std::iter::once(0)
+        .chain(code.match_indices('\n').map(|(i, _)| i + 1))
+        .collect();
+    let line_of = |pos: usize| line_starts.partition_point(|&s| s <= pos);
+    let mut out = Vec::new();
+    let mut from = 0;
+    while let Some(pos) = code[from..].find("fn") {
+        let at = from + pos;
+        from = at + 2;
+        if at > 0 && (b[at - 1].is_ascii_alphanumeric() || b[at - 1] == b'_') {
+            continue;
+        }
+        let after = &code[at + 2..];
+        let rest = after.trim_start();
+        if rest.len() == after.len() {
+            continue; // `fn(` of a function pointer type, or `fnord`
+        }
+        let name: String = rest
+            .chars()
+            .take_while(|c| c.is_alphanumeric() || *c == '_')
+            .collect();
+        if name.is_empty() {
+            continue;
+        }
+        // The body is the first `{` outside parentheses and brackets (an
+        // array type `[T; N]` holds a `;`); a `;` there ends a declaration
+        // without one.
+        let mut depth = 0i32;
+        let mut open = None;
+        for (k, &c) in b.iter().enumerate().skip(at + 2) {
+            match c {
+                b'(' | b'[' => depth += 1,
+                b')' | b']' => depth -= 1,
+                b'{' if depth == 0 => {
+                    open = Some(k);
+                    break;
+                }
+                b';' if depth == 0 => break,
+                _ => {}
+            }
+        }
+        let Some(open) = open else { continue };
+        let mut depth = 0i32;
+        let close = b[open..].iter().position(|&c| {
+            match c {
+                b'{' => depth += 1,
+                b'}' => depth -= 1,
+                _ => {}
+            }
+            depth == 0
+        });
+        let Some(close) = close else { continue };
+        out.push(Function {
+            name,
+            line: line_of(at),
+            lines: line_of(open + close) - line_of(at) + 1,
+        });
+    }
+    out
+}
+
+#[test]
+fn no_function_is_longer_than_a_reader_can_hold() {
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let mut long = Vec::new();
+    let mut allowed_seen = BTreeSet::new();
+    for file in modules(&src).into_values() {
+        let rel = file
+            .strip_prefix(&src)
+            .unwrap()
+            .to_string_lossy()
+            .replace('\\', "/");
+        let code = code_only(&std::fs::read_to_string(&file).unwrap());
+        for f in functions(&code) {
+            if f.lines <= MAX_FUNCTION_LINES {
+                continue;
+            }
+            match LONG_FUNCTIONS_ALLOWED
+                .iter()
+                .find(|(path, name, _)| *path == rel && *name == f.name)
+            {
+                Some(&(path, name, _)) => {
+                    allowed_seen.insert((path, name));
+                }
+                None => long.push(format!(
+                    "src/{rel}:{} fn {}: {} lines",
+                    f.line, f.name, f.lines
+                )),
+            }
+        }
+    }
+    assert!(
+        long.is_empty(),
+        "functions longer than {MAX_FUNCTION_LINES} lines (split them along their seams, \
+         or add a table to LONG_FUNCTIONS_ALLOWED with the reason):\n{}",
+        long.join("\n")
+    );
+    // An allowance outlives its function's length only by mistake.
+    let stale: Vec<String> = LONG_FUNCTIONS_ALLOWED
+        .iter()
+        .filter(|(path, name, _)| !allowed_seen.contains(&(*path, *name)))
+        .map(|(path, name, _)| format!("src/{path} fn {name}"))
+        .collect();
+    assert!(
+        stale.is_empty(),
+        "LONG_FUNCTIONS_ALLOWED names functions that are no longer than \
+         {MAX_FUNCTION_LINES} lines (or no longer exist):\n{}",
+        stale.join("\n")
+    );
+}
+
+#[test]
+fn the_reader_measures_functions() {
+    // The length check is only as good as this measure: braces in strings
+    // and comments do not count, line breaks inside them do, an array type
+    // in a signature does not end it, a declaration without a body is not a
+    // function, and a function one line over the limit is seen as such.
+    let long_body = "    let x = 1;\n".repeat(MAX_FUNCTION_LINES - 1);
+    let text = format!(
+        "trait T {{\n    fn declared(&self) -> [u8; 4];\n}}\n\
+         fn short(a: [u8; 2]) -> u8 {{\n    let s = \"}} {{\n}}\";\n    /* }}\n */ a[0] // }}\n}}\n\
+         fn long() {{\n{long_body}}}\n\
+         pub(crate) fn outer() {{\n    fn inner() {{}}\n    let f: fn(u8) = |_| {{}};\n}}\n"
+    );
+    let found = functions(&code_only(&text));
+    let want = [
+        ("short", 4, 6),
+        ("long", 10, MAX_FUNCTION_LINES + 1),
+        ("outer", 10 + MAX_FUNCTION_LINES + 1, 4),
+        ("inner", 10 + MAX_FUNCTION_LINES + 2, 1),
+    ];
+    let want: Vec<Function> = want
+        .iter()
+        .map(|&(name, line, lines)| Function {
+            name: name.into(),
+            line,
+            lines,
+        })
+        .collect();
+    assert_eq!(found, want);
+    assert!(found[1].lines > MAX_FUNCTION_LINES);
 }

@@ -27,6 +27,15 @@ pub fn plan_text(p: &Plan) -> String {
         profile_text(&p.profile),
         p.delta as f32
     );
+    s.push_str(&table(&candidate_rows(p), &[1, 2, 3, 7, 14]));
+    s.push('\n');
+    s.push_str(&recommendation_text(p));
+    s
+}
+
+/// The header row and one row per candidate (the recommended one marked
+/// `*`).
+fn candidate_rows(p: &Plan) -> Vec<Vec<String>> {
     let header = [
         "#",
         "variant",
@@ -71,13 +80,18 @@ pub fn plan_text(p: &Plan) -> String {
             c.listed_as.join("; "),
         ]);
     }
-    let cols = header.len();
+    rows
+}
+
+/// `rows` as aligned columns: the columns in `left` left-aligned, the
+/// others (numbers) right-aligned.
+fn table(rows: &[Vec<String>], left: &[usize]) -> String {
+    let mut s = String::new();
+    let cols = rows.first().map_or(0, |r| r.len());
     let widths: Vec<usize> = (0..cols)
         .map(|i| rows.iter().map(|r| r[i].chars().count()).max().unwrap_or(0))
         .collect();
-    // Text columns left-aligned, numbers right-aligned.
-    let left = [1, 2, 3, 7, 14];
-    for r in &rows {
+    for r in rows {
         let mut line = String::new();
         for (i, cell) in r.iter().enumerate() {
             let pad = widths[i] - cell.chars().count();
@@ -97,7 +111,13 @@ pub fn plan_text(p: &Plan) -> String {
         s.push_str(line.trim_end());
         s.push('\n');
     }
-    s.push('\n');
+    s
+}
+
+/// The recommendation, the rule and why, what the columns mean, and the
+/// notes.
+fn recommendation_text(p: &Plan) -> String {
+    let mut s = String::new();
     match p
         .recommended
         .as_ref()

@@ -189,13 +189,17 @@ enum Node {
         end: usize,
         body: Vec<Node>,
     },
-    If {
-        head: usize,
-        else_at: Option<usize>,
-        end: usize,
-        then: Vec<Node>,
-        els: Vec<Node>,
-    },
+    If(IfNode),
+}
+
+/// An `if` … [`else` …] `endif` block.
+#[derive(Clone, Debug)]
+struct IfNode {
+    head: usize,
+    else_at: Option<usize>,
+    end: usize,
+    then: Vec<Node>,
+    els: Vec<Node>,
 }
 
 fn build(shader: &Shader, mut i: usize, stop: usize) -> (Vec<Node>, usize) {
@@ -219,13 +223,13 @@ fn build(shader: &Shader, mut i: usize, stop: usize) -> (Vec<Node>, usize) {
                 } else {
                     (None, first, Vec::new())
                 };
-                out.push(Node::If {
+                out.push(Node::If(IfNode {
                     head: i,
                     else_at,
                     end,
                     then,
                     els,
-                });
+                }));
                 i = end + 1;
             }
             _ => {
@@ -460,263 +464,296 @@ impl Ctx<'_> {
         in_sub: bool,
     ) -> Result<(Paths, Range), CostError> {
         match node {
-            Node::Ins(i) => {
-                let i = *i;
-                self.count(i, mult);
-                let s = Range::exact(self.slots(i));
-                let ins = &self.shader.instructions()[i];
-                Ok((
-                    match ins.op {
-                        Opcode::Break => Paths {
-                            fall: None,
-                            brk: Some(s),
-                            exit: None,
-                        },
-                        Opcode::BreakC | Opcode::BreakP => {
-                            self.reason(format!("line {}: a data-dependent break", self.line(i)));
-                            Paths {
-                                fall: Some(s),
-                                brk: Some(s),
-                                exit: None,
-                            }
-                        }
-                        Opcode::Ret if !in_sub => Paths {
-                            fall: None,
-                            brk: None,
-                            exit: Some(s),
-                        },
-                        Opcode::Call | Opcode::CallNz => {
-                            let label = ins.src[0].reg.index;
-                            let taken = if ins.op == Opcode::Call {
-                                Some(true)
-                            } else {
-                                self.condition(i)
-                            };
-                            let sub = self.subs.get(&label).cloned().unwrap_or_default();
-                            let sub_mult = match taken {
-                                Some(true) => mult,
-                                Some(false) => Range::ZERO,
-                                None => Range {
-                                    min: 0,
-                                    max: mult.max,
-                                },
-                            };
-                            let (p, _) = self.seq(&sub, sub_mult, true)?;
-                            let body = p.fall.unwrap_or(Range::ZERO);
-                            let called = Paths::fall(s.add(body));
-                            match taken {
-                                Some(true) => called,
-                                Some(false) => Paths::fall(s),
-                                None => {
-                                    if ins.src.get(1).map(|c| c.reg.file)
-                                        == Some(RegFile::Predicate)
-                                    {
-                                        self.reason(format!(
-                                            "line {}: callnz on a predicate",
-                                            self.line(i)
-                                        ));
-                                    }
-                                    called.union(Paths::fall(s))
-                                }
-                            }
-                        }
-                        _ => Paths::fall(s),
-                    },
-                    Range::ZERO,
-                ))
-            }
-            Node::If {
-                head,
-                else_at,
-                end,
-                then,
-                els,
-            } => {
-                let known = match self.shader.instructions()[*head].op {
-                    Opcode::If => self.condition(*head),
-                    _ => None,
-                };
-                if known.is_none()
-                    && self.shader.instructions()[*head].src[0].reg.file != RegFile::ConstBool
-                {
-                    self.reason(format!("line {}: a dynamic branch", self.line(*head)));
+            Node::Ins(i) => Ok((self.instruction(*i, mult, in_sub)?, Range::ZERO)),
+            Node::If(n) => self.if_node(n, mult, in_sub),
+            Node::Loop { head, end, body } => self.loop_node(*head, *end, body, mult, in_sub),
+        }
+    }
+
+    /// Paths of one instruction outside any block: breaks, `ret` in main,
+    /// calls; everything else falls through.
+    fn instruction(&mut self, i: usize, mult: Range, in_sub: bool) -> Result<Paths, CostError> {
+        self.count(i, mult);
+        let s = Range::exact(self.slots(i));
+        let ins = &self.shader.instructions()[i];
+        Ok(match ins.op {
+            Opcode::Break => Paths {
+                fall: None,
+                brk: Some(s),
+                exit: None,
+            },
+            Opcode::BreakC | Opcode::BreakP => {
+                self.reason(format!("line {}: a data-dependent break", self.line(i)));
+                Paths {
+                    fall: Some(s),
+                    brk: Some(s),
+                    exit: None,
                 }
-                let (tm, em) = match known {
-                    Some(true) => (mult, Range::ZERO),
-                    Some(false) => (Range::ZERO, mult),
-                    None => (
-                        Range {
-                            min: 0,
-                            max: mult.max,
-                        },
-                        Range {
-                            min: 0,
-                            max: mult.max,
-                        },
-                    ),
-                };
-                self.count(*head, mult);
-                let (tp, tn) = self.seq(then, tm, in_sub)?;
-                let (ep, en) = self.seq(els, em, in_sub)?;
-                // `else` is passed at the end of the then-branch and on
-                // entering the else-branch; `endif` at the end of either. A
-                // branch that breaks out passes neither after it.
-                let always_reaches =
-                    |p: &Paths| p.fall.is_some() && p.brk.is_none() && p.exit.is_none();
-                let (else_runs, end_runs) = match known {
-                    Some(true) => (reach(&tp, mult), reach(&tp, mult)),
-                    Some(false) => (mult, reach(&ep, mult)),
-                    None => (
-                        Range {
-                            min: if always_reaches(&tp) { mult.min } else { 0 },
-                            max: mult.max,
-                        },
-                        Range {
-                            min: if always_reaches(&tp) && always_reaches(&ep) {
-                                mult.min
-                            } else {
-                                0
-                            },
-                            max: if tp.fall.is_some() || ep.fall.is_some() {
-                                mult.max
-                            } else {
-                                0
-                            },
-                        },
-                    ),
-                };
-                self.count(*end, end_runs);
-                let else_s = match else_at {
-                    Some(e) => {
-                        self.count(*e, else_runs);
-                        Range::exact(self.slots(*e))
-                    }
-                    None => Range::ZERO,
-                };
-                let head_s = Range::exact(self.slots(*head));
-                let tail = else_s.add(Range::exact(self.slots(*end)));
-                let then_branch = Paths {
-                    fall: tp.fall.map(|f| f.add(tail)),
-                    brk: tp.brk,
-                    exit: tp.exit,
-                };
-                let else_branch = Paths {
-                    fall: ep.fall.map(|f| f.add(tail)),
-                    brk: ep.brk.map(|f| f.add(else_s)),
-                    exit: ep.exit.map(|f| f.add(else_s)),
-                };
-                let paths = match known {
-                    Some(true) => then_branch,
-                    Some(false) => else_branch,
-                    None => then_branch.union(else_branch),
-                }
-                .shift(head_s);
-                let nested = match known {
-                    Some(true) => tn,
-                    Some(false) => en,
-                    None => tn.union(en),
-                };
-                Ok((paths, nested))
             }
-            Node::Loop { head, end, body } => {
-                let n = self.iterations(*head)?;
-                let h = self.slots(*head);
-                let f = self.slots(*end);
-                let slot = self.loops.len();
-                self.loops.push(LoopCost {
-                    line: self.line(*head),
-                    header: String::new(),
-                    iterations: n,
-                    entries: mult,
-                    cost_per_iteration: Range::ZERO,
-                    own_cost_per_iteration: Range::ZERO,
-                    total: Range::ZERO,
-                });
-                // How many iterations start and how many reach endrep:
-                // a body that always breaks runs (at most) once, one that
-                // may break runs between once and n times.
-                let bp = self.body_paths(*head, body, in_sub)?;
-                let (runs, head_runs, end_runs) = match (bp.fall, bp.brk) {
-                    (_, None) => (
-                        n,
-                        // charged once per iteration, or once if it runs 0 times
-                        Range {
-                            min: n.min.max(1),
-                            max: n.max.max(1),
-                        },
-                        n,
-                    ),
-                    (None, Some(_)) => (
-                        Range {
-                            min: n.min.min(1),
-                            max: n.max.min(1),
-                        },
-                        Range::exact(1),
-                        Range::ZERO,
-                    ),
-                    (Some(_), Some(_)) => (
-                        Range {
-                            min: n.min.min(1),
-                            max: n.max,
-                        },
-                        Range {
-                            min: 1,
-                            max: n.max.max(1),
-                        },
-                        Range { min: 0, max: n.max },
-                    ),
-                };
-                let (b, nested) = self.seq(body, mult.mul(runs), in_sub)?;
-                self.count(*head, mult.mul(head_runs));
-                self.count(*end, mult.mul(end_runs));
-                let hr = Range::exact(h);
-                let full = b.fall.map(|bf| hr.add(bf).add(Range::exact(f)));
-                let total = match (full, b.brk) {
-                    (Some(full), None) => {
-                        let t = full.mul(n);
-                        // n = 0: the rep/loop instruction alone.
-                        Range {
-                            min: if n.min == 0 { h } else { t.min },
-                            max: if n.max == 0 { h } else { t.max },
-                        }
-                    }
-                    (full, Some(brk)) => {
-                        let first_break = hr.add(brk);
-                        let all = full.map(|full| full.mul(n));
-                        let min = match all {
-                            Some(a) if n.min > 0 => a.min.min(first_break.min),
-                            _ if n.min == 0 => h,
-                            _ => first_break.min,
-                        };
-                        let max = match full {
-                            Some(full) if n.max > 0 => {
-                                let last_break = full
-                                    .max
-                                    .saturating_mul(n.max - 1)
-                                    .saturating_add(first_break.max);
-                                last_break.max(full.max.saturating_mul(n.max))
-                            }
-                            None if n.max > 0 => first_break.max,
-                            _ => h,
-                        };
-                        Range { min, max }
-                    }
-                    (None, None) => Range::exact(h),
-                };
-                let per_iter = full.unwrap_or(hr);
-                let ins = &self.shader.instructions()[*head];
-                let operands: Vec<String> = ins.src.iter().map(|s| s.reg.to_string()).collect();
-                let entry = &mut self.loops[slot];
-                entry.header = format!("{} {}", ins.op, operands.join(", "));
-                entry.cost_per_iteration = per_iter;
-                entry.own_cost_per_iteration = Range {
-                    min: per_iter.min.saturating_sub(nested.min),
-                    max: per_iter.max.saturating_sub(nested.max),
-                };
-                entry.total = total.mul(mult);
-                Ok((Paths::fall(total), total))
+            Opcode::Ret if !in_sub => Paths {
+                fall: None,
+                brk: None,
+                exit: Some(s),
+            },
+            Opcode::Call | Opcode::CallNz => self.call(i, s, mult)?,
+            _ => Paths::fall(s),
+        })
+    }
+
+    /// `call` / `callnz` at `i` (slots `s`): the call, plus the callee's
+    /// body when it is (or may be) taken.
+    fn call(&mut self, i: usize, s: Range, mult: Range) -> Result<Paths, CostError> {
+        let ins = &self.shader.instructions()[i];
+        let label = ins.src[0].reg.index;
+        let taken = if ins.op == Opcode::Call {
+            Some(true)
+        } else {
+            self.condition(i)
+        };
+        let sub = self.subs.get(&label).cloned().unwrap_or_default();
+        let sub_mult = match taken {
+            Some(true) => mult,
+            Some(false) => Range::ZERO,
+            None => Range {
+                min: 0,
+                max: mult.max,
+            },
+        };
+        let (p, _) = self.seq(&sub, sub_mult, true)?;
+        let body = p.fall.unwrap_or(Range::ZERO);
+        let called = Paths::fall(s.add(body));
+        Ok(match taken {
+            Some(true) => called,
+            Some(false) => Paths::fall(s),
+            None => {
+                if ins.src.get(1).map(|c| c.reg.file) == Some(RegFile::Predicate) {
+                    self.reason(format!("line {}: callnz on a predicate", self.line(i)));
+                }
+                called.union(Paths::fall(s))
+            }
+        })
+    }
+
+    /// An `if` block: each branch with its multiplicity (both, when the
+    /// condition is not known), `else` and `endif` counted as the branches
+    /// reach them.
+    fn if_node(
+        &mut self,
+        n: &IfNode,
+        mult: Range,
+        in_sub: bool,
+    ) -> Result<(Paths, Range), CostError> {
+        let head = n.head;
+        let known = match self.shader.instructions()[head].op {
+            Opcode::If => self.condition(head),
+            _ => None,
+        };
+        if known.is_none() && self.shader.instructions()[head].src[0].reg.file != RegFile::ConstBool
+        {
+            self.reason(format!("line {}: a dynamic branch", self.line(head)));
+        }
+        let (tm, em) = match known {
+            Some(true) => (mult, Range::ZERO),
+            Some(false) => (Range::ZERO, mult),
+            None => (
+                Range {
+                    min: 0,
+                    max: mult.max,
+                },
+                Range {
+                    min: 0,
+                    max: mult.max,
+                },
+            ),
+        };
+        self.count(head, mult);
+        let (tp, tn) = self.seq(&n.then, tm, in_sub)?;
+        let (ep, en) = self.seq(&n.els, em, in_sub)?;
+        let (else_runs, end_runs) = else_end_runs(known, &tp, &ep, mult);
+        self.count(n.end, end_runs);
+        let else_s = match n.else_at {
+            Some(e) => {
+                self.count(e, else_runs);
+                Range::exact(self.slots(e))
+            }
+            None => Range::ZERO,
+        };
+        let head_s = Range::exact(self.slots(head));
+        let tail = else_s.add(Range::exact(self.slots(n.end)));
+        let then_branch = Paths {
+            fall: tp.fall.map(|f| f.add(tail)),
+            brk: tp.brk,
+            exit: tp.exit,
+        };
+        let else_branch = Paths {
+            fall: ep.fall.map(|f| f.add(tail)),
+            brk: ep.brk.map(|f| f.add(else_s)),
+            exit: ep.exit.map(|f| f.add(else_s)),
+        };
+        let paths = match known {
+            Some(true) => then_branch,
+            Some(false) => else_branch,
+            None => then_branch.union(else_branch),
+        }
+        .shift(head_s);
+        let nested = match known {
+            Some(true) => tn,
+            Some(false) => en,
+            None => tn.union(en),
+        };
+        Ok((paths, nested))
+    }
+
+    /// A rep/loop block: its body once per iteration that starts (fewer
+    /// when it may break), the head and end as iterations reach them, and
+    /// its entry in [`Analysis::loops`].
+    fn loop_node(
+        &mut self,
+        head: usize,
+        end: usize,
+        body: &[Node],
+        mult: Range,
+        in_sub: bool,
+    ) -> Result<(Paths, Range), CostError> {
+        let n = self.iterations(head)?;
+        let h = self.slots(head);
+        let f = self.slots(end);
+        let slot = self.loops.len();
+        self.loops.push(LoopCost {
+            line: self.line(head),
+            header: String::new(),
+            iterations: n,
+            entries: mult,
+            cost_per_iteration: Range::ZERO,
+            own_cost_per_iteration: Range::ZERO,
+            total: Range::ZERO,
+        });
+        let bp = self.body_paths(head, body, in_sub)?;
+        let (runs, head_runs, end_runs) = loop_runs(&bp, n);
+        let (b, nested) = self.seq(body, mult.mul(runs), in_sub)?;
+        self.count(head, mult.mul(head_runs));
+        self.count(end, mult.mul(end_runs));
+        let hr = Range::exact(h);
+        let full = b.fall.map(|bf| hr.add(bf).add(Range::exact(f)));
+        let total = loop_total(full, b.brk, n, h);
+        let per_iter = full.unwrap_or(hr);
+        let ins = &self.shader.instructions()[head];
+        let operands: Vec<String> = ins.src.iter().map(|s| s.reg.to_string()).collect();
+        let entry = &mut self.loops[slot];
+        entry.header = format!("{} {}", ins.op, operands.join(", "));
+        entry.cost_per_iteration = per_iter;
+        entry.own_cost_per_iteration = Range {
+            min: per_iter.min.saturating_sub(nested.min),
+            max: per_iter.max.saturating_sub(nested.max),
+        };
+        entry.total = total.mul(mult);
+        Ok((Paths::fall(total), total))
+    }
+}
+
+/// How often an if's `else` and `endif` run, given the paths of its then
+/// (`tp`) and else (`ep`) branches. `else` is passed at the end of the
+/// then-branch and on entering the else-branch; `endif` at the end of
+/// either. A branch that breaks out passes neither after it.
+fn else_end_runs(known: Option<bool>, tp: &Paths, ep: &Paths, mult: Range) -> (Range, Range) {
+    let always_reaches = |p: &Paths| p.fall.is_some() && p.brk.is_none() && p.exit.is_none();
+    match known {
+        Some(true) => (reach(tp, mult), reach(tp, mult)),
+        Some(false) => (mult, reach(ep, mult)),
+        None => (
+            Range {
+                min: if always_reaches(tp) { mult.min } else { 0 },
+                max: mult.max,
+            },
+            Range {
+                min: if always_reaches(tp) && always_reaches(ep) {
+                    mult.min
+                } else {
+                    0
+                },
+                max: if tp.fall.is_some() || ep.fall.is_some() {
+                    mult.max
+                } else {
+                    0
+                },
+            },
+        ),
+    }
+}
+
+/// For a loop of `n` iterations whose body has paths `bp`: how many
+/// iterations start, how often the rep/loop is charged and how often the
+/// end is reached. A body that always breaks runs (at most) once, one that
+/// may break runs between once and n times.
+fn loop_runs(bp: &Paths, n: Range) -> (Range, Range, Range) {
+    match (bp.fall, bp.brk) {
+        (_, None) => (
+            n,
+            // charged once per iteration, or once if it runs 0 times
+            Range {
+                min: n.min.max(1),
+                max: n.max.max(1),
+            },
+            n,
+        ),
+        (None, Some(_)) => (
+            Range {
+                min: n.min.min(1),
+                max: n.max.min(1),
+            },
+            Range::exact(1),
+            Range::ZERO,
+        ),
+        (Some(_), Some(_)) => (
+            Range {
+                min: n.min.min(1),
+                max: n.max,
+            },
+            Range {
+                min: 1,
+                max: n.max.max(1),
+            },
+            Range { min: 0, max: n.max },
+        ),
+    }
+}
+
+/// A loop's executed slots: `n` iterations of `full` (head, body, end; None
+/// when the body never falls through), ended early by a break costing `brk`
+/// after the head; `h` alone when it runs 0 times.
+fn loop_total(full: Option<Range>, brk: Option<Range>, n: Range, h: u64) -> Range {
+    let hr = Range::exact(h);
+    match (full, brk) {
+        (Some(full), None) => {
+            let t = full.mul(n);
+            // n = 0: the rep/loop instruction alone.
+            Range {
+                min: if n.min == 0 { h } else { t.min },
+                max: if n.max == 0 { h } else { t.max },
             }
         }
+        (full, Some(brk)) => {
+            let first_break = hr.add(brk);
+            let all = full.map(|full| full.mul(n));
+            let min = match all {
+                Some(a) if n.min > 0 => a.min.min(first_break.min),
+                _ if n.min == 0 => h,
+                _ => first_break.min,
+            };
+            let max = match full {
+                Some(full) if n.max > 0 => {
+                    let last_break = full
+                        .max
+                        .saturating_mul(n.max - 1)
+                        .saturating_add(first_break.max);
+                    last_break.max(full.max.saturating_mul(n.max))
+                }
+                None if n.max > 0 => first_break.max,
+                _ => h,
+            };
+            Range { min, max }
+        }
+        (None, None) => Range::exact(h),
     }
 }
 

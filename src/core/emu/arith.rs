@@ -210,6 +210,13 @@ impl Worker<'_, '_> {
         }
     }
 
+    /// `dp3` / `dp4`: the dot product, replicated to the written components.
+    #[inline(always)]
+    pub(super) fn dp<const N: usize>(&mut self, d: DstOp, a: SrcOp, b: SrcOp) {
+        self.dot::<N>(d, a, b, 0);
+        self.store::<true>(d, d.mask());
+    }
+
     /// `dp2add`: a.x·b.x + a.y·b.y + c (c's replicate component).
     pub(super) fn dp2add(&mut self, d: DstOp, a: SrcOp, b: SrcOp, c3: SrcOp) {
         self.dot::<2>(d, a, b, 0);
@@ -297,6 +304,14 @@ impl Worker<'_, '_> {
             t1[l] = v.sin();
         }
         self.store::<false>(d, d.mask() & 0b0011);
+    }
+
+    /// `dsx` / `dsy` (`neighbour` as in [`Self::deriv`]), recorded at
+    /// gradient site `site`.
+    #[inline(always)]
+    pub(super) fn derivative(&mut self, d: DstOp, a: SrcOp, site: u16, neighbour: usize) {
+        self.note_site(site);
+        self.deriv(d, a, neighbour)
     }
 
     /// Coarse `dsx` (`neighbour` 1: top-right − top-left) or `dsy`

@@ -20,9 +20,9 @@
 //! | input block | `v0..v9`, `vPos` | filled per batch |
 
 use super::{EmuError, GradientSite};
-use crate::core::ir::{Dst, Info, Instruction, Shader, Src, SrcMod, Swizzle};
+use crate::core::ir::{Dst, Info, Instruction, Program, Shader, Span, Src, SrcMod, Swizzle};
 use crate::core::isa::{Compare, Opcode, RegFile, SamplerType};
-use std::collections::BTreeSet;
+use std::collections::{BTreeSet, HashMap};
 
 /// A source operand: a row base, a packed swizzle and modifier bits.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -475,6 +475,93 @@ fn matrix_rows(op: Opcode) -> Option<(u8, u8)> {
     }
 }
 
+/// Pass 1: which temps and constants are used (with matrix ranges).
+fn usage(ins: &[Instruction]) -> Result<Usage, EmuError> {
+    let mut usage = Usage::default();
+    for (i, x) in ins.iter().enumerate() {
+        let span = matrix_rows(x.op);
+        for (k, s) in x.src.iter().enumerate() {
+            let count = match span {
+                Some((n, _)) if k == 1 => n as u32,
+                _ => 1,
+            };
+            for r in 0..count {
+                let idx = s.reg.index + r;
+                match s.reg.file {
+                    RegFile::Temp if idx < TEMPS => usage.temps.insert(idx),
+                    RegFile::Const if idx < CONSTS => usage.consts.insert(idx),
+                    RegFile::Temp | RegFile::Const => {
+                        return Err(malformed(i, format!("register {} out of range", s.reg)))
+                    }
+                    _ => false,
+                };
+            }
+        }
+        if let Some(d) = &x.dst {
+            if d.reg.file == RegFile::Temp && d.reg.index < TEMPS {
+                usage.temps.insert(d.reg.index);
+            }
+        }
+    }
+    Ok(usage)
+}
+
+/// The row assignment: the layout, and the base row of every used `r#` and
+/// `c#` (see the module docs for the order of the blocks).
+struct Rows {
+    layout: Layout,
+    temp_row: [u16; TEMPS as usize],
+    const_row: [u16; CONSTS as usize],
+}
+
+fn assign_rows(usage: &Usage) -> Result<Rows, EmuError> {
+    let mut row: usize = 4; // zero register
+    let mut const_row = [0u16; CONSTS as usize];
+    let mut consts = Vec::new();
+    for &c in &usage.consts {
+        const_row[c as usize] = row as u16;
+        consts.push((row as u16, c));
+        row += 4;
+    }
+    let face = row as u16;
+    row += 4;
+    let reset_start = row;
+    let mut temp_row = [0u16; TEMPS as usize];
+    for &t in &usage.temps {
+        temp_row[t as usize] = row as u16;
+        row += 4;
+    }
+    let output = row as u16;
+    row += 20;
+    let al = row as u16;
+    row += 4;
+    let reset = reset_start..row;
+    let input = row as u16;
+    row += 4 * INPUTS as usize;
+    let pos = row as u16;
+    row += 4;
+    if row > u16::MAX as usize {
+        return Err(malformed(0, "too many registers"));
+    }
+    Ok(Rows {
+        layout: Layout {
+            rows: row,
+            consts,
+            face,
+            reset,
+            input,
+            pos,
+            output,
+            al,
+        },
+        temp_row,
+        const_row,
+    })
+}
+
+/// Pass 2's state: the row assignment, what the ops reveal about the program
+/// (outputs, inputs, `aL` reads, loop integers) and the side tables the ops
+/// index (texldd gradients, gradient sites).
 struct Builder<'a> {
     info: &'a Info,
     ins: &'a [Instruction],
@@ -484,6 +571,22 @@ struct Builder<'a> {
     reads_al: bool,
     outputs: u8,
     inputs: u16,
+    /// Declared sampler types by `s#`.
+    samplers: [Option<SamplerType>; 16],
+    grads: Vec<(SrcOp, SrcOp)>,
+    sites: Vec<GradientSite>,
+    site_of_span: HashMap<Span, u16>,
+    /// The lexical count of open loops, which checks `break` placement.
+    open_loops: u32,
+    rep_ints: u16,
+    loop_ints: u16,
+}
+
+/// Source operand `k` of instruction `i`.
+fn operand(i: usize, x: &Instruction, k: usize) -> Result<&Src, EmuError> {
+    x.src
+        .get(k)
+        .ok_or_else(|| malformed(i, format!("missing source operand {}", k)))
 }
 
 impl Builder<'_> {
@@ -524,6 +627,11 @@ impl Builder<'_> {
             swz: pack_swizzle(s.swizzle),
             flags: modifier | if s.relative { SrcOp::RELATIVE } else { 0 },
         })
+    }
+
+    /// Source operand `k` of instruction `i`, compiled.
+    fn src_at(&mut self, i: usize, x: &Instruction, k: usize) -> Result<SrcOp, EmuError> {
+        self.src(i, operand(i, x, k)?)
     }
 
     fn dst(&mut self, i: usize, ins: &Instruction) -> Result<DstOp, EmuError> {
@@ -599,6 +707,345 @@ impl Builder<'_> {
             .ok_or_else(|| malformed(i, format!("label l{} is not defined", s.reg.index)))?;
         Ok(Pc::new(at + 1))
     }
+
+    /// The gradient site of instruction `i`: one per source statement, shared
+    /// by its REPEAT_BLOCK copies.
+    fn site(&mut self, i: usize, x: &Instruction) -> Result<u16, EmuError> {
+        if let Some(&k) = self.site_of_span.get(&x.origin.span) {
+            return Ok(k);
+        }
+        let k = u16::try_from(self.sites.len())
+            .ok()
+            .filter(|&k| k != u16::MAX)
+            .ok_or_else(|| malformed(i, "too many gradient instructions"))?;
+        let sampler = x
+            .src
+            .iter()
+            .find(|s| s.reg.file == RegFile::Sampler)
+            .map(|s| s.reg.index);
+        self.sites.push(GradientSite {
+            instruction: i,
+            span: x.origin.span,
+            op: x.op,
+            sampler,
+            temp_source: x.src.first().is_some_and(|s| s.reg.file == RegFile::Temp),
+            quads: 0,
+            divergent_quads: 0,
+            executions: 0,
+            divergent_executions: 0,
+            lod: None,
+        });
+        self.site_of_span.insert(x.origin.span, k);
+        Ok(k)
+    }
+
+    /// The micro-op of instruction `i`, one method per instruction family.
+    fn op(&mut self, i: usize, x: &Instruction) -> Result<Op, EmuError> {
+        match x.op {
+            Opcode::Nop => Ok(Op::Nop),
+            Opcode::Mov
+            | Opcode::Rcp
+            | Opcode::Rsq
+            | Opcode::Exp
+            | Opcode::Log
+            | Opcode::Frc
+            | Opcode::Abs
+            | Opcode::Nrm
+            | Opcode::SinCos
+            | Opcode::Dsx
+            | Opcode::Dsy => self.unary(i, x),
+            Opcode::Add
+            | Opcode::Sub
+            | Opcode::Mul
+            | Opcode::Dp3
+            | Opcode::Dp4
+            | Opcode::Min
+            | Opcode::Max
+            | Opcode::Pow
+            | Opcode::Crs => self.binary(i, x),
+            Opcode::M4x4 | Opcode::M4x3 | Opcode::M3x4 | Opcode::M3x3 | Opcode::M3x2 => {
+                self.matrix(i, x)
+            }
+            Opcode::Mad | Opcode::Lrp | Opcode::Cmp | Opcode::Dp2Add => self.ternary(i, x),
+            Opcode::TexKill => {
+                let d = self.dst(i, x)?;
+                if d.output() {
+                    return Err(malformed(i, "texkill of an output register"));
+                }
+                Ok(Op::TexKill { d })
+            }
+            Opcode::TexLd | Opcode::TexLdP | Opcode::TexLdB | Opcode::TexLdL | Opcode::TexLdD => {
+                self.texture(i, x)
+            }
+            Opcode::Setp => {
+                let d = self.dst(i, x)?;
+                let a = self.src_at(i, x, 0)?;
+                let s1 = self.src_at(i, x, 1)?;
+                let cmp = x
+                    .compare
+                    .ok_or_else(|| malformed(i, "setp without comparison"))?;
+                Ok(Op::Setp { d, a, b: s1, cmp })
+            }
+            Opcode::If | Opcode::Ifc | Opcode::Else | Opcode::EndIf => self.branch(i, x),
+            Opcode::Rep | Opcode::Loop | Opcode::EndRep | Opcode::EndLoop => self.looping(i, x),
+            Opcode::Break | Opcode::BreakC | Opcode::BreakP => self.breaking(i, x),
+            Opcode::Call | Opcode::CallNz | Opcode::Ret | Opcode::Label => self.subroutine(i, x),
+            Opcode::Def | Opcode::DefI | Opcode::DefB | Opcode::Dcl => Err(malformed(
+                i,
+                "declarations belong in Program's lists, not in instructions",
+            )),
+        }
+    }
+
+    /// One source: `mov`, `rcp`, `rsq`, `exp`, `log`, `frc`, `abs`, `nrm`,
+    /// `sincos`, `dsx`, `dsy`.
+    fn unary(&mut self, i: usize, x: &Instruction) -> Result<Op, EmuError> {
+        let d = self.dst(i, x)?;
+        let a = self.src_at(i, x, 0)?;
+        Ok(match x.op {
+            Opcode::Mov => Op::Mov { d, a },
+            Opcode::Rcp => Op::Rcp { d, a },
+            Opcode::Rsq => Op::Rsq { d, a },
+            Opcode::Exp => Op::Exp { d, a },
+            Opcode::Log => Op::Log { d, a },
+            Opcode::Frc => Op::Frc { d, a },
+            Opcode::Abs => Op::Abs { d, a },
+            Opcode::Nrm => Op::Nrm { d, a },
+            Opcode::SinCos => Op::SinCos { d, a },
+            Opcode::Dsx => Op::Dsx {
+                d,
+                a,
+                site: self.site(i, x)?,
+            },
+            _ => Op::Dsy {
+                d,
+                a,
+                site: self.site(i, x)?,
+            },
+        })
+    }
+
+    /// Two sources: `add`, `sub`, `mul`, `dp3`, `dp4`, `min`, `max`, `pow`,
+    /// `crs`.
+    fn binary(&mut self, i: usize, x: &Instruction) -> Result<Op, EmuError> {
+        let d = self.dst(i, x)?;
+        let a = self.src_at(i, x, 0)?;
+        let s1 = self.src_at(i, x, 1)?;
+        Ok(match x.op {
+            Opcode::Add => Op::Add { d, a, b: s1 },
+            Opcode::Sub => Op::Sub { d, a, b: s1 },
+            Opcode::Mul => Op::Mul { d, a, b: s1 },
+            Opcode::Dp3 => Op::Dp3 { d, a, b: s1 },
+            Opcode::Dp4 => Op::Dp4 { d, a, b: s1 },
+            Opcode::Min => Op::Min { d, a, b: s1 },
+            Opcode::Max => Op::Max { d, a, b: s1 },
+            Opcode::Pow => Op::Pow { d, a, b: s1 },
+            _ => Op::Crs { d, a, b: s1 },
+        })
+    }
+
+    /// `m4x4` … `m3x2`: the matrix operand's rows must all exist.
+    fn matrix(&mut self, i: usize, x: &Instruction) -> Result<Op, EmuError> {
+        let (rows, dims) = matrix_rows(x.op).unwrap_or((4, 4));
+        let d = self.dst(i, x)?;
+        let a = self.src_at(i, x, 0)?;
+        let m = operand(i, x, 1)?;
+        if m.relative {
+            return Err(malformed(i, "relative matrix operand"));
+        }
+        let limit = match m.reg.file {
+            RegFile::Temp => TEMPS,
+            RegFile::Const => CONSTS,
+            RegFile::Input => INPUTS,
+            _ => 0,
+        };
+        if m.reg.index + rows as u32 > limit {
+            return Err(malformed(
+                i,
+                format!("matrix rows {}..+{} do not exist", m.reg, rows),
+            ));
+        }
+        let s1 = self.src(i, m)?;
+        Ok(Op::Mat {
+            d,
+            a,
+            b: s1,
+            n: rows,
+            dims,
+        })
+    }
+
+    /// Three sources: `mad`, `lrp`, `cmp`, `dp2add`.
+    fn ternary(&mut self, i: usize, x: &Instruction) -> Result<Op, EmuError> {
+        let d = self.dst(i, x)?;
+        let a = self.src_at(i, x, 0)?;
+        let s1 = self.src_at(i, x, 1)?;
+        let c = self.src_at(i, x, 2)?;
+        Ok(match x.op {
+            Opcode::Mad => Op::Mad { d, a, b: s1, c },
+            Opcode::Lrp => Op::Lrp { d, a, b: s1, c },
+            Opcode::Cmp => Op::Cmp { d, a, b: s1, c },
+            _ => Op::Dp2Add { d, a, b: s1, c },
+        })
+    }
+
+    /// The texld family: a declared sampler, then gradients (`texldd`) or a
+    /// gradient site (all but `texldl`).
+    fn texture(&mut self, i: usize, x: &Instruction) -> Result<Op, EmuError> {
+        let d = self.dst(i, x)?;
+        let a = self.src_at(i, x, 0)?;
+        let sv = operand(i, x, 1)?;
+        if sv.reg.file != RegFile::Sampler || sv.reg.index >= 16 {
+            return Err(malformed(i, "expected a sampler s# as second operand"));
+        }
+        if self.samplers[sv.reg.index as usize].is_none() {
+            return Err(EmuError::MissingSamplerDecl {
+                index: i,
+                sampler: sv.reg.index,
+            });
+        }
+        let s = SamplerOp {
+            index: sv.reg.index as u8,
+            swz: pack_swizzle(sv.swizzle),
+        };
+        match x.op {
+            Opcode::TexLdD => {
+                let dx = self.src_at(i, x, 2)?;
+                let dy = self.src_at(i, x, 3)?;
+                let g =
+                    u16::try_from(self.grads.len()).map_err(|_| malformed(i, "too many texldd"))?;
+                self.grads.push((dx, dy));
+                Ok(Op::TexD { d, a, s, grads: g })
+            }
+            op => {
+                let kind = match op {
+                    Opcode::TexLd => TexKind::Ld,
+                    Opcode::TexLdP => TexKind::LdP,
+                    Opcode::TexLdB => TexKind::LdB,
+                    _ => TexKind::LdL,
+                };
+                let site = if kind == TexKind::LdL {
+                    u16::MAX
+                } else {
+                    self.site(i, x)?
+                };
+                Ok(Op::Tex {
+                    d,
+                    a,
+                    s,
+                    kind,
+                    site,
+                })
+            }
+        }
+    }
+
+    /// `if`, `if_comp`, `else`, `endif`: jumps to the matching instruction.
+    fn branch(&mut self, i: usize, x: &Instruction) -> Result<Op, EmuError> {
+        let ins = self.ins;
+        Ok(match x.op {
+            Opcode::If => Op::If {
+                cond: cond(i, x.src.first())?,
+                target: self.target(i, &[Opcode::Else, Opcode::EndIf], ins)?,
+            },
+            Opcode::Ifc => Op::Ifc {
+                cmp: x
+                    .compare
+                    .ok_or_else(|| malformed(i, "if_comp without comparison"))?,
+                a: self.src_at(i, x, 0)?,
+                b: self.src_at(i, x, 1)?,
+                target: self.target(i, &[Opcode::Else, Opcode::EndIf], ins)?,
+            },
+            Opcode::Else => Op::Else {
+                target: self.target(i, &[Opcode::EndIf], ins)?,
+            },
+            _ => Op::EndIf,
+        })
+    }
+
+    /// `rep`, `loop` and their ends: the loop integers used, the open-loop
+    /// count and the matching instruction.
+    fn looping(&mut self, i: usize, x: &Instruction) -> Result<Op, EmuError> {
+        let ins = self.ins;
+        Ok(match x.op {
+            Opcode::Rep => {
+                self.open_loops += 1;
+                let int = int_reg(i, x.src.first())?;
+                self.rep_ints |= 1 << int;
+                Op::Rep {
+                    int,
+                    end: self.target(i, &[Opcode::EndRep], ins)?,
+                }
+            }
+            Opcode::Loop => {
+                self.open_loops += 1;
+                let int = x
+                    .src
+                    .iter()
+                    .find(|s| s.reg.file == RegFile::ConstInt)
+                    .ok_or_else(|| malformed(i, "loop without i#"))?;
+                let int = int_reg(i, Some(int))?;
+                self.loop_ints |= 1 << int;
+                Op::Loop {
+                    int,
+                    end: self.target(i, &[Opcode::EndLoop], ins)?,
+                }
+            }
+            _ => {
+                self.open_loops = self.open_loops.saturating_sub(1);
+                let want = if x.op == Opcode::EndRep {
+                    Opcode::Rep
+                } else {
+                    Opcode::Loop
+                };
+                let start = self.target(i, &[want], ins)?;
+                if x.op == Opcode::EndRep {
+                    Op::EndRep { start }
+                } else {
+                    Op::EndLoop { start }
+                }
+            }
+        })
+    }
+
+    /// `break`, `break_comp`, `breakp`: only inside a loop.
+    fn breaking(&mut self, i: usize, x: &Instruction) -> Result<Op, EmuError> {
+        if self.open_loops == 0 {
+            return Err(malformed(i, "break outside rep/loop"));
+        }
+        Ok(match x.op {
+            Opcode::Break => Op::Break,
+            Opcode::BreakC => Op::BreakC {
+                cmp: x
+                    .compare
+                    .ok_or_else(|| malformed(i, "break_comp without comparison"))?,
+                a: self.src_at(i, x, 0)?,
+                b: self.src_at(i, x, 1)?,
+            },
+            _ => match cond(i, x.src.first())? {
+                Cond::Pred { chan, not } => Op::BreakP { chan, not },
+                Cond::Bool { .. } => return Err(malformed(i, "breakp needs p0")),
+            },
+        })
+    }
+
+    /// `call`, `callnz`, `ret`, `label` (which closes every lexical loop).
+    fn subroutine(&mut self, i: usize, x: &Instruction) -> Result<Op, EmuError> {
+        Ok(match x.op {
+            Opcode::Call => Op::Call {
+                target: self.label(i, x.src.first())?,
+            },
+            Opcode::CallNz => Op::CallNz {
+                target: self.label(i, x.src.first())?,
+                cond: cond(i, x.src.get(1))?,
+            },
+            Opcode::Ret => Op::Ret,
+            _ => {
+                self.open_loops = 0;
+                Op::Label
+            }
+        })
+    }
 }
 
 fn cond(i: usize, s: Option<&Src>) -> Result<Cond, EmuError> {
@@ -624,6 +1071,28 @@ fn int_reg(i: usize, s: Option<&Src>) -> Result<u8, EmuError> {
     }
 }
 
+/// Declared sampler types by `s#`.
+fn declared_samplers(program: &Program) -> [Option<SamplerType>; 16] {
+    let mut samplers = [None; 16];
+    for d in &program.samplers {
+        if d.index < 16 {
+            samplers[d.index as usize] = Some(d.ty);
+        }
+    }
+    samplers
+}
+
+/// The `v#` declared by `dcl` (bit per register).
+fn declared_inputs(program: &Program) -> u16 {
+    let mut declared = 0u16;
+    for d in &program.inputs {
+        if d.reg.file == RegFile::Input && d.reg.index < INPUTS {
+            declared |= 1 << d.reg.index;
+        }
+    }
+    declared
+}
+
 /// Compiles a validated shader into micro-ops.
 ///
 /// The IR has been validated, so errors here mean the IR and its [`Info`] do
@@ -645,394 +1114,31 @@ pub fn compile(shader: &Shader) -> Result<Compiled, EmuError> {
         return Err(malformed(0, "program too long"));
     }
 
-    // Pass 1: which temps and constants are used (with matrix ranges).
-    let mut usage = Usage::default();
-    for (i, x) in ins.iter().enumerate() {
-        let span = matrix_rows(x.op);
-        for (k, s) in x.src.iter().enumerate() {
-            let count = match span {
-                Some((n, _)) if k == 1 => n as u32,
-                _ => 1,
-            };
-            for r in 0..count {
-                let idx = s.reg.index + r;
-                match s.reg.file {
-                    RegFile::Temp if idx < TEMPS => usage.temps.insert(idx),
-                    RegFile::Const if idx < CONSTS => usage.consts.insert(idx),
-                    RegFile::Temp | RegFile::Const => {
-                        return Err(malformed(i, format!("register {} out of range", s.reg)))
-                    }
-                    _ => false,
-                };
-            }
-        }
-        if let Some(d) = &x.dst {
-            if d.reg.file == RegFile::Temp && d.reg.index < TEMPS {
-                usage.temps.insert(d.reg.index);
-            }
-        }
-    }
-
-    // Row assignment.
-    let mut row: usize = 4; // zero register
-    let mut const_row = [0u16; CONSTS as usize];
-    let mut consts = Vec::new();
-    for &c in &usage.consts {
-        const_row[c as usize] = row as u16;
-        consts.push((row as u16, c));
-        row += 4;
-    }
-    let face = row as u16;
-    row += 4;
-    let reset_start = row;
-    let mut temp_row = [0u16; TEMPS as usize];
-    for &t in &usage.temps {
-        temp_row[t as usize] = row as u16;
-        row += 4;
-    }
-    let output = row as u16;
-    row += 20;
-    let al = row as u16;
-    row += 4;
-    let reset = reset_start..row;
-    let input = row as u16;
-    row += 4 * INPUTS as usize;
-    let pos = row as u16;
-    row += 4;
-    if row > u16::MAX as usize {
-        return Err(malformed(0, "too many registers"));
-    }
-
-    let mut samplers = [None; 16];
-    for d in &program.samplers {
-        if d.index < 16 {
-            samplers[d.index as usize] = Some(d.ty);
-        }
-    }
-    let mut declared_inputs = 0u16;
-    for d in &program.inputs {
-        if d.reg.file == RegFile::Input && d.reg.index < INPUTS {
-            declared_inputs |= 1 << d.reg.index;
-        }
-    }
-
+    let rows = assign_rows(&usage(ins)?)?;
     let mut b = Builder {
         info,
         ins,
-        layout: Layout {
-            rows: row,
-            consts,
-            face,
-            reset,
-            input,
-            pos,
-            output,
-            al,
-        },
-        temp_row,
-        const_row,
+        layout: rows.layout,
+        temp_row: rows.temp_row,
+        const_row: rows.const_row,
         reads_al: false,
         outputs: 0,
-        inputs: declared_inputs,
+        inputs: declared_inputs(program),
+        samplers: declared_samplers(program),
+        grads: Vec::new(),
+        sites: Vec::new(),
+        site_of_span: HashMap::new(),
+        open_loops: 0,
+        rep_ints: 0,
+        loop_ints: 0,
     };
 
-    // Pass 2: ops. A lexical stack of open loops checks `break` placement.
+    // Pass 2: ops, then the end sentinel.
     let mut ops = Vec::with_capacity(n + 1);
-    let mut grads = Vec::new();
-    let mut sites: Vec<GradientSite> = Vec::new();
-    let mut site_of_span: std::collections::HashMap<crate::core::ir::Span, u16> =
-        std::collections::HashMap::new();
-    let mut site = |i: usize, x: &Instruction| -> Result<u16, EmuError> {
-        if let Some(&k) = site_of_span.get(&x.origin.span) {
-            return Ok(k);
-        }
-        let k = u16::try_from(sites.len())
-            .ok()
-            .filter(|&k| k != u16::MAX)
-            .ok_or_else(|| malformed(i, "too many gradient instructions"))?;
-        let sampler = x
-            .src
-            .iter()
-            .find(|s| s.reg.file == RegFile::Sampler)
-            .map(|s| s.reg.index);
-        sites.push(GradientSite {
-            instruction: i,
-            span: x.origin.span,
-            op: x.op,
-            sampler,
-            temp_source: x.src.first().is_some_and(|s| s.reg.file == RegFile::Temp),
-            quads: 0,
-            divergent_quads: 0,
-            executions: 0,
-            divergent_executions: 0,
-            lod: None,
-        });
-        site_of_span.insert(x.origin.span, k);
-        Ok(k)
-    };
-    let mut open_loops = 0u32;
-    let (mut rep_ints, mut loop_ints) = (0u16, 0u16);
     for (i, x) in ins.iter().enumerate() {
         let slots = u8::try_from(info.slots[i])
             .map_err(|_| malformed(i, format!("slot cost {} too large", info.slots[i])))?;
-        let src = |k: usize| {
-            x.src
-                .get(k)
-                .ok_or_else(|| malformed(i, format!("missing source operand {}", k)))
-        };
-        let op = match x.op {
-            Opcode::Nop => Op::Nop,
-            Opcode::Mov
-            | Opcode::Rcp
-            | Opcode::Rsq
-            | Opcode::Exp
-            | Opcode::Log
-            | Opcode::Frc
-            | Opcode::Abs
-            | Opcode::Nrm
-            | Opcode::SinCos
-            | Opcode::Dsx
-            | Opcode::Dsy => {
-                let d = b.dst(i, x)?;
-                let a = b.src(i, src(0)?)?;
-                match x.op {
-                    Opcode::Mov => Op::Mov { d, a },
-                    Opcode::Rcp => Op::Rcp { d, a },
-                    Opcode::Rsq => Op::Rsq { d, a },
-                    Opcode::Exp => Op::Exp { d, a },
-                    Opcode::Log => Op::Log { d, a },
-                    Opcode::Frc => Op::Frc { d, a },
-                    Opcode::Abs => Op::Abs { d, a },
-                    Opcode::Nrm => Op::Nrm { d, a },
-                    Opcode::SinCos => Op::SinCos { d, a },
-                    Opcode::Dsx => Op::Dsx {
-                        d,
-                        a,
-                        site: site(i, x)?,
-                    },
-                    _ => Op::Dsy {
-                        d,
-                        a,
-                        site: site(i, x)?,
-                    },
-                }
-            }
-            Opcode::Add
-            | Opcode::Sub
-            | Opcode::Mul
-            | Opcode::Dp3
-            | Opcode::Dp4
-            | Opcode::Min
-            | Opcode::Max
-            | Opcode::Pow
-            | Opcode::Crs => {
-                let d = b.dst(i, x)?;
-                let a = b.src(i, src(0)?)?;
-                let s1 = b.src(i, src(1)?)?;
-                match x.op {
-                    Opcode::Add => Op::Add { d, a, b: s1 },
-                    Opcode::Sub => Op::Sub { d, a, b: s1 },
-                    Opcode::Mul => Op::Mul { d, a, b: s1 },
-                    Opcode::Dp3 => Op::Dp3 { d, a, b: s1 },
-                    Opcode::Dp4 => Op::Dp4 { d, a, b: s1 },
-                    Opcode::Min => Op::Min { d, a, b: s1 },
-                    Opcode::Max => Op::Max { d, a, b: s1 },
-                    Opcode::Pow => Op::Pow { d, a, b: s1 },
-                    _ => Op::Crs { d, a, b: s1 },
-                }
-            }
-            Opcode::M4x4 | Opcode::M4x3 | Opcode::M3x4 | Opcode::M3x3 | Opcode::M3x2 => {
-                let (rows, dims) = matrix_rows(x.op).unwrap_or((4, 4));
-                let d = b.dst(i, x)?;
-                let a = b.src(i, src(0)?)?;
-                let m = src(1)?;
-                if m.relative {
-                    return Err(malformed(i, "relative matrix operand"));
-                }
-                let limit = match m.reg.file {
-                    RegFile::Temp => TEMPS,
-                    RegFile::Const => CONSTS,
-                    RegFile::Input => INPUTS,
-                    _ => 0,
-                };
-                if m.reg.index + rows as u32 > limit {
-                    return Err(malformed(
-                        i,
-                        format!("matrix rows {}..+{} do not exist", m.reg, rows),
-                    ));
-                }
-                let s1 = b.src(i, m)?;
-                Op::Mat {
-                    d,
-                    a,
-                    b: s1,
-                    n: rows,
-                    dims,
-                }
-            }
-            Opcode::Mad | Opcode::Lrp | Opcode::Cmp | Opcode::Dp2Add => {
-                let d = b.dst(i, x)?;
-                let a = b.src(i, src(0)?)?;
-                let s1 = b.src(i, src(1)?)?;
-                let c = b.src(i, src(2)?)?;
-                match x.op {
-                    Opcode::Mad => Op::Mad { d, a, b: s1, c },
-                    Opcode::Lrp => Op::Lrp { d, a, b: s1, c },
-                    Opcode::Cmp => Op::Cmp { d, a, b: s1, c },
-                    _ => Op::Dp2Add { d, a, b: s1, c },
-                }
-            }
-            Opcode::TexKill => {
-                let d = b.dst(i, x)?;
-                if d.output() {
-                    return Err(malformed(i, "texkill of an output register"));
-                }
-                Op::TexKill { d }
-            }
-            Opcode::TexLd | Opcode::TexLdP | Opcode::TexLdB | Opcode::TexLdL | Opcode::TexLdD => {
-                let d = b.dst(i, x)?;
-                let a = b.src(i, src(0)?)?;
-                let sv = src(1)?;
-                if sv.reg.file != RegFile::Sampler || sv.reg.index >= 16 {
-                    return Err(malformed(i, "expected a sampler s# as second operand"));
-                }
-                if samplers[sv.reg.index as usize].is_none() {
-                    return Err(EmuError::MissingSamplerDecl {
-                        index: i,
-                        sampler: sv.reg.index,
-                    });
-                }
-                let s = SamplerOp {
-                    index: sv.reg.index as u8,
-                    swz: pack_swizzle(sv.swizzle),
-                };
-                match x.op {
-                    Opcode::TexLdD => {
-                        let dx = b.src(i, src(2)?)?;
-                        let dy = b.src(i, src(3)?)?;
-                        let g = u16::try_from(grads.len())
-                            .map_err(|_| malformed(i, "too many texldd"))?;
-                        grads.push((dx, dy));
-                        Op::TexD { d, a, s, grads: g }
-                    }
-                    op => {
-                        let kind = match op {
-                            Opcode::TexLd => TexKind::Ld,
-                            Opcode::TexLdP => TexKind::LdP,
-                            Opcode::TexLdB => TexKind::LdB,
-                            _ => TexKind::LdL,
-                        };
-                        let site = if kind == TexKind::LdL {
-                            u16::MAX
-                        } else {
-                            site(i, x)?
-                        };
-                        Op::Tex {
-                            d,
-                            a,
-                            s,
-                            kind,
-                            site,
-                        }
-                    }
-                }
-            }
-            Opcode::Setp => {
-                let d = b.dst(i, x)?;
-                let a = b.src(i, src(0)?)?;
-                let s1 = b.src(i, src(1)?)?;
-                let cmp = x
-                    .compare
-                    .ok_or_else(|| malformed(i, "setp without comparison"))?;
-                Op::Setp { d, a, b: s1, cmp }
-            }
-            Opcode::If => Op::If {
-                cond: cond(i, x.src.first())?,
-                target: b.target(i, &[Opcode::Else, Opcode::EndIf], ins)?,
-            },
-            Opcode::Ifc => Op::Ifc {
-                cmp: x
-                    .compare
-                    .ok_or_else(|| malformed(i, "if_comp without comparison"))?,
-                a: b.src(i, src(0)?)?,
-                b: b.src(i, src(1)?)?,
-                target: b.target(i, &[Opcode::Else, Opcode::EndIf], ins)?,
-            },
-            Opcode::Else => Op::Else {
-                target: b.target(i, &[Opcode::EndIf], ins)?,
-            },
-            Opcode::EndIf => Op::EndIf,
-            Opcode::Rep => {
-                open_loops += 1;
-                let int = int_reg(i, x.src.first())?;
-                rep_ints |= 1 << int;
-                Op::Rep {
-                    int,
-                    end: b.target(i, &[Opcode::EndRep], ins)?,
-                }
-            }
-            Opcode::Loop => {
-                open_loops += 1;
-                let int = x
-                    .src
-                    .iter()
-                    .find(|s| s.reg.file == RegFile::ConstInt)
-                    .ok_or_else(|| malformed(i, "loop without i#"))?;
-                let int = int_reg(i, Some(int))?;
-                loop_ints |= 1 << int;
-                Op::Loop {
-                    int,
-                    end: b.target(i, &[Opcode::EndLoop], ins)?,
-                }
-            }
-            Opcode::EndRep | Opcode::EndLoop => {
-                open_loops = open_loops.saturating_sub(1);
-                let want = if x.op == Opcode::EndRep {
-                    Opcode::Rep
-                } else {
-                    Opcode::Loop
-                };
-                let start = b.target(i, &[want], ins)?;
-                if x.op == Opcode::EndRep {
-                    Op::EndRep { start }
-                } else {
-                    Op::EndLoop { start }
-                }
-            }
-            Opcode::Break | Opcode::BreakC | Opcode::BreakP if open_loops == 0 => {
-                return Err(malformed(i, "break outside rep/loop"))
-            }
-            Opcode::Break => Op::Break,
-            Opcode::BreakC => Op::BreakC {
-                cmp: x
-                    .compare
-                    .ok_or_else(|| malformed(i, "break_comp without comparison"))?,
-                a: b.src(i, src(0)?)?,
-                b: b.src(i, src(1)?)?,
-            },
-            Opcode::BreakP => match cond(i, x.src.first())? {
-                Cond::Pred { chan, not } => Op::BreakP { chan, not },
-                Cond::Bool { .. } => return Err(malformed(i, "breakp needs p0")),
-            },
-            Opcode::Call => Op::Call {
-                target: b.label(i, x.src.first())?,
-            },
-            Opcode::CallNz => Op::CallNz {
-                target: b.label(i, x.src.first())?,
-                cond: cond(i, x.src.get(1))?,
-            },
-            Opcode::Ret => Op::Ret,
-            Opcode::Label => {
-                open_loops = 0;
-                Op::Label
-            }
-            Opcode::Def | Opcode::DefI | Opcode::DefB | Opcode::Dcl => {
-                return Err(malformed(
-                    i,
-                    "declarations belong in Program's lists, not in instructions",
-                ))
-            }
-        };
+        let op = b.op(i, x)?;
         ops.push(MicroOp { op, slots });
     }
     ops.push(MicroOp {
@@ -1061,17 +1167,17 @@ pub fn compile(shader: &Shader) -> Result<Compiled, EmuError> {
 
     Ok(Compiled {
         ops,
-        grads,
-        sites,
+        grads: b.grads,
+        sites: b.sites,
         layout: b.layout,
         float_defs,
         int_defs,
         bool_defs,
-        samplers,
+        samplers: b.samplers,
         inputs: b.inputs,
         reads_al: b.reads_al,
         outputs: b.outputs,
-        rep_ints,
-        loop_ints,
+        rep_ints: b.rep_ints,
+        loop_ints: b.loop_ints,
     })
 }

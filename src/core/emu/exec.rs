@@ -1,8 +1,9 @@
 //! The batch executor: one decode per op for [`LANES`] pixels, with per-lane
 //! execution masks for divergent flow control and per-lane slot counting.
 //!
-//! This file holds the worker state, the dispatch loop and flow control; the
-//! arithmetic and texture handlers are in `arith.rs`.
+//! This file holds the worker state, the dispatch loop (one match arm per
+//! op, each a call to its handler) and flow control; the arithmetic handlers
+//! are in `arith.rs`, the texture ones in `texop.rs`.
 //!
 //! Masks are `u64` bit sets, bit `l` = lane `l`:
 //! * `live`: lanes of quads that touch the target that have not finished
@@ -26,9 +27,11 @@
 // clearer than zipped iterators and vectorises the same.
 #![allow(clippy::needless_range_loop)]
 
-use super::compile::{Cond, Op};
+use super::compile::{Cond, DstOp, Op, Pc, SamplerOp, SrcOp};
+use super::math;
 use super::quad::{quads_all, quads_any, SiteBatch};
 use super::{EmuError, RunCtx, LANES};
+use crate::core::isa::Compare;
 
 /// A flow-control construct in progress.
 #[derive(Clone, Copy, Debug)]
@@ -435,9 +438,11 @@ impl<'c, 'a> Worker<'c, 'a> {
 
     // ----- the dispatch loop ----------------------------------------------
 
+    /// Runs the ops from pc 0 until main ends: one match per op, each arm a
+    /// handler of its family (arithmetic in `arith.rs`, texture in
+    /// `texop.rs`, flow control below).
     fn execute(&mut self, out: &mut BatchOut) -> Result<(), EmuError> {
-        let ctx = self.ctx;
-        let ops = &ctx.compiled.ops[..];
+        let ops = &self.ctx.compiled.ops[..];
         let mut pc = 0usize;
         loop {
             let Some(&m) = ops.get(pc) else {
@@ -447,159 +452,46 @@ impl<'c, 'a> Worker<'c, 'a> {
             pc += 1;
             let s = m.slots;
             match m.op {
+                // ----- arithmetic ------------------------------------------
                 Op::Nop => {
                     self.begin(s);
                 }
-                Op::Mov { d, a } => {
-                    if self.begin(s) {
-                        self.map1(d, a, |x| x)
-                    }
-                }
-                Op::Add { d, a, b } => {
-                    if self.begin(s) {
-                        self.map2(d, a, b, |x, y| x + y)
-                    }
-                }
-                Op::Sub { d, a, b } => {
-                    if self.begin(s) {
-                        self.map2(d, a, b, |x, y| x - y)
-                    }
-                }
-                Op::Mul { d, a, b } => {
-                    if self.begin(s) {
-                        self.map2(d, a, b, |x, y| x * y)
-                    }
-                }
-                Op::Mad { d, a, b, c } => {
-                    if self.begin(s) {
-                        self.map3(d, a, b, c, super::math::mad)
-                    }
-                }
-                Op::Min { d, a, b } => {
-                    if self.begin(s) {
-                        self.map2(d, a, b, super::math::min)
-                    }
-                }
-                Op::Max { d, a, b } => {
-                    if self.begin(s) {
-                        self.map2(d, a, b, super::math::max)
-                    }
-                }
-                Op::Lrp { d, a, b, c } => {
-                    if self.begin(s) {
-                        self.map3(d, a, b, c, super::math::lrp)
-                    }
-                }
-                Op::Cmp { d, a, b, c } => {
-                    if self.begin(s) {
-                        self.map3(d, a, b, c, super::math::cmp)
-                    }
-                }
-                Op::Frc { d, a } => {
-                    if self.begin(s) {
-                        self.map1(d, a, super::math::frc)
-                    }
-                }
-                Op::Abs { d, a } => {
-                    if self.begin(s) {
-                        self.map1(d, a, f32::abs)
-                    }
-                }
-                Op::Rcp { d, a } => {
-                    if self.begin(s) {
-                        self.scalar1(d, a, super::math::rcp)
-                    }
-                }
-                Op::Rsq { d, a } => {
-                    if self.begin(s) {
-                        self.scalar1(d, a, super::math::rsq)
-                    }
-                }
-                Op::Exp { d, a } => {
-                    if self.begin(s) {
-                        self.scalar1(d, a, super::math::exp)
-                    }
-                }
-                Op::Log { d, a } => {
-                    if self.begin(s) {
-                        self.scalar1(d, a, super::math::log)
-                    }
-                }
-                Op::Pow { d, a, b } => {
-                    if self.begin(s) {
-                        self.pow(d, a, b)
-                    }
-                }
-                Op::Dp3 { d, a, b } => {
-                    if self.begin(s) {
-                        self.dot::<3>(d, a, b, 0);
-                        self.store::<true>(d, d.mask());
-                    }
-                }
-                Op::Dp4 { d, a, b } => {
-                    if self.begin(s) {
-                        self.dot::<4>(d, a, b, 0);
-                        self.store::<true>(d, d.mask());
-                    }
-                }
-                Op::Dp2Add { d, a, b, c } => {
-                    if self.begin(s) {
-                        self.dp2add(d, a, b, c)
-                    }
-                }
-                Op::Mat { d, a, b, n, dims } => {
-                    if self.begin(s) {
-                        self.matrix(d, a, b, n, dims)
-                    }
-                }
-                Op::Crs { d, a, b } => {
-                    if self.begin(s) {
-                        self.crs(d, a, b)
-                    }
-                }
-                Op::Nrm { d, a } => {
-                    if self.begin(s) {
-                        self.nrm(d, a)
-                    }
-                }
-                Op::SinCos { d, a } => {
-                    if self.begin(s) {
-                        self.sincos(d, a)
-                    }
-                }
-                Op::Dsx { d, a, site } => {
-                    if self.begin(s) {
-                        self.note_site(site);
-                        self.deriv(d, a, 1)
-                    }
-                }
-                Op::Dsy { d, a, site } => {
-                    if self.begin(s) {
-                        self.note_site(site);
-                        self.deriv(d, a, 2)
-                    }
-                }
-                Op::Setp { d, a, b, cmp } => {
-                    if self.begin(s) {
-                        self.setp(d, a, b, cmp)
-                    }
-                }
-                Op::TexKill { d } => {
-                    if self.begin(s) {
-                        self.killed |= self.texkill(d);
-                    }
-                }
+                Op::Mov { d, a } => self.when_any(s, |w| w.map1(d, a, |x| x)),
+                Op::Add { d, a, b } => self.when_any(s, |w| w.map2(d, a, b, |x, y| x + y)),
+                Op::Sub { d, a, b } => self.when_any(s, |w| w.map2(d, a, b, |x, y| x - y)),
+                Op::Mul { d, a, b } => self.when_any(s, |w| w.map2(d, a, b, |x, y| x * y)),
+                Op::Mad { d, a, b, c } => self.when_any(s, |w| w.map3(d, a, b, c, math::mad)),
+                Op::Min { d, a, b } => self.when_any(s, |w| w.map2(d, a, b, math::min)),
+                Op::Max { d, a, b } => self.when_any(s, |w| w.map2(d, a, b, math::max)),
+                Op::Lrp { d, a, b, c } => self.when_any(s, |w| w.map3(d, a, b, c, math::lrp)),
+                Op::Cmp { d, a, b, c } => self.when_any(s, |w| w.map3(d, a, b, c, math::cmp)),
+                Op::Frc { d, a } => self.when_any(s, |w| w.map1(d, a, math::frc)),
+                Op::Abs { d, a } => self.when_any(s, |w| w.map1(d, a, f32::abs)),
+                Op::Rcp { d, a } => self.when_any(s, |w| w.scalar1(d, a, math::rcp)),
+                Op::Rsq { d, a } => self.when_any(s, |w| w.scalar1(d, a, math::rsq)),
+                Op::Exp { d, a } => self.when_any(s, |w| w.scalar1(d, a, math::exp)),
+                Op::Log { d, a } => self.when_any(s, |w| w.scalar1(d, a, math::log)),
+                Op::Pow { d, a, b } => self.when_any(s, |w| w.pow(d, a, b)),
+                Op::Dp3 { d, a, b } => self.when_any(s, |w| w.dp::<3>(d, a, b)),
+                Op::Dp4 { d, a, b } => self.when_any(s, |w| w.dp::<4>(d, a, b)),
+                Op::Dp2Add { d, a, b, c } => self.when_any(s, |w| w.dp2add(d, a, b, c)),
+                Op::Mat { d, a, b, n, dims } => self.when_any(s, |w| w.matrix(d, a, b, n, dims)),
+                Op::Crs { d, a, b } => self.when_any(s, |w| w.crs(d, a, b)),
+                Op::Nrm { d, a } => self.when_any(s, |w| w.nrm(d, a)),
+                Op::SinCos { d, a } => self.when_any(s, |w| w.sincos(d, a)),
+                Op::Dsx { d, a, site } => self.when_any(s, |w| w.derivative(d, a, site, 1)),
+                Op::Dsy { d, a, site } => self.when_any(s, |w| w.derivative(d, a, site, 2)),
+                Op::Setp { d, a, b, cmp } => self.when_any(s, |w| w.setp(d, a, b, cmp)),
+                Op::TexKill { d } => self.when_any(s, |w| w.killed |= w.texkill(d)),
+
+                // ----- texture ---------------------------------------------
                 Op::Tex {
                     d,
                     a,
                     s: smp,
                     kind,
                     site,
-                } => {
-                    if self.begin(s) {
-                        self.texld(d, a, smp, kind, site)
-                    }
-                }
+                } => self.when_any(s, |w| w.texld(d, a, smp, kind, site)),
                 Op::TexD {
                     d,
                     a,
@@ -607,158 +499,36 @@ impl<'c, 'a> Worker<'c, 'a> {
                     grads,
                 } => {
                     if self.begin(s) {
-                        let Some(&(gx, gy)) = ctx.compiled.grads.get(grads as usize) else {
-                            return Err(malformed(at, "texldd gradients missing"));
-                        };
-                        self.texldd(d, a, smp, gx, gy)
+                        self.texldd_at(at, d, a, smp, grads)?
                     }
                 }
 
-                // ----- if / else / endif ----------------------------------
-                Op::If { cond, target } => {
-                    let entry = self.exec;
-                    let taken = entry & self.cond_mask(cond);
-                    pc = self.enter_if(entry, taken, s, pc, target.get());
-                }
-                Op::Ifc { cmp, a, b, target } => {
-                    let entry = self.exec;
-                    let taken = if entry == 0 {
-                        0
-                    } else {
-                        entry & self.compare(cmp, a, b)
-                    };
-                    pc = self.enter_if(entry, taken, s, pc, target.get());
-                }
-                Op::Else { target } => {
-                    // Both sides pay `else`, as the cost model charges it:
-                    // then-side lanes as they reach it, else-side lanes as
-                    // they enter their branch (so a lane that later breaks
-                    // out of the else-side has paid it, and a lane that
-                    // broke out of the then-side has not).
-                    let Some(Frame::If { pending }) = self.stack.last_mut() else {
-                        return Err(malformed(at, "else without if"));
-                    };
-                    let other = *pending;
-                    *pending = self.exec;
-                    let then_side = self.exec;
-                    self.exec = other;
-                    self.charge(then_side | other, s);
-                    if self.exec == 0 {
-                        pc = target.get();
-                    }
-                }
-                Op::EndIf => {
-                    let Some(Frame::If { pending }) = self.stack.pop() else {
-                        return Err(malformed(at, "endif without if"));
-                    };
-                    self.exec |= pending;
-                    self.charge(self.exec, s);
-                }
-
-                // ----- rep / loop ------------------------------------------
-                Op::Rep { int, end } | Op::Loop { int, end } => {
-                    let entry = self.exec;
-                    if entry == 0 {
-                        pc = end.get() + 1;
-                        continue;
-                    }
-                    self.charge(entry, s);
-                    // Checked at draw setup: count and start 0..=255, step
-                    // -128..=127.
-                    let i = ctx.ints[int as usize & 15];
-                    if i[0] <= 0 {
-                        pc = end.get() + 1;
-                        continue;
-                    }
-                    let is_loop = matches!(m.op, Op::Loop { .. });
-                    self.stack.push(Frame::Loop {
-                        broken: 0,
-                        remaining: (i[0] - 1) as u32,
-                        step: if is_loop { i[2] } else { 0 },
-                        prev_al: self.al,
-                        end: end.get() as u32,
-                    });
-                    if is_loop {
-                        self.set_al(i[1]);
-                    }
-                }
+                // ----- flow control ----------------------------------------
+                Op::If { cond, target } => pc = self.if_cond(cond, s, pc, target),
+                Op::Ifc { cmp, a, b, target } => pc = self.if_compare(cmp, a, b, s, pc, target),
+                Op::Else { target } => pc = self.else_side(target, s, pc, at)?,
+                Op::EndIf => self.end_if(s, at)?,
+                Op::Rep { int, end } => pc = self.enter_loop(int, end, false, s, pc),
+                Op::Loop { int, end } => pc = self.enter_loop(int, end, true, s, pc),
                 Op::EndRep { start } | Op::EndLoop { start } => {
-                    let Some(&Frame::Loop {
-                        broken,
-                        remaining,
-                        step,
-                        prev_al,
-                        ..
-                    }) = self.stack.last()
-                    else {
-                        return Err(malformed(at, "endrep/endloop without rep/loop"));
-                    };
-                    self.charge(self.exec, s);
-                    if remaining > 0 && self.exec != 0 {
-                        self.check_limit(false)?;
-                        if let Some(Frame::Loop { remaining, .. }) = self.stack.last_mut() {
-                            *remaining -= 1;
-                        }
-                        if step != 0 {
-                            self.set_al(self.al.wrapping_add(step));
-                        }
-                        let head = ops
-                            .get(start.get())
-                            .ok_or_else(|| malformed(at, "loop start out of range"))?;
-                        self.charge(self.exec, head.slots);
-                        pc = start.get() + 1;
-                    } else {
-                        self.stack.pop();
-                        self.exec |= broken;
-                        if self.al != prev_al {
-                            self.set_al(prev_al);
-                        }
-                    }
+                    pc = self.end_loop(start, s, pc, at)?
                 }
-                Op::Break => {
-                    if self.begin(s) {
-                        pc = self.leave_loop(self.exec, pc, at)?;
-                    }
-                }
+                Op::Break => pc = self.break_when(s, pc, at, |_| !0)?,
                 Op::BreakC { cmp, a, b } => {
-                    if self.begin(s) {
-                        let leaving = self.exec & self.compare(cmp, a, b);
-                        pc = self.leave_loop(leaving, pc, at)?;
-                    }
+                    pc = self.break_when(s, pc, at, |w| w.compare(cmp, a, b))?
                 }
                 Op::BreakP { chan, not } => {
-                    if self.begin(s) {
-                        let leaving = self.exec & self.cond_mask(Cond::Pred { chan, not });
-                        pc = self.leave_loop(leaving, pc, at)?;
-                    }
+                    pc = self.break_when(s, pc, at, |w| w.cond_mask(Cond::Pred { chan, not }))?
                 }
-
-                // ----- call / ret / label ----------------------------------
-                Op::Call { target } => {
-                    if self.begin(s) {
-                        pc = self.call(self.exec, pc, at, target.get())?;
-                    }
-                }
+                Op::Call { target } => pc = self.call_when(!0, target, s, pc, at)?,
                 Op::CallNz { cond, target } => {
-                    if self.begin(s) {
-                        let calling = self.exec & self.cond_mask(cond);
-                        if calling != 0 {
-                            pc = self.call(calling, pc, at, target.get())?;
-                        }
-                    }
+                    pc = self.call_when(self.cond_mask(cond), target, s, pc, at)?
                 }
                 Op::Ret => {
-                    if self.calls == 0 {
-                        // ret in main ends the shader for these lanes.
-                        self.charge(self.exec, s);
-                        self.retire(self.exec, out);
-                        if self.live == 0 {
-                            return Ok(());
-                        }
-                    } else {
-                        self.charge(self.exec, s);
-                        pc = self.ret(pc, false)?;
-                    }
+                    let Some(next) = self.ret_op(s, pc, out)? else {
+                        return Ok(());
+                    };
+                    pc = next;
                 }
                 Op::Label => {
                     // Falling into a label (or off the end): the function ends.
@@ -769,6 +539,62 @@ impl<'c, 'a> Worker<'c, 'a> {
                 }
             }
         }
+    }
+
+    /// Runs `f` when some lane executes the op, after charging them its
+    /// slots.
+    #[inline(always)]
+    fn when_any(&mut self, slots: u8, f: impl FnOnce(&mut Self)) {
+        if self.begin(slots) {
+            f(self)
+        }
+    }
+
+    /// `texldd` with the gradient sources of entry `grads`.
+    #[inline(always)]
+    fn texldd_at(
+        &mut self,
+        at: usize,
+        d: DstOp,
+        a: SrcOp,
+        smp: SamplerOp,
+        grads: u16,
+    ) -> Result<(), EmuError> {
+        let Some(&(gx, gy)) = self.ctx.compiled.grads.get(grads as usize) else {
+            return Err(malformed(at, "texldd gradients missing"));
+        };
+        self.texldd(d, a, smp, gx, gy);
+        Ok(())
+    }
+
+    // ----- if / else / endif ----------------------------------------------
+
+    /// `if b#` / `if p0.c`; returns the next pc.
+    #[inline(always)]
+    fn if_cond(&mut self, cond: Cond, slots: u8, pc: usize, target: Pc) -> usize {
+        let entry = self.exec;
+        let taken = entry & self.cond_mask(cond);
+        self.enter_if(entry, taken, slots, pc, target.get())
+    }
+
+    /// `if_comp a, b`; returns the next pc.
+    #[inline(always)]
+    fn if_compare(
+        &mut self,
+        cmp: Compare,
+        a: SrcOp,
+        b: SrcOp,
+        slots: u8,
+        pc: usize,
+        target: Pc,
+    ) -> usize {
+        let entry = self.exec;
+        let taken = if entry == 0 {
+            0
+        } else {
+            entry & self.compare(cmp, a, b)
+        };
+        self.enter_if(entry, taken, slots, pc, target.get())
     }
 
     /// Enters an if whose entry lanes are `entry` and whose taken lanes are
@@ -785,6 +611,134 @@ impl<'c, 'a> Worker<'c, 'a> {
         } else {
             pc
         }
+    }
+
+    /// `else`: the lanes waiting in the if run now, the then-side waits;
+    /// returns the next pc (`target`, the `endif`, when nobody runs the else
+    /// side).
+    #[inline(always)]
+    fn else_side(
+        &mut self,
+        target: Pc,
+        slots: u8,
+        pc: usize,
+        at: usize,
+    ) -> Result<usize, EmuError> {
+        // Both sides pay `else`, as the cost model charges it:
+        // then-side lanes as they reach it, else-side lanes as
+        // they enter their branch (so a lane that later breaks
+        // out of the else-side has paid it, and a lane that
+        // broke out of the then-side has not).
+        let Some(Frame::If { pending }) = self.stack.last_mut() else {
+            return Err(malformed(at, "else without if"));
+        };
+        let other = *pending;
+        *pending = self.exec;
+        let then_side = self.exec;
+        self.exec = other;
+        self.charge(then_side | other, slots);
+        Ok(if self.exec == 0 { target.get() } else { pc })
+    }
+
+    /// `endif`: both sides run on together.
+    #[inline(always)]
+    fn end_if(&mut self, slots: u8, at: usize) -> Result<(), EmuError> {
+        let Some(Frame::If { pending }) = self.stack.pop() else {
+            return Err(malformed(at, "endif without if"));
+        };
+        self.exec |= pending;
+        self.charge(self.exec, slots);
+        Ok(())
+    }
+
+    // ----- rep / loop / break ---------------------------------------------
+
+    /// `rep i#` / `loop aL, i#` (`is_loop`): pushes the loop's frame, or
+    /// skips past `end` when no lane enters or the count is not positive;
+    /// returns the next pc.
+    #[inline(always)]
+    fn enter_loop(&mut self, int: u8, end: Pc, is_loop: bool, slots: u8, pc: usize) -> usize {
+        let entry = self.exec;
+        if entry == 0 {
+            return end.get() + 1;
+        }
+        self.charge(entry, slots);
+        // Checked at draw setup: count and start 0..=255, step
+        // -128..=127.
+        let i = self.ctx.ints[int as usize & 15];
+        if i[0] <= 0 {
+            return end.get() + 1;
+        }
+        self.stack.push(Frame::Loop {
+            broken: 0,
+            remaining: (i[0] - 1) as u32,
+            step: if is_loop { i[2] } else { 0 },
+            prev_al: self.al,
+            end: end.get() as u32,
+        });
+        if is_loop {
+            self.set_al(i[1]);
+        }
+        pc
+    }
+
+    /// `endrep` / `endloop`: back to the op after `start` (paying the
+    /// `rep`/`loop` again) while iterations remain and some lane runs, else
+    /// out of the loop with the lanes that broke; returns the next pc.
+    #[inline(always)]
+    fn end_loop(&mut self, start: Pc, slots: u8, pc: usize, at: usize) -> Result<usize, EmuError> {
+        let Some(&Frame::Loop {
+            broken,
+            remaining,
+            step,
+            prev_al,
+            ..
+        }) = self.stack.last()
+        else {
+            return Err(malformed(at, "endrep/endloop without rep/loop"));
+        };
+        self.charge(self.exec, slots);
+        if remaining > 0 && self.exec != 0 {
+            self.check_limit(false)?;
+            if let Some(Frame::Loop { remaining, .. }) = self.stack.last_mut() {
+                *remaining -= 1;
+            }
+            if step != 0 {
+                self.set_al(self.al.wrapping_add(step));
+            }
+            let head = self
+                .ctx
+                .compiled
+                .ops
+                .get(start.get())
+                .ok_or_else(|| malformed(at, "loop start out of range"))?;
+            self.charge(self.exec, head.slots);
+            Ok(start.get() + 1)
+        } else {
+            self.stack.pop();
+            self.exec |= broken;
+            if self.al != prev_al {
+                self.set_al(prev_al);
+            }
+            Ok(pc)
+        }
+    }
+
+    /// `break`, `break_comp`, `breakp`: the executing lanes of
+    /// `leaving(self)` leave the innermost loop; returns the next pc.
+    #[inline(always)]
+    fn break_when(
+        &mut self,
+        slots: u8,
+        pc: usize,
+        at: usize,
+        leaving: impl FnOnce(&Self) -> u64,
+    ) -> Result<usize, EmuError> {
+        if !self.begin(slots) {
+            return Ok(pc);
+        }
+        let leaving = self.exec & leaving(self);
+        self.leave_loop(leaving, pc, at)
     }
 
     /// Moves `leaving` lanes out of the innermost loop; returns the next pc
@@ -821,6 +775,48 @@ impl<'c, 'a> Worker<'c, 'a> {
             return Ok(end);
         }
         Ok(pc)
+    }
+
+    // ----- call / ret ------------------------------------------------------
+
+    /// `call` (`cond` all lanes) / `callnz`: the executing lanes of `cond`
+    /// call `target`; returns the next pc.
+    #[inline(always)]
+    fn call_when(
+        &mut self,
+        cond: u64,
+        target: Pc,
+        slots: u8,
+        pc: usize,
+        at: usize,
+    ) -> Result<usize, EmuError> {
+        if !self.begin(slots) {
+            return Ok(pc);
+        }
+        let calling = self.exec & cond;
+        if calling == 0 {
+            return Ok(pc);
+        }
+        self.call(calling, pc, at, target.get())
+    }
+
+    /// `ret`: in main the executing lanes finish (`None` once no lane is
+    /// live), in a subroutine they return; returns the next pc.
+    #[inline(always)]
+    fn ret_op(
+        &mut self,
+        slots: u8,
+        pc: usize,
+        out: &mut BatchOut,
+    ) -> Result<Option<usize>, EmuError> {
+        self.charge(self.exec, slots);
+        if self.calls == 0 {
+            // ret in main ends the shader for these lanes.
+            self.retire(self.exec, out);
+            Ok((self.live != 0).then_some(pc))
+        } else {
+            self.ret(pc, false).map(Some)
+        }
     }
 
     fn call(

@@ -630,33 +630,7 @@ impl<'c, 'a> RunCtx<'c, 'a> {
         for &(i, v) in &compiled.float_defs {
             floats[i as usize] = v;
         }
-        let mut ints = [[0i32; 4]; 16];
-        ints[..c.int.len()].copy_from_slice(&c.int);
-        for &(i, v) in &compiled.int_defs {
-            ints[i as usize] = v;
-        }
-        for i in 0..16u32 {
-            let v = ints[i as usize];
-            let problem = if compiled.rep_ints & (1 << i) != 0 || compiled.loop_ints & (1 << i) != 0
-            {
-                crate::core::cost::int_constant_problem(
-                    if compiled.loop_ints & (1 << i) != 0 {
-                        crate::core::isa::Opcode::Loop
-                    } else {
-                        crate::core::isa::Opcode::Rep
-                    },
-                    v,
-                )
-            } else {
-                None
-            };
-            if let Some(reason) = problem {
-                return Err(EmuError::InvalidIntConstant {
-                    register: i,
-                    reason,
-                });
-            }
-        }
+        let ints = int_constants(compiled, c)?;
         let mut bools = 0u16;
         for (i, &b) in c.bool.iter().enumerate() {
             bools |= (b as u16) << i;
@@ -670,46 +644,8 @@ impl<'c, 'a> RunCtx<'c, 'a> {
             .iter()
             .map(|&(_, c)| floats[c as usize])
             .collect();
-
-        let mut inputs = [None; 10];
-        for &(v, value) in &draw.inputs {
-            if v >= 10 || compiled.inputs & (1 << v) == 0 {
-                return Err(EmuError::InputNotDeclared { input: v });
-            }
-            if inputs[v as usize].replace(value).is_some() {
-                return Err(EmuError::DuplicateBinding {
-                    what: "v",
-                    index: v,
-                });
-            }
-        }
-        for v in 0..10u32 {
-            if compiled.inputs & (1 << v) != 0 && inputs[v as usize].is_none() {
-                return Err(EmuError::MissingInput { input: v });
-            }
-        }
-
-        let mut samplers: [Option<Sampler<'a>>; 16] = std::array::from_fn(|_| None);
-        for (s, tex, state) in &draw.samplers {
-            let ty = match compiled.samplers.get(*s as usize).copied().flatten() {
-                Some(ty) => ty,
-                None => return Err(EmuError::SamplerNotDeclared { sampler: *s }),
-            };
-            if ty != SamplerType::Tex2d {
-                return Err(EmuError::UnsupportedSampler { sampler: *s, ty });
-            }
-            let sm = Sampler::new(tex, state).map_err(|reason| EmuError::InvalidTexture {
-                sampler: *s,
-                reason,
-            })?;
-            if samplers[*s as usize].replace(sm).is_some() {
-                return Err(EmuError::DuplicateBinding {
-                    what: "s",
-                    index: *s,
-                });
-            }
-        }
-
+        let inputs = bind_inputs(compiled, draw)?;
+        let samplers = bind_samplers(compiled, draw)?;
         let quads_x = w.div_ceil(2);
         Ok(RunCtx {
             compiled,
@@ -741,6 +677,88 @@ impl<'c, 'a> RunCtx<'c, 'a> {
         let y = 2 * qy + ((lane >> 1) & 1) as u64;
         (x, y, quad < self.quads && x < self.width && y < self.height)
     }
+}
+
+/// The integer constants (the draw's, then `defi`), each one a rep or loop
+/// uses checked for its range.
+fn int_constants(compiled: &Compiled, c: &Constants) -> Result<[[i32; 4]; 16], EmuError> {
+    let mut ints = [[0i32; 4]; 16];
+    ints[..c.int.len()].copy_from_slice(&c.int);
+    for &(i, v) in &compiled.int_defs {
+        ints[i as usize] = v;
+    }
+    for i in 0..16u32 {
+        let v = ints[i as usize];
+        let problem = if compiled.rep_ints & (1 << i) != 0 || compiled.loop_ints & (1 << i) != 0 {
+            crate::core::cost::int_constant_problem(
+                if compiled.loop_ints & (1 << i) != 0 {
+                    crate::core::isa::Opcode::Loop
+                } else {
+                    crate::core::isa::Opcode::Rep
+                },
+                v,
+            )
+        } else {
+            None
+        };
+        if let Some(reason) = problem {
+            return Err(EmuError::InvalidIntConstant {
+                register: i,
+                reason,
+            });
+        }
+    }
+    Ok(ints)
+}
+
+/// The draw's `v#` values: each declared input exactly once, nothing else.
+fn bind_inputs(compiled: &Compiled, draw: &Draw) -> Result<[Option<LinearInput>; 10], EmuError> {
+    let mut inputs = [None; 10];
+    for &(v, value) in &draw.inputs {
+        if v >= 10 || compiled.inputs & (1 << v) == 0 {
+            return Err(EmuError::InputNotDeclared { input: v });
+        }
+        if inputs[v as usize].replace(value).is_some() {
+            return Err(EmuError::DuplicateBinding {
+                what: "v",
+                index: v,
+            });
+        }
+    }
+    for v in 0..10u32 {
+        if compiled.inputs & (1 << v) != 0 && inputs[v as usize].is_none() {
+            return Err(EmuError::MissingInput { input: v });
+        }
+    }
+    Ok(inputs)
+}
+
+/// The draw's textures as samplers: each on a declared 2D `s#`, once.
+fn bind_samplers<'a>(
+    compiled: &Compiled,
+    draw: &Draw<'a>,
+) -> Result<[Option<Sampler<'a>>; 16], EmuError> {
+    let mut samplers: [Option<Sampler<'a>>; 16] = std::array::from_fn(|_| None);
+    for (s, tex, state) in &draw.samplers {
+        let ty = match compiled.samplers.get(*s as usize).copied().flatten() {
+            Some(ty) => ty,
+            None => return Err(EmuError::SamplerNotDeclared { sampler: *s }),
+        };
+        if ty != SamplerType::Tex2d {
+            return Err(EmuError::UnsupportedSampler { sampler: *s, ty });
+        }
+        let sm = Sampler::new(tex, state).map_err(|reason| EmuError::InvalidTexture {
+            sampler: *s,
+            reason,
+        })?;
+        if samplers[*s as usize].replace(sm).is_some() {
+            return Err(EmuError::DuplicateBinding {
+                what: "s",
+                index: *s,
+            });
+        }
+    }
+    Ok(samplers)
 }
 
 /// Runs a draw on rayon's global pool.

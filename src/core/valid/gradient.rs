@@ -33,8 +33,9 @@
 //! `crate::core::emu` and the README).
 
 use crate::core::diag::{Diagnostic, SourceFile};
-use crate::core::ir::{Info, Program};
+use crate::core::ir::{Info, Instruction, Program};
 use crate::core::isa::{Opcode, RegFile};
+use std::ops::Range;
 
 /// Why an instruction may run with only part of its quad.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -55,16 +56,24 @@ pub enum Dynamic {
 /// it runs. `info` must come from a program that validated without errors.
 pub fn dynamic_context(p: &Program, info: &Info) -> Vec<Option<Dynamic>> {
     let ins = &p.instructions;
-    let n = ins.len();
-    let mut why: Vec<Option<Dynamic>> = vec![None; n];
+    let ranges = functions(ins.len(), info);
+    let loop_exit = loop_exits(ins, &ranges);
+    let (mut why, calls) = local_context(ins, &ranges, &loop_exit);
+    mark_called(&mut why, &ranges, &calls);
+    why
+}
 
-    // Functions: main and each label's body, as index ranges.
+/// A function: `None` for main or the label's number, and its instructions.
+type Function = (Option<u32>, Range<usize>);
+
+/// Functions: main and each label's body, as index ranges.
+fn functions(n: usize, info: &Info) -> Vec<Function> {
     let mut starts: Vec<(Option<u32>, usize)> = vec![(None, 0)];
     for (&label, &at) in &info.labels {
         starts.push((Some(label), at as usize + 1));
     }
     starts.sort_by_key(|&(_, s)| s);
-    let mut ranges: Vec<(Option<u32>, std::ops::Range<usize>)> = Vec::new();
+    let mut ranges: Vec<Function> = Vec::new();
     for (k, &(label, start)) in starts.iter().enumerate() {
         let end = match starts.get(k + 1) {
             // The next function starts after its label; stop before it.
@@ -78,24 +87,30 @@ pub fn dynamic_context(p: &Program, info: &Info) -> Vec<Option<Dynamic>> {
         };
         ranges.push((label, start.min(end)..end));
     }
+    ranges
+}
 
-    // Loops that pixels can leave at different iterations.
-    let mut loop_exit: Vec<Option<usize>> = vec![None; n];
-    for (_, range) in &ranges {
+/// Whether `x` is an `if` whose condition can vary per pixel (`if_comp`,
+/// `if p0.c`).
+fn dynamic_if(x: &Instruction) -> bool {
+    x.op == Opcode::Ifc
+        || x.src
+            .first()
+            .is_some_and(|s| s.reg.file == RegFile::Predicate)
+}
+
+/// Loops that pixels can leave at different iterations: for each loop's
+/// index, its first such exit.
+fn loop_exits(ins: &[Instruction], ranges: &[Function]) -> Vec<Option<usize>> {
+    let mut loop_exit: Vec<Option<usize>> = vec![None; ins.len()];
+    for (_, range) in ranges {
         // Stack of (opcode, index, dynamic).
         let mut stack: Vec<(Opcode, usize, bool)> = Vec::new();
         for i in range.clone() {
             let op = ins[i].op;
             match op {
                 Opcode::Rep | Opcode::Loop => stack.push((op, i, false)),
-                Opcode::If | Opcode::Ifc => {
-                    let dynamic = op == Opcode::Ifc
-                        || ins[i]
-                            .src
-                            .first()
-                            .is_some_and(|s| s.reg.file == RegFile::Predicate);
-                    stack.push((op, i, dynamic));
-                }
+                Opcode::If | Opcode::Ifc => stack.push((op, i, dynamic_if(&ins[i]))),
                 Opcode::EndIf | Opcode::EndRep | Opcode::EndLoop => {
                     stack.pop();
                 }
@@ -115,11 +130,27 @@ pub fn dynamic_context(p: &Program, info: &Info) -> Vec<Option<Dynamic>> {
             }
         }
     }
+    loop_exit
+}
 
-    // Local context of each instruction, and dynamic call sites.
-    let mut dynamic_calls: Vec<(usize, u32)> = Vec::new();
-    let mut static_calls: Vec<(usize, u32, Option<u32>)> = Vec::new();
-    for (label, range) in &ranges {
+/// Call sites: those that may run with part of a quad `(index, label)`, and
+/// the others `(index, label, calling function)`.
+#[derive(Default)]
+struct Calls {
+    dynamic: Vec<(usize, u32)>,
+    fixed: Vec<(usize, u32, Option<u32>)>,
+}
+
+/// Local context of each instruction (its own predicate, the blocks around
+/// it, an earlier dynamic `ret`), and the call sites.
+fn local_context(
+    ins: &[Instruction],
+    ranges: &[Function],
+    loop_exit: &[Option<usize>],
+) -> (Vec<Option<Dynamic>>, Calls) {
+    let mut why: Vec<Option<Dynamic>> = vec![None; ins.len()];
+    let mut calls = Calls::default();
+    for (label, range) in ranges {
         let mut stack: Vec<(usize, Option<Dynamic>)> = Vec::new();
         let mut after_ret: Option<usize> = None;
         for i in range.clone() {
@@ -146,11 +177,7 @@ pub fn dynamic_context(p: &Program, info: &Info) -> Vec<Option<Dynamic>> {
                     stack.push((i, loop_exit[i].map(|e| Dynamic::InLoop(i, e))));
                 }
                 Opcode::If | Opcode::Ifc => {
-                    let dynamic = x.op == Opcode::Ifc
-                        || x.src
-                            .first()
-                            .is_some_and(|s| s.reg.file == RegFile::Predicate);
-                    stack.push((i, dynamic.then_some(Dynamic::InIf(i))));
+                    stack.push((i, dynamic_if(x).then_some(Dynamic::InIf(i))));
                 }
                 Opcode::Ret if enclosing.is_some() => {
                     after_ret.get_or_insert(i);
@@ -163,9 +190,9 @@ pub fn dynamic_context(p: &Program, info: &Info) -> Vec<Option<Dynamic>> {
                             .is_some_and(|s| s.reg.file == RegFile::Predicate);
                     if let Some(t) = target {
                         if pred || why[i].is_some() {
-                            dynamic_calls.push((i, t));
+                            calls.dynamic.push((i, t));
                         } else {
-                            static_calls.push((i, t, *label));
+                            calls.fixed.push((i, t, *label));
                         }
                     }
                 }
@@ -173,29 +200,32 @@ pub fn dynamic_context(p: &Program, info: &Info) -> Vec<Option<Dynamic>> {
             }
         }
     }
+    (why, calls)
+}
 
-    // Subroutines reached from a dynamic call, transitively.
+/// Subroutines reached from a dynamic call, transitively: every instruction
+/// of theirs without a reason of its own gets the call.
+fn mark_called(why: &mut [Option<Dynamic>], ranges: &[Function], calls: &Calls) {
     let mut called: std::collections::BTreeMap<u32, usize> = Default::default();
-    let mut work: Vec<(u32, usize)> = dynamic_calls.iter().map(|&(i, t)| (t, i)).collect();
+    let mut work: Vec<(u32, usize)> = calls.dynamic.iter().map(|&(i, t)| (t, i)).collect();
     while let Some((label, call)) = work.pop() {
         if called.contains_key(&label) {
             continue;
         }
         called.insert(label, call);
-        for &(_, t, from) in &static_calls {
+        for &(_, t, from) in &calls.fixed {
             if from == Some(label) && !called.contains_key(&t) {
                 work.push((t, call));
             }
         }
     }
-    for (label, range) in &ranges {
+    for (label, range) in ranges {
         if let Some(&call) = label.and_then(|l| called.get(&l)) {
             for w in &mut why[range.clone()] {
                 w.get_or_insert(Dynamic::Called(call));
             }
         }
     }
-    why
 }
 
 /// Warnings for gradient instructions that may run with part of a quad.

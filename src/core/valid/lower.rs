@@ -8,7 +8,7 @@ use crate::core::ir::{
     BoolDef, Dst, FloatDef, InputDecl, Instruction, IntDef, Origin, Predicate, Reg, SamplerDecl,
     Span, Src, SrcMod, Swizzle, WriteMask,
 };
-use crate::core::isa::{Class, Compare, Opcode, Operand, RegFile, SamplerType, USAGES};
+use crate::core::isa::{Class, Compare, OpInfo, Opcode, Operand, RegFile, SamplerType, USAGES};
 
 /// What one statement becomes.
 #[derive(Clone, Debug)]
@@ -93,23 +93,57 @@ fn edit_distance(a: &str, b: &str) -> usize {
     prev[b.len()]
 }
 
+/// The modifiers written after an instruction's mnemonic.
+struct Suffixes {
+    sat: bool,
+    pp: bool,
+    centroid: bool,
+    compare: Option<Compare>,
+}
+
 fn lower_instruction(ast: &InstrAst, origin: &Origin) -> R<Instruction> {
-    let mut sat = false;
-    let mut pp = false;
-    let mut centroid = false;
-    let mut compare = None;
+    let m = suffixes(ast)?;
+    let op = opcode(ast, m.compare)?;
+    let info = op.info();
+    check_modifiers(ast, info, &m)?;
+    let predicate = instruction_predicate(ast, info)?;
+    check_operand_count(ast, info)?;
+    let (dst, src) = operands(ast, info)?;
+    operand_rules(op, dst.as_ref(), &src, ast)?;
+    Ok(Instruction {
+        op,
+        sat: m.sat,
+        pp: m.pp,
+        centroid: m.centroid,
+        compare: m.compare,
+        predicate,
+        dst,
+        src,
+        origin: origin.clone(),
+    })
+}
+
+/// `_sat`, `_pp`, `_centroid` and at most one comparison; shift modifiers
+/// and unknown suffixes are errors.
+fn suffixes(ast: &InstrAst) -> R<Suffixes> {
+    let mut m = Suffixes {
+        sat: false,
+        pp: false,
+        centroid: false,
+        compare: None,
+    };
     for (s, span) in &ast.suffixes {
         match s.as_str() {
-            "sat" => sat = true,
-            "pp" => pp = true,
-            "centroid" => centroid = true,
+            "sat" => m.sat = true,
+            "pp" => m.pp = true,
+            "centroid" => m.centroid = true,
             "x2" | "x4" | "x8" | "d2" | "d4" | "d8" => {
                 return Err(Diagnostic::error(*span, format!("shift modifier `_{s}` does not exist in ps_3_0"))
                     .with_label("ps_1_x only")
                     .with_help("multiply explicitly with mul"))
             }
             _ => match Compare::from_suffix(s) {
-                Some(c) if compare.is_none() => compare = Some(c),
+                Some(c) if m.compare.is_none() => m.compare = Some(c),
                 Some(_) => return Err(Diagnostic::error(*span, "more than one comparison suffix")),
                 None => {
                     return Err(Diagnostic::error(*span, format!("unknown instruction modifier `_{s}`"))
@@ -119,6 +153,12 @@ fn lower_instruction(ast: &InstrAst, origin: &Origin) -> R<Instruction> {
             },
         }
     }
+    Ok(m)
+}
+
+/// The instruction the mnemonic names, with a comparison suffix exactly when
+/// it takes one.
+fn opcode(ast: &InstrAst, compare: Option<Compare>) -> R<Opcode> {
     let op =
         Opcode::from_mnemonic(&ast.base, compare.is_some()).ok_or_else(|| unknown_mnemonic(ast))?;
     let info = op.info();
@@ -147,6 +187,12 @@ fn lower_instruction(ast: &InstrAst, origin: &Origin) -> R<Instruction> {
             info.mnemonic
         )));
     }
+    Ok(op)
+}
+
+/// `_sat` only where the table allows it, `_centroid` only on texture
+/// instructions.
+fn check_modifiers(ast: &InstrAst, info: &OpInfo, m: &Suffixes) -> R<()> {
     let suffix_span = |name: &str| {
         ast.suffixes
             .iter()
@@ -154,38 +200,44 @@ fn lower_instruction(ast: &InstrAst, origin: &Origin) -> R<Instruction> {
             .map(|s| s.1)
             .unwrap_or(ast.base_span)
     };
-    if sat && !info.allows_sat {
+    if m.sat && !info.allows_sat {
         return Err(Diagnostic::error(
             suffix_span("sat"),
             format!("`_sat` is not allowed on `{}`", info.mnemonic),
         )
         .with_label("not allowed here"));
     }
-    if centroid && info.class != Class::Texture {
+    if m.centroid && info.class != Class::Texture {
         return Err(Diagnostic::error(
             suffix_span("centroid"),
             "`_centroid` is only allowed on texture instructions and input declarations",
         )
         .with_label("not allowed here"));
     }
-    let predicate = match &ast.predicate {
-        None => None,
-        Some(p) => {
-            if !info.predicable {
-                return Err(Diagnostic::error(
-                    p.span,
-                    format!("`{}` cannot be predicated", info.mnemonic),
-                )
-                .with_label("flow-control instructions take no predicate")
-                .with_help("use if / breakp / callnz with p0 instead"));
-            }
-            let src = predicate_operand(p, false)?;
-            Some(Predicate {
-                negate: src.modifier == SrcMod::Not,
-                swizzle: src.swizzle,
-            })
-        }
+    Ok(())
+}
+
+/// The `(p0.c)` / `(!p0.c)` prefix, on instructions that can be predicated.
+fn instruction_predicate(ast: &InstrAst, info: &OpInfo) -> R<Option<Predicate>> {
+    let Some(p) = &ast.predicate else {
+        return Ok(None);
     };
+    if !info.predicable {
+        return Err(
+            Diagnostic::error(p.span, format!("`{}` cannot be predicated", info.mnemonic))
+                .with_label("flow-control instructions take no predicate")
+                .with_help("use if / breakp / callnz with p0 instead"),
+        );
+    }
+    let src = predicate_operand(p, false)?;
+    Ok(Some(Predicate {
+        negate: src.modifier == SrcMod::Not,
+        swizzle: src.swizzle,
+    }))
+}
+
+/// As many operands as the instruction's shape has.
+fn check_operand_count(ast: &InstrAst, info: &OpInfo) -> R<()> {
     let shape = info.operands;
     if ast.operands.len() != shape.len() {
         let span = if ast.operands.is_empty() {
@@ -208,9 +260,15 @@ fn lower_instruction(ast: &InstrAst, origin: &Origin) -> R<Instruction> {
         .with_label("wrong number of operands")
         .with_help(format!("form: {}", shape_text(info.mnemonic, shape))));
     }
+    Ok(())
+}
+
+/// Each operand resolved as its place in the shape requires: the
+/// destination (if any) and the sources in order.
+fn operands(ast: &InstrAst, info: &OpInfo) -> R<(Option<Dst>, Vec<Src>)> {
     let mut dst = None;
     let mut src = Vec::new();
-    for (pos, (kind, operand)) in shape.iter().zip(&ast.operands).enumerate() {
+    for (pos, (kind, operand)) in info.operands.iter().zip(&ast.operands).enumerate() {
         let reg = match operand {
             OperandAst::Reg(r) => r,
             other => {
@@ -228,21 +286,7 @@ fn lower_instruction(ast: &InstrAst, origin: &Origin) -> R<Instruction> {
         };
         match kind {
             Operand::Dst | Operand::KillSrc => dst = Some(destination(reg, *kind)?),
-            Operand::PredDst => {
-                let r = resolve_reg(reg)?;
-                if r.file != RegFile::Predicate {
-                    return Err(Diagnostic::error(
-                        reg.span,
-                        "setp writes the predicate register p0",
-                    )
-                    .with_label("expected p0"));
-                }
-                no_modifiers(reg, "the predicate destination")?;
-                dst = Some(Dst {
-                    reg: r,
-                    mask: write_mask(reg)?,
-                });
-            }
+            Operand::PredDst => dst = Some(predicate_destination(reg)?),
             Operand::Src | Operand::ScalarSrc => {
                 let s = float_source(reg)?;
                 if *kind == Operand::ScalarSrc && !s.swizzle.is_replicate() {
@@ -258,32 +302,7 @@ fn lower_instruction(ast: &InstrAst, origin: &Origin) -> R<Instruction> {
                 }
                 src.push(s);
             }
-            Operand::Sampler => {
-                let r = resolve_reg(reg)?;
-                if r.file != RegFile::Sampler {
-                    return Err(Diagnostic::error(
-                        reg.span,
-                        format!(
-                            "operand {} of `{}` must be a sampler s#",
-                            pos + 1,
-                            info.mnemonic
-                        ),
-                    )
-                    .with_label("expected s0 … s15"));
-                }
-                if reg.negate || reg.abs || reg.not {
-                    return Err(
-                        Diagnostic::error(reg.span, "a sampler operand takes no modifier")
-                            .with_label("remove the modifier"),
-                    );
-                }
-                src.push(Src {
-                    reg: r,
-                    relative: false,
-                    swizzle: swizzle(reg)?,
-                    modifier: SrcMod::None,
-                });
-            }
+            Operand::Sampler => src.push(sampler_operand(reg, pos, info.mnemonic)?),
             Operand::IntReg => {
                 src.push(plain_of(reg, RegFile::ConstInt, "an integer constant i#")?)
             }
@@ -297,17 +316,46 @@ fn lower_instruction(ast: &InstrAst, origin: &Origin) -> R<Instruction> {
             }
         }
     }
-    operand_rules(op, dst.as_ref(), &src, ast)?;
-    Ok(Instruction {
-        op,
-        sat,
-        pp,
-        centroid,
-        compare,
-        predicate,
-        dst,
-        src,
-        origin: origin.clone(),
+    Ok((dst, src))
+}
+
+/// setp's destination: p0 with a write mask.
+fn predicate_destination(reg: &RegAst) -> R<Dst> {
+    let r = resolve_reg(reg)?;
+    if r.file != RegFile::Predicate {
+        return Err(
+            Diagnostic::error(reg.span, "setp writes the predicate register p0")
+                .with_label("expected p0"),
+        );
+    }
+    no_modifiers(reg, "the predicate destination")?;
+    Ok(Dst {
+        reg: r,
+        mask: write_mask(reg)?,
+    })
+}
+
+/// A sampler `s#` (operand `pos` of `mnemonic`), without modifiers.
+fn sampler_operand(reg: &RegAst, pos: usize, mnemonic: &str) -> R<Src> {
+    let r = resolve_reg(reg)?;
+    if r.file != RegFile::Sampler {
+        return Err(Diagnostic::error(
+            reg.span,
+            format!("operand {} of `{}` must be a sampler s#", pos + 1, mnemonic),
+        )
+        .with_label("expected s0 … s15"));
+    }
+    if reg.negate || reg.abs || reg.not {
+        return Err(
+            Diagnostic::error(reg.span, "a sampler operand takes no modifier")
+                .with_label("remove the modifier"),
+        );
+    }
+    Ok(Src {
+        reg: r,
+        relative: false,
+        swizzle: swizzle(reg)?,
+        modifier: SrcMod::None,
     })
 }
 
@@ -316,38 +364,86 @@ fn lower_instruction(ast: &InstrAst, origin: &Origin) -> R<Instruction> {
 /// destinations that may not alias a source.
 fn operand_rules(op: Opcode, dst: Option<&Dst>, src: &[Src], ast: &InstrAst) -> R<()> {
     let Some(d) = dst else { return Ok(()) };
-    let span = |i: usize| ast.operands.get(i).map_or(ast.span, |o| o.span());
-    let mnemonic = op.info().mnemonic;
-    let need_temp = || -> R<()> {
-        if d.reg.file != RegFile::Temp {
+    let rules = Rules {
+        mnemonic: op.info().mnemonic,
+        d,
+        src,
+        ast,
+    };
+    match op {
+        Opcode::SinCos => {
+            rules.need_temp()?;
+            rules.mask_must_be(&[0b0001, 0b0010, 0b0011], ".x, .y or .xy")?;
+        }
+        Opcode::Crs => rules.crs()?,
+        Opcode::M3x2 | Opcode::M3x3 | Opcode::M4x3 | Opcode::M3x4 | Opcode::M4x4 => {
+            let rows = match op {
+                Opcode::M3x2 => 2,
+                Opcode::M3x3 | Opcode::M4x3 => 3,
+                _ => 4,
+            };
+            rules.matrix(rows)?;
+        }
+        Opcode::Nrm => {
+            rules.need_temp()?;
+            rules.not_aliased(&[0], "its source")?;
+        }
+        Opcode::Pow => {
+            rules.need_temp()?;
+            rules.not_aliased(&[1], "its exponent source")?;
+        }
+        _ => {}
+    }
+    Ok(())
+}
+
+/// One instruction's destination and sources, for [`operand_rules`].
+struct Rules<'a> {
+    mnemonic: &'static str,
+    d: &'a Dst,
+    src: &'a [Src],
+    ast: &'a InstrAst,
+}
+
+impl Rules<'_> {
+    /// Operand `i`'s span (0 is the destination).
+    fn span(&self, i: usize) -> Span {
+        self.ast.operands.get(i).map_or(self.ast.span, |o| o.span())
+    }
+
+    fn need_temp(&self) -> R<()> {
+        if self.d.reg.file != RegFile::Temp {
             return Err(Diagnostic::error(
-                span(0),
-                format!("`{mnemonic}` writes a temporary register r#"),
+                self.span(0),
+                format!("`{}` writes a temporary register r#", self.mnemonic),
             )
             .with_label("not a temporary")
             .with_help("compute into r# and copy it with mov"));
         }
         Ok(())
-    };
-    let not_aliased = |sources: &[usize], what: &str| -> R<()> {
+    }
+
+    fn not_aliased(&self, sources: &[usize], what: &str) -> R<()> {
         for &i in sources {
-            if src.get(i).is_some_and(|s| s.reg == d.reg) {
+            if self.src.get(i).is_some_and(|s| s.reg == self.d.reg) {
                 return Err(Diagnostic::error(
-                    span(0),
-                    format!("the destination of `{mnemonic}` may not be {what}"),
+                    self.span(0),
+                    format!("the destination of `{}` may not be {what}", self.mnemonic),
                 )
-                .with_label(format!("{} is also read here", d.reg))
-                .with_secondary(span(i + 1), "same register")
+                .with_label(format!("{} is also read here", self.d.reg))
+                .with_secondary(self.span(i + 1), "same register")
                 .with_help("write the result to another temporary"));
             }
         }
         Ok(())
-    };
-    let mask_must_be = |allowed: &[u8], text: &str| -> R<()> {
+    }
+
+    fn mask_must_be(&self, allowed: &[u8], text: &str) -> R<()> {
+        let d = self.d;
         if !allowed.contains(&d.mask.0) {
             return Err(Diagnostic::error(
-                span(0),
-                format!("`{mnemonic}` needs the write mask {text}"),
+                self.span(0),
+                format!("`{}` needs the write mask {text}", self.mnemonic),
             )
             .with_label(format!(
                 "mask is {}",
@@ -359,83 +455,69 @@ fn operand_rules(op: Opcode, dst: Option<&Dst>, src: &[Src], ast: &InstrAst) -> 
             )));
         }
         Ok(())
-    };
-    match op {
-        Opcode::SinCos => {
-            need_temp()?;
-            mask_must_be(&[0b0001, 0b0010, 0b0011], ".x, .y or .xy")?;
-        }
-        Opcode::Crs => {
-            need_temp()?;
-            mask_must_be(
-                &[0b0001, 0b0010, 0b0100, 0b0011, 0b0101, 0b0110, 0b0111],
-                "within .xyz",
-            )?;
-            for (i, s) in src.iter().enumerate() {
-                if s.swizzle != Swizzle::IDENTITY {
-                    return Err(
-                        Diagnostic::error(span(i + 1), "`crs` sources take no swizzle")
-                            .with_label("remove the swizzle"),
-                    );
-                }
-            }
-            not_aliased(&[0, 1], "one of its sources")?;
-        }
-        Opcode::M3x2 | Opcode::M3x3 | Opcode::M4x3 | Opcode::M3x4 | Opcode::M4x4 => {
-            let rows = match op {
-                Opcode::M3x2 => 2,
-                Opcode::M3x3 | Opcode::M4x3 => 3,
-                _ => 4,
-            };
-            let (mask, text): (u8, &str) = match rows {
-                2 => (0b0011, ".xy"),
-                3 => (0b0111, ".xyz"),
-                _ => (0b1111, ".xyzw"),
-            };
-            mask_must_be(&[mask], text)?;
-            let m = &src[1];
-            if m.swizzle != Swizzle::IDENTITY || m.modifier != SrcMod::None {
-                return Err(Diagnostic::error(
-                    span(2),
-                    format!("the matrix operand of `{mnemonic}` takes no swizzle or modifier"),
-                )
-                .with_label("must be a plain register"));
-            }
-            not_aliased(&[0], "its vector source")?;
-            if d.reg.file == m.reg.file && (m.reg.index..m.reg.index + rows).contains(&d.reg.index)
-            {
-                return Err(Diagnostic::error(
-                    span(0),
-                    format!(
-                        "the destination of `{mnemonic}` may not be one of the matrix rows {}…",
-                        m.reg
-                    ),
-                )
-                .with_label("overlaps the matrix"));
-            }
-            if m.reg.index + rows > m.reg.file.info().count {
-                return Err(Diagnostic::error(
-                    span(2),
-                    format!(
-                        "the matrix {}…+{} runs past the last register",
-                        m.reg,
-                        rows - 1
-                    ),
-                )
-                .with_label("out of range"));
-            }
-        }
-        Opcode::Nrm => {
-            need_temp()?;
-            not_aliased(&[0], "its source")?;
-        }
-        Opcode::Pow => {
-            need_temp()?;
-            not_aliased(&[1], "its exponent source")?;
-        }
-        _ => {}
     }
-    Ok(())
+
+    /// `crs`: a temporary within .xyz, unswizzled sources, neither of them
+    /// the destination.
+    fn crs(&self) -> R<()> {
+        self.need_temp()?;
+        self.mask_must_be(
+            &[0b0001, 0b0010, 0b0100, 0b0011, 0b0101, 0b0110, 0b0111],
+            "within .xyz",
+        )?;
+        for (i, s) in self.src.iter().enumerate() {
+            if s.swizzle != Swizzle::IDENTITY {
+                return Err(
+                    Diagnostic::error(self.span(i + 1), "`crs` sources take no swizzle")
+                        .with_label("remove the swizzle"),
+                );
+            }
+        }
+        self.not_aliased(&[0, 1], "one of its sources")
+    }
+
+    /// `m#x#` with `rows` matrix rows: the mask of `rows` components, a plain
+    /// matrix operand that exists and does not hold the destination.
+    fn matrix(&self, rows: u32) -> R<()> {
+        let (d, mnemonic) = (self.d, self.mnemonic);
+        let (mask, text): (u8, &str) = match rows {
+            2 => (0b0011, ".xy"),
+            3 => (0b0111, ".xyz"),
+            _ => (0b1111, ".xyzw"),
+        };
+        self.mask_must_be(&[mask], text)?;
+        let m = &self.src[1];
+        if m.swizzle != Swizzle::IDENTITY || m.modifier != SrcMod::None {
+            return Err(Diagnostic::error(
+                self.span(2),
+                format!("the matrix operand of `{mnemonic}` takes no swizzle or modifier"),
+            )
+            .with_label("must be a plain register"));
+        }
+        self.not_aliased(&[0], "its vector source")?;
+        if d.reg.file == m.reg.file && (m.reg.index..m.reg.index + rows).contains(&d.reg.index) {
+            return Err(Diagnostic::error(
+                self.span(0),
+                format!(
+                    "the destination of `{mnemonic}` may not be one of the matrix rows {}…",
+                    m.reg
+                ),
+            )
+            .with_label("overlaps the matrix"));
+        }
+        if m.reg.index + rows > m.reg.file.info().count {
+            return Err(Diagnostic::error(
+                self.span(2),
+                format!(
+                    "the matrix {}…+{} runs past the last register",
+                    m.reg,
+                    rows - 1
+                ),
+            )
+            .with_label("out of range"));
+        }
+        Ok(())
+    }
 }
 
 fn shape_text(mnemonic: &str, shape: &[Operand]) -> String {
@@ -807,7 +889,54 @@ fn condition(r: &RegAst) -> R<Src> {
     }
 }
 
+/// The modifiers written after `dcl`: `_centroid`, `_pp` and one usage or
+/// sampler type (with its span).
+struct DclSuffixes<'a> {
+    centroid: bool,
+    pp: bool,
+    kind: Option<(&'a str, Span)>,
+}
+
 fn lower_dcl(ast: &InstrAst, origin: &Origin) -> R<Lowered> {
+    let r = declared_operand(ast)?;
+    let reg = resolve_reg(r)?;
+    no_modifiers(r, "a declared register")?;
+    let m = dcl_suffixes(ast)?;
+    match (reg.file, m.kind) {
+        (RegFile::Sampler, Some((k, span))) => sampler_decl(r, reg, k, span, origin),
+        (RegFile::Sampler, None) => Err(Diagnostic::error(
+            ast.base_span,
+            "a sampler declaration needs a type",
+        )
+        .with_label("e.g. dcl_2d s0")
+        .with_help("write dcl_2d, dcl_cube or dcl_volume")),
+        (RegFile::Input, Some((k, span))) => input_decl(r, reg, (k, span), &m, origin),
+        (RegFile::Input, None) => Err(Diagnostic::error(
+            ast.base_span,
+            "ps_3_0 input declarations need a usage",
+        )
+        .with_label("e.g. dcl_texcoord0 v0.xy")
+        .with_help("write dcl_<usage><index> v#, such as dcl_texcoord0 v0 or dcl_color0 v1")),
+        (RegFile::Position | RegFile::Face, None) => pos_face_decl(r, reg, &m, origin),
+        (RegFile::Position | RegFile::Face, Some((_, span))) => Err(Diagnostic::error(
+            span,
+            "vPos and vFace are declared with plain `dcl`",
+        )
+        .with_label("remove the usage")),
+        (RegFile::ColorOut | RegFile::DepthOut, _) => Err(Diagnostic::error(
+            r.span,
+            "ps_3_0 cannot declare output registers",
+        )
+        .with_label("outputs need no declaration")),
+        _ => Err(
+            Diagnostic::error(r.span, format!("`{reg}` cannot be declared"))
+                .with_label("declare v#, s#, vPos or vFace"),
+        ),
+    }
+}
+
+/// A declaration's one operand: a register, with no predicate on the line.
+fn declared_operand(ast: &InstrAst) -> R<&RegAst> {
     if ast.operands.len() != 1 {
         return Err(Diagnostic::error(
             ast.span,
@@ -830,22 +959,26 @@ fn lower_dcl(ast: &InstrAst, origin: &Origin) -> R<Lowered> {
             "declarations cannot be predicated",
         ));
     }
-    let reg = resolve_reg(r)?;
-    no_modifiers(r, "a declared register")?;
-    let mut centroid = false;
-    let mut pp = false;
-    let mut kind: Option<(&str, Span)> = None;
+    Ok(r)
+}
+
+fn dcl_suffixes(ast: &InstrAst) -> R<DclSuffixes<'_>> {
+    let mut m = DclSuffixes {
+        centroid: false,
+        pp: false,
+        kind: None,
+    };
     for (s, span) in &ast.suffixes {
         match s.as_str() {
-            "centroid" => centroid = true,
-            "pp" => pp = true,
+            "centroid" => m.centroid = true,
+            "pp" => m.pp = true,
             "sat" => {
                 return Err(Diagnostic::error(
                     *span,
                     "`_sat` is not allowed on a declaration",
                 ))
             }
-            other if kind.is_none() => kind = Some((other, *span)),
+            other if m.kind.is_none() => m.kind = Some((other, *span)),
             other => {
                 return Err(Diagnostic::error(
                     *span,
@@ -854,132 +987,120 @@ fn lower_dcl(ast: &InstrAst, origin: &Origin) -> R<Lowered> {
             }
         }
     }
-    match (reg.file, kind) {
-        (RegFile::Sampler, Some((k, span))) => {
-            let ty = match k {
-                "2d" => SamplerType::Tex2d,
-                "cube" => SamplerType::Cube,
-                "volume" => SamplerType::Volume,
-                "1d" => {
-                    return Err(
-                        Diagnostic::error(span, "1D samplers are not ps_3_0 sampler types")
-                            .with_label("declare 2d, cube or volume")
-                            .with_help("Microsoft lists dcl_2d, dcl_cube and dcl_volume only"),
-                    )
-                }
-                _ => {
-                    return Err(
-                        Diagnostic::error(span, format!("unknown sampler type `{k}`"))
-                            .with_label("expected 2d, cube or volume"),
-                    )
-                }
-            };
-            if r.components.is_some() {
-                return Err(Diagnostic::error(
-                    r.span,
-                    "sampler declarations take no write mask",
-                ));
-            }
-            Ok(Lowered::Sampler(SamplerDecl {
-                index: reg.index,
-                ty,
-                origin: origin.clone(),
-            }))
+    Ok(m)
+}
+
+/// `dcl_2d` / `dcl_cube` / `dcl_volume s#` (type `k` at `span`).
+fn sampler_decl(r: &RegAst, reg: Reg, k: &str, span: Span, origin: &Origin) -> R<Lowered> {
+    let ty = match k {
+        "2d" => SamplerType::Tex2d,
+        "cube" => SamplerType::Cube,
+        "volume" => SamplerType::Volume,
+        "1d" => {
+            return Err(
+                Diagnostic::error(span, "1D samplers are not ps_3_0 sampler types")
+                    .with_label("declare 2d, cube or volume")
+                    .with_help("Microsoft lists dcl_2d, dcl_cube and dcl_volume only"),
+            )
         }
-        (RegFile::Sampler, None) => Err(Diagnostic::error(
-            ast.base_span,
-            "a sampler declaration needs a type",
-        )
-        .with_label("e.g. dcl_2d s0")
-        .with_help("write dcl_2d, dcl_cube or dcl_volume")),
-        (RegFile::Input, Some((k, span))) => {
-            let name = k.trim_end_matches(|c: char| c.is_ascii_digit());
-            let digits = &k[name.len()..];
-            if !USAGES.contains(&name) {
-                return Err(Diagnostic::error(span, format!("unknown input usage `{name}`"))
-                    .with_label("not a declaration usage")
-                    .with_help("usages: texcoord, color, normal, tangent, binormal, position, fog, depth, ..."));
-            }
-            let usage_index: u32 = if digits.is_empty() {
-                0
-            } else {
-                digits.parse().unwrap_or(99)
-            };
-            if usage_index > 15 {
-                return Err(Diagnostic::error(
-                    span,
-                    format!("usage index {usage_index} is out of range"),
-                )
-                .with_label("0 … 15"));
-            }
-            // Not in Microsoft's dcl_usage page, but Windows' runtime
-            // refuses it: Wine's dlls/d3d9/tests/visual.c,
-            // test_position_index, expects D3DERR_INVALIDCALL from
-            // CreatePixelShader for `dcl_position0 v0` and accepts
-            // `dcl_position1 v0`.
-            if name == "position" && usage_index == 0 {
-                return Err(Diagnostic::error(
-                    span,
-                    "position0 cannot be a pixel shader input",
-                )
-                .with_label("Windows' runtime refuses this declaration")
-                .with_help("the pixel's position is vPos; a copy of the vertex position needs another usage, such as position1 or texcoord"));
-            }
-            Ok(Lowered::Input(InputDecl {
-                reg,
-                usage: name.to_string(),
-                usage_index,
-                mask: write_mask(r)?,
-                centroid,
-                pp,
-                origin: origin.clone(),
-            }))
+        _ => {
+            return Err(
+                Diagnostic::error(span, format!("unknown sampler type `{k}`"))
+                    .with_label("expected 2d, cube or volume"),
+            )
         }
-        (RegFile::Input, None) => Err(Diagnostic::error(
-            ast.base_span,
-            "ps_3_0 input declarations need a usage",
-        )
-        .with_label("e.g. dcl_texcoord0 v0.xy")
-        .with_help("write dcl_<usage><index> v#, such as dcl_texcoord0 v0 or dcl_color0 v1")),
-        (RegFile::Position | RegFile::Face, None) => {
-            let mask = write_mask(r)?;
-            if reg.file == RegFile::Position && !matches!(mask.0, 1..=3) {
-                return Err(
-                    Diagnostic::error(r.span, "vPos is declared with .x, .y or .xy")
-                        .with_label("z and w are undefined"),
-                );
-            }
-            if reg.file == RegFile::Face && mask != WriteMask::ALL {
-                return Err(Diagnostic::error(
-                    r.span,
-                    "vFace is declared without a mask",
-                ));
-            }
-            Ok(Lowered::Input(InputDecl {
-                reg,
-                usage: String::new(),
-                usage_index: 0,
-                mask,
-                centroid,
-                pp,
-                origin: origin.clone(),
-            }))
-        }
-        (RegFile::Position | RegFile::Face, Some((_, span))) => Err(Diagnostic::error(
-            span,
-            "vPos and vFace are declared with plain `dcl`",
-        )
-        .with_label("remove the usage")),
-        (RegFile::ColorOut | RegFile::DepthOut, _) => Err(Diagnostic::error(
+    };
+    if r.components.is_some() {
+        return Err(Diagnostic::error(
             r.span,
-            "ps_3_0 cannot declare output registers",
-        )
-        .with_label("outputs need no declaration")),
-        _ => Err(
-            Diagnostic::error(r.span, format!("`{reg}` cannot be declared"))
-                .with_label("declare v#, s#, vPos or vFace"),
-        ),
+            "sampler declarations take no write mask",
+        ));
     }
+    Ok(Lowered::Sampler(SamplerDecl {
+        index: reg.index,
+        ty,
+        origin: origin.clone(),
+    }))
+}
+
+/// `dcl_<usage><index> v#` (usage `k` at `span`).
+fn input_decl(
+    r: &RegAst,
+    reg: Reg,
+    (k, span): (&str, Span),
+    m: &DclSuffixes,
+    origin: &Origin,
+) -> R<Lowered> {
+    let name = k.trim_end_matches(|c: char| c.is_ascii_digit());
+    let digits = &k[name.len()..];
+    if !USAGES.contains(&name) {
+        return Err(
+            Diagnostic::error(span, format!("unknown input usage `{name}`"))
+                .with_label("not a declaration usage")
+                .with_help(
+                    "usages: texcoord, color, normal, tangent, binormal, position, fog, depth, ...",
+                ),
+        );
+    }
+    let usage_index: u32 = if digits.is_empty() {
+        0
+    } else {
+        digits.parse().unwrap_or(99)
+    };
+    if usage_index > 15 {
+        return Err(
+            Diagnostic::error(span, format!("usage index {usage_index} is out of range"))
+                .with_label("0 … 15"),
+        );
+    }
+    // Not in Microsoft's dcl_usage page, but Windows' runtime
+    // refuses it: Wine's dlls/d3d9/tests/visual.c,
+    // test_position_index, expects D3DERR_INVALIDCALL from
+    // CreatePixelShader for `dcl_position0 v0` and accepts
+    // `dcl_position1 v0`.
+    if name == "position" && usage_index == 0 {
+        return Err(Diagnostic::error(
+            span,
+            "position0 cannot be a pixel shader input",
+        )
+        .with_label("Windows' runtime refuses this declaration")
+        .with_help("the pixel's position is vPos; a copy of the vertex position needs another usage, such as position1 or texcoord"));
+    }
+    Ok(Lowered::Input(InputDecl {
+        reg,
+        usage: name.to_string(),
+        usage_index,
+        mask: write_mask(r)?,
+        centroid: m.centroid,
+        pp: m.pp,
+        origin: origin.clone(),
+    }))
+}
+
+/// `dcl vPos.xy` / `dcl vFace`.
+fn pos_face_decl(r: &RegAst, reg: Reg, m: &DclSuffixes, origin: &Origin) -> R<Lowered> {
+    let mask = write_mask(r)?;
+    if reg.file == RegFile::Position && !matches!(mask.0, 1..=3) {
+        return Err(
+            Diagnostic::error(r.span, "vPos is declared with .x, .y or .xy")
+                .with_label("z and w are undefined"),
+        );
+    }
+    if reg.file == RegFile::Face && mask != WriteMask::ALL {
+        return Err(Diagnostic::error(
+            r.span,
+            "vFace is declared without a mask",
+        ));
+    }
+    Ok(Lowered::Input(InputDecl {
+        reg,
+        usage: String::new(),
+        usage_index: 0,
+        mask,
+        centroid: m.centroid,
+        pp: m.pp,
+        origin: origin.clone(),
+    }))
 }
 
 fn lower_def(ast: &InstrAst, origin: &Origin) -> R<Lowered> {

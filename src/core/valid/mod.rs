@@ -28,10 +28,27 @@ pub fn validate(
     file: &SourceFile,
 ) -> Result<(Shader, Diagnostics), Diagnostics> {
     let mut diags = Diagnostics::default();
-    let mut program = Program::default();
+    let body = check_version(stmts, expanded, &mut diags);
+    let program = collect(stmts, body, file, &mut diags);
+    check_declarations(&program, &mut diags, file);
+    let info = check_program(&program, &mut diags, file);
+    if diags.has_errors() {
+        return Err(diags);
+    }
+    for w in gradient::warnings(&program, &info, file) {
+        diags.push(w);
+    }
+    let warnings = diags;
+    Ok((Shader::new_validated(program, info), warnings))
+}
 
-    // The version line must come first.
-    let mut body = expanded;
+/// The version line must come first; returns the statements after it (all
+/// of them when it is missing).
+fn check_version<'e>(
+    stmts: &[Stmt],
+    expanded: &'e [Expanded],
+    diags: &mut Diagnostics,
+) -> &'e [Expanded] {
     match expanded.first().map(|e| &stmts[e.stmt]) {
         Some(Stmt::Version {
             major: 3,
@@ -40,7 +57,7 @@ pub fn validate(
             span,
         }) if text.to_ascii_lowercase().starts_with("ps") => {
             let _ = span;
-            body = &expanded[1..];
+            &expanded[1..]
         }
         Some(Stmt::Version { text, span, .. }) => {
             diags.push(
@@ -48,7 +65,7 @@ pub fn validate(
                     .with_label("ps30 checks ps_3_0 only")
                     .with_help("the first line of a ps_3_0 shader is `ps_3_0`"),
             );
-            body = &expanded[1..];
+            &expanded[1..]
         }
         Some(_) | None => {
             let span = expanded.first().map(|e| e.origin.span).unwrap_or_default();
@@ -60,10 +77,21 @@ pub fn validate(
                 .with_label("expected `ps_3_0` here")
                 .with_help("start the file with the line `ps_3_0`"),
             );
+            expanded
         }
     }
+}
 
-    // Lower each distinct statement once.
+/// Lowers each distinct statement once and files the results into a
+/// [`Program`], each with its own origin; declarations after the first
+/// instruction are errors.
+fn collect(
+    stmts: &[Stmt],
+    body: &[Expanded],
+    file: &SourceFile,
+    diags: &mut Diagnostics,
+) -> Program {
+    let mut program = Program::default();
     let mut cache: HashMap<usize, Option<Lowered>> = HashMap::new();
     let mut first_instr: Option<Span> = None;
     for e in body {
@@ -107,44 +135,43 @@ pub fn validate(
                 continue;
             }
         }
-        match lowered {
-            Lowered::Instr(mut i) => {
-                i.origin = e.origin.clone();
-                first_instr.get_or_insert(e.origin.span);
-                program.instructions.push(i);
-            }
-            Lowered::Input(mut d) => {
-                d.origin = e.origin.clone();
-                program.inputs.push(d);
-            }
-            Lowered::Sampler(mut d) => {
-                d.origin = e.origin.clone();
-                program.samplers.push(d);
-            }
-            Lowered::Float(mut d) => {
-                d.origin = e.origin.clone();
-                program.float_defs.push(d);
-            }
-            Lowered::Int(mut d) => {
-                d.origin = e.origin.clone();
-                program.int_defs.push(d);
-            }
-            Lowered::Bool(mut d) => {
-                d.origin = e.origin.clone();
-                program.bool_defs.push(d);
-            }
+        if let Lowered::Instr(_) = lowered {
+            first_instr.get_or_insert(e.origin.span);
+        }
+        file_lowered(&mut program, lowered, e);
+    }
+    program
+}
+
+/// Adds one lowered statement to its list in `program`, with the origin of
+/// this copy.
+fn file_lowered(program: &mut Program, lowered: Lowered, e: &Expanded) {
+    match lowered {
+        Lowered::Instr(mut i) => {
+            i.origin = e.origin.clone();
+            program.instructions.push(i);
+        }
+        Lowered::Input(mut d) => {
+            d.origin = e.origin.clone();
+            program.inputs.push(d);
+        }
+        Lowered::Sampler(mut d) => {
+            d.origin = e.origin.clone();
+            program.samplers.push(d);
+        }
+        Lowered::Float(mut d) => {
+            d.origin = e.origin.clone();
+            program.float_defs.push(d);
+        }
+        Lowered::Int(mut d) => {
+            d.origin = e.origin.clone();
+            program.int_defs.push(d);
+        }
+        Lowered::Bool(mut d) => {
+            d.origin = e.origin.clone();
+            program.bool_defs.push(d);
         }
     }
-    check_declarations(&program, &mut diags, file);
-    let info = check_program(&program, &mut diags, file);
-    if diags.has_errors() {
-        return Err(diags);
-    }
-    for w in gradient::warnings(&program, &info, file) {
-        diags.push(w);
-    }
-    let warnings = diags;
-    Ok((Shader::new_validated(program, info), warnings))
 }
 
 /// Duplicate or conflicting declarations.
@@ -199,47 +226,93 @@ struct Open {
 
 /// Structure, context rules and slot costs.
 fn check_program(p: &Program, diags: &mut Diagnostics, file: &SourceFile) -> Info {
-    let n = p.instructions.len();
-    let mut info = Info {
-        matching: vec![None; n],
-        main_end: n as u32,
-        slots: vec![0; n],
-        ..Info::default()
-    };
-    let declared_inputs: BTreeSet<(RegFile, u32)> =
-        p.inputs.iter().map(|d| (d.reg.file, d.reg.index)).collect();
-    let mut stack: Vec<Open> = Vec::new();
-    let mut in_main = true;
-    let mut calls: Vec<(usize, u32)> = Vec::new();
-    // Which subroutine (label number, or None for main) each index belongs to.
-    let mut owner: Vec<Option<u32>> = vec![None; n];
-    let mut current: Option<u32> = None;
-    let mut abs_consts = (None::<Span>, None::<Span>);
+    let mut c = Checker::new(p, diags, file);
     for (idx, ins) in p.instructions.iter().enumerate() {
-        let err = |d: Diagnostic| d.in_origin(&ins.origin, file);
-        let span = ins.origin.span;
-        let info_row = ins.op.info();
-        owner[idx] = current;
+        c.owner[idx] = c.current;
+        c.info.slots[idx] = slot_cost(p, ins);
+        c.check_declared(ins);
+        c.check_read_ports(ins);
+        c.check_relative(ins);
+        c.check_output(ins);
+        c.check_reachable(ins);
+        c.structure(idx, ins);
+    }
+    c.finish()
+}
 
-        // Slots: the table, cube samplers, predication.
-        let mut slots = info_row.slots;
-        if let Some(cube) = info_row.cube_slots {
-            if let Some(s) = ins.src.iter().find(|s| s.reg.file == RegFile::Sampler) {
-                if p.sampler_type(s.reg.index) == Some(isa::SamplerType::Cube) {
-                    slots = cube;
-                }
+/// An instruction's slots: the table, cube samplers, predication.
+fn slot_cost(p: &Program, ins: &Instruction) -> u32 {
+    let info_row = ins.op.info();
+    let mut slots = info_row.slots;
+    if let Some(cube) = info_row.cube_slots {
+        if let Some(s) = ins.src.iter().find(|s| s.reg.file == RegFile::Sampler) {
+            if p.sampler_type(s.reg.index) == Some(isa::SamplerType::Cube) {
+                slots = cube;
             }
         }
-        if ins.predicate.is_some() {
-            slots += 1;
-        }
-        info.slots[idx] = slots;
+    }
+    if ins.predicate.is_some() {
+        slots += 1;
+    }
+    slots
+}
 
-        // Declarations before use.
+/// The program-level pass's state as it walks the instructions in order:
+/// the open blocks, where main ends, the calls and which subroutine each
+/// instruction belongs to.
+struct Checker<'p, 'd> {
+    p: &'p Program,
+    diags: &'d mut Diagnostics,
+    file: &'p SourceFile,
+    info: Info,
+    declared_inputs: BTreeSet<(RegFile, u32)>,
+    stack: Vec<Open>,
+    in_main: bool,
+    calls: Vec<(usize, u32)>,
+    /// Which subroutine (label number, or None for main) each index belongs to.
+    owner: Vec<Option<u32>>,
+    current: Option<u32>,
+    /// The first constant read with `_abs`, and the first without.
+    abs_consts: (Option<Span>, Option<Span>),
+}
+
+impl<'p, 'd> Checker<'p, 'd> {
+    fn new(p: &'p Program, diags: &'d mut Diagnostics, file: &'p SourceFile) -> Self {
+        let n = p.instructions.len();
+        Checker {
+            p,
+            diags,
+            file,
+            info: Info {
+                matching: vec![None; n],
+                main_end: n as u32,
+                slots: vec![0; n],
+                ..Info::default()
+            },
+            declared_inputs: p.inputs.iter().map(|d| (d.reg.file, d.reg.index)).collect(),
+            stack: Vec::new(),
+            in_main: true,
+            calls: Vec::new(),
+            owner: vec![None; n],
+            current: None,
+            abs_consts: (None, None),
+        }
+    }
+
+    /// Reports `d` at instruction `ins` (with its REPEAT_BLOCK chain).
+    fn err(&mut self, ins: &Instruction, d: Diagnostic) {
+        self.diags.push(d.in_origin(&ins.origin, self.file));
+    }
+
+    /// Declarations before use; vFace only compared; which kind of constant
+    /// read (`_abs` or not) came first.
+    fn check_declared(&mut self, ins: &Instruction) {
+        let span = ins.origin.span;
         for s in &ins.src {
             match s.reg.file {
-                RegFile::Sampler if p.sampler_type(s.reg.index).is_none() => {
-                    diags.push(err(Diagnostic::error(
+                RegFile::Sampler if self.p.sampler_type(s.reg.index).is_none() => self.err(
+                    ins,
+                    Diagnostic::error(
                         span,
                         format!("sampler s{} is used but never declared", s.reg.index),
                     )
@@ -247,23 +320,27 @@ fn check_program(p: &Program, diags: &mut Diagnostics, file: &SourceFile) -> Inf
                     .with_help(format!(
                         "add `dcl_2d s{}` after the version line",
                         s.reg.index
-                    ))))
-                }
+                    )),
+                ),
                 RegFile::Input | RegFile::Position | RegFile::Face
-                    if !s.relative && !declared_inputs.contains(&(s.reg.file, s.reg.index)) =>
+                    if !s.relative
+                        && !self.declared_inputs.contains(&(s.reg.file, s.reg.index)) =>
                 {
-                    diags.push(err(Diagnostic::error(
-                        span,
-                        format!("input {} is used but never declared", s.reg),
+                    self.err(
+                        ins,
+                        Diagnostic::error(
+                            span,
+                            format!("input {} is used but never declared", s.reg),
+                        )
+                        .with_label("undeclared input")
+                        .with_help(match s.reg.file {
+                            RegFile::Input => format!(
+                                "add e.g. `dcl_texcoord{0} v{0}` after the version line",
+                                s.reg.index
+                            ),
+                            _ => format!("add `dcl {}` after the version line", s.reg),
+                        }),
                     )
-                    .with_label("undeclared input")
-                    .with_help(match s.reg.file {
-                        RegFile::Input => format!(
-                            "add e.g. `dcl_texcoord{0} v{0}` after the version line",
-                            s.reg.index
-                        ),
-                        _ => format!("add `dcl {}` after the version line", s.reg),
-                    })))
                 }
                 _ => {}
             }
@@ -276,38 +353,46 @@ fn check_program(p: &Program, diags: &mut Diagnostics, file: &SourceFile) -> Inf
             if s.reg.file == RegFile::Face
                 && !matches!(ins.op, Opcode::Setp | Opcode::Ifc | Opcode::BreakC)
             {
-                diags.push(err(Diagnostic::warning(
-                    span,
-                    "vFace is documented only as a comparison operand (setp, if_comp, break_comp)",
-                )
-                .with_label("vFace used as a value")
-                .with_note(
-                    "Windows' runtime accepts it; only its sign is defined (negative: back face)",
-                )));
+                self.err(
+                    ins,
+                    Diagnostic::warning(
+                        span,
+                        "vFace is documented only as a comparison operand (setp, if_comp, break_comp)",
+                    )
+                    .with_label("vFace used as a value")
+                    .with_note(
+                        "Windows' runtime accepts it; only its sign is defined (negative: back face)",
+                    ),
+                );
             }
             if s.reg.file == RegFile::Const {
                 let abs = matches!(s.modifier, SrcMod::Abs | SrcMod::NegAbs);
                 if abs {
-                    abs_consts.0.get_or_insert(span);
+                    self.abs_consts.0.get_or_insert(span);
                 } else {
-                    abs_consts.1.get_or_insert(span);
+                    self.abs_consts.1.get_or_insert(span);
                 }
             }
         }
         if ins.op == Opcode::TexKill {
             if let Some(d) = &ins.dst {
                 if d.reg.file == RegFile::Input
-                    && !declared_inputs.contains(&(d.reg.file, d.reg.index))
+                    && !self.declared_inputs.contains(&(d.reg.file, d.reg.index))
                 {
-                    diags.push(err(Diagnostic::error(
-                        span,
-                        format!("input {} is used but never declared", d.reg),
-                    )));
+                    self.err(
+                        ins,
+                        Diagnostic::error(
+                            span,
+                            format!("input {} is used but never declared", d.reg),
+                        ),
+                    );
                 }
             }
         }
+    }
 
-        // Read ports: distinct registers per file (Microsoft's register table).
+    /// Read ports: distinct registers per file (Microsoft's register table).
+    fn check_read_ports(&mut self, ins: &Instruction) {
         let mut per_file: BTreeMap<RegFile, BTreeSet<(u32, bool)>> = BTreeMap::new();
         for s in &ins.src {
             per_file
@@ -320,242 +405,319 @@ fn check_program(p: &Program, diags: &mut Diagnostics, file: &SourceFile) -> Inf
             if regs.len() as u32 > ports
                 && matches!(f, RegFile::Temp | RegFile::Const | RegFile::Input)
             {
-                diags.push(err(Diagnostic::error(
-                    span,
-                    format!(
-                        "reads {} different {} registers; ps_3_0 allows {}",
-                        regs.len(),
-                        f.info().name,
-                        ports
-                    ),
-                )
-                .with_label("too many read ports")
-                .with_help(format!(
-                    "copy one of them into a temporary r# first (one {}# per instruction)",
-                    f.info().name
-                ))));
-            }
-        }
-
-        // aL and relative addressing only inside loop.
-        let in_loop = stack.iter().any(|o| o.block == Block::Loop);
-        if !in_loop && ins.src.iter().any(|s| s.relative) {
-            diags.push(err(Diagnostic::error(
-                span,
-                "v[aL + n] used outside a loop",
-            )
-            .with_label("aL is only defined inside loop … endloop")
-            .with_help(
-                "wrap it in `loop aL, i#` … `endloop` (rep does not set aL)",
-            )));
-        }
-
-        // Outputs are not written under dynamic flow control or predication.
-        if let Some(d) = &ins.dst {
-            if d.reg.file == RegFile::ColorOut && ins.op.class() != Class::Flow {
-                let dynamic = stack.iter().any(|o| o.block == Block::IfDynamic);
-                if dynamic || ins.predicate.is_some() {
-                    diags.push(err(Diagnostic::error(span, format!("{} is written inside dynamic flow control or predication", d.reg))
-                        .with_label("not allowed in ps_3_0")
-                        .with_help("compute the value into r# inside the branch and write oC# once, outside it")));
-                }
-            }
-        }
-
-        if !in_main && current.is_none() && ins.op != Opcode::Label {
-            diags.push(err(Diagnostic::error(
-                span,
-                "instruction after the end of main and outside any subroutine",
-            )
-            .with_label("unreachable")
-            .with_help("code after `ret` must start with `label l#`")));
-        }
-
-        // Structure.
-        let loop_depth = stack
-            .iter()
-            .filter(|o| matches!(o.block, Block::Rep | Block::Loop))
-            .count() as u32;
-        let static_depth = stack.iter().filter(|o| o.block == Block::IfStatic).count() as u32;
-        let dynamic_depth = stack.iter().filter(|o| o.block == Block::IfDynamic).count() as u32;
-        match ins.op {
-            Opcode::Rep | Opcode::Loop => {
-                if loop_depth >= isa::MAX_LOOP_NESTING {
-                    diags.push(err(Diagnostic::error(
-                        span,
-                        format!("rep/loop nested more than {} deep", isa::MAX_LOOP_NESTING),
-                    )
-                    .with_label("too deep")));
-                }
-                let block = if ins.op == Opcode::Rep {
-                    Block::Rep
-                } else {
-                    Block::Loop
-                };
-                stack.push(Open {
-                    block,
-                    index: idx,
-                    span,
-                    seen_else: false,
-                });
-                check_int_operand(p, ins, diags, file);
-            }
-            Opcode::If | Opcode::Ifc => {
-                let block = if ins.op == Opcode::If && ins.src[0].reg.file == RegFile::ConstBool {
-                    Block::IfStatic
-                } else {
-                    Block::IfDynamic
-                };
-                let (depth, max, kind) = if block == Block::IfStatic {
-                    (static_depth, isa::MAX_STATIC_NESTING, "static")
-                } else {
-                    (dynamic_depth, isa::MAX_DYNAMIC_NESTING, "dynamic")
-                };
-                if depth >= max {
-                    diags.push(err(Diagnostic::error(
-                        span,
-                        format!("{kind} if nested more than {max} deep"),
-                    )
-                    .with_label("too deep")));
-                }
-                stack.push(Open {
-                    block,
-                    index: idx,
-                    span,
-                    seen_else: false,
-                });
-            }
-            Opcode::Else => match stack.last_mut() {
-                Some(o)
-                    if matches!(o.block, Block::IfStatic | Block::IfDynamic) && !o.seen_else =>
-                {
-                    o.seen_else = true;
-                    info.matching[o.index] = Some(idx as u32);
-                    o.index = idx;
-                }
-                Some(o) if matches!(o.block, Block::IfStatic | Block::IfDynamic) => diags.push(
-                    err(Diagnostic::error(span, "second `else` for the same `if`")
-                        .with_secondary(o.span, "this if")),
-                ),
-                other => diags.push(err(mismatch(span, "else", "if", other.map(|o| &*o)))),
-            },
-            Opcode::EndIf => match stack.last() {
-                Some(o) if matches!(o.block, Block::IfStatic | Block::IfDynamic) => {
-                    info.matching[o.index] = Some(idx as u32);
-                    stack.pop();
-                }
-                other => diags.push(err(mismatch(span, "endif", "if", other))),
-            },
-            Opcode::EndRep | Opcode::EndLoop => {
-                let (want, name, opener) = if ins.op == Opcode::EndRep {
-                    (Block::Rep, "endrep", "rep")
-                } else {
-                    (Block::Loop, "endloop", "loop")
-                };
-                match stack.last() {
-                    Some(o) if o.block == want => {
-                        info.matching[o.index] = Some(idx as u32);
-                        info.matching[idx] = Some(o.index as u32);
-                        stack.pop();
-                    }
-                    other => diags.push(err(mismatch(span, name, opener, other))),
-                }
-            }
-            Opcode::Break | Opcode::BreakC | Opcode::BreakP if loop_depth == 0 => {
-                diags.push(err(Diagnostic::error(span, "break outside rep or loop")
-                    .with_label("nothing to break out of")));
-            }
-            Opcode::Call | Opcode::CallNz => calls.push((idx, ins.src[0].reg.index)),
-            Opcode::Ret => {
-                if let Some(o) = stack.last() {
-                    diags.push(err(Diagnostic::error(span, "ret inside an open block")
-                        .with_secondary(o.span, "block opened here")
-                        .with_help("close the block before ret")));
-                }
-                if in_main {
-                    in_main = false;
-                    info.main_end = idx as u32 + 1;
-                }
-                current = None;
-            }
-            Opcode::Label => {
-                let label = ins.src[0].reg.index;
-                let after_ret = idx > 0 && p.instructions[idx - 1].op == Opcode::Ret;
-                if !after_ret {
-                    diags.push(err(Diagnostic::error(
-                        span,
-                        "label must immediately follow a ret",
-                    )
-                    .with_label("subroutines start after the end of main")
-                    .with_help("end main (or the previous subroutine) with ret")));
-                }
-                if let Some(prev) = info.labels.insert(label, idx as u32) {
-                    diags.push(err(Diagnostic::error(
-                        span,
-                        format!("label l{label} is defined twice"),
-                    )
-                    .with_secondary(
-                        p.instructions[prev as usize].origin.span,
-                        "first defined here",
-                    )));
-                }
-                if in_main {
-                    in_main = false;
-                    info.main_end = idx as u32;
-                }
-                current = Some(label);
-                owner[idx] = current;
-            }
-            _ => {}
-        }
-    }
-    for o in stack.iter().rev() {
-        let (what, close) = match o.block {
-            Block::Rep => ("rep", "endrep"),
-            Block::Loop => ("loop", "endloop"),
-            _ => ("if", "endif"),
-        };
-        diags.push(
-            Diagnostic::error(o.span, format!("`{what}` is never closed"))
-                .with_label("opened here")
-                .with_help(format!("add `{close}` at the end of the block"))
-                .in_origin(&p.instructions[o.index].origin, file),
-        );
-    }
-    // A subroutine ends at its ret (Microsoft, `ret - ps`: the first ret
-    // is the end of the main program or subroutine; ret is optional only at
-    // the end of a shader without subroutines), so the last one must end
-    // with one too: the others are followed by a `label`, which must follow
-    // a ret.
-    if let Some(label) = current {
-        if p.instructions.last().map(|i| i.op) != Some(Opcode::Ret) {
-            let at = info
-                .labels
-                .get(&label)
-                .map(|&i| &p.instructions[i as usize]);
-            if let Some(at) = at {
-                diags.push(
+                self.err(
+                    ins,
                     Diagnostic::error(
-                        at.origin.span,
-                        format!("subroutine l{label} does not end with ret"),
+                        ins.origin.span,
+                        format!(
+                            "reads {} different {} registers; ps_3_0 allows {}",
+                            regs.len(),
+                            f.info().name,
+                            ports
+                        ),
                     )
-                    .with_label("the subroutine starts here and runs to the end of the file")
-                    .with_help("end every subroutine with ret; only a shader without subroutines may leave out the final ret")
-                    .in_origin(&at.origin, file),
+                    .with_label("too many read ports")
+                    .with_help(format!(
+                        "copy one of them into a temporary r# first (one {}# per instruction)",
+                        f.info().name
+                    )),
                 );
             }
         }
     }
-    if let (Some(a), Some(b)) = abs_consts {
-        diags.push(
-            Diagnostic::error(a.max(b), "constants are read both with and without _abs")
-                .with_secondary(a.min(b), "the other kind")
-                .with_help("in ps_3_0 either every c# read uses _abs or none does"),
-        );
+
+    /// aL and relative addressing only inside loop.
+    fn check_relative(&mut self, ins: &Instruction) {
+        let in_loop = self.stack.iter().any(|o| o.block == Block::Loop);
+        if !in_loop && ins.src.iter().any(|s| s.relative) {
+            self.err(
+                ins,
+                Diagnostic::error(ins.origin.span, "v[aL + n] used outside a loop")
+                    .with_label("aL is only defined inside loop … endloop")
+                    .with_help("wrap it in `loop aL, i#` … `endloop` (rep does not set aL)"),
+            );
+        }
     }
-    check_calls(p, &info, &calls, &owner, diags, file);
-    info.total_slots = info.slots.iter().sum();
-    info
+
+    /// Outputs are not written under dynamic flow control or predication.
+    fn check_output(&mut self, ins: &Instruction) {
+        if let Some(d) = &ins.dst {
+            if d.reg.file == RegFile::ColorOut && ins.op.class() != Class::Flow {
+                let dynamic = self.stack.iter().any(|o| o.block == Block::IfDynamic);
+                if dynamic || ins.predicate.is_some() {
+                    self.err(ins, Diagnostic::error(ins.origin.span, format!("{} is written inside dynamic flow control or predication", d.reg))
+                        .with_label("not allowed in ps_3_0")
+                        .with_help("compute the value into r# inside the branch and write oC# once, outside it"));
+                }
+            }
+        }
+    }
+
+    /// After main has ended, only subroutines (from a label on) have code.
+    fn check_reachable(&mut self, ins: &Instruction) {
+        if !self.in_main && self.current.is_none() && ins.op != Opcode::Label {
+            self.err(
+                ins,
+                Diagnostic::error(
+                    ins.origin.span,
+                    "instruction after the end of main and outside any subroutine",
+                )
+                .with_label("unreachable")
+                .with_help("code after `ret` must start with `label l#`"),
+            );
+        }
+    }
+
+    /// Open blocks of the given kinds.
+    fn depth(&self, blocks: &[Block]) -> u32 {
+        self.stack
+            .iter()
+            .filter(|o| blocks.contains(&o.block))
+            .count() as u32
+    }
+
+    /// Structure: blocks, their matching instructions and nesting limits,
+    /// `break` placement, calls, the end of main and subroutines.
+    fn structure(&mut self, idx: usize, ins: &Instruction) {
+        let span = ins.origin.span;
+        match ins.op {
+            Opcode::Rep | Opcode::Loop => self.open_loop(idx, ins),
+            Opcode::If | Opcode::Ifc => self.open_if(idx, ins),
+            Opcode::Else => self.else_branch(idx, ins),
+            Opcode::EndIf => match self.stack.last() {
+                Some(o) if matches!(o.block, Block::IfStatic | Block::IfDynamic) => {
+                    self.info.matching[o.index] = Some(idx as u32);
+                    self.stack.pop();
+                }
+                other => {
+                    let d = mismatch(span, "endif", "if", other);
+                    self.err(ins, d)
+                }
+            },
+            Opcode::EndRep | Opcode::EndLoop => self.close_loop(idx, ins),
+            Opcode::Break | Opcode::BreakC | Opcode::BreakP
+                if self.depth(&[Block::Rep, Block::Loop]) == 0 =>
+            {
+                self.err(
+                    ins,
+                    Diagnostic::error(span, "break outside rep or loop")
+                        .with_label("nothing to break out of"),
+                );
+            }
+            Opcode::Call | Opcode::CallNz => self.calls.push((idx, ins.src[0].reg.index)),
+            Opcode::Ret => self.ret(idx, ins),
+            Opcode::Label => self.label(idx, ins),
+            _ => {}
+        }
+    }
+
+    /// `rep` / `loop`: the nesting limit and the loop count's range.
+    fn open_loop(&mut self, idx: usize, ins: &Instruction) {
+        let span = ins.origin.span;
+        if self.depth(&[Block::Rep, Block::Loop]) >= isa::MAX_LOOP_NESTING {
+            self.err(
+                ins,
+                Diagnostic::error(
+                    span,
+                    format!("rep/loop nested more than {} deep", isa::MAX_LOOP_NESTING),
+                )
+                .with_label("too deep"),
+            );
+        }
+        let block = if ins.op == Opcode::Rep {
+            Block::Rep
+        } else {
+            Block::Loop
+        };
+        self.stack.push(Open {
+            block,
+            index: idx,
+            span,
+            seen_else: false,
+        });
+        check_int_operand(self.p, ins, self.diags, self.file);
+    }
+
+    /// `if` / `if_comp`: static (`if b#`) or dynamic, each with its nesting
+    /// limit.
+    fn open_if(&mut self, idx: usize, ins: &Instruction) {
+        let span = ins.origin.span;
+        let block = if ins.op == Opcode::If && ins.src[0].reg.file == RegFile::ConstBool {
+            Block::IfStatic
+        } else {
+            Block::IfDynamic
+        };
+        let (max, kind) = if block == Block::IfStatic {
+            (isa::MAX_STATIC_NESTING, "static")
+        } else {
+            (isa::MAX_DYNAMIC_NESTING, "dynamic")
+        };
+        if self.depth(&[block]) >= max {
+            self.err(
+                ins,
+                Diagnostic::error(span, format!("{kind} if nested more than {max} deep"))
+                    .with_label("too deep"),
+            );
+        }
+        self.stack.push(Open {
+            block,
+            index: idx,
+            span,
+            seen_else: false,
+        });
+    }
+
+    /// `else`: once per `if`; the `if` matches it, it matches the `endif`.
+    fn else_branch(&mut self, idx: usize, ins: &Instruction) {
+        let span = ins.origin.span;
+        let d = match self.stack.last_mut() {
+            Some(o) if matches!(o.block, Block::IfStatic | Block::IfDynamic) && !o.seen_else => {
+                o.seen_else = true;
+                self.info.matching[o.index] = Some(idx as u32);
+                o.index = idx;
+                return;
+            }
+            Some(o) if matches!(o.block, Block::IfStatic | Block::IfDynamic) => {
+                Diagnostic::error(span, "second `else` for the same `if`")
+                    .with_secondary(o.span, "this if")
+            }
+            other => mismatch(span, "else", "if", other.map(|o| &*o)),
+        };
+        self.err(ins, d);
+    }
+
+    /// `endrep` / `endloop`: the loop and its end match each other.
+    fn close_loop(&mut self, idx: usize, ins: &Instruction) {
+        let (want, name, opener) = if ins.op == Opcode::EndRep {
+            (Block::Rep, "endrep", "rep")
+        } else {
+            (Block::Loop, "endloop", "loop")
+        };
+        match self.stack.last() {
+            Some(o) if o.block == want => {
+                self.info.matching[o.index] = Some(idx as u32);
+                self.info.matching[idx] = Some(o.index as u32);
+                self.stack.pop();
+            }
+            other => {
+                let d = mismatch(ins.origin.span, name, opener, other);
+                self.err(ins, d)
+            }
+        }
+    }
+
+    /// `ret`: no block open; the first one ends main.
+    fn ret(&mut self, idx: usize, ins: &Instruction) {
+        if let Some(o) = self.stack.last() {
+            let d = Diagnostic::error(ins.origin.span, "ret inside an open block")
+                .with_secondary(o.span, "block opened here")
+                .with_help("close the block before ret");
+            self.err(ins, d);
+        }
+        if self.in_main {
+            self.in_main = false;
+            self.info.main_end = idx as u32 + 1;
+        }
+        self.current = None;
+    }
+
+    /// `label l#`: right after a `ret`, defined once; it starts a
+    /// subroutine (and ends main if no `ret` did).
+    fn label(&mut self, idx: usize, ins: &Instruction) {
+        let span = ins.origin.span;
+        let label = ins.src[0].reg.index;
+        let after_ret = idx > 0 && self.p.instructions[idx - 1].op == Opcode::Ret;
+        if !after_ret {
+            self.err(
+                ins,
+                Diagnostic::error(span, "label must immediately follow a ret")
+                    .with_label("subroutines start after the end of main")
+                    .with_help("end main (or the previous subroutine) with ret"),
+            );
+        }
+        if let Some(prev) = self.info.labels.insert(label, idx as u32) {
+            self.err(
+                ins,
+                Diagnostic::error(span, format!("label l{label} is defined twice")).with_secondary(
+                    self.p.instructions[prev as usize].origin.span,
+                    "first defined here",
+                ),
+            );
+        }
+        if self.in_main {
+            self.in_main = false;
+            self.info.main_end = idx as u32;
+        }
+        self.current = Some(label);
+        self.owner[idx] = self.current;
+    }
+
+    /// A subroutine ends at its ret (Microsoft, `ret - ps`: the first ret
+    /// is the end of the main program or subroutine; ret is optional only at
+    /// the end of a shader without subroutines), so the last one must end
+    /// with one too: the others are followed by a `label`, which must follow
+    /// a ret.
+    fn check_final_ret(&mut self) {
+        let p = self.p;
+        if let Some(label) = self.current {
+            if p.instructions.last().map(|i| i.op) != Some(Opcode::Ret) {
+                let at = self
+                    .info
+                    .labels
+                    .get(&label)
+                    .map(|&i| &p.instructions[i as usize]);
+                if let Some(at) = at {
+                    self.diags.push(
+                        Diagnostic::error(
+                            at.origin.span,
+                            format!("subroutine l{label} does not end with ret"),
+                        )
+                        .with_label("the subroutine starts here and runs to the end of the file")
+                        .with_help("end every subroutine with ret; only a shader without subroutines may leave out the final ret")
+                        .in_origin(&at.origin, self.file),
+                    );
+                }
+            }
+        }
+    }
+
+    /// After the last instruction: blocks never closed, a last subroutine
+    /// without its ret, mixed `_abs` constant reads, the call graph; the
+    /// total slot count.
+    fn finish(mut self) -> Info {
+        let p = self.p;
+        for o in self.stack.iter().rev() {
+            let (what, close) = match o.block {
+                Block::Rep => ("rep", "endrep"),
+                Block::Loop => ("loop", "endloop"),
+                _ => ("if", "endif"),
+            };
+            self.diags.push(
+                Diagnostic::error(o.span, format!("`{what}` is never closed"))
+                    .with_label("opened here")
+                    .with_help(format!("add `{close}` at the end of the block"))
+                    .in_origin(&p.instructions[o.index].origin, self.file),
+            );
+        }
+        self.check_final_ret();
+        if let (Some(a), Some(b)) = self.abs_consts {
+            self.diags.push(
+                Diagnostic::error(a.max(b), "constants are read both with and without _abs")
+                    .with_secondary(a.min(b), "the other kind")
+                    .with_help("in ps_3_0 either every c# read uses _abs or none does"),
+            );
+        }
+        check_calls(
+            p,
+            &self.info,
+            &self.calls,
+            &self.owner,
+            self.diags,
+            self.file,
+        );
+        self.info.total_slots = self.info.slots.iter().sum();
+        self.info
+    }
 }
 
 fn mismatch(span: Span, closer: &str, opener: &str, open: Option<&Open>) -> Diagnostic {

@@ -6,7 +6,7 @@
 use super::asm::{self, Counts, Pass1Form, Pass2Form};
 use super::fit::{balanced, Fitter};
 use super::plan::{self, f16_holds};
-use super::GenError;
+use super::{Checked, GenError};
 use crate::core::cost::Profile;
 use crate::core::numbers::{size, thousands};
 use serde::Serialize;
@@ -151,22 +151,27 @@ fn checked_lines(profile: &Profile, slots: u64, executed: u64) -> Vec<String> {
     ]
 }
 
-/// Writes, checks and heads one pass-1 listing.
-#[allow(clippy::too_many_arguments)]
-fn pass1_shader(
-    fitter: &mut Fitter<'_>,
-    fr: &Frame,
+/// What one pass-1 listing is: its form and role, the block it serves, the
+/// texels per line it reads (`taps`: the block width, or what the last
+/// column has left) and, for the last column, the main shader's file.
+struct Pass1Spec<'a> {
     form: Pass1Form,
     role: Role,
     block: (u32, u32),
     taps: u32,
+    main_file: Option<&'a str>,
+}
+
+/// Writes, checks and heads one pass-1 listing.
+fn pass1_shader(
+    fitter: &mut Fitter<'_>,
+    fr: &Frame,
+    spec: &Pass1Spec,
     macros: bool,
-    main_file: Option<&str>,
 ) -> Result<Result<Generated, String>, GenError> {
     let profile = fitter.profile().clone();
-    let (bw, bh) = block;
-    let rows = bh;
-    let (nx, ny) = (fr.w.div_ceil(bw), fr.h.div_ceil(bh));
+    let (form, role, taps) = (spec.form, spec.role, spec.taps);
+    let rows = spec.block.1;
     let file = match role {
         Role::LastColumn => format!("pass1_last_{}_{taps}x{rows}.psh", form.name()),
         _ => format!("pass1_{}_{taps}x{rows}.psh", form.name()),
@@ -180,126 +185,18 @@ fn pass1_shader(
             c.problems.join("; ")
         )));
     }
-    let mut h = Vec::new();
-    match role {
-        Role::LastColumn => h.push(format!(
-            "{HEADER} luminance pass 1 for the LAST column of {} blocks, {} form, reading {taps}×{rows} texels, for a {} frame",
-            size(bw, bh),
-            form.name(),
-            size(fr.w, fr.h)
-        )),
-        _ => h.push(format!(
-            "{HEADER} luminance pass 1, {} form, {} blocks, for a {} frame",
-            form.name(),
-            size(bw, bh),
-            size(fr.w, fr.h)
-        )),
-    }
+    let mut h = vec![spec.title(fr)];
     h.push("Generated: edit ps30's generator (src/jobs/gen/), not this file.".into());
     h.push(String::new());
     h.extend(checked_lines(&profile, c.slots, c.executed));
     h.push(String::new());
-    let walk = match form {
-        Pass1Form::Unrolled => format!(
-            "rep i2 over {rows} lines, the line's {taps} texels unrolled (texld, dp4, log, add each)"
-        ),
-        Pass1Form::Loop => {
-            format!("rep i2 over {rows} lines, rep i1 over the line's {taps} texels")
-        }
-    };
-    match role {
-        Role::LastColumn => {
-            h.push(format!(
-                "Each pixel of column {} of the {} target sums log2|delta + L| over the {taps} texels per line the frame still has there",
-                nx - 1,
-                size(nx, ny)
-            ));
-            h.push(format!(
-                "({} − {}·{bw} = {taps}), not {bw}: no BORDER padding in x. {walk}.",
-                fr.w,
-                nx - 1
-            ));
-            h.push(format!(
-                "This is the article's \"non-unrolled version for the last column\"{}.",
-                if form == Pass1Form::Unrolled {
-                    " — unrolled here, because the non-unrolled one would exceed the executed limit"
-                } else {
-                    ""
-                }
-            ));
-            h.push(if nx > 1 {
-                format!(
-                    "Draw: a second draw over target column x = {} only (a {} quad), after {} has drawn columns 0 … {}.",
-                    nx - 1,
-                    size(1, ny),
-                    main_file.unwrap_or("the main pass-1 shader"),
-                    nx - 2
-                )
-            } else {
-                "Draw: the only pass-1 draw (the frame is narrower than one block).".to_string()
-            });
-        }
-        _ => {
-            h.push(format!(
-                "Each pixel (x, y) of the {} target sums log2|delta + L| over one {} block: {walk}.",
-                size(nx, ny),
-                size(bw, bh)
-            ));
-        }
-    }
+    h.extend(spec.description(fr));
     h.push(String::new());
     h.extend(CORRECTIONS.iter().map(|s| s.to_string()));
     h.push(String::new());
-    let samples = taps as u64 * rows as u64;
-    h.push(if f16_holds(samples, fr.delta) {
-        format!(
-            "Target format: R32F or A16B16G16R16F (|sum| ≤ {} × {:.2} ≤ 65,504).",
-            thousands(samples),
-            plan::largest_term(fr.delta)
-        )
-    } else {
-        format!(
-            "Target format: D3DFMT_R32F. An f16 target cannot hold every sum: {} samples × up to {:.2} exceeds 65,504.",
-            thousands(samples),
-            plan::largest_term(fr.delta)
-        )
-    });
-    h.push("The application sets:".into());
-    let x0 = match role {
-        Role::LastColumn => format!("{}·{bw}", nx - 1),
-        _ => format!("x·{bw}"),
-    };
-    h.push(format!(
-        "  v0.xy = (({x0} + 0.5)/{}, (y·{bh} + 0.5)/{}) at target pixel (x, y): the centre of the block's top-left texel",
-        fr.w, fr.h
-    ));
-    h.push("  c0.z  = 0".into());
-    h.push(format!(
-        "  c1    = (1/{}, 1/{}, 0, 1) = ({}, {}, 0, 1)",
-        fr.w,
-        fr.h,
-        f32_text(1.0 / fr.w as f64),
-        f32_text(1.0 / fr.h as f64)
-    ));
-    h.push(format!(
-        "  c3    = (0.27, 0.67, 0.06, sqrt(delta)); delta = {} gives c3.w = {}",
-        fr.delta as f32,
-        f32_text((fr.delta as f32).sqrt() as f64)
-    ));
-    h.push("  s0    = the frame: point filtering, BORDER addressing, border colour 0".into());
-    h.push(match form {
-        Pass1Form::Unrolled => format!("  i2    = nothing to set: `defi i2, {rows}` in the shader"),
-        Pass1Form::Loop => format!(
-            "  i1, i2 = nothing to set: `defi i1, {taps}` and `defi i2, {rows}` in the shader"
-        ),
-    });
-    let text = format!("{}{body}", asm::comment_block(&h));
-    // The header is comments only: the program, and so its figures, are
-    // unchanged. Check the final text anyway.
-    let again = super::check(&file, &text, &profile)?;
-    if (again.slots, again.executed) != (c.slots, c.executed) {
-        return Err(GenError(format!("{file}: the header changed the program")));
-    }
+    h.push(spec.target_format(fr));
+    h.extend(spec.application_sets(fr));
+    let text = headed(&file, &h, &body, &profile, &c)?;
     Ok(Ok(Generated {
         file,
         role,
@@ -309,6 +206,158 @@ fn pass1_shader(
         executed: c.executed,
         text,
     }))
+}
+
+impl Pass1Spec<'_> {
+    /// The header's first line.
+    fn title(&self, fr: &Frame) -> String {
+        let (bw, bh) = self.block;
+        let (taps, rows) = (self.taps, bh);
+        match self.role {
+            Role::LastColumn => format!(
+                "{HEADER} luminance pass 1 for the LAST column of {} blocks, {} form, reading {taps}×{rows} texels, for a {} frame",
+                size(bw, bh),
+                self.form.name(),
+                size(fr.w, fr.h)
+            ),
+            _ => format!(
+                "{HEADER} luminance pass 1, {} form, {} blocks, for a {} frame",
+                self.form.name(),
+                size(bw, bh),
+                size(fr.w, fr.h)
+            ),
+        }
+    }
+
+    /// What each pixel of the target sums, and for the last column how it
+    /// is drawn.
+    fn description(&self, fr: &Frame) -> Vec<String> {
+        let (bw, bh) = self.block;
+        let (taps, rows) = (self.taps, bh);
+        let (nx, ny) = (fr.w.div_ceil(bw), fr.h.div_ceil(bh));
+        let walk = match self.form {
+            Pass1Form::Unrolled => format!(
+                "rep i2 over {rows} lines, the line's {taps} texels unrolled (texld, dp4, log, add each)"
+            ),
+            Pass1Form::Loop => {
+                format!("rep i2 over {rows} lines, rep i1 over the line's {taps} texels")
+            }
+        };
+        match self.role {
+            Role::LastColumn => vec![
+                format!(
+                    "Each pixel of column {} of the {} target sums log2|delta + L| over the {taps} texels per line the frame still has there",
+                    nx - 1,
+                    size(nx, ny)
+                ),
+                format!(
+                    "({} − {}·{bw} = {taps}), not {bw}: no BORDER padding in x. {walk}.",
+                    fr.w,
+                    nx - 1
+                ),
+                format!(
+                    "This is the article's \"non-unrolled version for the last column\"{}.",
+                    if self.form == Pass1Form::Unrolled {
+                        " — unrolled here, because the non-unrolled one would exceed the executed limit"
+                    } else {
+                        ""
+                    }
+                ),
+                if nx > 1 {
+                    format!(
+                        "Draw: a second draw over target column x = {} only (a {} quad), after {} has drawn columns 0 … {}.",
+                        nx - 1,
+                        size(1, ny),
+                        self.main_file.unwrap_or("the main pass-1 shader"),
+                        nx - 2
+                    )
+                } else {
+                    "Draw: the only pass-1 draw (the frame is narrower than one block).".to_string()
+                },
+            ],
+            _ => vec![format!(
+                "Each pixel (x, y) of the {} target sums log2|delta + L| over one {} block: {walk}.",
+                size(nx, ny),
+                size(bw, bh)
+            )],
+        }
+    }
+
+    /// The target formats that hold every block sum.
+    fn target_format(&self, fr: &Frame) -> String {
+        let samples = self.taps as u64 * self.block.1 as u64;
+        if f16_holds(samples, fr.delta) {
+            format!(
+                "Target format: R32F or A16B16G16R16F (|sum| ≤ {} × {:.2} ≤ 65,504).",
+                thousands(samples),
+                plan::largest_term(fr.delta)
+            )
+        } else {
+            format!(
+                "Target format: D3DFMT_R32F. An f16 target cannot hold every sum: {} samples × up to {:.2} exceeds 65,504.",
+                thousands(samples),
+                plan::largest_term(fr.delta)
+            )
+        }
+    }
+
+    /// The inputs, constants and sampler the application sets.
+    fn application_sets(&self, fr: &Frame) -> Vec<String> {
+        let (bw, bh) = self.block;
+        let (taps, rows) = (self.taps, bh);
+        let nx = fr.w.div_ceil(bw);
+        let x0 = match self.role {
+            Role::LastColumn => format!("{}·{bw}", nx - 1),
+            _ => format!("x·{bw}"),
+        };
+        vec![
+            "The application sets:".into(),
+            format!(
+                "  v0.xy = (({x0} + 0.5)/{}, (y·{bh} + 0.5)/{}) at target pixel (x, y): the centre of the block's top-left texel",
+                fr.w, fr.h
+            ),
+            "  c0.z  = 0".into(),
+            format!(
+                "  c1    = (1/{}, 1/{}, 0, 1) = ({}, {}, 0, 1)",
+                fr.w,
+                fr.h,
+                f32_text(1.0 / fr.w as f64),
+                f32_text(1.0 / fr.h as f64)
+            ),
+            format!(
+                "  c3    = (0.27, 0.67, 0.06, sqrt(delta)); delta = {} gives c3.w = {}",
+                fr.delta as f32,
+                f32_text((fr.delta as f32).sqrt() as f64)
+            ),
+            "  s0    = the frame: point filtering, BORDER addressing, border colour 0".into(),
+            match self.form {
+                Pass1Form::Unrolled => {
+                    format!("  i2    = nothing to set: `defi i2, {rows}` in the shader")
+                }
+                Pass1Form::Loop => format!(
+                    "  i1, i2 = nothing to set: `defi i1, {taps}` and `defi i2, {rows}` in the shader"
+                ),
+            },
+        ]
+    }
+}
+
+/// `body` under the comment header `h`. The header is comments only: the
+/// program, and so its figures (`c`), are unchanged. The final text is
+/// checked anyway.
+fn headed(
+    file: &str,
+    h: &[String],
+    body: &str,
+    profile: &Profile,
+    c: &Checked,
+) -> Result<String, GenError> {
+    let text = format!("{}{body}", asm::comment_block(h));
+    let again = super::check(file, &text, profile)?;
+    if (again.slots, again.executed) != (c.slots, c.executed) {
+        return Err(GenError(format!("{file}: the header changed the program")));
+    }
+    Ok(text)
 }
 
 /// Writes, checks and heads one pass-2 listing; `uses` lists (what, P) for
@@ -403,11 +452,7 @@ fn pass2_shader(
     if choice.form != Pass2Form::Unrolled {
         h.push("  i0, i1 = nothing to set: defined in the shader (defi)".into());
     }
-    let text = format!("{}{body}", asm::comment_block(&h));
-    let again = super::check(&file, &text, &profile)?;
-    if (again.slots, again.executed) != (c.slots, c.executed) {
-        return Err(GenError(format!("{file}: the header changed the program")));
-    }
+    let text = headed(&file, &h, &body, &profile, &c)?;
     Ok(Ok(Generated {
         file,
         role: Role::Pass2,
@@ -422,239 +467,244 @@ fn pass2_shader(
 /// A pass-1 form and its block.
 type Pick = (Pass1Form, (u32, u32));
 
-/// The blocks a request asks for, one per form, with notes on how they were
-/// chosen; forms that cannot be fitted go to `problems`.
-fn choose_blocks(
-    fitter: &mut Fitter<'_>,
-    req: &Request,
-    notes: &mut Vec<String>,
-    problems: &mut Vec<String>,
-) -> Result<Vec<Pick>, GenError> {
-    let (w, h) = req.frame;
-    let mut out: Vec<Pick> = Vec::new();
-    for &(form, choice) in &req.picks {
-        let before = out.len();
-        match choice {
-            BlockChoice::Given(bw, bh) => {
-                if let Some(why) = fitter.pass1_unwritable(form, bw, bh) {
-                    problems.push(format!("pass 1, {} form, {bw}×{bh}: {why}", form.name()));
-                    continue;
-                }
-                out.push((form, (bw, bh)));
-            }
-            BlockChoice::Fit if form == Pass1Form::Unrolled => {
-                let Some(n) = fitter.widest(form, w)? else {
-                    problems.push(format!(
-                        "the unrolled form does not fit this profile even for one texel per line: {}",
-                        fitter
-                            .pass1(form, 1, 1)?
-                            .map(|c| c.problems.join("; "))
-                            .or_else(|| fitter.pass1_unwritable(form, 1, 1))
-                            .unwrap_or_default()
-                    ));
-                    continue;
-                };
-                let at = fitter.pass1(form, n, 1)?.map(|c| c.slots).unwrap_or(0);
-                let mut why = format!(
-                    "widest unroll: {n} texels per line, {} slots of {}",
-                    thousands(at),
-                    thousands(fitter.profile().max_slots)
-                );
-                if n < w {
-                    match fitter.pass1(form, n + 1, 1)? {
-                        Some(c) => why.push_str(&format!(
-                            "; {} would take {} slots",
-                            n + 1,
-                            thousands(c.slots)
-                        )),
-                        None => why.push_str(&format!(
-                            "; {} {}",
-                            n + 1,
-                            fitter.pass1_unwritable(form, n + 1, 1).unwrap_or_default()
-                        )),
-                    }
-                } else {
-                    why.push_str(" (the frame's whole width)");
-                }
-                notes.push(why);
-                let Some(tall) = fitter.tallest(form, n, h)? else {
-                    problems.push(format!("no block {n} texels wide fits the executed limit"));
-                    continue;
-                };
-                let exec = |f: &mut Fitter<'_>, r: u32| -> Result<Option<u64>, GenError> {
-                    Ok(f.pass1(form, n, r)?.map(|c| c.executed))
-                };
-                let mut why = format!(
-                    "tallest block: {}, {} executed of {}",
-                    lines(tall),
-                    exec(fitter, tall)?.map_or("?".into(), thousands),
-                    thousands(fitter.profile().max_executed)
-                );
-                if tall < h {
-                    match exec(fitter, tall + 1)? {
-                        Some(e) => why.push_str(&format!(
-                            "; {} would take {}",
-                            lines(tall + 1),
-                            thousands(e)
-                        )),
-                        None => why.push_str(&format!(
-                            "; {}: {}",
-                            lines(tall + 1),
-                            fitter
-                                .pass1_unwritable(form, n, tall + 1)
-                                .unwrap_or_default()
-                        )),
-                    }
-                } else {
-                    why.push_str(" (the frame's whole height)");
-                }
-                let short = balanced(h, tall);
-                if short != tall {
-                    why.push_str(&format!(
-                        "; {} need {} block rows either way, so {} (padding {} instead of {})",
-                        lines(h),
-                        h.div_ceil(tall),
-                        lines(short),
-                        lines(h.div_ceil(short) * short - h),
-                        h.div_ceil(tall) * tall - h
-                    ));
-                }
-                notes.push(why);
-                out.push((form, (n, short)));
-            }
-            BlockChoice::Fit => {
-                let mut plan_notes = Vec::new();
-                let mut cands =
-                    plan::candidates(fitter, req.frame, req.delta, form, &mut plan_notes)?;
-                cands.sort_by_key(|c| {
-                    (
-                        c.passes,
-                        c.total_executed.unwrap_or(u64::MAX),
-                        c.padded_samples,
-                        std::cmp::Reverse(c.block[0]),
-                    )
-                });
-                match cands.first() {
-                    Some(c) => {
-                        notes.push(format!(
-                            "loop form: the plan's best loop block for {}: {}×{} ({} executed for the frame{})",
-                            size(w, h),
-                            c.block[0],
-                            c.block[1],
-                            c.total_executed.map_or("—".into(), thousands),
-                            if c.passes == 3 { ", 3 passes" } else { "" }
-                        ));
-                        out.push((form, (c.block[0], c.block[1])));
-                    }
-                    None => problems.push(format!(
-                        "the loop form does not fit this profile: {}",
-                        plan_notes.join("; ")
-                    )),
-                }
-            }
-        }
-        // The same block asked for twice is generated once.
-        if out.len() > before && out[..before].contains(&out[before]) {
-            out.pop();
-        }
-    }
-    Ok(out)
+/// The state of one `generate`: the fitter, the frame, and what is
+/// gathered for the [`Bundle`] in order.
+struct Generator<'p> {
+    fitter: Fitter<'p>,
+    fr: Frame,
+    macros: bool,
+    notes: Vec<String>,
+    problems: Vec<String>,
+    shaders: Vec<Generated>,
+    configs: Vec<Config>,
+    /// Pass-2 users: targets → (description, padded samples).
+    pass2_uses: BTreeMap<(u32, u32), Vec<(String, u64)>>,
 }
 
 /// Generates the shaders a request asks for.
 pub fn generate(req: &Request, profile: &Profile) -> Result<Bundle, GenError> {
-    let mut fitter = Fitter::new(profile);
-    let fr = Frame {
-        w: req.frame.0,
-        h: req.frame.1,
-        delta: req.delta,
+    let mut g = Generator {
+        fitter: Fitter::new(profile),
+        fr: Frame {
+            w: req.frame.0,
+            h: req.frame.1,
+            delta: req.delta,
+        },
+        macros: req.macros,
+        notes: Vec::new(),
+        problems: Vec::new(),
+        shaders: Vec::new(),
+        configs: Vec::new(),
+        pass2_uses: BTreeMap::new(),
     };
-    let mut notes = Vec::new();
-    let mut problems = Vec::new();
-    let blocks = choose_blocks(&mut fitter, req, &mut notes, &mut problems)?;
-    let mut shaders: Vec<Generated> = Vec::new();
-    let mut configs = Vec::new();
-    // Pass-2 users: targets → (description, padded samples).
-    let mut pass2_uses: BTreeMap<(u32, u32), Vec<(String, u64)>> = BTreeMap::new();
-    for (form, (bw, bh)) in blocks {
-        let main = match pass1_shader(
-            &mut fitter,
-            &fr,
+    for (form, block) in g.choose_blocks(req)? {
+        g.configure(form, block)?;
+    }
+    g.pass2_shaders()?;
+    Ok(Bundle {
+        frame: [g.fr.w, g.fr.h],
+        profile: profile.clone(),
+        delta: req.delta,
+        shaders: g.shaders,
+        configs: g.configs,
+        notes: g.notes,
+        problems: g.problems,
+    })
+}
+
+impl Generator<'_> {
+    /// The blocks a request asks for, one per form, with notes on how they
+    /// were chosen; forms that cannot be fitted go to `problems`.
+    fn choose_blocks(&mut self, req: &Request) -> Result<Vec<Pick>, GenError> {
+        let mut out: Vec<Pick> = Vec::new();
+        for &(form, choice) in &req.picks {
+            let block = match choice {
+                BlockChoice::Given(bw, bh) => match self.fitter.pass1_unwritable(form, bw, bh) {
+                    Some(why) => {
+                        self.problems
+                            .push(format!("pass 1, {} form, {bw}×{bh}: {why}", form.name()));
+                        None
+                    }
+                    None => Some((bw, bh)),
+                },
+                BlockChoice::Fit if form == Pass1Form::Unrolled => self.fit_unrolled(req.frame)?,
+                BlockChoice::Fit => self.fit_loop(req, form)?,
+            };
+            // The same block asked for twice is generated once.
+            if let Some(block) = block {
+                if !out.contains(&(form, block)) {
+                    out.push((form, block));
+                }
+            }
+        }
+        Ok(out)
+    }
+
+    /// `--fit` for the unrolled form: the widest unroll within the slot
+    /// limit, the tallest block within the executed limit, then the
+    /// smallest height with as many block rows.
+    fn fit_unrolled(&mut self, (w, h): (u32, u32)) -> Result<Option<(u32, u32)>, GenError> {
+        let form = Pass1Form::Unrolled;
+        let fitter = &mut self.fitter;
+        let Some(n) = fitter.widest(form, w)? else {
+            self.problems.push(format!(
+                "the unrolled form does not fit this profile even for one texel per line: {}",
+                fitter
+                    .pass1(form, 1, 1)?
+                    .map(|c| c.problems.join("; "))
+                    .or_else(|| fitter.pass1_unwritable(form, 1, 1))
+                    .unwrap_or_default()
+            ));
+            return Ok(None);
+        };
+        let at = fitter.pass1(form, n, 1)?.map(|c| c.slots).unwrap_or(0);
+        let mut why = format!(
+            "widest unroll: {n} texels per line, {} slots of {}",
+            thousands(at),
+            thousands(fitter.profile().max_slots)
+        );
+        if n < w {
+            match fitter.pass1(form, n + 1, 1)? {
+                Some(c) => why.push_str(&format!(
+                    "; {} would take {} slots",
+                    n + 1,
+                    thousands(c.slots)
+                )),
+                None => why.push_str(&format!(
+                    "; {} {}",
+                    n + 1,
+                    fitter.pass1_unwritable(form, n + 1, 1).unwrap_or_default()
+                )),
+            }
+        } else {
+            why.push_str(" (the frame's whole width)");
+        }
+        self.notes.push(why);
+        let Some(tall) = fitter.tallest(form, n, h)? else {
+            self.problems
+                .push(format!("no block {n} texels wide fits the executed limit"));
+            return Ok(None);
+        };
+        let exec = |f: &mut Fitter<'_>, r: u32| -> Result<Option<u64>, GenError> {
+            Ok(f.pass1(form, n, r)?.map(|c| c.executed))
+        };
+        let mut why = format!(
+            "tallest block: {}, {} executed of {}",
+            lines(tall),
+            exec(fitter, tall)?.map_or("?".into(), thousands),
+            thousands(fitter.profile().max_executed)
+        );
+        if tall < h {
+            match exec(fitter, tall + 1)? {
+                Some(e) => why.push_str(&format!(
+                    "; {} would take {}",
+                    lines(tall + 1),
+                    thousands(e)
+                )),
+                None => why.push_str(&format!(
+                    "; {}: {}",
+                    lines(tall + 1),
+                    fitter
+                        .pass1_unwritable(form, n, tall + 1)
+                        .unwrap_or_default()
+                )),
+            }
+        } else {
+            why.push_str(" (the frame's whole height)");
+        }
+        let short = balanced(h, tall);
+        if short != tall {
+            why.push_str(&format!(
+                "; {} need {} block rows either way, so {} (padding {} instead of {})",
+                lines(h),
+                h.div_ceil(tall),
+                lines(short),
+                lines(h.div_ceil(short) * short - h),
+                h.div_ceil(tall) * tall - h
+            ));
+        }
+        self.notes.push(why);
+        Ok(Some((n, short)))
+    }
+
+    /// `--fit` for the loop form: the plan's best loop block for the frame.
+    fn fit_loop(&mut self, req: &Request, form: Pass1Form) -> Result<Option<(u32, u32)>, GenError> {
+        let (w, h) = req.frame;
+        let mut plan_notes = Vec::new();
+        let mut cands = plan::candidates(
+            &mut self.fitter,
+            req.frame,
+            req.delta,
             form,
-            Role::Pass1,
-            (bw, bh),
-            bw,
-            req.macros,
-            None,
-        )? {
+            &mut plan_notes,
+        )?;
+        cands.sort_by_key(|c| {
+            (
+                c.passes,
+                c.total_executed.unwrap_or(u64::MAX),
+                c.padded_samples,
+                std::cmp::Reverse(c.block[0]),
+            )
+        });
+        match cands.first() {
+            Some(c) => {
+                self.notes.push(format!(
+                    "loop form: the plan's best loop block for {}: {}×{} ({} executed for the frame{})",
+                    size(w, h),
+                    c.block[0],
+                    c.block[1],
+                    c.total_executed.map_or("—".into(), thousands),
+                    if c.passes == 3 { ", 3 passes" } else { "" }
+                ));
+                Ok(Some((c.block[0], c.block[1])))
+            }
+            None => {
+                self.problems.push(format!(
+                    "the loop form does not fit this profile: {}",
+                    plan_notes.join("; ")
+                ));
+                Ok(None)
+            }
+        }
+    }
+
+    /// Adds `shader` unless a shader of the same file is there already.
+    fn add_shader(&mut self, shader: Generated) {
+        if !self.shaders.iter().any(|s| s.file == shader.file) {
+            self.shaders.push(shader);
+        }
+    }
+
+    /// One configuration: pass 1 for `form` and `(bw, bh)`, its last-column
+    /// shader when the width needs one, and its use of a pass-2 target.
+    fn configure(&mut self, form: Pass1Form, (bw, bh): (u32, u32)) -> Result<(), GenError> {
+        let spec = Pass1Spec {
+            form,
+            role: Role::Pass1,
+            block: (bw, bh),
+            taps: bw,
+            main_file: None,
+        };
+        let main = match pass1_shader(&mut self.fitter, &self.fr, &spec, self.macros)? {
             Ok(g) => g,
             Err(p) => {
-                problems.push(p);
-                continue;
+                self.problems.push(p);
+                return Ok(());
             }
         };
-        if !shaders.iter().any(|s| s.file == main.file) {
-            shaders.push(main.clone());
-        }
+        self.add_shader(main.clone());
+        let fr = &self.fr;
         let (nx, ny) = (fr.w.div_ceil(bw), fr.h.div_ceil(bh));
         let covered_y = ny as u64 * bh as u64;
         let padded_border = nx as u64 * bw as u64 * covered_y - fr.n();
         let padded_last = fr.w as u64 * covered_y - fr.n();
         let real = fr.w - (nx - 1) * bw;
-        let mut last_file = None;
-        if real < bw {
-            // The article's "non-unrolled version" first; the unrolled one
-            // when the loop would exceed the limits.
-            let mut last = None;
-            let mut why_not = Vec::new();
-            for lf in [Pass1Form::Loop, Pass1Form::Unrolled] {
-                if fitter.pass1_unwritable(lf, real, bh).is_some() {
-                    why_not.push(format!(
-                        "{}: {}",
-                        lf.name(),
-                        fitter.pass1_unwritable(lf, real, bh).unwrap_or_default()
-                    ));
-                    continue;
-                }
-                match pass1_shader(
-                    &mut fitter,
-                    &fr,
-                    lf,
-                    Role::LastColumn,
-                    (bw, bh),
-                    real,
-                    req.macros,
-                    Some(&main.file),
-                )? {
-                    Ok(g) => {
-                        last = Some(g);
-                        break;
-                    }
-                    Err(p) => why_not.push(p),
-                }
-            }
-            match last {
-                Some(g) => {
-                    if g.form != Pass1Form::Loop.name() {
-                        notes.push(format!(
-                            "last column of {}: the non-unrolled version does not fit ({}), so it is unrolled",
-                            main.file,
-                            why_not.join("; ")
-                        ));
-                    }
-                    last_file = Some(g.file.clone());
-                    if !shaders.iter().any(|s| s.file == g.file) {
-                        shaders.push(g);
-                    }
-                }
-                None => notes.push(format!(
-                    "no last-column shader for {}: {}",
-                    main.file,
-                    why_not.join("; ")
-                )),
-            }
-        }
-        let uses = pass2_uses.entry((nx, ny)).or_default();
+        let last_file = if real < bw {
+            self.last_column(&main.file, (bw, bh), real)?
+        } else {
+            None
+        };
+        let uses = self.pass2_uses.entry((nx, ny)).or_default();
         uses.push((
             format!("{} {} blocks and BORDER padding", form.name(), size(bw, bh)),
             padded_border,
@@ -665,7 +715,7 @@ pub fn generate(req: &Request, profile: &Profile) -> Result<Bundle, GenError> {
                 padded_last,
             ));
         }
-        configs.push(Config {
+        self.configs.push(Config {
             form,
             block: [bw, bh],
             targets: [nx, ny],
@@ -676,35 +726,98 @@ pub fn generate(req: &Request, profile: &Profile) -> Result<Bundle, GenError> {
             padded_last_column: padded_last,
             total_executed: None,
         });
+        Ok(())
     }
-    for (targets, uses) in &pass2_uses {
-        match pass2_shader(&mut fitter, &fr, *targets, uses, req.macros)? {
-            Ok(g) => {
-                for c in configs
-                    .iter_mut()
-                    .filter(|c| (c.targets[0], c.targets[1]) == *targets)
-                {
-                    c.pass2 = Some(g.file.clone());
-                    let p1 = shaders
-                        .iter()
-                        .find(|s| s.file == c.pass1)
-                        .map_or(0, |s| s.executed);
-                    c.total_executed = Some(p1 * targets.0 as u64 * targets.1 as u64 + g.executed);
-                }
-                shaders.push(g);
+
+    /// The last-column shader after `main_file`, reading `real` texels per
+    /// line: the article's "non-unrolled version" first, the unrolled one
+    /// when the loop would exceed the limits. Returns its file.
+    fn last_column(
+        &mut self,
+        main_file: &str,
+        block: (u32, u32),
+        real: u32,
+    ) -> Result<Option<String>, GenError> {
+        let bh = block.1;
+        let mut last = None;
+        let mut why_not = Vec::new();
+        for lf in [Pass1Form::Loop, Pass1Form::Unrolled] {
+            if self.fitter.pass1_unwritable(lf, real, bh).is_some() {
+                why_not.push(format!(
+                    "{}: {}",
+                    lf.name(),
+                    self.fitter
+                        .pass1_unwritable(lf, real, bh)
+                        .unwrap_or_default()
+                ));
+                continue;
             }
-            Err(p) => problems.push(p),
+            let spec = Pass1Spec {
+                form: lf,
+                role: Role::LastColumn,
+                block,
+                taps: real,
+                main_file: Some(main_file),
+            };
+            match pass1_shader(&mut self.fitter, &self.fr, &spec, self.macros)? {
+                Ok(g) => {
+                    last = Some(g);
+                    break;
+                }
+                Err(p) => why_not.push(p),
+            }
+        }
+        match last {
+            Some(g) => {
+                if g.form != Pass1Form::Loop.name() {
+                    self.notes.push(format!(
+                        "last column of {}: the non-unrolled version does not fit ({}), so it is unrolled",
+                        main_file,
+                        why_not.join("; ")
+                    ));
+                }
+                let file = g.file.clone();
+                self.add_shader(g);
+                Ok(Some(file))
+            }
+            None => {
+                self.notes.push(format!(
+                    "no last-column shader for {}: {}",
+                    main_file,
+                    why_not.join("; ")
+                ));
+                Ok(None)
+            }
         }
     }
-    Ok(Bundle {
-        frame: [fr.w, fr.h],
-        profile: profile.clone(),
-        delta: req.delta,
-        shaders,
-        configs,
-        notes,
-        problems,
-    })
+
+    /// One pass-2 shader per target the configurations use, and each
+    /// configuration's executed total.
+    fn pass2_shaders(&mut self) -> Result<(), GenError> {
+        for (targets, uses) in &self.pass2_uses {
+            match pass2_shader(&mut self.fitter, &self.fr, *targets, uses, self.macros)? {
+                Ok(g) => {
+                    for c in self
+                        .configs
+                        .iter_mut()
+                        .filter(|c| (c.targets[0], c.targets[1]) == *targets)
+                    {
+                        c.pass2 = Some(g.file.clone());
+                        let p1 = self
+                            .shaders
+                            .iter()
+                            .find(|s| s.file == c.pass1)
+                            .map_or(0, |s| s.executed);
+                        c.total_executed =
+                            Some(p1 * targets.0 as u64 * targets.1 as u64 + g.executed);
+                    }
+                    self.shaders.push(g);
+                }
+                Err(p) => self.problems.push(p),
+            }
+        }
+        Ok(())
+    }
 }
 
 /// The frame sizes whose shaders are kept in `asm/generated/`.

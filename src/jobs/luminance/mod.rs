@@ -551,6 +551,67 @@ fn load_pass1(
     Ok((l1, env1))
 }
 
+/// The geometry of one run: the frame, its blocks and the padding.
+struct Geometry {
+    w: u32,
+    h: u32,
+    bw: u32,
+    bh: u32,
+    nx: u32,
+    ny: u32,
+    /// Texels per line the last column reads: the real width with a
+    /// last-column shader, the whole block with BORDER padding.
+    last_w: u32,
+    /// Samples of the padding (log2 δ each).
+    padded: u64,
+    n_pixels: f64,
+}
+
+impl Geometry {
+    fn new(image: &HdrImage, block: (u32, u32), last_column: bool) -> Result<Self, PipelineError> {
+        let (bw, bh) = block;
+        if bw == 0 || bh == 0 {
+            return Err(PipelineError::Mismatch(
+                "block sides must be at least 1".into(),
+            ));
+        }
+        let (w, h) = (image.width, image.height);
+        if w == 0 || h == 0 {
+            return Err(PipelineError::Mismatch("the image is empty".into()));
+        }
+        let (nx, ny) = (w.div_ceil(bw), h.div_ceil(bh));
+        let last_w = if last_column { w - (nx - 1) * bw } else { bw };
+        let padded = ((nx - 1) as u64 * bw as u64 + last_w as u64) * (ny as u64 * bh as u64)
+            - w as u64 * h as u64;
+        Ok(Geometry {
+            w,
+            h,
+            bw,
+            bh,
+            nx,
+            ny,
+            last_w,
+            padded,
+            n_pixels: w as f64 * h as f64,
+        })
+    }
+
+    /// Pass 1's constants for a draw whose blocks read `read` texels per
+    /// line.
+    fn pass1_constants(&self, delta: f32, read: u32) -> Constants {
+        Constants {
+            float: vec![
+                [0.0; 4],
+                [1.0 / self.w as f32, 1.0 / self.h as f32, 0.0, 1.0],
+                [0.0; 4],
+                [0.27, 0.67, 0.06, delta.sqrt()],
+            ],
+            int: vec![[0; 4], [read as i32, 0, 0, 0], [self.bh as i32, 0, 0, 0]],
+            bool: Vec::new(),
+        }
+    }
+}
+
 fn run_impl(
     image: &HdrImage,
     pass1: &ShaderSource,
@@ -558,43 +619,64 @@ fn run_impl(
     pass2: &ShaderSource,
     s: &Settings,
 ) -> Result<LuminanceRun, PipelineError> {
-    let (bw, bh) = s.block;
-    if bw == 0 || bh == 0 {
-        return Err(PipelineError::Mismatch(
-            "block sides must be at least 1".into(),
-        ));
-    }
-    let (w, h) = (image.width, image.height);
-    if w == 0 || h == 0 {
-        return Err(PipelineError::Mismatch("the image is empty".into()));
-    }
-    let (nx, ny) = (w.div_ceil(bw), h.div_ceil(bh));
-    let n_pixels = w as f64 * h as f64;
-    // Texels per line the last column reads: the real width with a
-    // last-column shader, the whole block with BORDER padding.
-    let last_w = match last {
-        Some(_) => w - (nx - 1) * bw,
-        None => bw,
-    };
-    let padded = ((nx - 1) as u64 * bw as u64 + last_w as u64) * (ny as u64 * bh as u64)
-        - w as u64 * h as u64;
+    let g = Geometry::new(image, s.block, last.is_some())?;
     let delta = s.delta as f64;
+    let (t1, pass1_cost, pass1_last) = run_pass1(image, &g, pass1, last, s)?;
+    let (blocks, ill) = check_blocks(image, &g, &t1, s)?;
+    let (pass2_cost, log_average, pass2_check, rel2) = run_pass2(&g, &t1, pass2, s)?;
 
-    // Pass 1: one draw over every column (BORDER padding), or one over the
-    // first nx − 1 columns and one over the last.
+    // End to end: the emulated L̄w against the true L̄w of the image (every
+    // pixel once, no padding). If the shaders are right, the difference
+    // comes only from the block bounds and pass 2's own rounding.
+    let true_ref = reference::log_average(image, delta, s.policy);
+    let block_bound: f64 = blocks.iter().map(|b| b.tolerance).sum();
+    let relative_tolerance = std::f64::consts::LN_2 * block_bound / g.n_pixels + rel2;
+    let end_to_end = Comparison::new(
+        log_average,
+        true_ref.log_average,
+        relative_tolerance * true_ref.log_average.abs(),
+    );
+    let relative_error = end_to_end.difference / true_ref.log_average.abs();
+    let padding_factor = (g.padded as f64 * delta.log2() / g.n_pixels).exp2();
+    let stats = image.stats();
+    Ok(LuminanceRun {
+        width: g.w,
+        height: g.h,
+        block: s.block,
+        targets: (g.nx, g.ny),
+        target_format: s.format,
+        delta: s.delta,
+        padded_samples: g.padded,
+        pass1: pass1_cost,
+        pass1_last,
+        pass2: pass2_cost,
+        blocks,
+        pass2_check,
+        log_average,
+        reference_log_average: true_ref.log_average,
+        relative_error,
+        relative_tolerance,
+        agree: end_to_end.agree,
+        padding_factor,
+        ill_conditioned: ill,
+        nonfinite_pixels: stats.non_finite,
+        negative_pixels: stats.negative_luminance,
+    })
+}
+
+/// Pass 1: one draw over every column (BORDER padding), or one over the
+/// first nx − 1 columns and one over the last. Returns the `nx × ny`
+/// target, the cost of `pass1` and that of the last-column shader.
+fn run_pass1(
+    image: &HdrImage,
+    g: &Geometry,
+    pass1: &ShaderSource,
+    last: Option<&ShaderSource>,
+    s: &Settings,
+) -> Result<(RenderTarget, PassCost, Option<PassCost>), PipelineError> {
+    let (w, h, bw, bh, nx, ny) = (g.w, g.h, g.bw, g.bh, g.nx, g.ny);
     let (l1, env1) = load_pass1(pass1, bw, bh)?;
     let main_cols = if last.is_some() { nx - 1 } else { nx };
-    let root = (s.delta).sqrt();
-    let constants = |read: u32| Constants {
-        float: vec![
-            [0.0; 4],
-            [1.0 / w as f32, 1.0 / h as f32, 0.0, 1.0],
-            [0.0; 4],
-            [0.27, 0.67, 0.06, root],
-        ],
-        int: vec![[0; 4], [read as i32, 0, 0, 0], [bh as i32, 0, 0, 0]],
-        bool: Vec::new(),
-    };
     let texture = Texture {
         width: w,
         height: h,
@@ -609,7 +691,7 @@ fn run_impl(
         d1.limits = s.limits;
         d1.record_lod = true;
         d1.inputs.push((0, block_start(w, h, bw, bh)));
-        d1.constants = constants(bw);
+        d1.constants = g.pass1_constants(s.delta, bw);
         d1.samplers.push(sampler(texture));
         let (t, e, f) = draw_into(&c1, &d1, s.format, s.threads, &l1.file)?;
         for y in 0..ny {
@@ -627,33 +709,53 @@ fn run_impl(
         pass1_cost.counts_agree = true;
     }
     let pass1_last = match last {
-        Some(src) => {
-            let (ll, envl) = load_pass1(src, last_w, bh)?;
-            let cl = emu::compile(&ll.shader).map_err(PipelineError::Emu)?;
-            let mut dl = Draw::new(1, ny);
-            dl.limits = s.limits;
-            dl.record_lod = true;
-            let mut input = block_start(w, h, bw, bh);
-            input.base[0] = (((nx - 1) as f64 * bw as f64 + 0.5) / w as f64) as f32;
-            dl.inputs.push((0, input));
-            dl.constants = constants(last_w);
-            dl.samplers.push(sampler(texture));
-            let (t, e, f) = draw_into(&cl, &dl, s.format, s.threads, &ll.file)?;
-            for y in 0..ny {
-                t1.store(nx - 1, y, t.texel(0, y));
-            }
-            Some(pass_cost(&ll, &envl, e, f)?.0)
-        }
+        Some(src) => Some(run_last_column(texture, g, src, &mut t1, s)?),
         None => None,
     };
+    Ok((t1, pass1_cost, pass1_last))
+}
 
-    // Reference and bounds for pass 1.
-    let refs = reference::block_sums_last_width(image, delta, s.policy, bw, bh, last_w)
+/// The last column of pass 1 with its own shader, reading `last_w` texels
+/// per line, into column nx − 1 of `t1`; returns its cost.
+fn run_last_column(
+    texture: Texture,
+    g: &Geometry,
+    src: &ShaderSource,
+    t1: &mut RenderTarget,
+    s: &Settings,
+) -> Result<PassCost, PipelineError> {
+    let (ll, envl) = load_pass1(src, g.last_w, g.bh)?;
+    let cl = emu::compile(&ll.shader).map_err(PipelineError::Emu)?;
+    let mut dl = Draw::new(1, g.ny);
+    dl.limits = s.limits;
+    dl.record_lod = true;
+    let mut input = block_start(g.w, g.h, g.bw, g.bh);
+    input.base[0] = (((g.nx - 1) as f64 * g.bw as f64 + 0.5) / g.w as f64) as f32;
+    dl.inputs.push((0, input));
+    dl.constants = g.pass1_constants(s.delta, g.last_w);
+    dl.samplers.push(sampler(texture));
+    let (t, e, f) = draw_into(&cl, &dl, s.format, s.threads, &ll.file)?;
+    for y in 0..g.ny {
+        t1.store(g.nx - 1, y, t.texel(0, y));
+    }
+    Ok(pass_cost(&ll, &envl, e, f)?.0)
+}
+
+/// Every block of pass 1's target against the f64 reference and its bound;
+/// also returns the number of ill-conditioned terms.
+fn check_blocks(
+    image: &HdrImage,
+    g: &Geometry,
+    t1: &RenderTarget,
+    s: &Settings,
+) -> Result<(Vec<BlockCheck>, u64), PipelineError> {
+    let delta = s.delta as f64;
+    let refs = reference::block_sums_last_width(image, delta, s.policy, g.bw, g.bh, g.last_w)
         .map_err(|e| PipelineError::Reference(e.to_string()))?;
-    let (bounds, ill) = pass1_bounds_last_width(image, s.block, last_w, delta, s.policy);
-    let mut blocks = Vec::with_capacity((nx * ny) as usize);
-    for by in 0..ny {
-        for bx in 0..nx {
+    let (bounds, ill) = pass1_bounds_last_width(image, s.block, g.last_w, delta, s.policy);
+    let mut blocks = Vec::with_capacity((g.nx * g.ny) as usize);
+    for by in 0..g.ny {
+        for bx in 0..g.nx {
             let emulated = t1.texel(bx, by)[0] as f64;
             let reference = refs.sums[by as usize][bx as usize];
             let tol = bounds[by as usize][bx as usize] + storage_bound(s.format, reference);
@@ -671,8 +773,18 @@ fn run_impl(
             });
         }
     }
+    Ok((blocks, ill))
+}
 
-    // Pass 2.
+/// Pass 2 over pass 1's target: its cost, the emulated L̄w, and its check
+/// against pass 2's formula in f64 with that check's relative bound.
+fn run_pass2(
+    g: &Geometry,
+    t1: &RenderTarget,
+    pass2: &ShaderSource,
+    s: &Settings,
+) -> Result<(PassCost, f64, Comparison, f64), PipelineError> {
+    let (nx, ny) = (g.nx, g.ny);
     let l2 = load(
         pass2,
         &[("xsize", nx as u64), ("ysize", ny as u64)],
@@ -685,10 +797,10 @@ fn run_impl(
         0,
         LinearInput::constant([0.5 / nx as f32, 0.5 / ny as f32, 0.0, 0.0]),
     ));
-    let correction = -(padded as f64) * (delta.log2()) / n_pixels;
+    let correction = -(g.padded as f64) * ((s.delta as f64).log2()) / g.n_pixels;
     d2.constants = Constants {
         float: vec![
-            [(1.0 / n_pixels) as f32, correction as f32, 0.0, 0.0],
+            [(1.0 / g.n_pixels) as f32, correction as f32, 0.0, 0.0],
             [1.0 / nx as f32, 1.0 / ny as f32, 0.0, 1.0],
         ],
         int: Vec::new(),
@@ -699,68 +811,44 @@ fn run_impl(
     let (t2, emulated2, findings2) = draw_into(&c2, &d2, s.format, s.threads, &l2.file)?;
     let (pass2_cost, _) = pass_cost(&l2, &Environment::default(), emulated2, findings2)?;
     let log_average = t2.texel(0, 0)[0] as f64;
+    let applied = if reads_c0y(&l2) { correction } else { 0.0 };
+    let (check, rel2) = pass2_check(g, t1, applied, log_average, s.format);
+    Ok((pass2_cost, log_average, check, rel2))
+}
 
-    // Pass 2 on its own: the emulated L̄w against pass 2's formula applied
-    // in f64 to the stored pass-1 values (sum in pass 2's order, then the
-    // padding correction if the shader reads c0.y, then 1/N and exp2).
+/// Pass 2 on its own: the emulated L̄w against pass 2's formula applied
+/// in f64 to the stored pass-1 values (sum in pass 2's order, then the
+/// padding correction `applied` if the shader reads c0.y, then 1/N and
+/// exp2). Returns the comparison and its relative bound.
+fn pass2_check(
+    g: &Geometry,
+    t1: &RenderTarget,
+    applied: f64,
+    log_average: f64,
+    format: TargetFormat,
+) -> (Comparison, f64) {
     let mut partial = 0f64;
     let mut accumulation = 0f64;
-    for by in 0..ny {
-        for bx in 0..nx {
+    for by in 0..g.ny {
+        for bx in 0..g.nx {
             partial += t1.texel(bx, by)[0] as f64;
             accumulation += partial.abs();
         }
     }
-    let applied = if reads_c0y(&l2) { correction } else { 0.0 };
-    let mean2 = partial / n_pixels + applied;
+    let mean2 = partial / g.n_pixels + applied;
     let expected2 = mean2.exp2();
     // Sum rounding; 1/N and the product (2u relative), the mad's addition
     // (u), exp's result (≤ 1 ulp, 2u relative), storage.
     let rel2 = std::f64::consts::LN_2
-        * (U32 * accumulation * (1.0 + (nx * ny) as f64 * U32) / n_pixels
-            + 2.0 * U32 * (partial / n_pixels).abs()
+        * (U32 * accumulation * (1.0 + (g.nx * g.ny) as f64 * U32) / g.n_pixels
+            + 2.0 * U32 * (partial / g.n_pixels).abs()
             + U32 * mean2.abs())
         + 2.0 * U32
-        + storage_bound(s.format, expected2) / expected2.max(f64::MIN_POSITIVE);
-    let pass2_check = Comparison::new(log_average, expected2, rel2 * expected2);
-
-    // End to end: the emulated L̄w against the true L̄w of the image (every
-    // pixel once, no padding). If the shaders are right, the difference
-    // comes only from the block bounds and pass 2's own rounding.
-    let true_ref = reference::log_average(image, delta, s.policy);
-    let block_bound: f64 = blocks.iter().map(|b| b.tolerance).sum();
-    let relative_tolerance = std::f64::consts::LN_2 * block_bound / n_pixels + rel2;
-    let end_to_end = Comparison::new(
-        log_average,
-        true_ref.log_average,
-        relative_tolerance * true_ref.log_average.abs(),
-    );
-    let relative_error = end_to_end.difference / true_ref.log_average.abs();
-    let padding_factor = (padded as f64 * delta.log2() / n_pixels).exp2();
-    let stats = image.stats();
-    Ok(LuminanceRun {
-        width: w,
-        height: h,
-        block: s.block,
-        targets: (nx, ny),
-        target_format: s.format,
-        delta: s.delta,
-        padded_samples: padded,
-        pass1: pass1_cost,
-        pass1_last,
-        pass2: pass2_cost,
-        blocks,
-        pass2_check,
-        log_average,
-        reference_log_average: true_ref.log_average,
-        relative_error,
-        relative_tolerance,
-        agree: end_to_end.agree,
-        padding_factor,
-        ill_conditioned: ill,
-        nonfinite_pixels: stats.non_finite,
-        negative_pixels: stats.negative_luminance,
-    })
+        + storage_bound(format, expected2) / expected2.max(f64::MIN_POSITIVE);
+    (
+        Comparison::new(log_average, expected2, rel2 * expected2),
+        rel2,
+    )
 }
 
 /// Whether a pass-2 shader reads c0.y, the padding correction. The

@@ -254,13 +254,7 @@ pub fn profile(name: &str, text: &str, setup: &Setup) -> Result<ProfileRun, Stri
 pub fn profile_loaded(loaded: load::Loaded, setup: &Setup) -> Result<ProfileRun, String> {
     let name = loaded.file.name.clone();
     let compiled = emu::compile(&loaded.shader).map_err(|e| e.to_string())?;
-    let mut env = Environment::default();
-    for (i, v) in setup.constants.int.iter().enumerate() {
-        env.ints.insert(i as u32, *v);
-    }
-    for (i, v) in setup.constants.bool.iter().enumerate() {
-        env.bools.insert(i as u32, *v);
-    }
+    let env = environment(&setup.constants);
     let analysis = cost::analyse(&loaded.shader, &loaded.file, &env, &Profile::ps_3_0())
         .map_err(|e| e.to_string())?;
     let run = |draw: &Draw| -> Result<DrawOutput, String> {
@@ -285,20 +279,7 @@ pub fn profile_loaded(loaded: load::Loaded, setup: &Setup) -> Result<ProfileRun,
             }
             scene =
                 crate::jobs::scenes::lights::Scene::synthetic(*w, *h).map_err(|e| e.to_string())?;
-            crate::jobs::scenes::lights::Scene::check_constants(loaded.shader.program()).map_err(
-                |e| format!("{name}: not a light-model shader for the G-buffer scene: {e}"),
-            )?;
-            let mut draw = scene.draw();
-            draw.limits = setup.limits;
-            draw.record_lod = true;
-            // The command line's constants, except c4, which the scene sets.
-            let mut floats = setup.constants.float.clone();
-            floats.resize(floats.len().max(5), [0.0; 4]);
-            floats[4] = scene.material_scale();
-            draw.constants = Constants {
-                float: floats,
-                ..setup.constants.clone()
-            };
+            let draw = gbuffer_draw(&name, &loaded, setup, &scene)?;
             let out = run(&draw)?;
             let models = crate::jobs::scenes::lights::compare(&scene, &out);
             let counts = scene.pixels_per_model();
@@ -317,43 +298,15 @@ pub fn profile_loaded(loaded: load::Loaded, setup: &Setup) -> Result<ProfileRun,
             sampler,
             mips,
         } => {
-            let (tw, th) = *target;
-            let mut draw = Draw::new(tw, th);
-            draw.limits = setup.limits;
-            if loaded
-                .shader
-                .program()
-                .inputs
-                .iter()
-                .any(|d| d.reg.file == crate::core::isa::RegFile::Input && d.reg.index == 0)
-            {
-                draw.inputs.push((
-                    0,
-                    crate::jobs::luminance::block_start(
-                        image.width,
-                        image.height,
-                        image.width.div_ceil(tw),
-                        image.height.div_ceil(th),
-                    ),
-                ));
-            }
-            draw.constants = setup.constants.clone();
-            draw.record_lod = true;
-            draw.limits = setup.limits;
             chain = if *mips {
                 Some(MipChain::build(image.as_texture(), None)?)
             } else {
                 None
             };
-            if loaded.shader.program().sampler_type(0).is_some() {
-                let tex: TextureLevels = match &chain {
-                    Some(c) => c.into(),
-                    None => image.as_texture().into(),
-                };
-                draw.samplers.push((0, tex, *sampler));
-            }
+            let draw = image_draw(&loaded, setup, image, *target, *sampler, chain.as_ref());
             let out = run(&draw)?;
             let levels = chain.as_ref().map_or(1, |c| c.len());
+            let (tw, th) = *target;
             let input = format!(
                 "{image_name} ({}×{}, {} level{}) → {tw}×{th} target",
                 image.width,
@@ -387,6 +340,83 @@ pub fn profile_loaded(loaded: load::Loaded, setup: &Setup) -> Result<ProfileRun,
         models,
         file: loaded.file,
     })
+}
+
+/// The cost model's environment: the draw's integer and boolean constants.
+fn environment(constants: &Constants) -> Environment {
+    let mut env = Environment::default();
+    for (i, v) in constants.int.iter().enumerate() {
+        env.ints.insert(i as u32, *v);
+    }
+    for (i, v) in constants.bool.iter().enumerate() {
+        env.bools.insert(i as u32, *v);
+    }
+    env
+}
+
+/// The draw over the synthetic G-buffer `scene`, for a light-model shader.
+fn gbuffer_draw<'s>(
+    name: &str,
+    loaded: &load::Loaded,
+    setup: &Setup,
+    scene: &'s crate::jobs::scenes::lights::Scene,
+) -> Result<Draw<'s>, String> {
+    crate::jobs::scenes::lights::Scene::check_constants(loaded.shader.program())
+        .map_err(|e| format!("{name}: not a light-model shader for the G-buffer scene: {e}"))?;
+    let mut draw = scene.draw();
+    draw.record_lod = true;
+    draw.limits = setup.limits;
+    // The command line's constants, except c4, which the scene sets.
+    let mut floats = setup.constants.float.clone();
+    floats.resize(floats.len().max(5), [0.0; 4]);
+    floats[4] = scene.material_scale();
+    draw.constants = Constants {
+        float: floats,
+        ..setup.constants.clone()
+    };
+    Ok(draw)
+}
+
+/// The draw of `image` into a `target`: v0 at each pixel's block of the
+/// image (when the shader declares v0), s0 the image or its mip `chain`
+/// (when the shader declares s0).
+fn image_draw<'i>(
+    loaded: &load::Loaded,
+    setup: &Setup,
+    image: &'i HdrImage,
+    (tw, th): (u32, u32),
+    sampler: SamplerState,
+    chain: Option<&'i MipChain>,
+) -> Draw<'i> {
+    let mut draw = Draw::new(tw, th);
+    if loaded
+        .shader
+        .program()
+        .inputs
+        .iter()
+        .any(|d| d.reg.file == crate::core::isa::RegFile::Input && d.reg.index == 0)
+    {
+        draw.inputs.push((
+            0,
+            crate::jobs::luminance::block_start(
+                image.width,
+                image.height,
+                image.width.div_ceil(tw),
+                image.height.div_ceil(th),
+            ),
+        ));
+    }
+    draw.constants = setup.constants.clone();
+    draw.record_lod = true;
+    draw.limits = setup.limits;
+    if loaded.shader.program().sampler_type(0).is_some() {
+        let tex: TextureLevels = match chain {
+            Some(c) => c.into(),
+            None => image.as_texture().into(),
+        };
+        draw.samplers.push((0, tex, sampler));
+    }
+    draw
 }
 
 // ----- the command line ----------------------------------------------------------

@@ -114,9 +114,17 @@ fn ceil_div(a: u64, b: u64) -> u64 {
 /// Every claim of the article, computed.
 pub fn article_claims() -> Result<Vec<Claim>, String> {
     let profile = Profile::ps_3_0();
-    let mut out = Vec::new();
+    let mut out = loop_claims(&profile)?;
+    out.extend(unrolled_claims(&profile)?);
+    let (tiling, t2) = tiling_claims();
+    out.extend(tiling);
+    out.extend(pass2_claims(&profile, t2)?);
+    Ok(out)
+}
 
-    // The rep/rep loop over 128×56 blocks.
+/// The rep/rep loop over 128×56 blocks.
+fn loop_claims(profile: &Profile) -> Result<Vec<Claim>, String> {
+    let mut out = Vec::new();
     let (_, a) = analyse_listing(ARTICLE_LOOP.listing(), &[], &[(1, 128), (2, 56)])?;
     let outer = a.loops.first().ok_or("loop listing has no loop")?;
     let inner = a.loops.get(1).ok_or("loop listing has no inner loop")?;
@@ -152,26 +160,15 @@ pub fn article_claims() -> Result<Vec<Claim>, String> {
         a.executed.max <= profile.max_executed,
         "executed slots against the ps_3_0 profile",
     ));
+    Ok(out)
+}
 
-    // The unrolled variant over 125×128 blocks.
+/// The unrolled variant over 125×128 blocks.
+fn unrolled_claims(profile: &Profile) -> Result<Vec<Claim>, String> {
+    let mut out = Vec::new();
     let (loaded, a) = analyse_listing(ARTICLE_UNROLLED.listing(), &[], &[(2, 128)])?;
     let y = a.loops.first().ok_or("unrolled listing has no loop")?;
-    // Cost per sample: executed slots of the instructions inside the macro,
-    // divided by the number of samples (runs of one macro instruction).
-    let ins = loaded.shader.instructions();
-    let in_macro: Vec<usize> = (0..ins.len())
-        .filter(|&i| ins[i].origin.repeat.is_some())
-        .collect();
-    let macro_executed: u64 = in_macro
-        .iter()
-        .map(|&i| a.executions[i].max * loaded.shader.info().slots[i] as u64)
-        .sum();
-    let samples: u64 = in_macro
-        .iter()
-        .filter(|&&i| ins[i].op == crate::core::isa::Opcode::TexLd)
-        .map(|&i| a.executions[i].max)
-        .sum();
-    let per_sample = macro_executed.checked_div(samples).unwrap_or(0);
+    let (per_sample, macro_executed, samples) = per_sample(&loaded, &a);
     out.push(claim(
         "unrolled: cycles per log-luminance sample",
         4,
@@ -200,7 +197,7 @@ pub fn article_claims() -> Result<Vec<Claim>, String> {
         a.slots <= profile.max_slots,
         "static slots of the expanded shader",
     ));
-    let (largest, slots_at) = largest_fitting_repeat(ARTICLE_UNROLLED.listing(), &profile)?;
+    let (largest, slots_at) = largest_fitting_repeat(ARTICLE_UNROLLED.listing(), profile)?;
     out.push(claim(
         "unrolled: largest repetition count within 512 slots",
         125,
@@ -214,7 +211,7 @@ pub fn article_claims() -> Result<Vec<Claim>, String> {
             &loaded.shader,
             &loaded.file,
             &env(&[(2, rows as i32)]),
-            &profile,
+            profile,
         )
         .is_ok_and(|a| a.executed.max <= profile.max_executed)
     });
@@ -228,8 +225,33 @@ pub fn article_claims() -> Result<Vec<Claim>, String> {
         rows_fit.is_some_and(|r| r >= 128),
         "largest i2 whose executed count is ≤ 65,535",
     ));
+    Ok(out)
+}
 
-    // Frame tiling for 1280×1024.
+/// Cost per sample of the unrolled listing: executed slots of the
+/// instructions inside the macro, divided by the number of samples (runs of
+/// one macro instruction). Returns it with the two figures it divides.
+fn per_sample(loaded: &load::Loaded, a: &Analysis) -> (u64, u64, u64) {
+    let ins = loaded.shader.instructions();
+    let in_macro: Vec<usize> = (0..ins.len())
+        .filter(|&i| ins[i].origin.repeat.is_some())
+        .collect();
+    let macro_executed: u64 = in_macro
+        .iter()
+        .map(|&i| a.executions[i].max * loaded.shader.info().slots[i] as u64)
+        .sum();
+    let samples: u64 = in_macro
+        .iter()
+        .filter(|&&i| ins[i].op == crate::core::isa::Opcode::TexLd)
+        .map(|&i| a.executions[i].max)
+        .sum();
+    let per_sample = macro_executed.checked_div(samples).unwrap_or(0);
+    (per_sample, macro_executed, samples)
+}
+
+/// Frame tiling for 1280×1024; also returns the 125×128 blocks' target.
+fn tiling_claims() -> (Vec<Claim>, (u64, u64)) {
+    let mut out = Vec::new();
     let (w, h) = (1280u64, 1024u64);
     let t1 = (ceil_div(w, 128), ceil_div(h, 56));
     out.push(claim(
@@ -247,8 +269,12 @@ pub fn article_claims() -> Result<Vec<Claim>, String> {
         t2 == (11, 8),
         "⌈1280/125⌉ × ⌈1024/128⌉",
     ));
+    (out, t2)
+}
 
-    // The second pass for the 11×8 target.
+/// The second pass for the 11×8 target `t2`.
+fn pass2_claims(profile: &Profile, t2: (u64, u64)) -> Result<Vec<Claim>, String> {
+    let mut out = Vec::new();
     let (_, a) = analyse_listing(
         ARTICLE_PASS2.listing(),
         &[("xsize", t2.0), ("ysize", t2.1)],
