@@ -583,3 +583,37 @@ fn colour_completions_man_page_and_help() {
         }
     }
 }
+
+/// An installed binary needs no source tree: a copy of the binary, run in an
+/// empty directory, verifies the article (images and shaders compiled in),
+/// says that it had no generated shaders to check, and runs a study.
+#[test]
+fn an_installed_binary_works_anywhere() {
+    let install = tempfile::tempdir().unwrap();
+    let work = tempfile::tempdir().unwrap();
+    let exe = install.path().join("ps30");
+    std::fs::copy(env!("CARGO_BIN_EXE_ps30"), &exe).unwrap();
+    let run = |args: &[&str]| {
+        std::process::Command::new(&exe)
+            .args(args)
+            .current_dir(work.path())
+            .output()
+            .unwrap()
+    };
+    let o = run(&["verify"]);
+    assert_eq!(o.status.code(), Some(0), "{}{}", out(&o), err(&o));
+    let text = out(&o);
+    assert!(text.contains("18 of 18 claims reproduced"), "{text}");
+    assert!(
+        text.contains("cross-check on assets/hdr/courtyard_1280x1024.exr"),
+        "{text}"
+    );
+    assert!(text.contains("not checked (no asm/generated"), "{text}");
+    assert!(work.path().join("reports/README.md").is_file());
+    assert!(work.path().join("reports/figures/budgets.png").is_file());
+    // No source tree appears: nothing under `asm/` was created.
+    assert!(!work.path().join("asm").exists());
+    let o = run(&["study", "log-lights", "-q"]);
+    assert_eq!(o.status.code(), Some(0), "{}", err(&o));
+    assert!(work.path().join("reports/log-lights.md").is_file());
+}

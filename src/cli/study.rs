@@ -6,11 +6,11 @@ use super::args::parse_size;
 use super::io::{check_output_dir, check_output_path, print_json, say};
 use super::ui::Ui;
 use super::{BadInput, Outcome};
-use ps30::core::image::{self, encode_png_rgb8, ImageLimits};
+use ps30::core::image::encode_png_rgb8;
 use ps30::core::output::Batch;
+use ps30::jobs::assets::{self, IMAGES};
 use ps30::jobs::render;
 use ps30::jobs::studies::{article_chain, log_lights, mip_luminance};
-use ps30::present::report::IMAGES;
 use ps30::present::study::{self, Page};
 use std::path::{Path, PathBuf};
 
@@ -47,17 +47,6 @@ pub struct Args {
     /// Print JSON instead of text.
     #[arg(long)]
     json: bool,
-}
-
-/// The bundled images, from the source tree this binary was built from when
-/// it is there.
-fn images_dir() -> PathBuf {
-    let in_tree = Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/hdr");
-    if in_tree.is_dir() {
-        in_tree
-    } else {
-        PathBuf::from("assets/hdr")
-    }
 }
 
 /// Stages a page and its figures; returns what will be written.
@@ -101,13 +90,9 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
             )
         }
         Name::MipLuminance => {
-            let dir = images_dir();
             let mut images = Vec::new();
             for name in IMAGES {
-                images.push((
-                    name.to_string(),
-                    image::load(&dir.join(name), &ImageLimits::default())?,
-                ));
+                images.push((name.to_string(), assets::load(name).map_err(BadInput)?));
             }
             let s = mip_luminance::study(&images, 1e-4, &settings, &progress).map_err(BadInput)?;
             (

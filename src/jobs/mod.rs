@@ -14,12 +14,16 @@
 //! * `studies` → `render`, `luminance`, `tonemap`, `scenes`
 //! * `render` → `scenes` (its synthetic textures)
 //!
+//! [`assets`] holds the bundled HDR images, compiled in like the shaders of
+//! [`bundled`], so that an installed binary needs no source tree.
+//!
 //! [`blocks`] chooses the luminance passes' blocks for an image (the
 //! planner's, with generated shaders, or a named shader's own).
 //!
 //! [`conformance`] (the draws of the conformance corpus) uses no other job;
 //! [`outputs`] (what a pass wrote, channel by channel) only the core.
 
+pub mod assets;
 pub mod blocks;
 pub mod bundled;
 pub mod conformance;

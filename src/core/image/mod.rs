@@ -32,7 +32,7 @@ pub use target::{
 };
 
 use std::fs::File;
-use std::io::{BufReader, BufWriter, Read, Seek};
+use std::io::{BufRead, BufReader, BufWriter, Read, Seek};
 use std::path::Path;
 
 /// The luminance weights of the article (and of the tone-mapping shader):
@@ -207,7 +207,21 @@ impl Format {
 /// (`PF` colour, `Pf` grey).
 pub fn load(path: &Path, limits: &ImageLimits) -> Result<HdrImage, ImageError> {
     let file = File::open(path).map_err(|e| ImageError::io(path, "open", e))?;
-    let mut reader = BufReader::new(file);
+    decode(path, BufReader::new(file), limits)
+}
+
+/// Decodes an HDR image held in memory, as [`load`] reads a file; `name`
+/// names it in errors.
+pub fn load_bytes(name: &Path, bytes: &[u8], limits: &ImageLimits) -> Result<HdrImage, ImageError> {
+    decode(name, std::io::Cursor::new(bytes), limits)
+}
+
+/// Decodes from `reader` with the decoder its magic number names.
+fn decode(
+    path: &Path,
+    mut reader: impl BufRead + Seek,
+    limits: &ImageLimits,
+) -> Result<HdrImage, ImageError> {
     let mut magic = Vec::with_capacity(4);
     (&mut reader)
         .take(4)

@@ -21,10 +21,11 @@ pub mod figures;
 pub mod generated;
 
 use crate::core::image::encode_png_rgb8;
-use crate::core::image::{HdrImage, ImageLimits};
+use crate::core::image::HdrImage;
 use crate::core::numbers::number;
 use crate::core::numbers::thousands;
 use crate::core::output::Batch;
+use crate::jobs::assets;
 use crate::jobs::luminance::{self, LuminanceRun, ShaderSource};
 use crate::jobs::tonemap;
 use crate::jobs::verify;
@@ -32,16 +33,8 @@ use figures::{box_downscale, BarChart, HeatMap};
 use serde::Serialize;
 use std::path::Path;
 
-/// The bundled images, in `assets/hdr/`.
-pub const IMAGES: [&str; 7] = [
-    "city.exr",
-    "courtyard.exr",
-    "courtyard_1280x1024.exr",
-    "forest.exr",
-    "forest.hdr",
-    "sunset.exr",
-    "sunset.pfm",
-];
+/// The bundled images (compiled in: [`crate::jobs::assets`]).
+pub use crate::jobs::assets::IMAGES;
 
 /// Widest tone-mapped preview, in pixels (keeps `reports/` at a few MB).
 pub const PREVIEW_WIDTH: u32 = 512;
@@ -136,13 +129,12 @@ fn bundled(name: &str) -> Result<ShaderSource, String> {
 }
 
 /// Stages the figures and pages for `dir` in `batch` (the caller commits
-/// it: all files or none), reading the bundled images from
-/// `root/assets/hdr`. `progress(stage, done, total)` is called as stages
+/// it: all files or none), from the bundled images compiled into the binary
+/// ([`crate::jobs::assets`]). `progress(stage, done, total)` is called as stages
 /// finish.
 pub fn generate(
     batch: &mut Batch,
     dir: &Path,
-    root: &Path,
     threads: Option<usize>,
     progress: &dyn Fn(&str, u64, u64),
 ) -> Result<Generated, String> {
@@ -206,7 +198,7 @@ pub fn generate(
     write(batch, &mut out, "budgets.md", &page)?;
 
     progress("per-block heat maps", 1, total);
-    let cross = load_image(root, verify::CROSSCHECK_IMAGE)?;
+    let cross = assets::load(verify::CROSSCHECK_IMAGE)?;
     let runs = [
         ("corrected:unrolled", "corrected:pass2"),
         ("article:unrolled", "article:pass2"),
@@ -234,7 +226,7 @@ pub fn generate(
     for (i, name) in IMAGES.iter().enumerate() {
         progress(&format!("tone mapping {name}"), 2 + i as u64, total);
         let rel = format!("assets/hdr/{name}");
-        let img = load_image(root, &rel)?;
+        let img = assets::load(&rel)?;
         let settings = tonemap::Settings {
             threads,
             ..tonemap::Settings::default()
@@ -257,10 +249,6 @@ pub fn generate(
     write(batch, &mut out, "README.md", &page)?;
     progress("done", total, total);
     Ok(out)
-}
-
-fn load_image(root: &Path, rel: &str) -> Result<HdrImage, String> {
-    crate::core::image::load(&root.join(rel), &ImageLimits::default()).map_err(|e| e.to_string())
 }
 
 /// The bundled shaders measured with the constants the article uses.
