@@ -488,7 +488,7 @@ fn plan_json_has_the_documented_fields() {
     assert_eq!(art["executed_per_pixel"][0], 64_853);
     let rec = v["recommended"].as_str().unwrap();
     assert!(cands.iter().any(|c| c["name"] == rec));
-    assert_eq!(v["profile"]["max_slots"], 512);
+    assert_eq!(v["profile"]["slots"], 512);
 }
 
 #[test]

@@ -154,3 +154,15 @@ mod tests {
         assert_eq!(plural(12_345, "pixel", "pixels"), "12,345 pixels");
     }
 }
+
+/// Serializes an f32 a user or a table gave (δ, a brightness) as the
+/// shortest decimal that reads back to it (`0.1`, not
+/// `0.10000000149011612`); non-finite values as `null`. For
+/// `#[serde(serialize_with = "…")]`.
+pub fn serialize_f32_shortest<S: serde::Serializer>(v: &f32, s: S) -> Result<S::Ok, S::Error> {
+    if v.is_finite() {
+        s.serialize_f64(v.to_string().parse().unwrap_or(*v as f64))
+    } else {
+        s.serialize_none()
+    }
+}

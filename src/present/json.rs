@@ -6,9 +6,13 @@
 //! * A count that can depend on data is always `{"min": n, "max": n}`, even
 //!   when exact (`min == max`).
 //! * A real number that is not finite (NaN, ±∞) is `null`; the field's
-//!   description says what `null` means there. f32 values are written with
-//!   the shortest decimal that reads back to the same f32 (`0.0001`, not
-//!   `0.00009999999747378752`).
+//!   description says what `null` means there. An f32 a person gave or a
+//!   table sets (δ, constants, a brightness) is written with the shortest
+//!   decimal that reads back to the same f32 (`0.0001`, not
+//!   `0.00009999999747378752`); an f32 the emulator computed is written
+//!   exactly (every f32 is an f64), to be compared with an f64 reference.
+//! * Limits are `{"name", "slots", "executed"}` (a whole profile adds
+//!   `rep_count` and `loop_nesting`), never `max_slots` beside a count.
 //! * Problems are `diagnostics`: objects with `severity`, `message`, where
 //!   (`file`, `line`, `column`) and `count` — identical problems at several
 //!   places are one object with their count and line range.

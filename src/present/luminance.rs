@@ -192,25 +192,10 @@ pub fn findings_text(shader: &str, findings: &[Finding]) -> String {
         .collect()
 }
 
-/// The text form of a run (`ps30 luminance`).
-pub fn run_text(image: &str, r: &LuminanceRun, choice: &Choice) -> String {
-    let mut s = format!(
-        "{image}: {}×{}, blocks {}×{} → {}×{} target ({}), δ = {}\n",
-        r.width,
-        r.height,
-        r.block.0,
-        r.block.1,
-        r.targets.0,
-        r.targets.1,
-        r.target_format.d3d_name(),
-        r.delta
-    );
-    s.push_str(&format!("blocks: {}\n", choice.text()));
-    s.push_str(&pass_line("pass 1", &r.pass1));
-    if let Some(p) = &r.pass1_last {
-        s.push_str(&pass_line("pass 1 (last column)", p));
-    }
-    s.push_str(&pass_line("pass 2", &r.pass2));
+/// The lines on pass 1's blocks: how many agree, the worst, non-finite
+/// pixels, overflowing sums and the disagreeing blocks.
+fn blocks_text(r: &LuminanceRun) -> String {
+    let mut s = String::new();
     let agreeing = r.blocks.iter().filter(|b| b.agree).count();
     let worst = r
         .blocks
@@ -275,6 +260,29 @@ pub fn run_text(image: &str, r: &LuminanceRun, choice: &Choice) -> String {
             );
         }
     }
+    s
+}
+
+/// The text form of a run (`ps30 luminance`).
+pub fn run_text(image: &str, r: &LuminanceRun, choice: &Choice) -> String {
+    let mut s = format!(
+        "{image}: {}×{}, blocks {}×{} → {}×{} target ({}), δ = {}\n",
+        r.width,
+        r.height,
+        r.block.0,
+        r.block.1,
+        r.targets.0,
+        r.targets.1,
+        r.target_format.d3d_name(),
+        r.delta
+    );
+    s.push_str(&format!("blocks: {}\n", choice.text()));
+    s.push_str(&pass_line("pass 1", &r.pass1));
+    if let Some(p) = &r.pass1_last {
+        s.push_str(&pass_line("pass 1 (last column)", p));
+    }
+    s.push_str(&pass_line("pass 2", &r.pass2));
+    s.push_str(&blocks_text(r));
     s.push_str(&format!(
         "pass 2: L̄w {:.7} vs {:.7} from the stored pass-1 target ({})\n",
         r.pass2_check.emulated,

@@ -33,17 +33,24 @@ use crate::core::isa::{Opcode, RegFile};
 use serde::Serialize;
 use std::collections::BTreeMap;
 
-/// A budget: what a ps_3_0 part allows.
+/// A budget: what a ps_3_0 part allows. In JSON it is a `limits` object,
+/// `{"name", "slots", "executed", "rep_count", "loop_nesting"}`, the shape
+/// every command uses for limits (`docs/json-schema/ps30.json`).
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Profile {
+    /// The profile's name (`ps_3_0`).
     pub name: String,
     /// Static instruction slots.
+    #[serde(rename = "slots")]
     pub max_slots: u64,
     /// Executed instruction slots per pixel.
+    #[serde(rename = "executed")]
     pub max_executed: u64,
     /// rep/loop iteration count range (i#.x in 0..=max).
+    #[serde(rename = "rep_count")]
     pub max_rep_count: u32,
     /// rep/loop nesting depth.
+    #[serde(rename = "loop_nesting")]
     pub max_loop_nesting: u32,
 }
 

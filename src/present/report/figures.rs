@@ -22,18 +22,27 @@ const FAMILY: &str = "sans-serif";
 /// An RGB image with 8-bit channels, row-major, top row first.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Canvas {
+    /// Width in pixels.
     pub width: u32,
+    /// Height in pixels.
     pub height: u32,
+    /// `width × height` pixels of three bytes (R, G, B), row by row.
     pub rgb: Vec<u8>,
 }
 
+/// The background of every figure.
 pub const WHITE_RGB: [u8; 3] = [255, 255, 255];
+/// Text and frames.
 pub const BLACK_RGB: [u8; 3] = [0, 0, 0];
+/// The lines between heat-map cells.
 pub const GRID_RGB: [u8; 3] = [32, 32, 32];
+/// A value that is not a number (NaN) in a heat map.
 pub const LIGHT_RGB: [u8; 3] = [200, 200, 200];
+/// Limits, and what passes them (beyond a bound, over a limit).
 pub const RED_RGB: [u8; 3] = [214, 39, 40];
 
 impl Canvas {
+    /// A `width × height` canvas filled with `background`.
     pub fn new(width: u32, height: u32, background: [u8; 3]) -> Canvas {
         let n = width as usize * height as usize;
         Canvas {
@@ -89,8 +98,11 @@ fn rgb(c: [u8; 3]) -> RGBColor {
 /// The text of a figure: its title and its axes, with units.
 #[derive(Clone, Copy, Debug)]
 pub struct Labels<'a> {
+    /// The figure's title: the quantity shown.
     pub title: &'a str,
+    /// The x axis: its quantity and unit.
     pub x: &'a str,
+    /// The y axis: its quantity and unit.
     pub y: &'a str,
 }
 
@@ -135,9 +147,11 @@ const COLOUR_BAR: u32 = 150;
 /// `x_edges.len() - 1` per row; `y_edges` count down from the top.
 #[derive(Clone, Debug)]
 pub struct HeatMap<'a> {
+    /// Title and axes.
     pub labels: Labels<'a>,
     /// What the colour bar measures, with its unit.
     pub colorbar: &'a str,
+    /// One value per cell, row by row from the top (NaN: light grey).
     pub values: &'a [f64],
     /// Cell boundaries in x, increasing, in data units.
     pub x_edges: &'a [f64],
@@ -270,6 +284,7 @@ impl HeatMap<'_> {
 /// bars. A bar beyond the limit turns red past the line.
 #[derive(Clone, Debug)]
 pub struct BarChart<'a> {
+    /// Title and axes.
     pub labels: Labels<'a>,
     /// The name of each group, top to bottom.
     pub rows: &'a [String],
@@ -381,8 +396,11 @@ impl BarChart<'_> {
 /// line.
 #[derive(Clone, Debug)]
 pub struct Series {
+    /// The name in the legend.
     pub name: String,
+    /// (x, y) in data units, in order.
     pub points: Vec<(f64, f64)>,
+    /// The line's colour.
     pub color: [u8; 3],
 }
 
@@ -392,9 +410,13 @@ pub struct Series {
 /// dropped), so a curve that leaves the chart is seen to leave it.
 #[derive(Clone, Debug)]
 pub struct LineChart<'a> {
+    /// Title and axes.
     pub labels: Labels<'a>,
+    /// The lines.
     pub series: &'a [Series],
+    /// The x axis, in data units.
     pub x_range: (f64, f64),
+    /// The y axis, in data units (values beyond it are drawn at its edge).
     pub y_range: (f64, f64),
     /// Plot y as log10 (y_range then must be positive).
     pub log_y: bool,

@@ -51,8 +51,8 @@ pub struct Budget {
     pub constants: String,
     pub slots: u64,
     pub executed: u64,
-    pub max_slots: u64,
-    pub max_executed: u64,
+    /// The limits it was measured against.
+    pub limits: crate::core::cost::Profile,
 }
 
 /// One heat map of pass-1 blocks.
@@ -118,7 +118,7 @@ impl Generated {
             && self
                 .budgets
                 .iter()
-                .all(|b| b.slots <= b.max_slots && b.executed <= b.max_executed)
+                .all(|b| b.slots <= b.limits.max_slots && b.executed <= b.limits.max_executed)
     }
 }
 
@@ -167,8 +167,8 @@ pub fn generate(
         .iter()
         .map(|b| {
             vec![
-                b.slots as f64 / b.max_slots as f64,
-                b.executed as f64 / b.max_executed as f64,
+                b.slots as f64 / b.limits.max_slots as f64,
+                b.executed as f64 / b.limits.max_executed as f64,
             ]
         })
         .collect();
@@ -313,8 +313,7 @@ pub fn budgets() -> Result<Vec<Budget>, String> {
                 constants: constants.to_string(),
                 slots: a.slots,
                 executed: a.executed.max,
-                max_slots: a.profile.max_slots,
-                max_executed: a.profile.max_executed,
+                limits: a.profile.clone(),
             })
         })
         .collect()
@@ -342,9 +341,9 @@ fn budgets_page(budgets: &[Budget]) -> String {
             b.shader,
             b.constants,
             b.slots,
-            100.0 * b.slots as f64 / b.max_slots as f64,
+            100.0 * b.slots as f64 / b.limits.max_slots as f64,
             thousands(b.executed),
-            100.0 * b.executed as f64 / b.max_executed as f64
+            100.0 * b.executed as f64 / b.limits.max_executed as f64
         ));
     }
     s
