@@ -1,3 +1,5 @@
+// Every public item has a doc comment (modules not yet done are marked where they are declared).
+#![warn(missing_docs)]
 //! # ps30 — Direct3D 9 pixel shader 3.0 assembly you can parse, measure, run and generate
 //!
 //! ps30 reads ps_3_0 assembly (with a real `REPEAT_BLOCK` macro), checks it

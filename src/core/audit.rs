@@ -68,6 +68,7 @@ pub enum Kind {
 /// One finding of the audit.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Finding {
+    /// What kind of finding it is.
     pub kind: Kind,
     /// `c1`, `i2`, `b0`, or the `-D` name.
     pub what: String,

@@ -39,7 +39,9 @@ pub fn excerpt(text: &str) -> String {
 /// A named source text; spans index into `text`.
 #[derive(Clone, Debug)]
 pub struct SourceFile {
+    /// The name shown in diagnostics (a path, or a bundled shader's path).
     pub name: String,
+    /// The text, as read (a byte-order mark dropped).
     pub text: String,
     line_starts: Vec<usize>,
 }
@@ -139,17 +141,23 @@ impl<'a> Files<'a> for SourceFile {
     }
 }
 
+/// How bad a diagnostic is.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub enum Severity {
+    /// The source is usable; something in it is probably not meant.
     Warning,
+    /// The source cannot be used.
     Error,
 }
 
 /// One problem, with where it is and how to fix it.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Diagnostic {
+    /// Error or warning.
     pub severity: Severity,
+    /// What is wrong, in one sentence.
     pub message: String,
+    /// Where (byte offsets into the source).
     pub span: Span,
     /// Short text printed under the caret.
     pub label: String,
@@ -166,6 +174,7 @@ pub struct Diagnostic {
 }
 
 impl Diagnostic {
+    /// An error at `span`.
     pub fn error(span: Span, message: impl Into<String>) -> Diagnostic {
         Diagnostic {
             severity: Severity::Error,
@@ -179,6 +188,7 @@ impl Diagnostic {
         }
     }
 
+    /// A warning at `span`.
     pub fn warning(span: Span, message: impl Into<String>) -> Diagnostic {
         Diagnostic {
             severity: Severity::Warning,
@@ -186,21 +196,25 @@ impl Diagnostic {
         }
     }
 
+    /// With the text under the caret.
     pub fn with_label(mut self, label: impl Into<String>) -> Diagnostic {
         self.label = label.into();
         self
     }
 
+    /// With a one-line suggestion.
     pub fn with_help(mut self, help: impl Into<String>) -> Diagnostic {
         self.help = Some(help.into());
         self
     }
 
+    /// With one more note.
     pub fn with_note(mut self, note: impl Into<String>) -> Diagnostic {
         self.notes.push(note.into());
         self
     }
 
+    /// With another place and its label.
     pub fn with_secondary(mut self, span: Span, label: impl Into<String>) -> Diagnostic {
         self.secondary.push((span, label.into()));
         self
@@ -341,6 +355,7 @@ impl fmt::Display for Diagnostic {
 /// All diagnostics of one source; errors make the source unusable.
 #[derive(Clone, Debug, Default)]
 pub struct Diagnostics {
+    /// The diagnostics, in the order they were found (the same span and message once).
     pub items: Vec<Diagnostic>,
     /// Where each (span, message) already is in `items` (a B-tree: as
     /// small as a `Vec`, so results carrying diagnostics stay small).
@@ -348,6 +363,7 @@ pub struct Diagnostics {
 }
 
 impl Diagnostics {
+    /// Adds `d`, unless the same problem at the same place is already there.
     pub fn push(&mut self, d: Diagnostic) {
         // The same problem in every repetition of a macro is reported once.
         let key = (d.span, d.message.clone());
@@ -372,14 +388,17 @@ impl Diagnostics {
         }
     }
 
+    /// Whether any diagnostic is an error.
     pub fn has_errors(&self) -> bool {
         self.items.iter().any(|d| d.severity == Severity::Error)
     }
 
+    /// The errors.
     pub fn errors(&self) -> impl Iterator<Item = &Diagnostic> {
         self.items.iter().filter(|d| d.severity == Severity::Error)
     }
 
+    /// The warnings.
     pub fn warnings(&self) -> impl Iterator<Item = &Diagnostic> {
         self.items
             .iter()
@@ -520,7 +539,9 @@ pub fn group_indices<K: Eq + std::hash::Hash>(keys: impl Iterator<Item = K>) -> 
 /// A source that could not be turned into a shader, with its diagnostics.
 #[derive(Clone, Debug)]
 pub struct SourceError {
+    /// The source.
     pub file: SourceFile,
+    /// Why it is unusable (at least one error).
     pub diagnostics: Diagnostics,
 }
 

@@ -5,9 +5,9 @@
 //! The article's blocks (125×128 unrolled, 128×56 loop) were chosen for
 //! 1280×1024. On a 3×7 image a 125×128 block reads 15,979 texels of BORDER
 //! padding for 21 real ones, and the f32 sum of that padding drowns the
-//! image. So a run that names no shaders asks [`plan`](crate::jobs::gen::plan)
+//! image. So a run that names no shaders asks [`crate::jobs::gen::plan`]
 //! for the image's own size and runs the shaders
-//! [`set::generate`](crate::jobs::gen::set::generate) writes for the
+//! [`crate::jobs::gen::set::generate`] writes for the
 //! recommended configuration; a run that names a pass-1 shader takes the
 //! block from the shader: a generated shader's header states it, a bundled
 //! listing has the article's.
@@ -23,7 +23,9 @@ use crate::jobs::luminance::ShaderSource;
 pub struct Planned {
     /// The recommended candidate (`unrolled 117×128 → 11×8`, …).
     pub candidate: Candidate,
+    /// The pass-1 shader written for it.
     pub pass1: ShaderSource,
+    /// The pass-2 shader written for its target.
     pub pass2: ShaderSource,
     /// Why the planner chose it, in one sentence.
     pub why: String,

@@ -37,11 +37,13 @@ pub const ARTICLE_LOOP: Bundled = bundled!(
     "asm/article/lum_pass1_loop.psh",
     "luminance pass 1 as printed: rep/rep loop over an i1×i2 block"
 );
+/// `article:unrolled`: the article's unrolled pass 1.
 pub const ARTICLE_UNROLLED: Bundled = bundled!(
     "article:unrolled",
     "asm/article/lum_pass1_unrolled.psh",
     "luminance pass 1 as printed: 125 samples per line unrolled, rep i2 over lines"
 );
+/// `article:pass2`: the article's pass 2.
 pub const ARTICLE_PASS2: Bundled = bundled!(
     "article:pass2",
     "asm/article/lum_pass2.psh",
@@ -54,11 +56,13 @@ pub const CORRECTED_LOOP: Bundled = bundled!(
     "asm/corrected/lum_pass1_loop.psh",
     "pass 1, loop form, with the line-end fix"
 );
+/// `corrected:unrolled`: pass 1, unrolled, corrected.
 pub const CORRECTED_UNROLLED: Bundled = bundled!(
     "corrected:unrolled",
     "asm/corrected/lum_pass1_unrolled.psh",
     "pass 1, unrolled form (125 per line), with the line-end fix"
 );
+/// `corrected:pass2`: pass 2, corrected.
 pub const CORRECTED_PASS2: Bundled = bundled!(
     "corrected:pass2",
     "asm/corrected/lum_pass2.psh",
@@ -102,11 +106,13 @@ pub const LOG_LIGHTS_LIGHT: Bundled = bundled!(
     "asm/log-lights/light.psh",
     "a light stored raw into RGBA8 (additive blending, saturates at 1)"
 );
+/// `log-lights:log`: a light stored as exp2(−light).
 pub const LOG_LIGHTS_LOG: Bundled = bundled!(
     "log-lights:log",
     "asm/log-lights/log.psh",
     "a light stored as exp2(-light), for multiplicative blending"
 );
+/// `log-lights:recover`: a light recovered from a log-lights buffer.
 pub const LOG_LIGHTS_RECOVER: Bundled = bundled!(
     "log-lights:recover",
     "asm/log-lights/recover.psh",

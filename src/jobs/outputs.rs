@@ -31,7 +31,9 @@ pub struct ChannelStats {
     pub channel: char,
     /// Over the finite values (`None` when there is none).
     pub min: Option<f64>,
+    /// Over the finite values.
     pub max: Option<f64>,
+    /// Over the finite values.
     pub mean: Option<f64>,
     /// Texels whose value is NaN or infinite.
     pub non_finite: u64,

@@ -24,7 +24,12 @@ pub enum Choice {
     FromShader,
     /// No shader named: the planner's recommendation for the image's size
     /// (`label`), with generated shaders.
-    Planned { label: String, why: String },
+    Planned {
+        /// The candidate (`unrolled 117×128 → 11×8`).
+        label: String,
+        /// Why the planner chose it.
+        why: String,
+    },
 }
 
 impl Choice {

@@ -8,9 +8,12 @@ pub mod luminance;
 pub mod plan;
 pub mod profile;
 pub mod render;
+#[allow(missing_docs)] // not yet documented item by item (ARCHITECTURE.md, "Documentation")
 pub mod report;
 pub mod shaders;
+#[allow(missing_docs)] // not yet documented item by item (ARCHITECTURE.md, "Documentation")
 pub mod study;
 pub mod tonemap;
 pub mod unroll;
+#[allow(missing_docs)] // not yet documented item by item (ARCHITECTURE.md, "Documentation")
 pub mod verify;

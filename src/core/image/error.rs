@@ -10,8 +10,10 @@ use std::path::{Path, PathBuf};
 /// `image` crates), kept as the error's source.
 pub use crate::core::output::ForeignError;
 
-/// Everything that can go wrong while reading or writing an image file.
+/// Everything that can go wrong while reading or writing an image file. The
+/// fields of each variant are what its message names (see its `Display`).
 #[derive(Debug)]
+#[allow(missing_docs)]
 pub enum ImageError {
     /// The file system refused `action` ("open", "read", "rename", ...).
     Io {

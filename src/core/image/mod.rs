@@ -89,7 +89,9 @@ fn crlf_error(path: &Path, format: &'static str) -> ImageError {
 /// [`HdrImage::stats`]).
 #[derive(Clone, Debug, PartialEq)]
 pub struct HdrImage {
+    /// Width in pixels.
     pub width: u32,
+    /// Height in pixels.
     pub height: u32,
     /// `width * height` pixels.
     pub pixels: Vec<[f32; 4]>,

@@ -68,6 +68,7 @@ impl OutputFormat {
 /// What a write did.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Written {
+    /// The format written (chosen by the extension).
     pub format: OutputFormat,
     /// PNG: stored values outside [0, 1] (or NaN) that were clamped.
     pub clamped: u64,

@@ -5,7 +5,7 @@
 //! [`crate::core::cost::analyse`]; the searches only rely on the counts growing
 //! with the block (more texels per line never cost fewer slots or executed
 //! instructions, more lines never cost fewer executed instructions), which
-//! holds for every listing [`super::asm`] writes.
+//! holds for every listing `asm.rs` writes.
 //!
 //! The only shortcut is a sound lower bound used to avoid building absurd
 //! listings: every `texld` costs at least one slot, so a listing with more

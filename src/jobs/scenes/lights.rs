@@ -44,7 +44,9 @@ const WRAP: [f32; 2] = [0.6666667, 0.3333333];
 /// A G-buffer and the material textures of the three light models.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Scene {
+    /// The G-buffer's width in pixels.
     pub width: u32,
+    /// Its height in pixels.
     pub height: u32,
     /// The G-buffer texels as stored (f16-rounded): xyz = N, w = ID.
     pub gbuffer: Vec<[f32; 4]>,
@@ -383,12 +385,14 @@ fn check_size(width: u32, height: u32) -> Result<(), SceneError> {
 /// [`Scene::expected`].
 #[derive(Clone, Debug)]
 pub struct LightsRun {
+    /// What the draw wrote.
     pub output: DrawOutput,
     /// Pixels per model, and how many of them match the CPU bit for bit.
     pub per_model: [(u64, u64); MODELS],
 }
 
 impl LightsRun {
+    /// Whether every pixel of every model matches the CPU bit for bit.
     pub fn all_match(&self) -> bool {
         self.per_model.iter().all(|&(n, ok)| n == ok)
     }
