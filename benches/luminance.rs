@@ -1,23 +1,31 @@
-//! The luminance pipeline's speed against the f64 CPU reference, measured in
-//! one run on the article's frame size (`courtyard_1280x1024.exr`):
+//! The luminance pipeline's speed, measured side by side in one criterion
+//! group on the article's frame size (`courtyard_1280x1024.exr`), so that
+//! every ratio comes from one run:
 //!
-//! * `reference/f64`: the CPU reference's L̄w (every pixel once);
+//! * `reference/f64`: the CPU reference's L̄w (every pixel once), one thread;
+//! * `native/f32`: the floor — what pass 1 computes, written as a plain f32
+//!   loop (luminance dot, `f32::log2`, block sums), one thread;
 //! * `emulate/unrolled`: both passes of the corrected unrolled shaders
-//!   (125×128 blocks), one emulator thread;
-//! * `emulate/unrolled+lod`: the same with `Draw::record_lod` on pass 1,
-//!   as `ps30 luminance` runs it (the LOD statistic behind its warning);
-//! * `emulate/loop`: both passes of the corrected loop shaders (128×56
-//!   blocks), one emulator thread.
+//!   (125×128 blocks), one emulator thread; `emulate/unrolled+lod` the same
+//!   with `Draw::record_lod` on pass 1, as `ps30 luminance` runs it;
+//!   `emulate/loop`: the corrected loop shaders (128×56 blocks);
+//! * `pass1/1t`, `pass1/2t`: pass 1 alone on one and two emulator threads;
+//! * `phase/decode`, `phase/crosscheck`: decoding the file, and the f64
+//!   cross-check's one scan (every term, the block bounds, the reference);
+//! * `command/luminance|tonemap|run/Nt`: what `ps30 luminance`, `ps30
+//!   tonemap` and `ps30 run` compute (decoding included, no printing) with
+//!   all their work on N threads, as `--threads N` runs them.
 //!
-//! The target is `emulate/unrolled` within 3× of `reference/f64`.
-//! The cross-check (block bounds) is not part of the timed work.
+//! The cross-check's bounds are not part of the `emulate/*` entries.
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use ps30::core::emu::{self, Address, Constants, Draw, Filter, LinearInput, SamplerState};
-use ps30::core::image::{load, ImageLimits, RenderTarget, TargetFormat};
-use ps30::core::load::{load_str, Options};
+use ps30::core::image::{load, HdrImage, ImageLimits, RenderTarget, TargetFormat};
+use ps30::core::load::{load_str, Loaded, Options};
 use ps30::jobs::bundled::{CORRECTED_LOOP, CORRECTED_PASS2, CORRECTED_UNROLLED};
 use ps30::jobs::luminance::reference::{self, Policy};
+use ps30::jobs::luminance::{self, run_pass, PassSetup, ShaderSource};
+use ps30::jobs::tonemap;
 use std::hint::black_box;
 use std::path::Path;
 
@@ -38,15 +46,15 @@ fn state() -> SamplerState {
     }
 }
 
-/// Pass 1 then pass 2 on one thread; returns L̄w.
-fn two_pass(
-    img: &ps30::core::image::HdrImage,
+/// Pass 1 on `threads` emulator threads: the `nx × ny` R32F target.
+fn pass1(
+    img: &HdrImage,
     p1: &emu::Compiled,
-    p2: &emu::Compiled,
     bw: u32,
     bh: u32,
     record_lod: bool,
-) -> f32 {
+    threads: usize,
+) -> RenderTarget {
     let (w, h) = (img.width, img.height);
     let (nx, ny) = (w.div_ceil(bw), h.div_ceil(bh));
     let mut d1 = Draw::new(nx, ny);
@@ -70,11 +78,26 @@ fn two_pass(
         bool: Vec::new(),
     };
     d1.samplers.push((0, img.as_texture().into(), state()));
-    let out1 = emu::run_with_threads(p1, &d1, 1).unwrap();
+    let out1 = emu::run_with_threads(p1, &d1, threads).unwrap();
     let mut t1 = RenderTarget::new(nx, ny, TargetFormat::R32F);
     for (i, v) in out1.color[0].as_ref().unwrap().iter().enumerate() {
         t1.store(i as u32 % nx, i as u32 / nx, *v);
     }
+    t1
+}
+
+/// Pass 1 then pass 2 on one thread; returns L̄w.
+fn two_pass(
+    img: &HdrImage,
+    p1: &emu::Compiled,
+    p2: &emu::Compiled,
+    bw: u32,
+    bh: u32,
+    record_lod: bool,
+) -> f32 {
+    let (w, h) = (img.width, img.height);
+    let (nx, ny) = (w.div_ceil(bw), h.div_ceil(bh));
+    let t1 = pass1(img, p1, bw, bh, record_lod, 1);
     let mut d2 = Draw::new(1, 1);
     d2.inputs.push((
         0,
@@ -90,6 +113,67 @@ fn two_pass(
         .unwrap()[0][0]
 }
 
+/// The floor: pass 1's arithmetic as a plain f32 loop over 125×128 blocks
+/// (black outside the image, as BORDER addressing reads), returning the sum
+/// of the block sums so nothing is optimised away.
+fn native_f32(img: &HdrImage, bw: u32, bh: u32) -> f32 {
+    let (w, h) = (img.width, img.height);
+    let black = 1e-4f32.log2();
+    let mut total = 0.0;
+    for by in 0..h.div_ceil(bh) {
+        for bx in 0..w.div_ceil(bw) {
+            let mut sum = 0f32;
+            for y in by * bh..(by + 1) * bh {
+                for x in bx * bw..(bx + 1) * bw {
+                    sum += if x < w && y < h {
+                        let p = img.pixels[(y * w + x) as usize];
+                        (0.27 * p[0] + 0.67 * p[1] + 0.06 * p[2] + 1e-4)
+                            .abs()
+                            .log2()
+                    } else {
+                        black
+                    };
+                }
+            }
+            total += sum;
+        }
+    }
+    total
+}
+
+/// Runs `f` with all of its parallel work on `threads` threads.
+fn on_threads<T: Send>(threads: usize, f: impl FnOnce() -> T + Send) -> T {
+    rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .build()
+        .unwrap()
+        .install(f)
+}
+
+/// `ps30 run corrected:loop` over the image into a 10×8 target (128×128
+/// blocks), as the README's example does on another image.
+fn run_command(path: &Path, loop1: &Loaded, threads: usize) -> f32 {
+    let img = load(path, &ImageLimits::default()).unwrap();
+    let setup = PassSetup {
+        target: (10, 8),
+        constants: Constants {
+            float: vec![
+                [0.0; 4],
+                [1.0 / 1280.0, 1.0 / 1024.0, 0.0, 1.0],
+                [0.0; 4],
+                [0.27, 0.67, 0.06, 0.01],
+            ],
+            int: vec![[0; 4], [128, 0, 0, 0], [128, 0, 0, 0]],
+            bool: Vec::new(),
+        },
+        sampler: state(),
+        format: TargetFormat::R32F,
+        threads: Some(threads),
+        limits: emu::EmuLimits::default(),
+    };
+    run_pass(loop1, &img, &setup).unwrap().target.texel(0, 0)[0]
+}
+
 fn luminance(c: &mut Criterion) {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/hdr/courtyard_1280x1024.exr");
     let img = load(&path, &ImageLimits::default()).unwrap();
@@ -101,10 +185,25 @@ fn luminance(c: &mut Criterion) {
         compile(CORRECTED_LOOP.listing(), &[]),
         compile(CORRECTED_PASS2.listing(), &[("xsize", 10), ("ysize", 19)]),
     );
+    let loop1 = load_str(
+        CORRECTED_LOOP.listing().0,
+        CORRECTED_LOOP.listing().1,
+        &Options::default(),
+    )
+    .unwrap();
+    let source = |b: &ps30::jobs::bundled::Bundled| ShaderSource::new(b.listing().0, b.listing().1);
+    let (p1, p2) = (source(&CORRECTED_UNROLLED), source(&CORRECTED_PASS2));
     let mut g = c.benchmark_group("courtyard_1280x1024");
-    g.sample_size(20);
+    g.sample_size(10);
     g.bench_function("reference/f64", |b| {
-        b.iter(|| reference::log_average(black_box(&img), 1e-4, Policy::ABS).log_average)
+        b.iter(|| {
+            on_threads(1, || {
+                reference::log_average(black_box(&img), 1e-4, Policy::ABS).log_average
+            })
+        })
+    });
+    g.bench_function("native/f32", |b| {
+        b.iter(|| native_f32(black_box(&img), 125, 128))
     });
     g.bench_function("emulate/unrolled", |b| {
         b.iter(|| two_pass(black_box(&img), &unrolled.0, &unrolled.1, 125, 128, false))
@@ -115,6 +214,54 @@ fn luminance(c: &mut Criterion) {
     g.bench_function("emulate/loop", |b| {
         b.iter(|| two_pass(black_box(&img), &looped.0, &looped.1, 128, 56, false))
     });
+    for t in [1, 2] {
+        g.bench_function(format!("pass1/{t}t"), |b| {
+            b.iter(|| pass1(black_box(&img), &unrolled.0, 125, 128, false, t))
+        });
+    }
+    eprintln!("pass1 through the GPU backend (llvmpipe): skipped, this build has no GPU backend");
+    g.bench_function("phase/decode", |b| {
+        b.iter(|| on_threads(1, || load(&path, &ImageLimits::default()).unwrap().width))
+    });
+    g.bench_function("phase/crosscheck", |b| {
+        b.iter(|| {
+            on_threads(1, || {
+                luminance::pass1_bounds(black_box(&img), (125, 128), 1e-4, Policy::ABS).1
+            })
+        })
+    });
+    for t in [1, 2] {
+        g.bench_function(format!("command/luminance/{t}t"), |b| {
+            b.iter(|| {
+                on_threads(t, || {
+                    let img = load(&path, &ImageLimits::default()).unwrap();
+                    let settings = luminance::Settings {
+                        threads: Some(t),
+                        ..Default::default()
+                    };
+                    luminance::run(&img, &p1, &p2, &settings)
+                        .unwrap()
+                        .log_average
+                })
+            })
+        });
+        g.bench_function(format!("command/tonemap/{t}t"), |b| {
+            b.iter(|| {
+                on_threads(t, || {
+                    let img = load(&path, &ImageLimits::default()).unwrap();
+                    let settings = tonemap::Settings {
+                        threads: Some(t),
+                        ..Default::default()
+                    };
+                    let out = tonemap::run(&img, &settings, &|_, _| {}).unwrap();
+                    out.srgb8().len()
+                })
+            })
+        });
+        g.bench_function(format!("command/run/{t}t"), |b| {
+            b.iter(|| on_threads(t, || run_command(&path, &loop1, t)))
+        });
+    }
     g.finish();
 }
 

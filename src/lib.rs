@@ -2,15 +2,19 @@
 #![warn(missing_docs)]
 //! # ps30 — Direct3D 9 pixel shader 3.0 assembly you can parse, measure, run and generate
 //!
-//! ps30 reads ps_3_0 assembly (with a real `REPEAT_BLOCK` macro), checks it
-//! against the ps_3_0 rules, counts its instruction slots and executed
-//! instructions against the 512 / 65,535 budgets, runs it on HDR images and
-//! cross-checks the result against a CPU reference. Draws meet in render
-//! targets of D3D9's formats through the output merger (blending, write
-//! masks, clears), so lights accumulate and mip chains reduce, as in the
-//! article's lighting phase and the alternatives it is measured against.
+//! ps30 reads ps_3_0 assembly (with a real `REPEAT_BLOCK` macro) and
+//! compiled ps_3_0 bytecode, checks it against the ps_3_0 rules, counts its
+//! instruction slots and executed instructions against the 512 / 65,535
+//! budgets, runs it on HDR images and cross-checks the result against a CPU
+//! reference; it writes bytecode back exactly as Microsoft's assembler does.
+//! Draws meet in render targets of D3D9's formats through the output merger
+//! (blending, write masks, clears), so lights accumulate and mip chains
+//! reduce, as in the article's lighting phase and the alternatives it is
+//! measured against.
 //!
 //! ```text
+//! bytecode ──read──▶ tokens ──listing──┐            (and back: AST ──write──▶ tokens)
+//!                                      ▼
 //! asm text ──parse──▶ AST (spans) ──expand REPEAT_BLOCK──▶ AST ──validate──▶ Shader (Program + Info)
 //!                                                                              │
 //!                         ┌────────────────────┬────────────────────────────────┤
@@ -29,8 +33,9 @@
 //! at the top of the repository draws the whole map):
 //!
 //! * [`core`](mod@core) — the stages every job shares: the instruction table
-//!   and IR, the front end and printer, validation, the cost model, the
-//!   emulator, images and render targets, and the output merger;
+//!   and IR, the front end and printer, bytecode in and out, validation, the
+//!   cost model, the emulator, images and render targets, and the output
+//!   merger;
 //! * [`jobs`] — what ps30 does with them: the luminance pipeline with its
 //!   reference, tone mapping, profiling, the generator and planner, scenes,
 //!   draw lists, the studies of the alternatives, the article's claims, and
@@ -42,12 +47,12 @@
 //!
 //! ```
 //! use ps30::core::{cost, load};
-//! let src = "ps_3_0\ndefi i0, 128, 0, 0, 0\nrep i0\n  add r0, r0, r0\nendrep\nmov oC0, r0\n";
+//! let src = "ps_3_0\ndefi i0, 128, 0, 0, 0\nmov r0, c0\nrep i0\n  add r0, r0, r0\nendrep\nmov oC0, r0\n";
 //! let loaded = load::load_str("example.psh", src, &load::Options::default()).unwrap();
 //! let analysis = cost::analyse(&loaded.shader, &loaded.file, &cost::Environment::default(),
 //!                              &cost::Profile::ps_3_0()).unwrap();
-//! assert_eq!(analysis.slots, 7);                       // rep 3 + add 1 + endrep 2 + mov 1
-//! assert_eq!(analysis.executed.max, 128 * 6 + 1);      // (3 + 1 + 2) per iteration
+//! assert_eq!(analysis.slots, 8);                       // mov 1 + rep 3 + add 1 + endrep 2 + mov 1
+//! assert_eq!(analysis.executed.max, 1 + 128 * 6 + 1);  // (3 + 1 + 2) per iteration
 //! ```
 
 // Diagnostics are large on purpose (message, label, help, notes) and only

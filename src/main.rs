@@ -22,7 +22,9 @@ fn main() -> ExitCode {
     cli::clean_up_on_interrupt();
     let ui = Ui::new(parsed.quiet, parsed.color);
     let outcome = match parsed.command {
+        Command::Asm(args) => cli::asm::run(args, &ui),
         Command::Check(args) => cli::check::run(args, &ui),
+        Command::Disasm(args) => cli::disasm::run(args, &ui),
         Command::Expand(args) => cli::expand::run(args, &ui),
         Command::Run(args) => cli::run::run(args, &ui),
         Command::Luminance(args) => cli::luminance::run(args, &ui),

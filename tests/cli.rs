@@ -742,3 +742,366 @@ fn a_closed_stdout_is_not_an_error() {
         String::from_utf8_lossy(&out.stderr)
     );
 }
+
+// ---------------------------------------------------------------------------
+// Compiled shaders: ps30 asm, ps30 disasm, and bytecode everywhere a shader
+// is read.
+
+#[path = "common/ctab.rs"]
+mod ctab_builder;
+
+/// `ps30 asm ARGS -o dir/NAME`, which must succeed; the path written.
+fn asm(dir: &std::path::Path, args: &[&str], name: &str) -> std::path::PathBuf {
+    let out = dir.join(name);
+    let mut all = vec!["asm"];
+    all.extend(args);
+    all.extend(["-o", out.to_str().unwrap()]);
+    let o = ps30(&all, repo());
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    out
+}
+
+fn json(o: &Output) -> serde_json::Value {
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(o));
+    serde_json::from_slice(&o.stdout).unwrap()
+}
+
+#[test]
+fn asm_then_check_counts_as_the_text_and_disasm_assembles_to_the_same_bytes() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = ["-D", "xsize=11", "-D", "ysize=8"];
+    let p2 = asm(
+        dir.path(),
+        &["asm/corrected/lum_pass2.psh", d[0], d[1], d[2], d[3]],
+        "p2.fxo",
+    );
+    let text = json(&ps30(
+        &[
+            "check",
+            "asm/corrected/lum_pass2.psh",
+            d[0],
+            d[1],
+            d[2],
+            d[3],
+            "--json",
+        ],
+        repo(),
+    ));
+    let compiled = json(&ps30(&["check", p2.to_str().unwrap(), "--json"], repo()));
+    for key in [
+        "slots",
+        "executed",
+        "executed_min",
+        "executed_max",
+        "verdict",
+    ] {
+        assert_eq!(text[key], compiled[key], "{key}");
+    }
+    assert_eq!(compiled["slots"], 191);
+    let sum = |v: &serde_json::Value| -> u64 {
+        v["lines"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|l| l["executed"].as_u64().unwrap())
+            .sum()
+    };
+    assert_eq!(sum(&text), sum(&compiled));
+    // disasm | asm - gives the same bytes.
+    let listing = ps30(&["disasm", p2.to_str().unwrap()], repo());
+    assert_eq!(listing.status.code(), Some(0), "{}", stderr(&listing));
+    let again = dir.path().join("again.fxo");
+    let o = bin::ps30_with_stdin(
+        &["asm", "-", "-o", again.to_str().unwrap()],
+        repo(),
+        &listing.stdout,
+    );
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert_eq!(std::fs::read(&p2).unwrap(), std::fs::read(&again).unwrap());
+    // And -o - writes the same bytes to a pipe.
+    let piped = ps30(&["asm", p2.to_str().unwrap(), "-o", "-"], repo());
+    assert_eq!(piped.status.code(), Some(0), "{}", stderr(&piped));
+    assert_eq!(piped.stdout, std::fs::read(&p2).unwrap());
+    let listed = stdout(&listing);
+    assert!(listed.starts_with("    ps_3_0\n"), "{listed}");
+    assert!(
+        listed.ends_with(
+            "// approximately 191 instruction slots used (88 texture, 103 arithmetic)\n"
+        ),
+        "{listed}"
+    );
+}
+
+#[test]
+fn every_command_that_reads_a_shader_takes_bytecode_and_gets_the_same_results() {
+    let dir = tempfile::tempdir().unwrap();
+    let p = |f: &std::path::PathBuf| f.to_str().unwrap().to_string();
+    // sunset.pfm is 1024×512: 125×128 blocks make a 9×4 target.
+    let pass1 = p(&asm(dir.path(), &["corrected:unrolled"], "p1.fxo"));
+    let pass2 = p(&asm(
+        dir.path(),
+        &["corrected:pass2", "-D", "xsize=9", "-D", "ysize=4"],
+        "p2.fxo",
+    ));
+    let tone = p(&asm(dir.path(), &["tonemap:reinhard"], "tone.fxo"));
+    let select = p(&asm(dir.path(), &["lights:select"], "select.fxo"));
+    let lum = |a: &str, b: &str| {
+        json(&ps30(
+            &[
+                "luminance",
+                "assets/hdr/sunset.pfm",
+                "--pass1",
+                a,
+                "--pass2",
+                b,
+                "--json",
+            ],
+            repo(),
+        ))
+    };
+    let (t, c) = (
+        lum("corrected:unrolled", "corrected:pass2"),
+        lum(&pass1, &pass2),
+    );
+    for key in [
+        "log_average",
+        "reference_log_average",
+        "executed_per_pixel",
+        "agree",
+    ] {
+        assert_eq!(t[key], c[key], "luminance {key}");
+    }
+    let tm = |s: &str| {
+        json(&ps30(
+            &["tonemap", "assets/hdr/sunset.pfm", "--shader", s, "--json"],
+            repo(),
+        ))
+    };
+    let (t, c) = (tm("tonemap:reinhard"), tm(&tone));
+    for key in [
+        "log_average",
+        "max_error",
+        "mismatched_8bit_channels",
+        "agree",
+    ] {
+        assert_eq!(t[key], c[key], "tonemap {key}");
+    }
+    let run = |s: &str| {
+        json(&ps30(
+            &[
+                "run",
+                s,
+                "--image",
+                "assets/hdr/sunset.pfm",
+                "--target",
+                "9x4",
+                "--const",
+                "c1=0.0009765625,0.001953125,0,1",
+                "--const",
+                "c3=0.27,0.67,0.06,0.01",
+                "--json",
+            ],
+            repo(),
+        ))
+    };
+    let (t, c) = (run("corrected:unrolled"), run(&pass1));
+    assert_eq!(t["target"], c["target"], "run's target");
+    let prof = |s: &str| {
+        json(&ps30(
+            &["profile", s, "--gbuffer", "16x16", "--json"],
+            repo(),
+        ))
+    };
+    let (t, c) = (prof("lights:select"), prof(&select));
+    for key in ["per_pixel", "per_quad", "divergent_quads", "models"] {
+        assert_eq!(t[key], c[key], "profile {key}");
+    }
+    let expanded = ps30(&["expand", &pass2], repo());
+    assert_eq!(expanded.status.code(), Some(0), "{}", stderr(&expanded));
+    assert!(stdout(&expanded).contains("texld r2.x, r0, s0"));
+}
+
+/// A shader whose constant table names c0 `g_fKey`, i0 `g_iSteps` and b0
+/// `g_bOn`: as assembly with the table in `//#comment` lines.
+fn shader_with_table(dir: &std::path::Path) -> std::path::PathBuf {
+    use ctab_builder::{comment_lines, table, Const, Ty};
+    let body = table(
+        "tests",
+        "ps_3_0",
+        0xffff0300,
+        &[
+            Const {
+                name: "g_fKey",
+                set: 2,
+                index: 0,
+                count: 1,
+                ty: Ty::numeric(0, 3, 1, 1, 1),
+                default: Some(vec![0.18f32.to_bits(), 0, 0, 0]),
+            },
+            Const {
+                name: "g_iSteps",
+                set: 1,
+                index: 0,
+                count: 1,
+                ty: Ty::numeric(1, 2, 1, 4, 1),
+                default: None,
+            },
+            Const {
+                name: "g_bOn",
+                set: 0,
+                index: 0,
+                count: 1,
+                ty: Ty::numeric(0, 1, 1, 1, 1),
+                default: None,
+            },
+        ],
+    );
+    let src = format!(
+        "ps_3_0\n{}dcl_texcoord0 v0.xy\ndcl_2d s0\ntexld r0, v0, s0\nrep i0\n  add r0, r0, c0.x\nendrep\nif b0\n  mul r0, r0, c0.x\nendif\nmov oC0, r0\n",
+        comment_lines(&body)
+    );
+    let path = dir.join("named.psh");
+    std::fs::write(&path, src).unwrap();
+    asm(dir, &[path.to_str().unwrap()], "named.fxo")
+}
+
+#[test]
+fn constants_are_given_by_their_names_in_the_constant_table() {
+    let dir = tempfile::tempdir().unwrap();
+    let fxo = shader_with_table(dir.path());
+    let f = fxo.to_str().unwrap();
+    let o = ps30(
+        &["check", f, "--int", "g_iSteps=5", "--bool", "g_bOn=true"],
+        repo(),
+    );
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let out = stdout(&o);
+    // texld 1, then 5 iterations of rep 3 + add 1 + endrep 2 (rep and endrep
+    // are charged per iteration), if 3, mul 1, endif 1, mov 1: 37.
+    assert!(out.contains("executed           37 / 65,535"), "{out}");
+    for line in [
+        "g_fKey    c0           1  float  (0.18, 0, 0, 0)",
+        "g_iSteps  i0           1  int4",
+        "g_bOn     b0           1  bool",
+    ] {
+        assert!(out.contains(line), "`{line}` missing from\n{out}");
+    }
+    let by_register = json(&ps30(
+        &["check", f, "--int", "i0=5", "--bool", "b0=true", "--json"],
+        repo(),
+    ));
+    assert_eq!(by_register["executed"], 37);
+    assert_eq!(
+        by_register["constant_table"]["constants"][0]["name"],
+        "g_fKey"
+    );
+    let run = |c: &str| {
+        json(&ps30(
+            &[
+                "run",
+                f,
+                "--image",
+                "assets/hdr/sunset.pfm",
+                "--target",
+                "4x2",
+                "--const",
+                c,
+                "--int",
+                "g_iSteps=2",
+                "--json",
+            ],
+            repo(),
+        ))
+    };
+    assert_eq!(run("g_fKey=0.5")["target"], run("c0=0.5")["target"]);
+    for (args, says) in [
+        (
+            vec!["check", f, "--int", "g_fKey=1"],
+            "`g_fKey` is a float4 constant (c0); set it with --const",
+        ),
+        (
+            vec!["check", f, "--int", "g_nope=1"],
+            "has no `g_nope` (it has g_fKey, g_iSteps, g_bOn)",
+        ),
+        (
+            vec!["check", "corrected:loop", "--int", "g_iSteps=1"],
+            "has no constant table",
+        ),
+        (
+            vec!["check", f, "--int", "g_iSteps=1,2,3,4,5"],
+            "5 values, but the target takes 1 register of 4",
+        ),
+    ] {
+        let o = ps30(&args, repo());
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+        assert!(stderr(&o).contains(says), "{args:?}: {}", stderr(&o));
+    }
+}
+
+#[test]
+fn disasm_lists_the_table_and_its_json_has_the_documented_fields() {
+    let dir = tempfile::tempdir().unwrap();
+    let fxo = shader_with_table(dir.path());
+    let o = ps30(&["disasm", fxo.to_str().unwrap()], repo());
+    let out = stdout(&o);
+    for line in [
+        "// Generated by tests",
+        "//   float g_fKey;",
+        "//   g_iSteps     i0       1",
+        "//#comment 42415443 0000001c",
+        "      add r0, r0, c0.x",
+    ] {
+        assert!(out.contains(line), "`{line}` missing from\n{out}");
+    }
+    let v = json(&ps30(&["disasm", fxo.to_str().unwrap(), "--json"], repo()));
+    for key in [
+        "file",
+        "version",
+        "tokens",
+        "bytes",
+        "slots",
+        "constant_table",
+        "comments",
+        "instructions",
+        "listing",
+    ] {
+        assert!(!v[key].is_null(), "missing {key}");
+    }
+    assert_eq!(v["constant_table"]["constants"][1]["register"], "i0");
+    let first = &v["instructions"][0];
+    assert_eq!(first["text"], "dcl_texcoord v0.xy");
+    assert_eq!(first["byte"], first["token"].as_u64().unwrap() * 4);
+    assert_eq!(v["listing"], out);
+}
+
+#[test]
+fn asm_refuses_invalid_programs_and_other_versions_and_writes_nothing() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out.fxo");
+    for (src, says) in [
+        (
+            "ps_3_0\nmov oC0, r5.x\nfoo r0\n",
+            "unknown instruction `foo`",
+        ),
+        (
+            "ps_2_0\ndcl t0\nmov oC0, t0\n",
+            "this is a ps_2_0 shader; ps30 reads ps_3_0 only",
+        ),
+    ] {
+        let path = dir.path().join("bad.psh");
+        std::fs::write(&path, src).unwrap();
+        let o = ps30(
+            &["asm", path.to_str().unwrap(), "-o", out.to_str().unwrap()],
+            repo(),
+        );
+        assert_eq!(o.status.code(), Some(2));
+        assert!(stderr(&o).contains(says), "{}", stderr(&o));
+        assert!(!out.exists(), "nothing is written");
+    }
+    let o = ps30(
+        &["asm", "corrected:pass2", "-o", "/nonexistent/dir/x.fxo"],
+        repo(),
+    );
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("does not exist"), "{}", stderr(&o));
+}

@@ -12,9 +12,11 @@ fn ps30(args: &[&str]) -> Output {
     bin::ps30(args, bin::repo())
 }
 
-const COMMANDS: [&str; 8] = [
+const COMMANDS: [&str; 10] = [
     "check",
     "expand",
+    "asm",
+    "disasm",
     "run",
     "luminance",
     "tonemap",
@@ -65,7 +67,7 @@ fn quiet_keeps_results_and_drops_notes() {
     let f = dir.path().join("d.psh");
     std::fs::write(
         &f,
-        "ps_3_0\ndefi i0, 4, 0, 0, 0\nrep i0\nadd r0, r0, r0\nendrep\nmov oC0, r0\n",
+        "ps_3_0\ndefi i0, 4, 0, 0, 0\nmov r0, c0\nrep i0\nadd r0, r0, r0\nendrep\nmov oC0, r0\n",
     )
     .unwrap();
     let f = f.to_str().unwrap();

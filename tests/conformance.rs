@@ -2,11 +2,11 @@
 //! every case run through ps30 and compared with the colours real drivers
 //! produced.
 //!
-//! For each folder: the `.psh` files must mean what Wine's token arrays say
-//! (encoded back to tokens by tests/common/tokens.rs and compared: the
-//! instructions in order, the declarations and definitions as a set, since
-//! Wine's arrays put them in any order); shaders Windows refuses must be
-//! refused with the recorded message; every other case is drawn by each
+//! For each folder: the `.psh` files must assemble, through the product's
+//! own writer, to Wine's token arrays token for token, and Wine's arrays
+//! must read back through the product's reader and listing to the same
+//! tokens; shaders Windows refuses must be refused with the recorded
+//! message; every other case is drawn by each
 //! backend — the emulator always; a GPU once ps30 has a GPU backend — and
 //! every probe converted to the render target's 8-bit format and compared.
 //!
@@ -28,11 +28,10 @@
 //! nested_loop_test and test_dsy), and Wine allows ±1 there. The exact
 //! comparisons (vFace, vPos, multiple render targets) store only 0 and 1.
 
-#[path = "common/tokens.rs"]
-mod tokens;
-
+use ps30::core::bytecode::write;
 use ps30::core::emu::{Draw, DrawOutput};
 use ps30::core::ir::Shader;
+use ps30::core::load::{self, Options};
 use ps30::jobs::conformance::case::{CaseSpec, ColorFormat, D3dColor, ProbeSpec};
 use ps30::jobs::conformance::{self, Rendered, ShaderLoad, Suite};
 use std::path::PathBuf;
@@ -99,42 +98,53 @@ fn d3d10_unorm_conversion() {
     ));
 }
 
-/// The declaration and definition tokens of a stream, one group per dcl,
-/// def, defi or defb, sorted; and the instruction tokens in order.
-fn split_tokens(tokens: &[u32]) -> (Vec<Vec<u32>>, Vec<u32>) {
-    let mut decls = Vec::new();
-    let mut i = 1;
-    while i + 1 < tokens.len() {
-        let len = ((tokens[i] >> 24) & 0xf) as usize;
-        if matches!(tokens[i] & 0xffff, 0x1f | 0x2f | 0x30 | 0x51) {
-            decls.push(tokens[i..=i + len].to_vec());
-        }
-        i += len + 1;
-    }
-    decls.sort();
-    (decls, tokens::instruction_tokens(tokens))
+fn hex(tokens: &[u32]) -> String {
+    let t: Vec<String> = tokens.iter().map(|t| format!("{t:08x}")).collect();
+    t.join(" ")
+}
+
+/// Bytes → tokens the way `ps30 asm` makes them (text or bytecode; the
+/// program must validate).
+fn assemble(name: &str, bytes: Vec<u8>) -> Result<Vec<u32>, String> {
+    let file = load::source_file(name, bytes, &Options::default()).map_err(|e| e.to_string())?;
+    load::assemble(file, &Options::default())
+        .map(|(_, tokens)| tokens)
+        .map_err(|e| e.diagnostics.render(&e.file))
 }
 
 #[test]
-fn every_shader_means_what_wines_tokens_say() {
+fn every_shader_assembles_to_wines_tokens_and_reads_back_from_them() {
     let mut problems = Vec::new();
     let mut checked = 0;
     for suite in corpus() {
         for (name, spec) in &suite.spec.shaders {
             let theirs: Vec<u32> = spec.tokens.iter().map(|t| t.0).collect();
             let place = format!("{}/{}", suite.spec.function, spec.file);
-            let loaded = match &suite.shaders[name] {
-                ShaderLoad::Loaded(l) => l,
+            if let ShaderLoad::Refused(_) = &suite.shaders[name] {
                 // Refused shaders are checked by the case that expects it.
-                ShaderLoad::Refused(_) => continue,
-            };
-            let ours = tokens::encode(loaded.shader.program());
-            if split_tokens(&ours) != split_tokens(&theirs) {
-                problems.push(format!(
-                    "{place}:\n  Wine: {}\n  ps30: {}",
-                    tokens::hex(&theirs),
-                    tokens::hex(&ours)
-                ));
+                continue;
+            }
+            let text = std::fs::read(suite.dir.join(&spec.file)).unwrap();
+            match assemble(&place, text) {
+                Ok(ours) if ours == theirs => {}
+                Ok(ours) => problems.push(format!(
+                    "{place}: the writer:\n  Wine: {}\n  ps30: {}",
+                    hex(&theirs),
+                    hex(&ours)
+                )),
+                Err(e) => problems.push(format!("{place}: {e}")),
+            }
+            match assemble(
+                &format!("{place} (Wine's tokens)"),
+                write::to_bytes(&theirs),
+            ) {
+                Ok(again) if again == theirs => {}
+                Ok(again) => problems.push(format!(
+                    "{place}: the reader:\n  Wine: {}\n  ps30: {}",
+                    hex(&theirs),
+                    hex(&again)
+                )),
+                Err(e) => problems.push(format!("{place}: Wine's tokens: {e}")),
             }
             checked += 1;
         }

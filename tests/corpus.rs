@@ -442,7 +442,8 @@ fn absurd_work_is_refused_quickly() {
     let d = dir.path();
     // Four nested rep 255 around 1,000 slots: about 4.2 × 10^12 executed,
     // 64 million times the limit. The cost model says so at once.
-    let mut src = String::from("ps_3_0\ndefi i0, 255, 0, 0, 0\nrep i0\nrep i0\nrep i0\nrep i0\n");
+    let mut src =
+        String::from("ps_3_0\ndefi i0, 255, 0, 0, 0\nmov r0, c0\nrep i0\nrep i0\nrep i0\nrep i0\n");
     src.push_str("BEGIN_REPEAT_BLOCK(1000)\nadd r0, r0, r0\nEND_REPEAT_BLOCK\n");
     src.push_str("endrep\nendrep\nendrep\nendrep\nmov oC0, r0\n");
     file(d, "huge_loop.psh", src.as_bytes());

@@ -79,48 +79,50 @@ fn literal_slots(line: &str, cube: bool) -> u64 {
 }
 
 /// A minimal valid shader with one instance of `op`: declarations, then the
-/// instruction lines, the first of which is the instance itself.
+/// instruction lines, the first of which is the instance itself. What the
+/// instance reads is the input v0 (declared in every minimal shader) or a
+/// constant, never a temporary no instruction has written.
 fn minimal(op: Opcode) -> (&'static str, Vec<&'static str>) {
     use Opcode::*;
     let plain = |line| ("", vec![line]);
     match op {
         Nop => plain("nop"),
         Mov => plain("mov r0, c0"),
-        Add => plain("add r0, r1, c0"),
-        Sub => plain("sub r0, r1, c0"),
-        Mad => plain("mad r0, r1, c0, r2"),
-        Mul => plain("mul r0, r1, c0"),
-        Rcp => plain("rcp r0, r1.x"),
-        Rsq => plain("rsq r0, r1.x"),
-        Dp3 => plain("dp3 r0, r1, c0"),
-        Dp4 => plain("dp4 r0, r1, c0"),
-        Min => plain("min r0, r1, c0"),
-        Max => plain("max r0, r1, c0"),
-        Exp => plain("exp r0, r1.x"),
-        Log => plain("log r0, r1.x"),
-        Lrp => plain("lrp r0, r1, r2, c0"),
-        Frc => plain("frc r0, r1"),
-        M4x4 => plain("m4x4 r0, r1, c0"),
-        M4x3 => plain("m4x3 r0.xyz, r1, c0"),
-        M3x4 => plain("m3x4 r0, r1, c0"),
-        M3x3 => plain("m3x3 r0.xyz, r1, c0"),
-        M3x2 => plain("m3x2 r0.xy, r1, c0"),
-        Pow => plain("pow r0, r1.x, c0.y"),
-        Crs => plain("crs r0.xyz, r1, r2"),
-        Abs => plain("abs r0, r1"),
-        Nrm => plain("nrm r0, r1"),
-        SinCos => plain("sincos r0.xy, r1.x"),
-        Cmp => plain("cmp r0, r1, r2, c0"),
-        Dp2Add => plain("dp2add r0, r1, r2, c0.x"),
-        Dsx => plain("dsx r0, r1"),
-        Dsy => plain("dsy r0, r1"),
-        TexKill => plain("texkill r0"),
-        TexLd => ("dcl_2d s0", vec!["texld r0, r1, s0"]),
-        TexLdP => ("dcl_2d s0", vec!["texldp r0, r1, s0"]),
-        TexLdB => ("dcl_2d s0", vec!["texldb r0, r1, s0"]),
-        TexLdL => ("dcl_2d s0", vec!["texldl r0, r1, s0"]),
-        TexLdD => ("dcl_2d s0", vec!["texldd r0, r1, s0, r2, r3"]),
-        Setp => plain("setp_gt p0, r0, c0"),
+        Add => plain("add r0, v0, c0"),
+        Sub => plain("sub r0, v0, c0"),
+        Mad => plain("mad r0, v0, c0, v0"),
+        Mul => plain("mul r0, v0, c0"),
+        Rcp => plain("rcp r0, v0.x"),
+        Rsq => plain("rsq r0, v0.x"),
+        Dp3 => plain("dp3 r0, v0, c0"),
+        Dp4 => plain("dp4 r0, v0, c0"),
+        Min => plain("min r0, v0, c0"),
+        Max => plain("max r0, v0, c0"),
+        Exp => plain("exp r0, v0.x"),
+        Log => plain("log r0, v0.x"),
+        Lrp => plain("lrp r0, v0, v0, c0"),
+        Frc => plain("frc r0, v0"),
+        M4x4 => plain("m4x4 r0, v0, c0"),
+        M4x3 => plain("m4x3 r0.xyz, v0, c0"),
+        M3x4 => plain("m3x4 r0, v0, c0"),
+        M3x3 => plain("m3x3 r0.xyz, v0, c0"),
+        M3x2 => plain("m3x2 r0.xy, v0, c0"),
+        Pow => plain("pow r0, v0.x, c0.y"),
+        Crs => plain("crs r0.xyz, v0, v0"),
+        Abs => plain("abs r0, v0"),
+        Nrm => plain("nrm r0, v0"),
+        SinCos => plain("sincos r0.xy, v0.x"),
+        Cmp => plain("cmp r0, v0, v0, c0"),
+        Dp2Add => plain("dp2add r0, v0, v0, c0.x"),
+        Dsx => plain("dsx r0, v0"),
+        Dsy => plain("dsy r0, v0"),
+        TexKill => plain("texkill v0"),
+        TexLd => ("dcl_2d s0", vec!["texld r0, v0, s0"]),
+        TexLdP => ("dcl_2d s0", vec!["texldp r0, v0, s0"]),
+        TexLdB => ("dcl_2d s0", vec!["texldb r0, v0, s0"]),
+        TexLdL => ("dcl_2d s0", vec!["texldl r0, v0, s0"]),
+        TexLdD => ("dcl_2d s0", vec!["texldd r0, v0, s0, v0, v0"]),
+        Setp => plain("setp_gt p0, v0, c0"),
         Call => ("", vec!["call l0", "ret", "label l0", "ret"]),
         CallNz => ("", vec!["callnz l0, b0", "ret", "label l0", "ret"]),
         Loop => ("", vec!["loop aL, i0", "endloop"]),
@@ -130,11 +132,11 @@ fn minimal(op: Opcode) -> (&'static str, Vec<&'static str>) {
         Rep => ("", vec!["rep i0", "endrep"]),
         EndRep => ("", vec!["endrep", "rep i0"]),
         If => ("", vec!["if b0", "endif"]),
-        Ifc => ("", vec!["if_gt r0.x, c0.y", "endif"]),
+        Ifc => ("", vec!["if_gt v0.x, c0.y", "endif"]),
         Else => ("", vec!["else", "if b0", "endif"]),
         EndIf => ("", vec!["endif", "if b0"]),
         Break => ("", vec!["break", "rep i0", "endrep"]),
-        BreakC => ("", vec!["break_ne r0.x, c0.y", "rep i0", "endrep"]),
+        BreakC => ("", vec!["break_ne v0.x, c0.y", "rep i0", "endrep"]),
         BreakP => ("", vec!["breakp !p0.z", "rep i0", "endrep"]),
         Def | DefI | DefB | Dcl => unreachable!("declarations have no instance"),
     }
@@ -152,7 +154,10 @@ fn minimal_source(op: Opcode, decls: &str, lines: &[&str]) -> String {
         Label => vec![lines[1], lines[0], lines[2]],
         _ => lines.to_vec(),
     };
-    format!("ps_3_0\n{decls}\n{}\n", ordered.join("\n"))
+    format!(
+        "ps_3_0\ndcl_texcoord0 v0\n{decls}\n{}\n",
+        ordered.join("\n")
+    )
 }
 
 fn load(name: &str, src: &str) -> Loaded {
@@ -245,15 +250,18 @@ fn declarations_and_definitions_cost_nothing() {
 fn cube_samplers_cost_more_for_texld_texldp_and_texldl_only() {
     for (ty, cube) in [("2d", false), ("volume", false), ("cube", true)] {
         for line in [
-            "texld r0, r1, s0",
-            "texldp r0, r1, s0",
-            "texldl r0, r1, s0",
-            "texldb r0, r1, s0",
-            "texldd r0, r1, s0, r2, r3",
-            "(p0.x) texld r0, r1, s0",
-            "(!p0) texldl_pp r0, r1, s0",
+            "texld r0, v0, s0",
+            "texldp r0, v0, s0",
+            "texldl r0, v0, s0",
+            "texldb r0, v0, s0",
+            "texldd r0, v0, s0, v0, v0",
+            "(p0.x) texld r0, v0, s0",
+            "(!p0) texldl_pp r0, v0, s0",
         ] {
-            let l = load(line, &format!("ps_3_0\ndcl_{ty} s0\n{line}\n"));
+            let l = load(
+                line,
+                &format!("ps_3_0\ndcl_texcoord0 v0\ndcl_{ty} s0\n{line}\n"),
+            );
             let a = analyse(&l);
             let want = literal_slots(line, cube);
             assert_eq!(a.slots, want, "{line} with dcl_{ty}");
@@ -474,18 +482,18 @@ fn assert_matches_brute_force(name: &str, l: &Loaded) -> Result<(), String> {
 
 #[rustfmt::skip]
 const STATIC_PROGRAMS: &[(&str, &str)] = &[
-    ("doc example", "ps_3_0\ndefi i0, 128, 0, 0, 0\nrep i0\n  add r0, r0, r0\nendrep\nmov oC0, r0\n"),
-    ("zero-count rep", "ps_3_0\ndefi i0, 0, 0, 0, 0\nrep i0\n  add r0, r0, r0\nendrep\nmov oC0, r0\n"),
-    ("nested loops", "ps_3_0\ndefi i0, 3, 0, 0, 0\ndefi i1, 4, 1, 2, 0\ndcl_texcoord0 v0\nrep i0\n  loop aL, i1\n    add r0, r0, v[aL]\n  endloop\n  mul r0, r0, c0\nendrep\nmov oC0, r0\n"),
-    ("static if/else", "ps_3_0\ndefb b0, true\ndefb b1, false\nif b0\n  nrm r0, r1\nelse\n  sincos r0.xy, r1.x\nendif\nif !b0\n  lrp r0, r1, r2, r3\nelse\n  pow r0, r1.x, r2.x\nendif\nif b1\n  mov r0, c0\nendif\nmov oC0, r0\n"),
-    ("unconditional break", "ps_3_0\ndefi i0, 5, 0, 0, 0\nrep i0\n  add r0, r0, c0\n  break\n  mul r0, r0, c0\nendrep\nmov oC0, r0\n"),
-    ("static break in the then-branch", "ps_3_0\ndefi i0, 5, 0, 0, 0\ndefb b0, true\nrep i0\n  add r0, r0, c0\n  if b0\n    break\n  endif\n  mul r0, r0, c0\nendrep\nmov oC0, r0\n"),
-    ("static break in the else-branch", "ps_3_0\ndefi i0, 5, 0, 0, 0\ndefb b0, false\nrep i0\n  add r0, r0, c0\n  if b0\n    nop\n  else\n    break\n  endif\n  mul r0, r0, c0\nendrep\nmov oC0, r0\n"),
-    ("static break not taken", "ps_3_0\ndefi i0, 5, 0, 0, 0\ndefb b0, false\nrep i0\n  if b0\n    break\n  endif\n  mul r0, r0, c0\nendrep\nmov oC0, r0\n"),
-    ("break in an inner loop", "ps_3_0\ndefi i0, 3, 0, 0, 0\ndefi i1, 4, 0, 0, 0\nrep i0\n  rep i1\n    add r0, r0, c0\n    break\n  endrep\n  mul r0, r0, c0\nendrep\nmov oC0, r0\n"),
-    ("subroutines", "ps_3_0\ndefi i0, 2, 0, 0, 0\ndefb b0, true\ndefb b1, false\nrep i0\n  call l0\n  callnz l1, b0\n  callnz l1, b1\nendrep\nmov oC0, r0\nret\nlabel l0\n  add r0, r0, c0\n  call l1\nret\nlabel l1\n  rep i0\n    mul r0, r0, c0\n  endrep\nret\n"),
-    ("REPEAT_BLOCK in a loop", "ps_3_0\ndefi i0, 3, 0, 0, 0\nrep i0\nBEGIN_REPEAT_BLOCK(4)\n  add r0, r0, c0\n  texkill r0\nEND_REPEAT_BLOCK\nendrep\nmov oC0, r0\n"),
-    ("predication and cube", "ps_3_0\ndefi i0, 7, 0, 0, 0\ndcl_cube s0\nrep i0\n  (p0.x) texld r0, r1, s0\n  texldl r0, r1, s0\nendrep\nmov oC0, r0\n"),
+    ("doc example", "ps_3_0\ndefi i0, 128, 0, 0, 0\nmov r0, c0\nrep i0\n  add r0, r0, r0\nendrep\nmov oC0, r0\n"),
+    ("zero-count rep", "ps_3_0\ndefi i0, 0, 0, 0, 0\nmov r0, c0\nrep i0\n  add r0, r0, r0\nendrep\nmov oC0, r0\n"),
+    ("nested loops", "ps_3_0\ndefi i0, 3, 0, 0, 0\ndefi i1, 4, 1, 2, 0\ndcl_texcoord0 v0\ndcl_texcoord1 v1\ndcl_texcoord3 v3\ndcl_texcoord5 v5\ndcl_texcoord7 v7\nmov r0, c0\nrep i0\n  loop aL, i1\n    add r0, r0, v[aL]\n  endloop\n  mul r0, r0, c0\nendrep\nmov oC0, r0\n"),
+    ("static if/else", "ps_3_0\ndefb b0, true\ndefb b1, false\nmov r1, c0\nmov r2, c0\nmov r3, c0\nif b0\n  nrm r0, r1\nelse\n  sincos r0.xy, r1.x\nendif\nif !b0\n  lrp r0, r1, r2, r3\nelse\n  pow r0, r1.x, r2.x\nendif\nif b1\n  mov r0, c0\nendif\nmov oC0, r0\n"),
+    ("unconditional break", "ps_3_0\ndefi i0, 5, 0, 0, 0\nmov r0, c0\nrep i0\n  add r0, r0, c0\n  break\n  mul r0, r0, c0\nendrep\nmov oC0, r0\n"),
+    ("static break in the then-branch", "ps_3_0\ndefi i0, 5, 0, 0, 0\ndefb b0, true\nmov r0, c0\nrep i0\n  add r0, r0, c0\n  if b0\n    break\n  endif\n  mul r0, r0, c0\nendrep\nmov oC0, r0\n"),
+    ("static break in the else-branch", "ps_3_0\ndefi i0, 5, 0, 0, 0\ndefb b0, false\nmov r0, c0\nrep i0\n  add r0, r0, c0\n  if b0\n    nop\n  else\n    break\n  endif\n  mul r0, r0, c0\nendrep\nmov oC0, r0\n"),
+    ("static break not taken", "ps_3_0\ndefi i0, 5, 0, 0, 0\ndefb b0, false\nmov r0, c0\nrep i0\n  if b0\n    break\n  endif\n  mul r0, r0, c0\nendrep\nmov oC0, r0\n"),
+    ("break in an inner loop", "ps_3_0\ndefi i0, 3, 0, 0, 0\ndefi i1, 4, 0, 0, 0\nmov r0, c0\nrep i0\n  rep i1\n    add r0, r0, c0\n    break\n  endrep\n  mul r0, r0, c0\nendrep\nmov oC0, r0\n"),
+    ("subroutines", "ps_3_0\ndefi i0, 2, 0, 0, 0\ndefb b0, true\ndefb b1, false\nmov r0, c0\nrep i0\n  call l0\n  callnz l1, b0\n  callnz l1, b1\nendrep\nmov oC0, r0\nret\nlabel l0\n  add r0, r0, c0\n  call l1\nret\nlabel l1\n  rep i0\n    mul r0, r0, c0\n  endrep\nret\n"),
+    ("REPEAT_BLOCK in a loop", "ps_3_0\ndefi i0, 3, 0, 0, 0\nmov r0, c0\nrep i0\nBEGIN_REPEAT_BLOCK(4)\n  add r0, r0, c0\n  texkill r0\nEND_REPEAT_BLOCK\nendrep\nmov oC0, r0\n"),
+    ("predication and cube", "ps_3_0\ndefi i0, 7, 0, 0, 0\ndcl_cube s0\nmov r1, c0\nrep i0\n  (p0.x) texld r0, r1, s0\n  texldl r0, r1, s0\nendrep\nmov oC0, r0\n"),
     ("ret at the end of main", "ps_3_0\nmov oC0, c0\nret\n"),
 ];
 
@@ -506,11 +514,12 @@ fn hand_written_static_programs_match_the_brute_force_count() {
 
 #[test]
 fn the_doc_example_and_the_article_figures() {
-    // lib.rs: rep 3 + add 1 + endrep 2 per iteration, 128 times, + mov.
+    // lib.rs: mov, then rep 3 + add 1 + endrep 2 per iteration, 128
+    // times, then mov.
     let l = load("doc.psh", STATIC_PROGRAMS[0].1);
     let a = analyse(&l);
-    assert_eq!(a.slots, 3 + 1 + 2 + 1);
-    assert_eq!(a.executed, Range::exact(128 * 6 + 1));
+    assert_eq!(a.slots, 1 + 3 + 1 + 2 + 1);
+    assert_eq!(a.executed, Range::exact(1 + 128 * 6 + 1));
 
     // The article's loop version with i1 = 128 (x) and i2 = 56 (y):
     // 4 + 56 * (3 + 128 * (3 + 1 + 1 + 1 + 1 + 2) + 1 + 2) + 1 = 64,853.
@@ -580,8 +589,9 @@ proptest! {
 #[test]
 fn a_dynamic_branch_gives_both_paths() {
     let src = "ps_3_0
-if_gt r0.x, c0.x
-  add r1, r1, r1
+dcl_texcoord0 v0
+if_gt v0.x, c0.x
+  add r1, v0, v0
   add r1, r1, r1
   nrm r2, r1
 else
@@ -598,18 +608,18 @@ mov oC0, r1
     assert!(
         a.reasons
             .iter()
-            .any(|r| r.contains("line 2") && r.contains("dynamic branch")),
+            .any(|r| r.contains("line 3") && r.contains("dynamic branch")),
         "{:?}",
         a.reasons
     );
-    assert_eq!(a.executions[index_on_line(&l, 3)], Range { min: 0, max: 1 });
-    assert_eq!(a.executions[index_on_line(&l, 7)], Range { min: 0, max: 1 });
-    assert_eq!(a.executions[index_on_line(&l, 2)], Range::exact(1));
-    assert_eq!(a.executions[index_on_line(&l, 8)], Range::exact(1));
+    assert_eq!(a.executions[index_on_line(&l, 4)], Range { min: 0, max: 1 });
+    assert_eq!(a.executions[index_on_line(&l, 8)], Range { min: 0, max: 1 });
+    assert_eq!(a.executions[index_on_line(&l, 3)], Range::exact(1));
+    assert_eq!(a.executions[index_on_line(&l, 9)], Range::exact(1));
     assert_eq!(a.verdict, Verdict::Within);
 
     // The same on a predicate.
-    let src = "ps_3_0\nsetp_gt p0.x, r0, c0\nif p0.x\n  sincos r1.xy, r0.x\nendif\nmov oC0, r1\n";
+    let src = "ps_3_0\ndcl_texcoord0 v0\nsetp_gt p0.x, v0, c0\nif p0.x\n  sincos r1.xy, v0.x\nendif\nmov oC0.xy, r1\n";
     let a = analyse(&load("ifp.psh", src));
     assert_eq!(
         a.executed,
@@ -625,9 +635,9 @@ fn a_data_dependent_break_gives_the_shortest_and_longest_path() {
     let src = "ps_3_0
 defi i0, 5, 0, 0, 0
 rep i0
-  add r0, r0, c0
+  add r0, c0, c0
   break_gt r0.x, c1.x
-  mul r1, r1, r0
+  mul r1, r0, r0
 endrep
 mov oC0, r1
 ";
@@ -656,7 +666,7 @@ mov oC0, r1
 
     // breakp the same way, with a body that is cheap after the break.
     let src =
-        "ps_3_0\ndefi i0, 3, 0, 0, 0\nrep i0\n  breakp p0.x\n  nrm r0, r1\nendrep\nmov oC0, r0\n";
+        "ps_3_0\ndefi i0, 3, 0, 0, 0\nrep i0\n  breakp p0.x\n  nrm r0, c0\nendrep\nmov oC0, r0\n";
     let a = analyse(&load("breakp.psh", src));
     // Full: 3 + 3 + 3 + 2 = 11; break: 3 + 3 = 6.
     assert_eq!(
@@ -674,11 +684,12 @@ fn a_break_inside_a_dynamic_branch() {
     // a full one rep 3 + if 3 + else 1 + add 1 + endif 1 + endrep 2 = 11.
     let src = "ps_3_0
 defi i0, 4, 0, 0, 0
+dcl_texcoord0 v0
 rep i0
-  if_gt r0.x, c0.x
+  if_gt v0.x, c0.x
     break
   else
-    add r0, r0, c1
+    add r0, v0, c1
   endif
 endrep
 mov oC0, r0
@@ -692,16 +703,17 @@ mov oC0, r0
             max: 4 * 11 + 1
         }
     );
-    assert_eq!(a.executions[index_on_line(&l, 6)], Range { min: 0, max: 4 }); // else
-    assert_eq!(a.executions[index_on_line(&l, 8)], Range { min: 0, max: 4 }); // endif
+    assert_eq!(a.executions[index_on_line(&l, 7)], Range { min: 0, max: 4 }); // else
+    assert_eq!(a.executions[index_on_line(&l, 9)], Range { min: 0, max: 4 }); // endif
 
     // In the else-branch: the breaking path passes `else` before the break,
     // rep 3 + if 3 + else 1 + break 1 = 8.
     let src = "ps_3_0
 defi i0, 4, 0, 0, 0
+dcl_texcoord0 v0
 rep i0
-  if_gt r0.x, c0.x
-    add r0, r0, c1
+  if_gt v0.x, c0.x
+    add r0, v0, c1
   else
     break
   endif
@@ -717,14 +729,14 @@ mov oC0, r0
             max: 4 * 11 + 1
         }
     );
-    assert_eq!(a.executions[index_on_line(&l, 6)], Range { min: 1, max: 4 }); // else
-    assert_eq!(a.executions[index_on_line(&l, 8)], Range { min: 0, max: 4 }); // endif
-    assert_eq!(a.executions[index_on_line(&l, 3)], Range { min: 1, max: 4 }); // rep
+    assert_eq!(a.executions[index_on_line(&l, 7)], Range { min: 1, max: 4 }); // else
+    assert_eq!(a.executions[index_on_line(&l, 9)], Range { min: 0, max: 4 }); // endif
+    assert_eq!(a.executions[index_on_line(&l, 4)], Range { min: 1, max: 4 }); // rep
 }
 
 #[test]
 fn unknown_constants_give_ranges_and_say_how_to_fix_them() {
-    let src = "ps_3_0\nrep i3\n  add r0, r0, c0\nendrep\nmov oC0, r0\n";
+    let src = "ps_3_0\nrep i3\n  add r0, c0, c0\nendrep\nmov oC0, r0\n";
     let l = load("unknown.psh", src);
     let a = analyse(&l);
     // 0 iterations: rep charged once (3) + mov (1); 255: 255 * 6 + 1.
@@ -752,7 +764,7 @@ fn unknown_constants_give_ranges_and_say_how_to_fix_them() {
     // A defi in the shader wins over the environment.
     let l = load(
         "defined.psh",
-        "ps_3_0\ndefi i3, 2, 0, 0, 0\nrep i3\n  add r0, r0, c0\nendrep\nmov oC0, r0\n",
+        "ps_3_0\ndefi i3, 2, 0, 0, 0\nrep i3\n  add r0, c0, c0\nendrep\nmov oC0, r0\n",
     );
     assert_eq!(analyse_in(&l, &env).executed, Range::exact(2 * 6 + 1));
     // An out-of-range constant from the environment is an error.
@@ -763,7 +775,7 @@ fn unknown_constants_give_ranges_and_say_how_to_fix_them() {
     assert!(e.0.contains("i3"), "{e}");
 
     // An unknown b# considers both branches and says --bool.
-    let src = "ps_3_0\nif b2\n  nrm r0, r1\nendif\nmov oC0, r0\n";
+    let src = "ps_3_0\nif b2\n  nrm r0, c0\nendif\nmov oC0, r0\n";
     let l = load("unknown_b.psh", src);
     let a = analyse(&l);
     assert_eq!(
@@ -798,7 +810,7 @@ rep i0
   rep i0
     rep i0
       rep i0
-        add r0, r0, c0
+        add r0, c0, c0
       endrep
     endrep
   endrep
@@ -828,12 +840,21 @@ mov oC0, r0
 defi i0, 255, 0, 0, 0
 defi i1, 255, 0, 1, 0
 dcl_texcoord0 v0
+dcl_texcoord1 v1
+dcl_texcoord2 v2
+dcl_texcoord3 v3
+dcl_texcoord4 v4
+dcl_texcoord5 v5
+dcl_texcoord6 v6
+dcl_texcoord7 v7
+dcl_texcoord8 v8
+dcl_texcoord9 v9
 loop aL, i1
   rep i0
     rep i0
       rep i0
         BEGIN_REPEAT_BLOCK(3)
-        add r0, r0, v[aL]
+        add r0, c0, v[aL]
         END_REPEAT_BLOCK
       endrep
     endrep
@@ -889,23 +910,26 @@ fn counts_saturate_instead_of_overflowing() {
 /// mismatch in the property test is the model's.
 #[test]
 fn the_brute_force_interpreter_agrees_with_hand_counts() {
+    // Each program starts with a `mov` (1) that writes the temporaries it
+    // reads.
     let cases: &[(&str, u64)] = &[
-        // 128 * (3 + 1 + 2) + 1
-        (STATIC_PROGRAMS[0].1, 769),
-        // rep once (3) + mov (1)
-        (STATIC_PROGRAMS[1].1, 4),
-        // rep 3 + add 1 + break 1, then mov 1
-        (STATIC_PROGRAMS[4].1, 6),
-        // rep 3 + add 1 + if 3 + break 1, then mov 1
-        (STATIC_PROGRAMS[5].1, 9),
-        // rep 3 + add 1 + if 3 + else 1 + break 1, then mov 1
-        (STATIC_PROGRAMS[6].1, 10),
+        // mov 1, 128 * (3 + 1 + 2), mov 1
+        (STATIC_PROGRAMS[0].1, 770),
+        // mov 1, rep once (3), mov (1)
+        (STATIC_PROGRAMS[1].1, 5),
+        // mov 1, rep 3 + add 1 + break 1, then mov 1
+        (STATIC_PROGRAMS[4].1, 7),
+        // mov 1, rep 3 + add 1 + if 3 + break 1, then mov 1
+        (STATIC_PROGRAMS[5].1, 10),
+        // mov 1, rep 3 + add 1 + if 3 + else 1 + break 1, then mov 1
+        (STATIC_PROGRAMS[6].1, 11),
+        // three movs (3);
         // if b0 (true): if 3 + nrm 3 + else 1 + endif 1 = 8;
         // if !b0 (false): if 3 + else 1 + pow 3 + endif 1 = 8;
         // if b1 (false, no else): if 3 + endif 1 = 4; mov 1.
-        (STATIC_PROGRAMS[3].1, 21),
-        // 3 * (rep 3 + inner (rep 3 + add 1 + break 1) + mul 1 + endrep 2) + mov 1
-        (STATIC_PROGRAMS[8].1, 3 * (3 + 5 + 1 + 2) + 1),
+        (STATIC_PROGRAMS[3].1, 24),
+        // mov 1, 3 * (rep 3 + inner (rep 3 + add 1 + break 1) + mul 1 + endrep 2) + mov 1
+        (STATIC_PROGRAMS[8].1, 1 + 3 * (3 + 5 + 1 + 2) + 1),
     ];
     for &(src, want) in cases {
         let l = load("hand.psh", src);
@@ -980,7 +1004,7 @@ proptest! {
 fn a_break_in_the_else_branch_costs_the_same_in_both_counters() {
     let l = load(
         "else_break.psh",
-        "ps_3_0\ndef c0, 1, 1, 1, 1\ndefi i0, 3, 0, 0, 0\ndefb b0, false\nrep i0\n  if b0\n    add r0, r0, c0\n  else\n    break\n  endif\n  add r0, r0, c0\nendrep\nmov oC0, r0\n",
+        "ps_3_0\ndef c0, 1, 1, 1, 1\ndefi i0, 3, 0, 0, 0\ndefb b0, false\nrep i0\n  if b0\n    add r0, c0, c0\n  else\n    break\n  endif\n  add r0, r0, c0\nendrep\nmov oC0, r0\n",
     );
     // rep 3 + if 3 + else 1 + break 1, once; then mov 1.
     assert_eq!(analyse(&l).executed.max, 9);

@@ -210,7 +210,7 @@ fn many_diagnostics_are_reported_in_linear_time_and_capped() {
     write(
         d,
         "warnings.psh",
-        &format!("ps_3_0\ndcl_2d s0\ndcl_texcoord0 v0.xy\n{body}mov oC0, r0\n"),
+        &format!("ps_3_0\ndcl_2d s0\ndcl_texcoord0 v0.xy\nmov r1, c0\n{body}mov oC0, r0\n"),
     );
     expect(
         d,
@@ -610,4 +610,104 @@ fn a_subroutine_must_end_with_ret() {
         2,
         "subroutine l0 does not end with ret",
     );
+}
+
+/// Subroutines are analysed once each, not once per call path: the
+/// call-depth check on a graph with exponentially many paths, the cost
+/// model on one whose call sites multiply, and the longest chain the
+/// labels allow (l0…l2047).
+#[test]
+fn call_graphs_are_analysed_once_per_subroutine() {
+    let d = tempfile::tempdir().unwrap();
+    let d = d.path();
+    // 45 subroutines, each calling the next two: about 1.8e9 call paths
+    // from main to the last one.
+    let mut fib = String::from("ps_3_0\ndef c0, 1, 1, 1, 1\ncall l0\nmov oC0, c0\nret\n");
+    for k in 0..45 {
+        fib.push_str(&format!("label l{k}\n"));
+        for next in [k + 1, k + 2].into_iter().filter(|&n| n < 45) {
+            fib.push_str(&format!("call l{next}\n"));
+        }
+        fib.push_str("ret\n");
+    }
+    write(d, "fib.psh", &fib);
+    expect(d, &["check", "fib.psh"], 2, "calls nest 45 deep");
+
+    // 2,048 subroutines in one chain: main's call and 2,047 more.
+    let mut chain = String::from("ps_3_0\ndef c0, 1, 1, 1, 1\ncall l0\nmov oC0, c0\nret\n");
+    for k in 0..2047 {
+        chain.push_str(&format!("label l{k}\ncall l{}\nret\n", k + 1));
+    }
+    chain.push_str("label l2047\nret\n");
+    write(d, "chain.psh", &chain);
+    expect(d, &["check", "chain.psh"], 2, "calls nest 2048 deep");
+
+    // Four levels (the ps_3_0 limit) of 1,000 calls each: 10^12 entries of
+    // the innermost subroutine. Executed count, from the inside out, with
+    // call = 2 slots, ret = nop = mov = 1: l3 runs nop + ret = 2; each
+    // level above runs 1,000 × (2 + the level below) + its ret; main the
+    // same plus mov, without a label's ret counted twice.
+    let mut wide = String::from("ps_3_0\ndef c0, 1, 1, 1, 1\n");
+    wide.push_str(&"call l0\n".repeat(1000));
+    wide.push_str("mov oC0, c0\nret\n");
+    for k in 0..3 {
+        wide.push_str(&format!("label l{k}\n"));
+        wide.push_str(&format!("call l{}\n", k + 1).repeat(1000));
+        wide.push_str("ret\n");
+    }
+    wide.push_str("label l3\nnop\nret\n");
+    let mut executed: u64 = 2;
+    for _ in 0..3 {
+        executed = 1000 * (2 + executed) + 1;
+    }
+    executed = 1000 * (2 + executed) + 2;
+    assert_eq!(executed, 4_003_003_003_002);
+    write(d, "wide.psh", &wide);
+    let r = expect(d, &["check", "wide.psh", "--json"], 1, "\"executed\"");
+    let json: serde_json::Value = serde_json::from_str(&r.stdout).unwrap();
+    assert_eq!(json["executed"], executed, "{}", r.stdout);
+}
+
+/// Compiled shaders at the bounds: a megabyte of one-token instructions
+/// stops at the statement cap (raised, it loads and is merely over the slot
+/// limit), and comment blocks at their largest (32,767 tokens each, almost a
+/// megabyte) are listed, loaded and written back within the limits.
+#[test]
+fn compiled_shaders_at_the_bounds() {
+    let d = tempfile::tempdir().unwrap();
+    let d = d.path();
+    let bytes =
+        |tokens: &[u32]| -> Vec<u8> { tokens.iter().flat_map(|t| t.to_le_bytes()).collect() };
+    let mut nops = vec![0xffff_0300u32];
+    nops.extend(std::iter::repeat_n(0, 262_000));
+    nops.push(0xffff);
+    fs::write(d.join("nops.fxo"), bytes(&nops)).unwrap();
+    expect(
+        d,
+        &["check", "nops.fxo"],
+        2,
+        "more than 100000 instructions and comments",
+    );
+    expect(
+        d,
+        &["check", "nops.fxo", "--max-expanded", "300000"],
+        1,
+        "262,000 / 512",
+    );
+    let mut comments = vec![0xffff_0300u32];
+    for _ in 0..7 {
+        comments.push(0x7fff_fffe);
+        comments.extend(std::iter::repeat_n(0xabab_abab, 0x7fff));
+    }
+    comments.extend([0x0200_0001, 0x800f_0800, 0xa0e4_0000, 0xffff]);
+    fs::write(d.join("comments.fxo"), bytes(&comments)).unwrap();
+    expect(d, &["check", "comments.fxo"], 0, "verdict: within limits");
+    // version 1 + 7 × (comment token 1 + 32,767) + mov 3 + end 1 = 229,381
+    expect(
+        d,
+        &["asm", "comments.fxo", "-o", "again.fxo"],
+        0,
+        "229,381 tokens",
+    );
+    assert_eq!(fs::read(d.join("again.fxo")).unwrap(), bytes(&comments));
 }

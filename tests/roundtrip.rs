@@ -11,9 +11,12 @@
 //! declarations and definitions field by field (origins aside; floats by
 //! their bits, so -0.0 and rounding are checked too). A property test
 //! builds random valid straight-line programs directly as IR, prints them
-//! with the writer and checks the front end reads back exactly that IR.
+//! with the writer and checks the front end reads back exactly that IR, and
+//! that the same program written as bytecode and read back (through the
+//! listing every command parses) gives the same tokens and the same IR.
 
 use proptest::prelude::*;
+use ps30::core::bytecode::write;
 use ps30::core::front::print;
 use ps30::core::ir::{
     BoolDef, Dst, FloatDef, InputDecl, Instruction, IntDef, Origin, Predicate, Program, Reg,
@@ -198,6 +201,8 @@ mov_sat r1.xyz, -c1.wzyx
 mov_pp r2.xw, v0.xyxx
 MOV R3, C0.RGBA
 mov r3.rg, c0.bbba
+mov r1.w, c1.x
+mov r2.yz, c1
 add r0, r0, r1
 sub r0.x, -r1_abs.y, v1.w
 mad_sat_pp r3, r0.xxyy, c0.wzyx, -r2_abs
@@ -263,8 +268,18 @@ defb b0, true
 defb b1, false
 def c0, 1, 2, 3, 4
 dcl_texcoord0 v0
+dcl_texcoord1 v1
+dcl_texcoord2 v2
+dcl_texcoord3 v3
+dcl_texcoord4 v4
+dcl_texcoord5 v5
+dcl_texcoord6 v6
+dcl_texcoord8 v8
 dcl vFace
 mov r0, c0
+mov r3, c0
+mov r5, c0
+mov r6, c0
 loop aL, i0
     add r0, r0, v[aL]
     mad r1, v[aL + 2]_abs.x, c0.y, -r0
@@ -715,7 +730,8 @@ fn instruction_strategy(decls: Decls) -> BoxedStrategy<Instruction> {
                     Instruction {
                         op: info.op,
                         sat: info.allows_sat && bit(0),
-                        pp: bit(1),
+                        // `_pp` needs a destination to act on (nop has none).
+                        pp: dst.is_some() && bit(1),
                         centroid: info.class == Class::Texture && bit(2),
                         compare: info.comparison.then_some(compare),
                         predicate: if writes_output { None } else { predicate },
@@ -832,9 +848,13 @@ fn program_strategy() -> impl Strategy<Value = Program> {
                     });
                 }
                 for (&index, &ty) in &samplers {
+                    // `_centroid` and `_pp` on some of them, by register
+                    // number, so that every combination comes up.
                     program.samplers.push(SamplerDecl {
                         index,
                         ty,
+                        centroid: index % 4 >= 2,
+                        pp: index % 2 == 1,
                         origin: Origin::default(),
                     });
                 }
@@ -904,14 +924,62 @@ fn program_strategy() -> impl Strategy<Value = Program> {
                     Just(program),
                     prop::collection::vec(instruction_strategy(decls), 1..40),
                     prop::option::of(face_compare).prop_map(move |f| f.filter(|_| vface)),
+                    Just(const_abs),
                 )
             },
         )
-        .prop_map(|(mut program, body, face)| {
-            program.instructions = body;
+        .prop_map(|(mut program, body, face, const_abs)| {
+            program.instructions = first_writes(&body, const_abs);
+            program.instructions.extend(body);
             program.instructions.extend(face);
             program
         })
+}
+
+/// `mov r#, c0` for every temporary the body reads (a matrix operand reads
+/// the registers after it too): ps_3_0 refuses reads of temporaries no
+/// earlier instruction writes.
+fn first_writes(body: &[Instruction], const_abs: bool) -> Vec<Instruction> {
+    let mut read = std::collections::BTreeSet::new();
+    for ins in body {
+        let rows = match ins.op {
+            Opcode::M4x4 | Opcode::M3x4 => 4,
+            Opcode::M4x3 | Opcode::M3x3 => 3,
+            Opcode::M3x2 => 2,
+            _ => 1,
+        };
+        let operands = ins.src.iter().map(|s| s.reg);
+        let killed = ins.dst.filter(|_| ins.op == Opcode::TexKill).map(|d| d.reg);
+        for reg in operands.chain(killed).filter(|r| r.file == RegFile::Temp) {
+            read.extend((reg.index..reg.index + rows).filter(|&r| r < 32));
+        }
+    }
+    let konst = Src {
+        modifier: if const_abs { SrcMod::Abs } else { SrcMod::None },
+        ..Src::plain(Reg {
+            file: RegFile::Const,
+            index: 0,
+        })
+    };
+    read.into_iter()
+        .map(|index| Instruction {
+            op: Opcode::Mov,
+            sat: false,
+            pp: false,
+            centroid: false,
+            compare: None,
+            predicate: None,
+            dst: Some(Dst {
+                reg: Reg {
+                    file: RegFile::Temp,
+                    index,
+                },
+                mask: WriteMask::ALL,
+            }),
+            src: vec![konst],
+            origin: Origin::default(),
+        })
+        .collect()
 }
 
 proptest! {
@@ -931,7 +999,7 @@ proptest! {
         };
         let (want, want_bits) = normalised(&program);
         let (got, got_bits) = normalised(&loaded);
-        prop_assert_eq!(want_bits, got_bits, "{}", printed);
+        prop_assert_eq!(&want_bits, &got_bits, "{}", printed);
         for (i, (a, b)) in want.instructions.iter().zip(&got.instructions).enumerate() {
             prop_assert_eq!(a, b, "instruction {} of\n{}", i, printed);
         }
@@ -940,6 +1008,19 @@ proptest! {
         prop_assert_eq!(&want.bool_defs, &got.bool_defs);
         prop_assert_eq!(&want.inputs, &got.inputs);
         prop_assert_eq!(&want.samplers, &got.samplers);
-        prop_assert_eq!(print::write_program(&loaded), printed);
+        prop_assert_eq!(&print::write_program(&loaded), &printed);
+        // Text → tokens → listing → tokens: the same tokens, the same program.
+        let assemble = |name: &str, bytes: Vec<u8>| {
+            let file = load::source_file(name, bytes, &Options::default()).map_err(|e| e.to_string())?;
+            load::assemble(file, &Options::default()).map_err(|e| e.diagnostics.render(&e.file))
+        };
+        let (_, tokens) = assemble("random.psh", printed.clone().into_bytes()).map_err(TestCaseError::fail)?;
+        let (compiled, again) = assemble("random.fxo", write::to_bytes(&tokens)).map_err(TestCaseError::fail)?;
+        prop_assert_eq!(&again, &tokens, "{}", printed);
+        let (got, got_bits) = normalised(compiled.shader.program());
+        prop_assert_eq!(&want_bits, &got_bits);
+        prop_assert_eq!(&want.instructions, &got.instructions);
+        prop_assert_eq!(&want.inputs, &got.inputs);
+        prop_assert_eq!(&want.samplers, &got.samplers);
     }
 }

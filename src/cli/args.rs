@@ -1,13 +1,15 @@
 //! Command-line values and the argument groups several subcommands share.
 //!
-//! Parsers for values (`WxH`, `cN=x,y,z,w`, `iN=…`, `bN=…`, `NAME=N`, δ, the
+//! Parsers for values (`WxH`, `cN=x,y,z,w` or `NAME=…`, `iN=…`, `bN=…`, `NAME=N`, δ, the
 //! tone-mapping key and white point) and the flag groups (`-D`, constants,
 //! limits, emulator bounds, sampler state) live here once, so that a value
 //! means the same thing and fails with the same message wherever it is
 //! given. Only the command line uses clap; the library sees plain values.
 
+use super::BadInput;
 use clap::Args;
 use ps30::core::audit::Given;
+use ps30::core::bytecode::ctab::{ConstantTable, RegisterSet};
 use ps30::core::cost::{Environment, Profile};
 use ps30::core::emu::{self, Address, Constants, Filter, MipFilter, SamplerState};
 use ps30::core::image::TargetFormat;
@@ -65,44 +67,145 @@ pub fn parse_register(s: &str, prefix: char, count: u32) -> Result<u32, String> 
     Ok(n)
 }
 
-/// `cN=X[,Y,Z,W]`.
-pub fn parse_float_const(s: &str) -> Result<(u32, [f32; 4]), String> {
-    let (reg, value) = s
-        .split_once('=')
-        .ok_or("expected cN=X[,Y,Z,W], e.g. c3=0.27,0.67,0.06,0.01")?;
-    Ok((parse_register(reg.trim(), 'c', 224)?, parse_float4(value)?))
+/// A constant on the command line: a register (`c3`) or the name of a
+/// constant in the shader's constant table (`g_fKey`), resolved by
+/// [`resolve`] once the shader is read.
+#[derive(Clone, Debug, PartialEq)]
+pub enum ConstRef {
+    Register(u32),
+    Name(String),
 }
 
-/// `iN=X[,Y,Z,W]`.
-pub fn parse_int_const(s: &str) -> Result<(u32, [i32; 4]), String> {
-    let (reg, value) = s
-        .split_once('=')
-        .ok_or("expected iN=X[,Y,Z,W], e.g. i1=128")?;
-    let reg = parse_register(reg.trim(), 'i', 16)?;
-    let parts: Vec<&str> = value.split(',').collect();
-    if parts.is_empty() || parts.len() > 4 {
-        return Err("expected one to four integers".into());
+/// `cN` (with its range checked) or a constant's name.
+fn const_ref(s: &str, prefix: char, count: u32) -> Result<ConstRef, String> {
+    let s = s.trim();
+    if s.strip_prefix(prefix)
+        .is_some_and(|d| !d.is_empty() && d.chars().all(|c| c.is_ascii_digit()))
+    {
+        return parse_register(s, prefix, count).map(ConstRef::Register);
     }
-    let mut v = [0i32; 4];
-    for (slot, p) in v.iter_mut().zip(&parts) {
-        *slot = p
-            .trim()
-            .parse::<i32>()
-            .map_err(|_| format!("`{p}` is not an integer"))?;
+    let name = s.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_')
+        && s.chars()
+            .all(|c| c.is_ascii_alphanumeric() || "_.[]".contains(c));
+    if name {
+        Ok(ConstRef::Name(s.to_string()))
+    } else {
+        Err(format!(
+            "`{s}` is neither a register {prefix}N nor the name of a constant"
+        ))
     }
-    Ok((reg, v))
 }
 
-/// `bN=true|false`.
-pub fn parse_bool_const(s: &str) -> Result<(u32, bool), String> {
-    let (reg, value) = s.split_once('=').ok_or("expected bN=true|false")?;
-    let reg = parse_register(reg.trim(), 'b', 16)?;
-    let v = match value.trim() {
-        "true" | "1" => true,
-        "false" | "0" => false,
-        other => return Err(format!("`{other}` is not true or false")),
-    };
-    Ok((reg, v))
+/// `target=v,v,…`: the target and its comma-separated values, each read by
+/// `value`; a register takes at most `per_register` values (a name takes as
+/// many as its registers hold, checked by [`resolve`]).
+fn const_values<T>(
+    s: &str,
+    prefix: char,
+    count: u32,
+    per_register: usize,
+    value: impl Fn(&str) -> Result<T, String>,
+) -> Result<(ConstRef, Vec<T>), String> {
+    let (target, values) = s
+        .split_once('=')
+        .ok_or(format!("expected {prefix}N=… or NAME=…, e.g. {prefix}3=…"))?;
+    let target = const_ref(target, prefix, count)?;
+    let values = values
+        .split(',')
+        .map(|v| value(v.trim()))
+        .collect::<Result<Vec<T>, String>>()?;
+    if matches!(target, ConstRef::Register(_)) && values.len() > per_register {
+        return Err(format!(
+            "a register takes one to {per_register} value{}",
+            if per_register == 1 { "" } else { "s" }
+        ));
+    }
+    Ok((target, values))
+}
+
+/// `cN=X[,Y,Z,W]` or `NAME=X,…`.
+pub fn parse_float_const(s: &str) -> Result<(ConstRef, Vec<f32>), String> {
+    const_values(s, 'c', 224, 4, parse_finite)
+}
+
+/// `iN=X[,Y,Z,W]` or `NAME=X,…`.
+pub fn parse_int_const(s: &str) -> Result<(ConstRef, Vec<i32>), String> {
+    const_values(s, 'i', 16, 4, |v| {
+        v.parse::<i32>()
+            .map_err(|_| format!("`{v}` is not an integer"))
+    })
+}
+
+/// `bN=true|false` or `NAME=true|false,…`.
+pub fn parse_bool_const(s: &str) -> Result<(ConstRef, Vec<bool>), String> {
+    const_values(s, 'b', 16, 1, |v| match v {
+        "true" | "1" => Ok(true),
+        "false" | "0" => Ok(false),
+        other => Err(format!("`{other}` is not true or false")),
+    })
+}
+
+/// The flag that sets a register set, for messages.
+fn flag_of(set: RegisterSet) -> &'static str {
+    match set {
+        RegisterSet::Float4 => "--const",
+        RegisterSet::Int4 => "--int",
+        RegisterSet::Bool => "--bool",
+        RegisterSet::Sampler => "no flag (ps30 binds the samplers itself)",
+    }
+}
+
+/// Constants given by register or by name, as registers with `N` values
+/// each (missing values 0). Names are looked up in the shader's constant
+/// table; a name fills its registers in order, `N` values per register.
+pub fn resolve<T: Copy + Default, const N: usize>(
+    given: &[(ConstRef, Vec<T>)],
+    set: RegisterSet,
+    table: Option<&ConstantTable>,
+) -> Result<Vec<(u32, [T; N])>, BadInput> {
+    let flag = flag_of(set);
+    let mut out = Vec::new();
+    for (target, values) in given {
+        let (first, registers) = match target {
+            ConstRef::Register(r) => (*r, 1),
+            ConstRef::Name(name) => {
+                let Some(t) = table else {
+                    return Err(BadInput(format!(
+                        "{flag} {name}: the shader has no constant table (CTAB) to look the name up in; give a register"
+                    )));
+                };
+                let Some(c) = t.constants.iter().find(|c| &c.name == name) else {
+                    let names: Vec<&str> = t.constants.iter().map(|c| c.name.as_str()).collect();
+                    return Err(BadInput(format!(
+                        "{flag} {name}: the shader's constant table has no `{name}` (it has {})",
+                        names.join(", ")
+                    )));
+                };
+                if c.set != set {
+                    return Err(BadInput(format!(
+                        "{flag} {name}: `{name}` is a {} constant ({}); set it with {}",
+                        c.set.name(),
+                        c.register(),
+                        flag_of(c.set)
+                    )));
+                }
+                (c.index as u32, c.count as usize)
+            }
+        };
+        if values.len() > registers * N {
+            return Err(BadInput(format!(
+                "{flag}: {} values, but the target takes {registers} register{} of {N}",
+                values.len(),
+                if registers == 1 { "" } else { "s" }
+            )));
+        }
+        for (k, chunk) in values.chunks(N).enumerate() {
+            let mut v = [T::default(); N];
+            v[..chunk.len()].copy_from_slice(chunk);
+            out.push((first + k as u32, v));
+        }
+    }
+    Ok(out)
 }
 
 /// `NAME=N`.
@@ -192,18 +295,57 @@ pub struct InputArgs {
 /// Float, integer and boolean constants set by the application.
 #[derive(Args)]
 pub struct ConstantArgs {
-    /// Float constant set by the application, e.g. --const c3=0.27,0.67,0.06,0.01.
-    #[arg(long = "const", value_name = "cN=X[,Y,Z,W]", value_parser = parse_float_const)]
-    pub floats: Vec<(u32, [f32; 4])>,
-    /// Integer constant set by the application, e.g. --int i1=128 or --int i0=16,0,1,0.
-    #[arg(long = "int", value_name = "iN=X[,Y,Z,W]", value_parser = parse_int_const)]
-    pub ints: Vec<(u32, [i32; 4])>,
-    /// Boolean constant set by the application, e.g. --bool b0=true.
-    #[arg(long = "bool", value_name = "bN=true|false", value_parser = parse_bool_const)]
-    pub bools: Vec<(u32, bool)>,
+    /// Float constant set by the application, by register or by its name in the
+    /// shader's constant table, e.g. --const c3=0.27,0.67,0.06,0.01.
+    #[arg(long = "const", value_name = "cN|NAME=X[,Y,Z,W]", value_parser = parse_float_const)]
+    pub floats: Vec<(ConstRef, Vec<f32>)>,
+    /// Integer constant set by the application, by register or by its name in the
+    /// shader's constant table, e.g. --int i1=128 or --int i0=16,0,1,0.
+    #[arg(long = "int", value_name = "iN|NAME=X[,Y,Z,W]", value_parser = parse_int_const)]
+    pub ints: Vec<(ConstRef, Vec<i32>)>,
+    /// Boolean constant set by the application, by register or by name, e.g. --bool b0=true.
+    #[arg(long = "bool", value_name = "bN|NAME=true|false", value_parser = parse_bool_const)]
+    pub bools: Vec<(ConstRef, Vec<bool>)>,
 }
 
 impl ConstantArgs {
+    /// The constants as registers, names looked up in the shader's table.
+    pub fn resolve(&self, table: Option<&ConstantTable>) -> Result<Resolved, BadInput> {
+        Resolved::new(&self.floats, &self.ints, &self.bools, table)
+    }
+}
+
+/// Float, integer and boolean constants as registers (names resolved).
+pub struct Resolved {
+    pub floats: Vec<(u32, [f32; 4])>,
+    pub ints: Vec<(u32, [i32; 4])>,
+    pub bools: Vec<(u32, bool)>,
+}
+
+impl Resolved {
+    /// Resolves `--const`, `--int` and `--bool` against a constant table.
+    pub fn new(
+        floats: &[(ConstRef, Vec<f32>)],
+        ints: &[(ConstRef, Vec<i32>)],
+        bools: &[(ConstRef, Vec<bool>)],
+        table: Option<&ConstantTable>,
+    ) -> Result<Resolved, BadInput> {
+        Ok(Resolved {
+            floats: resolve::<f32, 4>(floats, RegisterSet::Float4, table)?,
+            ints: resolve::<i32, 4>(ints, RegisterSet::Int4, table)?,
+            bools: resolve::<bool, 1>(bools, RegisterSet::Bool, table)?
+                .into_iter()
+                .map(|(r, [b])| (r, b))
+                .collect(),
+        })
+    }
+
+    /// The register files of a draw (registers nobody set stay 0, as in a
+    /// draw; the audit refuses a run that reads one).
+    pub fn constants(&self) -> Constants {
+        constants(&self.floats, &self.ints, &self.bools)
+    }
+
     /// What the application gives, for the audit: these registers, the
     /// `-D` names, and `preset_floats`, which the command sets itself.
     pub fn given(&self, preset_floats: &[u32], source: &SourceArgs) -> Given {
@@ -223,27 +365,31 @@ impl ConstantArgs {
             bools: self.bools.iter().copied().collect(),
         }
     }
+}
 
-    /// The register files of a draw (registers nobody set stay 0, as in a
-    /// draw; the audit refuses a run that reads one).
-    pub fn constants(&self) -> Constants {
-        fn set<T: Copy>(file: &mut Vec<T>, zero: T, i: u32, v: T) {
-            let i = i as usize;
-            file.resize(file.len().max(i + 1), zero);
-            file[i] = v;
-        }
-        let mut c = Constants::default();
-        for &(i, v) in &self.floats {
-            set(&mut c.float, [0.0; 4], i, v);
-        }
-        for &(i, v) in &self.ints {
-            set(&mut c.int, [0; 4], i, v);
-        }
-        for &(i, v) in &self.bools {
-            set(&mut c.bool, false, i, v);
-        }
-        c
+/// The register files of a draw from `--const`, `--int` and `--bool` values
+/// (registers nobody set stay 0, as in a draw).
+pub fn constants(
+    floats: &[(u32, [f32; 4])],
+    ints: &[(u32, [i32; 4])],
+    bools: &[(u32, bool)],
+) -> Constants {
+    fn set<T: Copy>(file: &mut Vec<T>, zero: T, i: u32, v: T) {
+        let i = i as usize;
+        file.resize(file.len().max(i + 1), zero);
+        file[i] = v;
     }
+    let mut c = Constants::default();
+    for &(i, v) in floats {
+        set(&mut c.float, [0.0; 4], i, v);
+    }
+    for &(i, v) in ints {
+        set(&mut c.int, [0; 4], i, v);
+    }
+    for &(i, v) in bools {
+        set(&mut c.bool, false, i, v);
+    }
+    c
 }
 
 /// `ps30 check`'s limits.
@@ -299,7 +445,7 @@ impl ProfileArgs {
 /// Options of every command that loads an image and runs the emulator.
 #[derive(Args, Debug)]
 pub struct ExecArgs {
-    /// Emulator threads (default: all cores).
+    /// Threads for all of the command's work: decoding, emulation, cross-checks (default: all cores).
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..=256))]
     pub threads: Option<u32>,
     /// Refuse images with more pixels than this.

@@ -6,10 +6,13 @@ use super::ui::Ui;
 use super::Outcome;
 use ps30::core::cost::{self, Profile, Verdict};
 use ps30::present::check::{check_json, check_text, check_text_short};
+use ps30::present::constants::{table_json, table_text};
+use serde_json::Value;
 
 #[derive(clap::Args)]
 pub struct Args {
-    /// The shader: a file, or a bundled name such as article:loop (`ps30 shaders` lists them).
+    /// The shader: a file (assembly or ps_3_0 bytecode), `-` for standard input, or a
+    /// bundled name such as article:loop (`ps30 shaders` lists them).
     #[arg(value_name = "SHADER")]
     shader: String,
     #[command(flatten)]
@@ -32,21 +35,34 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         &args.source.options(),
         args.input.max_input_bytes,
     )?;
-    let given = args.constants.given(&[], &args.source);
-    let found = audit(ui, &loaded, &given, false)?;
-    let env = args.constants.environment();
+    let resolved = args.constants.resolve(loaded.constants.as_ref())?;
+    let found = audit(ui, &loaded, &resolved.given(&[], &args.source), false)?;
+    let env = resolved.environment();
     let profile = Profile {
         max_slots: args.limits.max_slots,
         max_executed: args.limits.max_executed,
         ..Profile::ps_3_0()
     };
     let a = cost::analyse(&loaded.shader, &loaded.file, &env, &profile)?;
+    let name = &loaded.file.name;
     if args.json {
-        print_json(&check_json(&loaded, &a, &found))?;
+        let mut json = check_json(&loaded, &a, &found);
+        json["constant_table"] = loaded.constants.as_ref().map_or(Value::Null, table_json);
+        print_json(&json)?;
     } else if ui.quiet {
-        say(ui, &check_text_short(&loaded.file.name, &a))?;
+        say(ui, &check_text_short(name, &a))?;
     } else {
-        say(ui, &check_text(&loaded.file.name, &a))?;
+        let mut text = check_text(name, &a);
+        if let Some(t) = &loaded.constants {
+            text.push('\n');
+            text.push_str(&table_text(t));
+        }
+        if loaded.file.is_compiled() {
+            text.push_str(&format!(
+                "(a compiled shader: lines are those of `ps30 disasm {name}`)\n"
+            ));
+        }
+        say(ui, &text)?;
     }
     Ok(Outcome::from_ok(a.verdict == Verdict::Within))
 }

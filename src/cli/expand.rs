@@ -1,16 +1,17 @@
 //! `ps30 expand`: the shader as plain assembly with every macro expanded.
 
 use super::args::{InputArgs, SourceArgs};
-use super::io::{audit, load_shader, print, print_json};
+use super::io::{audit, check_output_path, load_shader, print, print_json};
 use super::ui::Ui;
 use super::{BadInput, Outcome};
 use ps30::core::audit::Given;
 use ps30::core::front::print::write_program;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 #[derive(clap::Args)]
 pub struct Args {
-    /// The shader: a file, or a bundled name such as article:pass2 (`ps30 shaders` lists them).
+    /// The shader: a file (assembly or ps_3_0 bytecode), `-` for standard input, or a
+    /// bundled name such as article:pass2 (`ps30 shaders` lists them).
     #[arg(value_name = "SHADER")]
     shader: String,
     #[command(flatten)]
@@ -27,7 +28,7 @@ pub struct Args {
 
 pub fn run(args: Args, ui: &Ui) -> super::Result {
     if let Some(path) = &args.output {
-        super::io::check_output_path(path, &[std::path::Path::new(&args.shader)])?;
+        check_output_path(path, &[Path::new(&args.shader)])?;
     }
     let loaded = load_shader(
         ui,

@@ -1,7 +1,8 @@
-//! What every subcommand does at its edges: reading a shader (a bundled name
-//! or a file), printing to stdout (a closed pipe is success), writing to
-//! stderr (a closed stderr is no reason to stop), emitting diagnostics, and
-//! refusing an output path before any work.
+//! What every subcommand does at its edges: reading a shader (a bundled
+//! name, a file, or `-` for standard input; assembly text or ps_3_0
+//! bytecode, recognised by content), printing to stdout (a closed pipe is
+//! success), writing to stderr (a closed stderr is no reason to stop),
+//! emitting diagnostics, and refusing an output path before any work.
 
 use super::ui::Ui;
 use super::BadInput;
@@ -10,7 +11,7 @@ use ps30::core::diag::{Diagnostics, SourceFile};
 use ps30::core::load::{self, Loaded, Options};
 use ps30::jobs::bundled::{self, Named};
 use ps30::jobs::luminance::ShaderSource;
-use std::io::Write;
+use std::io::{Read, Write};
 use std::path::Path;
 
 /// Writes to stdout. A reader that went away (`ps30 … | head`) is not an
@@ -18,11 +19,14 @@ use std::path::Path;
 /// success, as a Unix filter does (every file it writes was written
 /// atomically before it printed).
 pub fn print(out: &str) -> std::io::Result<()> {
+    print_bytes(out.as_bytes())
+}
+
+/// Writes bytes (bytecode) to stdout, a closed pipe being success as in
+/// [`print`].
+pub fn print_bytes(out: &[u8]) -> std::io::Result<()> {
     let mut stdout = std::io::stdout().lock();
-    match stdout
-        .write_all(out.as_bytes())
-        .and_then(|()| stdout.flush())
-    {
+    match stdout.write_all(out).and_then(|()| stdout.flush()) {
         Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => std::process::exit(0),
         other => other,
     }
@@ -57,65 +61,77 @@ pub fn emit(ui: &Ui, diagnostics: &Diagnostics, file: &SourceFile) {
     eprint(&diagnostics.render_styled(file, ui.color_stderr));
 }
 
-/// A file's text, at most `max_bytes` long (`--max-input-bytes`): a longer
-/// file (or `/dev/zero`) is refused after reading one byte past the cap.
-/// Not UTF-8 is bad input naming the line and column of the first bad
-/// byte; a UTF-8 byte-order mark at the start is dropped (see
-/// [`SourceFile::new`]).
-pub fn read_text(path: &Path, max_bytes: u64) -> Result<String, BadInput> {
-    use std::io::Read;
-    let failed = |e: std::io::Error| BadInput(format!("{}: {e}", path.display()));
+/// What messages call standard input.
+pub const STDIN_NAME: &str = "<stdin>";
+
+/// The bytes of a shader argument, with the name messages use: a file, or
+/// standard input for `-`, at most `max_bytes` long (`--max-input-bytes`): a
+/// longer input (or `/dev/zero`) is refused after reading one byte past the
+/// cap.
+pub fn read_input(spec: &str, max_bytes: u64) -> Result<(String, Vec<u8>), BadInput> {
+    let name = if spec == "-" { STDIN_NAME } else { spec };
+    let failed = |e: std::io::Error| BadInput(format!("{name}: {e}"));
     let mut bytes = Vec::new();
-    std::fs::File::open(path)
-        .and_then(|f| f.take(max_bytes.saturating_add(1)).read_to_end(&mut bytes))
-        .map_err(failed)?;
+    let cap = max_bytes.saturating_add(1);
+    if spec == "-" {
+        std::io::stdin().lock().take(cap).read_to_end(&mut bytes)
+    } else {
+        std::fs::File::open(spec).and_then(|f| f.take(cap).read_to_end(&mut bytes))
+    }
+    .map_err(failed)?;
     if bytes.len() as u64 > max_bytes {
         return Err(BadInput(format!(
-            "{}: larger than the cap of {} bytes for a shader (raise it with --max-input-bytes)",
-            path.display(),
+            "{name}: larger than the cap of {} bytes for a shader (raise it with --max-input-bytes)",
             ps30::core::numbers::thousands(max_bytes)
         )));
     }
-    String::from_utf8(bytes).map_err(|e| {
-        let bytes = e.as_bytes();
-        let at = e.utf8_error().valid_up_to();
-        let before = std::str::from_utf8(&bytes[..at]).unwrap_or_default();
-        let line = before.matches('\n').count() + 1;
-        let column = before.rsplit('\n').next().unwrap_or("").chars().count() + 1;
-        BadInput(format!(
-            "{}:{line}:{column}: not UTF-8 text (byte 0x{:02X} at offset {at} starts no UTF-8 character); save the file as UTF-8",
-            path.display(),
-            bytes[at]
-        ))
-    })
+    Ok((name.to_string(), bytes))
 }
 
 /// A shader argument, by the one rule of [`bundled::resolve`]: a bundled
-/// name (`ps30 shaders` lists them) or a file (at most `max_bytes` long). A
-/// file that does not exist gets the closest bundled name as a suggestion
-/// when there is one.
-pub fn shader_source(spec: &str, max_bytes: u64) -> Result<ShaderSource, BadInput> {
+/// name (`ps30 shaders` lists them), `-` (standard input) or a file (at most
+/// `max_bytes` long), assembly text or ps_3_0 bytecode told apart by
+/// content (see [`load::source_file`]: not UTF-8 is named by line and
+/// column, a byte-order mark is dropped). A file that does not exist gets
+/// the closest bundled name as a suggestion when there is one.
+pub fn shader_file(spec: &str, options: &Options, max_bytes: u64) -> Result<SourceFile, BadInput> {
     let path = match bundled::resolve(spec) {
-        Named::Bundled(b) => return Ok(ShaderSource::new(b.path, b.text)),
+        Named::Bundled(b) => return Ok(SourceFile::new(b.path, b.text)),
         Named::File(path) => Path::new(path),
     };
-    if !path.exists() {
-        let hint = match bundled::suggest(spec) {
-            Some(name) => {
-                format!("; did you mean `{name}`? (`ps30 shaders` lists the bundled shaders)")
-            }
-            None if spec.contains(':') => {
-                "; no bundled shader has this name either (`ps30 shaders` lists them)".to_string()
-            }
-            None => String::new(),
-        };
-        return Err(BadInput(format!("{spec}: no such file{hint}")));
-    }
-    let text = read_text(path, max_bytes)?;
-    Ok(ShaderSource::new(spec, text))
+    exists(spec, path)?;
+    let (name, bytes) = read_input(spec, max_bytes)?;
+    Ok(load::source_file(&name, bytes, options)?)
 }
 
-/// Loads a shader argument (bundled name or file): warnings to stderr; on
+/// Bad input when a shader argument names no file (`-` always exists):
+/// with the closest bundled name as a suggestion when there is one.
+pub fn exists(spec: &str, path: &Path) -> Result<(), BadInput> {
+    if spec == "-" || path.exists() {
+        return Ok(());
+    }
+    let hint = match bundled::suggest(spec) {
+        Some(name) => {
+            format!("; did you mean `{name}`? (`ps30 shaders` lists the bundled shaders)")
+        }
+        None if spec.contains(':') => {
+            "; no bundled shader has this name either (`ps30 shaders` lists them)".to_string()
+        }
+        None => String::new(),
+    };
+    Err(BadInput(format!("{spec}: no such file{hint}")))
+}
+
+/// A shader to run, as [`shader_file`] reads it.
+pub fn shader_source(spec: &str, max_bytes: u64) -> Result<ShaderSource, BadInput> {
+    Ok(ShaderSource::from_file(shader_file(
+        spec,
+        &Options::default(),
+        max_bytes,
+    )?))
+}
+
+/// Loads a shader argument (see [`shader_file`]): warnings to stderr; on
 /// errors every diagnostic to stderr and a one-line summary as the error.
 pub fn load_shader(
     ui: &Ui,
@@ -123,8 +139,7 @@ pub fn load_shader(
     options: &Options,
     max_bytes: u64,
 ) -> Result<Loaded, BadInput> {
-    let src = shader_source(spec, max_bytes)?;
-    let file = SourceFile::new(src.name, src.text);
+    let file = shader_file(spec, options, max_bytes)?;
     match load::load(file, options) {
         Ok(l) => {
             if !ui.quiet {

@@ -87,7 +87,7 @@ impl Args {
             Named::Bundled(b) => Some(b.name),
             Named::File(_) => None,
         };
-        let (block, choice) = match (self.block, blocks::block_of(&pass1.text, name)) {
+        let (block, choice) = match (self.block, blocks::block_of(&pass1.file.text, name)) {
             (Some(b), _) => (b, Choice::Given),
             (None, Some(b)) => (b, Choice::FromShader),
             (None, None) => {
@@ -114,6 +114,7 @@ impl Args {
 }
 
 pub fn run(args: Args, ui: &Ui) -> super::Result {
+    super::bound_threads(args.exec.threads())?;
     let img = image::load(&args.image, &args.exec.image_limits())?;
     let passes = args.passes(img.width, img.height)?;
     let settings = Settings {

@@ -11,8 +11,10 @@
 //! exits with 130.
 
 pub mod args;
+pub mod asm;
 pub mod check;
 pub mod completions;
+pub mod disasm;
 pub mod expand;
 pub mod io;
 pub mod luminance;
@@ -60,6 +62,16 @@ pub enum Command {
         after_help = "Examples:\n  ps30 check asm/article/lum_pass1_loop.psh --int i1=128 --int i2=56\n  ps30 check asm/article/lum_pass2.psh -D xsize=11 -D ysize=8 --json"
     )]
     Check(check::Args),
+    /// Write a shader as ps_3_0 bytecode (REPEAT_BLOCK expanded, validated, written atomically).
+    #[command(
+        after_help = "The tokens are exactly those Microsoft's assembler emits for the program, in the order\nthe statements stand. A compiled shader given as input is written back as it is, its\nconstant table (CTAB) included.\n\nExamples:\n  ps30 asm asm/corrected/lum_pass2.psh -D xsize=11 -D ysize=8 -o p2.fxo\n  ps30 disasm p2.fxo | ps30 asm - -o again.fxo"
+    )]
+    Asm(asm::Args),
+    /// Print a compiled shader as an assembly listing in the style of fxc's.
+    #[command(
+        after_help = "The listing shows the constant table as fxc does (parameters and registers) and keeps\nevery comment block as `//#comment` lines of hexadecimal tokens, so `ps30 asm` turns it\nback into the same bytes. Assembly given as input is assembled first.\n\nExamples:\n  ps30 disasm p2.fxo\n  ps30 disasm shader.fxo --json"
+    )]
+    Disasm(disasm::Args),
     /// Print the shader as plain ps_3_0 assembly with every macro expanded.
     #[command(
         after_help = "Examples:\n  ps30 expand asm/article/lum_pass2.psh -D xsize=11 -D ysize=8\n  ps30 expand asm/article/lum_pass1_unrolled.psh -o unrolled.psh\n  ps30 expand asm/article/lum_pass2.psh -D xsize=11 -D ysize=8 --json"
@@ -142,6 +154,20 @@ pub fn clean_up_on_interrupt() {
         ps30::core::output::remove_temporaries();
         std::process::exit(INTERRUPTED);
     });
+}
+
+/// Bounds all of a command's parallel work — decoding, emulation,
+/// cross-checks — to `threads` (`None`: all cores) by sizing rayon's global
+/// pool, which the library's parallel code runs on. Called once, before any
+/// work.
+pub fn bound_threads(threads: Option<usize>) -> std::result::Result<(), BadInput> {
+    match threads {
+        Some(n) => rayon::ThreadPoolBuilder::new()
+            .num_threads(n)
+            .build_global()
+            .map_err(|e| BadInput(format!("cannot start {n} worker threads: {e}"))),
+        None => Ok(()),
+    }
 }
 
 /// How a command ended.

@@ -16,7 +16,8 @@ use ps30::present::profile::{text, to_json};
 
 #[derive(clap::Args)]
 pub struct Args {
-    /// The shader: a file, or a bundled name such as lights:select (`ps30 shaders` lists them).
+    /// The shader: a file (assembly or ps_3_0 bytecode), `-` for standard input, or a
+    /// bundled name such as lights:select (`ps30 shaders` lists them).
     #[arg(value_name = "SHADER")]
     shader: String,
     /// Run on the synthetic G-buffer of the light-model shaders (asm/lights/), WxH pixels.
@@ -89,6 +90,7 @@ impl Args {
 /// Validator warnings to stderr, the report to stdout; exit 1 when the run
 /// found a problem.
 pub fn run(args: Args, ui: &Ui) -> super::Result {
+    super::bound_threads(args.exec.threads())?;
     let loaded = load_shader(
         ui,
         &args.shader,
@@ -96,12 +98,13 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         args.input.max_input_bytes,
     )?;
     let input = args.input()?;
-    let given = args.constants.given(floats_set_by(&input), &args.source);
+    let resolved = args.constants.resolve(loaded.constants.as_ref())?;
+    let given = resolved.given(floats_set_by(&input), &args.source);
     let found = audit(ui, &loaded, &given, true)?;
     let setup = Setup {
         input,
         defines: args.source.define.clone(),
-        constants: args.constants.constants(),
+        constants: resolved.constants(),
         bins: args.bins as usize,
         threads: args.exec.threads(),
         limits: args.exec.limits(),

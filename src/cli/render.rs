@@ -58,6 +58,7 @@ impl Outputs<'_> {
 }
 
 pub fn run(args: Args, ui: &Ui) -> super::Result {
+    super::bound_threads(args.exec.threads())?;
     if let Some(dir) = &args.output {
         check_output_dir(dir)?;
     }

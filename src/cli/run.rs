@@ -6,12 +6,15 @@ use super::ui::Ui;
 use super::Outcome;
 use ps30::core::image;
 use ps30::jobs::luminance::{run_pass, PassSetup};
+use ps30::present::constants::{table_json, table_text};
 use ps30::present::luminance::{pass_json, pass_text};
+use serde_json::Value;
 use std::path::{Path, PathBuf};
 
 #[derive(clap::Args)]
 pub struct Args {
-    /// The shader: a file, or a bundled name such as corrected:loop (`ps30 shaders` lists them).
+    /// The shader: a file (assembly or ps_3_0 bytecode), `-` for standard input, or a
+    /// bundled name such as corrected:loop (`ps30 shaders` lists them).
     #[arg(value_name = "SHADER")]
     shader: String,
     /// The image s0 samples: OpenEXR, Radiance .hdr or PFM.
@@ -42,6 +45,7 @@ pub struct Args {
 }
 
 pub fn run(args: Args, ui: &Ui) -> super::Result {
+    super::bound_threads(args.exec.threads())?;
     if let Some(path) = &args.output {
         super::io::check_image_output(path, &[&args.image, Path::new(&args.shader)])?;
     }
@@ -51,11 +55,12 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         &args.source.options(),
         args.input.max_input_bytes,
     )?;
-    let found = audit(ui, &loaded, &args.constants.given(&[], &args.source), true)?;
+    let resolved = args.constants.resolve(loaded.constants.as_ref())?;
+    let found = audit(ui, &loaded, &resolved.given(&[], &args.source), true)?;
     let img = image::load(&args.image, &args.exec.image_limits())?;
     let setup = PassSetup {
         target: args.target,
-        constants: args.constants.constants(),
+        constants: resolved.constants(),
         sampler: args.sampler.state(),
         format: args.target_format.into(),
         threads: args.exec.threads(),
@@ -70,13 +75,18 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         None => None,
     };
     if args.exec.json {
-        print_json(&pass_json(&loaded, &found, &out, args.texels))?;
+        let mut json = pass_json(&loaded, &found, &out, args.texels);
+        json["constant_table"] = loaded.constants.as_ref().map_or(Value::Null, table_json);
+        print_json(&json)?;
     } else {
-        let text = pass_text(
+        let mut text = pass_text(
             &args.image.display().to_string(),
             &out,
             written.as_ref().map(|(p, w)| (*p, w)).filter(|_| !ui.quiet),
         );
+        if let Some(t) = &loaded.constants {
+            text.push_str(&table_text(t));
+        }
         say(ui, &text)?;
     }
     Ok(Outcome::from_ok(

@@ -41,7 +41,7 @@ pub struct Args {
     /// article-chain: the G-buffer's size.
     #[arg(long, value_name = "WxH", value_parser = parse_size, default_value = "1280x1024")]
     size: (u32, u32),
-    /// Emulator threads (default: all cores); results do not depend on it.
+    /// Threads for all of the command's work (default: all cores); results do not depend on it.
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..=256))]
     threads: Option<u32>,
     /// Print JSON instead of text.
@@ -68,6 +68,7 @@ fn stage_page(batch: &mut Batch, dir: &Path, page: &Page) -> Result<Vec<String>,
 }
 
 pub fn run(args: Args, ui: &Ui) -> super::Result {
+    super::bound_threads(args.threads.map(|t| t as usize))?;
     if let Some(out) = &args.output {
         check_output_path(out, &[])?;
     }

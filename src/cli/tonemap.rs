@@ -34,6 +34,7 @@ pub struct Args {
 }
 
 pub fn run(args: Args, ui: &Ui) -> super::Result {
+    super::bound_threads(args.exec.threads())?;
     if let Some(out) = &args.output {
         check_image_output(out, &[&args.image, Path::new(&args.shader)])?;
     }

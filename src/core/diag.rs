@@ -6,6 +6,12 @@
 //! colour terminal (the CLI), so a message always names `file:line:col`,
 //! shows the source line and puts a caret under the span.
 //!
+//! A compiled shader has no lines: its [`SourceFile`] holds the listing it
+//! disassembles to (what `ps30 disasm` prints, which the front end reads)
+//! and anchors from listing offsets to tokens, so its diagnostics name the
+//! file's token and byte offset instead of line:col and show the listing
+//! line with the caret under the operand.
+//!
 //! Reporting stays linear in what is shown: duplicates are found through an
 //! index, line numbers through the file's line table (built once), at most
 //! [`MAX_SHOWN`] diagnostics are rendered (a last line says how many more
@@ -44,6 +50,9 @@ pub struct SourceFile {
     /// The text, as read (a byte-order mark dropped).
     pub text: String,
     line_starts: Vec<usize>,
+    /// For a compiled shader (`text` is its listing): `(text offset, token
+    /// index)` at each line and operand, in text order.
+    tokens: Option<Vec<(u32, u32)>>,
 }
 
 impl SourceFile {
@@ -61,6 +70,48 @@ impl SourceFile {
             name: name.into(),
             text,
             line_starts,
+            tokens: None,
+        }
+    }
+
+    /// A compiled shader, as its listing with the token each part of the
+    /// listing came from.
+    pub fn compiled(
+        name: impl Into<String>,
+        listing: String,
+        anchors: Vec<(u32, u32)>,
+    ) -> SourceFile {
+        SourceFile {
+            tokens: Some(anchors),
+            ..SourceFile::new(name, listing)
+        }
+    }
+
+    /// Whether this is a compiled shader's listing.
+    pub fn is_compiled(&self) -> bool {
+        self.tokens.is_some()
+    }
+
+    /// The token a listing offset came from (compiled shaders only).
+    pub fn token_at(&self, offset: u32) -> Option<u32> {
+        let anchors = self.tokens.as_ref()?;
+        let i = anchors.partition_point(|&(at, _)| at <= offset);
+        anchors.get(i.checked_sub(1)?).map(|&(_, token)| token)
+    }
+
+    /// Where an offset is, for a person: `name:line:col` in text, `name:
+    /// token T (byte 0xB)` in a compiled shader.
+    pub fn locate(&self, offset: u32) -> String {
+        match self.token_at(offset) {
+            Some(token) => format!(
+                "{}: token {token} (byte {:#x})",
+                self.name,
+                token as usize * 4
+            ),
+            None => {
+                let (line, col) = self.line_col(offset);
+                format!("{}:{line}:{col}", self.name)
+            }
         }
     }
 
@@ -312,9 +363,46 @@ impl Diagnostic {
         lines.fold((usize::MAX, 0), |(lo, hi), l| (lo.min(l), hi.max(l)))
     }
 
+    /// A diagnostic in a compiled shader: token and byte instead of
+    /// line:col, and the listing line with a caret under the span.
+    fn render_compiled(&self, file: &SourceFile) -> String {
+        let mut out = format!("{self}\n  --> {}\n", file.locate(self.span.start));
+        let snippet = |span: Span, label: &str| {
+            let text = excerpt(file.line_text(file.line_of(span.start)));
+            let (_, col) = file.line_col(span.start);
+            let width = file.text[span.range()]
+                .lines()
+                .next()
+                .map_or(0, |l| l.chars().count())
+                .max(1);
+            format!(
+                "   |\n   | {text}\n   | {}{} {label}\n",
+                " ".repeat(col - 1),
+                "^".repeat(width)
+            )
+        };
+        out.push_str(&snippet(self.span, &self.label));
+        for (span, label) in &self.secondary {
+            out.push_str(&format!("   = {label}: {}\n", file.locate(span.start)));
+            out.push_str(&snippet(*span, ""));
+        }
+        for note in &self.notes {
+            out.push_str(&format!("   = {note}\n"));
+        }
+        if let Some(help) = &self.help {
+            out.push_str(&format!("   = help: {help}\n"));
+        }
+        out.push('\n');
+        out
+    }
+
     /// Writes the diagnostic to a (colour) stream: compiler-style with the
     /// source line, or as one line when that line is too long to echo.
     pub fn write(&self, file: &SourceFile, w: &mut dyn term::termcolor::WriteColor) {
+        if file.is_compiled() {
+            let _ = w.write_all(self.render_compiled(file).as_bytes());
+            return;
+        }
         if self.has_long_line(file)
             || term::emit_to_write_style(w, &Config::default(), file, &self.to_codespan(file))
                 .is_err()
@@ -331,14 +419,13 @@ impl Diagnostic {
 
     /// `file:line:col: severity: message`, used when the renderer cannot be.
     fn fallback(&self, file: &SourceFile) -> String {
-        let (line, col) = file.line_col(self.span.start);
-        format!("{}:{}:{}: {}", file.name, line, col, self)
+        format!("{}: {}", self.location(file), self)
     }
 
-    /// `file:line:col`, for one-line summaries.
+    /// `file:line:col` (a compiled shader: `file: token T (byte 0xB)`), for
+    /// one-line summaries.
     pub fn location(&self, file: &SourceFile) -> String {
-        let (line, col) = file.line_col(self.span.start);
-        format!("{}:{}:{}", file.name, line, col)
+        file.locate(self.span.start)
     }
 }
 

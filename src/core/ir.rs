@@ -336,13 +336,19 @@ pub struct InputDecl {
     pub origin: Origin,
 }
 
-/// `dcl_2d s#`, `dcl_cube s#`, `dcl_volume s#`.
+/// `dcl_2d s#`, `dcl_cube s#`, `dcl_volume s#`, with the `_centroid` and
+/// `_pp` Microsoft's assembler accepts and encodes there (they change
+/// nothing ps30 models, and are written back as they were given).
 #[derive(Clone, Debug, PartialEq)]
 pub struct SamplerDecl {
     /// The sampler number.
     pub index: u32,
     /// The texture type it samples.
     pub ty: SamplerType,
+    /// `_centroid`, as written.
+    pub centroid: bool,
+    /// `_pp`, as written.
+    pub pp: bool,
     /// Where it was declared.
     pub origin: Origin,
 }

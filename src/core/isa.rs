@@ -190,6 +190,13 @@ pub struct OpInfo {
     pub op: Opcode,
     /// Canonical lower-case mnemonic as the writer prints it.
     pub mnemonic: &'static str,
+    /// The D3DSIO_* opcode of the instruction token (d3d9types.h), bits 0–15.
+    pub code: u16,
+    /// The opcode-specific control (bits 16–23) that selects this row among
+    /// rows sharing a code: 1 for `texldp`, 2 for `texldb`, else 0 (the
+    /// comparison of `ifc`, `breakc` and `setp` goes there too, from
+    /// [`Compare::code`]).
+    pub control: u8,
     /// Instruction slots (Microsoft's ps_3_0 table).
     pub slots: u32,
     /// Slots when the sampler operand is a cube map, if different.
@@ -209,6 +216,19 @@ pub struct OpInfo {
     pub summary: &'static str,
 }
 
+impl OpInfo {
+    /// The static slots of one instruction of this row: the table's count,
+    /// the cube count when its sampler is declared a cube map, and one more
+    /// when it is predicated (Microsoft's `setp_comp` page).
+    pub fn slots_of(&self, cube: bool, predicated: bool) -> u32 {
+        let base = match self.cube_slots {
+            Some(c) if cube => c,
+            _ => self.slots,
+        };
+        base + u32::from(predicated)
+    }
+}
+
 use Operand as O;
 
 const DS: &[Operand] = &[O::Dst, O::Src];
@@ -219,10 +239,12 @@ const TEX: &[Operand] = &[O::Dst, O::Src, O::Sampler];
 const NONE: &[Operand] = &[];
 
 macro_rules! row {
-    ($op:ident, $m:literal, $slots:expr, $cube:expr, $class:ident, $ops:expr, sat=$sat:literal, cmp=$cmp:literal, pred=$pred:literal, $sum:literal) => {
+    ($op:ident, $m:literal, $code:literal / $control:literal, $slots:expr, $cube:expr, $class:ident, $ops:expr, sat=$sat:literal, cmp=$cmp:literal, pred=$pred:literal, $sum:literal) => {
         OpInfo {
             op: Opcode::$op,
             mnemonic: $m,
+            code: $code,
+            control: $control,
             slots: $slots,
             cube_slots: $cube,
             class: Class::$class,
@@ -235,65 +257,67 @@ macro_rules! row {
     };
 }
 
-/// The instruction table, one row per operation.
+/// The instruction table, one row per operation: mnemonic, D3DSIO_* code /
+/// control (d3d9types.h; the bytecode reader and writer take them from
+/// here), slots, cube slots, class, operands, modifiers, summary.
 #[rustfmt::skip]
 pub const TABLE: &[OpInfo] = &[
-    row!(Nop, "nop", 1, None, Arithmetic, NONE, sat = false, cmp = false, pred = true, "no operation"),
-    row!(Mov, "mov", 1, None, Arithmetic, DS, sat = true, cmp = false, pred = true, "copy"),
-    row!(Add, "add", 1, None, Arithmetic, DSS, sat = true, cmp = false, pred = true, "a + b"),
-    row!(Sub, "sub", 1, None, Arithmetic, DSS, sat = true, cmp = false, pred = true, "a - b"),
-    row!(Mad, "mad", 1, None, Arithmetic, DSSS, sat = true, cmp = false, pred = true, "a * b + c"),
-    row!(Mul, "mul", 1, None, Arithmetic, DSS, sat = true, cmp = false, pred = true, "a * b"),
-    row!(Rcp, "rcp", 1, None, Arithmetic, DSCALAR, sat = true, cmp = false, pred = true, "1 / x (x = 0 gives infinity)"),
-    row!(Rsq, "rsq", 1, None, Arithmetic, DSCALAR, sat = true, cmp = false, pred = true, "1 / sqrt(|x|) (x = 0 gives infinity)"),
-    row!(Dp3, "dp3", 1, None, Arithmetic, DSS, sat = true, cmp = false, pred = true, "3-component dot product"),
-    row!(Dp4, "dp4", 1, None, Arithmetic, DSS, sat = true, cmp = false, pred = true, "4-component dot product"),
-    row!(Min, "min", 1, None, Arithmetic, DSS, sat = true, cmp = false, pred = true, "component-wise minimum"),
-    row!(Max, "max", 1, None, Arithmetic, DSS, sat = true, cmp = false, pred = true, "component-wise maximum"),
-    row!(Exp, "exp", 1, None, Arithmetic, DSCALAR, sat = true, cmp = false, pred = true, "2^x"),
-    row!(Log, "log", 1, None, Arithmetic, DSCALAR, sat = true, cmp = false, pred = true, "log2(|x|) (x = 0 gives -FLT_MAX)"),
-    row!(Lrp, "lrp", 2, None, Arithmetic, DSSS, sat = true, cmp = false, pred = true, "a * b + (1 - a) * c"),
-    row!(Frc, "frc", 1, None, Arithmetic, DS, sat = false, cmp = false, pred = true, "x - floor(x)"),
-    row!(M4x4, "m4x4", 4, None, Arithmetic, DSS, sat = true, cmp = false, pred = true, "four dp4 with src1..src1+3"),
-    row!(M4x3, "m4x3", 3, None, Arithmetic, DSS, sat = true, cmp = false, pred = true, "three dp4 with src1..src1+2"),
-    row!(M3x4, "m3x4", 4, None, Arithmetic, DSS, sat = true, cmp = false, pred = true, "four dp3 with src1..src1+3"),
-    row!(M3x3, "m3x3", 3, None, Arithmetic, DSS, sat = true, cmp = false, pred = true, "three dp3 with src1..src1+2"),
-    row!(M3x2, "m3x2", 2, None, Arithmetic, DSS, sat = true, cmp = false, pred = true, "two dp3 with src1..src1+1"),
-    row!(Pow, "pow", 3, None, Arithmetic, &[O::Dst, O::ScalarSrc, O::ScalarSrc], sat = true, cmp = false, pred = true, "|a|^b"),
-    row!(Crs, "crs", 2, None, Arithmetic, DSS, sat = true, cmp = false, pred = true, "cross product"),
-    row!(Abs, "abs", 1, None, Arithmetic, DS, sat = true, cmp = false, pred = true, "|x|"),
-    row!(Nrm, "nrm", 3, None, Arithmetic, DS, sat = true, cmp = false, pred = true, "normalise xyz (zero length scales by FLT_MAX)"),
-    row!(SinCos, "sincos", 8, None, Arithmetic, DSCALAR, sat = false, cmp = false, pred = true, "x = cos, y = sin"),
-    row!(Cmp, "cmp", 1, None, Arithmetic, DSSS, sat = true, cmp = false, pred = true, "a >= 0 ? b : c"),
-    row!(Dp2Add, "dp2add", 2, None, Arithmetic, &[O::Dst, O::Src, O::Src, O::ScalarSrc], sat = true, cmp = false, pred = true, "a.x*b.x + a.y*b.y + c"),
-    row!(Dsx, "dsx", 2, None, Arithmetic, DS, sat = true, cmp = false, pred = true, "screen-space x derivative"),
-    row!(Dsy, "dsy", 2, None, Arithmetic, DS, sat = true, cmp = false, pred = true, "screen-space y derivative"),
-    row!(TexKill, "texkill", 2, None, Texture, &[O::KillSrc], sat = false, cmp = false, pred = true, "discard the pixel if any of x, y, z < 0"),
-    row!(TexLd, "texld", 1, Some(4), Texture, TEX, sat = false, cmp = false, pred = true, "sample with implicit gradients"),
-    row!(TexLdP, "texldp", 3, Some(4), Texture, TEX, sat = false, cmp = false, pred = true, "sample after dividing by w"),
-    row!(TexLdB, "texldb", 6, None, Texture, TEX, sat = false, cmp = false, pred = true, "sample with LOD bias w"),
-    row!(TexLdL, "texldl", 2, Some(5), Texture, TEX, sat = false, cmp = false, pred = true, "sample at explicit LOD w"),
-    row!(TexLdD, "texldd", 3, None, Texture, &[O::Dst, O::Src, O::Sampler, O::Src, O::Src], sat = false, cmp = false, pred = true, "sample with explicit gradients"),
-    row!(Setp, "setp", 1, None, Arithmetic, &[O::PredDst, O::Src, O::Src], sat = false, cmp = true, pred = true, "p0.c = a.c <op> b.c"),
-    row!(Call, "call", 2, None, Flow, &[O::Label], sat = false, cmp = false, pred = false, "call a subroutine"),
-    row!(CallNz, "callnz", 3, None, Flow, &[O::Label, O::Condition], sat = false, cmp = false, pred = false, "call if the condition holds"),
-    row!(Loop, "loop", 3, None, Flow, &[O::LoopCounter, O::IntReg], sat = false, cmp = false, pred = false, "loop i.x times, aL from i.y by i.z"),
-    row!(Ret, "ret", 1, None, Flow, NONE, sat = false, cmp = false, pred = false, "return (ends main)"),
-    row!(EndLoop, "endloop", 2, None, Flow, NONE, sat = false, cmp = false, pred = false, "end of loop"),
-    row!(Label, "label", 0, None, Flow, &[O::Label], sat = false, cmp = false, pred = false, "subroutine entry"),
-    row!(Rep, "rep", 3, None, Flow, &[O::IntReg], sat = false, cmp = false, pred = false, "repeat i.x times"),
-    row!(EndRep, "endrep", 2, None, Flow, NONE, sat = false, cmp = false, pred = false, "end of rep"),
-    row!(If, "if", 3, None, Flow, &[O::Condition], sat = false, cmp = false, pred = false, "branch on b# or p0.c"),
-    row!(Ifc, "if", 3, None, Flow, &[O::ScalarSrc, O::ScalarSrc], sat = false, cmp = true, pred = false, "branch on a comparison"),
-    row!(Else, "else", 1, None, Flow, NONE, sat = false, cmp = false, pred = false, "else branch"),
-    row!(EndIf, "endif", 1, None, Flow, NONE, sat = false, cmp = false, pred = false, "end of if"),
-    row!(Break, "break", 1, None, Flow, NONE, sat = false, cmp = false, pred = false, "leave the innermost rep/loop"),
-    row!(BreakC, "break", 3, None, Flow, &[O::ScalarSrc, O::ScalarSrc], sat = false, cmp = true, pred = false, "break if the comparison holds"),
-    row!(BreakP, "breakp", 3, None, Flow, &[O::Condition], sat = false, cmp = false, pred = false, "break if p0.c holds"),
-    row!(Def, "def", 0, None, Declaration, &[O::Dst, O::FloatLits], sat = false, cmp = false, pred = false, "define a float constant"),
-    row!(DefI, "defi", 0, None, Declaration, &[O::Dst, O::IntLits], sat = false, cmp = false, pred = false, "define an integer constant"),
-    row!(DefB, "defb", 0, None, Declaration, &[O::Dst, O::BoolLit], sat = false, cmp = false, pred = false, "define a boolean constant"),
-    row!(Dcl, "dcl", 0, None, Declaration, NONE, sat = false, cmp = false, pred = false, "declare an input or sampler"),
+    row!(Nop, "nop", 0x00/0, 1, None, Arithmetic, NONE, sat = false, cmp = false, pred = true, "no operation"),
+    row!(Mov, "mov", 0x01/0, 1, None, Arithmetic, DS, sat = true, cmp = false, pred = true, "copy"),
+    row!(Add, "add", 0x02/0, 1, None, Arithmetic, DSS, sat = true, cmp = false, pred = true, "a + b"),
+    row!(Sub, "sub", 0x03/0, 1, None, Arithmetic, DSS, sat = true, cmp = false, pred = true, "a - b"),
+    row!(Mad, "mad", 0x04/0, 1, None, Arithmetic, DSSS, sat = true, cmp = false, pred = true, "a * b + c"),
+    row!(Mul, "mul", 0x05/0, 1, None, Arithmetic, DSS, sat = true, cmp = false, pred = true, "a * b"),
+    row!(Rcp, "rcp", 0x06/0, 1, None, Arithmetic, DSCALAR, sat = true, cmp = false, pred = true, "1 / x (x = 0 gives infinity)"),
+    row!(Rsq, "rsq", 0x07/0, 1, None, Arithmetic, DSCALAR, sat = true, cmp = false, pred = true, "1 / sqrt(|x|) (x = 0 gives infinity)"),
+    row!(Dp3, "dp3", 0x08/0, 1, None, Arithmetic, DSS, sat = true, cmp = false, pred = true, "3-component dot product"),
+    row!(Dp4, "dp4", 0x09/0, 1, None, Arithmetic, DSS, sat = true, cmp = false, pred = true, "4-component dot product"),
+    row!(Min, "min", 0x0A/0, 1, None, Arithmetic, DSS, sat = true, cmp = false, pred = true, "component-wise minimum"),
+    row!(Max, "max", 0x0B/0, 1, None, Arithmetic, DSS, sat = true, cmp = false, pred = true, "component-wise maximum"),
+    row!(Exp, "exp", 0x0E/0, 1, None, Arithmetic, DSCALAR, sat = true, cmp = false, pred = true, "2^x"),
+    row!(Log, "log", 0x0F/0, 1, None, Arithmetic, DSCALAR, sat = true, cmp = false, pred = true, "log2(|x|) (x = 0 gives -FLT_MAX)"),
+    row!(Lrp, "lrp", 0x12/0, 2, None, Arithmetic, DSSS, sat = true, cmp = false, pred = true, "a * b + (1 - a) * c"),
+    row!(Frc, "frc", 0x13/0, 1, None, Arithmetic, DS, sat = false, cmp = false, pred = true, "x - floor(x)"),
+    row!(M4x4, "m4x4", 0x14/0, 4, None, Arithmetic, DSS, sat = true, cmp = false, pred = true, "four dp4 with src1..src1+3"),
+    row!(M4x3, "m4x3", 0x15/0, 3, None, Arithmetic, DSS, sat = true, cmp = false, pred = true, "three dp4 with src1..src1+2"),
+    row!(M3x4, "m3x4", 0x16/0, 4, None, Arithmetic, DSS, sat = true, cmp = false, pred = true, "four dp3 with src1..src1+3"),
+    row!(M3x3, "m3x3", 0x17/0, 3, None, Arithmetic, DSS, sat = true, cmp = false, pred = true, "three dp3 with src1..src1+2"),
+    row!(M3x2, "m3x2", 0x18/0, 2, None, Arithmetic, DSS, sat = true, cmp = false, pred = true, "two dp3 with src1..src1+1"),
+    row!(Pow, "pow", 0x20/0, 3, None, Arithmetic, &[O::Dst, O::ScalarSrc, O::ScalarSrc], sat = true, cmp = false, pred = true, "|a|^b"),
+    row!(Crs, "crs", 0x21/0, 2, None, Arithmetic, DSS, sat = true, cmp = false, pred = true, "cross product"),
+    row!(Abs, "abs", 0x23/0, 1, None, Arithmetic, DS, sat = true, cmp = false, pred = true, "|x|"),
+    row!(Nrm, "nrm", 0x24/0, 3, None, Arithmetic, DS, sat = true, cmp = false, pred = true, "normalise xyz (zero length scales by FLT_MAX)"),
+    row!(SinCos, "sincos", 0x25/0, 8, None, Arithmetic, DSCALAR, sat = false, cmp = false, pred = true, "x = cos, y = sin"),
+    row!(Cmp, "cmp", 0x58/0, 1, None, Arithmetic, DSSS, sat = true, cmp = false, pred = true, "a >= 0 ? b : c"),
+    row!(Dp2Add, "dp2add", 0x5A/0, 2, None, Arithmetic, &[O::Dst, O::Src, O::Src, O::ScalarSrc], sat = true, cmp = false, pred = true, "a.x*b.x + a.y*b.y + c"),
+    row!(Dsx, "dsx", 0x5B/0, 2, None, Arithmetic, DS, sat = true, cmp = false, pred = true, "screen-space x derivative"),
+    row!(Dsy, "dsy", 0x5C/0, 2, None, Arithmetic, DS, sat = true, cmp = false, pred = true, "screen-space y derivative"),
+    row!(TexKill, "texkill", 0x41/0, 2, None, Texture, &[O::KillSrc], sat = false, cmp = false, pred = true, "discard the pixel if any of x, y, z < 0"),
+    row!(TexLd, "texld", 0x42/0, 1, Some(4), Texture, TEX, sat = false, cmp = false, pred = true, "sample with implicit gradients"),
+    row!(TexLdP, "texldp", 0x42/1, 3, Some(4), Texture, TEX, sat = false, cmp = false, pred = true, "sample after dividing by w"),
+    row!(TexLdB, "texldb", 0x42/2, 6, None, Texture, TEX, sat = false, cmp = false, pred = true, "sample with LOD bias w"),
+    row!(TexLdL, "texldl", 0x5F/0, 2, Some(5), Texture, TEX, sat = false, cmp = false, pred = true, "sample at explicit LOD w"),
+    row!(TexLdD, "texldd", 0x5D/0, 3, None, Texture, &[O::Dst, O::Src, O::Sampler, O::Src, O::Src], sat = false, cmp = false, pred = true, "sample with explicit gradients"),
+    row!(Setp, "setp", 0x5E/0, 1, None, Arithmetic, &[O::PredDst, O::Src, O::Src], sat = false, cmp = true, pred = true, "p0.c = a.c <op> b.c"),
+    row!(Call, "call", 0x19/0, 2, None, Flow, &[O::Label], sat = false, cmp = false, pred = false, "call a subroutine"),
+    row!(CallNz, "callnz", 0x1A/0, 3, None, Flow, &[O::Label, O::Condition], sat = false, cmp = false, pred = false, "call if the condition holds"),
+    row!(Loop, "loop", 0x1B/0, 3, None, Flow, &[O::LoopCounter, O::IntReg], sat = false, cmp = false, pred = false, "loop i.x times, aL from i.y by i.z"),
+    row!(Ret, "ret", 0x1C/0, 1, None, Flow, NONE, sat = false, cmp = false, pred = false, "return (ends main)"),
+    row!(EndLoop, "endloop", 0x1D/0, 2, None, Flow, NONE, sat = false, cmp = false, pred = false, "end of loop"),
+    row!(Label, "label", 0x1E/0, 0, None, Flow, &[O::Label], sat = false, cmp = false, pred = false, "subroutine entry"),
+    row!(Rep, "rep", 0x26/0, 3, None, Flow, &[O::IntReg], sat = false, cmp = false, pred = false, "repeat i.x times"),
+    row!(EndRep, "endrep", 0x27/0, 2, None, Flow, NONE, sat = false, cmp = false, pred = false, "end of rep"),
+    row!(If, "if", 0x28/0, 3, None, Flow, &[O::Condition], sat = false, cmp = false, pred = false, "branch on b# or p0.c"),
+    row!(Ifc, "if", 0x29/0, 3, None, Flow, &[O::ScalarSrc, O::ScalarSrc], sat = false, cmp = true, pred = false, "branch on a comparison"),
+    row!(Else, "else", 0x2A/0, 1, None, Flow, NONE, sat = false, cmp = false, pred = false, "else branch"),
+    row!(EndIf, "endif", 0x2B/0, 1, None, Flow, NONE, sat = false, cmp = false, pred = false, "end of if"),
+    row!(Break, "break", 0x2C/0, 1, None, Flow, NONE, sat = false, cmp = false, pred = false, "leave the innermost rep/loop"),
+    row!(BreakC, "break", 0x2D/0, 3, None, Flow, &[O::ScalarSrc, O::ScalarSrc], sat = false, cmp = true, pred = false, "break if the comparison holds"),
+    row!(BreakP, "breakp", 0x60/0, 3, None, Flow, &[O::Condition], sat = false, cmp = false, pred = false, "break if p0.c holds"),
+    row!(Def, "def", 0x51/0, 0, None, Declaration, &[O::Dst, O::FloatLits], sat = false, cmp = false, pred = false, "define a float constant"),
+    row!(DefI, "defi", 0x30/0, 0, None, Declaration, &[O::Dst, O::IntLits], sat = false, cmp = false, pred = false, "define an integer constant"),
+    row!(DefB, "defb", 0x2F/0, 0, None, Declaration, &[O::Dst, O::BoolLit], sat = false, cmp = false, pred = false, "define a boolean constant"),
+    row!(Dcl, "dcl", 0x1F/0, 0, None, Declaration, NONE, sat = false, cmp = false, pred = false, "declare an input or sampler"),
 ];
 
 impl Opcode {
@@ -320,6 +344,19 @@ impl Opcode {
     /// What kind of instruction it is.
     pub fn class(self) -> Class {
         self.info().class
+    }
+
+    /// The row of an instruction token's D3DSIO_* code and control: `texld`,
+    /// `texldp` and `texldb` share 0x42 and differ in the control; the
+    /// comparison in the control of `ifc`, `breakc` and `setp` selects no row.
+    pub fn from_code(code: u16, control: u8) -> Option<Opcode> {
+        let mut rows = TABLE.iter().filter(|r| r.code == code).peekable();
+        let first = rows.peek().map(|r| r.op)?;
+        match rows.find(|r| r.control == control) {
+            Some(r) => Some(r.op),
+            None if code != 0x42 => Some(first),
+            None => None,
+        }
     }
 
     /// Whether this opcode opens a block closed later (rep, loop, if).
@@ -372,6 +409,24 @@ impl Compare {
             Compare::Eq => "eq",
             Compare::Ne => "ne",
         }
+    }
+
+    /// The comparison as the control bits of an instruction token
+    /// (D3DSPC_*: GT 1, EQ 2, GE 3, LT 4, NE 5, LE 6; d3d9types.h).
+    pub fn code(self) -> u8 {
+        match self {
+            Compare::Gt => 1,
+            Compare::Eq => 2,
+            Compare::Ge => 3,
+            Compare::Lt => 4,
+            Compare::Ne => 5,
+            Compare::Le => 6,
+        }
+    }
+
+    /// The comparison of an instruction token's control bits, if they name one.
+    pub fn from_code(code: u8) -> Option<Compare> {
+        Compare::ALL.into_iter().find(|c| c.code() == code)
     }
 
     /// The comparison of a suffix (`gt`, any case), if it is one.
@@ -443,30 +498,49 @@ pub struct RegFileInfo {
     pub writable: bool,
     /// Distinct registers of this file one instruction may read (read ports).
     pub read_ports: u32,
+    /// The D3DSPR_* register type of its parameter tokens (d3d9types.h).
+    pub token_type: u8,
+    /// The register number a token carries for a single named register
+    /// (`vFace` is MISCTYPE number 1); numbered files carry their index.
+    pub token_number: u32,
 }
 
-/// The register files, from Microsoft's ps_3_0 register page.
+/// The register files, from Microsoft's ps_3_0 register page, with their
+/// D3DSPR_* token types (TEMP 0, INPUT 1, CONST 2, CONSTINT 7, COLOROUT 8,
+/// DEPTHOUT 9, SAMPLER 10, CONSTBOOL 14, LOOP 15, MISCTYPE 17, LABEL 18,
+/// PREDICATE 19).
 #[rustfmt::skip]
 pub const REG_FILES: &[RegFileInfo] = &[
-    RegFileInfo { file: RegFile::Temp, name: "r", count: 32, numbered: true, readable: true, writable: true, read_ports: 3 },
-    RegFileInfo { file: RegFile::Input, name: "v", count: 10, numbered: true, readable: true, writable: false, read_ports: 1 },
-    RegFileInfo { file: RegFile::Const, name: "c", count: 224, numbered: true, readable: true, writable: false, read_ports: 1 },
-    RegFileInfo { file: RegFile::ConstInt, name: "i", count: 16, numbered: true, readable: true, writable: false, read_ports: 1 },
-    RegFileInfo { file: RegFile::ConstBool, name: "b", count: 16, numbered: true, readable: true, writable: false, read_ports: 1 },
-    RegFileInfo { file: RegFile::Sampler, name: "s", count: 16, numbered: true, readable: true, writable: false, read_ports: 1 },
-    RegFileInfo { file: RegFile::Predicate, name: "p", count: 1, numbered: true, readable: true, writable: true, read_ports: 1 },
-    RegFileInfo { file: RegFile::ColorOut, name: "oC", count: 4, numbered: true, readable: false, writable: true, read_ports: 0 },
-    RegFileInfo { file: RegFile::DepthOut, name: "oDepth", count: 1, numbered: false, readable: false, writable: true, read_ports: 0 },
-    RegFileInfo { file: RegFile::LoopCounter, name: "aL", count: 1, numbered: false, readable: true, writable: false, read_ports: 1 },
-    RegFileInfo { file: RegFile::Position, name: "vPos", count: 1, numbered: false, readable: true, writable: false, read_ports: 1 },
-    RegFileInfo { file: RegFile::Face, name: "vFace", count: 1, numbered: false, readable: true, writable: false, read_ports: 1 },
-    RegFileInfo { file: RegFile::Label, name: "l", count: 2048, numbered: true, readable: false, writable: false, read_ports: 1 },
+    RegFileInfo { file: RegFile::Temp, name: "r", count: 32, numbered: true, readable: true, writable: true, read_ports: 3, token_type: 0, token_number: 0 },
+    RegFileInfo { file: RegFile::Input, name: "v", count: 10, numbered: true, readable: true, writable: false, read_ports: 1, token_type: 1, token_number: 0 },
+    RegFileInfo { file: RegFile::Const, name: "c", count: 224, numbered: true, readable: true, writable: false, read_ports: 1, token_type: 2, token_number: 0 },
+    RegFileInfo { file: RegFile::ConstInt, name: "i", count: 16, numbered: true, readable: true, writable: false, read_ports: 1, token_type: 7, token_number: 0 },
+    RegFileInfo { file: RegFile::ConstBool, name: "b", count: 16, numbered: true, readable: true, writable: false, read_ports: 1, token_type: 14, token_number: 0 },
+    RegFileInfo { file: RegFile::Sampler, name: "s", count: 16, numbered: true, readable: true, writable: false, read_ports: 1, token_type: 10, token_number: 0 },
+    RegFileInfo { file: RegFile::Predicate, name: "p", count: 1, numbered: true, readable: true, writable: true, read_ports: 1, token_type: 19, token_number: 0 },
+    RegFileInfo { file: RegFile::ColorOut, name: "oC", count: 4, numbered: true, readable: false, writable: true, read_ports: 0, token_type: 8, token_number: 0 },
+    RegFileInfo { file: RegFile::DepthOut, name: "oDepth", count: 1, numbered: false, readable: false, writable: true, read_ports: 0, token_type: 9, token_number: 0 },
+    RegFileInfo { file: RegFile::LoopCounter, name: "aL", count: 1, numbered: false, readable: true, writable: false, read_ports: 1, token_type: 15, token_number: 0 },
+    RegFileInfo { file: RegFile::Position, name: "vPos", count: 1, numbered: false, readable: true, writable: false, read_ports: 1, token_type: 17, token_number: 0 },
+    RegFileInfo { file: RegFile::Face, name: "vFace", count: 1, numbered: false, readable: true, writable: false, read_ports: 1, token_type: 17, token_number: 1 },
+    RegFileInfo { file: RegFile::Label, name: "l", count: 2048, numbered: true, readable: false, writable: false, read_ports: 1, token_type: 18, token_number: 0 },
 ];
 
 impl RegFile {
     /// The facts of this register file.
     pub fn info(self) -> &'static RegFileInfo {
         &REG_FILES[self as usize]
+    }
+
+    /// The register a parameter token names: its D3DSPR_* type and number.
+    /// `None` for types ps_3_0 does not have and numbers a single named
+    /// register does not use.
+    pub fn from_token(token_type: u8, number: u32) -> Option<(RegFile, u32)> {
+        REG_FILES.iter().find_map(|f| match f.numbered {
+            true if f.token_type == token_type => Some((f.file, number)),
+            false if f.token_type == token_type && f.token_number == number => Some((f.file, 0)),
+            _ => None,
+        })
     }
 
     /// Parses a register name (prefix and number already split). Names are
@@ -491,6 +565,16 @@ pub enum SamplerType {
 }
 
 impl SamplerType {
+    /// The D3DSAMPLER_TEXTURE_TYPE of a `dcl` token (2D 2, CUBE 3, VOLUME 4;
+    /// 1 is the 1D type ps_3_0 does not have).
+    pub fn code(self) -> u8 {
+        match self {
+            SamplerType::Tex2d => 2,
+            SamplerType::Cube => 3,
+            SamplerType::Volume => 4,
+        }
+    }
+
     /// The `dcl_` suffix (`2d`, `cube`, `volume`).
     pub fn suffix(self) -> &'static str {
         match self {
@@ -502,7 +586,7 @@ impl SamplerType {
 }
 
 /// Input usages of `dcl_<usage>[n]`, in D3DDECLUSAGE order (the index is
-/// the usage code).
+/// the usage code a `dcl` token carries).
 pub const USAGES: &[&str] = &[
     "position",
     "blendweight",

@@ -1,22 +1,29 @@
-//! Text to validated shader in one call: parse, expand REPEAT_BLOCK, lower
-//! and validate.
+//! A shader's bytes to validated shader in one call: recognise text or
+//! bytecode, parse, expand REPEAT_BLOCK, lower and validate — and, for
+//! `ps30 asm`, write the tokens.
 //!
 //! The [`front`](crate::core::front) end and [`valid`](crate::core::valid)
 //! are separate stages joined by the AST; this module is the one place that
 //! runs them in order and gathers every diagnostic on the way, so a caller
 //! gets either a [`Shader`] with its warnings or all the errors at once.
+//! Every command reads shaders through [`source_file`], which tells a
+//! compiled shader from text by its first token (never by its name) and
+//! turns it into its listing ([`bytecode::listing`]), so everything after
+//! this point sees one kind of source.
 
-use crate::core::diag::{Diagnostics, SourceError, SourceFile};
+use crate::core::bytecode::{self, ctab, ReadError};
+use crate::core::diag::{Diagnostic, Diagnostics, SourceError, SourceFile};
 use crate::core::front::{ast, parse, repeat};
 use crate::core::ir::{Origin, Shader};
 use std::collections::{BTreeMap, BTreeSet};
+use std::fmt;
 
 /// Options of the front end.
 #[derive(Clone, Debug)]
 pub struct Options {
     /// Names usable as REPEAT_BLOCK counts (`-D name=value`).
     pub defines: BTreeMap<String, u64>,
-    /// Cap on expanded statements.
+    /// Cap on expanded statements (and on the items of a compiled shader).
     pub max_expanded: u64,
 }
 
@@ -32,12 +39,14 @@ impl Default for Options {
 /// A shader loaded from source, with the warnings found on the way.
 #[derive(Clone, Debug)]
 pub struct Loaded {
-    /// The source, for diagnostics.
+    /// The source (a compiled shader: its listing).
     pub file: SourceFile,
     /// The validated shader.
     pub shader: Shader,
     /// Warnings of validation (errors make no `Loaded`).
     pub warnings: Diagnostics,
+    /// The constant table the shader carries (fxc's `CTAB` comment block).
+    pub constants: Option<ctab::ConstantTable>,
     /// The names the source uses as REPEAT_BLOCK counts (what `-D` can
     /// bind; see [`crate::core::audit`]).
     pub defines_used: BTreeSet<String>,
@@ -57,14 +66,131 @@ fn count_names(stmts: &[ast::Stmt]) -> BTreeSet<String> {
         .collect()
 }
 
+/// Bytes that are not a shader ps30 can read.
+#[derive(Clone, Debug, PartialEq, Eq)]
+#[allow(missing_docs)] // name: the input as messages call it; the rest as each variant says
+pub enum NotASource {
+    /// A compiled shader that does not read.
+    Bytecode { name: String, error: ReadError },
+    /// Neither a compiled shader nor UTF-8 text: where the first bad byte
+    /// is (its offset, and its line and column counted in the valid text
+    /// before it) and what it is.
+    NotText {
+        name: String,
+        offset: usize,
+        line: usize,
+        column: usize,
+        byte: u8,
+    },
+    /// A Direct3D 10+ shader container.
+    Dxbc { name: String },
+}
+
+impl fmt::Display for NotASource {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            NotASource::Bytecode { name, error } => write!(f, "{name}: {error}"),
+            NotASource::NotText {
+                name,
+                offset,
+                line,
+                column,
+                byte,
+            } => write!(
+                f,
+                "{name}:{line}:{column}: not UTF-8 text (byte 0x{byte:02X} at offset {offset} starts no UTF-8 character) and not ps_3_0 bytecode; save the file as UTF-8"
+            ),
+            NotASource::Dxbc { name } => write!(
+                f,
+                "{name}: a Direct3D 10 or later shader (DXBC container); ps30 reads Direct3D 9 ps_3_0"
+            ),
+        }
+    }
+}
+
+impl std::error::Error for NotASource {}
+
+/// A shader's source from its bytes: a compiled shader (its first token is
+/// a version token) becomes its listing; anything else must be UTF-8 text.
+pub fn source_file(
+    name: &str,
+    bytes: Vec<u8>,
+    options: &Options,
+) -> Result<SourceFile, NotASource> {
+    if bytecode::is_bytecode(&bytes) {
+        let module = bytecode::read::read(&bytes, options.max_expanded).map_err(|error| {
+            NotASource::Bytecode {
+                name: name.to_string(),
+                error,
+            }
+        })?;
+        let l = bytecode::listing::listing(&module);
+        return Ok(SourceFile::compiled(name, l.text, l.anchors));
+    }
+    if bytes.starts_with(b"DXBC") {
+        return Err(NotASource::Dxbc { name: name.into() });
+    }
+    String::from_utf8(bytes)
+        .map(|text| SourceFile::new(name, text))
+        .map_err(|e| {
+            let offset = e.utf8_error().valid_up_to();
+            let bytes = e.as_bytes();
+            let before = std::str::from_utf8(&bytes[..offset]).unwrap_or_default();
+            NotASource::NotText {
+                name: name.to_string(),
+                offset,
+                line: before.matches('\n').count() + 1,
+                column: before.rsplit('\n').next().unwrap_or("").chars().count() + 1,
+                byte: bytes[offset],
+            }
+        })
+}
+
+/// What the stages produced on the way to a shader.
+struct Stages {
+    stmts: Vec<ast::Stmt>,
+    expanded: Vec<repeat::Expanded>,
+    loaded: Loaded,
+}
+
 /// Parses, expands and validates a source file.
 pub fn load(file: SourceFile, options: &Options) -> Result<Loaded, SourceError> {
+    stages(file, options).map(|s| s.loaded)
+}
+
+/// Loads a shader from a string (name used in messages).
+pub fn load_str(name: &str, text: &str, options: &Options) -> Result<Loaded, SourceError> {
+    load(SourceFile::new(name, text), options)
+}
+
+/// Loads a source and writes its tokens (`ps30 asm`): the program must
+/// validate; its comment blocks, the constant table among them, are
+/// written where they stand.
+pub fn assemble(file: SourceFile, options: &Options) -> Result<(Loaded, Vec<u32>), SourceError> {
+    let s = stages(file, options)?;
+    match bytecode::write::assemble(&s.stmts, &s.expanded) {
+        Ok(module) => Ok((s.loaded, bytecode::write::encode(&module))),
+        Err(diagnostics) => Err(SourceError {
+            file: s.loaded.file,
+            diagnostics,
+        }),
+    }
+}
+
+fn stages(file: SourceFile, options: &Options) -> Result<Stages, SourceError> {
+    let fail = |file: SourceFile, mut diagnostics: Diagnostics| {
+        diagnostics.sort();
+        Err(SourceError { file, diagnostics })
+    };
     if let Some(d) = parse::missing_version(&file.text) {
-        let mut diagnostics = Diagnostics::default();
-        diagnostics.push(d);
-        return Err(SourceError { file, diagnostics });
+        // Not a shader at all: one error saying so, not one per line.
+        return fail(file, only(d));
     }
     let (stmts, mut diags) = parse::parse(&file.text);
+    if let Some(d) = other_version(&stmts) {
+        // The rest would be judged by the wrong rules: the version says it all.
+        return fail(file, only(d));
+    }
     if diags.has_errors() {
         // Still report macro problems of the lines that did parse.
         if let Err(more) = repeat::expand(&stmts, &options.defines, options.max_expanded) {
@@ -79,42 +205,84 @@ pub fn load(file: SourceFile, options: &Options) -> Result<Loaded, SourceError> 
                 }
             }
         }
-        diags.sort();
-        return Err(SourceError {
-            file,
-            diagnostics: diags,
-        });
+        return fail(file, diags);
     }
+    let constants = match constant_table(&stmts) {
+        Ok(t) => t,
+        Err(d) => return fail(file, only(d)),
+    };
     let expanded = match repeat::expand(&stmts, &options.defines, options.max_expanded) {
         Ok(e) => e,
-        Err(d) => {
-            return Err(SourceError {
-                file,
-                diagnostics: d,
-            })
-        }
+        Err(d) => return fail(file, d),
     };
     match crate::core::valid::validate(&stmts, &expanded, &file) {
         Ok((shader, mut warnings)) => {
             warnings.sort();
-            Ok(Loaded {
-                defines_used: count_names(&stmts),
-                file,
-                shader,
-                warnings,
+            let defines_used = count_names(&stmts);
+            Ok(Stages {
+                stmts,
+                expanded,
+                loaded: Loaded {
+                    defines_used,
+                    file,
+                    shader,
+                    warnings,
+                    constants,
+                },
             })
         }
-        Err(mut d) => {
-            d.sort();
-            Err(SourceError {
-                file,
-                diagnostics: d,
-            })
-        }
+        Err(d) => fail(file, d),
     }
 }
 
-/// Loads a shader from a string (name used in messages).
-pub fn load_str(name: &str, text: &str, options: &Options) -> Result<Loaded, SourceError> {
-    load(SourceFile::new(name, text), options)
+/// One diagnostic as the list of a file.
+fn only(d: Diagnostic) -> Diagnostics {
+    let mut all = Diagnostics::default();
+    all.push(d);
+    all
+}
+
+/// A first statement that names another shader model (`ps_2_0`, `vs_3_0`).
+fn other_version(stmts: &[ast::Stmt]) -> Option<Diagnostic> {
+    match stmts.first()? {
+        ast::Stmt::Version {
+            text,
+            major,
+            minor,
+            span,
+        } if !(text.to_ascii_lowercase().starts_with("ps") && *major == 3 && *minor == 0) => Some(
+            Diagnostic::error(*span, format!("this is a {text} shader; ps30 reads ps_3_0 only"))
+                .with_label("not ps_3_0")
+                .with_help("ps30 checks, runs and writes pixel shader 3.0 only; the first line of one is `ps_3_0`"),
+        ),
+        _ => None,
+    }
+}
+
+/// The constant table of a source, when it carries one that decodes: for
+/// looking names up before a job loads the shader (a table that does not
+/// decode is an error when the shader is loaded).
+pub fn constant_table_of(file: &SourceFile) -> Option<ctab::ConstantTable> {
+    let (stmts, _) = parse::parse(&file.text);
+    constant_table(&stmts).ok().flatten()
+}
+
+/// The first `CTAB` comment block, decoded.
+fn constant_table(stmts: &[ast::Stmt]) -> Result<Option<ctab::ConstantTable>, Diagnostic> {
+    let found = stmts.iter().find_map(|s| match s {
+        ast::Stmt::Comment { tokens, span } if tokens.first() == Some(&bytecode::CTAB) => {
+            Some((tokens, *span))
+        }
+        _ => None,
+    });
+    let Some((tokens, span)) = found else {
+        return Ok(None);
+    };
+    ctab::decode(&tokens[1..]).map(Some).map_err(|e| {
+        Diagnostic::error(
+            span,
+            format!("the constant table does not decode: {}", e.message),
+        )
+        .with_label(format!("at byte {} of the table", e.offset))
+    })
 }

@@ -3,6 +3,8 @@
 //! a job or a core stage returned and renders it.
 
 pub mod check;
+pub mod constants;
+pub mod disasm;
 pub mod json;
 pub mod luminance;
 pub mod plan;

@@ -102,12 +102,16 @@ pub const CASES: &[(&str, &str, usize, usize)] = &[
     // An offset that does not fit in 64 bits once added must not overflow.
     ("ps_3_0\nloop aL, i0\nmov r0, v9[aL + 9223372036854775807]\nendloop", "is out of range", 3, 11),
     ("ps_3_0\nloop aL, i0\nmov r0, v[aL + 99999999999999999999]\nendloop", "is out of range", 3, 10),
+    ("ps_3_0\nnop_pp", "`_pp` is not allowed on `nop`: it has no destination", 2, 4),
+    ("ps_3_0\nrep_pp i0\nendrep", "`_pp` is not allowed on `rep`", 2, 4),
     // --- version line ----------------------------------------------------------
     ("mov r0, c0", "missing version line", 1, 1),
     ("", "missing version line", 1, 1),
     ("// only a comment\n", "missing version line", 1, 1),
-    ("ps_2_0\nmov r0, c0", "`ps_2_0` is not supported", 1, 1),
-    ("vs_3_0\nmov r0, c0", "`vs_3_0` is not supported", 1, 1),
+    ("ps_2_0\nmov r0, c0", "this is a ps_2_0 shader; ps30 reads ps_3_0 only", 1, 1),
+    ("vs_3_0\nmov r0, c0", "this is a vs_3_0 shader", 1, 1),
+    ("ps_1_4\ntexcrd r0, t0\nphase\n+mov r0, r1", "this is a ps_1_4 shader", 1, 1),
+    ("ps_2_a\ndcl t0\nmov oC0, t0", "this is a ps_2_a shader", 1, 1),
     ("ps_3_0\nps_3_0\nmov r0, c0", "the version line may appear only once", 2, 1),
     // --- declarations and definitions ---------------------------------------
     ("ps_3_0\nmov r0, c0\ndcl_texcoord0 v0", "declarations must come before the first instruction", 3, 1),
@@ -146,7 +150,7 @@ pub const CASES: &[(&str, &str, usize, usize)] = &[
     ("ps_3_0\nbreak", "break outside rep or loop", 2, 1),
     ("ps_3_0\nbreak_gt r0.x, r1.x", "break outside rep or loop", 2, 1),
     ("ps_3_0\n(p0.x) rep i0\nendrep", "`rep` cannot be predicated", 2, 2),
-    ("ps_3_0\nif_gt r0.x, r1.x\nmov oC0, r0\nendif", "oC0 is written inside dynamic flow control or predication", 3, 1),
+    ("ps_3_0\nif_gt c0.x, c0.y\nmov oC0, c0\nendif", "oC0 is written inside dynamic flow control or predication", 3, 1),
     ("ps_3_0\n(p0) mov oC0, r0", "oC0 is written inside dynamic flow control or predication", 2, 1),
     ("ps_3_0\ndefi i0, 300, 0, 0, 0\nrep i0\nendrep", "the iteration count (.x = 300) must be in 0..=255", 3, 1),
     ("ps_3_0\ndefi i0, 1, 0, 200, 0\nloop aL, i0\nendloop", "the loop step (.z = 200) must be in -128..=127", 3, 1),

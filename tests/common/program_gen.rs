@@ -47,6 +47,9 @@ const BODY_LINES: &[&str] = &[
 
 const LOOP_LINES: &[&str] = &["add r12, r12, v[aL]", "mov r13, v[aL + 1]"];
 
+/// The temporaries [`BODY_LINES`] and [`LOOP_LINES`] read.
+const READ_TEMPS: [u32; 4] = [0, 1, 2, 12];
+
 struct Gen<'a, 'b> {
     c: &'b mut Chooser<'a>,
     out: Vec<String>,
@@ -155,12 +158,10 @@ impl Gen<'_, '_> {
 /// A random static program from a byte string.
 pub fn random_program(bytes: &[u8]) -> String {
     let mut c = Chooser { bytes, at: 0 };
-    let mut head = vec![
-        "ps_3_0".to_string(),
-        "dcl_texcoord0 v0".to_string(),
-        "dcl_2d s0".to_string(),
-        "dcl_cube s1".to_string(),
-    ];
+    let mut head = vec!["ps_3_0".to_string()];
+    // Every input, so that `v[aL]` is declared for any value aL takes.
+    head.extend((0..10).map(|v| format!("dcl_texcoord{v} v{v}")));
+    head.extend(["dcl_2d s0".to_string(), "dcl_cube s1".to_string()]);
     for i in 0..8 {
         // count 0..=6; loop start 0..=255 and step -128..=127 (unused here
         // except to be valid).
@@ -187,6 +188,10 @@ pub fn random_program(bytes: &[u8]) -> String {
         first_callable: 0,
         depth: 4,
     };
+    // The temporaries the lines read, written before anything reads them.
+    for r in READ_TEMPS {
+        gen.line(format!("mov r{r}, c0"));
+    }
     gen.block(main, 6);
     gen.line("mov oC0, r0");
     if subs > 0 || gen.c.chance(50) {

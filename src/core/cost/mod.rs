@@ -23,7 +23,9 @@
 //!   free; `ret` in main charges 1 and ends the shader.
 //!
 //! The analysis is symbolic: a loop's cost is its per-iteration cost times its
-//! count, so the running time does not grow with iteration counts. Where the
+//! count, and a subroutine is analysed once whatever the number of its call
+//! sites (its entries are summed over them), so the running time does not
+//! grow with iteration counts or call paths. Where the
 //! count depends on data (dynamic branches, breaks, unknown constants) the
 //! model gives the shortest and the longest path instead of one number.
 
@@ -31,7 +33,7 @@ use crate::core::diag::SourceFile;
 use crate::core::ir::{Shader, SrcMod};
 use crate::core::isa::{Opcode, RegFile};
 use serde::Serialize;
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, BTreeSet};
 
 /// A budget: what a ps_3_0 part allows. In JSON it is a `limits` object,
 /// `{"name", "slots", "executed", "rep_count", "loop_nesting"}`, the shape
@@ -372,6 +374,15 @@ struct Ctx<'a> {
     /// Paths of each loop body (by its head), which decide how many
     /// iterations run before the body's instructions are counted.
     body_paths: BTreeMap<usize, Paths>,
+    /// Paths of each subroutine (by its label), computed once: they do not
+    /// depend on how often it is called.
+    sub_paths: BTreeMap<u32, Paths>,
+    /// How often each subroutine is entered, summed over its call sites;
+    /// its body is counted once with this total (see [`Ctx::count_subs`]).
+    sub_entries: BTreeMap<u32, Range>,
+    /// Above 0 while paths are computed without counting (loop bodies,
+    /// subroutines): calls then record no entries.
+    paths_only: u32,
 }
 
 impl Ctx<'_> {
@@ -470,11 +481,94 @@ impl Ctx<'_> {
         if let Some(p) = self.body_paths.get(&head) {
             return Ok(*p);
         }
-        let loops = self.loops.len();
-        let (p, _) = self.seq(body, Range::ZERO, in_sub)?;
-        self.loops.truncate(loops);
+        let p = self.paths_of(body, in_sub)?;
         self.body_paths.insert(head, p);
         Ok(p)
+    }
+
+    /// The paths of a subroutine, computed once per label.
+    fn sub_paths(&mut self, label: u32) -> Result<Paths, CostError> {
+        if let Some(p) = self.sub_paths.get(&label) {
+            return Ok(*p);
+        }
+        let sub = self.subs.get(&label).cloned().unwrap_or_default();
+        let p = self.paths_of(&sub, true)?;
+        self.sub_paths.insert(label, p);
+        Ok(p)
+    }
+
+    /// Paths of a sequence without counting anything: a pass with
+    /// multiplicity 0 whose loop entries are dropped again.
+    fn paths_of(&mut self, nodes: &[Node], in_sub: bool) -> Result<Paths, CostError> {
+        let loops = self.loops.len();
+        self.paths_only += 1;
+        let result = self.seq(nodes, Range::ZERO, in_sub);
+        self.paths_only -= 1;
+        self.loops.truncate(loops);
+        Ok(result?.0)
+    }
+
+    /// Counts every subroutine body once, with the entries its call sites
+    /// gave it, callers before callees (the call graph has no cycles).
+    /// Counting is linear in the multiplicity — every step adds, multiplies
+    /// by a count, or drops the lower end to 0 — so one pass with the sum
+    /// counts what a pass per call site would, in time linear in the
+    /// program instead of in the number of call paths.
+    fn count_subs(&mut self) -> Result<(), CostError> {
+        for label in self.callers_first() {
+            let Some(&entries) = self.sub_entries.get(&label) else {
+                continue;
+            };
+            let sub = self.subs.get(&label).cloned().unwrap_or_default();
+            self.seq(&sub, entries, true)?;
+        }
+        Ok(())
+    }
+
+    /// Subroutine labels in an order where every caller comes before its
+    /// callees (reverse post-order of the call graph).
+    fn callers_first(&self) -> Vec<u32> {
+        let callees = |label: u32| -> Vec<u32> {
+            let mut out = Vec::new();
+            let mut stack: Vec<&Node> = self.subs.get(&label).into_iter().flatten().collect();
+            while let Some(node) = stack.pop() {
+                match node {
+                    Node::Ins(i) => {
+                        let ins = &self.shader.instructions()[*i];
+                        if matches!(ins.op, Opcode::Call | Opcode::CallNz) {
+                            out.push(ins.src[0].reg.index);
+                        }
+                    }
+                    Node::If(n) => stack.extend(n.then.iter().chain(&n.els)),
+                    Node::Loop { body, .. } => stack.extend(body),
+                }
+            }
+            out
+        };
+        let mut done = BTreeSet::new();
+        let mut order = Vec::new();
+        for &root in self.subs.keys() {
+            if done.contains(&root) {
+                continue;
+            }
+            // Iterative depth-first search: (label, its callees, next index).
+            let mut stack = vec![(root, callees(root), 0usize)];
+            done.insert(root);
+            while let Some((label, next, at)) = stack.last_mut() {
+                if let Some(&c) = next.get(*at) {
+                    *at += 1;
+                    if done.insert(c) && self.subs.contains_key(&c) {
+                        let cs = callees(c);
+                        stack.push((c, cs, 0));
+                    }
+                } else {
+                    order.push(*label);
+                    stack.pop();
+                }
+            }
+        }
+        order.reverse();
+        order
     }
 
     fn count(&mut self, i: usize, mult: Range) {
@@ -536,7 +630,6 @@ impl Ctx<'_> {
         } else {
             self.condition(i)
         };
-        let sub = self.subs.get(&label).cloned().unwrap_or_default();
         let sub_mult = match taken {
             Some(true) => mult,
             Some(false) => Range::ZERO,
@@ -545,7 +638,11 @@ impl Ctx<'_> {
                 max: mult.max,
             },
         };
-        let (p, _) = self.seq(&sub, sub_mult, true)?;
+        let p = self.sub_paths(label)?;
+        if self.paths_only == 0 {
+            let entries = self.sub_entries.entry(label).or_insert(Range::ZERO);
+            *entries = entries.add(sub_mult);
+        }
         let body = p.fall.unwrap_or(Range::ZERO);
         let called = Paths::fall(s.add(body));
         Ok(match taken {
@@ -817,8 +914,14 @@ pub fn analyse(
         subs,
         file,
         body_paths: BTreeMap::new(),
+        sub_paths: BTreeMap::new(),
+        sub_entries: BTreeMap::new(),
+        paths_only: 0,
     };
     let (paths, _) = ctx.seq(&main, Range::exact(1), false)?;
+    ctx.count_subs()?;
+    // Subroutines are counted after main: list loops in source order.
+    ctx.loops.sort_by_key(|l| l.line);
     let executed = union_opt(paths.fall, paths.exit).unwrap_or(Range::ZERO);
     // Per-line totals.
     let mut lines: BTreeMap<usize, LineCost> = BTreeMap::new();

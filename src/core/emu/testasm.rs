@@ -266,6 +266,8 @@ pub fn program(text: &str) -> Program {
                     p.samplers.push(SamplerDecl {
                         index: reg(ops[0]).0.index,
                         ty,
+                        centroid: false,
+                        pp: false,
                         origin: Origin::default(),
                     });
                 } else {

@@ -31,6 +31,16 @@ pub enum Stmt {
         /// Where it is.
         span: Span,
     },
+    /// A comment block of a compiled shader, kept token for token: a
+    /// `//#comment` line and its `//#+` continuation lines, each token in
+    /// hexadecimal (the constant table `CTAB` is one). Validation ignores
+    /// it; the bytecode writer emits it where it stands.
+    Comment {
+        /// The block's tokens (its first names it: `CTAB`, …).
+        tokens: Vec<u32>,
+        /// Where the block is.
+        span: Span,
+    },
 }
 
 /// A REPEAT_BLOCK count: a literal or a name bound with `-D name=value`.

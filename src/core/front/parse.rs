@@ -1,7 +1,10 @@
 //! The nom parser: assembly text → [`Stmt`]s with byte spans.
 //!
 //! ps_3_0 assembly is line oriented: one statement per line, comments start
-//! with `//` or `;`. Each line is read by a small recursive-descent reader
+//! with `//` or `;`. One kind of comment line is read: `//#comment` (and its
+//! `//#+` continuation lines) holds the tokens of a comment block of a
+//! compiled shader, in hexadecimal, so that a listing keeps the constant
+//! table and other blocks byte for byte (other assemblers skip the lines). Each line is read by a small recursive-descent reader
 //! (`Cursor`) whose tokens are nom parsers; the reader turns a failed token
 //! into a diagnostic that points at the exact column and says what was
 //! expected. Parsing never stops at the first bad line: every line is read,
@@ -26,9 +29,30 @@ pub fn parse(text: &str) -> (Vec<Stmt>, Diagnostics) {
     let mut stmts = Vec::new();
     let mut diags = Diagnostics::default();
     let mut line_start = 0;
+    // Whether the previous line was a comment-block line that `//#+` continues.
+    let mut in_block = false;
     for line in text.split_inclusive('\n') {
-        let code = strip_comment(line.trim_end_matches(['\n', '\r']));
-        let lead = code.len() - code.trim_start().len();
+        let raw = line.trim_end_matches(['\n', '\r']);
+        let lead = raw.len() - raw.trim_start().len();
+        if let Some(block) = comment_block_line(raw.trim(), line_start + lead) {
+            match block {
+                Ok(BlockLine { more, tokens, span }) => {
+                    let extended = extend_comment_block(&mut stmts, more, in_block, tokens, span);
+                    in_block = extended.is_ok();
+                    if let Err(d) = extended {
+                        diags.push(d);
+                    }
+                }
+                Err(d) => {
+                    in_block = false;
+                    diags.push(d);
+                }
+            }
+            line_start += line.len();
+            continue;
+        }
+        in_block = false;
+        let code = strip_comment(raw);
         let code = code.trim();
         if let Some((at, c)) = code.char_indices().find(|&(_, c)| odd_char(c)) {
             let at = line_start + lead + at;
@@ -60,6 +84,110 @@ pub fn parse(text: &str) -> (Vec<Stmt>, Diagnostics) {
         line_start += line.len();
     }
     (stmts, diags)
+}
+
+/// The line that opens a kept comment block of a compiled shader, and the
+/// line that continues it.
+pub const COMMENT_BLOCK: &str = "//#comment";
+/// The continuation line of a kept comment block.
+pub const COMMENT_MORE: &str = "//#+";
+
+/// Most tokens one comment block holds: its length field has 15 bits.
+pub const MAX_COMMENT_TOKENS: usize = 0x7fff;
+
+/// One `//#comment` or `//#+` line.
+struct BlockLine {
+    /// A `//#+` line: it continues the block above.
+    more: bool,
+    tokens: Vec<u32>,
+    span: Span,
+}
+
+/// A `//#comment` or `//#+` line (trimmed, starting at `start`); `None`
+/// for any other line.
+fn comment_block_line(line: &str, start: usize) -> Option<Result<BlockLine, Diagnostic>> {
+    let (more, rest) = if let Some(rest) = line.strip_prefix(COMMENT_BLOCK) {
+        (false, rest)
+    } else {
+        (true, line.strip_prefix(COMMENT_MORE)?)
+    };
+    if rest.starts_with(|c: char| !c.is_whitespace()) {
+        return None;
+    }
+    let span = Span::new(start, start + line.len());
+    let mut tokens = Vec::new();
+    let mut offset = start + line.len() - rest.len();
+    for word in rest.split_inclusive(char::is_whitespace) {
+        let hex = word.trim_end();
+        let at = Span::new(offset, offset + hex.len());
+        offset += word.len();
+        if hex.is_empty() {
+            continue;
+        }
+        let valid = hex.len() <= 8 && hex.chars().all(|c| c.is_ascii_hexdigit());
+        match u32::from_str_radix(hex, 16) {
+            Ok(t) if valid => tokens.push(t),
+            _ => {
+                return Some(Err(Diagnostic::error(
+                    at,
+                    format!("`{hex}` is not a 32-bit token in hexadecimal"),
+                )
+                .with_label("expected 1 to 8 hexadecimal digits")
+                .with_help(format!(
+                    "a kept comment block is written `{COMMENT_BLOCK} 43544142 …`, continued by `{COMMENT_MORE} …` lines"
+                ))))
+            }
+        }
+    }
+    Some(Ok(BlockLine { more, tokens, span }))
+}
+
+/// Starts a comment block (`more` false), or adds a `//#+` line to the
+/// block the previous line belongs to (`open`). Errors for a `//#+` line
+/// with no block before it and for a block longer than a comment token can
+/// say.
+fn extend_comment_block(
+    stmts: &mut Vec<Stmt>,
+    more: bool,
+    open: bool,
+    tokens: Vec<u32>,
+    span: Span,
+) -> Result<(), Diagnostic> {
+    let len = match stmts.last_mut() {
+        Some(Stmt::Comment {
+            tokens: block,
+            span: block_span,
+        }) if more && open => {
+            block.extend(tokens);
+            *block_span = block_span.to(span);
+            block.len()
+        }
+        _ if more => {
+            return Err(Diagnostic::error(
+                span,
+                format!("`{COMMENT_MORE}` continues a comment block, but none is open here"),
+            )
+            .with_label("no block to continue")
+            .with_help(format!(
+                "start the block with a `{COMMENT_BLOCK}` line just above"
+            )))
+        }
+        _ => {
+            let len = tokens.len();
+            stmts.push(Stmt::Comment { tokens, span });
+            len
+        }
+    };
+    if len > MAX_COMMENT_TOKENS {
+        return Err(Diagnostic::error(
+            span,
+            format!(
+                "the comment block holds {len} tokens; a comment token can say at most {MAX_COMMENT_TOKENS}"
+            ),
+        )
+        .with_label("too long"));
+    }
+    Ok(())
 }
 
 /// Whether `c` cannot be part of ps_3_0 assembly outside a comment: the
@@ -159,14 +287,16 @@ fn repeat_keyword<'a>(
         .map(|_| ())
 }
 
-/// `ps_3_0`, `ps.3.0`, `vs_2_0`, `ps_2_x`...
+/// `ps_3_0`, `ps.3.0`, `vs_2_0`, `ps_2_x`... (other versions are read to be
+/// refused by name)
 fn version(i: &str) -> IResult<&str, (u32, u32)> {
     let sep = |i| alt((char('_'), char('.'))).parse(i);
     let (i, _) = alt((tag_no_case("ps"), tag_no_case("vs"))).parse(i)?;
     let (i, _) = sep(i)?;
     let (i, major) = digit1(i)?;
     let (i, _) = sep(i)?;
-    let (i, minor) = alt((digit1, tag_no_case("x"), tag_no_case("sw"))).parse(i)?;
+    // Any minor: digits, or `x`, `sw`, `a`, `b` (ps_2_x, vs_3_sw, ps_2_a).
+    let (i, minor) = take_while1(|c: char| c.is_ascii_alphanumeric()).parse(i)?;
     let minor = minor.parse().unwrap_or(1);
     Ok((i, (major.parse().unwrap_or(0), minor)))
 }

@@ -14,15 +14,12 @@ pub fn write_program(p: &Program) -> String {
             RegFile::Input => format!("dcl_{}{}", d.usage, d.usage_index),
             _ => "dcl".to_string(),
         };
-        let mods = format!(
-            "{}{}",
-            if d.centroid { "_centroid" } else { "" },
-            if d.pp { "_pp" } else { "" }
-        );
+        let mods = modifiers(d.centroid, d.pp);
         let _ = writeln!(out, "{head}{mods} {}{}", d.reg, d.mask);
     }
     for d in &p.samplers {
-        let _ = writeln!(out, "dcl_{} s{}", d.ty.suffix(), d.index);
+        let mods = modifiers(d.centroid, d.pp);
+        let _ = writeln!(out, "dcl_{}{mods} s{}", d.ty.suffix(), d.index);
     }
     for d in &p.float_defs {
         let v = d.value.map(|x| format!("{x:?}"));
@@ -52,6 +49,15 @@ pub fn write_program(p: &Program) -> String {
         }
     }
     out
+}
+
+/// `_centroid` and `_pp` of a declaration.
+fn modifiers(centroid: bool, pp: bool) -> String {
+    format!(
+        "{}{}",
+        if centroid { "_centroid" } else { "" },
+        if pp { "_pp" } else { "" }
+    )
 }
 
 /// Prints one instruction without comment or indentation.

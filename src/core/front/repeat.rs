@@ -290,7 +290,9 @@ fn stmt_span(stmt: &Stmt) -> Span {
     match stmt {
         Stmt::Instr(instr) => instr.span,
         Stmt::Version { span, .. } => *span,
-        Stmt::RepeatBegin { span, .. } | Stmt::RepeatEnd { span } => *span,
+        Stmt::RepeatBegin { span, .. } | Stmt::RepeatEnd { span } | Stmt::Comment { span, .. } => {
+            *span
+        }
     }
 }
 

@@ -24,7 +24,7 @@ use exr::meta::attribute::IntegerBounds;
 use exr::meta::header::Header;
 use exr::prelude::{
     f16, AnyChannel, AnyChannels, Compression, Encoding, FlatSamples, Image, Layer,
-    LayerAttributes, MetaData, ReadChannels, ReadLayers, WritableImage,
+    LayerAttributes, MetaData, WritableImage,
 };
 use std::io::{BufRead, Read, Seek};
 use std::path::Path;
@@ -136,46 +136,133 @@ pub(super) fn read(
     rewind(&mut reader)?;
     check_chunks(path, &mut reader)?;
 
+    let (width, height) = (header.layer_size.width(), header.layer_size.height());
+    let channels = header.channels.clone();
     rewind(&mut reader)?;
-    let image = exr::prelude::read()
-        .no_deep_data()
-        .largest_resolution_level()
-        .all_channels()
-        .first_valid_layer()
-        .all_attributes()
-        .from_buffered(reader)
-        .map_err(decode_error)?;
-    let layer = image.layer_data;
-    let (width, height) = (layer.size.width(), layer.size.height());
-    // The decoded layer is the one whose header was checked above; checking
-    // again costs nothing and keeps the allocation below bounded regardless.
-    limits.check(path, FORMAT, width as u64, height as u64)?;
-
-    let mut pixels = vec![[0.0, 0.0, 0.0, 1.0]; width * height];
-    for (name, slots) in map.sources {
-        let Some(channel) = layer.channel_data.list.iter().find(|c| c.name.eq(name)) else {
-            let problem = format!("channel {name} is in the header but not in the decoded layer");
-            return Err(ImageError::bad_header(path, FORMAT, "channels", problem));
-        };
-        if channel.sample_data.len() != pixels.len() {
-            return Err(ImageError::DataLength {
-                path: path.to_path_buf(),
-                what: "a decoded channel",
-                expected: pixels.len() as u64,
-                found: channel.sample_data.len() as u64,
-            });
-        }
-        for (pixel, value) in pixels.iter_mut().zip(channel.sample_data.values_as_f32()) {
-            for &slot in slots {
-                pixel[slot] = value;
-            }
-        }
-    }
+    let pixels = decode_pixels(path, reader, &map, &channels, (width, height))?;
     Ok(HdrImage {
         width: width as u32,
         height: height as u32,
         pixels,
     })
+}
+
+/// Decodes the first layer's full-resolution blocks straight into RGBA
+/// pixels (alpha 1 where the file has none), converting each line of
+/// samples in bulk. Blocks are decompressed on a pool as large as rayon's
+/// current one, so a command's thread bound holds for decoding too; one
+/// thread decodes in order on the calling thread. Only the pixels and the
+/// blocks in flight are held, never the whole file or a second copy.
+fn decode_pixels(
+    path: &Path,
+    reader: impl BufRead + Seek,
+    map: &ChannelMap,
+    channels: &exr::meta::attribute::ChannelList,
+    (width, height): (usize, usize),
+) -> Result<Vec<[f32; 4]>, ImageError> {
+    use exr::block::reader::{ChunksReader, ParallelBlockDecompressor};
+    let decode_error = |e| decode_error(path, e);
+    let chunks = exr::block::read(reader, false)
+        .map_err(decode_error)?
+        .filter_chunks(false, |_, tile, block| {
+            block.layer == 0 && tile.is_largest_resolution_level()
+        })
+        .map_err(decode_error)?;
+    // The RGBA slots each channel of the file fills (none: not read).
+    let slots: Vec<&[usize]> = channels
+        .list
+        .iter()
+        .map(|c| {
+            map.sources
+                .iter()
+                .find(|(name, _)| c.name.eq(name))
+                .map_or(&[][..], |(_, slots)| *slots)
+        })
+        .collect();
+    let mut pixels = vec![[0.0, 0.0, 0.0, 1.0]; width * height];
+    let mut lines = LineBuffers::default();
+    let mut insert = |block: exr::block::UncompressedBlock| -> Result<(), ImageError> {
+        for line in block.lines(channels) {
+            let at = line.location;
+            let channel_slots = slots.get(at.channel).copied().unwrap_or(&[]);
+            if channel_slots.is_empty() {
+                continue;
+            }
+            let (x, y, n) = (at.position.x(), at.position.y(), at.sample_count);
+            if y >= height || x + n > width {
+                let problem = format!("a block's line at ({x}, {y}) of {n} samples lies outside the {width}×{height} data window");
+                return Err(ImageError::bad_header(path, FORMAT, "blocks", problem));
+            }
+            let values = lines
+                .read(line, channels.list[at.channel].sample_type)
+                .map_err(decode_error)?;
+            for (pixel, &v) in pixels[y * width + x..][..n].iter_mut().zip(values) {
+                for &slot in channel_slots {
+                    pixel[slot] = v;
+                }
+            }
+        }
+        Ok(())
+    };
+    let threads = rayon::current_num_threads();
+    let pool = || {
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .thread_name(|i| format!("ps30 EXR decoder {i}"))
+            .build()
+    };
+    let parallel = match threads {
+        1 => Err(chunks),
+        _ => ParallelBlockDecompressor::new_with_thread_pool(chunks, false, pool),
+    };
+    match parallel {
+        Ok(blocks) => blocks
+            .into_iter()
+            .try_for_each(|b| insert(b.map_err(decode_error)?)),
+        Err(chunks) => chunks
+            .sequential_decompressor(false)
+            .try_for_each(|b| insert(b.map_err(decode_error)?)),
+    }?;
+    Ok(pixels)
+}
+
+/// Reused buffers for one line of samples, converted to f32.
+#[derive(Default)]
+struct LineBuffers {
+    half: Vec<f16>,
+    float: Vec<f32>,
+    uint: Vec<u32>,
+}
+
+impl LineBuffers {
+    /// The line's samples as f32: half through `half`'s slice conversion,
+    /// u32 as `exr` converts them (`as f32`).
+    fn read(
+        &mut self,
+        line: exr::block::lines::LineRef<'_>,
+        sample_type: exr::meta::attribute::SampleType,
+    ) -> exr::error::Result<&[f32]> {
+        use exr::meta::attribute::SampleType;
+        use half::slice::HalfFloatSliceExt;
+        let n = line.location.sample_count;
+        self.float.resize(n, 0.0);
+        match sample_type {
+            SampleType::F16 => {
+                self.half.resize(n, f16::ZERO);
+                line.read_samples_into_slice(&mut self.half)?;
+                self.half.convert_to_f32_slice(&mut self.float);
+            }
+            SampleType::F32 => line.read_samples_into_slice(&mut self.float)?,
+            SampleType::U32 => {
+                self.uint.resize(n, 0);
+                line.read_samples_into_slice(&mut self.uint)?;
+                for (f, &u) in self.float.iter_mut().zip(&self.uint) {
+                    *f = u as f32;
+                }
+            }
+        }
+        Ok(&self.float)
+    }
 }
 
 fn decode_error(path: &Path, e: exr::error::Error) -> ImageError {

@@ -87,15 +87,29 @@ fn unknown_mnemonic(ast: &InstrAst) -> Diagnostic {
 }
 
 fn edit_distance(a: &str, b: &str) -> usize {
-    let b: Vec<char> = b.chars().collect();
-    let mut prev: Vec<usize> = (0..=b.len()).collect();
+    // Two rows on the stack: the names compared here are at most a few
+    // characters longer than the longest mnemonic (see the caller), so an
+    // unknown mnemonic costs no allocation however many there are.
+    const MAX: usize = 32;
+    let mut chars = ['\0'; MAX];
+    let mut len = 0;
+    for (slot, c) in chars.iter_mut().zip(b.chars()) {
+        *slot = c;
+        len += 1;
+    }
+    let b = &chars[..len];
+    let mut prev = [0usize; MAX + 1];
+    let mut cur = [0usize; MAX + 1];
+    for (j, p) in prev.iter_mut().enumerate().take(b.len() + 1) {
+        *p = j;
+    }
     for (i, ca) in a.chars().enumerate() {
-        let mut cur = vec![i + 1];
+        cur[0] = i + 1;
         for (j, cb) in b.iter().enumerate() {
             let sub = prev[j] + usize::from(ca != *cb);
-            cur.push(sub.min(prev[j + 1] + 1).min(cur[j] + 1));
+            cur[j + 1] = sub.min(prev[j + 1] + 1).min(cur[j] + 1);
         }
-        prev = cur;
+        std::mem::swap(&mut prev, &mut cur);
     }
     prev[b.len()]
 }
@@ -198,7 +212,7 @@ fn opcode(ast: &InstrAst, compare: Option<Compare>) -> R<Opcode> {
 }
 
 /// `_sat` only where the table allows it, `_centroid` only on texture
-/// instructions.
+/// instructions, `_pp` only where there is a destination.
 fn check_modifiers(ast: &InstrAst, info: &OpInfo, m: &Suffixes) -> R<()> {
     let suffix_span = |name: &str| {
         ast.suffixes
@@ -220,6 +234,24 @@ fn check_modifiers(ast: &InstrAst, info: &OpInfo, m: &Suffixes) -> R<()> {
             "`_centroid` is only allowed on texture instructions and input declarations",
         )
         .with_label("not allowed here"));
+    }
+    // Instruction modifiers act on the result written to the destination
+    // (Microsoft's "Modifiers for ps_2_0 and above"), and the token that
+    // carries them is the destination's: without one they mean nothing and
+    // cannot be encoded.
+    let has_dst = matches!(
+        info.operands.first(),
+        Some(Operand::Dst | Operand::PredDst | Operand::KillSrc)
+    );
+    if m.pp && !has_dst {
+        return Err(Diagnostic::error(
+            suffix_span("pp"),
+            format!(
+                "`_pp` is not allowed on `{}`: it has no destination",
+                info.mnemonic
+            ),
+        )
+        .with_label("nothing to write at partial precision"));
     }
     Ok(())
 }
@@ -296,7 +328,11 @@ fn operands(ast: &InstrAst, info: &OpInfo) -> R<(Option<Dst>, Vec<Src>)> {
             Operand::PredDst => dst = Some(predicate_destination(reg)?),
             Operand::Src | Operand::ScalarSrc => {
                 let s = float_source(reg)?;
-                if *kind == Operand::ScalarSrc && !s.swizzle.is_replicate() {
+                // vFace is a scalar register (dimension 1 in Microsoft's
+                // ps_3_0 register table, and the operand of if_comp and
+                // break_comp its page names): it needs no swizzle to be one.
+                let scalar = s.swizzle.is_replicate() || s.reg.file == RegFile::Face;
+                if *kind == Operand::ScalarSrc && !scalar {
                     return Err(Diagnostic::error(
                         reg.span,
                         format!(
@@ -913,7 +949,7 @@ fn lower_dcl(ast: &InstrAst, origin: &Origin) -> R<Lowered> {
     no_modifiers(r, "a declared register")?;
     let m = dcl_suffixes(ast)?;
     match (reg.file, m.kind) {
-        (RegFile::Sampler, Some((k, span))) => sampler_decl(r, reg, k, span, origin),
+        (RegFile::Sampler, Some((k, span))) => sampler_decl(r, reg, (k, span), &m, origin),
         (RegFile::Sampler, None) => Err(Diagnostic::error(
             ast.base_span,
             "a sampler declaration needs a type",
@@ -1000,8 +1036,15 @@ fn dcl_suffixes(ast: &InstrAst) -> R<DclSuffixes<'_>> {
     Ok(m)
 }
 
-/// `dcl_2d` / `dcl_cube` / `dcl_volume s#` (type `k` at `span`).
-fn sampler_decl(r: &RegAst, reg: Reg, k: &str, span: Span, origin: &Origin) -> R<Lowered> {
+/// `dcl_2d` / `dcl_cube` / `dcl_volume s#` (type `k` at `span`), with its
+/// `_centroid` / `_pp`.
+fn sampler_decl(
+    r: &RegAst,
+    reg: Reg,
+    (k, span): (&str, Span),
+    m: &DclSuffixes,
+    origin: &Origin,
+) -> R<Lowered> {
     let ty = match k {
         "2d" => SamplerType::Tex2d,
         "cube" => SamplerType::Cube,
@@ -1029,6 +1072,8 @@ fn sampler_decl(r: &RegAst, reg: Reg, k: &str, span: Span, origin: &Origin) -> R
     Ok(Lowered::Sampler(SamplerDecl {
         index: reg.index,
         ty,
+        centroid: m.centroid,
+        pp: m.pp,
         origin: origin.clone(),
     }))
 }
@@ -1228,5 +1273,22 @@ fn lower_def(ast: &InstrAst, origin: &Origin) -> R<Lowered> {
                 })
             })
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::edit_distance;
+
+    #[test]
+    fn edit_distance_counts_insertions_deletions_and_substitutions() {
+        assert_eq!(edit_distance("kitten", "sitting"), 3);
+        assert_eq!(edit_distance("tex1d", "texld"), 1);
+        assert_eq!(edit_distance("", "texldl"), 6);
+        assert_eq!(edit_distance("texldl", ""), 6);
+        assert_eq!(edit_distance("мov", "mov"), 1);
+        assert_eq!(edit_distance("mov", "mov"), 0);
+        // A long name against a short mnemonic: every extra letter counts.
+        assert_eq!(edit_distance(&"x".repeat(40), "mov"), 40);
     }
 }

@@ -5,18 +5,21 @@
 //! copies reuse the result with their own [`Origin`](crate::core::ir::Origin). The program-level pass
 //! then checks what needs context: the version line, declarations before
 //! instructions and before use, block balance and nesting limits, `aL` only
-//! inside `loop`, read ports, subroutine structure, outputs outside dynamic
-//! flow control; then, as warnings, gradients under dynamic flow control
-//! ([`gradient`]). Rules are the ps_3_0 rules of Microsoft's documentation;
-//! where sources disagree, the choice is written next to the check.
+//! inside `loop` (and every input `v[aL + n]` reads declared), read ports,
+//! subroutine structure, outputs outside dynamic flow control; reads of
+//! temporaries no earlier code writes ([`init`]); then, as warnings,
+//! gradients under dynamic flow control ([`gradient`]). Rules are the
+//! ps_3_0 rules of Microsoft's documentation; where sources disagree, the
+//! choice is written next to the check.
 
 pub mod gradient;
+pub mod init;
 pub mod lower;
 
 use crate::core::diag::{Diagnostic, Diagnostics, SourceFile};
 use crate::core::front::ast::Stmt;
 use crate::core::front::repeat::Expanded;
-use crate::core::ir::{Info, Instruction, Program, Shader, Span, SrcMod};
+use crate::core::ir::{Info, Instruction, Program, Shader, Span, Src, SrcMod};
 use crate::core::isa::{self, Class, Opcode, RegFile};
 use lower::Lowered;
 use std::collections::{BTreeMap, BTreeSet, HashMap};
@@ -32,6 +35,7 @@ pub fn validate(
     let program = collect(stmts, body, file, &mut diags);
     check_declarations(&program, &mut diags, file);
     let info = check_program(&program, &mut diags, file);
+    init::check(&program, &info, &mut diags, file);
     if diags.has_errors() {
         return Err(diags);
     }
@@ -113,7 +117,7 @@ fn collect(
                 );
                 None
             }
-            Stmt::RepeatBegin { .. } | Stmt::RepeatEnd { .. } => None,
+            Stmt::RepeatBegin { .. } | Stmt::RepeatEnd { .. } | Stmt::Comment { .. } => None,
         };
         let Some(lowered) = lowered else { continue };
         let is_decl = !matches!(lowered, Lowered::Instr(_));
@@ -428,15 +432,60 @@ impl<'p, 'd> Checker<'p, 'd> {
 
     /// aL and relative addressing only inside loop.
     fn check_relative(&mut self, ins: &Instruction) {
-        let in_loop = self.stack.iter().any(|o| o.block == Block::Loop);
-        if !in_loop && ins.src.iter().any(|s| s.relative) {
-            self.err(
-                ins,
-                Diagnostic::error(ins.origin.span, "v[aL + n] used outside a loop")
-                    .with_label("aL is only defined inside loop … endloop")
-                    .with_help("wrap it in `loop aL, i#` … `endloop` (rep does not set aL)"),
-            );
+        let Some(innermost) = self.stack.iter().rev().find(|o| o.block == Block::Loop) else {
+            if ins.src.iter().any(|s| s.relative) {
+                self.err(
+                    ins,
+                    Diagnostic::error(ins.origin.span, "v[aL + n] used outside a loop")
+                        .with_label("aL is only defined inside loop … endloop")
+                        .with_help("wrap it in `loop aL, i#` … `endloop` (rep does not set aL)"),
+                );
+            }
+            return;
+        };
+        let loop_at = innermost.index;
+        for s in ins.src.iter().filter(|s| s.relative) {
+            if let Some(d) = self.undeclared_relative(s, loop_at, ins.origin.span) {
+                self.err(ins, d);
+                break;
+            }
         }
+    }
+
+    /// An input read as `v[aL + n]` needs every register it reads declared
+    /// (Microsoft's ps_3_0 register table: v# requires a declaration). With
+    /// the loop's `i#` defined by `defi`, those are the registers of every
+    /// value aL takes; otherwise the one named, `v{n}` (what aL = 0 reads).
+    /// A value that lands outside v0 … v9 is not refused: Direct3D leaves
+    /// such a read undefined rather than invalid, and the emulator reads 0.
+    fn undeclared_relative(&self, s: &Src, loop_at: usize, span: Span) -> Option<Diagnostic> {
+        let values = self.p.instructions[loop_at]
+            .src
+            .iter()
+            .find(|c| c.reg.file == RegFile::ConstInt)
+            .and_then(|c| self.p.int_def(c.reg.index))
+            .filter(|[count, ..]| (0..=isa::MAX_REP_COUNT).contains(count))
+            .map(|[count, start, step, _]| {
+                (0..count as i64)
+                    .map(|k| start as i64 + k * step as i64)
+                    .collect::<Vec<_>>()
+            })
+            .unwrap_or_else(|| vec![0]);
+        let count = RegFile::Input.info().count as i64;
+        values.into_iter().find_map(|al| {
+            let r = s.reg.index as i64 + al;
+            let what = format!("v[aL + {}] with aL = {al}", s.reg.index);
+            let undeclared = (0..count).contains(&r)
+                && !self.declared_inputs.contains(&(RegFile::Input, r as u32));
+            undeclared.then(|| {
+                Diagnostic::error(span, format!("input v{r} is used but never declared"))
+                    .with_label("undeclared input")
+                    .with_note(format!("read as {what}"))
+                    .with_help(format!(
+                        "declare every input the loop reads, e.g. `dcl_texcoord{r} v{r}`"
+                    ))
+            })
+        })
     }
 
     /// Outputs are not written under dynamic flow control or predication.
@@ -750,6 +799,49 @@ fn check_int_operand(p: &Program, ins: &Instruction, diags: &mut Diagnostics, fi
     }
 }
 
+/// The depth of the deepest call chain from main, or the first cycle met
+/// (the path from main to the call that closes it). Depth first, without
+/// recursion, remembering each subroutine's depth once it is known: the
+/// work is linear in the call graph however many call paths run through it.
+fn call_depth(graph: &BTreeMap<Option<u32>, BTreeSet<u32>>) -> Result<u32, Vec<u32>> {
+    let none = BTreeSet::new();
+    let callees = |n: Option<u32>| graph.get(&n).unwrap_or(&none).iter().copied();
+    let mut known: BTreeMap<u32, u32> = BTreeMap::new();
+    let mut path: Vec<u32> = Vec::new();
+    let mut on_path: BTreeSet<u32> = BTreeSet::new();
+    // One frame per subroutine on the path: its callees still to visit and
+    // the depth of its deepest chain so far.
+    let mut stack = vec![(callees(None), 0u32)];
+    loop {
+        let top = stack.len() - 1;
+        match stack[top].0.next() {
+            Some(c) if on_path.contains(&c) => {
+                let mut cycle = path.clone();
+                cycle.push(c);
+                return Err(cycle);
+            }
+            Some(c) => match known.get(&c) {
+                Some(&d) => stack[top].1 = stack[top].1.max(d + 1),
+                None => {
+                    path.push(c);
+                    on_path.insert(c);
+                    stack.push((callees(Some(c)), 0));
+                }
+            },
+            None => {
+                let (_, d) = stack.pop().expect("a frame is on the stack");
+                let Some(done) = path.pop() else {
+                    return Ok(d);
+                };
+                on_path.remove(&done);
+                known.insert(done, d);
+                let parent = stack.last_mut().expect("main's frame is below");
+                parent.1 = parent.1.max(d + 1);
+            }
+        }
+    }
+}
+
 /// Calls name defined labels; the call graph has no cycles and no chain
 /// deeper than the call-nesting limit.
 fn check_calls(
@@ -775,33 +867,11 @@ fn check_calls(
         }
         graph.entry(owner[idx]).or_default().insert(label);
     }
-    // Depth of the deepest call chain from main, detecting cycles.
-    fn depth(
-        node: Option<u32>,
-        graph: &BTreeMap<Option<u32>, BTreeSet<u32>>,
-        path: &mut Vec<u32>,
-    ) -> Result<u32, Vec<u32>> {
-        let mut best = 0;
-        if let Some(callees) = graph.get(&node) {
-            for &c in callees {
-                if path.contains(&c) {
-                    let mut cycle = path.clone();
-                    cycle.push(c);
-                    return Err(cycle);
-                }
-                path.push(c);
-                let d = depth(Some(c), graph, path)?;
-                path.pop();
-                best = best.max(d + 1);
-            }
-        }
-        Ok(best)
-    }
     let span = calls
         .first()
         .map(|&(i, _)| p.instructions[i].origin.span)
         .unwrap_or_default();
-    match depth(None, &graph, &mut Vec::new()) {
+    match call_depth(&graph) {
         Err(cycle) => {
             let names: Vec<String> = cycle.iter().map(|l| format!("l{l}")).collect();
             // Point at the call that closes the cycle.

@@ -31,31 +31,41 @@
 //! second-order terms is applied explicitly where the sums are formed.
 
 use crate::core::cost::{self, Environment, Profile, Range};
+use crate::core::diag::SourceFile;
 use crate::core::emu::{self, Address, Constants, Draw, Filter, LinearInput, SamplerState};
 use crate::core::image::{HdrImage, RenderTarget, TargetFormat, Texture};
 use crate::core::isa::Opcode;
 use crate::core::load::{self, Options};
 pub mod reference;
 
-use reference::Policy;
+use reference::{BlockFold, Policy, Tiling};
 use serde::Serialize;
 
 /// f32 unit roundoff.
 const U32: f64 = f32::EPSILON as f64 / 2.0;
 
-/// A shader source to run.
+/// A shader source to run: assembly text, or a compiled shader as its
+/// listing ([`load::source_file`]).
 #[derive(Clone, Debug)]
 pub struct ShaderSource {
-    pub name: String,
-    pub text: String,
+    pub file: SourceFile,
 }
 
 impl ShaderSource {
+    /// Assembly text.
     pub fn new(name: impl Into<String>, text: impl Into<String>) -> ShaderSource {
         ShaderSource {
-            name: name.into(),
-            text: text.into(),
+            file: SourceFile::new(name, text),
         }
+    }
+
+    /// Any source, text or compiled.
+    pub fn from_file(file: SourceFile) -> ShaderSource {
+        ShaderSource { file }
+    }
+
+    pub fn name(&self) -> &str {
+        &self.file.name
     }
 }
 
@@ -132,7 +142,7 @@ fn load(
     for (k, v) in defines {
         opts.defines.insert(k.to_string(), *v);
     }
-    let loaded = load::load_str(&src.name, &src.text, &opts).map_err(PipelineError::Source)?;
+    let loaded = load::load(src.file.clone(), &opts).map_err(PipelineError::Source)?;
     refuse_unset(&loaded, given).map_err(PipelineError::Mismatch)?;
     Ok(loaded)
 }
@@ -339,52 +349,101 @@ pub fn pass1_bounds_last_width(
     delta: f64,
     policy: Policy,
 ) -> (Vec<Vec<f64>>, u64) {
-    let (bw, bh) = block;
-    let nx = image.width.div_ceil(bw);
-    let ny = image.height.div_ceil(bh);
-    let mut bounds = vec![vec![0f64; nx as usize]; ny as usize];
-    let mut ill = 0u64;
-    let padded_term = delta.log2();
-    for by in 0..ny {
-        for bx in 0..nx {
-            let mut partial = 0f64;
-            let mut accumulation = 0f64;
-            let mut terms = 0f64;
-            let read = if bx + 1 == nx { last_width } else { bw };
-            for y in by * bh..(by + 1) * bh {
-                for x in bx * bw..bx * bw + read {
-                    let (t, e) = if x < image.width && y < image.height {
-                        let p = image.pixel(x, y);
-                        let l = crate::core::image::luminance(p);
-                        let Some(t) = policy.term(l, delta) else {
-                            continue;
-                        };
-                        let a = 0.27 * (p[0] as f64).abs()
-                            + 0.67 * (p[1] as f64).abs()
-                            + 0.06 * (p[2] as f64).abs()
-                            + delta;
-                        let x_exact = (delta + l).abs();
-                        let abs_err = 8.0 * U32 * a;
-                        if t.is_finite() && abs_err >= x_exact / 2.0 {
-                            ill += 1;
-                        }
-                        (t, abs_err / (x_exact * std::f64::consts::LN_2) + ulp32(t))
-                    } else {
-                        (
-                            padded_term,
-                            8.0 * U32 / std::f64::consts::LN_2 + ulp32(padded_term),
-                        )
-                    };
-                    partial += t;
-                    accumulation += partial.abs();
-                    terms += e;
-                }
-            }
-            let n = (read as f64) * (bh as f64);
-            bounds[by as usize][bx as usize] = (terms + U32 * accumulation) * (1.0 + n * U32);
+    let tiling = Tiling {
+        block_width: block.0,
+        block_height: block.1,
+        last_width,
+    };
+    match reference::fold_blocks(image, delta, policy, tiling, |_, _| BoundFold::new(delta)) {
+        Ok((_, folds)) => bounds_of(tiling, folds),
+        Err(_) => (Vec::new(), 0),
+    }
+}
+
+/// The bounds and the ill-conditioned count of every block's fold.
+fn bounds_of(tiling: Tiling, folds: Vec<Vec<BoundFold>>) -> (Vec<Vec<f64>>, u64) {
+    let nx = folds.first().map_or(0, |r| r.len() as u32);
+    let mut ill = 0;
+    let bounds = folds
+        .into_iter()
+        .map(|row| {
+            row.into_iter()
+                .enumerate()
+                .map(|(bx, f)| {
+                    ill += f.ill;
+                    let n = tiling.read(bx as u32, nx) as f64 * tiling.block_height as f64;
+                    (f.terms + U32 * f.accumulation) * (1.0 + n * U32)
+                })
+                .collect()
+        })
+        .collect();
+    (bounds, ill)
+}
+
+/// One block's pass-1 bound, folded over its texels in the shader's order:
+/// the running f32 sum's partial sums, and each term's own error.
+struct BoundFold {
+    delta: f64,
+    partial: f64,
+    accumulation: f64,
+    terms: f64,
+    ill: u64,
+}
+
+impl BoundFold {
+    fn new(delta: f64) -> BoundFold {
+        BoundFold {
+            delta,
+            partial: 0.0,
+            accumulation: 0.0,
+            terms: 0.0,
+            ill: 0,
         }
     }
-    (bounds, ill)
+
+    fn add(&mut self, t: f64, e: f64) {
+        self.partial += t;
+        self.accumulation += self.partial.abs();
+        self.terms += e;
+    }
+
+    /// A padding texel: black, the term log2(delta).
+    fn add_padding(&mut self, count: u32) {
+        let padded_term = self.delta.log2();
+        let e = 8.0 * U32 / std::f64::consts::LN_2 + ulp32(padded_term);
+        for _ in 0..count {
+            self.add(padded_term, e);
+        }
+    }
+}
+
+impl BlockFold for BoundFold {
+    fn row(&mut self, pixels: &[[f32; 4]], terms: &[Option<f64>], padding: u32) {
+        let delta = self.delta;
+        for (&p, &term) in pixels.iter().zip(terms) {
+            let Some(t) = term else {
+                continue;
+            };
+            let l = crate::core::image::luminance(p);
+            let a = 0.27 * (p[0] as f64).abs()
+                + 0.67 * (p[1] as f64).abs()
+                + 0.06 * (p[2] as f64).abs()
+                + delta;
+            let x_exact = (delta + l).abs();
+            let abs_err = 8.0 * U32 * a;
+            if t.is_finite() && abs_err >= x_exact / 2.0 {
+                self.ill += 1;
+            }
+            self.add(t, abs_err / (x_exact * std::f64::consts::LN_2) + ulp32(t));
+        }
+        self.add_padding(padding);
+    }
+
+    fn rows_below(&mut self, rows: u32, read: u32) {
+        for _ in 0..rows {
+            self.add_padding(read);
+        }
+    }
 }
 
 /// One unit in the last place of an f32 near `x`.
@@ -544,7 +603,7 @@ fn load_pass1(
     if reads != bw as u64 * bh as u64 {
         return Err(PipelineError::Mismatch(format!(
             "{} reads {reads} texels per pixel with i1 = {bw}, i2 = {bh}, but a {bw}×{bh} block has {}; an unrolled shader fixes the block width to its REPEAT_BLOCK count",
-            src.name,
+            src.name(),
             bw as u64 * bh as u64
         )));
     }
@@ -622,13 +681,12 @@ fn run_impl(
     let g = Geometry::new(image, s.block, last.is_some())?;
     let delta = s.delta as f64;
     let (t1, pass1_cost, pass1_last) = run_pass1(image, &g, pass1, last, s)?;
-    let (blocks, ill) = check_blocks(image, &g, &t1, s)?;
+    let (blocks, ill, true_ref) = check_blocks(image, &g, &t1, s)?;
     let (pass2_cost, log_average, pass2_check, rel2) = run_pass2(&g, &t1, pass2, s)?;
 
     // End to end: the emulated L̄w against the true L̄w of the image (every
     // pixel once, no padding). If the shaders are right, the difference
     // comes only from the block bounds and pass 2's own rounding.
-    let true_ref = reference::log_average(image, delta, s.policy);
     let block_bound: f64 = blocks.iter().map(|b| b.tolerance).sum();
     let relative_tolerance = std::f64::consts::LN_2 * block_bound / g.n_pixels + rel2;
     let end_to_end = Comparison::new(
@@ -638,7 +696,6 @@ fn run_impl(
     );
     let relative_error = end_to_end.difference / true_ref.log_average.abs();
     let padding_factor = (g.padded as f64 * delta.log2() / g.n_pixels).exp2();
-    let stats = image.stats();
     Ok(LuminanceRun {
         width: g.w,
         height: g.h,
@@ -659,8 +716,8 @@ fn run_impl(
         agree: end_to_end.agree,
         padding_factor,
         ill_conditioned: ill,
-        nonfinite_pixels: stats.non_finite,
-        negative_pixels: stats.negative_luminance,
+        nonfinite_pixels: true_ref.nonfinite_pixels,
+        negative_pixels: true_ref.negative_pixels,
     })
 }
 
@@ -742,17 +799,26 @@ fn run_last_column(
 }
 
 /// Every block of pass 1's target against the f64 reference and its bound;
-/// also returns the number of ill-conditioned terms.
+/// also returns the number of ill-conditioned terms and the whole image's
+/// reference (one scan computes all three).
 fn check_blocks(
     image: &HdrImage,
     g: &Geometry,
     t1: &RenderTarget,
     s: &Settings,
-) -> Result<(Vec<BlockCheck>, u64), PipelineError> {
+) -> Result<(Vec<BlockCheck>, u64, reference::Reference), PipelineError> {
     let delta = s.delta as f64;
-    let refs = reference::block_sums_last_width(image, delta, s.policy, g.bw, g.bh, g.last_w)
+    let tiling = Tiling {
+        block_width: g.bw,
+        block_height: g.bh,
+        last_width: g.last_w,
+    };
+    let (whole, refs, folds) =
+        reference::fold_blocks_with_sums(image, delta, s.policy, tiling, |_, _| {
+            BoundFold::new(delta)
+        })
         .map_err(|e| PipelineError::Reference(e.to_string()))?;
-    let (bounds, ill) = pass1_bounds_last_width(image, s.block, g.last_w, delta, s.policy);
+    let (bounds, ill) = bounds_of(tiling, folds);
     let mut blocks = Vec::with_capacity((g.nx * g.ny) as usize);
     for by in 0..g.ny {
         for bx in 0..g.nx {
@@ -773,7 +839,7 @@ fn check_blocks(
             });
         }
     }
-    Ok((blocks, ill))
+    Ok((blocks, ill, whole))
 }
 
 /// Pass 2 over pass 1's target: its cost, the emulated L̄w, and its check

@@ -142,6 +142,70 @@ fn summation_bound(terms: u64, magnitude_sum: f64) -> f64 {
 /// The log-average luminance of `image` with the given `delta` and policy.
 /// An image without samples (empty, or every pixel skipped) gives NaN.
 pub fn log_average(image: &HdrImage, delta: f64, policy: Policy) -> Reference {
+    scan(image, delta, policy, |_| {})
+}
+
+/// Rows of the image with each pixel's term, as [`scan`] hands them out.
+pub struct Band<'a> {
+    /// The image row of the band's first row.
+    pub y0: u32,
+    pub width: u32,
+    /// The band's pixels, row-major.
+    pub pixels: &'a [[f32; 4]],
+    /// Each pixel's term (`None`: the policy skips it), in the same layout.
+    pub terms: &'a [Option<f64>],
+}
+
+/// Pixels per band of [`scan`]: enough work to share between threads, and a
+/// term buffer (16 bytes a pixel) that stays small beside the image.
+const BAND_PIXELS: usize = 1 << 16;
+
+/// Extremes and counts over one row; merged in row order.
+#[derive(Clone, Copy)]
+struct RowStats {
+    min: f64,
+    max: f64,
+    negative: u64,
+    nonfinite: u64,
+}
+
+impl RowStats {
+    const EMPTY: RowStats = RowStats {
+        min: f64::INFINITY,
+        max: f64::NEG_INFINITY,
+        negative: 0,
+        nonfinite: 0,
+    };
+
+    /// Fills `terms` for `pixels` and returns the row's statistics.
+    fn row(pixels: &[[f32; 4]], terms: &mut [Option<f64>], delta: f64, policy: Policy) -> Self {
+        let mut s = RowStats::EMPTY;
+        for (&pixel, term) in pixels.iter().zip(terms) {
+            let l = luminance(pixel);
+            if l.is_finite() {
+                s.min = s.min.min(l);
+                s.max = s.max.max(l);
+                s.negative += u64::from(l < 0.0);
+            } else {
+                s.nonfinite += 1;
+            }
+            *term = policy.term(l, delta);
+        }
+        s
+    }
+}
+
+/// Every pixel's term computed once, band by band on rayon's current pool;
+/// `visit` sees each band in order (block sums and bounds fold over it), and
+/// the result is the whole-image [`Reference`], summed left to right in
+/// row-major order whatever the thread count.
+pub fn scan(
+    image: &HdrImage,
+    delta: f64,
+    policy: Policy,
+    mut visit: impl FnMut(&Band<'_>),
+) -> Reference {
+    use rayon::prelude::*;
     let mut result = Reference {
         width: image.width,
         height: image.height,
@@ -156,25 +220,193 @@ pub fn log_average(image: &HdrImage, delta: f64, policy: Policy) -> Reference {
         min_luminance: f64::INFINITY,
         max_luminance: f64::NEG_INFINITY,
     };
-    for &pixel in &image.pixels {
-        let l = luminance(pixel);
-        if l.is_finite() {
-            result.min_luminance = result.min_luminance.min(l);
-            result.max_luminance = result.max_luminance.max(l);
-            if l < 0.0 {
-                result.negative_pixels += 1;
-            }
-        } else {
-            result.nonfinite_pixels += 1;
+    // Rows beyond `height`, and a last partial row (an inconsistent image),
+    // are ignored.
+    let width = image.width as usize;
+    let rows = (image.pixels.len() / width.max(1)).min(image.height as usize);
+    let pixels = &image.pixels[..width * rows];
+    let band_rows = (BAND_PIXELS / width.max(1)).max(1);
+    let mut terms = vec![None; (band_rows * width).min(pixels.len())];
+    for (band, band_pixels) in pixels.chunks(band_rows * width.max(1)).enumerate() {
+        let terms = &mut terms[..band_pixels.len()];
+        let rows: Vec<RowStats> = band_pixels
+            .par_chunks(width)
+            .zip(terms.par_chunks_mut(width))
+            .map(|(p, t)| RowStats::row(p, t, delta, policy))
+            .collect();
+        for s in rows {
+            result.min_luminance = result.min_luminance.min(s.min);
+            result.max_luminance = result.max_luminance.max(s.max);
+            result.negative_pixels += s.negative;
+            result.nonfinite_pixels += s.nonfinite;
         }
-        if let Some(term) = policy.term(l, delta) {
+        for &term in terms.iter().flatten() {
             result.samples += 1;
             result.log2_sum += term;
             result.magnitude_sum += term.abs();
         }
+        visit(&Band {
+            y0: (band * band_rows) as u32,
+            width: image.width,
+            pixels: band_pixels,
+            terms,
+        });
     }
     result.log_average = (result.log2_sum / result.samples as f64).exp2();
     result
+}
+
+/// What is folded over one block's texels, in the shader's order: rows top
+/// to bottom, each left to right, padding texels (outside the image, black)
+/// after the row's pixels and in the rows below the image.
+pub trait BlockFold: Send {
+    /// One row of the block inside the image: its pixels and their terms,
+    /// then `padding` texels beyond the image's right edge.
+    fn row(&mut self, pixels: &[[f32; 4]], terms: &[Option<f64>], padding: u32);
+    /// `rows` rows of the block below the image, `read` texels each.
+    fn rows_below(&mut self, rows: u32, read: u32);
+}
+
+/// Two folds over the same texels.
+impl<A: BlockFold, B: BlockFold> BlockFold for (A, B) {
+    fn row(&mut self, pixels: &[[f32; 4]], terms: &[Option<f64>], padding: u32) {
+        self.0.row(pixels, terms, padding);
+        self.1.row(pixels, terms, padding);
+    }
+    fn rows_below(&mut self, rows: u32, read: u32) {
+        self.0.rows_below(rows, read);
+        self.1.rows_below(rows, read);
+    }
+}
+
+/// How blocks tile the image: `block_width × block_height` from the top-left
+/// corner, the last column reading `last_width` texels per line.
+#[derive(Clone, Copy, Debug)]
+pub struct Tiling {
+    pub block_width: u32,
+    pub block_height: u32,
+    pub last_width: u32,
+}
+
+impl Tiling {
+    /// The tiling of `image`, checked (see [`block_sums_last_width`]):
+    /// returns `(nx, ny)`.
+    pub fn blocks(&self, image: &HdrImage) -> Result<(u32, u32), ReferenceError> {
+        let (block_width, block_height) = (self.block_width, self.block_height);
+        if block_width == 0 || block_height == 0 {
+            return Err(ReferenceError::ZeroBlockSize {
+                block_width,
+                block_height,
+            });
+        }
+        let nx = image.width.div_ceil(block_width);
+        let ny = image.height.div_ceil(block_height);
+        let real_last = image
+            .width
+            .saturating_sub(nx.saturating_sub(1) * block_width);
+        if self.last_width > block_width || self.last_width < real_last {
+            return Err(ReferenceError::LastWidth {
+                last_width: self.last_width,
+                real_width: real_last,
+                block_width,
+            });
+        }
+        Ok((nx, ny))
+    }
+
+    /// Texels block column `bx` of `nx` reads per line.
+    pub fn read(&self, bx: u32, nx: u32) -> u32 {
+        if bx + 1 == nx {
+            self.last_width
+        } else {
+            self.block_width
+        }
+    }
+}
+
+/// The whole-image reference and one fold per block (`folds[row][col]`,
+/// made by `make(col, row)`) from a single [`scan`]: each pixel's term is
+/// computed once, blocks of a band are folded in parallel.
+pub fn fold_blocks<F: BlockFold>(
+    image: &HdrImage,
+    delta: f64,
+    policy: Policy,
+    tiling: Tiling,
+    make: impl Fn(u32, u32) -> F,
+) -> Result<(Reference, Vec<Vec<F>>), ReferenceError> {
+    use rayon::prelude::*;
+    let (nx, ny) = tiling.blocks(image)?;
+    let (bw, bh) = (tiling.block_width, tiling.block_height);
+    let mut folds: Vec<Vec<F>> = (0..ny)
+        .map(|by| (0..nx).map(|bx| make(bx, by)).collect())
+        .collect();
+    let width = image.width;
+    let reference = scan(image, delta, policy, |band| {
+        let rows = band.pixels.len() as u32 / width.max(1);
+        let mut y = band.y0;
+        while y < band.y0 + rows {
+            let by = y / bh;
+            let end = ((by + 1) * bh).min(band.y0 + rows);
+            folds[by as usize]
+                .par_iter_mut()
+                .enumerate()
+                .for_each(|(bx, fold)| {
+                    let bx = bx as u32;
+                    let x0 = bx * bw;
+                    let x1 = (x0 + tiling.read(bx, nx)).min(width);
+                    let padding = x0 + tiling.read(bx, nx) - x1;
+                    for row in y..end {
+                        let start = ((row - band.y0) * width) as usize;
+                        let span = start + x0 as usize..start + x1 as usize;
+                        fold.row(&band.pixels[span.clone()], &band.terms[span], padding);
+                    }
+                });
+            y = end;
+        }
+    });
+    if ny * bh > image.height {
+        let below = ny * bh - image.height;
+        for (bx, fold) in folds[ny as usize - 1].iter_mut().enumerate() {
+            fold.rows_below(below, tiling.read(bx as u32, nx));
+        }
+    }
+    Ok((reference, folds))
+}
+
+/// The block sums' fold: the terms in order, padding added once at the end.
+struct SumFold {
+    sum: f64,
+    magnitude: f64,
+    /// Texels of the block inside the image.
+    inside: u64,
+    /// `read × block_height`.
+    area: u64,
+    /// The padding term, `log2(delta)` (the same under every policy).
+    black: f64,
+}
+
+impl BlockFold for SumFold {
+    fn row(&mut self, pixels: &[[f32; 4]], terms: &[Option<f64>], _padding: u32) {
+        self.inside += pixels.len() as u64;
+        for &term in terms.iter().flatten() {
+            self.sum += term;
+            self.magnitude += term.abs();
+        }
+    }
+    fn rows_below(&mut self, _rows: u32, _read: u32) {}
+}
+
+impl SumFold {
+    /// Adds the padding texels as `count × term` (skipped when 0: 0 ·
+    /// log2(0) would be NaN for delta = 0); returns the padding count.
+    fn finish(&mut self) -> u64 {
+        let padded = self.area - self.inside;
+        if padded > 0 {
+            self.sum += padded as f64 * self.black;
+            self.magnitude += padded as f64 * self.black.abs();
+        }
+        padded
+    }
 }
 
 /// Per-block sums of the log2 terms, as the first reduction pass computes
@@ -272,77 +504,65 @@ pub fn block_sums_last_width(
     block_height: u32,
     last_width: u32,
 ) -> Result<BlockSums, ReferenceError> {
-    if block_width == 0 || block_height == 0 {
-        return Err(ReferenceError::ZeroBlockSize {
-            block_width,
-            block_height,
-        });
-    }
-    let (width, height) = (image.width, image.height);
-    let nx = width.div_ceil(block_width);
-    let ny = height.div_ceil(block_height);
-    let real_last = width.saturating_sub(nx.saturating_sub(1) * block_width);
-    if last_width > block_width || last_width < real_last {
-        return Err(ReferenceError::LastWidth {
-            last_width,
-            real_width: real_last,
-            block_width,
-        });
-    }
-    let mut sums = vec![vec![0.0; nx as usize]; ny as usize];
-    let mut magnitude_sums = sums.clone();
-    let mut inside = vec![vec![0u64; nx as usize]; ny as usize];
-
-    // Rows beyond `height` (an inconsistent image) are ignored; an image
-    // of width 0 has no rows and no blocks.
-    if width > 0 {
-        let rows = image
-            .pixels
-            .chunks_exact(width as usize)
-            .take(height as usize);
-        for (y, row) in rows.enumerate() {
-            let block_row = y / block_height as usize;
-            for (x, &pixel) in row.iter().enumerate() {
-                let block_col = x / block_width as usize;
-                inside[block_row][block_col] += 1;
-                if let Some(term) = policy.term(luminance(pixel), delta) {
-                    sums[block_row][block_col] += term;
-                    magnitude_sums[block_row][block_col] += term.abs();
-                }
-            }
-        }
-    }
-
-    // Padding texels are black: luminance 0, one term log2(delta) each
-    // (the same under every policy), added once per block as count * term.
-    let black = policy.term(0.0, delta).unwrap_or(0.0);
-    let mut padded_samples = 0;
-    for row in 0..ny as usize {
-        for col in 0..nx as usize {
-            let read_width = if col + 1 == nx as usize {
-                last_width
-            } else {
-                block_width
-            };
-            let block_area = u64::from(read_width) * u64::from(block_height);
-            let padded = block_area - inside[row][col];
-            padded_samples += padded;
-            // Skipped when 0: 0 * log2(0) would be NaN for delta = 0.
-            if padded > 0 {
-                sums[row][col] += padded as f64 * black;
-                magnitude_sums[row][col] += padded as f64 * black.abs();
-            }
-        }
-    }
-    Ok(BlockSums {
+    let tiling = Tiling {
         block_width,
         block_height,
+        last_width,
+    };
+    Ok(fold_blocks_with_sums(image, delta, policy, tiling, |_, _| ())?.1)
+}
+
+/// [`fold_blocks`] with the block sums folded beside `make`'s folds:
+/// returns the whole-image reference, the block sums and the other folds.
+pub fn fold_blocks_with_sums<F: BlockFold>(
+    image: &HdrImage,
+    delta: f64,
+    policy: Policy,
+    tiling: Tiling,
+    make: impl Fn(u32, u32) -> F,
+) -> Result<(Reference, BlockSums, Vec<Vec<F>>), ReferenceError> {
+    let (nx, _) = tiling.blocks(image)?;
+    let black = policy.term(0.0, delta).unwrap_or(0.0);
+    let (reference, folds) = fold_blocks(image, delta, policy, tiling, |bx, by| {
+        let sums = SumFold {
+            sum: 0.0,
+            magnitude: 0.0,
+            inside: 0,
+            area: u64::from(tiling.read(bx, nx)) * u64::from(tiling.block_height),
+            black,
+        };
+        (sums, make(bx, by))
+    })?;
+    let mut padded_samples = 0;
+    let (mut sums, mut magnitude_sums, mut others) = (Vec::new(), Vec::new(), Vec::new());
+    for row in folds {
+        let (mut s, mut m, mut o) = (Vec::new(), Vec::new(), Vec::new());
+        for (mut sum, other) in row {
+            padded_samples += sum.finish();
+            s.push(sum.sum);
+            m.push(sum.magnitude);
+            o.push(other);
+        }
+        sums.push(s);
+        magnitude_sums.push(m);
+        others.push(o);
+    }
+    let blocks = BlockSums {
+        block_width: tiling.block_width,
+        block_height: tiling.block_height,
         nx,
-        ny,
+        ny: sums.len() as u32,
         padded_samples,
         sums,
         magnitude_sums,
-    })
+    };
+    Ok((reference, blocks, others))
+}
+
+/// No fold: [`block_sums_last_width`] folds only the sums.
+impl BlockFold for () {
+    fn row(&mut self, _: &[[f32; 4]], _: &[Option<f64>], _: u32) {}
+    fn rows_below(&mut self, _: u32, _: u32) {}
 }
 
 #[cfg(test)]

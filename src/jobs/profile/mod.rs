@@ -238,21 +238,27 @@ impl ProfileRun {
     }
 }
 
-/// Runs `ps30 profile` on a source (loaded with `setup.defines`); a source
-/// that does not load gives its first error (the command line loads the
-/// shader itself, with every diagnostic, and calls [`profile_loaded`]).
+/// Runs `ps30 profile` on assembly text.
 pub fn profile(name: &str, text: &str, setup: &Setup) -> Result<ProfileRun, String> {
+    profile_file(SourceFile::new(name, text), setup)
+}
+
+/// Runs `ps30 profile` on any source, text or compiled (loaded with
+/// `setup.defines`); a source that does not load gives its diagnostics as
+/// the error (the command line loads the shader itself, reporting as it
+/// does everywhere, and calls [`profile_loaded`]).
+pub fn profile_file(file: SourceFile, setup: &Setup) -> Result<ProfileRun, String> {
     let mut opts = Options::default();
     for (k, v) in &setup.defines {
         opts.defines.insert(k.clone(), *v);
     }
-    let loaded = load::load_str(name, text, &opts).map_err(|e| e.to_string())?;
+    let loaded =
+        load::load(file, &opts).map_err(|e| format!("{}\n{e}", e.diagnostics.render(&e.file)))?;
     profile_loaded(loaded, setup)
 }
 
 /// Runs `ps30 profile` on a loaded shader.
 pub fn profile_loaded(loaded: load::Loaded, setup: &Setup) -> Result<ProfileRun, String> {
-    let name = loaded.file.name.clone();
     let compiled = emu::compile(&loaded.shader).map_err(|e| e.to_string())?;
     let env = environment(&setup.constants);
     let analysis = cost::analyse(&loaded.shader, &loaded.file, &env, &Profile::ps_3_0())
@@ -279,7 +285,7 @@ pub fn profile_loaded(loaded: load::Loaded, setup: &Setup) -> Result<ProfileRun,
             }
             scene =
                 crate::jobs::scenes::lights::Scene::synthetic(*w, *h).map_err(|e| e.to_string())?;
-            let draw = gbuffer_draw(&name, &loaded, setup, &scene)?;
+            let draw = gbuffer_draw(&loaded.file.name, &loaded, setup, &scene)?;
             let out = run(&draw)?;
             let models = crate::jobs::scenes::lights::compare(&scene, &out);
             let counts = scene.pixels_per_model();

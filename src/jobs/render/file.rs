@@ -803,8 +803,15 @@ impl Resolver {
         if let Some(i) = self.shader_keys.iter().position(|k| *k == key) {
             return Ok(i);
         }
-        let (name, text) = match crate::jobs::bundled::resolve(spec) {
-            crate::jobs::bundled::Named::Bundled(b) => (b.path.to_string(), b.text.to_string()),
+        let options = Options {
+            defines: key.1.clone(),
+            ..Options::default()
+        };
+        // A file is assembly or ps_3_0 bytecode, told apart by content.
+        let source = match crate::jobs::bundled::resolve(spec) {
+            crate::jobs::bundled::Named::Bundled(b) => {
+                crate::core::diag::SourceFile::new(b.path, b.text)
+            }
             crate::jobs::bundled::Named::File(_) => {
                 let file = self.dir.join(spec);
                 let bytes = std::fs::read(&file).map_err(|e| {
@@ -813,18 +820,13 @@ impl Resolver {
                         .unwrap_or_default();
                     self.err(field, format!("{}: {e}{hint}", file.display()))
                 })?;
-                let text = String::from_utf8(bytes)
-                    .map_err(|_| self.err(field, format!("{}: not UTF-8 text", file.display())))?;
                 self.sources.push(file.clone());
-                (file.display().to_string(), text)
+                load::source_file(&file.display().to_string(), bytes, &options)
+                    .map_err(|e| self.err(field, e.to_string()))?
             }
         };
-        let options = Options {
-            defines: key.1.clone(),
-            ..Options::default()
-        };
-        let loaded =
-            load::load_str(&name, &text, &options).map_err(|e| self.err(field, e.to_string()))?;
+        let name = source.name.clone();
+        let loaded = load::load(source, &options).map_err(|e| self.err(field, e.to_string()))?;
         self.list.shaders.push(ShaderSpec { name, loaded });
         self.shader_keys.push(key);
         Ok(self.list.shaders.len() - 1)

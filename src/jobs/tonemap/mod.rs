@@ -419,9 +419,42 @@ pub fn srgb_encode(linear: f64) -> f64 {
 }
 
 /// A linear value as an 8-bit sRGB code: clamped to [0, 1] (NaN to 0),
-/// encoded, rounded to the nearest code.
+/// encoded, rounded to the nearest code — found in [`srgb8_thresholds`],
+/// which gives the same code as [`srgb8_by_formula`] without a `powf`.
 pub fn srgb8(linear: f64) -> u8 {
+    let x = sat(linear);
+    srgb8_thresholds().partition_point(|&t| t <= x) as u8
+}
+
+/// The definition [`srgb8`] follows: encode, scale, round.
+pub fn srgb8_by_formula(linear: f64) -> u8 {
     (srgb_encode(sat(linear)) * 255.0).round() as u8
+}
+
+/// `t[k − 1]` is the smallest f64 in [0, 1] that [`srgb8_by_formula`] maps
+/// to code `k` or above. The encoding is monotone (its two pieces meet
+/// 2.9e-8 apart, far from a rounding boundary; tested by a dense sweep), so
+/// the code of `x` is the number of thresholds at or below it. Each one is
+/// found by bisection over the bit patterns of [0, 1] (ordered like the
+/// values), 62 evaluations of the formula.
+pub fn srgb8_thresholds() -> &'static [f64; 255] {
+    static TABLE: std::sync::OnceLock<[f64; 255]> = std::sync::OnceLock::new();
+    TABLE.get_or_init(|| {
+        std::array::from_fn(|k| {
+            let code = k as u8 + 1;
+            // Invariant: code(lo) < code ≤ code(hi).
+            let (mut lo, mut hi) = (0f64.to_bits(), 1f64.to_bits());
+            while hi - lo > 1 {
+                let mid = lo + (hi - lo) / 2;
+                if srgb8_by_formula(f64::from_bits(mid)) >= code {
+                    hi = mid;
+                } else {
+                    lo = mid;
+                }
+            }
+            f64::from_bits(hi)
+        })
+    })
 }
 
 /// Linear RGBA (row-major) to packed 8-bit sRGB RGB, alpha dropped.
@@ -477,14 +510,67 @@ impl Crosscheck {
     }
 }
 
-/// Compares the emulated output with the reference, pixel by pixel.
+/// Pixels per task of [`crosscheck`].
+const CHECK_CHUNK: usize = 1 << 14;
+
+/// Compares the emulated output with the reference, pixel by pixel, in
+/// chunks on rayon's current pool, merged in order (the same result for any
+/// thread count).
 pub fn crosscheck(op: &Operator, image: &HdrImage, emulated: &[[f32; 4]]) -> Crosscheck {
+    use rayon::prelude::*;
+    let w = image.width.max(1) as usize;
+    let parts: Vec<Crosscheck> = image
+        .pixels
+        .par_chunks(CHECK_CHUNK)
+        .zip(emulated.par_chunks(CHECK_CHUNK))
+        .enumerate()
+        .map(|(k, (p, e))| crosscheck_chunk(op, p, e, k * CHECK_CHUNK, w))
+        .collect();
     let mut r = Crosscheck {
         pixels: image.pixels.len() as u64,
         ..Crosscheck::default()
     };
-    let w = image.width.max(1) as usize;
-    for (i, (&p, o)) in image.pixels.iter().zip(emulated).enumerate() {
+    for part in parts {
+        r.merge(part);
+    }
+    r
+}
+
+impl Crosscheck {
+    /// Adds a later chunk's counts, keeping extremes as a left-to-right scan
+    /// does (a later maximum only when strictly larger, the first outlier).
+    fn merge(&mut self, o: Crosscheck) {
+        self.checked_pixels += o.checked_pixels;
+        self.nonfinite_pixels += o.nonfinite_pixels;
+        self.zero_luminance_pixels += o.zero_luminance_pixels;
+        self.negative_luminance_pixels += o.negative_luminance_pixels;
+        self.sign_ambiguous_pixels += o.sign_ambiguous_pixels;
+        self.saturated_pixels += o.saturated_pixels;
+        if o.max_error > self.max_error {
+            self.max_error = o.max_error;
+            self.max_error_bound = o.max_error_bound;
+        }
+        self.largest_bound_fraction = self.largest_bound_fraction.max(o.largest_bound_fraction);
+        self.outside_bound += o.outside_bound;
+        self.mismatched_8bit_channels += o.mismatched_8bit_channels;
+        self.mismatched_8bit_pixels += o.mismatched_8bit_pixels;
+        self.unexplained_8bit += o.unexplained_8bit;
+        self.ambiguous_8bit += o.ambiguous_8bit;
+        self.first_outside = self.first_outside.or(o.first_outside);
+    }
+}
+
+/// [`crosscheck`] over the pixels from index `first` on (rows `w` wide).
+fn crosscheck_chunk(
+    op: &Operator,
+    pixels: &[[f32; 4]],
+    emulated: &[[f32; 4]],
+    first: usize,
+    w: usize,
+) -> Crosscheck {
+    let mut r = Crosscheck::default();
+    for (j, (&p, o)) in pixels.iter().zip(emulated).enumerate() {
+        let i = first + j;
         let lw = crate::core::image::luminance(p);
         let Some((bounds, ambiguous)) = channel_bounds(op, p) else {
             r.nonfinite_pixels += 1;
@@ -575,12 +661,13 @@ impl ToneMapped {
 /// The largest finite luminance of an image (`None` if no pixel has a
 /// finite one).
 pub fn max_luminance(image: &HdrImage) -> Option<f64> {
+    use rayon::prelude::*;
     image
         .pixels
-        .iter()
+        .par_iter()
         .map(|&p| crate::core::image::luminance(p))
         .filter(|l| l.is_finite())
-        .reduce(f64::max)
+        .reduce_with(f64::max)
 }
 
 /// The white point the operator uses: the given one, or the scene's
@@ -657,8 +744,7 @@ pub fn emulate(
     progress: &dyn Fn(u64, u64),
 ) -> Result<(Vec<[f32; 4]>, PassCost), TonemapError> {
     let src = &settings.shader;
-    let loaded =
-        load::load_str(&src.name, &src.text, &Options::default()).map_err(TonemapError::Source)?;
+    let loaded = load::load(src.file.clone(), &Options::default()).map_err(TonemapError::Source)?;
     luminance::refuse_unset(
         &loaded,
         &crate::core::audit::Given::registers(&[0, 1, 2], &[], &[]),
@@ -731,7 +817,7 @@ pub fn emulate(
             None => {
                 return Err(TonemapError::Shader(format!(
                     "{} never writes oC0",
-                    src.name
+                    src.name()
                 )))
             }
         }
@@ -743,7 +829,7 @@ pub fn emulate(
         progress(y0 as u64, h as u64);
     }
     let cost = PassCost {
-        shader: src.name.clone(),
+        shader: src.name().to_string(),
         slots: analysis.slots,
         executed_static: analysis.executed,
         executed_emulated: executed,
@@ -788,6 +874,25 @@ mod tests {
             let c = srgb8(i as f64 / 1e6);
             assert!(c >= last, "code {c} after {last} at {i}");
             last = c;
+        }
+    }
+
+    /// The table gives the formula's code at and just below every
+    /// threshold, and on every 64th f32 in [0, 1] (16.6 million values).
+    #[test]
+    fn srgb_table_codes_are_the_formulas() {
+        for (k, &t) in srgb8_thresholds().iter().enumerate() {
+            let below = f64::from_bits(t.to_bits() - 1);
+            assert_eq!(srgb8_by_formula(t), k as u8 + 1, "at {t}");
+            assert_eq!(srgb8_by_formula(below), k as u8, "below {t}");
+            assert_eq!((srgb8(t), srgb8(below)), (k as u8 + 1, k as u8));
+        }
+        for bits in (0..=1f32.to_bits()).step_by(64) {
+            let x = f32::from_bits(bits) as f64;
+            assert_eq!(srgb8(x), srgb8_by_formula(x), "at {x}");
+        }
+        for x in [f64::NAN, -1.0, -0.0, 2.0, f64::INFINITY] {
+            assert_eq!(srgb8(x), srgb8_by_formula(x), "at {x}");
         }
     }
 

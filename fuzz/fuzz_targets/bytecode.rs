@@ -1,0 +1,44 @@
+//! Any bytes through the bytecode reader. A refusal must name a byte inside
+//! the input; a stream that reads must be written back byte for byte, both
+//! directly and through the listing every command parses, and must go
+//! through the rest of the front end (validation, the cost model) like any
+//! source. Nothing may panic.
+#![no_main]
+
+use libfuzzer_sys::fuzz_target;
+use ps30::core::bytecode::{listing, read, write};
+use ps30::core::cost::{analyse, Environment, Profile};
+use ps30::core::front::{parse, repeat};
+use ps30::core::load::{self, Options};
+
+fuzz_target!(|data: &[u8]| {
+    let module = match read::read(data, 4_096) {
+        Ok(m) => m,
+        Err(e) => {
+            assert!(e.byte <= data.len(), "{e} for {} bytes", data.len());
+            return;
+        }
+    };
+    assert_eq!(write::to_bytes(&write::encode(&module)), data);
+    let text = listing::listing(&module).text;
+    let (stmts, diags) = parse::parse(&text);
+    assert!(!diags.has_errors(), "the listing does not parse:\n{text}");
+    let expanded = repeat::expand(&stmts, &Default::default(), 1 << 20).expect("no macros");
+    let again = write::assemble(&stmts, &expanded).expect("the listing writes");
+    assert_eq!(write::to_bytes(&write::encode(&again)), data, "{text}");
+    let options = Options {
+        max_expanded: 4_096,
+        ..Options::default()
+    };
+    let file = load::source_file("fuzz.fxo", data.to_vec(), &options).expect("it read once");
+    if let Ok(loaded) = load::load(file, &options) {
+        if let Ok(a) = analyse(
+            &loaded.shader,
+            &loaded.file,
+            &Environment::default(),
+            &Profile::ps_3_0(),
+        ) {
+            assert!(a.executed.min <= a.executed.max);
+        }
+    }
+});

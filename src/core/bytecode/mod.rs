@@ -1,0 +1,370 @@
+//! Direct3D 9 shader bytecode: the token stream `fxc /Fo` writes, games ship
+//! and Wine's tests hold as arrays, read into the front end and written back
+//! byte for byte.
+//!
+//! Real ps_3_0 shaders rarely exist as assembly text, so ps30 reads the
+//! tokens too. A stream is [`read`] into a [`Module`] — hostile input is the
+//! normal case, so every length, count and offset is checked before use and
+//! a lying stream is an error naming its byte offset — and the module is
+//! printed as an assembly [`listing`] in the style of fxc's, which the text
+//! front end reads like any source: a compiled shader becomes the same AST
+//! and the same validated [`Shader`](crate::core::ir::Shader) as its text,
+//! and its diagnostics point into the listing and name token and byte.
+//! [`write`] is the other way: assembly statements (after REPEAT_BLOCK
+//! expansion) to a module, and a module to exactly the tokens Microsoft's
+//! assembler emits. [`ctab`] decodes the constant table fxc stores in a
+//! comment block (names, registers, types, defaults).
+//!
+//! Reading accepts exactly what has a text form and writing emits exactly
+//! what it reads, so bytes → listing → bytes is the identity; ps_3_0 rules
+//! are judged afterwards by validation, as for text.
+//!
+//! # The token layout
+//!
+//! Little-endian 32-bit tokens (Microsoft's driver documentation,
+//! learn.microsoft.com/windows-hardware/drivers/display: version-token,
+//! instruction-token, destination- and source-parameter-token,
+//! shader-relative-addressing, comment-token, end-token; register and
+//! opcode numbers from d3d9types.h, kept in the rows of
+//! [`crate::core::isa`]):
+//!
+//! * **version**, first: `0xFFFF0300` for ps_3_0 (bits 16–31 `0xFFFF` pixel,
+//!   `0xFFFE` vertex; bits 8–15 major, 0–7 minor).
+//! * **instruction**: bits 0–15 the D3DSIO_* opcode, 16–23 its control (the
+//!   comparison of `if_comp`, `break_comp`, `setp_comp`; 1 `texldp`, 2
+//!   `texldb`), 24–27 the number of tokens that follow, 28 predicated, 29
+//!   reserved, 30 co-issue (ps_1_x), 31 zero. The tokens that follow, in
+//!   order: the destination (if any); the predicate `p0` in source format
+//!   when predicated (right after the destination, as Wine's tests of
+//!   Microsoft's assembler show, not at the end as the page says); the
+//!   sources, each followed by its relative-address token when it has one.
+//!   `texkill`'s operand is in destination format. `dcl` is a usage token
+//!   (bit 31 set; usage bits 0–3, usage index 16–19, sampler texture type
+//!   27–30) then the declared register as a destination; `def`, `defi`,
+//!   `defb` are the destination then 4 floats, 4 integers or 1 boolean.
+//! * **parameter**: bit 31 set; bits 0–10 the register number; the D3DSPR_*
+//!   type split across bits 28–30 (low three bits) and 11–12 (high two); 13
+//!   relative addressing; 14–15 reserved. Destination: bits 16–19 write mask,
+//!   20–23 result modifier (1 `_sat`, 2 `_pp`, 4 `_centroid`), 24–27 shift
+//!   (ps_1_x). Source: bits 16–23 swizzle (two bits per component, x first;
+//!   identity `0xE4`), 24–27 modifier (0 none, 1 `-`, 11 `_abs`, 12 `-…_abs`,
+//!   13 `!`; the others are ps_1_x).
+//! * **relative address**: one source-format token after the parameter,
+//!   naming `aL` (`0xF0E40800`) in ps_3_0.
+//! * **comment**: bits 0–15 `0xFFFE`, 16–30 the number of tokens of its body,
+//!   which follows; fxc's constant table is one whose body starts with the
+//!   four characters `CTAB`.
+//! * **end**: `0x0000FFFF`, last.
+
+pub mod ctab;
+pub mod listing;
+pub mod read;
+pub mod write;
+
+use crate::core::ir::{Reg, SrcMod, Swizzle, WriteMask};
+use crate::core::isa::{Compare, Opcode, RegFile};
+use std::fmt;
+
+/// The version token of ps_3_0.
+pub const VERSION_PS_3_0: u32 = 0xFFFF_0300;
+/// The end token.
+pub const END: u32 = 0x0000_FFFF;
+/// The opcode of a comment token.
+pub const COMMENT: u32 = 0xFFFE;
+/// `CTAB` as the first token of a comment body (little-endian FourCC).
+pub const CTAB: u32 = u32::from_le_bytes(*b"CTAB");
+
+/// Result-modifier bits of a destination token.
+pub const SAT: u8 = 1;
+pub const PP: u8 = 2;
+pub const CENTROID: u8 = 4;
+
+/// A decoded ps_3_0 token stream: its items in stream order, between the
+/// version token and the end token.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Module {
+    pub items: Vec<Item>,
+}
+
+/// One instruction or comment, with the index of its first token in the
+/// stream (the version token is token 0; its byte offset is 4 × token).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Item {
+    pub token: u32,
+    pub kind: ItemKind,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum ItemKind {
+    Instr(Instr),
+    /// A comment block's body, token for token.
+    Comment(Vec<u32>),
+}
+
+/// One instruction (declarations and definitions included), its operands
+/// decoded.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Instr {
+    pub op: Opcode,
+    pub compare: Option<Compare>,
+    /// The predicate token of a predicated instruction.
+    pub predicate: Option<Source>,
+    /// The operand in destination format, with the result modifiers.
+    pub dst: Option<Dest>,
+    pub src: Vec<Source>,
+    /// The `dcl` usage token or the literals of `def`, `defi`, `defb`.
+    pub extra: Extra,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Extra {
+    None,
+    /// A `dcl` usage token: usage (bits 0–3), usage index (16–19), sampler
+    /// texture type (27–30).
+    Decl {
+        usage: u8,
+        index: u8,
+        texture: u8,
+    },
+    /// `def`: four floats, as their bits.
+    Float([u32; 4]),
+    Int([i32; 4]),
+    /// `defb`: 0 or 1.
+    Bool(bool),
+}
+
+/// A destination-format parameter.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Dest {
+    pub reg: Reg,
+    pub mask: WriteMask,
+    /// [`SAT`] | [`PP`] | [`CENTROID`].
+    pub result: u8,
+}
+
+/// A source-format parameter. With `relative`, `reg.index` is the register
+/// number the token carries (the base plus the offset of `v[aL + n]`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Source {
+    pub reg: Reg,
+    pub relative: bool,
+    pub swizzle: Swizzle,
+    pub modifier: SrcMod,
+}
+
+impl Instr {
+    /// The number of tokens after the instruction token (its length field).
+    pub fn operand_tokens(&self) -> u32 {
+        let extra = match self.extra {
+            Extra::None => 0,
+            Extra::Decl { .. } | Extra::Bool(_) => 1,
+            Extra::Float(_) | Extra::Int(_) => 4,
+        };
+        let sources: u32 = self.src.iter().map(|s| 1 + u32::from(s.relative)).sum();
+        extra
+            + u32::from(self.dst.is_some())
+            + self.predicate.map_or(0, |p| 1 + u32::from(p.relative))
+            + sources
+    }
+}
+
+/// A source modifier as the 4-bit code of a source token.
+pub fn modifier_code(m: SrcMod) -> u8 {
+    match m {
+        SrcMod::None => 0,
+        SrcMod::Neg => 1,
+        SrcMod::Abs => 11,
+        SrcMod::NegAbs => 12,
+        SrcMod::Not => 13,
+    }
+}
+
+/// The source modifier of a 4-bit code, with the name of a code ps_3_0 does
+/// not have (D3DSPSM_*) as the error.
+pub fn modifier_from_code(code: u8) -> Result<SrcMod, &'static str> {
+    const OTHERS: [&str; 11] = [
+        "",
+        "",
+        "_bias",
+        "-…_bias",
+        "_bx2",
+        "-…_bx2",
+        "1 - …",
+        "_x2",
+        "-…_x2",
+        "_dz",
+        "_dw",
+    ];
+    match code {
+        0 => Ok(SrcMod::None),
+        1 => Ok(SrcMod::Neg),
+        11 => Ok(SrcMod::Abs),
+        12 => Ok(SrcMod::NegAbs),
+        13 => Ok(SrcMod::Not),
+        c => Err(OTHERS
+            .get(c as usize)
+            .copied()
+            .unwrap_or("an undefined code")),
+    }
+}
+
+/// The D3DSPR_* type and number a register's tokens carry.
+pub fn register_token(reg: Reg) -> u32 {
+    let info = reg.file.info();
+    let ty = info.token_type as u32;
+    let number = if info.numbered {
+        reg.index
+    } else {
+        info.token_number
+    };
+    0x8000_0000 | (ty & 7) << 28 | (ty & 0x18) << 8 | (number & 0x7ff)
+}
+
+/// A destination token.
+pub fn dest_token(d: &Dest) -> u32 {
+    register_token(d.reg) | (d.mask.0 as u32) << 16 | (d.result as u32) << 20
+}
+
+/// A source token (without its relative-address token).
+pub fn source_token(s: &Source) -> u32 {
+    let swizzle: u32 = s
+        .swizzle
+        .0
+        .iter()
+        .enumerate()
+        .map(|(i, &c)| (c as u32 & 3) << (2 * i))
+        .sum();
+    register_token(s.reg)
+        | swizzle << 16
+        | (modifier_code(s.modifier) as u32) << 24
+        | u32::from(s.relative) << 13
+}
+
+/// The relative-address token of ps_3_0: `aL`, identity swizzle.
+pub fn loop_counter_token() -> u32 {
+    register_token(Reg {
+        file: RegFile::LoopCounter,
+        index: 0,
+    }) | 0xE4 << 16
+}
+
+/// The name of a version token (`ps_3_0`, `vs_2_0`, `ps_2_x`, `ps_2_sw`),
+/// or `None` when it is not a shader version.
+pub fn version_name(token: u32) -> Option<String> {
+    let kind = match token >> 16 {
+        0xFFFF => "ps",
+        0xFFFE => "vs",
+        _ => return None,
+    };
+    let (major, minor) = ((token >> 8) & 0xFF, token & 0xFF);
+    let minor = match minor {
+        0xFF => "sw".to_string(),
+        1 if major == 2 => "x".to_string(),
+        m => m.to_string(),
+    };
+    Some(format!("{kind}_{major}_{minor}"))
+}
+
+/// A place in a byte stream that could not be read, and why.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct ReadError {
+    /// Byte offset of the token at fault.
+    pub byte: usize,
+    pub message: String,
+    pub help: Option<String>,
+}
+
+impl ReadError {
+    pub(crate) fn at(byte: usize, message: impl Into<String>) -> ReadError {
+        ReadError {
+            byte,
+            message: message.into(),
+            help: None,
+        }
+    }
+
+    pub(crate) fn with_help(mut self, help: impl Into<String>) -> ReadError {
+        self.help = Some(help.into());
+        self
+    }
+
+    /// `token T (byte 0xB)`: where the error is.
+    pub fn place(&self) -> String {
+        place(self.byte)
+    }
+}
+
+/// `token T (byte 0xB)` for a byte offset.
+pub fn place(byte: usize) -> String {
+    format!("token {} (byte {byte:#x})", byte / 4)
+}
+
+impl fmt::Display for ReadError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}: {}", self.place(), self.message)?;
+        if let Some(h) = &self.help {
+            write!(f, "; {h}")?;
+        }
+        Ok(())
+    }
+}
+
+impl std::error::Error for ReadError {}
+
+/// Whether bytes are compiled Direct3D 9 code rather than text: the high
+/// half of their first token is `0xFFFF` (pixel shader), `0xFFFE` (vertex
+/// shader) or `0xFEFF` (effect) — bytes no UTF-8 text holds. Detection is
+/// by content, never by extension.
+pub fn is_bytecode(bytes: &[u8]) -> bool {
+    bytes.len() >= 4 && bytes[2] >= 0xFE && bytes[3] >= 0xFE
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn register_tokens_match_wines_worked_encodings() {
+        let src = |file, index| {
+            source_token(&Source {
+                reg: Reg { file, index },
+                relative: false,
+                swizzle: Swizzle::IDENTITY,
+                modifier: SrcMod::None,
+            })
+        };
+        assert_eq!(src(RegFile::Temp, 0), 0x80e40000);
+        assert_eq!(src(RegFile::Const, 0), 0xa0e40000);
+        assert_eq!(src(RegFile::Input, 1), 0x90e40001);
+        assert_eq!(src(RegFile::ConstInt, 0), 0xf0e40000);
+        assert_eq!(src(RegFile::ConstBool, 0), 0xe0e40800);
+        assert_eq!(src(RegFile::LoopCounter, 0), 0xf0e40800);
+        assert_eq!(src(RegFile::Label, 0), 0xa0e41000);
+        assert_eq!(src(RegFile::Sampler, 2), 0xa0e40802);
+        assert_eq!(src(RegFile::Position, 0), 0x90e41000);
+        assert_eq!(src(RegFile::Face, 0), 0x90e41001);
+        let dst = |file, index| {
+            dest_token(&Dest {
+                reg: Reg { file, index },
+                mask: WriteMask::ALL,
+                result: 0,
+            })
+        };
+        assert_eq!(dst(RegFile::ColorOut, 3), 0x800f0803);
+        assert_eq!(dst(RegFile::DepthOut, 0), 0x900f0800);
+        assert_eq!(dst(RegFile::Predicate, 0), 0xb00f1000);
+        assert_eq!(loop_counter_token(), 0xf0e40800);
+    }
+
+    #[test]
+    fn versions_are_named() {
+        assert_eq!(version_name(0xFFFF0300).as_deref(), Some("ps_3_0"));
+        assert_eq!(version_name(0xFFFF0201).as_deref(), Some("ps_2_x"));
+        assert_eq!(version_name(0xFFFE0300).as_deref(), Some("vs_3_0"));
+        assert_eq!(version_name(0xFFFF0104).as_deref(), Some("ps_1_4"));
+        assert_eq!(version_name(0xFFFE02FF).as_deref(), Some("vs_2_sw"));
+        assert_eq!(version_name(0x4658_0201), None);
+        assert!(is_bytecode(&0xFFFF0300u32.to_le_bytes()));
+        assert!(!is_bytecode(b"ps_3_0\n"));
+    }
+}
