@@ -108,7 +108,7 @@ fn overridden_unread_and_unused_values_are_warnings() {
     let dir = tempfile::tempdir().unwrap();
     std::fs::write(
         dir.path().join("d.psh"),
-        "ps_3_0\ndefi i0, 4, 0, 0, 0\ndef c0, 1, 1, 1, 1\nrep i0\nadd r0, r0, c0\nendrep\nmov oC0, r0\n",
+        "ps_3_0\ndefi i0, 4, 0, 0, 0\ndef c0, 1, 1, 1, 1\nmov r0, c0\nrep i0\nadd r0, r0, c0\nendrep\nmov oC0, r0\n",
     )
     .unwrap();
     let o = ps30_in(
@@ -173,7 +173,7 @@ fn runs_over_the_limits_exit_1_and_say_so() {
     std::fs::write(
         dir.path().join("long.psh"),
         format!(
-            "ps_3_0\ndef c0, 1, 1, 1, 1\n{}mov oC0, r0\n",
+            "ps_3_0\ndef c0, 1, 1, 1, 1\nmov r0, c0\n{}mov oC0, r0\n",
             "add r0, r0, c0\n".repeat(600)
         ),
     )
@@ -192,7 +192,7 @@ fn runs_over_the_limits_exit_1_and_say_so() {
     );
     assert_eq!(o.status.code(), Some(1), "{}", err(&o));
     assert!(
-        out(&o).contains("OVER the ps_3_0 limits: 601 slots, 512 allowed"),
+        out(&o).contains("OVER the ps_3_0 limits: 602 slots, 512 allowed"),
         "{}",
         out(&o)
     );

@@ -130,6 +130,6 @@ mod tests {
         let p = planned(3, 7, 1e-4).unwrap();
         assert_eq!(p.block(), (3, 7));
         assert_eq!(p.candidate.padded_samples, 0);
-        assert!(p.pass1.text.contains("ps_3_0"));
+        assert!(p.pass1.file.text.contains("ps_3_0"));
     }
 }
