@@ -103,14 +103,13 @@ fn validate(root: &Value, s: &Value, v: &Value, at: &str, out: &mut Vec<String>)
 /// no limit spelled `max_slots`/`max_executed`.
 fn vocabulary(v: &Value, at: &str, out: &mut Vec<String>) {
     match v {
-        Value::String(s) => {
+        Value::String(s)
             if ["inf", "-inf", "+inf", "nan", "infinity", "-infinity"]
-                .contains(&s.to_lowercase().as_str())
-            {
-                out.push(format!(
-                    "{at}: a non-finite number as the string {s:?} (null is the rule)"
-                ));
-            }
+                .contains(&s.to_lowercase().as_str()) =>
+        {
+            out.push(format!(
+                "{at}: a non-finite number as the string {s:?} (null is the rule)"
+            ));
         }
         Value::Object(o) => {
             for (k, x) in o {

@@ -130,6 +130,18 @@ pub fn lod_text(v: f32) -> String {
     }
 }
 
+/// Serializes an f32 a user or a table gave (δ, a brightness) as the
+/// shortest decimal that reads back to it (`0.1`, not
+/// `0.10000000149011612`); non-finite values as `null`. For
+/// `#[serde(serialize_with = "…")]`.
+pub fn serialize_f32_shortest<S: serde::Serializer>(v: &f32, s: S) -> Result<S::Ok, S::Error> {
+    if v.is_finite() {
+        s.serialize_f64(v.to_string().parse().unwrap_or(*v as f64))
+    } else {
+        s.serialize_none()
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -152,17 +164,5 @@ mod tests {
         assert_eq!(decimal(-0.5, 2), "-0.50");
         assert_eq!(plural(0, "line", "lines"), "0 lines");
         assert_eq!(plural(12_345, "pixel", "pixels"), "12,345 pixels");
-    }
-}
-
-/// Serializes an f32 a user or a table gave (δ, a brightness) as the
-/// shortest decimal that reads back to it (`0.1`, not
-/// `0.10000000149011612`); non-finite values as `null`. For
-/// `#[serde(serialize_with = "…")]`.
-pub fn serialize_f32_shortest<S: serde::Serializer>(v: &f32, s: S) -> Result<S::Ok, S::Error> {
-    if v.is_finite() {
-        s.serialize_f64(v.to_string().parse().unwrap_or(*v as f64))
-    } else {
-        s.serialize_none()
     }
 }

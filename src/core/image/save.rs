@@ -103,8 +103,8 @@ pub fn write_target(path: &Path, target: &RenderTarget) -> Result<Written, Image
             let written = if channels == 2 { 3 } else { channels };
             let mut bytes = Vec::with_capacity(target.texels.len() * written);
             for t in &target.texels {
-                for c in 0..written {
-                    let v = if c < channels { t[c] } else { 0.0 };
+                let stored = t[..channels].iter().chain(std::iter::repeat(&0.0));
+                for &v in stored.take(written) {
                     clamped += u64::from(!(0.0..=1.0).contains(&v));
                     bytes.push(super::unorm8(v));
                 }
