@@ -100,7 +100,8 @@ fn validate(root: &Value, s: &Value, v: &Value, at: &str, out: &mut Vec<String>)
 
 /// The vocabulary rules, over the whole value: no non-finite number spelled
 /// as a string, no range spelled as `_min`/`_max` fields beside each other,
-/// no limit spelled `max_slots`/`max_executed`.
+/// one name for the cost model's count (`executed`, not `executed_static`
+/// or `static_executed`), no limit spelled `max_slots`/`max_executed`.
 fn vocabulary(v: &Value, at: &str, out: &mut Vec<String>) {
     match v {
         Value::String(s)
@@ -117,6 +118,11 @@ fn vocabulary(v: &Value, at: &str, out: &mut Vec<String>) {
                 if k.ends_with("_min") {
                     out.push(format!(
                         "{at}.{k}: a range as two fields ({{min, max}} is the rule)"
+                    ));
+                }
+                if k == "executed_static" || k == "static_executed" {
+                    out.push(format!(
+                        "{at}.{k}: the cost model's count is `executed` (the emulator's `executed_emulated`)"
                     ));
                 }
                 if k == "max_slots" || k == "max_executed" {
