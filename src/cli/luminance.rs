@@ -1,6 +1,6 @@
 //! `ps30 luminance`: both passes on an HDR image, cross-checked.
 
-use super::args::{parse_delta, parse_size, ExecArgs, FormatArg, InputArgs};
+use super::args::{parse_delta, parse_size, BackendArgs, ExecArgs, FormatArg, InputArgs};
 use super::io::{print_json, say, shader_source};
 use super::ui::Ui;
 use super::{BadInput, Outcome};
@@ -43,6 +43,8 @@ pub struct Args {
     negative: NegativeArg,
     #[command(flatten)]
     exec: ExecArgs,
+    #[command(flatten)]
+    draw: BackendArgs,
     #[command(flatten)]
     input: InputArgs,
 }
@@ -127,6 +129,8 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         },
         threads: args.exec.threads(),
         limits: args.exec.limits(),
+        backend: args.draw.open()?,
+        float_rules: args.draw.rules(),
     };
     let run = {
         let _spinner = ui.spinner("running both passes");

@@ -1,6 +1,8 @@
 //! `ps30 run`: one pass of any shader over an image into a render target.
 
-use super::args::{ConstantArgs, ExecArgs, FormatArg, InputArgs, SamplerArgs, SourceArgs};
+use super::args::{
+    BackendArgs, ConstantArgs, ExecArgs, FormatArg, InputArgs, SamplerArgs, SourceArgs,
+};
 use super::io::{audit, load_shader, print_json, say};
 use super::ui::Ui;
 use super::Outcome;
@@ -41,6 +43,8 @@ pub struct Args {
     #[command(flatten)]
     exec: ExecArgs,
     #[command(flatten)]
+    draw: BackendArgs,
+    #[command(flatten)]
     input: InputArgs,
 }
 
@@ -65,6 +69,8 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         format: args.target_format.into(),
         threads: args.exec.threads(),
         limits: args.exec.limits(),
+        backend: args.draw.open()?,
+        float_rules: args.draw.rules(),
     };
     let out = {
         let _spinner = ui.spinner("running the shader");

@@ -63,6 +63,7 @@ pub fn run_json(image: &str, r: &LuminanceRun, choice: &Choice) -> serde_json::V
         "within_limits": r.within_limits(),
         "width": r.width,
         "height": r.height,
+        "drawn_by": r.drawn_by,
         "log_average": json::real(r.log_average),
         "reference_log_average": json::real(r.reference_log_average),
         "relative_error": json::real(r.relative_error),
@@ -118,7 +119,7 @@ pub fn pass_cost_json(role: &str, p: &PassCost) -> serde_json::Value {
         "shader": p.shader,
         "slots": p.slots,
         "executed": json::range(p.executed_static),
-        "executed_emulated": json::range(p.executed_emulated),
+        "executed_emulated": p.executed_emulated.map(json::range),
         "counts_agree": p.counts_agree,
         "within_limits": p.within_limits,
         "diagnostics": json::findings(&p.shader, &p.findings),
@@ -154,18 +155,29 @@ fn limits_text(p: &PassCost) -> String {
     )
 }
 
+/// `emulator counted 64,774, same`, or what a GPU run says instead.
+pub fn counted_text(p: &PassCost) -> String {
+    match p.executed_emulated {
+        Some(r) => format!(
+            "emulator counted {}{}",
+            range_text(r),
+            if p.counts_agree {
+                ", same"
+            } else {
+                ", DIFFERENT"
+            }
+        ),
+        None => "not counted: drawn on the GPU".into(),
+    }
+}
+
 fn pass_line(label: &str, p: &PassCost) -> String {
     let mut s = format!(
-        "{label} {}: {} slots, {} executed per pixel (emulator counted {}{})\n",
+        "{label} {}: {} slots, {} executed per pixel ({})\n",
         p.shader,
         p.slots,
         range_text(p.executed_static),
-        range_text(p.executed_emulated),
-        if p.counts_agree {
-            ", same"
-        } else {
-            ", DIFFERENT"
-        }
+        counted_text(p)
     );
     s.push_str(&limits_text(p));
     s.push_str(&findings_text(&p.shader, &p.findings));
@@ -282,6 +294,9 @@ pub fn run_text(image: &str, r: &LuminanceRun, choice: &Choice) -> String {
         r.delta
     );
     s.push_str(&format!("blocks: {}\n", choice.text()));
+    if r.drawn_by != "emulator" {
+        s.push_str(&format!("drawn on the {}\n", r.drawn_by));
+    }
     s.push_str(&pass_line("pass 1", &r.pass1));
     if let Some(p) = &r.pass1_last {
         s.push_str(&pass_line("pass 1 (last column)", p));
@@ -312,7 +327,12 @@ pub fn run_text(image: &str, r: &LuminanceRun, choice: &Choice) -> String {
         return s;
     }
     s.push_str(&format!(
-        "L̄w: emulated {:.7}, reference {:.7} (every pixel once), relative error {:.2e}, tolerance {:.2e}: {}\n",
+        "L̄w: {} {:.7}, reference {:.7} (every pixel once), relative error {:.2e}, tolerance {:.2e}: {}\n",
+        if r.drawn_by == "emulator" {
+            "emulated"
+        } else {
+            "GPU"
+        },
         r.log_average,
         r.reference_log_average,
         r.relative_error,
@@ -368,17 +388,27 @@ pub fn pass_text(image: &str, out: &PassOutput, written: Option<(&Path, &Written
         t.height,
         t.format.d3d_name()
     );
-    s.push_str(&format!(
-        "slots {}, executed per pixel {} (cost model: {}{})\n",
-        out.cost.slots,
-        range_text(out.cost.executed_emulated),
-        range_text(out.cost.executed_static),
-        if out.cost.counts_agree {
-            ", same"
-        } else {
-            ", DIFFERENT"
-        }
-    ));
+    if out.drawn_by != "emulator" {
+        s.push_str(&format!("drawn on the {}\n", out.drawn_by));
+    }
+    s.push_str(&match out.cost.executed_emulated {
+        Some(e) => format!(
+            "slots {}, executed per pixel {} (cost model: {}{})\n",
+            out.cost.slots,
+            range_text(e),
+            range_text(out.cost.executed_static),
+            if out.cost.counts_agree {
+                ", same"
+            } else {
+                ", DIFFERENT"
+            }
+        ),
+        None => format!(
+            "slots {}, executed per pixel {} (cost model; not counted: drawn on the GPU)\n",
+            out.cost.slots,
+            range_text(out.cost.executed_static)
+        ),
+    });
     s.push_str(&limits_text(&out.cost));
     s.push_str(&findings_text(&out.cost.shader, &out.cost.findings));
     s.push_str(&outputs_text(&out.outputs, t.format.d3d_name()));
@@ -456,6 +486,7 @@ pub fn pass_json(
         "shader": out.cost.shader,
         "target": [t.width, t.height],
         "target_format": t.format.d3d_name(),
+        "drawn_by": out.drawn_by,
         "pass": pass_cost_json("pass", &out.cost),
         "outputs": out.outputs.iter().map(|o| serde_json::json!({
             "register": o.register,
