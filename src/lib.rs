@@ -1,3 +1,5 @@
+// Every public item has a doc comment (modules not yet done are marked where they are declared).
+#![warn(missing_docs)]
 //! # ps30 — Direct3D 9 pixel shader 3.0 assembly you can parse, measure, run and generate
 //!
 //! ps30 reads ps_3_0 assembly (with a real `REPEAT_BLOCK` macro) and
@@ -58,6 +60,9 @@
 // Diagnostics are large on purpose (message, label, help, notes) and only
 // travel on the error path, where their size costs nothing measurable.
 #![allow(clippy::result_large_err)]
+// The library prints nothing: results are data, and the binary decides what
+// reaches a stream.
+#![cfg_attr(not(test), deny(clippy::print_stdout, clippy::print_stderr))]
 
 pub mod core;
 pub mod jobs;

@@ -1,6 +1,10 @@
 //! The `ps30` binary: parses the command line and dispatches to one module
 //! of [`cli`] per subcommand (exit codes are documented there).
 
+// The binary writes only through `cli::io` (a closed stream is never a
+// panic): no print macros.
+#![deny(clippy::print_stdout, clippy::print_stderr)]
+
 mod cli;
 
 use clap::Parser;
@@ -16,7 +20,7 @@ fn main() -> ExitCode {
         }
     };
     cli::clean_up_on_interrupt();
-    let ui = Ui::new(parsed.quiet);
+    let ui = Ui::new(parsed.quiet, parsed.color);
     let outcome = match parsed.command {
         Command::Asm(args) => cli::asm::run(args, &ui),
         Command::Check(args) => cli::check::run(args, &ui),
@@ -28,17 +32,20 @@ fn main() -> ExitCode {
         Command::Compare(args) => cli::compare::run(args, &ui),
         Command::Translate(args) => cli::translate::run(args, &ui),
         Command::Profile(args) => cli::profile::run(args, &ui),
+        Command::Shaders(args) => cli::shaders::run(args, &ui),
         Command::Render(args) => cli::render::run(args, &ui),
         Command::Study(args) => cli::study::run(args, &ui),
         Command::Verify(args) => cli::verify::run(args, &ui),
         Command::Unroll(args) => cli::unroll::run(args, &ui),
         Command::Plan(args) => cli::plan::run(args, &ui),
+        Command::Completions(args) => cli::completions::run(args, &ui),
+        Command::Man(args) => cli::man::run(args, &ui),
     };
     match outcome {
         Ok(Outcome::Ok) => ExitCode::SUCCESS,
         Ok(Outcome::Problem) => ExitCode::from(1),
         Err(BadInput(msg)) => {
-            eprintln!("error: {msg}");
+            cli::io::eprint(&format!("error: {msg}\n"));
             ExitCode::from(2)
         }
     }

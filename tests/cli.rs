@@ -63,18 +63,17 @@ fn check_json_has_the_documented_fields() {
     );
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    let exact = |n: u64| serde_json::json!({"min": n, "max": n});
     assert_eq!(v["slots"], 511);
-    assert_eq!(v["executed"], 64_773);
-    assert_eq!(v["executed_min"], 64_773);
-    assert_eq!(v["executed_max"], 64_773);
-    assert_eq!(v["max_slots"], 512);
-    assert_eq!(v["max_executed"], 65_535);
+    assert_eq!(v["executed"], exact(64_773));
+    assert_eq!(v["limits"]["slots"], 512);
+    assert_eq!(v["limits"]["executed"], 65_535);
     assert_eq!(v["within_limits"], true);
     let loops = v["loops"].as_array().unwrap();
     assert_eq!(loops.len(), 1);
-    assert_eq!(loops[0]["iterations"], 128);
-    assert_eq!(loops[0]["cost_per_iteration"], 506);
-    assert_eq!(loops[0]["total"], 128 * 506);
+    assert_eq!(loops[0]["iterations"], exact(128));
+    assert_eq!(loops[0]["cost_per_iteration"], exact(506));
+    assert_eq!(loops[0]["total"], exact(128 * 506));
     assert_eq!(loops[0]["line"], 32);
 }
 
@@ -126,10 +125,8 @@ fn data_dependent_counts_are_reported_as_ranges() {
     let o = ps30(&["check", "d.psh", "--json"], dir.path());
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
-    assert!(v["executed"].is_null());
     // if 3 + else 1 + endif 1 + mov oC0 1 = 6 on both paths, plus 2 or 1.
-    assert_eq!(v["executed_min"], 7);
-    assert_eq!(v["executed_max"], 8);
+    assert_eq!(v["executed"], serde_json::json!({"min": 7, "max": 8}));
     assert_eq!(v["data_dependent"], true);
 }
 
@@ -256,21 +253,31 @@ fn luminance_json_has_the_documented_fields() {
         "agree",
         "target_format",
         "block",
+        "block_choice",
         "targets",
-        "executed_per_pixel",
+        "passes",
         "blocks",
     ] {
         assert!(!v[key].is_null(), "missing {key}");
     }
     assert_eq!(v["agree"], true);
-    assert_eq!(v["block"], serde_json::json!([125, 128]));
-    // 1024×512 image: ⌈1024/125⌉ × ⌈512/128⌉.
+    // No shader named: the plan's block for a 1024×512 image, 114×128
+    // (9 columns of 114 = 1,026, 2 padded; 4 rows of 128), not the
+    // article's 125×128.
+    assert_eq!(v["block_choice"]["source"], "planned");
+    assert_eq!(v["block"], serde_json::json!([114, 128]));
     assert_eq!(v["targets"], serde_json::json!([9, 4]));
-    // 5 set-up instructions and the output mov, 128 lines of rep 3 + 125·4 + mad 1 + endrep 2.
+    assert_eq!(v["padded_samples"], 2 * 512);
+    // The article's set-up (5) and output (1)... as generated: 5 set-up
+    // instructions, 128 lines of rep 3 + 114·4 + mad 1 + endrep 2.
+    let pass1 = &v["passes"][0];
+    assert_eq!(pass1["role"], "pass1");
+    let executed = 5 + 128 * (3 + 114 * 4 + 1 + 2);
     assert_eq!(
-        v["executed_per_pixel"]["pass1"],
-        6 + 128 * (3 + 500 + 1 + 2)
+        pass1["executed"],
+        serde_json::json!({"min": executed, "max": executed})
     );
+    assert_eq!(pass1["executed_emulated"], pass1["executed"]);
     let b = &v["blocks"][0];
     for key in ["x", "y", "emulated", "reference", "agree"] {
         assert!(!b[key].is_null(), "block missing {key}");
@@ -344,25 +351,58 @@ fn run_writes_a_target_that_reads_back() {
             "--int",
             "i2=52",
             "--const",
+            "c0=0,0,0,0",
+            "--const",
             "c1=0.0009765625,0.001953125,0,1",
             "--const",
             "c3=0.27,0.67,0.06,0.01",
             "-o",
             out.to_str().unwrap(),
             "--json",
+            "--texels",
         ],
         repo(),
     );
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
     // 5 set-up + 52 lines of (3 + 128·9 + 1 + 2) + 1.
-    assert_eq!(v["executed_per_pixel"], 6 + 52 * (3 + 128 * 9 + 1 + 2));
+    let executed = 6 + 52 * (3 + 128 * 9 + 1 + 2);
+    assert_eq!(
+        v["pass"]["executed_emulated"],
+        serde_json::json!({"min": executed, "max": executed})
+    );
     let img = ps30::core::image::load(&out, &ps30::core::image::ImageLimits::default()).unwrap();
     assert_eq!((img.width, img.height), (8, 10));
     let texels = v["texels"].as_array().unwrap();
+    assert_eq!(texels.len(), 80);
     for (t, p) in texels.iter().zip(&img.pixels) {
-        assert_eq!(t.as_f64().unwrap() as f32, p[0]);
+        assert_eq!(t[0].as_f64().unwrap() as f32, p[0]);
     }
+    // Without --texels, no per-pixel data.
+    let o = ps30(
+        &[
+            "run",
+            "corrected:loop",
+            "--image",
+            "assets/hdr/forest.hdr",
+            "--target",
+            "8x10",
+            "--int",
+            "i1=128",
+            "--int",
+            "i2=52",
+            "--const",
+            "c0=0,0,0,0",
+            "--const",
+            "c1=0.0009765625,0.001953125,0,1",
+            "--const",
+            "c3=0.27,0.67,0.06,0.01",
+            "--json",
+        ],
+        repo(),
+    );
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert!(v.get("texels").is_none());
 }
 
 #[test]
@@ -448,7 +488,7 @@ fn plan_json_has_the_documented_fields() {
     assert_eq!(art["executed_per_pixel"][0], 64_853);
     let rec = v["recommended"].as_str().unwrap();
     assert!(cands.iter().any(|c| c["name"] == rec));
-    assert_eq!(v["profile"]["max_slots"], 512);
+    assert_eq!(v["profile"]["slots"], 512);
 }
 
 #[test]
@@ -669,7 +709,11 @@ fn luminance_runs_a_generated_set_with_its_last_column_shader() {
     let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
     assert_eq!(v["agree"], true);
     assert_eq!(v["padded_samples"], 0);
-    assert_eq!(v["executed_per_pixel"]["pass1_last"], 57_093);
+    assert_eq!(v["passes"][1]["role"], "pass1_last");
+    assert_eq!(
+        v["passes"][1]["executed_emulated"],
+        serde_json::json!({"min": 57_093, "max": 57_093})
+    );
 }
 
 #[test]
@@ -744,13 +788,7 @@ fn asm_then_check_counts_as_the_text_and_disasm_assembles_to_the_same_bytes() {
         repo(),
     ));
     let compiled = json(&ps30(&["check", p2.to_str().unwrap(), "--json"], repo()));
-    for key in [
-        "slots",
-        "executed",
-        "executed_min",
-        "executed_max",
-        "verdict",
-    ] {
+    for key in ["slots", "executed", "verdict"] {
         assert_eq!(text[key], compiled[key], "{key}");
     }
     assert_eq!(compiled["slots"], 191);
@@ -759,7 +797,7 @@ fn asm_then_check_counts_as_the_text_and_disasm_assembles_to_the_same_bytes() {
             .as_array()
             .unwrap()
             .iter()
-            .map(|l| l["executed"].as_u64().unwrap())
+            .map(|l| l["executed"]["max"].as_u64().unwrap())
             .sum()
     };
     assert_eq!(sum(&text), sum(&compiled));
@@ -810,6 +848,9 @@ fn every_command_that_reads_a_shader_takes_bytecode_and_gets_the_same_results() 
                 a,
                 "--pass2",
                 b,
+                // A compiled shader states no block: give the listing's.
+                "--block",
+                "125x128",
                 "--json",
             ],
             repo(),
@@ -819,13 +860,13 @@ fn every_command_that_reads_a_shader_takes_bytecode_and_gets_the_same_results() 
         lum("corrected:unrolled", "corrected:pass2"),
         lum(&pass1, &pass2),
     );
-    for key in [
-        "log_average",
-        "reference_log_average",
-        "executed_per_pixel",
-        "agree",
-    ] {
+    for key in ["log_average", "reference_log_average", "agree"] {
         assert_eq!(t[key], c[key], "luminance {key}");
+    }
+    for pass in 0..2 {
+        let executed = |v: &serde_json::Value| v["passes"][pass]["executed"].clone();
+        assert!(executed(&t)["max"].is_u64(), "{t}");
+        assert_eq!(executed(&t), executed(&c), "pass {pass}");
     }
     let tm = |s: &str| {
         json(&ps30(
@@ -852,9 +893,13 @@ fn every_command_that_reads_a_shader_takes_bytecode_and_gets_the_same_results() 
                 "--target",
                 "9x4",
                 "--const",
+                "c0=0,0,0,0",
+                "--const",
                 "c1=0.0009765625,0.001953125,0,1",
                 "--const",
                 "c3=0.27,0.67,0.06,0.01",
+                "--int",
+                "i2=128",
                 "--json",
             ],
             repo(),
@@ -946,7 +991,10 @@ fn constants_are_given_by_their_names_in_the_constant_table() {
         &["check", f, "--int", "i0=5", "--bool", "b0=true", "--json"],
         repo(),
     ));
-    assert_eq!(by_register["executed"], 37);
+    assert_eq!(
+        by_register["executed"],
+        serde_json::json!({"min": 37, "max": 37})
+    );
     assert_eq!(
         by_register["constant_table"]["constants"][0]["name"],
         "g_fKey"
@@ -964,6 +1012,8 @@ fn constants_are_given_by_their_names_in_the_constant_table() {
                 c,
                 "--int",
                 "g_iSteps=2",
+                "--bool",
+                "g_bOn=false",
                 "--json",
             ],
             repo(),

@@ -54,7 +54,7 @@ fn expand_json_gives_the_source_and_slots() {
     ]);
     assert_eq!(o.status.code(), Some(0));
     let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
-    assert_eq!(v["source"], "asm/article/lum_pass2.psh");
+    assert_eq!(v["shader"], "asm/article/lum_pass2.psh");
     assert_eq!(v["slots"], 190);
     assert!(v["output"].is_null());
     assert_eq!(v["assembly"].as_str().unwrap().matches("texld").count(), 88);
@@ -62,7 +62,7 @@ fn expand_json_gives_the_source_and_slots() {
 
 #[test]
 fn quiet_keeps_results_and_drops_notes() {
-    // check: the result stays, the defi note goes.
+    // check: the result stays; the warning that defi overrides --int goes.
     let dir = tempfile::tempdir().unwrap();
     let f = dir.path().join("d.psh");
     std::fs::write(
@@ -72,7 +72,7 @@ fn quiet_keeps_results_and_drops_notes() {
     .unwrap();
     let f = f.to_str().unwrap();
     let loud = ps30(&["check", f, "--int", "i0=3"]);
-    assert!(String::from_utf8_lossy(&loud.stderr).contains("note:"));
+    assert!(String::from_utf8_lossy(&loud.stderr).contains("--int i0=… has no effect"));
     let quiet = ps30(&["check", f, "--int", "i0=3", "--quiet"]);
     assert_eq!(quiet.status.code(), Some(0));
     assert!(quiet.stderr.is_empty());

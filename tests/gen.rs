@@ -192,7 +192,11 @@ fn frame(w: u32, h: u32) {
         assert!(
             border.all_agree(),
             "{what}: {}",
-            ps30::present::luminance::run_text(&what, &border)
+            ps30::present::luminance::run_text(
+                &what,
+                &border,
+                &ps30::present::luminance::Choice::Given
+            )
         );
         assert_eq!(border.targets, (c.targets[0], c.targets[1]));
         assert_eq!(border.padded_samples, c.padded_border, "{what}");
@@ -213,7 +217,11 @@ fn frame(w: u32, h: u32) {
             assert!(
                 l.all_agree(),
                 "{what} with {last}: {}",
-                ps30::present::luminance::run_text(&what, &l)
+                ps30::present::luminance::run_text(
+                    &what,
+                    &l,
+                    &ps30::present::luminance::Choice::Given
+                )
             );
             // Padded samples in x become 0: only the padding in y is left.
             let covered_y = c.targets[1] as u64 * c.block[1] as u64;
@@ -471,7 +479,7 @@ fn nested_pass2_and_the_macro_form_run_and_agree() {
     assert!(
         r.all_agree(),
         "{}",
-        ps30::present::luminance::run_text("nested", &r)
+        ps30::present::luminance::run_text("nested", &r, &ps30::present::luminance::Choice::Given)
     );
     assert_eq!(
         r.pass2.executed_emulated,

@@ -53,7 +53,11 @@ fn corrected_shaders_agree_with_the_independent_reference_on_every_image() {
             assert!(
                 run.all_agree(),
                 "{name} {p1}: {}",
-                ps30::present::luminance::run_text(name, &run)
+                ps30::present::luminance::run_text(
+                    name,
+                    &run,
+                    &ps30::present::luminance::Choice::Given
+                )
             );
             // The pass-1 target against reference.json's independent block sums.
             let sums = &r["blocks"][key]["sums"];
@@ -183,7 +187,11 @@ fn f16_targets_overflow_on_large_blocks_and_work_on_small_ones() {
     assert!(
         small.all_agree(),
         "{}",
-        ps30::present::luminance::run_text("courtyard", &small)
+        ps30::present::luminance::run_text(
+            "courtyard",
+            &small,
+            &ps30::present::luminance::Choice::Given
+        )
     );
 }
 
@@ -205,7 +213,12 @@ fn results_are_identical_with_one_and_two_threads() {
         )
         .unwrap();
         outs.push(
-            serde_json::to_string(&ps30::present::luminance::run_json("forest.hdr", &r)).unwrap(),
+            serde_json::to_string(&ps30::present::luminance::run_json(
+                "forest.hdr",
+                &r,
+                &ps30::present::luminance::Choice::Given,
+            ))
+            .unwrap(),
         );
     }
     assert_eq!(outs[0], outs[1]);
@@ -246,7 +259,7 @@ fn a_last_column_shader_that_reads_the_real_width_removes_the_padding_in_x() {
     assert!(
         run.all_agree(),
         "{}",
-        ps30::present::luminance::run_text("c", &run)
+        ps30::present::luminance::run_text("c", &run, &ps30::present::luminance::Choice::Given)
     );
     // 1024 = 8 · 128: no padding in y either, so none at all.
     assert_eq!(run.padded_samples, 0);

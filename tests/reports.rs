@@ -24,12 +24,10 @@ fn files(dir: &Path) -> BTreeMap<String, Vec<u8>> {
 
 #[test]
 fn two_runs_write_the_same_bytes() {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let (a, b) = (tempfile::tempdir().unwrap(), tempfile::tempdir().unwrap());
     let write = |dir: &Path, threads| {
         let mut batch = ps30::core::output::Batch::new(dir).unwrap();
-        let g =
-            ps30::present::report::generate(&mut batch, dir, root, threads, &|_, _, _| {}).unwrap();
+        let g = ps30::present::report::generate(&mut batch, dir, threads, &|_, _, _| {}).unwrap();
         batch.commit().unwrap();
         g
     };

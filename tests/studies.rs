@@ -147,7 +147,7 @@ fn mip_luminance_on_a_power_of_two_frame_and_the_articles_frame() {
         "{}",
         article.weight_bound
     );
-    assert!((mip_luminance::weight_bound(1280, 1024, OddSides::Fold) - 0.1).abs() < 1e-12);
+    assert!((ps30::core::image::weight_bound(1280, 1024, OddSides::Fold) - 0.1).abs() < 1e-12);
     for f in &s.frames[..2] {
         let r = f.runs.iter().find(|r| r.range == (8.0, 8.0)).unwrap();
         assert!(f.article.agree);

@@ -8,9 +8,10 @@
 
 use super::BadInput;
 use clap::Args;
+use ps30::core::audit::Given;
 use ps30::core::bytecode::ctab::{ConstantTable, RegisterSet};
-use ps30::core::cost::Profile;
-use ps30::core::emu::{self, Address, Constants, Filter, MipFilter};
+use ps30::core::cost::{Environment, Profile};
+use ps30::core::emu::{self, Address, Constants, Filter, MipFilter, SamplerState};
 use ps30::core::image::TargetFormat;
 use ps30::core::load::Options;
 
@@ -291,9 +292,13 @@ pub struct InputArgs {
     pub max_input_bytes: u64,
 }
 
-/// Integer and boolean constants set by the application.
+/// Float, integer and boolean constants set by the application.
 #[derive(Args)]
 pub struct ConstantArgs {
+    /// Float constant set by the application, by register or by its name in the
+    /// shader's constant table, e.g. --const c3=0.27,0.67,0.06,0.01.
+    #[arg(long = "const", value_name = "cN|NAME=X[,Y,Z,W]", value_parser = parse_float_const)]
+    pub floats: Vec<(ConstRef, Vec<f32>)>,
     /// Integer constant set by the application, by register or by its name in the
     /// shader's constant table, e.g. --int i1=128 or --int i0=16,0,1,0.
     #[arg(long = "int", value_name = "iN|NAME=X[,Y,Z,W]", value_parser = parse_int_const)]
@@ -301,6 +306,13 @@ pub struct ConstantArgs {
     /// Boolean constant set by the application, by register or by name, e.g. --bool b0=true.
     #[arg(long = "bool", value_name = "bN|NAME=true|false", value_parser = parse_bool_const)]
     pub bools: Vec<(ConstRef, Vec<bool>)>,
+}
+
+impl ConstantArgs {
+    /// The constants as registers, names looked up in the shader's table.
+    pub fn resolve(&self, table: Option<&ConstantTable>) -> Result<Resolved, BadInput> {
+        Resolved::new(&self.floats, &self.ints, &self.bools, table)
+    }
 }
 
 /// Float, integer and boolean constants as registers (names resolved).
@@ -328,9 +340,30 @@ impl Resolved {
         })
     }
 
-    /// The register files of a draw.
+    /// The register files of a draw (registers nobody set stay 0, as in a
+    /// draw; the audit refuses a run that reads one).
     pub fn constants(&self) -> Constants {
         constants(&self.floats, &self.ints, &self.bools)
+    }
+
+    /// What the application gives, for the audit: these registers, the
+    /// `-D` names, and `preset_floats`, which the command sets itself.
+    pub fn given(&self, preset_floats: &[u32], source: &SourceArgs) -> Given {
+        Given {
+            floats: self.floats.iter().map(|c| c.0).collect(),
+            preset_floats: preset_floats.iter().copied().collect(),
+            ints: self.ints.iter().map(|c| c.0).collect(),
+            bools: self.bools.iter().map(|c| c.0).collect(),
+            defines: source.define.iter().map(|(n, _)| n.clone()).collect(),
+        }
+    }
+
+    /// The integer and boolean constants the cost model may use.
+    pub fn environment(&self) -> Environment {
+        Environment {
+            ints: self.ints.iter().copied().collect(),
+            bools: self.bools.iter().copied().collect(),
+        }
     }
 }
 
@@ -455,10 +488,39 @@ impl ExecArgs {
     }
 }
 
+/// s0's sampler state for commands that draw over an image.
+#[derive(Args)]
+pub struct SamplerArgs {
+    /// s0's MAGFILTER and MINFILTER: point (nearest texel) or linear (bilinear).
+    #[arg(long, value_enum, default_value = "point")]
+    pub filter: FilterArg,
+    /// s0's ADDRESSU and ADDRESSV: what a read outside [0, 1] returns.
+    #[arg(long, value_enum, value_name = "MODE", default_value = "border")]
+    pub address: AddressArg,
+    /// Border colour R,G,B,A for --address border.
+    #[arg(long, value_name = "R,G,B,A", value_parser = parse_float4, default_value = "0,0,0,0", allow_negative_numbers = true)]
+    pub border: [f32; 4],
+}
+
+impl SamplerArgs {
+    /// The sampler state these flags describe (no mips).
+    pub fn state(&self) -> SamplerState {
+        let address = self.address.into();
+        SamplerState {
+            address_u: address,
+            address_v: address,
+            border: self.border,
+            ..SamplerState::filtered(self.filter.into())
+        }
+    }
+}
+
 /// Render-target formats.
 #[derive(Clone, Copy, clap::ValueEnum)]
 pub enum FormatArg {
+    /// D3DFMT_R32F: one 32-bit float channel (red).
     F32,
+    /// D3DFMT_A16B16G16R16F: four half-float channels, ±65,504 at most.
     F16,
 }
 
@@ -474,7 +536,9 @@ impl From<FormatArg> for TargetFormat {
 /// MAGFILTER / MINFILTER.
 #[derive(Clone, Copy, Debug, clap::ValueEnum)]
 pub enum FilterArg {
+    /// The nearest texel.
     Point,
+    /// Bilinear: the four nearest texels, weighted.
     Linear,
 }
 
@@ -490,8 +554,11 @@ impl From<FilterArg> for Filter {
 /// MIPFILTER.
 #[derive(Clone, Copy, Debug, clap::ValueEnum)]
 pub enum MipFilterArg {
+    /// Level 0 only.
     None,
+    /// The nearest level.
     Point,
+    /// A blend of the two nearest levels.
     Linear,
 }
 
@@ -508,10 +575,15 @@ impl From<MipFilterArg> for MipFilter {
 /// ADDRESSU / ADDRESSV.
 #[derive(Clone, Copy, Debug, clap::ValueEnum)]
 pub enum AddressArg {
+    /// The border colour (--border).
     Border,
+    /// The nearest edge texel.
     Clamp,
+    /// Repeat the image.
     Wrap,
+    /// Repeat, every other copy mirrored.
     Mirror,
+    /// Mirror once about 0, then clamp.
     Mirroronce,
 }
 

@@ -3,7 +3,9 @@
 //! would write it.
 
 use super::args::{InputArgs, SourceArgs};
-use super::io::{check_output_path, color_stderr, print_bytes, print_json, report, shader_file};
+use super::io::{
+    check_output_path, emit, eprint, print, print_bytes, print_json, shader_file, source_error,
+};
 use super::ui::Ui;
 use super::{BadInput, Outcome};
 use ps30::core::bytecode::write::to_bytes;
@@ -43,8 +45,10 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
     }
     let options = args.source.options();
     let file = shader_file(&args.file, &options, args.input.max_input_bytes)?;
-    let (loaded, tokens) = load::assemble(file, &options).map_err(|e| report(&e))?;
-    loaded.warnings.emit(&loaded.file, color_stderr());
+    let (loaded, tokens) = load::assemble(file, &options).map_err(|e| source_error(ui, &e))?;
+    if !ui.quiet {
+        emit(ui, &loaded.warnings, &loaded.file);
+    }
     let bytes = to_bytes(&tokens);
     if to_stdout {
         print_bytes(&bytes)?;
@@ -75,9 +79,9 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
             thousands(slots as u64)
         );
         if to_stdout {
-            eprintln!("{line}");
+            eprint(&format!("{line}\n"));
         } else {
-            println!("{line}");
+            print(&format!("{line}\n"))?;
         }
     }
     Ok(Outcome::Ok)

@@ -1,18 +1,20 @@
 //! `ps30 check`: slots and executed instructions against the limits.
 
-use super::args::{ConstantArgs, InputArgs, LimitArgs, Resolved, SourceArgs};
-use super::io::{load_file, print_json, say};
+use super::args::{ConstantArgs, InputArgs, LimitArgs, SourceArgs};
+use super::io::{audit, load_shader, print_json, say};
 use super::ui::Ui;
 use super::Outcome;
-use ps30::core::cost::{self, Environment, Profile, Verdict};
-use ps30::present::check::{check_json, check_text};
+use ps30::core::cost::{self, Profile, Verdict};
+use ps30::present::check::{check_json, check_text, check_text_short};
 use ps30::present::constants::{table_json, table_text};
 use serde_json::Value;
 
 #[derive(clap::Args)]
 pub struct Args {
-    /// Shader: assembly or ps_3_0 bytecode (`-` reads standard input).
-    file: String,
+    /// The shader: a file (assembly or ps_3_0 bytecode), `-` for standard input, or a
+    /// bundled name such as article:loop (`ps30 shaders` lists them).
+    #[arg(value_name = "SHADER")]
+    shader: String,
     #[command(flatten)]
     source: SourceArgs,
     #[command(flatten)]
@@ -27,45 +29,30 @@ pub struct Args {
 }
 
 pub fn run(args: Args, ui: &Ui) -> super::Result {
-    let loaded = load_file(
-        &args.file,
+    let loaded = load_shader(
+        ui,
+        &args.shader,
         &args.source.options(),
         args.input.max_input_bytes,
     )?;
-    let given = Resolved::new(
-        &[],
-        &args.constants.ints,
-        &args.constants.bools,
-        loaded.constants.as_ref(),
-    )?;
-    let env = Environment {
-        ints: given.ints.into_iter().collect(),
-        bools: given.bools.into_iter().collect(),
-    };
-    for r in env.ints.keys() {
-        if !ui.quiet && loaded.shader.program().int_def(*r).is_some() {
-            eprintln!("note: i{r} is defined in the shader (defi), which overrides --int i{r}");
-        }
-    }
+    let resolved = args.constants.resolve(loaded.constants.as_ref())?;
+    let found = audit(ui, &loaded, &resolved.given(&[], &args.source), false)?;
+    let env = resolved.environment();
     let profile = Profile {
         max_slots: args.limits.max_slots,
         max_executed: args.limits.max_executed,
         ..Profile::ps_3_0()
     };
     let a = cost::analyse(&loaded.shader, &loaded.file, &env, &profile)?;
-    let name = loaded.file.name.clone();
+    let name = &loaded.file.name;
     if args.json {
-        let warnings: Vec<String> = loaded
-            .warnings
-            .items
-            .iter()
-            .map(|w| w.to_string())
-            .collect();
-        let mut json = check_json(&name, &a, &warnings);
+        let mut json = check_json(&loaded, &a, &found);
         json["constant_table"] = loaded.constants.as_ref().map_or(Value::Null, table_json);
         print_json(&json)?;
+    } else if ui.quiet {
+        say(ui, &check_text_short(name, &a))?;
     } else {
-        let mut text = check_text(&name, &a);
+        let mut text = check_text(name, &a);
         if let Some(t) = &loaded.constants {
             text.push('\n');
             text.push_str(&table_text(t));

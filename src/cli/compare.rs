@@ -3,16 +3,15 @@
 //! `reports/gpu-crosscheck.md`).
 
 use super::args::{
-    parse_delta, parse_float4, parse_float_const, parse_size, AddressArg, ConstRef, ConstantArgs,
-    FilterArg, FloatRulesArg, FormatArg, InputArgs, Resolved, SourceArgs,
+    parse_delta, parse_float4, parse_size, AddressArg, ConstantArgs, FilterArg, FloatRulesArg,
+    FormatArg, InputArgs, SourceArgs,
 };
-use super::io::{color_stderr, print_json, say, shader_source};
+use super::io::{audit, eprint, load_shader, print_json, say, shader_source};
 use super::ui::Ui;
 use super::{BadInput, Outcome};
 use ps30::core::emu::{Draw, SamplerState};
 use ps30::core::gpu::{Gpu, TargetKind};
 use ps30::core::image::{self, ImageLimits};
-use ps30::core::load;
 use ps30::jobs::compare::{self, all, explain};
 use ps30::jobs::luminance::{self, block_start};
 use ps30::present::compare as show;
@@ -62,12 +61,10 @@ pub struct Args {
     input: InputArgs,
     #[command(flatten)]
     constants: ConstantArgs,
-    /// Float constant set by the application, by register or by its name in the
-    /// shader's constant table, e.g. --const c3=0.27,0.67,0.06,0.01 or --const g_fKey=0.18.
-    #[arg(long = "const", value_name = "cN|NAME=X[,Y,Z,W]", value_parser = parse_float_const)]
-    floats: Vec<(ConstRef, Vec<f32>)>,
+    /// s0's MAGFILTER and MINFILTER (one draw): point (nearest texel) or linear (bilinear).
     #[arg(long, value_enum, default_value = "point")]
     filter: FilterArg,
+    /// s0's ADDRESSU and ADDRESSV (one draw): what a read outside [0, 1] returns.
     #[arg(long, value_enum, default_value = "border")]
     address: AddressArg,
     /// Border colour R,G,B,A for --address border.
@@ -100,7 +97,7 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
     let img = image::load(&path, &ImageLimits::default())?;
     let gpu = Arc::new(Gpu::open()?);
     if !ui.quiet && !args.json {
-        eprintln!("device: {}", gpu.info().line());
+        eprint(&format!("device: {}\n", gpu.info().line()));
     }
     let name = path.display().to_string();
     if args.luminance {
@@ -149,11 +146,7 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
     let (tw, th) = args
         .target
         .ok_or_else(|| BadInput("--target WxH is needed for one draw".into()))?;
-    let src = shader_source(spec, args.input.max_input_bytes)?;
-    let loaded = load::load(src.file, &args.source.options()).map_err(|e| {
-        e.diagnostics.emit(&e.file, color_stderr());
-        BadInput(e.to_string())
-    })?;
+    let loaded = load_shader(ui, spec, &args.source.options(), args.input.max_input_bytes)?;
     let program = loaded.shader.program();
     let mut draw = Draw::new(tw, th);
     draw.float_rules = args.float_rules.into();
@@ -172,13 +165,9 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
             ),
         ));
     }
-    draw.constants = Resolved::new(
-        &args.floats,
-        &args.constants.ints,
-        &args.constants.bools,
-        loaded.constants.as_ref(),
-    )?
-    .constants();
+    let resolved = args.constants.resolve(loaded.constants.as_ref())?;
+    audit(ui, &loaded, &resolved.given(&[], &args.source), true)?;
+    draw.constants = resolved.constants();
     let address = args.address.into();
     if program.sampler_type(0).is_some() {
         draw.samplers.push((

@@ -2,7 +2,7 @@
 //! fxc's, which `ps30 asm` turns back into the same tokens.
 
 use super::args::{InputArgs, SourceArgs};
-use super::io::{print, print_json, read_input, report};
+use super::io::{exists, print, print_json, read_input, source_error};
 use super::ui::Ui;
 use super::{BadInput, Outcome};
 use ps30::core::bytecode::{self, listing::listing, read::read, write::to_bytes};
@@ -22,16 +22,19 @@ pub struct Args {
     json: bool,
 }
 
-pub fn run(args: Args, _ui: &Ui) -> super::Result {
+pub fn run(args: Args, ui: &Ui) -> super::Result {
     let options = args.source.options();
     let (name, mut bytes) = match ps30::jobs::bundled::listing(&args.file) {
         Some((name, text)) => (name.to_string(), text.as_bytes().to_vec()),
-        None => read_input(&args.file, args.input.max_input_bytes)?,
+        None => {
+            exists(&args.file, std::path::Path::new(&args.file))?;
+            read_input(&args.file, args.input.max_input_bytes)?
+        }
     };
     if !bytecode::is_bytecode(&bytes) {
         // Assembly: what ps30 asm would write.
         let file = load::source_file(&name, bytes, &options)?;
-        let (_, tokens) = load::assemble(file, &options).map_err(|e| report(&e))?;
+        let (_, tokens) = load::assemble(file, &options).map_err(|e| source_error(ui, &e))?;
         bytes = to_bytes(&tokens);
     }
     let module = read(&bytes, options.max_expanded).map_err(|error| {

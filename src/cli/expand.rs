@@ -1,37 +1,46 @@
 //! `ps30 expand`: the shader as plain assembly with every macro expanded.
 
 use super::args::{InputArgs, SourceArgs};
-use super::io::{check_output_path, load_file, print, print_json};
+use super::io::{audit, check_output_path, load_shader, print, print_json};
 use super::ui::Ui;
 use super::{BadInput, Outcome};
+use ps30::core::audit::Given;
 use ps30::core::front::print::write_program;
 use std::path::{Path, PathBuf};
 
 #[derive(clap::Args)]
 pub struct Args {
-    /// Shader: assembly or ps_3_0 bytecode (`-` reads standard input).
-    file: String,
+    /// The shader: a file (assembly or ps_3_0 bytecode), `-` for standard input, or a
+    /// bundled name such as article:pass2 (`ps30 shaders` lists them).
+    #[arg(value_name = "SHADER")]
+    shader: String,
     #[command(flatten)]
     source: SourceArgs,
     #[command(flatten)]
     input: InputArgs,
     /// Write to this file (atomically) instead of stdout.
-    #[arg(short, long)]
+    #[arg(short, long, value_name = "FILE")]
     output: Option<PathBuf>,
     /// Print JSON (source, slots, instructions, output, assembly) instead of text.
     #[arg(long)]
     json: bool,
 }
 
-pub fn run(args: Args, _ui: &Ui) -> super::Result {
+pub fn run(args: Args, ui: &Ui) -> super::Result {
     if let Some(path) = &args.output {
-        check_output_path(path, &[Path::new(&args.file)])?;
+        check_output_path(path, &[Path::new(&args.shader)])?;
     }
-    let loaded = load_file(
-        &args.file,
+    let loaded = load_shader(
+        ui,
+        &args.shader,
         &args.source.options(),
         args.input.max_input_bytes,
     )?;
+    let given = Given {
+        defines: args.source.define.iter().map(|(n, _)| n.clone()).collect(),
+        ..Given::default()
+    };
+    let found = audit(ui, &loaded, &given, false)?;
     let text = format!(
         "// expanded from {} by ps30 expand: {} instruction slots\n{}",
         loaded.file.name,
@@ -43,15 +52,16 @@ pub fn run(args: Args, _ui: &Ui) -> super::Result {
             .map_err(|e| BadInput(format!("{}: {e}", path.display())))?;
     }
     if args.json {
-        print_json(&serde_json::json!({
-            "source": loaded.file.name,
-            "slots": loaded.shader.info().total_slots,
-            "instructions": loaded.shader.instructions().len(),
-            "output": args.output.as_ref().map(|p| p.display().to_string()),
-            "assembly": text,
-        }))?;
+        print_json(&ps30::present::check::expand_json(
+            &loaded,
+            &found,
+            args.output.as_deref(),
+            &text,
+        ))?;
     } else if args.output.is_none() {
         print(&text)?;
+    } else if let Some(path) = args.output.as_ref().filter(|_| !ui.quiet) {
+        print(&format!("wrote {}\n", path.display()))?;
     }
     Ok(Outcome::Ok)
 }

@@ -1,21 +1,18 @@
-//! What every subcommand does at its edges: reading a shader (a file, `-`
-//! for standard input, or a bundled name; assembly text or ps_3_0 bytecode,
-//! recognised by content), printing to stdout (a closed pipe is success),
+//! What every subcommand does at its edges: reading a shader (a bundled
+//! name, a file, or `-` for standard input; assembly text or ps_3_0
+//! bytecode, recognised by content), printing to stdout (a closed pipe is
+//! success), writing to stderr (a closed stderr is no reason to stop),
 //! emitting diagnostics, and refusing an output path before any work.
 
 use super::ui::Ui;
 use super::BadInput;
-use ps30::core::diag::{SourceError, SourceFile};
+use ps30::core::audit::{self, Finding, Given, Kind};
+use ps30::core::diag::{Diagnostics, SourceFile};
 use ps30::core::load::{self, Loaded, Options};
+use ps30::jobs::bundled::{self, Named};
 use ps30::jobs::luminance::ShaderSource;
-use std::io::{IsTerminal, Read, Write};
+use std::io::{Read, Write};
 use std::path::Path;
-
-/// Whether diagnostics on stderr take colour: a terminal, and `NO_COLOR`
-/// unset or empty (no-color.org).
-pub fn color_stderr() -> bool {
-    std::env::var_os("NO_COLOR").is_none_or(|v| v.is_empty()) && std::io::stderr().is_terminal()
-}
 
 /// Writes to stdout. A reader that went away (`ps30 … | head`) is not an
 /// error: there is nobody left to tell anything, so the command ends with
@@ -35,6 +32,17 @@ pub fn print_bytes(out: &[u8]) -> std::io::Result<()> {
     }
 }
 
+/// Writes to stderr, ignoring failure: when stderr is closed or full
+/// (`ps30 … 2>&1 | head`), messages have nowhere to go, and the command still
+/// ends with the exit code its work earned. The only way the binary writes
+/// to stderr (`eprintln!` would panic on a closed stream).
+pub fn eprint(text: &str) {
+    let mut stderr = std::io::stderr().lock();
+    let _ = stderr
+        .write_all(text.as_bytes())
+        .and_then(|()| stderr.flush());
+}
+
 /// Prints human-readable text, its status words coloured when stdout
 /// takes colour (JSON and assembly go through [`print`] untouched).
 pub fn say(ui: &Ui, out: &str) -> std::io::Result<()> {
@@ -45,6 +53,12 @@ pub fn say(ui: &Ui, out: &str) -> std::io::Result<()> {
 pub fn print_json(v: &impl serde::Serialize) -> Result<(), BadInput> {
     print(&(serde_json::to_string_pretty(v)? + "\n"))?;
     Ok(())
+}
+
+/// Diagnostics to stderr, compiler-style, coloured as `ui` says: identical
+/// ones grouped, the first [`ps30::core::diag::MAX_SHOWN`] shown.
+pub fn emit(ui: &Ui, diagnostics: &Diagnostics, file: &SourceFile) {
+    eprint(&diagnostics.render_styled(file, ui.color_stderr));
 }
 
 /// What messages call standard input.
@@ -74,14 +88,38 @@ pub fn read_input(spec: &str, max_bytes: u64) -> Result<(String, Vec<u8>), BadIn
     Ok((name.to_string(), bytes))
 }
 
-/// A shader by bundled name, file path or `-` (standard input): assembly
-/// text or ps_3_0 bytecode, told apart by content, not by name.
+/// A shader argument, by the one rule of [`bundled::resolve`]: a bundled
+/// name (`ps30 shaders` lists them), `-` (standard input) or a file (at most
+/// `max_bytes` long), assembly text or ps_3_0 bytecode told apart by
+/// content (see [`load::source_file`]: not UTF-8 is named by line and
+/// column, a byte-order mark is dropped). A file that does not exist gets
+/// the closest bundled name as a suggestion when there is one.
 pub fn shader_file(spec: &str, options: &Options, max_bytes: u64) -> Result<SourceFile, BadInput> {
-    if let Some((name, text)) = ps30::jobs::bundled::listing(spec) {
-        return Ok(SourceFile::new(name, text));
-    }
+    let path = match bundled::resolve(spec) {
+        Named::Bundled(b) => return Ok(SourceFile::new(b.path, b.text)),
+        Named::File(path) => Path::new(path),
+    };
+    exists(spec, path)?;
     let (name, bytes) = read_input(spec, max_bytes)?;
     Ok(load::source_file(&name, bytes, options)?)
+}
+
+/// Bad input when a shader argument names no file (`-` always exists):
+/// with the closest bundled name as a suggestion when there is one.
+pub fn exists(spec: &str, path: &Path) -> Result<(), BadInput> {
+    if spec == "-" || path.exists() {
+        return Ok(());
+    }
+    let hint = match bundled::suggest(spec) {
+        Some(name) => {
+            format!("; did you mean `{name}`? (`ps30 shaders` lists the bundled shaders)")
+        }
+        None if spec.contains(':') => {
+            "; no bundled shader has this name either (`ps30 shaders` lists them)".to_string()
+        }
+        None => String::new(),
+    };
+    Err(BadInput(format!("{spec}: no such file{hint}")))
 }
 
 /// A shader to run, as [`shader_file`] reads it.
@@ -93,28 +131,72 @@ pub fn shader_source(spec: &str, max_bytes: u64) -> Result<ShaderSource, BadInpu
     )?))
 }
 
-/// Prints a source error's diagnostics to stderr; the error is a one-line
-/// count (the diagnostics say the rest).
-pub fn report(e: &SourceError) -> BadInput {
-    e.diagnostics.emit(&e.file, color_stderr());
-    let n = e.diagnostics.errors().count();
-    BadInput(format!(
-        "{}: {n} error{}",
-        e.file.name,
-        if n == 1 { "" } else { "s" }
-    ))
-}
-
-/// Loads a shader (see [`shader_file`]): warnings to stderr; on errors every
-/// diagnostic to stderr and a one-line summary as the error.
-pub fn load_file(spec: &str, options: &Options, max_bytes: u64) -> Result<Loaded, BadInput> {
+/// Loads a shader argument (see [`shader_file`]): warnings to stderr; on
+/// errors every diagnostic to stderr and a one-line summary as the error.
+pub fn load_shader(
+    ui: &Ui,
+    spec: &str,
+    options: &Options,
+    max_bytes: u64,
+) -> Result<Loaded, BadInput> {
     let file = shader_file(spec, options, max_bytes)?;
     match load::load(file, options) {
         Ok(l) => {
-            l.warnings.emit(&l.file, color_stderr());
+            if !ui.quiet {
+                emit(ui, &l.warnings, &l.file);
+            }
             Ok(l)
         }
-        Err(e) => Err(report(&e)),
+        Err(e) => Err(source_error(ui, &e)),
+    }
+}
+
+/// A shader that did not load: its diagnostics to stderr, and the summary
+/// line `main` prints after them.
+pub fn source_error(ui: &Ui, e: &ps30::core::diag::SourceError) -> BadInput {
+    emit(ui, &e.diagnostics, &e.file);
+    let n = e.diagnostics.errors().count();
+    BadInput(format!(
+        "{}: {}",
+        e.file.name,
+        ps30::core::numbers::plural(n as u64, "error", "errors")
+    ))
+}
+
+/// The constants given to a shader held against what it reads and defines
+/// (see [`ps30::core::audit`]): warnings to stderr (unless quiet), and, when
+/// the shader is about to `run`, bad input if it reads a register nobody
+/// set — nothing runs on zeros nobody chose. A command that only counts
+/// (`check`) passes `run = false`: its counts already give the range an
+/// unset loop count allows.
+pub fn audit(ui: &Ui, loaded: &Loaded, given: &Given, run: bool) -> Result<Vec<Finding>, BadInput> {
+    let found: Vec<Finding> = audit::audit(&loaded.shader, &loaded.defines_used, given)
+        .into_iter()
+        .filter(|f| run || f.kind != Kind::Unset)
+        .collect();
+    if !ui.quiet {
+        for f in found.iter().filter(|f| f.kind != Kind::Unset) {
+            eprint(&render_finding(ui, &loaded.file, f));
+        }
+    }
+    let Some(error) = audit::unset_diagnostic(&found) else {
+        return Ok(found);
+    };
+    eprint(&error.render_styled(&loaded.file, ui.color_stderr));
+    let unset = audit::unset_names(&found);
+    Err(BadInput(format!(
+        "{}: reads {} that nothing sets; nothing was run",
+        loaded.file.name,
+        ps30::core::numbers::list(&unset)
+    )))
+}
+
+/// An audit finding as text: compiler-style where the shader mentions the
+/// register, one line and its help where it does not.
+fn render_finding(ui: &Ui, file: &SourceFile, f: &Finding) -> String {
+    match f.span {
+        Some(_) => f.diagnostic().render_styled(file, ui.color_stderr),
+        None => format!("warning: {}\n  = help: {}\n", f.message(), f.help()),
     }
 }
 
@@ -127,4 +209,11 @@ pub fn check_output_path(path: &Path, inputs: &[&Path]) -> Result<(), BadInput> 
 /// Refuses an output directory before any work, by the same rules.
 pub fn check_output_dir(dir: &Path) -> Result<(), BadInput> {
     ps30::core::output::check_directory(dir).map_err(BadInput)
+}
+
+/// [`check_output_path`] for an image, whose extension must also name a
+/// format ps30 writes (see [`ps30::core::image::OutputFormat`]).
+pub fn check_image_output(path: &Path, inputs: &[&Path]) -> Result<(), BadInput> {
+    ps30::core::image::OutputFormat::of(path)?;
+    check_output_path(path, inputs)
 }

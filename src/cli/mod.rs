@@ -14,14 +14,17 @@ pub mod args;
 pub mod asm;
 pub mod check;
 pub mod compare;
+pub mod completions;
 pub mod disasm;
 pub mod expand;
 pub mod io;
 pub mod luminance;
+pub mod man;
 pub mod plan;
 pub mod profile;
 pub mod render;
 pub mod run;
+pub mod shaders;
 pub mod study;
 pub mod tonemap;
 pub mod translate;
@@ -41,6 +44,15 @@ pub struct Cli {
     /// Print only results and problems: no progress bars, notes or "wrote …" lines.
     #[arg(long, short, global = true)]
     pub quiet: bool,
+    /// When to colour output: auto (a terminal, and NO_COLOR unset), always or never.
+    #[arg(
+        long,
+        global = true,
+        value_enum,
+        value_name = "WHEN",
+        default_value = "auto"
+    )]
+    pub color: ui::ColorWhen,
     #[command(subcommand)]
     pub command: Command,
 }
@@ -79,7 +91,7 @@ pub enum Command {
     Luminance(luminance::Args),
     /// Tone-map an HDR image with the article's operator, run in the emulator, into an 8-bit sRGB PNG.
     #[command(
-        after_help = "L̄w comes from the corrected luminance passes (125x128 blocks, R32F). The shader is\nasm/tonemap/reinhard.psh; every pixel is cross-checked against the f64 reference within a\nbound derived from the shader's f32 arithmetic (exit 1 if any pixel is outside it).\n\nExamples:\n  ps30 tonemap assets/hdr/courtyard_1280x1024.exr -o courtyard.png\n  ps30 tonemap assets/hdr/city.exr -o city.png --key 0.36 --white 5000\n  ps30 tonemap assets/hdr/forest.hdr --white inf --json"
+        after_help = "L̄w comes from the luminance passes planned for the image's size (R32F). The shader is\nasm/tonemap/reinhard.psh; every pixel is cross-checked against the f64 reference within a\nbound derived from the shader's f32 arithmetic (exit 1 if any pixel is outside it).\n\nExamples:\n  ps30 tonemap assets/hdr/courtyard_1280x1024.exr -o courtyard.png\n  ps30 tonemap assets/hdr/city.exr -o city.png --key 0.36 --white 5000\n  ps30 tonemap assets/hdr/forest.hdr --white inf --json"
     )]
     Tonemap(tonemap::Args),
     /// Run a draw on the emulator and on a GPU and compare them pixel by pixel (--all: every bundled shader, into reports/gpu-crosscheck.md).
@@ -98,6 +110,11 @@ pub enum Command {
         after_help = "Examples:\n  ps30 profile lights:select --gbuffer 64x64\n  ps30 profile lights:texld --gbuffer 64x64\n  ps30 profile corrected:loop --image assets/hdr/courtyard_1280x1024.exr --target 10x8 \\\n      --int i1=8 --int i2=8 --const c1=0.00078125,0.0009765625,0,1 --const c3=0.27,0.67,0.06,0.01"
     )]
     Profile(profile::Args),
+    /// List the shaders bundled in the binary, or print one.
+    #[command(
+        after_help = "Every command that reads a shader takes a bundled name (family:variant) or a file path.\n\nExamples:\n  ps30 shaders\n  ps30 shaders article:loop\n  ps30 shaders --json"
+    )]
+    Shaders(shaders::Args),
     /// Run a draw list: clears, draws with blending and write masks, mip-chain reductions.
     #[command(
         after_help = "The draw list is JSON: named targets (size, D3D9 format), textures (images or the\nsynthetic G-buffer of asm/lights/), and steps: {\"clear\": T, \"color\": [r,g,b,a]},\n{\"draw\": T, \"shader\": S, \"inputs\", \"constants\", \"samplers\", \"blend\", \"write\"},\n{\"mips\": T, \"odd\": \"fold\"|\"bilinear\"}. Every draw covers its whole target; the output\nmerger blends in the target's precision. The README's `ps30 render` section has the format.\n\nExit codes: 0 ok; 1 a draw's executed count left the cost model's range; 2 bad input.\n\nExamples:\n  ps30 render drawlists/lights.json\n  ps30 render drawlists/log-lights.json -o out/ --every-step\n  ps30 render drawlists/lights.json --json"
@@ -123,6 +140,16 @@ pub enum Command {
         after_help = "Exit codes: 0 a two-pass plan fits; 1 none does (a third pass would be needed, or\nnothing fits the profile); 2 bad input.\n\nExamples:\n  ps30 plan --frame 1280x1024\n  ps30 plan --frame 1920x1080 --max-slots 1024 --json"
     )]
     Plan(plan::Args),
+    /// Print a shell-completion script (bash, zsh, fish, elvish, powershell).
+    #[command(
+        after_help = "Examples:\n  ps30 completions bash > ~/.local/share/bash-completion/completions/ps30\n  ps30 completions zsh > ~/.zfunc/_ps30\n  ps30 completions fish > ~/.config/fish/completions/ps30.fish"
+    )]
+    Completions(completions::Args),
+    /// Print the manual page (roff), of ps30 or of one subcommand.
+    #[command(
+        after_help = "Examples:\n  ps30 man > ps30.1 && man ./ps30.1\n  ps30 man check | man -l -\n  for c in check run luminance; do ps30 man $c > ps30-$c.1; done"
+    )]
+    Man(man::Args),
 }
 
 /// Exit code of a run interrupted by a signal (128 + SIGINT, as shells

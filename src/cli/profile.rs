@@ -3,68 +3,53 @@
 //! behaviour.
 
 use super::args::{
-    parse_bool_const, parse_define, parse_finite, parse_float4, parse_float_const, parse_int_const,
-    parse_size, AddressArg, ConstRef, ExecArgs, FilterArg, InputArgs, MipFilterArg, Resolved,
+    parse_finite, parse_size, ConstantArgs, ExecArgs, InputArgs, MipFilterArg, SamplerArgs,
+    SourceArgs,
 };
-use super::io::{color_stderr, print, print_json, shader_source};
+use super::io::{audit, load_shader, print_json, say};
 use super::ui::Ui;
 use super::{BadInput, Outcome};
 use ps30::core::emu::SamplerState;
 use ps30::core::image;
-use ps30::core::load;
-use ps30::jobs::profile::{profile_file, Input, Setup};
+use ps30::jobs::profile::{floats_set_by, profile_loaded, Input, Setup};
 use ps30::present::profile::{text, to_json};
 
-#[derive(clap::Args, Debug)]
+#[derive(clap::Args)]
 pub struct Args {
-    /// Shader file or bundled name (corrected:unrolled, lights:select, lights:texld, …).
+    /// The shader: a file (assembly or ps_3_0 bytecode), `-` for standard input, or a
+    /// bundled name such as lights:select (`ps30 shaders` lists them).
+    #[arg(value_name = "SHADER")]
     shader: String,
     /// Run on the synthetic G-buffer of the light-model shaders (asm/lights/), WxH pixels.
     #[arg(long, value_name = "WxH", value_parser = parse_size, conflicts_with_all = ["image", "target"], required_unless_present = "image")]
     gbuffer: Option<(u32, u32)>,
-    /// Image sampled by s0; pixel (x, y) of the target gets v0.xy = the centre of the
-    /// top-left texel of its block of the image, as in `ps30 run`.
-    #[arg(long, requires = "target")]
+    /// Image sampled by s0 (OpenEXR, Radiance .hdr or PFM); pixel (x, y) of the target gets
+    /// v0.xy = the centre of the top-left texel of its block of the image, as in `ps30 run`.
+    #[arg(long, value_name = "IMAGE", requires = "target")]
     image: Option<std::path::PathBuf>,
     /// Render-target size WxH (with --image).
     #[arg(long, value_name = "WxH", value_parser = parse_size, requires = "image")]
     target: Option<(u32, u32)>,
-    /// Bind a REPEAT_BLOCK count name, e.g. -D xsize=11.
-    #[arg(short = 'D', value_name = "NAME=N", value_parser = parse_define)]
-    define: Vec<(String, u64)>,
-    /// Integer constant, by register or by name, e.g. --int i2=128 or --int i0=16,0,1,0.
-    #[arg(long = "int", value_name = "iN|NAME=X[,Y,Z,W]", value_parser = parse_int_const)]
-    ints: Vec<(ConstRef, Vec<i32>)>,
-    /// Boolean constant, by register or by name, e.g. --bool b0=true.
-    #[arg(long = "bool", value_name = "bN|NAME=true|false", value_parser = parse_bool_const)]
-    bools: Vec<(ConstRef, Vec<bool>)>,
-    /// Float constant, by register or by its name in the shader's constant table,
-    /// e.g. --const c3=0.27,0.67,0.06,0.01 or --const g_fKey=0.18.
-    #[arg(long = "const", value_name = "cN|NAME=X[,Y,Z,W]", value_parser = parse_float_const)]
-    floats: Vec<(ConstRef, Vec<f32>)>,
-    /// s0's MAGFILTER and MINFILTER (with --image).
-    #[arg(long, value_enum, default_value = "point")]
-    filter: FilterArg,
-    /// s0's addressing (with --image).
-    #[arg(long, value_enum, default_value = "border")]
-    address: AddressArg,
-    /// Border colour R,G,B,A for --address border.
-    #[arg(long, value_parser = parse_float4, default_value = "0,0,0,0")]
-    border: [f32; 4],
+    #[command(flatten)]
+    source: SourceArgs,
+    #[command(flatten)]
+    constants: ConstantArgs,
+    #[command(flatten)]
+    sampler: SamplerArgs,
     /// Give s0 a full box-filtered mip chain (with --image).
     #[arg(long)]
     mips: bool,
     /// s0's MIPFILTER.
     #[arg(long, value_enum, default_value = "none")]
     mip_filter: MipFilterArg,
-    /// s0's MIPMAPLODBIAS.
-    #[arg(long, default_value_t = 0.0, allow_negative_numbers = true, value_parser = parse_finite)]
+    /// s0's MIPMAPLODBIAS, added to every level of detail.
+    #[arg(long, value_name = "B", default_value_t = 0.0, allow_negative_numbers = true, value_parser = parse_finite)]
     lod_bias: f32,
     /// s0's MAXMIPLEVEL (the most detailed level allowed).
-    #[arg(long, default_value_t = 0)]
+    #[arg(long, value_name = "N", default_value_t = 0)]
     max_mip_level: u32,
     /// Histogram bins.
-    #[arg(long, default_value_t = 12, value_parser = clap::value_parser!(u64).range(1..=1000))]
+    #[arg(long, value_name = "N", default_value_t = 12, value_parser = clap::value_parser!(u64).range(1..=1000))]
     bins: u64,
     #[command(flatten)]
     exec: ExecArgs,
@@ -75,15 +60,11 @@ pub struct Args {
 impl Args {
     /// s0's sampler state from the flags.
     fn sampler(&self) -> SamplerState {
-        let address = self.address.into();
         SamplerState {
             mip_filter: self.mip_filter.into(),
             mip_lod_bias: self.lod_bias,
             max_mip_level: self.max_mip_level,
-            address_u: address,
-            address_v: address,
-            border: self.border,
-            ..SamplerState::filtered(self.filter.into())
+            ..self.sampler.state()
         }
     }
 
@@ -108,29 +89,34 @@ impl Args {
 
 /// Validator warnings to stderr, the report to stdout; exit 1 when the run
 /// found a problem.
-pub fn run(args: Args, _ui: &Ui) -> super::Result {
+pub fn run(args: Args, ui: &Ui) -> super::Result {
     super::bound_threads(args.exec.threads())?;
-    let src = shader_source(&args.shader, args.input.max_input_bytes)?;
+    let loaded = load_shader(
+        ui,
+        &args.shader,
+        &args.source.options(),
+        args.input.max_input_bytes,
+    )?;
+    let input = args.input()?;
+    let resolved = args.constants.resolve(loaded.constants.as_ref())?;
+    let given = resolved.given(floats_set_by(&input), &args.source);
+    let found = audit(ui, &loaded, &given, true)?;
     let setup = Setup {
-        input: args.input()?,
-        defines: args.define.clone(),
-        constants: Resolved::new(
-            &args.floats,
-            &args.ints,
-            &args.bools,
-            load::constant_table_of(&src.file).as_ref(),
-        )?
-        .constants(),
+        input,
+        defines: args.source.define.clone(),
+        constants: resolved.constants(),
         bins: args.bins as usize,
         threads: args.exec.threads(),
         limits: args.exec.limits(),
     };
-    let r = profile_file(src.file, &setup).map_err(BadInput)?;
-    r.warnings.emit(&r.file, color_stderr());
+    let r = {
+        let _spinner = ui.spinner("running the shader");
+        profile_loaded(loaded, &setup).map_err(BadInput)?
+    };
     if args.exec.json {
-        print_json(&to_json(&r))?;
+        print_json(&to_json(&r, &found))?;
     } else {
-        print(&text(&r))?;
+        say(ui, &text(&r))?;
     }
     Ok(Outcome::from_ok(!r.problem()))
 }

@@ -2,7 +2,7 @@
 //! blending and write masks, mip-chain reductions — and writes its targets.
 
 use super::args::ExecArgs;
-use super::io::{check_output_dir, print_json, say};
+use super::io::{check_output_dir, eprint, print_json, say};
 use super::ui::Ui;
 use super::{BadInput, Outcome};
 use ps30::core::emu::findings::diagnostic;
@@ -68,6 +68,11 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
     };
     let loaded = file::read(&args.list, &limits)?;
     let list = &loaded.list;
+    if !ui.quiet {
+        for w in &loaded.warnings {
+            eprint(&format!("warning: {w}\n"));
+        }
+    }
     let mut outputs = match &args.output {
         Some(dir) => Some(Outputs {
             dir,
@@ -107,8 +112,9 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         {
             if !ui.quiet {
                 let shader = &list.shaders[d.shader].loaded.file;
-                for f in findings {
-                    eprint!("{}", diagnostic(f).render(shader));
+                let all: Vec<_> = findings.iter().map(diagnostic).collect();
+                for d in ps30::core::diag::group(&all) {
+                    eprint(&d.render_styled(shader, ui.color_stderr));
                 }
             }
         }

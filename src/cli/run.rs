@@ -1,14 +1,12 @@
 //! `ps30 run`: one pass of any shader over an image into a render target.
 
 use super::args::{
-    parse_float4, parse_float_const, AddressArg, BackendArgs, ConstRef, ConstantArgs, ExecArgs,
-    FilterArg, FormatArg, InputArgs, Resolved, SourceArgs,
+    BackendArgs, ConstantArgs, ExecArgs, FormatArg, InputArgs, SamplerArgs, SourceArgs,
 };
-use super::io::{check_output_path, load_file, print_json, say};
+use super::io::{audit, load_shader, print_json, say};
 use super::ui::Ui;
 use super::Outcome;
-use ps30::core::emu::SamplerState;
-use ps30::core::image::{self, write_exr, write_pfm};
+use ps30::core::image;
 use ps30::jobs::luminance::{run_pass, PassSetup};
 use ps30::present::constants::{table_json, table_text};
 use ps30::present::luminance::{pass_json, pass_text};
@@ -17,9 +15,12 @@ use std::path::{Path, PathBuf};
 
 #[derive(clap::Args)]
 pub struct Args {
-    /// Shader file or bundled name (see `ps30 luminance --help`).
+    /// The shader: a file (assembly or ps_3_0 bytecode), `-` for standard input, or a
+    /// bundled name such as corrected:loop (`ps30 shaders` lists them).
+    #[arg(value_name = "SHADER")]
     shader: String,
-    #[arg(long)]
+    /// The image s0 samples: OpenEXR, Radiance .hdr or PFM.
+    #[arg(long, value_name = "IMAGE")]
     image: PathBuf,
     /// Render-target size WxH.
     #[arg(long, value_name = "WxH", value_parser = super::args::parse_size)]
@@ -28,22 +29,17 @@ pub struct Args {
     source: SourceArgs,
     #[command(flatten)]
     constants: ConstantArgs,
-    /// Float constant set by the application, by register or by its name in the
-    /// shader's constant table, e.g. --const c3=0.27,0.67,0.06,0.01 or --const g_fKey=0.18.
-    #[arg(long = "const", value_name = "cN|NAME=X[,Y,Z,W]", value_parser = parse_float_const)]
-    floats: Vec<(ConstRef, Vec<f32>)>,
-    #[arg(long, value_enum, default_value = "point")]
-    filter: FilterArg,
-    #[arg(long, value_enum, default_value = "border")]
-    address: AddressArg,
-    /// Border colour R,G,B,A for --address border.
-    #[arg(long, value_parser = parse_float4, default_value = "0,0,0,0")]
-    border: [f32; 4],
+    #[command(flatten)]
+    sampler: SamplerArgs,
+    /// Render-target format.
     #[arg(long, value_enum, default_value = "f32")]
     target_format: FormatArg,
-    /// Write the target here (.exr or .pfm), atomically.
-    #[arg(short, long)]
+    /// Write the target here (atomically), in the format its extension names: .exr, .pfm, .hdr or .png.
+    #[arg(short, long, value_name = "FILE")]
     output: Option<PathBuf>,
+    /// With --json: every texel of every written output (large).
+    #[arg(long)]
+    texels: bool,
     #[command(flatten)]
     exec: ExecArgs,
     #[command(flatten)]
@@ -55,30 +51,21 @@ pub struct Args {
 pub fn run(args: Args, ui: &Ui) -> super::Result {
     super::bound_threads(args.exec.threads())?;
     if let Some(path) = &args.output {
-        check_output_path(path, &[&args.image, Path::new(&args.shader)])?;
+        super::io::check_image_output(path, &[&args.image, Path::new(&args.shader)])?;
     }
-    let loaded = load_file(
+    let loaded = load_shader(
+        ui,
         &args.shader,
         &args.source.options(),
         args.input.max_input_bytes,
     )?;
+    let resolved = args.constants.resolve(loaded.constants.as_ref())?;
+    let found = audit(ui, &loaded, &resolved.given(&[], &args.source), true)?;
     let img = image::load(&args.image, &args.exec.image_limits())?;
-    let address = args.address.into();
     let setup = PassSetup {
         target: args.target,
-        constants: Resolved::new(
-            &args.floats,
-            &args.constants.ints,
-            &args.constants.bools,
-            loaded.constants.as_ref(),
-        )?
-        .constants(),
-        sampler: SamplerState {
-            address_u: address,
-            address_v: address,
-            border: args.border,
-            ..SamplerState::filtered(args.filter.into())
-        },
+        constants: resolved.constants(),
+        sampler: args.sampler.state(),
         format: args.target_format.into(),
         threads: args.exec.threads(),
         limits: args.exec.limits(),
@@ -89,26 +76,19 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         let _spinner = ui.spinner("running the shader");
         run_pass(&loaded, &img, &setup)?
     };
-    if let Some(path) = &args.output {
-        let is_pfm = path
-            .extension()
-            .is_some_and(|e| e.eq_ignore_ascii_case("pfm"));
-        if is_pfm {
-            write_pfm(path, &out.target)?;
-        } else {
-            write_exr(path, &out.target)?;
-        }
-    }
+    let written = match &args.output {
+        Some(path) => Some((path.as_path(), image::write_target(path, &out.target)?)),
+        None => None,
+    };
     if args.exec.json {
-        let mut json = pass_json(&out);
+        let mut json = pass_json(&loaded, &found, &out, args.texels);
         json["constant_table"] = loaded.constants.as_ref().map_or(Value::Null, table_json);
         print_json(&json)?;
     } else {
         let mut text = pass_text(
-            &loaded.file.name,
             &args.image.display().to_string(),
             &out,
-            args.output.as_deref().filter(|_| !ui.quiet),
+            written.as_ref().map(|(p, w)| (*p, w)).filter(|_| !ui.quiet),
         );
         if let Some(t) = &loaded.constants {
             text.push_str(&table_text(t));

@@ -6,11 +6,11 @@ use super::args::parse_size;
 use super::io::{check_output_dir, check_output_path, print_json, say};
 use super::ui::Ui;
 use super::{BadInput, Outcome};
-use ps30::core::image::{self, encode_png_rgb8, ImageLimits};
+use ps30::core::image::encode_png_rgb8;
 use ps30::core::output::Batch;
+use ps30::jobs::assets::{self, IMAGES};
 use ps30::jobs::render;
 use ps30::jobs::studies::{article_chain, log_lights, mip_luminance};
-use ps30::present::report::IMAGES;
 use ps30::present::study::{self, Page};
 use std::path::{Path, PathBuf};
 
@@ -49,17 +49,6 @@ pub struct Args {
     json: bool,
 }
 
-/// The bundled images, from the source tree this binary was built from when
-/// it is there.
-fn images_dir() -> PathBuf {
-    let in_tree = Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/hdr");
-    if in_tree.is_dir() {
-        in_tree
-    } else {
-        PathBuf::from("assets/hdr")
-    }
-}
-
 /// Stages a page and its figures; returns what will be written.
 fn stage_page(batch: &mut Batch, dir: &Path, page: &Page) -> Result<Vec<String>, BadInput> {
     let figures = dir.join("figures");
@@ -96,25 +85,21 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
             (
                 study::log_lights::text(&s),
                 study::log_lights::json(&s),
-                study::log_lights::page(&s),
+                study::log_lights::page(&s).map_err(BadInput)?,
                 s.all_agree(),
                 None,
             )
         }
         Name::MipLuminance => {
-            let dir = images_dir();
             let mut images = Vec::new();
             for name in IMAGES {
-                images.push((
-                    name.to_string(),
-                    image::load(&dir.join(name), &ImageLimits::default())?,
-                ));
+                images.push((name.to_string(), assets::load(name).map_err(BadInput)?));
             }
             let s = mip_luminance::study(&images, 1e-4, &settings, &progress).map_err(BadInput)?;
             (
                 study::mip_luminance::text(&s),
                 study::mip_luminance::json(&s),
-                study::mip_luminance::page(&s),
+                study::mip_luminance::page(&s).map_err(BadInput)?,
                 s.all_agree(),
                 None,
             )
@@ -140,7 +125,7 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
             (
                 study::article_chain::text(&r, shown),
                 study::article_chain::json(&r, shown),
-                study::article_chain::page(&r),
+                study::article_chain::page(&r).map_err(BadInput)?,
                 r.all_agree(),
                 written,
             )

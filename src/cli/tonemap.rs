@@ -2,18 +2,21 @@
 //! 8-bit sRGB PNG, cross-checked pixel by pixel.
 
 use super::args::{parse_key, parse_white, BackendArgs, ExecArgs, InputArgs};
-use super::io::{check_output_path, print_json, say, shader_source};
+use super::io::{check_image_output, print_json, say, shader_source};
 use super::ui::Ui;
 use super::Outcome;
-use ps30::core::image::{self, write_png_rgb8};
+use ps30::core::image::{self, write_png_rgb8, write_rgb_float, OutputFormat};
 use ps30::jobs::tonemap::{self, Settings};
 use std::path::{Path, PathBuf};
 
 #[derive(clap::Args)]
 pub struct Args {
+    /// The HDR image: OpenEXR, Radiance .hdr or PFM.
+    #[arg(value_name = "IMAGE")]
     image: PathBuf,
-    /// Write the tone-mapped image here as an 8-bit sRGB PNG (atomically).
-    #[arg(short, long)]
+    /// Write the tone-mapped image here, atomically: .png as 8-bit sRGB; .exr, .pfm or
+    /// .hdr as the shader's linear output (floats in [0, 1]).
+    #[arg(short, long, value_name = "FILE")]
     output: Option<PathBuf>,
     /// The key a: the scene's log-average luminance L̄w is mapped to a.
     #[arg(long, default_value_t = tonemap::DEFAULT_KEY, value_parser = parse_key, allow_negative_numbers = true)]
@@ -35,8 +38,7 @@ pub struct Args {
 pub fn run(args: Args, ui: &Ui) -> super::Result {
     super::bound_threads(args.exec.threads())?;
     if let Some(out) = &args.output {
-        let shader = Path::new(&args.shader);
-        check_output_path(out, &[&args.image, shader])?;
+        check_image_output(out, &[&args.image, Path::new(&args.shader)])?;
     }
     let shader = shader_source(&args.shader, args.input.max_input_bytes)?;
     let img = image::load(&args.image, &args.exec.image_limits())?;
@@ -58,7 +60,16 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
     };
     let written = match &args.output {
         Some(out) => {
-            write_png_rgb8(out, result.width, result.height, &result.srgb8())?;
+            match OutputFormat::of(out)? {
+                OutputFormat::Png => {
+                    write_png_rgb8(out, result.width, result.height, &result.srgb8())?
+                }
+                _ => {
+                    let rgb: Vec<[f32; 3]> =
+                        result.linear.iter().map(|p| [p[0], p[1], p[2]]).collect();
+                    write_rgb_float(out, result.width, result.height, &rgb)?;
+                }
+            }
             Some(out.display().to_string())
         }
         None => None,

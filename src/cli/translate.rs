@@ -2,10 +2,9 @@
 //! naga, with a header naming the source and the binding layout.
 
 use super::args::{FloatRulesArg, InputArgs, SourceArgs};
-use super::io::{color_stderr, print, print_json, shader_source};
+use super::io::{eprint, load_shader, print, print_json};
 use super::ui::Ui;
 use super::{BadInput, Outcome};
-use ps30::core::load;
 use ps30::core::translate::{self, header, Entry, Target, Written};
 use std::io::IsTerminal;
 use std::path::PathBuf;
@@ -67,11 +66,12 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
     if let Some(out) = &args.output {
         super::io::check_output_path(out, &[std::path::Path::new(&args.shader)])?;
     }
-    let src = shader_source(&args.shader, args.input.max_input_bytes)?;
-    let loaded = load::load(src.file, &args.source.options()).map_err(|e| {
-        e.diagnostics.emit(&e.file, color_stderr());
-        BadInput(e.to_string())
-    })?;
+    let loaded = load_shader(
+        ui,
+        &args.shader,
+        &args.source.options(),
+        args.input.max_input_bytes,
+    )?;
     let translation =
         translate::translate(&loaded.shader, args.float_rules.into(), Entry::Application)
             .map_err(|e| BadInput(format!("{}: {e}", loaded.file.name)))?;
@@ -86,12 +86,12 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         ps30::core::output::write_bytes(path, bytes)
             .map_err(|e| BadInput(format!("{}: {e}", path.display())))?;
         if !ui.quiet && !args.json {
-            eprintln!(
-                "wrote {} ({}, {} bytes)",
+            eprint(&format!(
+                "wrote {} ({}, {} bytes)\n",
                 path.display(),
                 target.describe(),
                 bytes.len()
-            );
+            ));
         }
     }
     if args.json {

@@ -1,10 +1,12 @@
 //! Terminal niceties of the `ps30` binary (not part of the library): colour
 //! for status words and progress bars on stderr.
 //!
-//! Colour is used only when the stream is a terminal and `NO_COLOR` is unset
-//! (<https://no-color.org>); progress only when stderr is a terminal and
-//! `--quiet` is not given, and only for work that has already taken more than
-//! a second, so quick commands and CI logs never see a bar.
+//! Colour follows `--color`: `never`, `always`, or `auto` (the default):
+//! only when the stream is a terminal and `NO_COLOR` is unset or empty
+//! (<https://no-color.org>; an explicit `--color always` wins over it).
+//! Progress shows only when stderr is a terminal and `--quiet` is not given,
+//! and only for work that has already taken more than a second, so quick
+//! commands and CI logs never see a bar.
 
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use std::io::IsTerminal;
@@ -15,23 +17,52 @@ use std::time::{Duration, Instant};
 /// How long work runs before a bar appears.
 const DELAY: Duration = Duration::from_secs(1);
 
+/// `--color`: when to colour output.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum)]
+pub enum ColorWhen {
+    /// On a terminal, unless `NO_COLOR` is set.
+    #[default]
+    Auto,
+    /// Always, even into a pipe or a file, and whatever `NO_COLOR` says.
+    Always,
+    /// Never.
+    Never,
+}
+
+impl ColorWhen {
+    /// Whether a stream that `is_terminal` or not takes colour.
+    fn applies(self, is_terminal: bool) -> bool {
+        match self {
+            ColorWhen::Always => true,
+            ColorWhen::Never => false,
+            ColorWhen::Auto => {
+                is_terminal && std::env::var_os("NO_COLOR").is_none_or(|v| v.is_empty())
+            }
+        }
+    }
+}
+
 /// Output decisions for one run of the binary.
 #[derive(Clone, Copy, Debug)]
 pub struct Ui {
-    /// `--quiet`: no progress, notes or "wrote …" lines.
+    /// `--quiet`: results and problems only; no progress, notes or
+    /// "wrote …" lines.
     pub quiet: bool,
     /// Colour status words on stdout.
     pub color_stdout: bool,
+    /// Colour diagnostics on stderr.
+    pub color_stderr: bool,
     /// Progress bars on stderr.
     pub progress: bool,
 }
 
 impl Ui {
-    pub fn new(quiet: bool) -> Ui {
-        let no_color = std::env::var_os("NO_COLOR").is_some_and(|v| !v.is_empty());
+    /// The decisions for `--quiet` and `--color` on this process's streams.
+    pub fn new(quiet: bool, color: ColorWhen) -> Ui {
         Ui {
             quiet,
-            color_stdout: !no_color && std::io::stdout().is_terminal(),
+            color_stdout: color.applies(std::io::stdout().is_terminal()),
+            color_stderr: color.applies(std::io::stderr().is_terminal()),
             progress: !quiet && std::io::stderr().is_terminal(),
         }
     }
@@ -181,6 +212,7 @@ mod tests {
         let ui = Ui {
             quiet: false,
             color_stdout: true,
+            color_stderr: false,
             progress: false,
         };
         let s = ui.highlight("verdict: within limits\nbook ok, NOTE: DISAGREE\n");

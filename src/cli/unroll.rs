@@ -2,7 +2,7 @@
 //! for a frame and a profile.
 
 use super::args::{parse_delta, parse_size, ProfileArgs};
-use super::io::{check_output_dir, print, print_json};
+use super::io::{check_output_dir, eprint, print, print_json};
 use super::ui::Ui;
 use super::{BadInput, Outcome};
 use ps30::core::output::Batch;
@@ -60,7 +60,7 @@ enum OnlyArg {
     Pass2,
 }
 
-pub fn run(args: Args, _ui: &Ui) -> super::Result {
+pub fn run(args: Args, ui: &Ui) -> super::Result {
     if let Some(dir) = &args.output {
         check_output_dir(dir)?;
     }
@@ -96,6 +96,11 @@ pub fn run(args: Args, _ui: &Ui) -> super::Result {
     }
     if args.json {
         print_json(&bundle)?;
+    } else if ui.quiet && args.output.is_some() {
+        // Quiet, with the files written: only what did not fit.
+        for p in &bundle.problems {
+            print(&format!("does not fit: {p}\n"))?;
+        }
     } else {
         print(&summary_text(&bundle))?;
         match &args.output {
@@ -126,7 +131,7 @@ fn print_only(bundle: &Bundle, kind: OnlyArg) -> Result<(), BadInput> {
     match matching.as_slice() {
         [one] => print(&one.text)?,
         [] => {
-            eprint!("{}", summary_text(bundle));
+            eprint(&summary_text(bundle));
             return Err(BadInput(
                 "no such shader was generated (see the summary above)".into(),
             ));
@@ -143,7 +148,7 @@ fn print_only(bundle: &Bundle, kind: OnlyArg) -> Result<(), BadInput> {
         }
     }
     for p in &bundle.problems {
-        eprintln!("does not fit: {p}");
+        eprint(&format!("does not fit: {p}\n"));
     }
     Ok(())
 }

@@ -5,8 +5,8 @@
 use super::io::{check_output_dir, print_json, say};
 use super::ui::Ui;
 use super::{BadInput, Outcome};
-use ps30::core::image::{self, ImageLimits};
 use ps30::core::output::Batch;
+use ps30::jobs::assets;
 use ps30::jobs::gen::set::{self, GeneratedSet};
 use ps30::jobs::verify::{self as claims, CROSSCHECK_IMAGE, GENERATED_DIR};
 use ps30::present::report::{self, claims as pages, generated};
@@ -18,8 +18,8 @@ pub struct Args {
     /// Directory for the reports.
     #[arg(long, default_value = "reports")]
     reports: PathBuf,
-    /// Directory of the committed generated shaders (default: asm/generated
-    /// of the source tree).
+    /// Directory of the committed generated shaders to check (default:
+    /// asm/generated, when the current directory has one).
     #[arg(long, value_name = "DIR")]
     generated: Option<PathBuf>,
     /// Rewrite the generated shaders instead of failing when they are stale.
@@ -30,15 +30,15 @@ pub struct Args {
     json: bool,
 }
 
-/// The source tree this binary was built from: bundled images and the
-/// committed generated shaders are looked up there first.
-fn in_source_tree(rel: &str) -> PathBuf {
-    let in_tree = Path::new(env!("CARGO_MANIFEST_DIR")).join(rel);
-    if in_tree.exists() {
-        in_tree
-    } else {
-        PathBuf::from(rel)
-    }
+/// The directory of committed generated shaders to check: the one named,
+/// else `asm/generated` of the current directory when there is one (a
+/// checkout of the repository); `None` outside a checkout, where there is
+/// nothing committed to check. `--regenerate` writes the default directory.
+fn generated_dir(named: Option<&PathBuf>, regenerate: bool) -> Option<PathBuf> {
+    let default = PathBuf::from(GENERATED_DIR);
+    named
+        .cloned()
+        .or_else(|| (regenerate || default.is_dir()).then_some(default))
 }
 
 pub fn run(args: Args, ui: &Ui) -> super::Result {
@@ -51,18 +51,13 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
     let set = set::generated_set()?;
     found.extend(claims::planning_claims(&set).map_err(BadInput)?);
     bar.borrow_mut().set(Some("luminance cross-check"), 1, 12);
-    let image_path = in_source_tree(CROSSCHECK_IMAGE);
-    let img = image::load(&image_path, &ImageLimits::default())?;
+    let img = assets::load(CROSSCHECK_IMAGE).map_err(BadInput)?;
     let rows = claims::crosscheck(&img).map_err(BadInput)?;
-    let generated_shown = args
-        .generated
-        .as_ref()
-        .map_or(GENERATED_DIR.to_string(), |d| d.display().to_string());
-    let generated = args
-        .generated
-        .clone()
-        .unwrap_or_else(|| in_source_tree(GENERATED_DIR));
-    let (stale, rewritten) = check_generated(&generated, &set, args.regenerate)?;
+    let generated = generated_dir(args.generated.as_ref(), args.regenerate);
+    let (stale, rewritten) = match &generated {
+        Some(dir) => check_generated(dir, &set, args.regenerate)?,
+        None => (Vec::new(), Vec::new()),
+    };
     let pages = [
         args.reports.join("article-claims.md"),
         args.reports.join("luminance-crosscheck.md"),
@@ -76,19 +71,9 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
     ]) {
         batch.write_bytes(path, text.as_bytes())?;
     }
-    // The repository root the bundled images were found under.
-    let root = image_path
-        .parent()
-        .and_then(Path::parent)
-        .and_then(Path::parent)
-        .unwrap_or(Path::new(""));
-    let figures = report::generate(
-        &mut batch,
-        &args.reports,
-        root,
-        None,
-        &|stage, done, total| bar.borrow_mut().set(Some(stage), done + 2, total + 2),
-    )
+    let figures = report::generate(&mut batch, &args.reports, None, &|stage, done, total| {
+        bar.borrow_mut().set(Some(stage), done + 2, total + 2)
+    })
     .map_err(BadInput)?;
     batch.commit()?;
     drop(bar);
@@ -97,8 +82,7 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         crosscheck: &rows,
         figures: &figures,
         set: &set,
-        generated_shown,
-        generated: &generated,
+        generated: generated.as_deref(),
         regenerated: args.regenerate,
         stale: &stale,
         rewritten: &rewritten,

@@ -45,7 +45,9 @@ pub fn excerpt(text: &str) -> String {
 /// A named source text; spans index into `text`.
 #[derive(Clone, Debug)]
 pub struct SourceFile {
+    /// The name shown in diagnostics (a path, or a bundled shader's path).
     pub name: String,
+    /// The text, as read (a byte-order mark dropped).
     pub text: String,
     line_starts: Vec<usize>,
     /// For a compiled shader (`text` is its listing): `(text offset, token
@@ -54,8 +56,14 @@ pub struct SourceFile {
 }
 
 impl SourceFile {
+    /// A source named `name`. A UTF-8 byte-order mark at the start (which
+    /// editors on Windows often write) is not part of the text and is
+    /// dropped, so spans count from the first real character.
     pub fn new(name: impl Into<String>, text: impl Into<String>) -> SourceFile {
-        let text = text.into();
+        let mut text = text.into();
+        if text.starts_with('\u{feff}') {
+            text.drain(..'\u{feff}'.len_utf8());
+        }
         let mut line_starts = vec![0];
         line_starts.extend(text.match_indices('\n').map(|(i, _)| i + 1));
         SourceFile {
@@ -184,17 +192,23 @@ impl<'a> Files<'a> for SourceFile {
     }
 }
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+/// How bad a diagnostic is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub enum Severity {
+    /// The source is usable; something in it is probably not meant.
     Warning,
+    /// The source cannot be used.
     Error,
 }
 
 /// One problem, with where it is and how to fix it.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Diagnostic {
+    /// Error or warning.
     pub severity: Severity,
+    /// What is wrong, in one sentence.
     pub message: String,
+    /// Where (byte offsets into the source).
     pub span: Span,
     /// Short text printed under the caret.
     pub label: String,
@@ -204,9 +218,14 @@ pub struct Diagnostic {
     pub help: Option<String>,
     /// Further notes (e.g. which REPEAT_BLOCK repetition).
     pub notes: Vec<String>,
+    /// Other places with exactly the same problem (message, label and help),
+    /// folded into this one by [`Diagnostics::grouped`]: one report, with
+    /// the count and the lines, instead of one per unrolled copy.
+    pub also: Vec<Span>,
 }
 
 impl Diagnostic {
+    /// An error at `span`.
     pub fn error(span: Span, message: impl Into<String>) -> Diagnostic {
         Diagnostic {
             severity: Severity::Error,
@@ -216,9 +235,11 @@ impl Diagnostic {
             secondary: Vec::new(),
             help: None,
             notes: Vec::new(),
+            also: Vec::new(),
         }
     }
 
+    /// A warning at `span`.
     pub fn warning(span: Span, message: impl Into<String>) -> Diagnostic {
         Diagnostic {
             severity: Severity::Warning,
@@ -226,21 +247,25 @@ impl Diagnostic {
         }
     }
 
+    /// With the text under the caret.
     pub fn with_label(mut self, label: impl Into<String>) -> Diagnostic {
         self.label = label.into();
         self
     }
 
+    /// With a one-line suggestion.
     pub fn with_help(mut self, help: impl Into<String>) -> Diagnostic {
         self.help = Some(help.into());
         self
     }
 
+    /// With one more note.
     pub fn with_note(mut self, note: impl Into<String>) -> Diagnostic {
         self.notes.push(note.into());
         self
     }
 
+    /// With another place and its label.
     pub fn with_secondary(mut self, span: Span, label: impl Into<String>) -> Diagnostic {
         self.secondary.push((span, label.into()));
         self
@@ -259,7 +284,7 @@ impl Diagnostic {
         self
     }
 
-    fn to_codespan(&self) -> CsDiagnostic<()> {
+    fn to_codespan(&self, file: &SourceFile) -> CsDiagnostic<()> {
         let base = match self.severity {
             Severity::Error => CsDiagnostic::error(),
             Severity::Warning => CsDiagnostic::warning(),
@@ -270,6 +295,7 @@ impl Diagnostic {
             labels.push(Label::secondary((), span.range()).with_message(text.clone()));
         }
         let mut notes = self.notes.clone();
+        notes.extend(self.also_note(file));
         if let Some(help) = &self.help {
             notes.push(format!("help: {help}"));
         }
@@ -290,10 +316,51 @@ impl Diagnostic {
 
     /// Renders the diagnostic as plain text.
     pub fn render(&self, file: &SourceFile) -> String {
+        self.render_styled(file, false)
+    }
+
+    /// Renders the diagnostic as text, with ANSI colours when `color` (for
+    /// a terminal). The caller decides where it goes.
+    pub fn render_styled(&self, file: &SourceFile, color: bool) -> String {
         let mut out = Vec::new();
-        let mut w = term::termcolor::NoColor::new(&mut out);
-        self.write(file, &mut w);
+        if color {
+            self.write(file, &mut term::termcolor::Ansi::new(&mut out));
+        } else {
+            self.write(file, &mut term::termcolor::NoColor::new(&mut out));
+        }
         String::from_utf8_lossy(&out).into_owned()
+    }
+
+    /// The note that lists the other places of a grouped diagnostic.
+    fn also_note(&self, file: &SourceFile) -> Option<String> {
+        if self.also.is_empty() {
+            return None;
+        }
+        let (first, last) = self.line_range(file);
+        Some(format!(
+            "the same {} at {} (lines {first}–{last} in all)",
+            match self.severity {
+                Severity::Error => "error",
+                Severity::Warning => "warning",
+            },
+            match self.also.len() {
+                1 => "1 more place".to_string(),
+                n => format!("{n} more places"),
+            },
+        ))
+    }
+
+    /// How many places this diagnostic stands for (1 unless grouped).
+    pub fn count(&self) -> usize {
+        1 + self.also.len()
+    }
+
+    /// The first and last line of every place it stands for.
+    pub fn line_range(&self, file: &SourceFile) -> (usize, usize) {
+        let lines = std::iter::once(self.span)
+            .chain(self.also.iter().copied())
+            .map(|s| file.line_of(s.start));
+        lines.fold((usize::MAX, 0), |(lo, hi), l| (lo.min(l), hi.max(l)))
     }
 
     /// A diagnostic in a compiled shader: token and byte instead of
@@ -337,9 +404,13 @@ impl Diagnostic {
             return;
         }
         if self.has_long_line(file)
-            || term::emit_to_write_style(w, &Config::default(), file, &self.to_codespan()).is_err()
+            || term::emit_to_write_style(w, &Config::default(), file, &self.to_codespan(file))
+                .is_err()
         {
             let _ = writeln!(w, "{}", self.fallback(file));
+            if let Some(note) = self.also_note(file) {
+                let _ = writeln!(w, "  = {note}");
+            }
             if let Some(help) = &self.help {
                 let _ = writeln!(w, "  = help: {help}");
             }
@@ -371,6 +442,7 @@ impl fmt::Display for Diagnostic {
 /// All diagnostics of one source; errors make the source unusable.
 #[derive(Clone, Debug, Default)]
 pub struct Diagnostics {
+    /// The diagnostics, in the order they were found (the same span and message once).
     pub items: Vec<Diagnostic>,
     /// Where each (span, message) already is in `items` (a B-tree: as
     /// small as a `Vec`, so results carrying diagnostics stay small).
@@ -378,6 +450,7 @@ pub struct Diagnostics {
 }
 
 impl Diagnostics {
+    /// Adds `d`, unless the same problem at the same place is already there.
     pub fn push(&mut self, d: Diagnostic) {
         // The same problem in every repetition of a macro is reported once.
         let key = (d.span, d.message.clone());
@@ -402,14 +475,17 @@ impl Diagnostics {
         }
     }
 
+    /// Whether any diagnostic is an error.
     pub fn has_errors(&self) -> bool {
         self.items.iter().any(|d| d.severity == Severity::Error)
     }
 
+    /// The errors.
     pub fn errors(&self) -> impl Iterator<Item = &Diagnostic> {
         self.items.iter().filter(|d| d.severity == Severity::Error)
     }
 
+    /// The warnings.
     pub fn warnings(&self) -> impl Iterator<Item = &Diagnostic> {
         self.items
             .iter()
@@ -429,8 +505,8 @@ impl Diagnostics {
 
     /// The line after the first [`MAX_SHOWN`] diagnostics saying how many
     /// more there are, if any.
-    fn not_shown(&self) -> Option<String> {
-        let rest = self.items.get(MAX_SHOWN..)?;
+    fn not_shown(grouped: &[Diagnostic]) -> Option<String> {
+        let rest = grouped.get(MAX_SHOWN..)?;
         let errors = rest
             .iter()
             .filter(|d| d.severity == Severity::Error)
@@ -451,8 +527,8 @@ impl Diagnostics {
         ))
     }
 
-    /// Renders the first [`MAX_SHOWN`] diagnostics as plain text, and a
-    /// line counting the rest.
+    /// Renders the first [`MAX_SHOWN`] diagnostics as plain text (identical
+    /// ones grouped), and a line counting the rest.
     pub fn render(&self, file: &SourceFile) -> String {
         let mut out = Vec::new();
         self.write(file, &mut term::termcolor::NoColor::new(&mut out));
@@ -461,12 +537,34 @@ impl Diagnostics {
 
     /// Writes what [`Diagnostics::render`] renders to a (colour) stream.
     pub fn write(&self, file: &SourceFile, w: &mut dyn term::termcolor::WriteColor) {
-        for d in self.items.iter().take(MAX_SHOWN) {
+        let grouped = self.grouped();
+        for d in grouped.iter().take(MAX_SHOWN) {
             d.write(file, w);
         }
-        if let Some(line) = self.not_shown() {
+        if let Some(line) = Self::not_shown(&grouped) {
             let _ = w.write_all(line.as_bytes());
         }
+    }
+
+    /// What [`Diagnostics::render`] renders, with ANSI colours when `color`.
+    pub fn render_styled(&self, file: &SourceFile, color: bool) -> String {
+        let mut out = Vec::new();
+        if color {
+            self.write(file, &mut term::termcolor::Ansi::new(&mut out));
+        } else {
+            self.write(file, &mut term::termcolor::NoColor::new(&mut out));
+        }
+        String::from_utf8_lossy(&out).into_owned()
+    }
+
+    /// The diagnostics with identical ones — the same severity, message,
+    /// label and help at different places, as the copies of one unrolled
+    /// instruction give — folded into the first of them (its
+    /// [`Diagnostic::also`] lists the others). Order is kept. Every command
+    /// prints and serialises diagnostics through this, so one problem is one
+    /// report, with its count and lines, in text and JSON alike.
+    pub fn grouped(&self) -> Vec<Diagnostic> {
+        group(&self.items)
     }
 
     /// Writes them to stderr, in colour when `color`, through one buffer.
@@ -483,10 +581,54 @@ impl Diagnostics {
     }
 }
 
+/// [`Diagnostics::grouped`] for any list of diagnostics.
+pub fn group(items: &[Diagnostic]) -> Vec<Diagnostic> {
+    let keys = items.iter().map(|d| {
+        (
+            d.severity,
+            d.message.as_str(),
+            d.label.as_str(),
+            d.help.as_deref(),
+        )
+    });
+    group_indices(keys)
+        .into_iter()
+        .map(|members| {
+            let mut first = items[members[0]].clone();
+            for &i in &members[1..] {
+                first.also.push(items[i].span);
+                first.also.extend(items[i].also.iter().copied());
+            }
+            first
+        })
+        .collect()
+}
+
+/// The rule that groups identical findings, for every kind of finding
+/// (validator diagnostics here, draw findings in
+/// [`crate::core::emu::findings`]): the indices of `keys` grouped by equal
+/// key, each group in order and the groups in order of first appearance.
+pub fn group_indices<K: Eq + std::hash::Hash>(keys: impl Iterator<Item = K>) -> Vec<Vec<usize>> {
+    let mut groups: Vec<Vec<usize>> = Vec::new();
+    let mut index: std::collections::HashMap<K, usize> = std::collections::HashMap::new();
+    for (i, key) in keys.enumerate() {
+        match index.get(&key) {
+            Some(&g) => groups[g].push(i),
+            None => {
+                index.insert(key, groups.len());
+                groups.push(vec![i]);
+            }
+        }
+    }
+    groups
+}
+
 /// A source that could not be turned into a shader, with its diagnostics.
 #[derive(Clone, Debug)]
 pub struct SourceError {
+    /// The source.
     pub file: SourceFile,
+    /// Why it is unusable (at least one error).
     pub diagnostics: Diagnostics,
 }
 

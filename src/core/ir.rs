@@ -22,11 +22,14 @@ use std::sync::Arc;
 /// A byte range in a source file.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default, PartialOrd, Ord)]
 pub struct Span {
+    /// First byte of the span in the source.
     pub start: u32,
+    /// One past its last byte.
     pub end: u32,
 }
 
 impl Span {
+    /// The span of bytes `start..end`.
     pub fn new(start: usize, end: usize) -> Span {
         Span {
             start: start as u32,
@@ -34,6 +37,7 @@ impl Span {
         }
     }
 
+    /// The span as a range of byte offsets.
     pub fn range(self) -> std::ops::Range<usize> {
         self.start as usize..self.end as usize
     }
@@ -61,6 +65,7 @@ pub struct Repetition {
 /// Where an instruction came from.
 #[derive(Clone, Debug, PartialEq, Eq, Hash, Default)]
 pub struct Origin {
+    /// Where in the source (the statement as written, inside any macro).
     pub span: Span,
     /// The innermost enclosing repetition, linked to the ones around it;
     /// `None` outside macros. Statements of one repetition share the chain,
@@ -72,7 +77,9 @@ pub struct Origin {
 /// One repetition of a REPEAT_BLOCK and the repetition around it.
 #[derive(Debug, PartialEq, Eq, Hash)]
 pub struct RepeatLink {
+    /// Which repetition of which REPEAT_BLOCK.
     pub repetition: Repetition,
+    /// The repetition around it; `None` for an outermost REPEAT_BLOCK.
     pub outer: Option<Arc<RepeatLink>>,
 }
 
@@ -98,7 +105,9 @@ impl Origin {
 /// A register: file and number (`r3` is `Temp`, 3; `vPos` is `Position`, 0).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub struct Reg {
+    /// The register file (`r`, `v`, `c`, …).
     pub file: RegFile,
+    /// The register number.
     pub index: u32,
 }
 
@@ -118,8 +127,10 @@ impl fmt::Display for Reg {
 pub struct Swizzle(pub [u8; 4]);
 
 impl Swizzle {
+    /// `.xyzw`: every component from itself.
     pub const IDENTITY: Swizzle = Swizzle([0, 1, 2, 3]);
 
+    /// `.x`, `.y`, `.z` or `.w` replicated (component `c`, 0 to 3).
     pub fn replicate(c: u8) -> Swizzle {
         Swizzle([c; 4])
     }
@@ -154,12 +165,15 @@ impl fmt::Display for Swizzle {
 pub struct WriteMask(pub u8);
 
 impl WriteMask {
+    /// `.xyzw`: every component written.
     pub const ALL: WriteMask = WriteMask(0b1111);
 
+    /// Whether component `component` (0 = x … 3 = w) is written.
     pub fn has(self, component: usize) -> bool {
         self.0 & (1 << component) != 0
     }
 
+    /// How many components are written.
     pub fn count(self) -> u32 {
         self.0.count_ones()
     }
@@ -183,6 +197,7 @@ impl fmt::Display for WriteMask {
 /// Source modifiers allowed in ps_3_0.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default)]
 pub enum SrcMod {
+    /// No modifier.
     #[default]
     None,
     /// `-r0`
@@ -198,14 +213,18 @@ pub enum SrcMod {
 /// A source operand.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct Src {
+    /// The register read.
     pub reg: Reg,
     /// `v[aL + n]`: the register number is `reg.index + aL`.
     pub relative: bool,
+    /// Which component each of x, y, z, w reads.
     pub swizzle: Swizzle,
+    /// Negation and absolute value.
     pub modifier: SrcMod,
 }
 
 impl Src {
+    /// `reg` with no swizzle, modifier or relative addressing.
     pub fn plain(reg: Reg) -> Src {
         Src {
             reg,
@@ -219,14 +238,18 @@ impl Src {
 /// A destination operand.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct Dst {
+    /// The register written.
     pub reg: Reg,
+    /// The components written.
     pub mask: WriteMask,
 }
 
 /// A `(p0.c)` / `(!p0.c)` guard in front of an instruction.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct Predicate {
+    /// `!p0.c`: the guard is negated.
     pub negate: bool,
+    /// The predicate channel (a replicate swizzle).
     pub swizzle: Swizzle,
 }
 
@@ -241,51 +264,75 @@ pub struct Predicate {
 /// * flow control: every operand (`i#`, `aL`, `b#`, `p0.c`, `l#`) is a source.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Instruction {
+    /// The operation.
     pub op: Opcode,
+    /// `_sat`: the result is clamped to [0, 1].
     pub sat: bool,
+    /// `_pp`: partial precision allowed.
     pub pp: bool,
+    /// `_centroid` (texture instructions).
     pub centroid: bool,
+    /// The comparison of `if_comp`, `break_comp`, `setp_comp`.
     pub compare: Option<Compare>,
+    /// The `(p0.c)` guard, if any.
     pub predicate: Option<Predicate>,
+    /// The destination (see the operand placement above).
     pub dst: Option<Dst>,
+    /// The sources, in order.
     pub src: Vec<Src>,
+    /// Where it came from.
     pub origin: Origin,
 }
 
 /// `def c#, x, y, z, w`
 #[derive(Clone, Debug, PartialEq)]
 pub struct FloatDef {
+    /// The constant register number.
     pub index: u32,
+    /// Its value.
     pub value: [f32; 4],
+    /// Where it was defined.
     pub origin: Origin,
 }
 
 /// `defi i#, x, y, z, w`
 #[derive(Clone, Debug, PartialEq)]
 pub struct IntDef {
+    /// The constant register number.
     pub index: u32,
+    /// Its value.
     pub value: [i32; 4],
+    /// Where it was defined.
     pub origin: Origin,
 }
 
 /// `defb b#, true|false`
 #[derive(Clone, Debug, PartialEq)]
 pub struct BoolDef {
+    /// The constant register number.
     pub index: u32,
+    /// Its value.
     pub value: bool,
+    /// Where it was defined.
     pub origin: Origin,
 }
 
 /// `dcl_<usage><n> v#.mask` (or `dcl vPos.xy`, `dcl vFace`).
 #[derive(Clone, Debug, PartialEq)]
 pub struct InputDecl {
+    /// The input register (`v#`, or vPos / vFace).
     pub reg: Reg,
     /// Usage name (`texcoord`, `color`, ...); empty for vPos / vFace.
     pub usage: String,
+    /// The usage index (`texcoord1` → 1).
     pub usage_index: u32,
+    /// The components declared.
     pub mask: WriteMask,
+    /// `_centroid` interpolation.
     pub centroid: bool,
+    /// `_pp`: partial precision allowed.
     pub pp: bool,
+    /// Where it was declared.
     pub origin: Origin,
 }
 
@@ -294,10 +341,15 @@ pub struct InputDecl {
 /// nothing ps30 models, and are written back as they were given).
 #[derive(Clone, Debug, PartialEq)]
 pub struct SamplerDecl {
+    /// The sampler number.
     pub index: u32,
+    /// The texture type it samples.
     pub ty: SamplerType,
+    /// `_centroid`, as written.
     pub centroid: bool,
+    /// `_pp`, as written.
     pub pp: bool,
+    /// Where it was declared.
     pub origin: Origin,
 }
 
@@ -305,11 +357,17 @@ pub struct SamplerDecl {
 /// [`Shader`] once validated.
 #[derive(Clone, Debug, PartialEq, Default)]
 pub struct Program {
+    /// The executable instructions, in order.
     pub instructions: Vec<Instruction>,
+    /// `def` statements.
     pub float_defs: Vec<FloatDef>,
+    /// `defi` statements.
     pub int_defs: Vec<IntDef>,
+    /// `defb` statements.
     pub bool_defs: Vec<BoolDef>,
+    /// `dcl` of inputs.
     pub inputs: Vec<InputDecl>,
+    /// `dcl_*` of samplers.
     pub samplers: Vec<SamplerDecl>,
 }
 
@@ -383,14 +441,17 @@ impl Shader {
         Shader { program, info }
     }
 
+    /// The program.
     pub fn program(&self) -> &Program {
         &self.program
     }
 
+    /// What validation found out about its structure.
     pub fn info(&self) -> &Info {
         &self.info
     }
 
+    /// The executable instructions.
     pub fn instructions(&self) -> &[Instruction] {
         &self.program.instructions
     }

@@ -25,61 +25,117 @@ use std::fmt;
 /// are included so that one table covers every mnemonic a ps_3_0 file may use.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub enum Opcode {
+    /// `nop`: no operation.
     Nop,
+    /// `mov`: copy.
     Mov,
+    /// `add`: a + b.
     Add,
+    /// `sub`: a - b.
     Sub,
+    /// `mad`: a * b + c.
     Mad,
+    /// `mul`: a * b.
     Mul,
+    /// `rcp`: 1 / x (x = 0 gives infinity).
     Rcp,
+    /// `rsq`: 1 / sqrt(|x|) (x = 0 gives infinity).
     Rsq,
+    /// `dp3`: 3-component dot product.
     Dp3,
+    /// `dp4`: 4-component dot product.
     Dp4,
+    /// `min`: component-wise minimum.
     Min,
+    /// `max`: component-wise maximum.
     Max,
+    /// `exp`: 2^x.
     Exp,
+    /// `log`: log2(|x|) (x = 0 gives -FLT_MAX).
     Log,
+    /// `lrp`: a * b + (1 - a) * c.
     Lrp,
+    /// `frc`: x - floor(x).
     Frc,
+    /// `m4x4`: four dp4 with src1..src1+3.
     M4x4,
+    /// `m4x3`: three dp4 with src1..src1+2.
     M4x3,
+    /// `m3x4`: four dp3 with src1..src1+3.
     M3x4,
+    /// `m3x3`: three dp3 with src1..src1+2.
     M3x3,
+    /// `m3x2`: two dp3 with src1..src1+1.
     M3x2,
+    /// `pow`: |a|^b.
     Pow,
+    /// `crs`: cross product.
     Crs,
+    /// `abs`: |x|.
     Abs,
+    /// `nrm`: normalise xyz (zero length scales by FLT_MAX).
     Nrm,
+    /// `sincos`: x = cos, y = sin.
     SinCos,
+    /// `cmp`: a >= 0 ? b : c.
     Cmp,
+    /// `dp2add`: a.x*b.x + a.y*b.y + c.
     Dp2Add,
+    /// `dsx`: screen-space x derivative.
     Dsx,
+    /// `dsy`: screen-space y derivative.
     Dsy,
+    /// `texkill`: discard the pixel if any of x, y, z < 0.
     TexKill,
+    /// `texld`: sample with implicit gradients.
     TexLd,
+    /// `texldp`: sample after dividing by w.
     TexLdP,
+    /// `texldb`: sample with LOD bias w.
     TexLdB,
+    /// `texldl`: sample at explicit LOD w.
     TexLdL,
+    /// `texldd`: sample with explicit gradients.
     TexLdD,
+    /// `setp`: p0.c = a.c `op` b.c.
     Setp,
+    /// `call`: call a subroutine.
     Call,
+    /// `callnz`: call if the condition holds.
     CallNz,
+    /// `loop`: loop i.x times, aL from i.y by i.z.
     Loop,
+    /// `ret`: return (ends main).
     Ret,
+    /// `endloop`: end of loop.
     EndLoop,
+    /// `label`: subroutine entry.
     Label,
+    /// `rep`: repeat i.x times.
     Rep,
+    /// `endrep`: end of rep.
     EndRep,
+    /// `if`: branch on b# or p0.c.
     If,
+    /// `if`: branch on a comparison.
     Ifc,
+    /// `else`: else branch.
     Else,
+    /// `endif`: end of if.
     EndIf,
+    /// `break`: leave the innermost rep/loop.
     Break,
+    /// `break`: break if the comparison holds.
     BreakC,
+    /// `breakp`: break if p0.c holds.
     BreakP,
+    /// `def`: define a float constant.
     Def,
+    /// `defi`: define an integer constant.
     DefI,
+    /// `defb`: define a boolean constant.
     DefB,
+    /// `dcl`: declare an input or sampler.
     Dcl,
 }
 
@@ -130,6 +186,7 @@ pub enum Operand {
 /// One row of the instruction table.
 #[derive(Clone, Copy, Debug)]
 pub struct OpInfo {
+    /// The operation.
     pub op: Opcode,
     /// Canonical lower-case mnemonic as the writer prints it.
     pub mnemonic: &'static str,
@@ -144,6 +201,7 @@ pub struct OpInfo {
     pub slots: u32,
     /// Slots when the sampler operand is a cube map, if different.
     pub cube_slots: Option<u32>,
+    /// What kind of instruction it is.
     pub class: Class,
     /// Operand shape, in order.
     pub operands: &'static [Operand],
@@ -297,6 +355,7 @@ impl Opcode {
         }
     }
 
+    /// What kind of instruction it is.
     pub fn class(self) -> Class {
         self.info().class
     }
@@ -329,15 +388,22 @@ impl fmt::Display for Opcode {
 /// Comparison suffixes of `if_comp`, `break_comp` and `setp_comp`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Compare {
+    /// `_gt`: a > b.
     Gt,
+    /// `_lt`: a < b.
     Lt,
+    /// `_ge`: a ≥ b.
     Ge,
+    /// `_le`: a ≤ b.
     Le,
+    /// `_eq`: a = b.
     Eq,
+    /// `_ne`: a ≠ b (true for NaN).
     Ne,
 }
 
 impl Compare {
+    /// Every comparison, in suffix order.
     pub const ALL: [Compare; 6] = [
         Compare::Gt,
         Compare::Lt,
@@ -347,6 +413,7 @@ impl Compare {
         Compare::Ne,
     ];
 
+    /// The suffix without its underscore (`gt`).
     pub fn suffix(self) -> &'static str {
         match self {
             Compare::Gt => "gt",
@@ -371,10 +438,12 @@ impl Compare {
         }
     }
 
+    /// The comparison of an instruction token's control bits, if they name one.
     pub fn from_code(code: u8) -> Option<Compare> {
         Compare::ALL.into_iter().find(|c| c.code() == code)
     }
 
+    /// The comparison of a suffix (`gt`, any case), if it is one.
     pub fn from_suffix(s: &str) -> Option<Compare> {
         Compare::ALL
             .into_iter()
@@ -429,6 +498,7 @@ pub enum RegFile {
 /// Static facts about a register file.
 #[derive(Clone, Copy, Debug)]
 pub struct RegFileInfo {
+    /// The register file.
     pub file: RegFile,
     /// How it is spelled (the prefix before the number, or the whole name).
     pub name: &'static str,
@@ -436,7 +506,9 @@ pub struct RegFileInfo {
     pub count: u32,
     /// Whether the file is numbered (`r0`) or a single named register (`vPos`).
     pub numbered: bool,
+    /// Whether a shader may read it.
     pub readable: bool,
+    /// Whether a shader may write it.
     pub writable: bool,
     /// Distinct registers of this file one instruction may read (read ports).
     pub read_ports: u32,
@@ -469,6 +541,7 @@ pub const REG_FILES: &[RegFileInfo] = &[
 ];
 
 impl RegFile {
+    /// The facts of this register file.
     pub fn info(self) -> &'static RegFileInfo {
         &REG_FILES[self as usize]
     }
@@ -497,8 +570,11 @@ impl RegFile {
 /// Sampler dimensions a `dcl_*` may declare.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum SamplerType {
+    /// `dcl_2d`: a 2D texture.
     Tex2d,
+    /// `dcl_cube`: a cube map.
     Cube,
+    /// `dcl_volume`: a volume texture.
     Volume,
 }
 
@@ -513,6 +589,7 @@ impl SamplerType {
         }
     }
 
+    /// The `dcl_` suffix (`2d`, `cube`, `volume`).
     pub fn suffix(self) -> &'static str {
         match self {
             SamplerType::Tex2d => "2d",
@@ -541,10 +618,14 @@ pub const USAGES: &[&str] = &[
     "sample",
 ];
 
-/// Flow-control limits of ps_3_0 (Microsoft's "Flow Control Limitations").
+/// Flow-control limits of ps_3_0 (Microsoft's "Flow Control Limitations"):
+/// `rep`/`loop` nested at most this deep.
 pub const MAX_LOOP_NESTING: u32 = 4;
+/// `call`/`callnz` nested at most this deep.
 pub const MAX_CALL_NESTING: u32 = 4;
+/// Static flow control nested at most this deep (Microsoft's static nesting limit).
 pub const MAX_STATIC_NESTING: u32 = 24;
+/// Dynamic flow control (`if_comp`, `if p0`, `callnz p0`, …) nested at most this deep.
 pub const MAX_DYNAMIC_NESTING: u32 = 24;
 /// rep/loop iteration count range, i#.x in [0, 255].
 pub const MAX_REP_COUNT: i32 = 255;

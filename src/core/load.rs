@@ -15,7 +15,7 @@ use crate::core::bytecode::{self, ctab, ReadError};
 use crate::core::diag::{Diagnostic, Diagnostics, SourceError, SourceFile};
 use crate::core::front::{ast, parse, repeat};
 use crate::core::ir::{Origin, Shader};
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, BTreeSet};
 use std::fmt;
 
 /// Options of the front end.
@@ -39,20 +39,49 @@ impl Default for Options {
 /// A shader loaded from source, with the warnings found on the way.
 #[derive(Clone, Debug)]
 pub struct Loaded {
+    /// The source (a compiled shader: its listing).
     pub file: SourceFile,
+    /// The validated shader.
     pub shader: Shader,
+    /// Warnings of validation (errors make no `Loaded`).
     pub warnings: Diagnostics,
     /// The constant table the shader carries (fxc's `CTAB` comment block).
     pub constants: Option<ctab::ConstantTable>,
+    /// The names the source uses as REPEAT_BLOCK counts (what `-D` can
+    /// bind; see [`crate::core::audit`]).
+    pub defines_used: BTreeSet<String>,
+}
+
+/// The names used as REPEAT_BLOCK counts in `stmts`.
+fn count_names(stmts: &[ast::Stmt]) -> BTreeSet<String> {
+    stmts
+        .iter()
+        .filter_map(|s| match s {
+            ast::Stmt::RepeatBegin {
+                count: ast::Count::Name { name, .. },
+                ..
+            } => Some(name.clone()),
+            _ => None,
+        })
+        .collect()
 }
 
 /// Bytes that are not a shader ps30 can read.
 #[derive(Clone, Debug, PartialEq, Eq)]
+#[allow(missing_docs)] // name: the input as messages call it; the rest as each variant says
 pub enum NotASource {
     /// A compiled shader that does not read.
     Bytecode { name: String, error: ReadError },
-    /// Neither a compiled shader nor UTF-8 text: where the first bad byte is.
-    NotText { name: String, offset: usize },
+    /// Neither a compiled shader nor UTF-8 text: where the first bad byte
+    /// is (its offset, and its line and column counted in the valid text
+    /// before it) and what it is.
+    NotText {
+        name: String,
+        offset: usize,
+        line: usize,
+        column: usize,
+        byte: u8,
+    },
     /// A Direct3D 10+ shader container.
     Dxbc { name: String },
 }
@@ -61,9 +90,15 @@ impl fmt::Display for NotASource {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             NotASource::Bytecode { name, error } => write!(f, "{name}: {error}"),
-            NotASource::NotText { name, offset } => write!(
+            NotASource::NotText {
+                name,
+                offset,
+                line,
+                column,
+                byte,
+            } => write!(
                 f,
-                "{name}: not ps_3_0 bytecode and not UTF-8 text (invalid byte at offset {offset})"
+                "{name}:{line}:{column}: not UTF-8 text (byte 0x{byte:02X} at offset {offset} starts no UTF-8 character) and not ps_3_0 bytecode; save the file as UTF-8"
             ),
             NotASource::Dxbc { name } => write!(
                 f,
@@ -97,9 +132,17 @@ pub fn source_file(
     }
     String::from_utf8(bytes)
         .map(|text| SourceFile::new(name, text))
-        .map_err(|e| NotASource::NotText {
-            name: name.to_string(),
-            offset: e.utf8_error().valid_up_to(),
+        .map_err(|e| {
+            let offset = e.utf8_error().valid_up_to();
+            let bytes = e.as_bytes();
+            let before = std::str::from_utf8(&bytes[..offset]).unwrap_or_default();
+            NotASource::NotText {
+                name: name.to_string(),
+                offset,
+                line: before.matches('\n').count() + 1,
+                column: before.rsplit('\n').next().unwrap_or("").chars().count() + 1,
+                byte: bytes[offset],
+            }
         })
 }
 
@@ -139,6 +182,10 @@ fn stages(file: SourceFile, options: &Options) -> Result<Stages, SourceError> {
         diagnostics.sort();
         Err(SourceError { file, diagnostics })
     };
+    if let Some(d) = parse::missing_version(&file.text) {
+        // Not a shader at all: one error saying so, not one per line.
+        return fail(file, only(d));
+    }
     let (stmts, mut diags) = parse::parse(&file.text);
     if let Some(d) = other_version(&stmts) {
         // The rest would be judged by the wrong rules: the version says it all.
@@ -171,10 +218,12 @@ fn stages(file: SourceFile, options: &Options) -> Result<Stages, SourceError> {
     match crate::core::valid::validate(&stmts, &expanded, &file) {
         Ok((shader, mut warnings)) => {
             warnings.sort();
+            let defines_used = count_names(&stmts);
             Ok(Stages {
                 stmts,
                 expanded,
                 loaded: Loaded {
+                    defines_used,
                     file,
                     shader,
                     warnings,

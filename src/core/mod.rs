@@ -14,15 +14,20 @@
 //! the render-target formats of D3D9, and [`merge`] is the output merger
 //! that puts a draw's colours into a target (blending, the colour write
 //! mask, clears). [`diag`] renders every stage's errors,
-//! [`numbers`] formats figures the same way everywhere, and [`output`] writes
-//! files atomically. Nothing here imports from `jobs` or `present`.
+//! [`numbers`] formats figures the same way everywhere, [`output`] writes
+//! files atomically, and [`audit`] holds the constants a draw is given
+//! against what its shader reads. Nothing here imports from `jobs` or `present`.
 
+pub mod audit;
+#[allow(missing_docs)] // not yet documented item by item (ARCHITECTURE.md, "Documentation")
 pub mod bytecode;
 pub mod cost;
 pub mod diag;
 pub mod emu;
+#[allow(missing_docs)] // not yet documented item by item (ARCHITECTURE.md, "Documentation")
 pub mod float_rules;
 pub mod front;
+#[allow(missing_docs)] // not yet documented item by item (ARCHITECTURE.md, "Documentation")
 pub mod gpu;
 pub mod image;
 pub mod ir;
@@ -31,5 +36,6 @@ pub mod load;
 pub mod merge;
 pub mod numbers;
 pub mod output;
+#[allow(missing_docs)] // not yet documented item by item (ARCHITECTURE.md, "Documentation")
 pub mod translate;
 pub mod valid;

@@ -18,6 +18,21 @@ pub fn thousands(v: u64) -> String {
     out
 }
 
+/// `1 error`, `12 errors`, `1,310,720 pixels`: a count with its noun in the
+/// right number, thousands separated.
+pub fn plural(n: u64, one: &str, many: &str) -> String {
+    format!("{} {}", thousands(n), if n == 1 { one } else { many })
+}
+
+/// `a`, `a and b`, `a, b and c`.
+pub fn list(items: &[&str]) -> String {
+    match items {
+        [] => String::new(),
+        [one] => one.to_string(),
+        [init @ .., last] => format!("{} and {last}", init.join(", ")),
+    }
+}
+
 /// A count as [`thousands`] spells it, or `more than 18,446,744,073,709,551,614`
 /// for a count that saturated: the cost model's arithmetic stops at
 /// `u64::MAX` instead of wrapping, so that value means "at least this".
@@ -72,6 +87,35 @@ pub fn number(v: f64) -> String {
     }
 }
 
+/// [`number`] with the thousands of its integer part separated:
+/// `-39,147.4`, `60,677`, `0.0808638`; `1.5000e-9` as it is.
+pub fn number_grouped(v: f64) -> String {
+    group_integer_part(&number(v))
+}
+
+/// `v` with `places` decimals and the thousands of its integer part
+/// separated: `60,677.00`.
+pub fn decimal(v: f64, places: usize) -> String {
+    group_integer_part(&format!("{v:.places$}"))
+}
+
+/// Commas in the integer digits of a formatted number (not in an exponent
+/// or a fraction).
+fn group_integer_part(s: &str) -> String {
+    if s.contains(['e', 'E', '∞', 'N']) {
+        return s.to_string();
+    }
+    let (sign, rest) = match s.strip_prefix('-') {
+        Some(r) => ("-", r),
+        None => ("", s),
+    };
+    let (int, frac) = rest.split_at(rest.find('.').unwrap_or(rest.len()));
+    match int.parse::<u64>() {
+        Ok(n) => format!("{sign}{}{frac}", thousands(n)),
+        Err(_) => s.to_string(),
+    }
+}
+
 /// `125×128`.
 pub fn size(w: u32, h: u32) -> String {
     format!("{w}×{h}")
@@ -83,6 +127,18 @@ pub fn lod_text(v: f32) -> String {
         format!("{v:.2}")
     } else {
         format!("{v}")
+    }
+}
+
+/// Serializes an f32 a user or a table gave (δ, a brightness) as the
+/// shortest decimal that reads back to it (`0.1`, not
+/// `0.10000000149011612`); non-finite values as `null`. For
+/// `#[serde(serialize_with = "…")]`.
+pub fn serialize_f32_shortest<S: serde::Serializer>(v: &f32, s: S) -> Result<S::Ok, S::Error> {
+    if v.is_finite() {
+        s.serialize_f64(v.to_string().parse().unwrap_or(*v as f64))
+    } else {
+        s.serialize_none()
     }
 }
 
@@ -100,5 +156,13 @@ mod tests {
         assert_eq!(number(1.5e-9), "1.5000e-9");
         assert_eq!(thousands(64853), "64,853");
         assert_eq!(thousands(999), "999");
+        assert_eq!(plural(1, "line", "lines"), "1 line");
+        assert_eq!(list(&["c1", "i1", "i2"]), "c1, i1 and i2");
+        assert_eq!(number_grouped(-39147.398438), "-39,147.4");
+        assert_eq!(number_grouped(0.0808638), "0.0808638");
+        assert_eq!(decimal(60677.0, 2), "60,677.00");
+        assert_eq!(decimal(-0.5, 2), "-0.50");
+        assert_eq!(plural(0, "line", "lines"), "0 lines");
+        assert_eq!(plural(12_345, "pixel", "pixels"), "12,345 pixels");
     }
 }

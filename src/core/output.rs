@@ -44,7 +44,9 @@ pub enum Failure {
     Refused(String),
     /// The file system refused `action` ("write", "rename …", ...).
     Io {
+        /// What was being done ("write", "rename …").
         action: &'static str,
+        /// What the file system said.
         source: io::Error,
     },
     /// The encoder failed.

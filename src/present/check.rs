@@ -1,8 +1,11 @@
-//! What `ps30 check` prints: the text breakdown of an analysis and its JSON
-//! form.
+//! What `ps30 check` and `ps30 expand` print: the text breakdown of an
+//! analysis and the JSON forms of both.
 
+use crate::core::audit;
 use crate::core::cost::{Analysis, Verdict};
-use crate::core::numbers::{range_json, range_text, thousands};
+use crate::core::load::Loaded;
+use crate::core::numbers::{range_text, thousands};
+use crate::present::json;
 use serde_json::{json, Value};
 
 /// The text breakdown of `ps30 check`.
@@ -102,39 +105,75 @@ fn budget_text(min: u64, max: u64, limit: u64) -> String {
     }
 }
 
+/// The short form `ps30 check --quiet` prints: the budgets and the verdict.
+pub fn check_text_short(name: &str, a: &Analysis) -> String {
+    let full = check_text(name, a);
+    let tail: Vec<&str> = full
+        .lines()
+        .filter(|l| {
+            l.starts_with("slots ") || l.starts_with("executed ") || l.starts_with("verdict")
+        })
+        .collect();
+    tail.join("\n") + "\n"
+}
+
+/// The audit findings and validator warnings of a loaded shader, as JSON
+/// diagnostics (grouped).
+pub fn diagnostics_json(loaded: &Loaded, found: &[audit::Finding]) -> Vec<Value> {
+    let mut out = json::diagnostics("validation", &loaded.file, &loaded.warnings.items);
+    out.extend(found.iter().map(|f| {
+        let file = f.span.map(|_| &loaded.file);
+        json::diagnostic(f.kind.name(), file, &f.diagnostic())
+    }));
+    out
+}
+
 /// The JSON form of `ps30 check`.
-pub fn check_json(name: &str, a: &Analysis, warnings: &[String]) -> Value {
+pub fn check_json(loaded: &Loaded, a: &Analysis, found: &[audit::Finding]) -> Value {
     json!({
-        "file": name,
-        "profile": a.profile.name,
+        "shader": loaded.file.name,
+        "limits": json::limits(&a.profile),
         "slots": a.slots,
-        "executed": if a.executed.is_exact() { json!(a.executed.min) } else { Value::Null },
-        "executed_min": a.executed.min,
-        "executed_max": a.executed.max,
+        "executed": json::range(a.executed),
         // u64::MAX is "at least this many": the count saturated.
         "executed_saturated": a.executed.max == u64::MAX,
         "data_dependent": a.data_dependent,
         "reasons": a.reasons,
-        "max_slots": a.profile.max_slots,
-        "max_executed": a.profile.max_executed,
         "within_limits": a.verdict == Verdict::Within,
         "verdict": a.verdict,
         "loops": a.loops.iter().map(|l| json!({
             "line": l.line,
             "header": l.header,
-            "iterations": range_json(l.iterations),
-            "entries": range_json(l.entries),
-            "cost_per_iteration": range_json(l.cost_per_iteration),
-            "own_cost_per_iteration": range_json(l.own_cost_per_iteration),
-            "total": range_json(l.total),
+            "iterations": json::range(l.iterations),
+            "entries": json::range(l.entries),
+            "cost_per_iteration": json::range(l.cost_per_iteration),
+            "own_cost_per_iteration": json::range(l.own_cost_per_iteration),
+            "total": json::range(l.total),
         })).collect::<Vec<_>>(),
         "lines": a.lines.iter().map(|l| json!({
             "line": l.line,
             "source": l.text,
             "slots": l.slots,
-            "executions": range_json(l.executions),
-            "executed": range_json(l.executed),
+            "executions": json::range(l.executions),
+            "executed": json::range(l.executed),
         })).collect::<Vec<_>>(),
-        "warnings": warnings,
+        "diagnostics": diagnostics_json(loaded, found),
+    })
+}
+
+/// The JSON form of `ps30 expand`.
+pub fn expand_json(
+    loaded: &Loaded,
+    found: &[audit::Finding],
+    output: Option<&std::path::Path>,
+    assembly: &str,
+) -> Value {
+    json!({
+        "shader": loaded.file.name,
+        "slots": loaded.shader.info().total_slots,
+        "instructions": loaded.shader.instructions().len(),
+        "output": output.map(|p| p.display().to_string()),
+        "assembly": assembly,
+        "diagnostics": diagnostics_json(loaded, found),
     })
 }

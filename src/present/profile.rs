@@ -1,9 +1,11 @@
 //! What `ps30 profile` prints: costs per pixel and per quad with
 //! histograms, divergence, gradient sites and findings, as text and JSON.
 
+use crate::core::audit;
 use crate::core::emu::findings::diagnostic;
-use crate::core::numbers::thousands;
+use crate::core::numbers::{decimal, thousands};
 use crate::jobs::profile::{CostStats, ProfileRun};
+use crate::present::json;
 use serde_json::{json, Value};
 
 fn histogram_text(s: &mut String, title: &str, stats: &CostStats) {
@@ -17,9 +19,9 @@ fn histogram_text(s: &mut String, title: &str, stats: &CostStats) {
     s.push_str(&format!("{title}\n"));
     for b in &stats.histogram {
         let range = if b.lo == b.hi {
-            format!("{}", b.lo)
+            thousands(b.lo)
         } else {
-            format!("{}–{}", b.lo, b.hi)
+            format!("{}–{}", thousands(b.lo), thousands(b.hi))
         };
         let bar = "█".repeat(((b.count * 40).div_ceil(most)) as usize);
         s.push_str(&format!(
@@ -41,15 +43,23 @@ pub fn text(r: &ProfileRun) -> String {
         thousands(c.per_pixel.max),
         if r.counts_agree { " (within)" } else { " (OUTSIDE the static range)" }
     ));
+    if !r.within_limits {
+        let p = crate::core::cost::Profile::ps_3_0();
+        s.push_str(&format!(
+            "OVER the ps_3_0 limits of {} slots and {} executed per pixel (ps30 check says where)\n",
+            thousands(p.max_slots),
+            thousands(p.max_executed)
+        ));
+    }
     s.push_str(&format!(
         "{:<22}{:>10}{:>12}{:>10}\n",
         "executed slots", "min", "mean", "max"
     ));
     for (name, st) in [("  per pixel", &c.per_pixel), ("  per quad", &c.per_quad)] {
         s.push_str(&format!(
-            "{name:<22}{:>10}{:>12.2}{:>10}\n",
+            "{name:<22}{:>10}{:>12}{:>10}\n",
             thousands(st.min),
-            st.mean,
+            decimal(st.mean, 2),
             thousands(st.max)
         ));
     }
@@ -79,34 +89,63 @@ pub fn text(r: &ProfileRun) -> String {
     if r.findings.is_empty() {
         s.push_str("gradients: no gradient of a temporary ran in a divergent quad; no LOD far from level 0\n");
     } else {
-        for f in &r.findings {
-            s.push_str(&diagnostic(f).render(&r.file));
+        let all: Vec<_> = r.findings.iter().map(diagnostic).collect();
+        for d in crate::core::diag::group(&all) {
+            s.push_str(&d.render(&r.file));
         }
     }
     s
 }
 
-/// The JSON form of `ps30 profile`.
-pub fn to_json(r: &ProfileRun) -> Value {
+/// The JSON form of `ps30 profile`: the costs, the gradient sites, and
+/// every diagnostic (validation, the constants audit, the draw's findings),
+/// grouped.
+pub fn to_json(r: &ProfileRun, found: &[audit::Finding]) -> Value {
+    let mut diagnostics = json::diagnostics("validation", &r.file, &r.warnings.items);
+    diagnostics.extend(
+        found
+            .iter()
+            .map(|f| json::diagnostic(f.kind.name(), f.span.map(|_| &r.file), &f.diagnostic())),
+    );
+    diagnostics.extend(json::findings(&r.file.name, &r.findings));
     json!({
         "shader": r.file.name,
         "input": r.input,
         "target": [r.width, r.height],
-        "static_executed": {"min": r.static_executed.min, "max": r.static_executed.max},
+        "executed": json::range(r.static_executed),
+        "executed_emulated": {"min": r.costs.per_pixel.min, "max": r.costs.per_pixel.max},
         "counts_agree": r.counts_agree,
-        "per_pixel": r.costs.per_pixel,
-        "per_quad": r.costs.per_quad,
+        "within_limits": r.within_limits,
+        "per_pixel": stats_json(&r.costs.per_pixel),
+        "per_quad": stats_json(&r.costs.per_quad),
         "quads": r.costs.quads,
         "divergent_quads": r.costs.divergent_quads,
-        "lockstep_efficiency": r.costs.lockstep_efficiency,
-        "divergent_efficiency": r.costs.divergent_efficiency,
-        "gradients": r.gradients,
-        "findings": r.findings,
-        "warnings": r.warnings.items.iter().map(|w| json!({
-            "line": r.file.line_of(w.span.start),
-            "message": w.message,
+        "lockstep_efficiency": json::real(r.costs.lockstep_efficiency),
+        "divergent_efficiency": json::real(r.costs.divergent_efficiency),
+        "gradients": r.gradients.iter().map(|g| json!({
+            "line": g.line,
+            "column": g.column,
+            "op": g.op,
+            "sampler": g.sampler,
+            "temp_source": g.temp_source,
+            "quads": g.quads,
+            "divergent_quads": g.divergent_quads,
+            "executions": g.executions,
+            "divergent_executions": g.divergent_executions,
+            "lod": g.lod.map(|(lo, hi)| json!({"min": json::real32(lo), "max": json::real32(hi)})),
         })).collect::<Vec<_>>(),
         "models": r.models.map(|m| m.iter().map(|&(n, ok)| json!({"pixels": n, "match": ok})).collect::<Vec<_>>()),
         "problem": r.problem(),
+        "diagnostics": diagnostics,
+    })
+}
+
+fn stats_json(s: &CostStats) -> Value {
+    json!({
+        "count": s.count,
+        "min": s.min,
+        "mean": json::real(s.mean),
+        "max": s.max,
+        "histogram": s.histogram,
     })
 }

@@ -1,8 +1,9 @@
 //! What `ps30 tonemap` prints: L̄w, the operator, the cost and the pixel
 //! cross-check, as text and JSON.
 
-use crate::core::numbers::{number, range_json, range_text, thousands};
+use crate::core::numbers::{number, plural, range_text, thousands};
 use crate::jobs::tonemap::{Operator, ToneMapped, WhiteSource};
+use crate::present::json as shape;
 
 fn white_text(op: &Operator) -> String {
     match op.white_source {
@@ -15,15 +16,6 @@ fn white_text(op: &Operator) -> String {
             "white point ∞ (no pixel has positive luminance)".to_string()
         }
     }
-}
-
-fn thousands_u(n: u64) -> String {
-    thousands(n)
-}
-
-/// `1 pixel`, `12 pixels`, with thousands separators.
-fn count(n: u64, one: &str, many: &str) -> String {
-    format!("{} {}", thousands(n), if n == 1 { one } else { many })
 }
 
 /// The text `ps30 tonemap` prints.
@@ -68,12 +60,12 @@ pub fn text(image: &str, t: &ToneMapped, written: Option<&str>) -> String {
     ));
     s.push_str(&format!(
         "8-bit sRGB: {} in {} differ from the reference's by one code, each where the bound straddles a rounding boundary{}\n",
-        count(c.mismatched_8bit_channels, "channel value", "channel values"),
-        count(c.mismatched_8bit_pixels, "pixel", "pixels"),
+        plural(c.mismatched_8bit_channels, "channel value", "channel values"),
+        plural(c.mismatched_8bit_pixels, "pixel", "pixels"),
         if c.unexplained_8bit > 0 {
             format!(
                 "; {} NOT explained so",
-                count(c.unexplained_8bit, "difference is", "differences are")
+                plural(c.unexplained_8bit, "difference is", "differences are")
             )
         } else {
             String::new()
@@ -82,8 +74,8 @@ pub fn text(image: &str, t: &ToneMapped, written: Option<&str>) -> String {
     if c.sign_ambiguous_pixels > 0 {
         s.push_str(&format!(
             "{} luminance is 0 to within f32 rounding (channels cancel), so either black or the scaled colour is right; {} of their codes differ from the reference's\n",
-            count(c.sign_ambiguous_pixels, "pixel's", "pixels'"),
-            thousands_u(c.ambiguous_8bit)
+            plural(c.sign_ambiguous_pixels, "pixel's", "pixels'"),
+            thousands(c.ambiguous_8bit)
         ));
     }
     if let Some((x, y, ch, e, r, lo, hi)) = c.first_outside {
@@ -120,26 +112,24 @@ pub fn text(image: &str, t: &ToneMapped, written: Option<&str>) -> String {
 pub fn json(image: &str, t: &ToneMapped, written: Option<&str>) -> serde_json::Value {
     let op = &t.operator;
     let c = &t.check;
-    // JSON has no infinity: an infinite white point is null.
-    let finite = |v: f64| if v.is_finite() { Some(v) } else { None };
     serde_json::json!({
         "image": image,
         "width": t.width,
         "height": t.height,
         "output": written,
         "drawn_by": t.luminance.drawn_by,
-        "log_average": t.luminance.log_average,
-        "reference_log_average": t.luminance.reference_log_average,
-        "log_average_relative_error": t.luminance.relative_error,
-        "log_average_relative_tolerance": t.luminance.relative_tolerance,
+        "log_average": shape::real(t.luminance.log_average),
+        "reference_log_average": shape::real(t.luminance.reference_log_average),
+        "log_average_relative_error": shape::real(t.luminance.relative_error),
+        "log_average_relative_tolerance": shape::real(t.luminance.relative_tolerance),
         "luminance_agrees": t.luminance.all_agree(),
-        "key": op.key,
-        "white": finite(op.white),
+        "block": [t.luminance.block.0, t.luminance.block.1],
+        "key": shape::real(op.key),
+        "white": shape::real(op.white),
         "white_source": op.white_source,
-        "white_scaled": finite(op.white_scaled()),
-        "scale": op.scale(),
-        "shader": &t.cost,
-        "executed_per_pixel": t.cost.executed_emulated.map(range_json),
+        "white_scaled": shape::real(op.white_scaled()),
+        "scale": shape::real(op.scale()),
+        "pass": crate::present::luminance::pass_cost_json("tonemap", &t.cost),
         "pixels": c.pixels,
         "checked_pixels": c.checked_pixels,
         "nonfinite_pixels": c.nonfinite_pixels,
@@ -147,9 +137,9 @@ pub fn json(image: &str, t: &ToneMapped, written: Option<&str>) -> serde_json::V
         "negative_luminance_pixels": c.negative_luminance_pixels,
         "sign_ambiguous_pixels": c.sign_ambiguous_pixels,
         "saturated_pixels": c.saturated_pixels,
-        "max_error": c.max_error,
-        "max_error_bound": c.max_error_bound,
-        "largest_bound_fraction": c.largest_bound_fraction,
+        "max_error": shape::real(c.max_error),
+        "max_error_bound": shape::real(c.max_error_bound),
+        "largest_bound_fraction": shape::real(c.largest_bound_fraction),
         "outside_bound": c.outside_bound,
         "mismatched_8bit_channels": c.mismatched_8bit_channels,
         "mismatched_8bit_pixels": c.mismatched_8bit_pixels,

@@ -47,10 +47,9 @@ pub struct Summary<'a> {
     pub crosscheck: &'a [CrossRow],
     pub figures: &'a Generated,
     pub set: &'a GeneratedSet,
-    /// The generated-shader directory, as the user named it (or the default).
-    pub generated_shown: String,
-    /// The generated-shader directory as used.
-    pub generated: &'a Path,
+    /// The generated-shader directory checked; `None` outside a checkout
+    /// (no `asm/generated` here and none named), where nothing is checked.
+    pub generated: Option<&'a Path>,
     pub regenerated: bool,
     pub stale: &'a [String],
     /// `wrote …` / `removed …` lines of a regeneration.
@@ -95,22 +94,39 @@ pub fn text(s: &Summary) -> String {
         ));
     }
     out.push_str(&tonemap_text(s.figures));
+    let Some(dir) = s.generated else {
+        out.push_str(&format!(
+            "\ngenerated shaders: {} files for {} frame sizes: not checked (no asm/generated in the \
+             current directory; run from a checkout, or name one with --generated DIR)\n",
+            s.set.files.len(),
+            s.set.frames.len(),
+        ));
+        out.push_str(&written_text(s));
+        return out;
+    };
     out.push_str(&format!(
         "\ngenerated shaders: {} files for {} frame sizes in {}: {}\n",
         s.set.files.len(),
         s.set.frames.len(),
-        s.generated_shown,
+        dir.display(),
         if s.regenerated {
             format!("regenerated ({} changed)", s.rewritten.len())
         } else if s.stale.is_empty() {
             "up to date".to_string()
         } else {
-            format!("{} PROBLEMS", s.stale.len())
+            crate::core::numbers::plural(s.stale.len() as u64, "PROBLEM", "PROBLEMS")
         }
     ));
     for r in s.rewritten.iter().chain(s.stale) {
         out.push_str(&format!("  {r}\n"));
     }
+    out.push_str(&written_text(s));
+    out
+}
+
+/// The lines naming the pages and figures written.
+fn written_text(s: &Summary) -> String {
+    let mut out = String::new();
     let [claims_path, cross_path, gen_path] = s.pages;
     out.push_str(&format!(
         "\nreports written to {}, {} and {}\n",
@@ -136,7 +152,8 @@ pub fn json(s: &Summary) -> serde_json::Value {
         "block_figures": s.figures.block_figures,
         "files": s.figures.files,
         "generated": {
-            "directory": s.generated.display().to_string(),
+            "directory": s.generated.map(|d| d.display().to_string()),
+            "checked": s.generated.is_some(),
             "files": s.set.files.iter().map(|(f, _)| f).collect::<Vec<_>>(),
             "stale": s.stale,
             "rewritten": s.rewritten,

@@ -10,7 +10,7 @@
 //! front end reads like any source: a compiled shader becomes the same AST
 //! and the same validated [`Shader`](crate::core::ir::Shader) as its text,
 //! and its diagnostics point into the listing and name token and byte.
-//! [`write`] is the other way: assembly statements (after REPEAT_BLOCK
+//! [`write`](mod@write) is the other way: assembly statements (after REPEAT_BLOCK
 //! expansion) to a module, and a module to exactly the tokens Microsoft's
 //! assembler emits. [`ctab`] decodes the constant table fxc stores in a
 //! comment block (names, registers, types, defaults).

@@ -35,17 +35,24 @@ use crate::core::isa::{Opcode, RegFile};
 use serde::Serialize;
 use std::collections::{BTreeMap, BTreeSet};
 
-/// A budget: what a ps_3_0 part allows.
+/// A budget: what a ps_3_0 part allows. In JSON it is a `limits` object,
+/// `{"name", "slots", "executed", "rep_count", "loop_nesting"}`, the shape
+/// every command uses for limits (`docs/json-schema/ps30.json`).
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Profile {
+    /// The profile's name (`ps_3_0`).
     pub name: String,
     /// Static instruction slots.
+    #[serde(rename = "slots")]
     pub max_slots: u64,
     /// Executed instruction slots per pixel.
+    #[serde(rename = "executed")]
     pub max_executed: u64,
     /// rep/loop iteration count range (i#.x in 0..=max).
+    #[serde(rename = "rep_count")]
     pub max_rep_count: u32,
     /// rep/loop nesting depth.
+    #[serde(rename = "loop_nesting")]
     pub max_loop_nesting: u32,
 }
 
@@ -67,24 +74,31 @@ impl Profile {
 /// Application-set constants the analysis may use (`--int`, `--bool`).
 #[derive(Clone, Debug, Default)]
 pub struct Environment {
+    /// `i#` values by register number (x is the loop count).
     pub ints: BTreeMap<u32, [i32; 4]>,
+    /// `b#` values by register number.
     pub bools: BTreeMap<u32, bool>,
 }
 
 /// A closed range of counts; `min == max` when exact.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 pub struct Range {
+    /// The shortest path's count.
     pub min: u64,
+    /// The longest path's count.
     pub max: u64,
 }
 
 impl Range {
+    /// Nothing on every path.
     pub const ZERO: Range = Range { min: 0, max: 0 };
 
+    /// The same count on every path.
     pub fn exact(v: u64) -> Range {
         Range { min: v, max: v }
     }
 
+    /// Whether every path gives the same count.
     pub fn is_exact(self) -> bool {
         self.min == self.max
     }
@@ -270,7 +284,9 @@ pub fn int_constant_problem(op: Opcode, v: [i32; 4]) -> Option<String> {
 /// Cost of one source line.
 #[derive(Clone, Debug, Serialize)]
 pub struct LineCost {
+    /// The line number (1-based).
     pub line: usize,
+    /// The line's source text.
     pub text: String,
     /// Static slots of the instructions on this line (all REPEAT_BLOCK copies).
     pub slots: u64,
@@ -283,6 +299,7 @@ pub struct LineCost {
 /// Cost of one rep/loop.
 #[derive(Clone, Debug, Serialize)]
 pub struct LoopCost {
+    /// The line of the `rep`/`loop` (1-based).
     pub line: usize,
     /// `rep i2`, `loop aL, i0`.
     pub header: String,
@@ -302,23 +319,32 @@ pub struct LoopCost {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Verdict {
+    /// Every path fits both limits.
     Within,
     /// Some data-dependent path exceeds the executed limit.
     MayExceed,
+    /// Even the shortest path, or the static slots, exceed a limit.
     Exceeds,
 }
 
 /// The full analysis of a shader under a profile.
 #[derive(Clone, Debug, Serialize)]
 pub struct Analysis {
+    /// Static instruction slots.
     pub slots: u64,
+    /// Executed instruction slots per pixel, shortest and longest path.
     pub executed: Range,
+    /// Whether the executed count depends on data (then `reasons` say why).
     pub data_dependent: bool,
     /// Why counts are ranges (unknown constants, dynamic branches, breaks).
     pub reasons: Vec<String>,
+    /// Every source line with its cost.
     pub lines: Vec<LineCost>,
+    /// Every rep/loop with its cost.
     pub loops: Vec<LoopCost>,
+    /// The limits the shader was measured against.
     pub profile: Profile,
+    /// Whether it fits them.
     pub verdict: Verdict,
     /// Executions of each instruction (index into the program).
     #[serde(skip)]

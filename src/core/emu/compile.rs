@@ -370,6 +370,7 @@ pub enum Op {
 /// A micro-op with its static slot cost.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct MicroOp {
+    /// The operation.
     pub op: Op,
     /// Slots charged to every lane that executes the op ([`Info::slots`]).
     pub slots: u8,

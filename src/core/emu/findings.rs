@@ -15,39 +15,55 @@ use serde_json::{json, Value};
 pub const LOD_WARNING: f32 = 1.0;
 
 /// What a finding is about.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum FindingKind {
+    /// A gradient instruction ran with some lanes of a quad inactive on a temporary source: Direct3D leaves its result undefined.
     DivergentGradient,
+    /// A texture instruction computes a LOD well above 0 but reads level 0 only (a texture without mips).
     LodFarFromLevel0,
 }
 
 /// One problem found in a draw, at a source statement.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Finding {
+    /// What it is about.
     pub kind: FindingKind,
+    /// Where, with the quads it saw.
     pub site: SiteSummary,
+    /// What is wrong, in one sentence.
     pub message: String,
     /// Shown under the caret.
     pub label: String,
+    /// How to fix it.
     pub help: String,
 }
 
 /// A gradient site without its span (serialisable).
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct SiteSummary {
+    /// The source line (1-based).
     pub line: usize,
+    /// The column (1-based).
     pub column: usize,
+    /// The instruction's mnemonic.
     pub op: String,
+    /// The sampler of texld/texldp/texldb.
     pub sampler: Option<u32>,
+    /// Whether the differenced operand is a temporary `r#`.
     pub temp_source: bool,
+    /// Quads that executed it at least once.
     pub quads: u64,
+    /// Quads that executed it divergently at least once.
     pub divergent_quads: u64,
+    /// Quad-executions (a quad in a loop counts once per iteration).
     pub executions: u64,
+    /// Quad-executions with some but not all four lanes active.
     pub divergent_executions: u64,
     /// (min, max) LOD; infinities print as strings in JSON.
     #[serde(serialize_with = "lod_json")]
     pub lod: Option<(f32, f32)>,
+    /// Where it is in the source.
     #[serde(skip)]
     pub span: crate::core::ir::Span,
 }
@@ -67,6 +83,7 @@ fn lod_json<S: serde::Serializer>(lod: &Option<(f32, f32)>, s: S) -> Result<S::O
 }
 
 impl SiteSummary {
+    /// The summary of `g`, with its line and column in `file`.
     pub fn new(g: &GradientSite, file: &SourceFile) -> SiteSummary {
         let (line, column) = file.line_col(g.span.start);
         SiteSummary {
@@ -168,4 +185,41 @@ pub fn diagnostic(f: &Finding) -> Diagnostic {
     Diagnostic::warning(f.site.span, f.message.clone())
         .with_label(f.label.clone())
         .with_help(f.help.clone())
+}
+
+/// Identical findings (same kind, message, label and help) at several
+/// places: the first, how many, and the first and last source line.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FindingGroup<'a> {
+    /// The first of the identical findings.
+    pub first: &'a Finding,
+    /// How many there are.
+    pub count: usize,
+    /// The first and last source line among them.
+    pub lines: (usize, usize),
+}
+
+/// The findings grouped by [`crate::core::diag::group_indices`], the rule
+/// every finding is grouped by: the 117 unrolled copies of one `texld`
+/// are one finding with a count.
+pub fn grouped(found: &[Finding]) -> Vec<FindingGroup<'_>> {
+    let keys = found.iter().map(|f| {
+        (
+            f.kind,
+            f.message.as_str(),
+            f.label.as_str(),
+            f.help.as_str(),
+        )
+    });
+    crate::core::diag::group_indices(keys)
+        .into_iter()
+        .map(|members| {
+            let lines = members.iter().map(|&i| found[i].site.line);
+            FindingGroup {
+                first: &found[members[0]],
+                count: members.len(),
+                lines: (lines.clone().min().unwrap_or(0), lines.max().unwrap_or(0)),
+            }
+        })
+        .collect()
 }

@@ -107,8 +107,11 @@ const CHUNK: u64 = 1024;
 /// `(base + x·ddx) + y·ddy`.
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
 pub struct LinearInput {
+    /// The value at pixel (0, 0).
     pub base: [f32; 4],
+    /// The change from one pixel to the next in x.
     pub ddx: [f32; 4],
+    /// The change from one row to the next in y.
     pub ddy: [f32; 4],
 }
 
@@ -142,8 +145,10 @@ pub struct Constants {
 /// Texture filter within one mip level (D3DSAMP_MAGFILTER / MINFILTER).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum Filter {
+    /// The nearest texel.
     #[default]
     Point,
+    /// Bilinear: the four nearest texels, weighted.
     Linear,
 }
 
@@ -163,11 +168,16 @@ pub enum MipFilter {
 /// D3DTEXTUREADDRESS modes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum Address {
+    /// Repeat the texture (D3DTADDRESS_WRAP).
     Wrap,
+    /// Mirror it at every edge.
     Mirror,
+    /// The edge texel beyond the edges.
     Clamp,
+    /// The border colour beyond the edges (the default here: the luminance pass pads with it).
     #[default]
     Border,
+    /// Mirror once about 0, then clamp.
     MirrorOnce,
 }
 
@@ -188,8 +198,11 @@ pub struct SamplerState {
     /// D3DSAMP_MAXMIPLEVEL: the most detailed level allowed (0 = level 0);
     /// LODs below it are raised to it.
     pub max_mip_level: u32,
+    /// Addressing in u (D3DSAMP_ADDRESSU).
     pub address_u: Address,
+    /// Addressing in v (D3DSAMP_ADDRESSV).
     pub address_v: Address,
+    /// The border colour (D3DSAMP_BORDERCOLOR) for BORDER addressing.
     pub border: [f32; 4],
 }
 
@@ -291,14 +304,18 @@ impl Default for EmuLimits {
 /// Everything one draw needs besides the compiled shader.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Draw<'a> {
+    /// The render target's width in pixels.
     pub target_width: u32,
+    /// The render target's height in pixels.
     pub target_height: u32,
     /// `(v#, value)`; every input the shader declares must be supplied.
     pub inputs: Vec<(u32, LinearInput)>,
+    /// The constants the application sets (`def`s in the shader override them).
     pub constants: Constants,
     /// `(s#, texture, state)`; a declared but unbound sampler reads
     /// (0, 0, 0, 1). A [`Texture`] or a `&`[`MipChain`] converts with `.into()`.
     pub samplers: Vec<(u32, TextureLevels<'a>, SamplerState)>,
+    /// Bounds on the work of the draw.
     pub limits: EmuLimits,
     /// Record the range of levels of detail each texld/texldp/texldb
     /// computes ([`GradientSite::lod`]). Off by default: on a single-level
@@ -359,7 +376,9 @@ impl<'a> Draw<'a> {
 /// Per-pixel results, row-major (`index = y · width + x`).
 #[derive(Clone, Debug, PartialEq)]
 pub struct DrawOutput {
+    /// The target's width in pixels.
     pub width: u32,
+    /// The target's height in pixels.
     pub height: u32,
     /// One entry per `oC0..oC3`; `None` if no pixel executed a write to it.
     pub color: Vec<Option<Vec<[f32; 4]>>>,
@@ -394,7 +413,9 @@ pub struct DrawOutput {
 pub struct GradientSite {
     /// Index of its (first) instruction in the program.
     pub instruction: usize,
+    /// Where it is in the source.
     pub span: crate::core::ir::Span,
+    /// The instruction.
     pub op: crate::core::isa::Opcode,
     /// The sampler of texld/texldp/texldb.
     pub sampler: Option<u32>,
@@ -408,6 +429,7 @@ pub struct GradientSite {
     pub divergent_quads: u64,
     /// Quad-executions (a quad in a loop counts once per iteration).
     pub executions: u64,
+    /// Quad-executions with some but not all four lanes active.
     pub divergent_executions: u64,
     /// Smallest and largest level of detail its executions computed (after
     /// D3DSAMP_MIPMAPLODBIAS and texldb's bias, before MAXMIPLEVEL and the
@@ -417,26 +439,19 @@ pub struct GradientSite {
     pub lod: Option<(f32, f32)>,
 }
 
-/// Why a compile or a draw failed.
+/// Why a compile or a draw failed. The fields of each variant are what its
+/// message names (see its `Display`).
 #[derive(Clone, Debug, PartialEq)]
 #[non_exhaustive]
+#[allow(missing_docs)]
 pub enum EmuError {
     /// The IR and its `Info` disagree, or use something the emulator cannot
     /// represent (`index` is the instruction).
-    Malformed {
-        index: usize,
-        reason: String,
-    },
+    Malformed { index: usize, reason: String },
     /// A texture instruction samples an `s#` without `dcl_*`.
-    MissingSamplerDecl {
-        index: usize,
-        sampler: u32,
-    },
-    TargetTooLarge {
-        width: u32,
-        height: u32,
-        limit: u64,
-    },
+    MissingSamplerDecl { index: usize, sampler: u32 },
+    /// The target has more pixels than the limit allows.
+    TargetTooLarge { width: u32, height: u32, limit: u64 },
     /// A pixel ran more executed slots than the limit allows.
     ExecutedLimit {
         x: u32,
@@ -446,56 +461,32 @@ pub enum EmuError {
     },
     /// The draw as a whole (a target of `pixels` pixels) ran more executed
     /// slots than the limit allows.
-    TotalExecutedLimit {
-        limit: u64,
-        pixels: u64,
-    },
+    TotalExecutedLimit { limit: u64, pixels: u64 },
     /// The target's memory could not be had (`bytes` asked for).
-    OutOfMemory {
-        bytes: u64,
-    },
+    OutOfMemory { bytes: u64 },
     /// `call`/`callnz` nested deeper than ps_3_0's 4 levels.
-    CallDepth {
-        x: u32,
-        y: u32,
-        index: usize,
-    },
+    CallDepth { x: u32, y: u32, index: usize },
     /// The shader declares `v#` but the draw does not supply it.
-    MissingInput {
-        input: u32,
-    },
+    MissingInput { input: u32 },
     /// The draw supplies `v#` the shader does not declare.
-    InputNotDeclared {
-        input: u32,
-    },
+    InputNotDeclared { input: u32 },
     /// The draw binds an `s#` the shader does not declare.
-    SamplerNotDeclared {
-        sampler: u32,
-    },
+    SamplerNotDeclared { sampler: u32 },
     /// The same `v#` or `s#` given twice.
-    DuplicateBinding {
-        what: &'static str,
-        index: u32,
-    },
-    InvalidTexture {
-        sampler: u32,
-        reason: String,
-    },
+    DuplicateBinding { what: &'static str, index: u32 },
+    /// A bound texture cannot be sampled (e.g. no texels).
+    InvalidTexture { sampler: u32, reason: String },
     /// Only 2D sampling is emulated; a cube or volume sampler is bound.
-    UnsupportedSampler {
-        sampler: u32,
-        ty: SamplerType,
-    },
+    UnsupportedSampler { sampler: u32, ty: SamplerType },
+    /// More constants given than ps_3_0 has registers.
     TooManyConstants {
         kind: &'static str,
         given: usize,
         max: usize,
     },
     /// An `i#` used by rep/loop is outside Microsoft's ranges.
-    InvalidIntConstant {
-        register: u32,
-        reason: String,
-    },
+    InvalidIntConstant { register: u32, reason: String },
+    /// The thread pool could not be started.
     ThreadPool(String),
 }
 

@@ -8,19 +8,27 @@ use crate::core::ir::Span;
 pub enum Stmt {
     /// `ps_3_0` / `ps.3.0` (or another version, rejected by the validator).
     Version {
+        /// The version as written.
         text: String,
+        /// Its major number (3).
         major: u32,
+        /// Its minor number (0).
         minor: u32,
+        /// Where it is.
         span: Span,
     },
+    /// An instruction or declaration.
     Instr(InstrAst),
     /// `BEGIN_REPEAT_BLOCK(n)` (also spelled `BEGIN REPEAT BLOCK(n)`).
     RepeatBegin {
+        /// How many repetitions.
         count: Count,
+        /// Where it is.
         span: Span,
     },
     /// `END_REPEAT_BLOCK` (also `END REPEAT BLOCK`).
     RepeatEnd {
+        /// Where it is.
         span: Span,
     },
     /// A comment block of a compiled shader, kept token for token: a
@@ -28,19 +36,25 @@ pub enum Stmt {
     /// hexadecimal (the constant table `CTAB` is one). Validation ignores
     /// it; the bytecode writer emits it where it stands.
     Comment {
+        /// The block's tokens (its first names it: `CTAB`, …).
         tokens: Vec<u32>,
+        /// Where the block is.
         span: Span,
     },
 }
 
 /// A REPEAT_BLOCK count: a literal or a name bound with `-D name=value`.
 #[derive(Clone, Debug, PartialEq)]
+#[allow(missing_docs)] // value, name, span: as written, and where
 pub enum Count {
+    /// A number (`BEGIN_REPEAT_BLOCK(125)`).
     Literal { value: u64, span: Span },
+    /// A name bound with `-D` (`BEGIN_REPEAT_BLOCK(xsize)`).
     Name { name: String, span: Span },
 }
 
 impl Count {
+    /// Where the count is written.
     pub fn span(&self) -> Span {
         match self {
             Count::Literal { span, .. } | Count::Name { span, .. } => *span,
@@ -55,32 +69,41 @@ pub struct InstrAst {
     pub predicate: Option<RegAst>,
     /// Mnemonic before the first `_`, lower-cased (`texld`, `if`, `dcl`).
     pub base: String,
+    /// Where the mnemonic is.
     pub base_span: Span,
     /// `_`-separated suffixes, lower-cased (`sat`, `pp`, `gt`, `texcoord0`, `2d`).
     pub suffixes: Vec<(String, Span)>,
+    /// The operands, in order.
     pub operands: Vec<OperandAst>,
     /// The whole statement.
     pub span: Span,
 }
 
+/// One operand, as written.
 #[derive(Clone, Debug, PartialEq)]
 pub enum OperandAst {
+    /// A register, with its modifiers.
     Reg(RegAst),
     /// A numeric literal (`1.0f`, `-3`, `1e-4`).
     Number {
+        /// Its value.
         value: f64,
         /// Whether it was written without a fraction or exponent.
         integer: bool,
+        /// Where it is.
         span: Span,
     },
     /// `true` / `false`.
     Bool {
+        /// Its value.
         value: bool,
+        /// Where it is.
         span: Span,
     },
 }
 
 impl OperandAst {
+    /// Where the operand is written.
     pub fn span(&self) -> Span {
         match self {
             OperandAst::Reg(r) => r.span,
@@ -100,6 +123,7 @@ pub struct RegAst {
     pub name: String,
     /// Number after the name, if any (`r12` → 12).
     pub index: Option<u64>,
+    /// Where the name and number are.
     pub name_span: Span,
     /// `[aL + n]`.
     pub relative: Option<RelAst>,
@@ -107,6 +131,7 @@ pub struct RegAst {
     pub abs: bool,
     /// Letters after the `.` (swizzle or write mask), lower-cased.
     pub components: Option<(String, Span)>,
+    /// The whole operand.
     pub span: Span,
 }
 
@@ -119,5 +144,6 @@ pub struct RelAst {
     pub index_swizzle: Option<Span>,
     /// Sum of the constant offsets.
     pub offset: i64,
+    /// The whole `[…]`.
     pub span: Span,
 }

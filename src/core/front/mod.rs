@@ -2,7 +2,7 @@
 //! statements, and back to text.
 //!
 //! [`parse`](parse::parse) reads lines into an AST with spans,
-//! [`repeat::expand`] unrolls REPEAT_BLOCK macros, and [`print`] writes a
+//! [`repeat::expand`] unrolls REPEAT_BLOCK macros, and [`print`](mod@print) writes a
 //! validated program back as plain assembly. Lowering and checking the AST
 //! is the next stage ([`crate::core::valid`]); [`crate::core::load`] runs
 //! them all.

@@ -89,6 +89,7 @@ pub fn parse(text: &str) -> (Vec<Stmt>, Diagnostics) {
 /// The line that opens a kept comment block of a compiled shader, and the
 /// line that continues it.
 pub const COMMENT_BLOCK: &str = "//#comment";
+/// The continuation line of a kept comment block.
 pub const COMMENT_MORE: &str = "//#+";
 
 /// Most tokens one comment block holds: its length field has 15 bits.
@@ -731,6 +732,45 @@ impl<'a> Cursor<'a> {
 /// Parses only the tag used by other modules to recognise a version string.
 pub fn is_version_line(s: &str) -> bool {
     matches!(version(s.trim()), Ok((rest, _)) if rest.is_empty())
+}
+
+/// The one error for a text whose first statement is not a version line
+/// (`ps_3_0`), or that has no statement at all: such a text is not a shader
+/// (a README, a C file, a shader missing its first line), and reporting every
+/// line of it would bury the one thing to fix. `None` when the first
+/// statement is a version line (of any shader model; validation judges it).
+pub fn missing_version(text: &str) -> Option<Diagnostic> {
+    let mut line_start = 0;
+    for line in text.split_inclusive('\n') {
+        let code = strip_comment(line.trim_end_matches(['\n', '\r']));
+        let lead = code.len() - code.trim_start().len();
+        let code = code.trim();
+        if !code.is_empty() {
+            // A version line, or a line with a character assembly cannot
+            // hold (the parser names it where it stands).
+            if is_version_line(code) || code.chars().any(odd_char) {
+                return None;
+            }
+            let start = line_start + lead;
+            let first: String = code.chars().take(40).collect();
+            let more = if first.len() < code.len() { "…" } else { "" };
+            return Some(
+                Diagnostic::error(Span::new(start, start), "missing version line")
+                    .with_label("expected `ps_3_0` here")
+                    .with_note(format!(
+                        "the first statement is `{first}{more}`: this is not a ps_3_0 shader, or its first line is missing, so ps30 reads no further"
+                    ))
+                    .with_help("a ps_3_0 shader starts with the line `ps_3_0`"),
+            );
+        }
+        line_start += line.len();
+    }
+    Some(
+        Diagnostic::error(Span::new(0, 0), "missing version line")
+            .with_label("expected `ps_3_0` here")
+            .with_note("the text holds no statement, only comments or blank lines")
+            .with_help("a ps_3_0 shader starts with the line `ps_3_0`"),
+    )
 }
 
 #[cfg(test)]

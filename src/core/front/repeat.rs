@@ -23,7 +23,9 @@ pub const MAX_DEPTH: usize = 64;
 /// which repetitions.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Expanded {
+    /// The index of the source statement.
     pub stmt: usize,
+    /// Which repetitions it is in.
     pub origin: Origin,
 }
 

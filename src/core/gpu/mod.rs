@@ -2,7 +2,7 @@
 //! wgpu's Vulkan backend — a second witness for every result ps30 prints.
 //!
 //! [`run`] takes exactly what [`emu::run`](crate::core::emu::run) takes — a
-//! validated shader and an [`emu::Draw`] — and returns the same per-pixel
+//! validated shader and an [`emu::Draw`](crate::core::emu::Draw) — and returns the same per-pixel
 //! colour data ([`GpuOutput`], laid out like
 //! [`emu::DrawOutput`](crate::core::emu::DrawOutput)'s colours). The
 //! shader is the translation (`core/translate`, its `Entry::Draw` entry

@@ -10,8 +10,10 @@ use std::path::{Path, PathBuf};
 /// `image` crates), kept as the error's source.
 pub use crate::core::output::ForeignError;
 
-/// Everything that can go wrong while reading or writing an image file.
+/// Everything that can go wrong while reading or writing an image file. The
+/// fields of each variant are what its message names (see its `Display`).
 #[derive(Debug)]
+#[allow(missing_docs)]
 pub enum ImageError {
     /// The file system refused `action` ("open", "read", "rename", ...).
     Io {
@@ -62,6 +64,9 @@ pub enum ImageError {
         format: &'static str,
         source: ForeignError,
     },
+    /// ps30 cannot write this file: its extension names no format ps30
+    /// writes, or the format cannot hold the values.
+    Unwritable { path: PathBuf, problem: String },
     /// A buffer handed to a writer does not hold `width * height` pixels.
     DataLength {
         path: PathBuf,
@@ -106,6 +111,7 @@ impl ImageError {
             | ImageError::TrailingData { path, .. }
             | ImageError::Decode { path, .. }
             | ImageError::Encode { path, .. }
+            | ImageError::Unwritable { path, .. }
             | ImageError::DataLength { path, .. } => path,
         }
     }
@@ -158,6 +164,7 @@ impl fmt::Display for ImageError {
             ImageError::Encode { format, source, .. } => {
                 write!(f, "{path}: cannot encode {format} file: {source}")
             }
+            ImageError::Unwritable { problem, .. } => write!(f, "{path}: {problem}"),
             ImageError::DataLength {
                 what,
                 expected,

@@ -286,6 +286,36 @@ fn halve(src: &Level, odd: OddSides, format: Option<TargetFormat>) -> Level {
     }
 }
 
+/// The worst a frame's weights can do to the mean of encodings in [0, 1]:
+/// ½·Σ|w − 1/N| over the pixels (the pixels above 1/N all 1, the others
+/// 0). The weights are products of a column and a row weight, which take
+/// few distinct values, so the sum runs over pairs of distinct values.
+pub fn weight_bound(w: u32, h: u32, odd: OddSides) -> f64 {
+    let levels = full_chain_levels(w, h);
+    let distinct = |side: Vec<f64>| {
+        let mut counts: std::collections::BTreeMap<u64, f64> = Default::default();
+        for v in side {
+            *counts.entry(v.to_bits()).or_default() += 1.0;
+        }
+        counts
+            .into_iter()
+            .map(|(bits, n)| (f64::from_bits(bits), n))
+            .collect::<Vec<_>>()
+    };
+    let (wx, wy) = (
+        distinct(chain_weights(w, levels, odd)),
+        distinct(chain_weights(h, levels, odd)),
+    );
+    let n = w as f64 * h as f64;
+    let mut total = 0f64;
+    for &(a, na) in &wy {
+        for &(b, nb) in &wx {
+            total += na * nb * (a * b - 1.0 / n).abs();
+        }
+    }
+    total / 2.0
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

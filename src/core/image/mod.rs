@@ -4,7 +4,8 @@
 //! reference on real HDR photographs, so it must read the formats such images
 //! come in (OpenEXR, Radiance RGBE, PFM) into one in-memory form,
 //! [`HdrImage`], and write what the emulated passes produce
-//! ([`RenderTarget`]s as OpenEXR or PFM, tone-mapped results as PNG).
+//! ([`RenderTarget`]s as OpenEXR, PFM, Radiance or PNG, chosen by the
+//! output's extension: [`OutputFormat`]; tone-mapped results as PNG).
 //!
 //! Reading never trusts a header: the claimed size is checked against
 //! [`ImageLimits`] before any pixel memory is allocated, and every failure is
@@ -17,19 +18,21 @@ mod openexr;
 mod pfm;
 mod png;
 mod radiance;
+mod save;
 mod target;
 
 pub use error::{ForeignError, ImageError};
-pub use mip::{chain_weights, full_chain_levels, side_taps, MipChain, OddSides};
+pub use mip::{chain_weights, full_chain_levels, side_taps, weight_bound, MipChain, OddSides};
 pub use openexr::{encode_exr, write_exr};
 pub use pfm::write_pfm;
 pub use png::{encode_png_rgb8, write_png_rgb8};
+pub use save::{write_radiance, write_rgb_float, write_target, OutputFormat, Written};
 pub use target::{
     half_from_f64, unorm8, unorm8_value, Encoding, RenderTarget, TargetFormat, Texture,
 };
 
 use std::fs::File;
-use std::io::{BufReader, BufWriter, Read, Seek};
+use std::io::{BufRead, BufReader, BufWriter, Read, Seek};
 use std::path::Path;
 
 /// The luminance weights of the article (and of the tone-mapping shader):
@@ -86,7 +89,9 @@ fn crlf_error(path: &Path, format: &'static str) -> ImageError {
 /// [`HdrImage::stats`]).
 #[derive(Clone, Debug, PartialEq)]
 pub struct HdrImage {
+    /// Width in pixels.
     pub width: u32,
+    /// Height in pixels.
     pub height: u32,
     /// `width * height` pixels.
     pub pixels: Vec<[f32; 4]>,
@@ -204,7 +209,21 @@ impl Format {
 /// (`PF` colour, `Pf` grey).
 pub fn load(path: &Path, limits: &ImageLimits) -> Result<HdrImage, ImageError> {
     let file = File::open(path).map_err(|e| ImageError::io(path, "open", e))?;
-    let mut reader = BufReader::new(file);
+    decode(path, BufReader::new(file), limits)
+}
+
+/// Decodes an HDR image held in memory, as [`load`] reads a file; `name`
+/// names it in errors.
+pub fn load_bytes(name: &Path, bytes: &[u8], limits: &ImageLimits) -> Result<HdrImage, ImageError> {
+    decode(name, std::io::Cursor::new(bytes), limits)
+}
+
+/// Decodes from `reader` with the decoder its magic number names.
+fn decode(
+    path: &Path,
+    mut reader: impl BufRead + Seek,
+    limits: &ImageLimits,
+) -> Result<HdrImage, ImageError> {
     let mut magic = Vec::with_capacity(4);
     (&mut reader)
         .take(4)

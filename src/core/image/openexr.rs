@@ -607,6 +607,42 @@ pub fn encode_exr(path: &Path, target: &RenderTarget) -> Result<Vec<u8>, ImageEr
     Ok(out.into_inner())
 }
 
+/// Writes linear RGB floats as OpenEXR with f32 channels `R`, `G`, `B`.
+pub fn write_rgb_f32(
+    path: &Path,
+    width: u32,
+    height: u32,
+    rgb: &[[f32; 3]],
+) -> Result<(), ImageError> {
+    let expected = width as u64 * height as u64;
+    if rgb.len() as u64 != expected {
+        return Err(ImageError::DataLength {
+            path: path.to_path_buf(),
+            what: "RGB pixels",
+            expected,
+            found: rgb.len() as u64,
+        });
+    }
+    let channels: Vec<AnyChannel<FlatSamples>> = ["R", "G", "B"]
+        .iter()
+        .enumerate()
+        .map(|(i, name)| {
+            AnyChannel::new(*name, FlatSamples::F32(rgb.iter().map(|p| p[i]).collect()))
+        })
+        .collect();
+    let layer = Layer::new(
+        (width as usize, height as usize),
+        LayerAttributes::default(),
+        Encoding::SMALL_LOSSLESS,
+        AnyChannels::sort(channels.into()),
+    );
+    let image = Image::from_layer(layer);
+    write_atomically(path, FORMAT, |w| {
+        image.write().to_buffered(w)?;
+        Ok(())
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

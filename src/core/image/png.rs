@@ -1,5 +1,5 @@
-//! 8-bit sRGB PNG output, for looking at tone-mapped results with any image
-//! viewer.
+//! 8-bit PNG output, for looking at results with any image viewer:
+//! tone-mapped images (sRGB) and render targets (see `save`).
 
 use super::write_atomically;
 use super::ImageError;
@@ -10,9 +10,21 @@ use std::path::Path;
 /// Writes `rgb` (`width * height` pixels of 3 bytes, row-major, top row
 /// first, already sRGB-encoded) as a PNG file, atomically.
 pub fn write_png_rgb8(path: &Path, width: u32, height: u32, rgb: &[u8]) -> Result<(), ImageError> {
-    check_length(path, width, height, rgb)?;
+    write_png(path, width, height, 3, rgb)
+}
+
+/// Writes 8-bit samples, `channels` per pixel (1 grey, 2 grey + alpha, 3
+/// RGB, 4 RGBA), row-major, top row first, as a PNG file, atomically.
+pub(crate) fn write_png(
+    path: &Path,
+    width: u32,
+    height: u32,
+    channels: usize,
+    samples: &[u8],
+) -> Result<(), ImageError> {
+    check_length(path, width, height, channels, samples)?;
     write_atomically(path, "PNG", |w| {
-        PngEncoder::new(w).write_image(rgb, width, height, ExtendedColorType::Rgb8)?;
+        PngEncoder::new(w).write_image(samples, width, height, colour_type(channels))?;
         Ok(())
     })
 }
@@ -25,7 +37,7 @@ pub fn encode_png_rgb8(
     height: u32,
     rgb: &[u8],
 ) -> Result<Vec<u8>, ImageError> {
-    check_length(path, width, height, rgb)?;
+    check_length(path, width, height, 3, rgb)?;
     let mut out = Vec::new();
     PngEncoder::new(&mut out)
         .write_image(rgb, width, height, ExtendedColorType::Rgb8)
@@ -37,14 +49,29 @@ pub fn encode_png_rgb8(
     Ok(out)
 }
 
-fn check_length(path: &Path, width: u32, height: u32, rgb: &[u8]) -> Result<(), ImageError> {
-    let expected = u64::from(width) * u64::from(height) * 3;
-    if rgb.len() as u64 != expected {
+fn colour_type(channels: usize) -> ExtendedColorType {
+    match channels {
+        1 => ExtendedColorType::L8,
+        2 => ExtendedColorType::La8,
+        3 => ExtendedColorType::Rgb8,
+        _ => ExtendedColorType::Rgba8,
+    }
+}
+
+fn check_length(
+    path: &Path,
+    width: u32,
+    height: u32,
+    channels: usize,
+    samples: &[u8],
+) -> Result<(), ImageError> {
+    let expected = u64::from(width) * u64::from(height) * channels as u64;
+    if samples.len() as u64 != expected {
         return Err(ImageError::DataLength {
             path: path.to_path_buf(),
-            what: "the RGB8 buffer",
+            what: "the 8-bit sample buffer",
             expected,
-            found: rgb.len() as u64,
+            found: samples.len() as u64,
         });
     }
     Ok(())

@@ -241,8 +241,11 @@ impl TargetFormat {
 /// each holding exactly what its [`TargetFormat`] can store.
 #[derive(Clone, Debug, PartialEq)]
 pub struct RenderTarget {
+    /// Width in texels.
     pub width: u32,
+    /// Height in texels.
     pub height: u32,
+    /// What each texel can store.
     pub format: TargetFormat,
     /// Every texel already rounded by `format` (see [`TargetFormat::round`]).
     pub texels: Vec<[f32; 4]>,
@@ -252,7 +255,9 @@ pub struct RenderTarget {
 /// consumes, whether the texels come from a loaded image or a previous pass.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Texture<'a> {
+    /// Width in texels.
     pub width: u32,
+    /// Height in texels.
     pub height: u32,
     /// `width * height` texels, row-major, row 0 at the top.
     pub texels: &'a [[f32; 4]],

@@ -55,16 +55,27 @@ use half::f16;
 /// A `D3DBLEND` value.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize)]
 pub enum BlendFactor {
+    /// D3DBLEND_ZERO: (0, 0, 0, 0).
     Zero,
+    /// D3DBLEND_ONE: (1, 1, 1, 1).
     One,
+    /// D3DBLEND_SRCCOLOR: the source colour.
     SrcColor,
+    /// D3DBLEND_INVSRCCOLOR: 1 − the source colour.
     InvSrcColor,
+    /// D3DBLEND_SRCALPHA: the source alpha.
     SrcAlpha,
+    /// D3DBLEND_INVSRCALPHA: 1 − the source alpha.
     InvSrcAlpha,
+    /// D3DBLEND_DESTALPHA: the destination alpha.
     DestAlpha,
+    /// D3DBLEND_INVDESTALPHA: 1 − the destination alpha.
     InvDestAlpha,
+    /// D3DBLEND_DESTCOLOR: the destination colour.
     DestColor,
+    /// D3DBLEND_INVDESTCOLOR: 1 − the destination colour.
     InvDestColor,
+    /// D3DBLEND_SRCALPHASAT: min(source alpha, 1 − destination alpha), alpha 1.
     SrcAlphaSat,
     /// D3DBLEND_BLENDFACTOR: the constant D3DRS_BLENDFACTOR.
     Constant,
@@ -120,14 +131,20 @@ impl BlendFactor {
 /// A `D3DBLENDOP` value.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize)]
 pub enum BlendOp {
+    /// D3DBLENDOP_ADD: source × factor + destination × factor.
     Add,
+    /// D3DBLENDOP_SUBTRACT: source term − destination term.
     Subtract,
+    /// D3DBLENDOP_REVSUBTRACT: destination term − source term.
     RevSubtract,
+    /// D3DBLENDOP_MIN: the smaller of source and destination (factors ignored).
     Min,
+    /// D3DBLENDOP_MAX: the larger of source and destination (factors ignored).
     Max,
 }
 
 impl BlendOp {
+    /// Every operation.
     pub const ALL: [BlendOp; 5] = [
         BlendOp::Add,
         BlendOp::Subtract,
@@ -158,8 +175,11 @@ impl BlendOp {
 /// One blend equation: source factor, destination factor, operation.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize)]
 pub struct Equation {
+    /// The factor of the source (the shader's output).
     pub src: BlendFactor,
+    /// The factor of the destination (what the target holds).
     pub dest: BlendFactor,
+    /// How the two terms combine.
     pub op: BlendOp,
 }
 

@@ -39,9 +39,13 @@ use crate::core::image::RenderTarget;
 pub struct ColorWrite(pub u8);
 
 impl ColorWrite {
+    /// The red channel's bit.
     pub const RED: u8 = 1;
+    /// The green channel's bit.
     pub const GREEN: u8 = 2;
+    /// The blue channel's bit.
     pub const BLUE: u8 = 4;
+    /// The alpha channel's bit.
     pub const ALPHA: u8 = 8;
     /// Every channel (D3D9's default, 0x0F).
     pub const ALL: ColorWrite = ColorWrite(0x0F);
@@ -97,7 +101,9 @@ impl Default for ColorWrite {
 /// The output-merger state of one draw.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, serde::Serialize)]
 pub struct OutputState {
+    /// How the colour is blended with the target.
     pub blend: BlendState,
+    /// Which channels are written.
     pub write: ColorWrite,
 }
 

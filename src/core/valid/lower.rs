@@ -13,11 +13,17 @@ use crate::core::isa::{Class, Compare, OpInfo, Opcode, Operand, RegFile, Sampler
 /// What one statement becomes.
 #[derive(Clone, Debug)]
 pub enum Lowered {
+    /// An executable instruction.
     Instr(Instruction),
+    /// An input declaration.
     Input(InputDecl),
+    /// A sampler declaration.
     Sampler(SamplerDecl),
+    /// A `def`.
     Float(FloatDef),
+    /// A `defi`.
     Int(IntDef),
+    /// A `defb`.
     Bool(BoolDef),
 }
 
@@ -40,6 +46,7 @@ const NOT_PS30: &[(&str, &str)] = &[
     ("cnd", "cnd is ps_1_x; use cmp"),
 ];
 
+/// Lowers one statement of the AST (with its origin) to the IR, or a diagnostic naming what is wrong.
 pub fn lower(ast: &InstrAst, origin: &Origin) -> R<Lowered> {
     match ast.base.as_str() {
         "dcl" => lower_dcl(ast, origin),
@@ -592,6 +599,7 @@ fn foreign_register(name: &str) -> Option<&'static str> {
     }
 }
 
+/// The register an operand names (file and number), or a diagnostic.
 pub fn resolve_reg(r: &RegAst) -> R<Reg> {
     let Some(file) = RegFile::lookup(&r.name) else {
         let d = Diagnostic::error(
@@ -683,6 +691,7 @@ fn components(letters: &str, span: Span) -> R<Vec<u8>> {
     Ok(out)
 }
 
+/// The swizzle of a source operand (`.xyzw` when none is written).
 pub fn swizzle(r: &RegAst) -> R<Swizzle> {
     let Some((letters, span)) = &r.components else {
         return Ok(Swizzle::IDENTITY);
@@ -694,6 +703,7 @@ pub fn swizzle(r: &RegAst) -> R<Swizzle> {
     Ok(Swizzle(s))
 }
 
+/// The write mask of a destination (`.xyzw` when none is written).
 pub fn write_mask(r: &RegAst) -> R<WriteMask> {
     let Some((letters, span)) = &r.components else {
         return Ok(WriteMask::ALL);

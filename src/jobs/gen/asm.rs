@@ -97,6 +97,7 @@ pub enum Pass1Form {
 }
 
 impl Pass1Form {
+    /// The form's name (`unrolled`, `loop`).
     pub fn name(self) -> &'static str {
         match self {
             Pass1Form::Unrolled => "unrolled",
@@ -129,6 +130,7 @@ impl Pass2Form {
     /// From the fewest executed instructions to the most.
     pub const ALL: [Pass2Form; 3] = [Pass2Form::Unrolled, Pass2Form::RowLoop, Pass2Form::Nested];
 
+    /// The form's name (`unrolled`, `row loop`, `nested loops`).
     pub fn name(self) -> &'static str {
         match self {
             Pass2Form::Unrolled => "unrolled",
@@ -253,7 +255,7 @@ pub(crate) fn pass1(form: Pass1Form, taps: u32, rows: u32, counts: Counts) -> Ve
     v.push(Item::Rep {
         reg: 2,
         comment: match counts {
-            Counts::Defined => format!("{rows} lines"),
+            Counts::Defined => crate::core::numbers::plural(rows as u64, "line", "lines"),
             Counts::Application => "i2 lines".to_string(),
         },
         end_comment: String::new(),

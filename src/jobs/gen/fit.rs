@@ -5,7 +5,7 @@
 //! [`crate::core::cost::analyse`]; the searches only rely on the counts growing
 //! with the block (more texels per line never cost fewer slots or executed
 //! instructions, more lines never cost fewer executed instructions), which
-//! holds for every listing [`super::asm`] writes.
+//! holds for every listing `asm.rs` writes.
 //!
 //! The only shortcut is a sound lower bound used to avoid building absurd
 //! listings: every `texld` costs at least one slot, so a listing with more
@@ -78,7 +78,8 @@ impl<'p> Fitter<'p> {
         }
         if !rep_ok(rows) || rows > p.max_rep_count {
             return Some(format!(
-                "{rows} lines need a rep count of {rows}; the profile allows 0 to {}",
+                "{} need a rep count of {rows}; the profile allows 0 to {}",
+                crate::core::numbers::plural(rows as u64, "line", "lines"),
                 p.max_rep_count
             ));
         }

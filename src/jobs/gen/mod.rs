@@ -15,7 +15,7 @@
 //!
 //! # Proof by construction
 //!
-//! Every listing is built as text ([`asm`]), then loaded through the front
+//! Every listing is built as text (`asm.rs`), then loaded through the front
 //! end and analysed by the cost model under the [`Profile`] ([`check`]). No
 //! count is ever computed by hand: the headers' slots and executed figures,
 //! every fit search and every figure of a plan come from [`cost::analyse`]
@@ -113,6 +113,7 @@ pub struct Checked {
 }
 
 impl Checked {
+    /// Whether the shader fits the profile.
     pub fn fits(&self) -> bool {
         self.problems.is_empty()
     }

@@ -33,7 +33,7 @@
 //! # The approximate alternative
 //!
 //! Beside the exact forms, the plan lists the mip-chain method
-//! ([`crate::jobs::studies::mip_luminance`]): log-luminance encoded into
+//! (`jobs::studies::mip_luminance`): log-luminance encoded into
 //! 8-bit alpha over a chosen range, averaged by the mip chain. It is not
 //! ranked with the others — it trades accuracy for a single cheap pass —
 //! so it comes with its predicted error instead ([`MipCandidate`]): the
@@ -145,8 +145,8 @@ pub struct MipCandidate {
 /// The mip-chain candidate for a frame and a range.
 pub fn mip_candidate(frame: (u32, u32), range: (f64, f64)) -> Result<MipCandidate, GenError> {
     use crate::core::cost::{analyse, Environment};
+    use crate::core::image::weight_bound;
     use crate::core::image::{full_chain_levels, OddSides};
-    use crate::jobs::studies::mip_luminance::weight_bound;
     let b = crate::jobs::bundled::MIP_LUMINANCE_ENCODE;
     let loaded = crate::core::load::load_str(b.path, b.text, &Default::default())
         .map_err(|e| GenError(e.to_string()))?;

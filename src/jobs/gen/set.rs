@@ -13,6 +13,11 @@ use serde::Serialize;
 use std::collections::BTreeMap;
 use std::path::Path;
 
+/// `1 line`, `128 lines`.
+fn lines(n: u32) -> String {
+    crate::core::numbers::plural(n as u64, "line", "lines")
+}
+
 /// What a generated shader is for.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "snake_case")]
@@ -584,18 +589,21 @@ impl Generator<'_> {
             Ok(f.pass1(form, n, r)?.map(|c| c.executed))
         };
         let mut why = format!(
-            "tallest block: {tall} lines, {} executed of {}",
+            "tallest block: {}, {} executed of {}",
+            lines(tall),
             exec(fitter, tall)?.map_or("?".into(), thousands),
             thousands(fitter.profile().max_executed)
         );
         if tall < h {
             match exec(fitter, tall + 1)? {
-                Some(e) => {
-                    why.push_str(&format!("; {} lines would take {}", tall + 1, thousands(e)))
-                }
+                Some(e) => why.push_str(&format!(
+                    "; {} would take {}",
+                    lines(tall + 1),
+                    thousands(e)
+                )),
                 None => why.push_str(&format!(
-                    "; {} lines: {}",
-                    tall + 1,
+                    "; {}: {}",
+                    lines(tall + 1),
                     fitter
                         .pass1_unwritable(form, n, tall + 1)
                         .unwrap_or_default()
@@ -607,9 +615,11 @@ impl Generator<'_> {
         let short = balanced(h, tall);
         if short != tall {
             why.push_str(&format!(
-                "; {h} lines need {} block rows either way, so {short} lines (padding {} lines instead of {})",
+                "; {} need {} block rows either way, so {} (padding {} instead of {})",
+                lines(h),
                 h.div_ceil(tall),
-                h.div_ceil(short) * short - h,
+                lines(short),
+                lines(h.div_ceil(short) * short - h),
                 h.div_ceil(tall) * tall - h
             ));
         }

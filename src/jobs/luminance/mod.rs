@@ -132,13 +132,56 @@ impl std::fmt::Display for PipelineError {
 
 impl std::error::Error for PipelineError {}
 
-/// Loads a shader through the front end, with `-D` style defines.
-fn load(src: &ShaderSource, defines: &[(&str, u64)]) -> Result<load::Loaded, PipelineError> {
+/// The float constants the pipeline sets for pass 1 (c0, c1, c3, and c2 =
+/// 0) and pass 2 (c0, c1), and the integer constants of pass 1 (i1, i2,
+/// and i0 = 0): a shader that reads any other one reads a register nobody
+/// set (see [`crate::core::audit`]).
+const PASS1_FLOATS: [u32; 4] = [0, 1, 2, 3];
+const PASS1_INTS: [u32; 3] = [0, 1, 2];
+const PASS2_FLOATS: [u32; 2] = [0, 1];
+
+/// Loads a shader through the front end, with `-D` style defines, and
+/// refuses one that reads a constant the pass does not set.
+fn load(
+    src: &ShaderSource,
+    defines: &[(&str, u64)],
+    given: &crate::core::audit::Given,
+) -> Result<load::Loaded, PipelineError> {
     let mut opts = Options::default();
     for (k, v) in defines {
         opts.defines.insert(k.to_string(), *v);
     }
-    load::load(src.file.clone(), &opts).map_err(PipelineError::Source)
+    let loaded = load::load(src.file.clone(), &opts).map_err(PipelineError::Source)?;
+    refuse_unset(&loaded, given).map_err(PipelineError::Mismatch)?;
+    Ok(loaded)
+}
+
+/// An error naming the registers `loaded` reads that `given` does not set
+/// and the shader does not define.
+pub fn refuse_unset(
+    loaded: &load::Loaded,
+    given: &crate::core::audit::Given,
+) -> Result<(), String> {
+    use crate::core::audit;
+    let found = audit::audit(&loaded.shader, &loaded.defines_used, given);
+    let unset = audit::unset_names(&found);
+    if unset.is_empty() {
+        return Ok(());
+    }
+    let set: Vec<String> = given
+        .floats
+        .iter()
+        .map(|c| format!("c{c}"))
+        .chain(given.ints.iter().map(|i| format!("i{i}")))
+        .chain(given.bools.iter().map(|b| format!("b{b}")))
+        .collect();
+    let set: Vec<&str> = set.iter().map(String::as_str).collect();
+    Err(format!(
+        "{} reads {}, which this pass does not set (it sets {}) and the shader does not define",
+        loaded.file.name,
+        crate::core::numbers::list(&unset),
+        crate::core::numbers::list(&set)
+    ))
 }
 
 /// One pass's cost: static analysis next to what the emulator counted.
@@ -258,7 +301,27 @@ pub struct LuminanceRun {
     pub drawn_by: String,
 }
 
+/// The largest derived bound on L̄w's relative error for which the
+/// cross-check still means something: beyond 1%, the f32 rounding the bound
+/// allows (long sums, heavy BORDER padding against few real pixels) could
+/// hide a result that is plainly wrong, so the run is called unfit for the
+/// image instead of "agree".
+pub const FIT_TOLERANCE: f64 = 0.01;
+
 impl LuminanceRun {
+    /// Whether the method can be checked on this image at all: the derived
+    /// bound is finite and at most [`FIT_TOLERANCE`].
+    pub fn fit(&self) -> bool {
+        self.relative_tolerance.is_finite() && self.relative_tolerance <= FIT_TOLERANCE
+    }
+
+    /// Every pass fits the ps_3_0 limits (slots and executed).
+    pub fn within_limits(&self) -> bool {
+        self.pass1.within_limits
+            && self.pass1_last.as_ref().is_none_or(|p| p.within_limits)
+            && self.pass2.within_limits
+    }
+
     pub fn blocks_agree(&self) -> bool {
         self.blocks.iter().all(|b| b.agree)
     }
@@ -528,7 +591,11 @@ fn load_pass1(
     bw: u32,
     bh: u32,
 ) -> Result<(load::Loaded, Environment), PipelineError> {
-    let l1 = load(src, &[("bw", bw as u64), ("bh", bh as u64)])?;
+    let l1 = load(
+        src,
+        &[("bw", bw as u64), ("bh", bh as u64)],
+        &crate::core::audit::Given::registers(&PASS1_FLOATS, &PASS1_INTS, &[]),
+    )?;
     let mut env1 = Environment::default();
     env1.ints.insert(1, [bw as i32, 0, 0, 0]);
     env1.ints.insert(2, [bh as i32, 0, 0, 0]);
@@ -794,7 +861,11 @@ fn run_pass2(
     s: &Settings,
 ) -> Result<(PassCost, f64, Comparison, f64), PipelineError> {
     let (nx, ny) = (g.nx, g.ny);
-    let l2 = load(pass2, &[("xsize", nx as u64), ("ysize", ny as u64)])?;
+    let l2 = load(
+        pass2,
+        &[("xsize", nx as u64), ("ysize", ny as u64)],
+        &crate::core::audit::Given::registers(&PASS2_FLOATS, &[], &[]),
+    )?;
     let mut d2 = Draw::new(1, 1);
     d2.float_rules = s.float_rules;
     d2.limits = s.limits;
@@ -884,7 +955,11 @@ pub struct PassSetup {
 /// What one pass produced.
 #[derive(Clone, Debug)]
 pub struct PassOutput {
+    /// The target bound to oC0, as its format stores it.
     pub target: RenderTarget,
+    /// Every output register the shader writes, with the statistics of
+    /// what the target stores.
+    pub outputs: Vec<crate::jobs::outputs::OutputRegister>,
     pub cost: PassCost,
     /// Who drew it: `emulator`, or `GPU: <device>`.
     pub drawn_by: String,
@@ -940,8 +1015,10 @@ pub fn run_pass(
         );
     }
     let (cost, _) = pass_cost(loaded, &env, emulated, findings)?;
+    let outputs = crate::jobs::outputs::summarise(&loaded.shader, &target);
     Ok(PassOutput {
         target,
+        outputs,
         cost,
         drawn_by: setup.backend.describe(),
     })

@@ -27,7 +27,8 @@
 //!     also means neighbouring pixels skip texels. The luminance pass is the
 //!     example: its neighbours read blocks 125 × 128 texels apart, λ = 7.
 //!
-//! Exit status of the command: 1 when a divergent-gradient finding exists,
+//! Exit status of the command: 1 when the shader does not fit the ps_3_0
+//! limits, when a divergent-gradient finding exists,
 //! when emulated counts leave the cost model's range, or (G-buffer input)
 //! when a pixel differs from the CPU computation; LOD findings are
 //! warnings only.
@@ -188,8 +189,18 @@ pub struct Setup {
     pub constants: Constants,
     pub bins: usize,
     pub threads: Option<usize>,
-    /// Bounds of every draw (and of the G-buffer's size).
+    /// The emulator's bounds (executed slots per pixel, target size).
     pub limits: emu::EmuLimits,
+}
+
+/// The float constants the input sets itself: the G-buffer scene sets c4
+/// (see [`Scene::material_scale`](crate::jobs::scenes::lights::Scene::material_scale)),
+/// an image sets none.
+pub fn floats_set_by(input: &Input) -> &'static [u32] {
+    match input {
+        Input::GBuffer(..) => &[4],
+        Input::Image { .. } => &[],
+    }
 }
 
 /// The result of `ps30 profile`.
@@ -200,6 +211,8 @@ pub struct ProfileRun {
     pub width: u32,
     pub height: u32,
     pub static_executed: Range,
+    /// The static slots and executed count fit the ps_3_0 limits.
+    pub within_limits: bool,
     pub counts_agree: bool,
     pub costs: QuadCosts,
     pub gradients: Vec<SiteSummary>,
@@ -214,6 +227,7 @@ impl ProfileRun {
     /// Whether the run found a problem (see the module docs).
     pub fn problem(&self) -> bool {
         !self.counts_agree
+            || !self.within_limits
             || self
                 .findings
                 .iter()
@@ -229,7 +243,10 @@ pub fn profile(name: &str, text: &str, setup: &Setup) -> Result<ProfileRun, Stri
     profile_file(SourceFile::new(name, text), setup)
 }
 
-/// Runs `ps30 profile` on any source, text or compiled.
+/// Runs `ps30 profile` on any source, text or compiled (loaded with
+/// `setup.defines`); a source that does not load gives its diagnostics as
+/// the error (the command line loads the shader itself, reporting as it
+/// does everywhere, and calls [`profile_loaded`]).
 pub fn profile_file(file: SourceFile, setup: &Setup) -> Result<ProfileRun, String> {
     let mut opts = Options::default();
     for (k, v) in &setup.defines {
@@ -237,6 +254,11 @@ pub fn profile_file(file: SourceFile, setup: &Setup) -> Result<ProfileRun, Strin
     }
     let loaded =
         load::load(file, &opts).map_err(|e| format!("{}\n{e}", e.diagnostics.render(&e.file)))?;
+    profile_loaded(loaded, setup)
+}
+
+/// Runs `ps30 profile` on a loaded shader.
+pub fn profile_loaded(loaded: load::Loaded, setup: &Setup) -> Result<ProfileRun, String> {
     let compiled = emu::compile(&loaded.shader).map_err(|e| e.to_string())?;
     let env = environment(&setup.constants);
     let analysis = cost::analyse(&loaded.shader, &loaded.file, &env, &Profile::ps_3_0())
@@ -315,6 +337,7 @@ pub fn profile_file(file: SourceFile, setup: &Setup) -> Result<ProfileRun, Strin
         width: out.width,
         height: out.height,
         static_executed: analysis.executed,
+        within_limits: analysis.verdict == cost::Verdict::Within,
         counts_agree,
         costs,
         gradients,
@@ -345,7 +368,7 @@ fn gbuffer_draw<'s>(
     scene: &'s crate::jobs::scenes::lights::Scene,
 ) -> Result<Draw<'s>, String> {
     crate::jobs::scenes::lights::Scene::check_constants(loaded.shader.program())
-        .map_err(|e| format!("{name}: not a light-model shader for this scene: {e}"))?;
+        .map_err(|e| format!("{name}: not a light-model shader for the G-buffer scene: {e}"))?;
     let mut draw = scene.draw();
     draw.record_lod = true;
     draw.limits = setup.limits;

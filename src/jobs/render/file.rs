@@ -193,6 +193,10 @@ pub struct Loaded {
     /// The files it read besides itself (images, shaders): a command must not
     /// write over them.
     pub sources: Vec<PathBuf>,
+    /// Warnings of the constants audit (see [`crate::core::audit`]): values
+    /// a draw gives that its shader's `def` overrides or never reads, `-D`
+    /// names it never uses, each prefixed with the step's field.
+    pub warnings: Vec<String>,
 }
 
 /// Reads and checks a draw-list file. Images and shader files are read
@@ -243,6 +247,7 @@ pub fn parse(text: &str, path: &Path, limits: &FileLimits) -> Result<Loaded, Fil
         },
         shader_keys: Vec::new(),
         sources: Vec::new(),
+        warnings: Vec::new(),
     };
     if file.steps.len() > limits.max_steps {
         return Err(r.err(
@@ -268,6 +273,7 @@ pub fn parse(text: &str, path: &Path, limits: &FileLimits) -> Result<Loaded, Fil
         description: file.description,
         list: r.list,
         sources: r.sources,
+        warnings: r.warnings,
     })
 }
 
@@ -282,6 +288,8 @@ struct Resolver {
     shader_keys: Vec<(String, BTreeMap<String, u64>)>,
     /// Files read (images, shader files).
     sources: Vec<PathBuf>,
+    /// Audit warnings so far.
+    warnings: Vec<String>,
 }
 
 fn size(s: &str) -> Result<(u32, u32), String> {
@@ -610,6 +618,7 @@ impl Resolver {
                 )
             })?,
         };
+        self.audit(at, shader, s)?;
         Ok(DrawStep {
             target,
             shader,
@@ -618,6 +627,45 @@ impl Resolver {
             samplers,
             output: OutputState { blend, write },
         })
+    }
+
+    /// The draw's constants held against what its shader reads: a register
+    /// read that neither the shader nor the step sets is an error naming the
+    /// step; the other findings become warnings.
+    fn audit(&mut self, at: &str, shader: usize, s: &FileStep) -> Result<(), FileError> {
+        use crate::core::audit::{self, Given, Kind};
+        fn regs<V>(
+            m: &Option<BTreeMap<String, V>>,
+            letter: char,
+        ) -> std::collections::BTreeSet<u32> {
+            m.iter()
+                .flatten()
+                .filter_map(|(name, _)| name.strip_prefix(letter)?.parse().ok())
+                .collect()
+        }
+        let given = Given {
+            floats: regs(&s.constants, 'c'),
+            ints: regs(&s.ints, 'i'),
+            bools: regs(&s.bools, 'b'),
+            defines: s.defines.iter().flatten().map(|(n, _)| n.clone()).collect(),
+            ..Given::default()
+        };
+        let loaded = &self.list.shaders[shader].loaded;
+        let found = audit::audit(&loaded.shader, &loaded.defines_used, &given);
+        let unset = audit::unset_names(&found);
+        if !unset.is_empty() {
+            let message = format!(
+                "{} reads {}, which neither the shader nor this step sets (give them in `constants`, `ints` or `bools`, zeros too if zeros are meant)",
+                loaded.file.name,
+                crate::core::numbers::list(&unset)
+            );
+            return Err(self.err(at, message));
+        }
+        for f in found.iter().filter(|f| f.kind != Kind::Unset) {
+            self.warnings
+                .push(format!("{at}: {} ({})", f.message(), f.help()));
+        }
+        Ok(())
     }
 
     fn constants(&self, at: &str, s: &FileStep) -> Result<Constants, FileError> {
@@ -760,12 +808,18 @@ impl Resolver {
             ..Options::default()
         };
         // A file is assembly or ps_3_0 bytecode, told apart by content.
-        let source = match crate::jobs::bundled::listing(spec) {
-            Some((path, text)) => crate::core::diag::SourceFile::new(path, text),
-            None => {
+        let source = match crate::jobs::bundled::resolve(spec) {
+            crate::jobs::bundled::Named::Bundled(b) => {
+                crate::core::diag::SourceFile::new(b.path, b.text)
+            }
+            crate::jobs::bundled::Named::File(_) => {
                 let file = self.dir.join(spec);
-                let bytes = std::fs::read(&file)
-                    .map_err(|e| self.err(field, format!("{}: {e}", file.display())))?;
+                let bytes = std::fs::read(&file).map_err(|e| {
+                    let hint = crate::jobs::bundled::suggest(spec)
+                        .map(|n| format!("; did you mean the bundled `{n}`?"))
+                        .unwrap_or_default();
+                    self.err(field, format!("{}: {e}{hint}", file.display()))
+                })?;
                 self.sources.push(file.clone());
                 load::source_file(&file.display().to_string(), bytes, &options)
                     .map_err(|e| self.err(field, e.to_string()))?

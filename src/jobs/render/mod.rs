@@ -133,9 +133,12 @@ pub enum StepDetail {
     Draw {
         shader: String,
         /// Executed slots per pixel, from the cost model with the draw's
-        /// integer and boolean constants.
+        /// integer and boolean constants (`executed` in JSON, as for every
+        /// pass).
+        #[serde(rename = "executed")]
         executed_static: Range,
         /// What the emulator counted (min, max over pixels).
+        #[serde(rename = "executed_emulated")]
         executed: Range,
         counts_agree: bool,
         merged: MergeStats,

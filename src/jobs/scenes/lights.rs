@@ -44,7 +44,9 @@ const WRAP: [f32; 2] = [0.6666667, 0.3333333];
 /// A G-buffer and the material textures of the three light models.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Scene {
+    /// The G-buffer's width in pixels.
     pub width: u32,
+    /// Its height in pixels.
     pub height: u32,
     /// The G-buffer texels as stored (f16-rounded): xyz = N, w = ID.
     pub gbuffer: Vec<[f32; 4]>,
@@ -296,12 +298,23 @@ impl Scene {
             (2, [HALF[0], HALF[1], HALF[2], 0.0]),
             (3, [WRAP[0], WRAP[1], 0.0, 0.0]),
         ];
+        let list = |v: [f32; 4]| format!("{}, {}, {}, {}", v[0], v[1], v[2], v[3]);
         for (c, v) in want {
-            if program.float_def(c) != Some(v) {
-                return Err(SceneError(format!(
-                    "the shader's c{c} is {:?}, the CPU computation assumes {v:?}",
-                    program.float_def(c)
-                )));
+            match program.float_def(c) {
+                Some(d) if d == v => {}
+                Some(d) => {
+                    return Err(SceneError(format!(
+                        "the shader defines c{c} = ({}), but the scene's CPU computation assumes ({})",
+                        list(d),
+                        list(v)
+                    )))
+                }
+                None => {
+                    return Err(SceneError(format!(
+                        "the shader does not define c{c} with `def`; the scene's CPU computation assumes c{c} = ({})",
+                        list(v)
+                    )))
+                }
             }
         }
         Ok(())
@@ -372,12 +385,14 @@ fn check_size(width: u32, height: u32) -> Result<(), SceneError> {
 /// [`Scene::expected`].
 #[derive(Clone, Debug)]
 pub struct LightsRun {
+    /// What the draw wrote.
     pub output: DrawOutput,
     /// Pixels per model, and how many of them match the CPU bit for bit.
     pub per_model: [(u64, u64); MODELS],
 }
 
 impl LightsRun {
+    /// Whether every pixel of every model matches the CPU bit for bit.
     pub fn all_match(&self) -> bool {
         self.per_model.iter().all(|&(n, ok)| n == ok)
     }

@@ -115,6 +115,7 @@ pub struct Accumulation {
 pub struct Summary {
     pub method: Method,
     pub lights: u32,
+    #[serde(serialize_with = "crate::core::numbers::serialize_f32_shortest")]
     pub brightness: f32,
     /// The largest true sum on the ramp.
     pub peak: f64,

@@ -47,7 +47,7 @@
 //! chain drifts upwards (the study shows by how much).
 
 use crate::core::emu::{Address, Constants, SamplerState};
-use crate::core::image::{chain_weights, HdrImage, OddSides, TargetFormat};
+use crate::core::image::{chain_weights, weight_bound, HdrImage, OddSides, TargetFormat};
 use crate::core::merge::{ColorWrite, OutputState};
 use crate::jobs::luminance::{self, reference, ShaderSource};
 use crate::jobs::render::{
@@ -304,36 +304,6 @@ pub fn crop(image: &HdrImage, w: u32, h: u32) -> HdrImage {
         height: h.min(image.height),
         pixels,
     }
-}
-
-/// The worst a frame's weights can do to the mean of encodings in [0, 1]:
-/// ½·Σ|w − 1/N| over the pixels (the pixels above 1/N all 1, the others
-/// 0). The weights are products of a column and a row weight, which take
-/// few distinct values, so the sum runs over pairs of distinct values.
-pub fn weight_bound(w: u32, h: u32, odd: OddSides) -> f64 {
-    let levels = crate::core::image::full_chain_levels(w, h);
-    let distinct = |side: Vec<f64>| {
-        let mut counts: std::collections::BTreeMap<u64, f64> = Default::default();
-        for v in side {
-            *counts.entry(v.to_bits()).or_default() += 1.0;
-        }
-        counts
-            .into_iter()
-            .map(|(bits, n)| (f64::from_bits(bits), n))
-            .collect::<Vec<_>>()
-    };
-    let (wx, wy) = (
-        distinct(chain_weights(w, levels, odd)),
-        distinct(chain_weights(h, levels, odd)),
-    );
-    let n = w as f64 * h as f64;
-    let mut total = 0f64;
-    for &(a, na) in &wy {
-        for &(b, nb) in &wx {
-            total += na * nb * (a * b - 1.0 / n).abs();
-        }
-    }
-    total / 2.0
 }
 
 /// The frames cropped from the article-sized image, for odd sides.

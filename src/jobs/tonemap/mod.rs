@@ -129,11 +129,12 @@ pub enum TonemapError {
     Pipeline(luminance::PipelineError),
     /// The pipeline ran but its L̄w cannot scale anything; the image has
     /// `non_finite` NaN or infinite pixels.
-    LogAverage {
-        value: f64,
-        non_finite: u64,
-    },
+    LogAverage { value: f64, non_finite: u64 },
+    /// The draw failed, on the emulator or on a GPU.
     Draw(crate::jobs::backend::DrawError),
+    /// The tone-mapping shader does not load (its diagnostics are inside).
+    Source(crate::core::diag::SourceError),
+    /// The shader cannot run with the operator's inputs.
     Shader(String),
 }
 
@@ -151,6 +152,7 @@ impl std::fmt::Display for TonemapError {
                 "the luminance pipeline gave L̄w = {value}, which cannot scale the image (it needs a positive finite value): {non_finite} pixels are NaN or infinite"
             ),
             TonemapError::Draw(e) => write!(f, "{e}"),
+            TonemapError::Source(e) => write!(f, "{e}"),
         }
     }
 }
@@ -646,7 +648,12 @@ impl ToneMapped {
     /// The pipeline's L̄w, the emulator's counts and the per-pixel
     /// cross-check all agree.
     pub fn all_agree(&self) -> bool {
-        self.luminance.all_agree() && self.cost.counts_agree && self.check.agree()
+        self.luminance.all_agree()
+            && self.luminance.fit()
+            && self.luminance.within_limits()
+            && self.cost.counts_agree
+            && self.cost.within_limits
+            && self.check.agree()
     }
 
     /// The image as 8-bit sRGB, what `ps30 tonemap` writes.
@@ -679,12 +686,8 @@ pub fn white_point(image: &HdrImage, given: Option<f64>) -> (f64, WhiteSource) {
     }
 }
 
-fn bundled(name: &str) -> ShaderSource {
-    let (n, t) = crate::jobs::bundled::listing(name).expect("bundled luminance shader");
-    ShaderSource::new(n, t)
-}
-
-/// Computes L̄w with the corrected luminance passes (125×128 blocks, R32F),
+/// Computes L̄w with the luminance passes planned for the image's size
+/// ([`crate::jobs::blocks::planned`]: generated shaders, R32F),
 /// then runs the tone-mapping shader over the image and cross-checks it.
 /// `progress(done, total)` is called after each band of rows.
 pub fn run(
@@ -693,11 +696,15 @@ pub fn run(
     progress: &dyn Fn(u64, u64),
 ) -> Result<ToneMapped, TonemapError> {
     check_values(settings.key, settings.white)?;
+    let delta = luminance::reference::DEFAULT_DELTA;
+    let planned = crate::jobs::blocks::planned(image.width, image.height, delta)
+        .map_err(|e| TonemapError::Shader(e.to_string()))?;
     let luminance = luminance::run(
         image,
-        &bundled("corrected:unrolled"),
-        &bundled("corrected:pass2"),
+        &planned.pass1,
+        &planned.pass2,
         &luminance::Settings {
+            block: planned.block(),
             threads: settings.threads,
             limits: settings.limits,
             backend: settings.backend.clone(),
@@ -743,8 +750,12 @@ pub fn emulate(
     progress: &dyn Fn(u64, u64),
 ) -> Result<(Vec<[f32; 4]>, PassCost), TonemapError> {
     let src = &settings.shader;
-    let loaded = load::load(src.file.clone(), &Options::default())
-        .map_err(|e| TonemapError::Shader(e.diagnostics.render(&e.file)))?;
+    let loaded = load::load(src.file.clone(), &Options::default()).map_err(TonemapError::Source)?;
+    luminance::refuse_unset(
+        &loaded,
+        &crate::core::audit::Given::registers(&[0, 1, 2], &[], &[]),
+    )
+    .map_err(TonemapError::Shader)?;
     let analysis = cost::analyse(
         &loaded.shader,
         &loaded.file,

@@ -218,7 +218,10 @@ fn unrolled_claims(profile: &Profile) -> Result<Vec<Claim>, String> {
     out.push(claim(
         "unrolled: 128 lines fit the executed limit",
         "yes",
-        format!("up to {} lines", rows_fit.unwrap_or(0)),
+        format!(
+            "up to {}",
+            crate::core::numbers::plural(rows_fit.unwrap_or(0) as u64, "line", "lines")
+        ),
         rows_fit.is_some_and(|r| r >= 128),
         "largest i2 whose executed count is ≤ 65,535",
     ));

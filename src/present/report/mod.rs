@@ -22,10 +22,11 @@ pub mod generated;
 pub mod gpu;
 
 use crate::core::image::encode_png_rgb8;
-use crate::core::image::{HdrImage, ImageLimits};
+use crate::core::image::HdrImage;
 use crate::core::numbers::number;
 use crate::core::numbers::thousands;
 use crate::core::output::Batch;
+use crate::jobs::assets;
 use crate::jobs::luminance::{self, LuminanceRun, ShaderSource};
 use crate::jobs::tonemap;
 use crate::jobs::verify;
@@ -33,16 +34,8 @@ use figures::{box_downscale, BarChart, HeatMap};
 use serde::Serialize;
 use std::path::Path;
 
-/// The bundled images, in `assets/hdr/`.
-pub const IMAGES: [&str; 7] = [
-    "city.exr",
-    "courtyard.exr",
-    "courtyard_1280x1024.exr",
-    "forest.exr",
-    "forest.hdr",
-    "sunset.exr",
-    "sunset.pfm",
-];
+/// The bundled images (compiled in: [`crate::jobs::assets`]).
+pub use crate::jobs::assets::IMAGES;
 
 /// Widest tone-mapped preview, in pixels (keeps `reports/` at a few MB).
 pub const PREVIEW_WIDTH: u32 = 512;
@@ -59,8 +52,8 @@ pub struct Budget {
     pub constants: String,
     pub slots: u64,
     pub executed: u64,
-    pub max_slots: u64,
-    pub max_executed: u64,
+    /// The limits it was measured against.
+    pub limits: crate::core::cost::Profile,
 }
 
 /// One heat map of pass-1 blocks.
@@ -126,7 +119,7 @@ impl Generated {
             && self
                 .budgets
                 .iter()
-                .all(|b| b.slots <= b.max_slots && b.executed <= b.max_executed)
+                .all(|b| b.slots <= b.limits.max_slots && b.executed <= b.limits.max_executed)
     }
 }
 
@@ -137,13 +130,12 @@ fn bundled(name: &str) -> Result<ShaderSource, String> {
 }
 
 /// Stages the figures and pages for `dir` in `batch` (the caller commits
-/// it: all files or none), reading the bundled images from
-/// `root/assets/hdr`. `progress(stage, done, total)` is called as stages
+/// it: all files or none), from the bundled images compiled into the binary
+/// ([`crate::jobs::assets`]). `progress(stage, done, total)` is called as stages
 /// finish.
 pub fn generate(
     batch: &mut Batch,
     dir: &Path,
-    root: &Path,
     threads: Option<usize>,
     progress: &dyn Fn(&str, u64, u64),
 ) -> Result<Generated, String> {
@@ -176,23 +168,38 @@ pub fn generate(
         .iter()
         .map(|b| {
             vec![
-                b.slots as f64 / b.max_slots as f64,
-                b.executed as f64 / b.max_executed as f64,
+                b.slots as f64 / b.limits.max_slots as f64,
+                b.executed as f64 / b.limits.max_executed as f64,
             ]
         })
         .collect();
+    // The bundled name of each row (`article:loop`), the path left to the page.
+    let rows: Vec<String> = out
+        .budgets
+        .iter()
+        .map(|b| b.shader.split(" (").next().unwrap_or(&b.shader).to_string())
+        .collect();
     let chart = BarChart {
+        labels: figures::Labels {
+            title: "Bundled shaders against the ps_3_0 budgets",
+            x: "share of the limit (512 slots; 65,535 executed per pixel)",
+            y: "shader",
+        },
+        rows: &rows,
         groups: &groups,
-        colors: &[SLOTS_COLOR, EXECUTED_COLOR],
+        bars: &[
+            ("instruction slots", SLOTS_COLOR),
+            ("executed per pixel", EXECUTED_COLOR),
+        ],
         max_fraction: 1.25,
-        plot_width: 500,
+        width: 900,
     };
-    write_png(batch, &mut out, "budgets.png", &chart.render())?;
+    write_png(batch, &mut out, "budgets.png", &chart.render()?)?;
     let page = budgets_page(&out.budgets);
     write(batch, &mut out, "budgets.md", &page)?;
 
     progress("per-block heat maps", 1, total);
-    let cross = load_image(root, verify::CROSSCHECK_IMAGE)?;
+    let cross = assets::load(verify::CROSSCHECK_IMAGE)?;
     let runs = [
         ("corrected:unrolled", "corrected:pass2"),
         ("article:unrolled", "article:pass2"),
@@ -209,7 +216,7 @@ pub fn generate(
         },
     );
     let runs: Vec<(String, String, LuminanceRun)> = runs.into_iter().collect::<Result<_, _>>()?;
-    let (figs, canvases) = block_figures(&cross, &runs);
+    let (figs, canvases) = block_figures(&cross, &runs)?;
     for (f, c) in figs.iter().zip(&canvases) {
         write_png(batch, &mut out, &f.file, c)?;
     }
@@ -220,7 +227,7 @@ pub fn generate(
     for (i, name) in IMAGES.iter().enumerate() {
         progress(&format!("tone mapping {name}"), 2 + i as u64, total);
         let rel = format!("assets/hdr/{name}");
-        let img = load_image(root, &rel)?;
+        let img = assets::load(&rel)?;
         let settings = tonemap::Settings {
             threads,
             ..tonemap::Settings::default()
@@ -243,10 +250,6 @@ pub fn generate(
     write(batch, &mut out, "README.md", &page)?;
     progress("done", total, total);
     Ok(out)
-}
-
-fn load_image(root: &Path, rel: &str) -> Result<HdrImage, String> {
-    crate::core::image::load(&root.join(rel), &ImageLimits::default()).map_err(|e| e.to_string())
 }
 
 /// The bundled shaders measured with the constants the article uses.
@@ -311,8 +314,7 @@ pub fn budgets() -> Result<Vec<Budget>, String> {
                 constants: constants.to_string(),
                 slots: a.slots,
                 executed: a.executed.max,
-                max_slots: a.profile.max_slots,
-                max_executed: a.profile.max_executed,
+                limits: a.profile.clone(),
             })
         })
         .collect()
@@ -340,20 +342,27 @@ fn budgets_page(budgets: &[Budget]) -> String {
             b.shader,
             b.constants,
             b.slots,
-            100.0 * b.slots as f64 / b.max_slots as f64,
+            100.0 * b.slots as f64 / b.limits.max_slots as f64,
             thousands(b.executed),
-            100.0 * b.executed as f64 / b.max_executed as f64
+            100.0 * b.executed as f64 / b.limits.max_executed as f64
         ));
     }
     s
 }
 
-/// Pixel boundaries of blocks of `block` over `size` pixels, at half scale.
-fn edges(size: u32, block: u32) -> Vec<u32> {
+/// Boundaries of blocks of `block` over `size` pixels, in image pixels.
+fn edges(size: u32, block: u32) -> Vec<f64> {
     let n = size.div_ceil(block);
-    (0..=n)
-        .map(|k| ((k * block).min(size) as f64 / 2.0).round() as u32)
-        .collect()
+    (0..=n).map(|k| (k * block).min(size) as f64).collect()
+}
+
+/// The size of a heat map of a `w × h` image: 640 pixels of map, the
+/// image's aspect ratio, room for the title, axes and colour bar.
+fn heat_map_size(w: u32, h: u32) -> (u32, u32) {
+    (
+        640 + 150 + 70,
+        (640.0 * h as f64 / w as f64).round() as u32 + 90,
+    )
 }
 
 /// log10(difference / bound), the error heat maps' quantity.
@@ -380,11 +389,11 @@ fn block_means(image: &HdrImage, run: &LuminanceRun) -> Vec<f64> {
 fn block_figures(
     image: &HdrImage,
     runs: &[(String, String, LuminanceRun)],
-) -> (Vec<BlockFigure>, Vec<figures::Canvas>) {
+) -> Result<(Vec<BlockFigure>, Vec<figures::Canvas>), String> {
     let mut figs = Vec::new();
     let mut canvases = Vec::new();
     let Some((p1, p2, first)) = runs.first() else {
-        return (figs, canvases);
+        return Ok((figs, canvases));
     };
     let xe = edges(image.width, first.block.0);
     let ye = edges(image.height, first.block.1);
@@ -394,16 +403,28 @@ fn block_figures(
     let lo = means.iter().copied().fold(f64::INFINITY, f64::min);
     let hi = means.iter().copied().fold(f64::NEG_INFINITY, f64::max);
     let range = ((lo * 10.0).floor() / 10.0, (hi * 10.0).ceil() / 10.0);
+    let size = heat_map_size(image.width, image.height);
+    let title = format!(
+        "Mean log2(δ + L) per {}×{} block ({})",
+        first.block.0, first.block.1, p1
+    );
     canvases.push(
         HeatMap {
+            labels: figures::Labels {
+                title: &title,
+                x: "x (image pixels)",
+                y: "y (image pixels)",
+            },
+            colorbar: "mean log2(δ + L) over the block",
             values: &means,
             x_edges: &xe,
             y_edges: &ye,
             range,
             marks: &[],
             flagged: &[],
+            size,
         }
-        .render(),
+        .render()?,
     );
     figs.push(BlockFigure {
         file: "blocks-log-luminance.png".into(),
@@ -438,16 +459,24 @@ fn block_figures(
             })
             .collect();
         let flagged: Vec<bool> = r.blocks.iter().map(|b| !b.agree).collect();
+        let title = format!("Block error against its bound: {p1} + {p2}");
         canvases.push(
             HeatMap {
+                labels: figures::Labels {
+                    title: &title,
+                    x: "x (image pixels)",
+                    y: "y (image pixels)",
+                },
+                colorbar: "log10(|emulated − reference| / bound); 0: the bound",
                 values: &values,
                 x_edges: &xe,
                 y_edges: &ye,
                 range: (lo, hi),
                 marks: &[0.0],
                 flagged: &flagged,
+                size,
             }
-            .render(),
+            .render()?,
         );
         figs.push(BlockFigure {
             file: format!("blocks-error-{}.png", p1.split(':').next().unwrap_or("run")),
@@ -459,7 +488,7 @@ fn block_figures(
             blocks_agreeing: agreeing(r),
         });
     }
-    (figs, canvases)
+    Ok((figs, canvases))
 }
 
 fn blocks_page(

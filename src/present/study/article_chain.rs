@@ -136,7 +136,7 @@ fn preview(r: &ChainRun) -> Canvas {
 }
 
 /// The report page `article-chain.md` and its preview.
-pub fn page(r: &ChainRun) -> Page {
+pub fn page(r: &ChainRun) -> Result<Page, String> {
     let p = preview(r);
     let mut m = format!(
         "# The article's chain, from G-buffer to display\n\n\
@@ -173,9 +173,9 @@ pub fn page(r: &ChainRun) -> Page {
         p.height,
         summary(r)
     ));
-    Page {
+    Ok(Page {
         name: "article-chain.md".into(),
         markdown: m,
         figures: vec![("article-chain.png".into(), p)],
-    }
+    })
 }

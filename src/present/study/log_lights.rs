@@ -4,7 +4,7 @@
 use super::{table, text_table, Page};
 use crate::core::numbers::number;
 use crate::jobs::studies::log_lights::{Method, Study, Summary, DIM, SWEEP_BRIGHTNESS, WIDTH};
-use crate::present::report::figures::{LineChart, Series};
+use crate::present::report::figures::{Labels, LineChart, Series};
 
 /// The command that reproduces the page.
 pub const COMMAND: &str = "ps30 study log-lights";
@@ -153,7 +153,7 @@ pub fn json(s: &Study) -> serde_json::Value {
 /// The figure: the largest |error| in each of [`BINS`] equal bins of the
 /// true light, for one light swept to [`SWEEP_BRIGHTNESS`], log y from 10⁻⁶
 /// to 10.
-fn figure(s: &Study) -> crate::present::report::figures::Canvas {
+fn figure(s: &Study) -> Result<crate::present::report::figures::Canvas, String> {
     let width = SWEEP_BRIGHTNESS as f64 / BINS as f64;
     let series: Vec<Series> = s
         .sweep
@@ -170,6 +170,7 @@ fn figure(s: &Study) -> crate::present::report::figures::Canvas {
                 };
             }
             Series {
+                name: a.method.name().to_string(),
                 points: worst
                     .iter()
                     .enumerate()
@@ -180,21 +181,24 @@ fn figure(s: &Study) -> crate::present::report::figures::Canvas {
         })
         .collect();
     LineChart {
+        labels: Labels {
+            title: "Largest error of one light, by its true brightness",
+            x: "true light (linear units)",
+            y: "largest |recovered − true|",
+        },
         series: &series,
         x_range: (0.0, SWEEP_BRIGHTNESS as f64),
         y_range: (1e-6, 10.0),
         log_y: true,
-        width: 600,
-        height: 300,
-        x_ticks: &[1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 9.0],
-        y_ticks: &[1e-5, 1e-4, 1e-3, 1e-2, 1e-1, 1.0],
         hlines: &[],
+        legend: plotters::chart::SeriesLabelPosition::MiddleRight,
+        size: (760, 420),
     }
     .render()
 }
 
 /// The report page `log-lights.md` and its figure.
-pub fn page(s: &Study) -> Page {
+pub fn page(s: &Study) -> Result<Page, String> {
     let (b, o) = tables(s);
     let h = headline(s);
     let mut m = format!(
@@ -261,9 +265,9 @@ pub fn page(s: &Study) -> Page {
          within their derived bound, of those in range. out of range from: the smallest true \
          light past the method's range.*\n",
     );
-    Page {
+    Ok(Page {
         name: "log-lights.md".into(),
         markdown: m,
-        figures: vec![("log-lights-error.png".into(), figure(s))],
-    }
+        figures: vec![("log-lights-error.png".into(), figure(s)?)],
+    })
 }

@@ -5,7 +5,7 @@ use super::{percent, table, text_table, Page};
 use crate::core::image::{chain_weights, full_chain_levels, OddSides};
 use crate::core::numbers::{number, size};
 use crate::jobs::studies::mip_luminance::{Frame, MipRun, Study, CROPS, ODD_RANGE, SWEEP_IMAGE};
-use crate::present::report::figures::{Canvas, LineChart, Series};
+use crate::present::report::figures::{Canvas, Labels, LineChart, Series};
 
 /// The command that reproduces the page.
 pub const COMMAND: &str = "ps30 study mip-luminance";
@@ -152,8 +152,9 @@ pub fn json(s: &Study) -> serde_json::Value {
 
 /// |relative error| against the range's half-width on the sweep image,
 /// with the article's error as a dashed line.
-fn ranges_figure(s: &Study) -> Canvas {
+fn ranges_figure(s: &Study) -> Result<Canvas, String> {
     let mips = Series {
+        name: "mip chain, 8-bit alpha (the method)".into(),
         points: s
             .sweep
             .iter()
@@ -162,6 +163,7 @@ fn ranges_figure(s: &Study) -> Canvas {
         color: [62, 73, 137],
     };
     let weights_only = Series {
+        name: "the chain's weights alone (f64)".into(),
         points: s
             .sweep
             .iter()
@@ -176,25 +178,35 @@ fn ranges_figure(s: &Study) -> Canvas {
         .map_or(1e-5, |f| f.article.relative_error.abs());
     let series = [mips, weights_only];
     LineChart {
+        labels: Labels {
+            title: "Mip-chain L̄w against the encoded range (1280×1024 image)",
+            x: "half-width of the log2 range (stops)",
+            y: "|relative error of L̄w|",
+        },
         series: &series,
         x_range: (0.0, 32.0),
         y_range: (1e-5, 10.0),
         log_y: true,
-        width: 600,
-        height: 300,
-        x_ticks: &[4.0, 8.0, 12.0, 16.0, 20.0, 24.0, 28.0],
-        y_ticks: &[1e-4, 1e-3, 1e-2, 1e-1, 1.0],
-        hlines: &[(article, [214, 39, 40])],
+        hlines: &[(article, [214, 39, 40], "the article's two passes")],
+        legend: plotters::chart::SeriesLabelPosition::UpperLeft,
+        size: (760, 420),
     }
     .render()
 }
 
 /// Per-column weight × width of three chains.
-fn weights_figure() -> (Canvas, f64) {
+fn weights_figure() -> Result<(Canvas, f64), String> {
     let curve = |w: u32, h: u32, odd: OddSides, color: [u8; 3]| {
         let levels = full_chain_levels(w, h);
         let wx = chain_weights(w, levels, odd);
         Series {
+            name: format!(
+                "{w}×{h}, {} odd sides",
+                match odd {
+                    OddSides::Fold => "folded",
+                    OddSides::Bilinear => "bilinear",
+                }
+            ),
             points: wx
                 .iter()
                 .enumerate()
@@ -214,18 +226,21 @@ fn weights_figure() -> (Canvas, f64) {
         .fold(0.0, f64::max);
     let y_top = 10f64.powf(top.log10().ceil()).max(10.0);
     let c = LineChart {
+        labels: Labels {
+            title: "Column weights of three mip chains",
+            x: "column, as a fraction of the width",
+            y: "weight × width (1: every column alike)",
+        },
         series: &series,
         x_range: (0.0, 1.0),
         y_range: (1e-2, y_top),
         log_y: true,
-        width: 600,
-        height: 240,
-        x_ticks: &[0.2, 0.4, 0.6, 0.8],
-        y_ticks: &[0.1, 1.0, 10.0],
-        hlines: &[(1.0, [0, 0, 0])],
+        hlines: &[(1.0, [0, 0, 0], "uniform weight")],
+        legend: plotters::chart::SeriesLabelPosition::LowerMiddle,
+        size: (760, 380),
     }
-    .render();
-    (c, y_top)
+    .render()?;
+    Ok((c, y_top))
 }
 
 /// The odd side lengths (above 1) a `w × h` chain passes through, largest first.
@@ -240,9 +255,9 @@ fn odd_sides(w: u32, h: u32) -> Vec<u32> {
 }
 
 /// The report page `mip-luminance.md` and its figures.
-pub fn page(s: &Study) -> Page {
+pub fn page(s: &Study) -> Result<Page, String> {
     let ((m0, m1), (a0, a1), (q0, q1)) = spread(s);
-    let (weights, y_top) = weights_figure();
+    let (weights, y_top) = weights_figure()?;
     let odd = s.frames.iter().find(|f| f.image == SWEEP_IMAGE);
     let odd_effect = odd
         .and_then(|f| f.runs.iter().find(|r| r.range == ODD_RANGE))
@@ -371,12 +386,12 @@ pub fn page(s: &Study) -> Page {
         ],
         &sweep_rows,
     ));
-    Page {
+    Ok(Page {
         name: "mip-luminance.md".into(),
         markdown: m,
         figures: vec![
-            ("mip-luminance-ranges.png".into(), ranges_figure(s)),
+            ("mip-luminance-ranges.png".into(), ranges_figure(s)?),
             ("mip-luminance-weights.png".into(), weights),
         ],
-    }
+    })
 }

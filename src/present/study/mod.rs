@@ -12,8 +12,11 @@ use crate::present::report::figures::Canvas;
 /// A report page and the figures it shows, ready to be written: the page
 /// as `reports/NAME`, each figure as `reports/figures/FILE`.
 pub struct Page {
+    /// The page's file name (`log-lights.md`).
     pub name: String,
+    /// The page.
     pub markdown: String,
+    /// Its figures: file names under `figures/`, and the images.
     pub figures: Vec<(String, Canvas)>,
 }
 

@@ -1,0 +1,321 @@
+//! Every command's `--json` against `docs/json-schema/ps30.json`, the one
+//! place the shapes are written down, and against the vocabulary rules every
+//! command shares (see `src/present/json.rs`).
+//!
+//! The schema is standard JSON Schema (draft 2020-12), so any validator can
+//! use it; the test checks it with the small validator below, which knows
+//! the keywords the schema uses (`type`, `properties`, `required`, `items`,
+//! `enum`, `$ref`, and the annotations) — and fails on any other keyword, so
+//! that a constraint the validator would skip cannot slip into the schema.
+
+use serde_json::Value;
+use std::path::Path;
+
+#[path = "common/bin.rs"]
+mod bin;
+
+/// Keywords the validator checks, and annotations it may ignore.
+const CHECKED: [&str; 6] = ["type", "properties", "required", "items", "enum", "$ref"];
+const ANNOTATIONS: [&str; 5] = ["description", "title", "$schema", "$id", "$defs"];
+
+fn schema() -> Value {
+    let text = std::fs::read_to_string(bin::repo().join("docs/json-schema/ps30.json")).unwrap();
+    serde_json::from_str(&text).unwrap()
+}
+
+/// The schema at a local reference (`#/$defs/…`).
+fn resolve<'a>(root: &'a Value, reference: &str) -> &'a Value {
+    let path = reference.strip_prefix('#').expect("a local reference");
+    root.pointer(path)
+        .unwrap_or_else(|| panic!("{reference}: not in the schema"))
+}
+
+fn type_matches(t: &str, v: &Value) -> bool {
+    match t {
+        "object" => v.is_object(),
+        "array" => v.is_array(),
+        "string" => v.is_string(),
+        "integer" => v.is_i64() || v.is_u64(),
+        "number" => v.is_number(),
+        "boolean" => v.is_boolean(),
+        "null" => v.is_null(),
+        other => panic!("unknown type {other}"),
+    }
+}
+
+/// Problems of `v` against `s` (a schema inside `root`), at `at`.
+fn validate(root: &Value, s: &Value, v: &Value, at: &str, out: &mut Vec<String>) {
+    let s = s.as_object().expect("a schema is an object");
+    for k in s.keys() {
+        assert!(
+            CHECKED.contains(&k.as_str()) || ANNOTATIONS.contains(&k.as_str()),
+            "{at}: the schema uses `{k}`, which this validator does not check"
+        );
+    }
+    if let Some(r) = s.get("$ref") {
+        validate(root, resolve(root, r.as_str().unwrap()), v, at, out);
+    }
+    if let Some(t) = s.get("type") {
+        let types: Vec<&str> = match t {
+            Value::String(one) => vec![one.as_str()],
+            Value::Array(many) => many.iter().map(|x| x.as_str().unwrap()).collect(),
+            _ => panic!("{at}: type must be a string or a list"),
+        };
+        if !types.iter().any(|t| type_matches(t, v)) {
+            out.push(format!("{at}: {v} is not {}", types.join(" or ")));
+            return;
+        }
+    }
+    if let Some(Value::Array(options)) = s.get("enum") {
+        if !options.contains(v) {
+            out.push(format!("{at}: {v} is not one of {options:?}"));
+        }
+    }
+    if let Value::Object(o) = v {
+        for r in s
+            .get("required")
+            .and_then(Value::as_array)
+            .into_iter()
+            .flatten()
+        {
+            let r = r.as_str().unwrap();
+            if !o.contains_key(r) {
+                out.push(format!("{at}: `{r}` is missing"));
+            }
+        }
+        if let Some(Value::Object(props)) = s.get("properties") {
+            for (k, sub) in props {
+                if let Some(x) = o.get(k) {
+                    validate(root, sub, x, &format!("{at}.{k}"), out);
+                }
+            }
+        }
+    }
+    if let (Value::Array(xs), Some(items)) = (v, s.get("items")) {
+        for (i, x) in xs.iter().enumerate() {
+            validate(root, items, x, &format!("{at}[{i}]"), out);
+        }
+    }
+}
+
+/// The vocabulary rules, over the whole value: no non-finite number spelled
+/// as a string, no range spelled as `_min`/`_max` fields beside each other,
+/// one name for the cost model's count (`executed`, not `executed_static`
+/// or `static_executed`), no limit spelled `max_slots`/`max_executed`.
+fn vocabulary(v: &Value, at: &str, out: &mut Vec<String>) {
+    match v {
+        Value::String(s)
+            if ["inf", "-inf", "+inf", "nan", "infinity", "-infinity"]
+                .contains(&s.to_lowercase().as_str()) =>
+        {
+            out.push(format!(
+                "{at}: a non-finite number as the string {s:?} (null is the rule)"
+            ));
+        }
+        Value::Object(o) => {
+            for (k, x) in o {
+                // One finding per pair (`max_error` alone is a maximum, not a range).
+                if k.ends_with("_min") {
+                    out.push(format!(
+                        "{at}.{k}: a range as two fields ({{min, max}} is the rule)"
+                    ));
+                }
+                if k == "executed_static" || k == "static_executed" {
+                    out.push(format!(
+                        "{at}.{k}: the cost model's count is `executed` (the emulator's `executed_emulated`)"
+                    ));
+                }
+                if k == "max_slots" || k == "max_executed" {
+                    out.push(format!("{at}.{k}: limits are {{name, slots, executed}}"));
+                }
+                vocabulary(x, &format!("{at}.{k}"), out);
+            }
+        }
+        Value::Array(xs) => {
+            for (i, x) in xs.iter().enumerate() {
+                vocabulary(x, &format!("{at}[{i}]"), out);
+            }
+        }
+        _ => {}
+    }
+}
+
+/// Runs `ps30 ARGS` in `dir` and checks its JSON against the schema of
+/// `command`; returns the JSON.
+fn check(command: &str, args: &[&str], dir: &Path, codes: &[i32]) -> Value {
+    let o = bin::ps30(args, dir);
+    let code = o.status.code().unwrap();
+    assert!(
+        codes.contains(&code),
+        "{args:?}: exit {code}\n{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let v: Value =
+        serde_json::from_slice(&o.stdout).unwrap_or_else(|e| panic!("{args:?}: not JSON ({e})"));
+    let root = schema();
+    let mut problems = Vec::new();
+    validate(
+        &root,
+        resolve(&root, &format!("#/$defs/commands/{command}")),
+        &v,
+        command,
+        &mut problems,
+    );
+    vocabulary(&v, command, &mut problems);
+    assert!(problems.is_empty(), "{args:?}:\n{}", problems.join("\n"));
+    v
+}
+
+/// The loop listing's constants for forest.hdr, as the README's `run` sets them.
+const LOOP: [&str; 10] = [
+    "--int",
+    "i1=128",
+    "--int",
+    "i2=52",
+    "--const",
+    "c0=0,0,0,0",
+    "--const",
+    "c1=0.0009765625,0.001953125,0,1",
+    "--const",
+    "c3=0.27,0.67,0.06,0.01",
+];
+
+#[test]
+fn every_command_matches_the_schema() {
+    let repo = bin::repo();
+    let tmp = tempfile::tempdir().unwrap();
+    let t = |name: &str| tmp.path().join(name).to_str().unwrap().to_string();
+
+    let v = check("check", &["check", "article:loop", "--json"], repo, &[1]);
+    assert_eq!(v["limits"]["slots"], 512);
+    check(
+        "check",
+        &["check", "article:unrolled", "--int", "i2=128", "--json"],
+        repo,
+        &[0],
+    );
+    // A value the shader never reads is a warning among the diagnostics.
+    let v = check(
+        "check",
+        &["check", "article:loop", "--const", "c9=1,1,1,1", "--json"],
+        repo,
+        &[1],
+    );
+    let d = &v["diagnostics"][0];
+    assert_eq!(
+        (&d["severity"], d["file"].is_null()),
+        (&serde_json::json!("warning"), true)
+    );
+    // Bad input (exit 2) is reported on stderr and prints no JSON at all.
+    let bad = t("bad.psh");
+    std::fs::write(&bad, "ps_3_0\nadd r1, r1\n").unwrap();
+    let o = bin::ps30(&["check", &bad, "--json"], repo);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(o.stdout.is_empty() && String::from_utf8_lossy(&o.stderr).contains("bad.psh:2:"));
+    check(
+        "expand",
+        &["expand", "article:unrolled", "--json"],
+        repo,
+        &[0],
+    );
+    let mut run = vec![
+        "run",
+        "corrected:loop",
+        "--image",
+        "assets/hdr/forest.hdr",
+        "--target",
+        "8x10",
+        "--json",
+    ];
+    run.extend(LOOP);
+    check("run", &run, repo, &[0]);
+    let v = check(
+        "luminance",
+        &["luminance", "assets/hdr/city.exr", "--json"],
+        repo,
+        &[0],
+    );
+    assert_eq!(
+        v["delta"],
+        serde_json::json!(0.0001),
+        "δ as the shortest decimal"
+    );
+    check(
+        "tonemap",
+        &["tonemap", "assets/hdr/city.exr", "--json"],
+        repo,
+        &[0],
+    );
+    check(
+        "profile",
+        &["profile", "lights:select", "--gbuffer", "16x16", "--json"],
+        repo,
+        &[0],
+    );
+    check("shaders", &["shaders", "--json"], repo, &[0]);
+    check(
+        "plan",
+        &["plan", "--frame", "1280x1024", "--json"],
+        repo,
+        &[0],
+    );
+    check(
+        "unroll",
+        &["unroll", "--frame", "64x64", "--fit", "--json"],
+        repo,
+        &[0],
+    );
+    check(
+        "render",
+        &[
+            "render",
+            "drawlists/lights.json",
+            "-o",
+            &t("render"),
+            "--json",
+        ],
+        repo,
+        &[0],
+    );
+    let v = check(
+        "study",
+        &["study", "log-lights", "--reports", &t("study"), "--json"],
+        repo,
+        &[0],
+    );
+    assert_eq!(v["brightness"][0]["brightness"], serde_json::json!(0.1));
+    check(
+        "verify",
+        &["verify", "--reports", &t("reports"), "--json"],
+        repo,
+        &[0],
+    );
+}
+
+/// The validator itself finds what it should: a missing field, a wrong
+/// type, a value outside an enum, inside arrays and through references.
+#[test]
+fn the_validator_finds_what_is_wrong() {
+    let root = schema();
+    let d = resolve(&root, "#/$defs/commands/check");
+    let mut p = Vec::new();
+    validate(
+        &root,
+        d,
+        &serde_json::json!({"executed": {"min": 1}, "verdict": "fine", "slots": "7"}),
+        "c",
+        &mut p,
+    );
+    let all = p.join("\n");
+    assert!(all.contains("c: `shader` is missing"), "{all}");
+    assert!(all.contains("c.executed: `max` is missing"), "{all}");
+    assert!(all.contains("c.verdict: \"fine\" is not one of"), "{all}");
+    assert!(all.contains("c.slots: \"7\" is not integer"), "{all}");
+    let mut p = Vec::new();
+    vocabulary(
+        &serde_json::json!({"a": [{"x": "-inf", "executed_min": 1, "executed_max": 2}]}),
+        "v",
+        &mut p,
+    );
+    assert_eq!(p.len(), 2, "{p:?}");
+}
