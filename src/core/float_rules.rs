@@ -30,6 +30,7 @@ pub enum FloatRules {
 }
 
 impl FloatRules {
+    /// Every set, the default first: the order `--float-rules` lists them in.
     pub const ALL: [FloatRules; 3] = [FloatRules::D3d9, FloatRules::Ieee, FloatRules::D3d9ZeroMul];
 
     /// The name used on the command line and in reports.
@@ -41,6 +42,8 @@ impl FloatRules {
         }
     }
 
+    /// The set a command-line or report name stands for ([`FloatRules::name`]);
+    /// `None` for an unknown name, so the caller can list [`FloatRules::ALL`].
     pub fn from_name(name: &str) -> Option<FloatRules> {
         FloatRules::ALL.into_iter().find(|r| r.name() == name)
     }
@@ -66,9 +69,13 @@ impl fmt::Display for FloatRules {
 /// and where the D3D9 side comes from.
 #[derive(Clone, Copy, Debug)]
 pub struct Rule {
+    /// The ps_3_0 instruction the rule is about (`log`, `rsq`, `nrm`, …).
     pub instruction: &'static str,
+    /// Its special cases under `d3d9` (and `d3d9-zero-mul`), in shader terms.
     pub d3d9: &'static str,
+    /// Its special cases under `ieee`: what the target language computes anyway.
     pub ieee: &'static str,
+    /// Where the D3D9 side is written down (`MS` = Microsoft's instruction pages).
     pub source: &'static str,
 }
 

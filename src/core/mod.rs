@@ -24,10 +24,8 @@ pub mod bytecode;
 pub mod cost;
 pub mod diag;
 pub mod emu;
-#[allow(missing_docs)] // not yet documented item by item (ARCHITECTURE.md, "Documentation")
 pub mod float_rules;
 pub mod front;
-#[allow(missing_docs)] // not yet documented item by item (ARCHITECTURE.md, "Documentation")
 pub mod gpu;
 pub mod image;
 pub mod ir;

@@ -62,7 +62,9 @@ impl TargetKind {
 /// laid out as [`emu::DrawOutput`]'s.
 #[derive(Clone, Debug, PartialEq)]
 pub struct GpuOutput {
+    /// Target width in pixels.
     pub width: u32,
+    /// Target height in pixels.
     pub height: u32,
     /// One entry per `oC0..oC3`; `None` if the shader never writes it.
     pub color: Vec<Option<Vec<[f32; 4]>>>,

@@ -43,14 +43,19 @@ use std::fmt;
 /// What the device is, for reports.
 #[derive(Clone, Debug, PartialEq, serde::Serialize)]
 pub struct DeviceInfo {
+    /// The adapter's name as the driver reports it (`llvmpipe (LLVM 15.0.6, 256 bits)`).
     pub name: String,
     /// `Vulkan`.
     pub backend: String,
     /// `Cpu`, `DiscreteGpu`, …
     pub device_type: String,
+    /// The driver's name (`llvmpipe`, `NVIDIA`).
     pub driver: String,
+    /// The driver's version string, as free text.
     pub driver_info: String,
+    /// The PCI vendor id (0x10de NVIDIA, 0x10005 Mesa); 0 where the driver gives none.
     pub vendor: u32,
+    /// The PCI device id within the vendor; 0 where the driver gives none.
     pub device: u32,
 }
 
@@ -167,6 +172,7 @@ impl Gpu {
         })
     }
 
+    /// What the opened device is, for reports ([`DeviceInfo::line`]).
     pub fn info(&self) -> &DeviceInfo {
         &self.info
     }
