@@ -19,7 +19,6 @@
 //! against what its shader reads. Nothing here imports from `jobs` or `present`.
 
 pub mod audit;
-#[allow(missing_docs)] // not yet documented item by item (ARCHITECTURE.md, "Documentation")
 pub mod bytecode;
 pub mod cost;
 pub mod diag;

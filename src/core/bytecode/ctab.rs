@@ -35,6 +35,7 @@ pub const WORK_FACTOR: usize = 8;
 /// The decoded table.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct ConstantTable {
+    /// The compiler that wrote the table (`Microsoft (R) HLSL Shader Compiler …`).
     pub creator: String,
     /// The profile the shader was compiled for (`ps_3_0`).
     pub target: String,
@@ -42,18 +43,22 @@ pub struct ConstantTable {
     pub version: u32,
     /// D3DXSHADER_* compile flags.
     pub flags: u32,
+    /// The uniforms, in the table's order.
     pub constants: Vec<Constant>,
 }
 
 /// One uniform of the shader.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Constant {
+    /// The HLSL name (`g_fKey`), the name `--const` accepts.
     pub name: String,
+    /// Which register file it lives in.
     pub set: RegisterSet,
     /// First register.
     pub index: u16,
     /// Registers it takes.
     pub count: u16,
+    /// Its HLSL type, members and array length included.
     #[serde(rename = "type")]
     pub ty: Type,
     /// The default value's 32-bit words, as D3DX lays them out (see the
@@ -65,9 +70,13 @@ pub struct Constant {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "lowercase")]
 pub enum RegisterSet {
+    /// `b#` registers.
     Bool,
+    /// `i#` registers.
     Int4,
+    /// `c#` registers.
     Float4,
+    /// `s#` samplers.
     Sampler,
 }
 
@@ -96,13 +105,17 @@ impl RegisterSet {
 /// A D3DXSHADER_TYPEINFO.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Type {
+    /// Scalar, vector, matrix, object or struct.
     pub class: Class,
     /// D3DXPARAMETER_TYPE, as its HLSL name (`float`, `sampler2D`).
     pub base: &'static str,
+    /// Rows of a matrix (1 for scalars and vectors).
     pub rows: u16,
+    /// Columns (components of a vector; 1 for scalars).
     pub columns: u16,
     /// Array length (0 or 1: not an array).
     pub elements: u16,
+    /// The members of a struct, in order; empty for every other class.
     pub members: Vec<Member>,
 }
 
@@ -110,18 +123,26 @@ pub struct Type {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Class {
+    /// One component (`float`).
     Scalar,
+    /// A vector (`float3`).
     Vector,
+    /// A matrix stored row by row (`row_major float4x4`).
     MatrixRows,
+    /// A matrix stored column by column, HLSL's default.
     MatrixColumns,
+    /// A sampler or texture.
     Object,
+    /// A struct: see [`Type::members`].
     Struct,
 }
 
 /// A struct member.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Member {
+    /// The member's HLSL name.
     pub name: String,
+    /// The member's type.
     #[serde(rename = "type")]
     pub ty: Type,
 }
@@ -153,7 +174,9 @@ const TYPE_NAMES: [&str; 20] = [
 /// Why a table does not decode, at a byte offset of the table.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct CtabError {
+    /// Byte offset in the table (from just after `CTAB`).
     pub offset: usize,
+    /// What is wrong there, in one sentence.
     pub message: String,
 }
 

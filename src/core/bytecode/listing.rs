@@ -25,6 +25,7 @@ use std::fmt::Write;
 /// A listing and where its parts came from.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Listing {
+    /// The assembly text, in the style of fxc's listings.
     pub text: String,
     /// `(text offset, token index)` at the start of each line and of each
     /// operand, in text order.

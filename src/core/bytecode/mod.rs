@@ -76,13 +76,17 @@ pub const CTAB: u32 = u32::from_le_bytes(*b"CTAB");
 
 /// Result-modifier bits of a destination token.
 pub const SAT: u8 = 1;
+/// `_pp`: partial precision (ps30 computes in full precision anyway).
 pub const PP: u8 = 2;
+/// `_centroid`: interpolate at the centroid (only on `dcl` of an input).
 pub const CENTROID: u8 = 4;
 
 /// A decoded ps_3_0 token stream: its items in stream order, between the
 /// version token and the end token.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Module {
+    /// Instructions and comments in stream order (neither the version nor the
+    /// end token).
     pub items: Vec<Item>,
 }
 
@@ -90,12 +94,16 @@ pub struct Module {
 /// stream (the version token is token 0; its byte offset is 4 × token).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Item {
+    /// Index of the item's first token (the version token is token 0).
     pub token: u32,
+    /// What the tokens decode to.
     pub kind: ItemKind,
 }
 
+/// What one item of a stream is.
 #[derive(Clone, Debug, PartialEq)]
 pub enum ItemKind {
+    /// An instruction token and its operand tokens.
     Instr(Instr),
     /// A comment block's body, token for token.
     Comment(Vec<u32>),
@@ -105,29 +113,39 @@ pub enum ItemKind {
 /// decoded.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Instr {
+    /// The D3DSIO_* opcode (bits 0–15 of the instruction token).
     pub op: Opcode,
+    /// The comparison of `if_comp`, `break_comp`, `setp_comp` (the control
+    /// bits); `None` for every other opcode.
     pub compare: Option<Compare>,
     /// The predicate token of a predicated instruction.
     pub predicate: Option<Source>,
     /// The operand in destination format, with the result modifiers.
     pub dst: Option<Dest>,
+    /// The source operands in order, relative addressing folded into each.
     pub src: Vec<Source>,
     /// The `dcl` usage token or the literals of `def`, `defi`, `defb`.
     pub extra: Extra,
 }
 
+/// The tokens an instruction carries besides its operands.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Extra {
+    /// Nothing: every instruction but `dcl` and the `def`s.
     None,
     /// A `dcl` usage token: usage (bits 0–3), usage index (16–19), sampler
     /// texture type (27–30).
     Decl {
+        /// D3DDECLUSAGE_* (0 position, 5 texcoord, 10 color, …).
         usage: u8,
+        /// The usage index (`texcoord3` → 3).
         index: u8,
+        /// D3DSTT_* of a sampler (2 2D, 3 cube, 4 volume); 0 for other registers.
         texture: u8,
     },
     /// `def`: four floats, as their bits.
     Float([u32; 4]),
+    /// `defi`: four integers (loop count, start, step, unused).
     Int([i32; 4]),
     /// `defb`: 0 or 1.
     Bool(bool),
@@ -136,7 +154,9 @@ pub enum Extra {
 /// A destination-format parameter.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Dest {
+    /// The register (file and number).
     pub reg: Reg,
+    /// Which components are written (bits 16–19).
     pub mask: WriteMask,
     /// [`SAT`] | [`PP`] | [`CENTROID`].
     pub result: u8,
@@ -146,9 +166,13 @@ pub struct Dest {
 /// number the token carries (the base plus the offset of `v[aL + n]`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Source {
+    /// The register (file and number).
     pub reg: Reg,
+    /// Whether a relative-address token (`aL`) follows the parameter.
     pub relative: bool,
+    /// Which component each of x, y, z, w reads (bits 16–23).
     pub swizzle: Swizzle,
+    /// Negation and absolute value (bits 24–27).
     pub modifier: SrcMod,
 }
 
@@ -270,7 +294,9 @@ pub fn version_name(token: u32) -> Option<String> {
 pub struct ReadError {
     /// Byte offset of the token at fault.
     pub byte: usize,
+    /// What is wrong, in one sentence.
     pub message: String,
+    /// What to do about it, where there is something to say.
     pub help: Option<String>,
 }
 
