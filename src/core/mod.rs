@@ -33,6 +33,5 @@ pub mod load;
 pub mod merge;
 pub mod numbers;
 pub mod output;
-#[allow(missing_docs)] // not yet documented item by item (ARCHITECTURE.md, "Documentation")
 pub mod translate;
 pub mod valid;

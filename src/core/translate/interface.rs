@@ -33,8 +33,11 @@ use crate::core::isa::{RegFile, SamplerType};
 pub const CONSTANTS_BINDING: u32 = 0;
 /// Byte offsets inside the constant block.
 pub const FLOATS_OFFSET: u32 = 0;
+/// Byte offset of `i0` in the constant block.
 pub const INTS_OFFSET: u32 = 224 * 16;
+/// Byte offset of `b0` in the constant block.
 pub const BOOLS_OFFSET: u32 = INTS_OFFSET + 16 * 16;
+/// Byte offset of the first `Ps30Sampler` in the constant block.
 pub const SAMPLERS_OFFSET: u32 = BOOLS_OFFSET + 16 * 16;
 /// Bytes of one `Ps30Sampler`.
 pub const SAMPLER_STATE_SIZE: u32 = 64;
@@ -60,21 +63,29 @@ pub fn sampler_binding(sampler: u32) -> u32 {
 /// A declared input register.
 #[derive(Clone, Debug, PartialEq, serde::Serialize)]
 pub struct Input {
+    /// The register number (`v3` → 3).
     pub register: u32,
+    /// The `dcl` usage (`texcoord`, `color`).
     pub usage: String,
+    /// The usage index (`dcl_texcoord3` → 3).
     pub usage_index: u32,
     /// Its `@location`: the register number.
     pub location: u32,
+    /// Whether it is interpolated at the centroid (`dcl_centroid`).
     pub centroid: bool,
 }
 
 /// A declared sampler.
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
 pub struct Sampler {
+    /// The register number (`s2` → 2).
     pub register: u32,
+    /// The texture dimension (`2d`, `cube`, `volume`), from `dcl_*`.
     #[serde(serialize_with = "sampler_type_name")]
     pub ty: SamplerType,
+    /// Its texture's `@binding` ([`texture_binding`]).
     pub texture_binding: u32,
+    /// Its sampler's `@binding` ([`sampler_binding`]).
     pub sampler_binding: u32,
 }
 
@@ -85,28 +96,39 @@ fn sampler_type_name<S: serde::Serializer>(ty: &SamplerType, s: S) -> Result<S::
 /// Everything an application binds, derived from the shader.
 #[derive(Clone, Debug, PartialEq, serde::Serialize)]
 pub struct Interface {
+    /// The `v#` the shader declares, in register order.
     pub inputs: Vec<Input>,
+    /// Whether the shader reads `vPos`.
     pub position: bool,
+    /// Whether the shader reads `vFace`.
     pub face: bool,
     /// `oC#` the shader writes (each at `@location(#)`).
     pub outputs: Vec<u32>,
+    /// Whether the shader writes `oDepth`.
     pub depth: bool,
+    /// The `s#` the shader declares, in register order.
     pub samplers: Vec<Sampler>,
     /// `c#`, `i#`, `b#` the shader defines itself: values set by the
     /// application are ignored for them (as in Direct3D).
     pub float_defs: Vec<u32>,
+    /// `i#` the shader defines itself (`defi`).
     pub int_defs: Vec<u32>,
+    /// `b#` the shader defines itself (`defb`).
     pub bool_defs: Vec<u32>,
     /// `c#`, `i#`, `b#` the shader reads from the application (not
     /// defined by the shader itself).
     pub floats_read: Vec<u32>,
+    /// `i#` the shader reads from the application.
     pub ints_read: Vec<u32>,
+    /// `b#` the shader reads from the application.
     pub bools_read: Vec<u32>,
     /// Whether the shader uses `texkill` (the pixel is discarded at the end).
     pub kills: bool,
 }
 
 impl Interface {
+    /// The interface of a validated shader: its declarations, definitions and
+    /// the registers its instructions read.
     pub fn of(shader: &Shader) -> Interface {
         let p = shader.program();
         let mut inputs = Vec::new();

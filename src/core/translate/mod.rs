@@ -62,14 +62,20 @@ use std::fmt;
 /// The languages naga writes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize)]
 pub enum Target {
+    /// WGSL, the language WebGPU runs and `core/gpu` draws with.
     Wgsl,
+    /// SPIR-V 1.0, binary (Vulkan's).
     SpirV,
+    /// GLSL 4.50 core.
     Glsl,
+    /// HLSL shader model 5.1 (Direct3D 12's).
     Hlsl,
+    /// Metal Shading Language 2.1.
     Msl,
 }
 
 impl Target {
+    /// Every target, WGSL first.
     pub const ALL: [Target; 5] = [
         Target::Wgsl,
         Target::SpirV,
@@ -78,6 +84,8 @@ impl Target {
         Target::Msl,
     ];
 
+    /// The name used on the command line and as the file extension's stem
+    /// (`wgsl`, `spirv`, `glsl`, `hlsl`, `msl`).
     pub fn name(self) -> &'static str {
         match self {
             Target::Wgsl => "wgsl",
@@ -106,11 +114,21 @@ pub enum TranslateError {
     /// Something the lowering does not express (named).
     Unsupported(String),
     /// A constant naga cannot hold as a literal.
-    NonFinite { what: String, value: f32 },
+    NonFinite {
+        /// The definition that holds it (`def c3`).
+        what: String,
+        /// The value (±∞ or NaN).
+        value: f32,
+    },
     /// naga's validator rejected the module: a bug in the lowering.
     Invalid(String),
     /// A naga writer failed.
-    Write { target: Target, message: String },
+    Write {
+        /// The language being written.
+        target: Target,
+        /// The writer's own message.
+        message: String,
+    },
     /// The IR broke an invariant validation should guarantee.
     Internal(&'static str),
 }
@@ -138,10 +156,15 @@ impl std::error::Error for TranslateError {}
 
 /// A validated translation.
 pub struct Translation {
+    /// The naga module, validated.
     pub module: naga::Module,
+    /// The validator's analysis of [`Translation::module`], which naga's writers need.
     pub info: naga::valid::ModuleInfo,
+    /// What an application binds where, as the header prints it.
     pub interface: Interface,
+    /// The float rules the module computes special values by.
     pub rules: FloatRules,
+    /// Which entry point the module has: an application's or the GPU backend's.
     pub entry: Entry,
     /// Whether the module turns WGSL's `derivative_uniformity` off.
     pub derivative_uniformity_off: bool,
@@ -406,7 +429,9 @@ fn lower_functions(
 
 /// A written translation: text, or SPIR-V words.
 pub enum Written {
+    /// Text languages: WGSL, GLSL, HLSL, MSL.
     Text(String),
+    /// SPIR-V's words, little-endian bytes.
     Binary(Vec<u8>),
 }
 
