@@ -14,7 +14,7 @@ use std::sync::Arc;
 /// The backend a job draws with.
 #[derive(Clone, Default)]
 pub enum Backend {
-    /// The CPU emulator (`threads`: `None` for all cores).
+    /// The CPU emulator.
     #[default]
     Emulator,
     /// A device opened with [`Gpu::open`].
@@ -44,6 +44,7 @@ impl Backend {
         }
     }
 
+    /// The device a GPU backend draws on; `None` for the emulator.
     pub fn device(&self) -> Option<&gpu::DeviceInfo> {
         match self {
             Backend::Emulator => None,
@@ -55,7 +56,9 @@ impl Backend {
 /// What a draw gave a job.
 #[derive(Clone, Debug)]
 pub struct Drawn {
+    /// Target width in pixels.
     pub width: u32,
+    /// Target height in pixels.
     pub height: u32,
     /// `oC0` per pixel (`None` if the shader never writes it).
     pub color: Option<Vec<[f32; 4]>>,
@@ -69,7 +72,9 @@ pub struct Drawn {
 /// Why a draw failed.
 #[derive(Debug)]
 pub enum DrawError {
+    /// The emulator refused or could not finish the draw.
     Emu(emu::EmuError),
+    /// The translation, the device or the read-back failed.
     Gpu(GpuError),
 }
 

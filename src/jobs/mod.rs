@@ -26,11 +26,9 @@
 //! [`outputs`] (what a pass wrote, channel by channel) only the core.
 
 pub mod assets;
-#[allow(missing_docs)] // not yet documented item by item (ARCHITECTURE.md, "Documentation")
 pub mod backend;
 pub mod blocks;
 pub mod bundled;
-#[allow(missing_docs)] // not yet documented item by item (ARCHITECTURE.md, "Documentation")
 pub mod compare;
 #[allow(missing_docs)] // not yet documented item by item (ARCHITECTURE.md, "Documentation")
 pub mod conformance;

@@ -19,6 +19,7 @@ pub struct Explanation {
     /// need not (flushing subnormals, storing f16 toward zero): the
     /// results differ beyond rounding, and the cause is known.
     pub device: bool,
+    /// The explanation, in sentences citing the probes.
     pub text: String,
 }
 

@@ -30,9 +30,13 @@ use std::sync::Arc;
 /// Why a comparison could not be made.
 #[derive(Debug)]
 pub enum CompareError {
+    /// The emulator refused or could not finish the draw.
     Emu(emu::EmuError),
+    /// The translation, the device or the read-back failed.
     Gpu(GpuError),
+    /// The luminance pipeline failed on one of the backends.
     Pipeline(PipelineError),
+    /// Anything else (a bundled shader or scene that does not load), as a sentence.
     Other(String),
 }
 
@@ -52,7 +56,9 @@ impl std::error::Error for CompareError {}
 /// The value of every input at one pixel.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct PixelInputs {
+    /// Column, in pixels from the left.
     pub x: u32,
+    /// Row, in pixels from the top.
     pub y: u32,
     /// `(register, value)`: each `v#` as the draw gives it, and vPos.
     pub values: Vec<(String, [f32; 4])>,
@@ -61,11 +67,15 @@ pub struct PixelInputs {
 /// One draw on both backends.
 #[derive(Clone, Debug, Serialize)]
 pub struct DrawComparison {
+    /// The shader's file name.
     pub shader: String,
+    /// Target width in pixels.
     pub width: u32,
+    /// Target height in pixels.
     pub height: u32,
     /// What the targets store: a D3D9 format, or `f32` (unrounded).
     pub target: String,
+    /// The float rules both backends ran under (`d3d9`, `ieee`, `d3d9-zero-mul`).
     pub float_rules: String,
     /// One entry per written channel (`oC0.r` … `oDepth`).
     pub channels: Vec<ChannelStats>,
@@ -80,14 +90,18 @@ pub struct DrawComparison {
 }
 
 impl DrawComparison {
+    /// Whether every stored channel is bit-identical and no pixel is killed on
+    /// one backend only.
     pub fn all_identical(&self) -> bool {
         self.killed_mismatches == 0 && self.channels.iter().all(|c| c.all_identical())
     }
 
+    /// The largest distance in ulps over every channel.
     pub fn max_ulp(&self) -> u64 {
         self.channels.iter().map(|c| c.max_ulp).max().unwrap_or(0)
     }
 
+    /// NaN or ∞ on one backend only, over every channel.
     pub fn special_mismatches(&self) -> u64 {
         self.channels
             .iter()
@@ -115,12 +129,15 @@ fn stored_channels(kind: TargetKind) -> &'static [usize] {
 /// Tone mapping of one image on both backends.
 #[derive(Clone, Debug, Serialize)]
 pub struct TonemapComparison {
+    /// The image's name.
     pub image: String,
     /// The r, g, b channels of the linear result.
     pub draw: DrawComparison,
+    /// Pixels tone-mapped.
     pub pixels: u64,
-    /// Pixels within their derived bound of the f64 reference, per backend.
+    /// Pixels within their derived bound of the f64 reference on the GPU.
     pub gpu_within: u64,
+    /// Pixels within their derived bound of the f64 reference on the emulator.
     pub emulator_within: u64,
     /// Why the backends differ; set once probes ran.
     pub explanation: Option<explain::Explanation>,
@@ -129,11 +146,17 @@ pub struct TonemapComparison {
 /// Everything `ps30 compare --all` measured.
 #[derive(Clone, Debug, Serialize)]
 pub struct CrossCheck {
+    /// The device both runs were compared on.
     pub device: gpu::DeviceInfo,
+    /// The float rules every comparison ran under.
     pub float_rules: String,
+    /// One per probed instruction ([`probe::run`]).
     pub probes: Vec<probe::Probe>,
+    /// The luminance pipeline, one entry per image and pass set.
     pub luminance: Vec<LuminanceComparison>,
+    /// Tone mapping, one entry per image.
     pub tonemap: Vec<TonemapComparison>,
+    /// The light-model shaders on their synthetic G-buffer.
     pub lights: Vec<DrawComparison>,
 }
 
@@ -230,10 +253,15 @@ pub fn opcodes(shaders: &[&crate::core::ir::Shader]) -> Vec<String> {
 /// L̄w from both backends and the f64 reference.
 #[derive(Clone, Debug, Serialize)]
 pub struct LogAverages {
+    /// L̄w as the GPU computed it.
     pub gpu: f64,
+    /// L̄w as the emulator computed it.
     pub emulator: f64,
+    /// L̄w of the f64 reference.
     pub reference: f64,
+    /// |GPU − reference| / |reference|.
     pub gpu_relative_error: f64,
+    /// |emulator − reference| / |reference|.
     pub emulator_relative_error: f64,
     /// The derived bound on the relative error (the same for both: it
     /// assumes no evaluation order, fused or not).
@@ -243,22 +271,33 @@ pub struct LogAverages {
 /// The luminance pipeline on both backends.
 #[derive(Clone, Debug, Serialize)]
 pub struct LuminanceComparison {
+    /// The image's name.
     pub image: String,
+    /// The pass-1 shader's name.
     pub pass1: String,
+    /// The shader of pass 1's last column, where the block width does not
+    /// divide the image's (`None`: one shader for every column, BORDER
+    /// padding in x).
     pub pass1_last: Option<String>,
+    /// The pass-2 shader's name.
     pub pass2: String,
+    /// Pixels per pass-1 block, (width, height).
     pub block: (u32, u32),
+    /// The pass-1 target's size in blocks, (width, height).
     pub targets: (u32, u32),
     /// The pass-1 target's D3D9 format.
     pub target_format: String,
     /// The pass-1 target (block sums) and pass 2's 1×1, compared.
     pub blocks: ChannelStats,
+    /// L̄w from both backends and the reference, with the derived bound.
     pub log_average: LogAverages,
-    /// Blocks within their bound of the f64 reference, per backend.
+    /// Blocks within their bound of the f64 reference on the GPU.
     pub gpu_blocks_within: usize,
+    /// Blocks within their bound of the f64 reference on the emulator.
     pub emulator_blocks_within: usize,
-    /// Whether each backend's run agrees with the reference everywhere.
+    /// Whether the GPU's run agrees with the reference everywhere.
     pub gpu_agrees: bool,
+    /// Whether the emulator's run agrees with the reference everywhere.
     pub emulator_agrees: bool,
     /// The instructions the passes use (mnemonics).
     pub opcodes: Vec<String>,

@@ -33,33 +33,42 @@ const SIDE: u32 = 64;
 pub struct Probe {
     /// The instruction, as written in the probe shader.
     pub instruction: String,
+    /// Inputs probed (texels of the probe's input texture).
     pub inputs: u64,
     /// Results bit-identical on both backends (every input).
     pub identical: u64,
+    /// Inputs in the ordinary group.
     pub ordinary: u64,
+    /// Ordinary inputs with bit-identical results.
     pub ordinary_identical: u64,
-    /// Over ordinary inputs: the largest emulator-to-GPU distance, and the
-    /// largest absolute difference.
+    /// Over ordinary inputs: the largest emulator-to-GPU distance, in ulps.
     pub max_ulp: u64,
+    /// Over ordinary inputs: the largest absolute emulator-to-GPU difference.
     pub max_abs: f64,
-    /// Over ordinary inputs: the largest distance of each backend from the
-    /// correctly rounded result.
+    /// Over ordinary inputs: the emulator's largest distance from the
+    /// correctly rounded result, in ulps.
     pub emulator_max_ulp_exact: u64,
+    /// Over ordinary inputs: the GPU's largest distance from the correctly
+    /// rounded result, in ulps.
     pub gpu_max_ulp_exact: u64,
-    /// Over ordinary inputs: the largest absolute error of each backend
-    /// against the exact (f64) result.
+    /// Over ordinary inputs: the emulator's largest absolute error against
+    /// the exact (f64) result.
     pub emulator_max_abs_exact: f64,
+    /// Over ordinary inputs: the GPU's largest absolute error against the
+    /// exact (f64) result.
     pub gpu_max_abs_exact: f64,
-    /// Vulkan's precision requirement for the instruction, and the ordinary
-    /// inputs on which each backend misses it.
+    /// Vulkan's precision requirement for the instruction, in words.
     pub spec: String,
+    /// Ordinary inputs on which the GPU misses [`Probe::spec`].
     pub gpu_outside_spec: u64,
+    /// Ordinary inputs on which the emulator misses [`Probe::spec`].
     pub emulator_outside_spec: u64,
-    /// Subnormal inputs: how many, how many differ, and in how many of
-    /// those the device's result is what the instruction gives with every
-    /// subnormal (operand or result) read as zero.
+    /// Inputs in the subnormal group.
     pub subnormal: u64,
+    /// Subnormal inputs whose results differ between the backends.
     pub subnormal_differ: u64,
+    /// Of those, how many give the device's result when every subnormal
+    /// (operand or result) is read as zero: the device flushes them.
     pub subnormal_as_zero: u64,
     /// Special inputs whose results differ: (input, emulator, GPU).
     pub specials: Vec<([f32; 4], f32, f32)>,
@@ -72,6 +81,7 @@ pub struct Probe {
 }
 
 impl Probe {
+    /// Whether every input, special ones included, gives identical results.
     pub fn all_identical(&self) -> bool {
         self.identical == self.inputs
     }

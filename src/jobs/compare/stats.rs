@@ -78,9 +78,13 @@ pub fn is_saturation(a: f32, b: f32) -> bool {
 /// One pixel where the backends differ most.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Worst {
+    /// Column, in pixels from the left.
     pub x: u32,
+    /// Row, in pixels from the top.
     pub y: u32,
+    /// The emulator's value, stored as the target stores it.
     pub emulator: f32,
+    /// The GPU's value, as the target stored it.
     pub gpu: f32,
     /// `None`: a NaN or ∞ on one side only.
     pub ulp: Option<u64>,
@@ -91,11 +95,13 @@ pub struct Worst {
 pub struct ChannelStats {
     /// `oC0.r`, `oDepth`, …
     pub channel: String,
+    /// Pixels compared.
     pub pixels: u64,
     /// Bit-identical values (NaNs count as identical only with equal bits).
     pub identical: u64,
     /// Pixels per ulp bucket ([`BUCKETS`]), NaN/∞ disagreements left out.
     pub histogram: [u64; 8],
+    /// The largest distance in ulps, NaN/∞ disagreements left out.
     pub max_ulp: u64,
     /// A NaN on one side only.
     pub nan_mismatches: u64,
