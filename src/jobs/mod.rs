@@ -30,7 +30,6 @@ pub mod backend;
 pub mod blocks;
 pub mod bundled;
 pub mod compare;
-#[allow(missing_docs)] // not yet documented item by item (ARCHITECTURE.md, "Documentation")
 pub mod conformance;
 #[allow(missing_docs)] // not yet documented item by item (ARCHITECTURE.md, "Documentation")
 pub mod gen;

@@ -7,7 +7,7 @@
 //! up, not the way ps30 runs it: positions in clip space or pre-transformed
 //! screen space, vertex values by semantic (`texcoord0`, `color1`, …) as the
 //! vertex stage hands them to the rasteriser, cull and shade modes, sampler
-//! states with D3D9's defaults. [`super::raster`] turns that into the
+//! states with D3D9's defaults. `raster.rs` turns that into the
 //! emulator's draws. Unknown fields are errors, so a misspelt key cannot
 //! silently fall back to a default.
 
@@ -79,7 +79,9 @@ pub struct SuiteSpec {
     pub lines: [u32; 2],
     /// What the function tests, in a sentence or two.
     pub about: String,
+    /// The shaders by the name cases use for them.
     pub shaders: BTreeMap<String, ShaderSpec>,
+    /// The cases, in the source's order.
     pub cases: Vec<CaseSpec>,
 }
 
@@ -91,6 +93,8 @@ pub struct ShaderSpec {
     pub file: String,
     /// Lines of the token array(s) the shader is made of, in order.
     pub lines: Vec<u32>,
+    /// The DWORDs of those arrays, concatenated: what the source hands to
+    /// CreatePixelShader, against which the `.psh` file's assembly is checked.
     pub tokens: Vec<Token>,
 }
 
@@ -99,14 +103,19 @@ pub struct ShaderSpec {
 #[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct CaseSpec {
+    /// The case's name, unique in its file (`vface`, `texkill_ordering`).
     pub name: String,
     /// Source lines of the set-up and the checks.
     pub lines: Vec<u32>,
+    /// What the case checks, and anything a reader should know about it.
     pub note: String,
+    /// The render targets, bound as oC0, oC1, … in this order.
     #[serde(default)]
     pub targets: Vec<TargetSpec>,
+    /// The draw calls, in order.
     #[serde(default)]
     pub draws: Vec<DrawSpec>,
+    /// The pixels read back and what the source expects of them.
     #[serde(default)]
     pub probes: Vec<ProbeSpec>,
     /// Set for a case whose shader must fail to load.
@@ -118,7 +127,9 @@ pub struct CaseSpec {
 #[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct RejectedSpec {
+    /// The name of the shader (a key of [`SuiteSpec::shaders`]).
     pub shader: String,
+    /// The start of ps30's error message for it.
     pub message: String,
 }
 
@@ -136,19 +147,27 @@ pub enum ColorFormat {
 #[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct TargetSpec {
+    /// The target's name, for messages.
     pub name: String,
+    /// Width in pixels.
     pub width: u32,
+    /// Height in pixels.
     pub height: u32,
+    /// The format the target stores; read-backs are compared in it.
     pub format: ColorFormat,
     /// The Clear colour; `null` for a target the application never clears
     /// (its texels are undefined until a draw writes them).
     pub clear: Option<D3dColor>,
 }
 
+/// D3DPRIMITIVETYPE: how the vertices make triangles.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Primitive {
+    /// D3DPT_TRIANGLELIST: every three vertices one triangle.
     TriangleList,
+    /// D3DPT_TRIANGLESTRIP: each vertex after the second closes a triangle with
+    /// the two before it, every other one wound the other way.
     TriangleStrip,
 }
 
@@ -167,8 +186,11 @@ pub enum Positions {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Cull {
+    /// D3DCULL_NONE: both facings are drawn.
     None,
+    /// D3DCULL_CW: triangles wound clockwise on screen are dropped.
     Cw,
+    /// D3DCULL_CCW: triangles wound counter-clockwise on screen are dropped.
     #[default]
     Ccw,
 }
@@ -177,7 +199,9 @@ pub enum Cull {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Shade {
+    /// D3DSHADE_FLAT: colour inputs take the first vertex's value.
     Flat,
+    /// D3DSHADE_GOURAUD: every input is interpolated.
     #[default]
     Gouraud,
 }
@@ -186,18 +210,25 @@ pub enum Shade {
 #[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct DrawSpec {
+    /// The name of the shader drawn (a key of [`SuiteSpec::shaders`]).
     pub shader: String,
+    /// How the vertices make triangles.
     pub primitive: Primitive,
+    /// Whether positions are in clip space or on screen.
     pub positions: Positions,
+    /// Which facing is dropped.
     #[serde(default)]
     pub cull: Cull,
+    /// Whether colours are interpolated or flat.
     #[serde(default)]
     pub shade: Shade,
+    /// The vertices, in the primitive's order.
     pub vertices: Vec<Vertex>,
     /// `c#` (4 numbers), `i#` (4 integers), `b#` (true/false), as set with
     /// SetPixelShaderConstantF/I/B.
     #[serde(default)]
     pub constants: BTreeMap<String, Constant>,
+    /// The textures bound and their sampler states; unnamed samplers have none.
     #[serde(default)]
     pub samplers: Vec<SamplerSpec>,
 }
@@ -206,7 +237,9 @@ pub struct DrawSpec {
 /// values the vertex stage hands to the rasteriser.
 #[derive(Clone, Debug, Deserialize)]
 pub struct Vertex {
+    /// 2 to 4 numbers in the draw's [`Positions`] convention.
     pub position: Vec<f64>,
+    /// Every other key: a semantic (`texcoord0`, `color1`) and its value.
     #[serde(flatten)]
     pub attributes: BTreeMap<String, Attribute>,
 }
@@ -216,7 +249,9 @@ pub struct Vertex {
 #[derive(Clone, Debug, Deserialize)]
 #[serde(untagged)]
 pub enum Attribute {
+    /// A D3DCOLOR, each byte / 255, in (r, g, b, a) order.
     Color(D3dColor),
+    /// 1 to 4 floats.
     Floats(Vec<f32>),
 }
 
@@ -240,7 +275,9 @@ impl Attribute {
 #[derive(Clone, Debug, Deserialize)]
 #[serde(untagged)]
 pub enum Constant {
+    /// `b#`: `true` or `false`.
     Bool(bool),
+    /// `c#`: four numbers; `i#`: four integers.
     Vector(Vec<f64>),
 }
 
@@ -248,8 +285,10 @@ pub enum Constant {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum FilterSpec {
+    /// D3DTEXF_POINT: the nearest texel.
     #[default]
     Point,
+    /// D3DTEXF_LINEAR: bilinear.
     Linear,
 }
 
@@ -257,11 +296,16 @@ pub enum FilterSpec {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum AddressSpec {
+    /// D3DTADDRESS_WRAP: the texture repeats.
     #[default]
     Wrap,
+    /// D3DTADDRESS_MIRROR: the texture repeats, every other copy mirrored.
     Mirror,
+    /// D3DTADDRESS_CLAMP: coordinates clamp to the edge texels.
     Clamp,
+    /// D3DTADDRESS_BORDER: texels outside read the border colour.
     Border,
+    /// D3DTADDRESS_MIRRORONCE: mirrored once about 0, then clamped.
     MirrorOnce,
 }
 
@@ -270,16 +314,23 @@ pub enum AddressSpec {
 #[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct SamplerSpec {
+    /// The sampler register (`s#`).
     pub sampler: u32,
+    /// The texture bound to it.
     pub texture: TextureSpec,
+    /// D3DSAMP_MAGFILTER.
     #[serde(default)]
     pub mag_filter: FilterSpec,
+    /// D3DSAMP_MINFILTER.
     #[serde(default)]
     pub min_filter: FilterSpec,
+    /// D3DSAMP_ADDRESSU.
     #[serde(default)]
     pub address_u: AddressSpec,
+    /// D3DSAMP_ADDRESSV.
     #[serde(default)]
     pub address_v: AddressSpec,
+    /// D3DSAMP_BORDERCOLOR; `null` for D3D9's default, transparent black.
     pub border: Option<D3dColor>,
 }
 
@@ -287,9 +338,13 @@ pub struct SamplerSpec {
 #[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct TextureSpec {
+    /// Width in texels.
     pub width: u32,
+    /// Height in texels.
     pub height: u32,
+    /// How the texels are stored (X8R8G8B8 reads alpha as 1).
     pub format: ColorFormat,
+    /// `width × height` colours, row-major.
     pub texels: Vec<D3dColor>,
 }
 
@@ -315,8 +370,11 @@ impl TextureSpec {
 pub struct ProbeSpec {
     /// Index into the case's targets.
     pub target: usize,
+    /// Column, in pixels from the left.
     pub x: u32,
+    /// Row, in pixels from the top.
     pub y: u32,
+    /// The colour the source expects.
     pub expected: D3dColor,
     /// Largest difference allowed per channel, in 8-bit steps.
     pub tolerance: u8,
@@ -333,8 +391,11 @@ pub struct ProbeSpec {
 #[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Alternative {
+    /// The colour accepted.
     pub expected: D3dColor,
+    /// Largest difference allowed per channel, in 8-bit steps.
     pub tolerance: u8,
+    /// Whose result it is (a driver or vendor, as the source names it).
     pub who: String,
 }
 

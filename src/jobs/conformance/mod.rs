@@ -4,7 +4,7 @@
 //! The corpus lives in `tests/conformance/` (its README says where the cases
 //! come from and which were left out, and why). This job reads it and turns
 //! each case into what a backend runs: for every draw, the triangles it
-//! covers ([`raster`]), and for each triangle an [`emu::Draw`] — the target
+//! covers (`raster.rs`), and for each triangle an [`emu::Draw`] — the target
 //! size, the inputs as planes, the constants, the samplers, the facing. A
 //! backend is any function from a validated shader and a draw to a
 //! [`DrawOutput`]: the emulator ([`emulate`]), and a GPU backend once one
@@ -21,7 +21,7 @@
 //! gives are what the vertex stage outputs).
 
 pub mod case;
-pub mod raster;
+pub(crate) mod raster;
 
 use crate::core::diag::SourceError;
 use crate::core::emu::{self, Address, Constants, Draw, DrawOutput, Filter, SamplerState, Texture};
@@ -48,7 +48,9 @@ const MAX_VERTICES: usize = 65_536;
 /// place names the folder, case and draw.
 #[derive(Clone, Debug, PartialEq)]
 pub struct CorpusError {
+    /// Where: a file or folder, or `function/case` and, where it matters, the draw.
     pub place: String,
+    /// What is wrong, in one sentence.
     pub message: String,
 }
 
@@ -70,15 +72,21 @@ fn error(place: impl fmt::Display, message: impl Into<String>) -> CorpusError {
 /// A shader of the corpus as ps30 loads it.
 #[derive(Clone, Debug)]
 pub enum ShaderLoad {
+    /// Validated and ready to draw.
     Loaded(Box<Loaded>),
+    /// Refused, with the diagnostics ps30 gave; a case may expect that
+    /// ([`case::RejectedSpec`]).
     Refused(Box<SourceError>),
 }
 
 /// One `cases.json` with its shaders loaded.
 #[derive(Clone, Debug)]
 pub struct Suite {
+    /// The folder holding `cases.json` and the shaders.
     pub dir: PathBuf,
+    /// The file as read.
     pub spec: SuiteSpec,
+    /// Every shader of [`case::SuiteSpec::shaders`], loaded or refused.
     pub shaders: BTreeMap<String, ShaderLoad>,
 }
 
@@ -156,14 +164,21 @@ impl Suite {
 /// them, `None` where nothing was written to a target never cleared.
 #[derive(Clone, Debug, PartialEq)]
 pub struct TargetImage {
+    /// The target's name, from its [`case::TargetSpec`].
     pub name: String,
+    /// Width in pixels.
     pub width: u32,
+    /// Height in pixels.
     pub height: u32,
+    /// The format the target stores (conversion to it is the caller's).
     pub format: ColorFormat,
+    /// `width × height` colours, row-major.
     pub texels: Vec<Option<[f32; 4]>>,
 }
 
 impl TargetImage {
+    /// The colour at pixel (x, y); `None` outside the target or where nothing
+    /// was written to a target never cleared.
     pub fn texel(&self, x: u32, y: u32) -> Option<[f32; 4]> {
         if x >= self.width || y >= self.height {
             return None;
@@ -175,6 +190,7 @@ impl TargetImage {
 /// What a case's draws left in its targets.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Rendered {
+    /// The case's targets, in its order.
     pub targets: Vec<TargetImage>,
     /// Backend draws run (one per triangle, or per run of triangles that
     /// share their planes and facing).
