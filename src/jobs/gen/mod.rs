@@ -35,7 +35,7 @@
 //! pass 2 for 11×8: 190 slots).
 
 mod asm;
-pub mod fit;
+pub(crate) mod fit;
 pub mod plan;
 pub mod set;
 

@@ -18,7 +18,7 @@
 //! # The figures
 //!
 //! Pass 1's slots and executed instructions per pixel come from the cost
-//! model on the generated listing ([`super::fit::Fitter`]); pass 2 is the
+//! model on the generated listing (`fit.rs`'s `Fitter`); pass 2 is the
 //! first of unrolled / row loop / nested loops that fits. The frame's total
 //! is Σ over passes of executed per pixel × target pixels: pass 1 ×
 //! nx·ny, pass 2 × 1. When no pass-2 form fits, the plan needs a third pass,
@@ -77,7 +77,9 @@ pub struct Candidate {
     pub name: String,
     /// `unrolled` or `loop`.
     pub variant: Pass1Form,
+    /// Pass-1 block, texels per line × lines.
     pub block: [u32; 2],
+    /// The pass-1 target, blocks across × blocks down (⌈W / bw⌉ × ⌈H / bh⌉).
     pub targets: [u32; 2],
     /// 2, or 3 when no pass-2 listing fits (the third pass is not generated).
     pub passes: u32,
@@ -85,6 +87,8 @@ pub struct Candidate {
     pub slots: [Option<u64>; 2],
     /// Per pass: [pass 1, pass 2]; pass 2 is null with 3 passes.
     pub executed_per_pixel: [Option<u64>; 2],
+    /// The pass-2 listing that fits (`unrolled`, `row loop`, `nested loops`);
+    /// null with 3 passes.
     pub pass2_form: Option<Pass2Form>,
     /// Σ executed per pixel × target pixels over the two passes (null with 3).
     pub total_executed: Option<u64>,
@@ -106,6 +110,7 @@ pub struct Candidate {
 }
 
 impl Candidate {
+    /// `unrolled 125×128 → 11×8`: form, block and pass-1 target, for messages.
     pub fn label(&self) -> String {
         format!(
             "{} {}×{} → {}×{}",
@@ -121,6 +126,7 @@ impl Candidate {
 /// The mip-chain method for the frame, with its predicted error.
 #[derive(Clone, Debug, Serialize)]
 pub struct MipCandidate {
+    /// `mips-alpha8-8-8`: the method and its range.
     pub name: String,
     /// [2^−min, 2^max] as (min, max): luminances outside clamp.
     pub range: (f64, f64),
@@ -129,6 +135,7 @@ pub struct MipCandidate {
     /// The encoding shader (`asm/mip-luminance/encode.psh`): slots and
     /// executed instructions per pixel, from the cost model.
     pub slots: u64,
+    /// Executed instructions per pixel of the encoding shader.
     pub executed_per_pixel: u64,
     /// Executed instructions for the frame: the encoding at every pixel; the
     /// mip generation is fixed-function and not counted.
@@ -182,14 +189,20 @@ pub const DEFAULT_LOG_RANGE: (f64, f64) = (8.0, 8.0);
 /// A ranked plan.
 #[derive(Clone, Debug, Serialize)]
 pub struct Plan {
+    /// The frame planned for, width × height in pixels.
     pub frame: [u32; 2],
+    /// The limits every candidate was fitted to.
     pub profile: Profile,
+    /// δ of log2(δ + L), the offset that keeps black pixels finite.
     pub delta: f64,
     /// Best first.
     pub candidates: Vec<Candidate>,
     /// The name of the recommended candidate.
     pub recommended: Option<String>,
+    /// The ranking rule, in words ([`RULE`]).
     pub rule: String,
+    /// Why the recommended candidate wins, in numbers (or why none is
+    /// recommended).
     pub why: String,
     /// Forms or article choices the profile rules out, and why.
     pub notes: Vec<String>,

@@ -27,6 +27,7 @@ pub enum Role {
     Pass1,
     /// Pass 1 over the last column of blocks, reading the real width only.
     LastColumn,
+    /// The second pass: sums the pass-1 target and writes L̄w to one texel.
     Pass2,
 }
 
@@ -35,6 +36,7 @@ pub enum Role {
 pub struct Generated {
     /// File name, e.g. `pass1_unrolled_125x128.psh`.
     pub file: String,
+    /// What the shader is for.
     pub role: Role,
     /// `unrolled`, `loop`, `row loop`, `nested loops`.
     pub form: String,
@@ -42,16 +44,22 @@ pub struct Generated {
     pub size: [u32; 2],
     /// From the cost model on the text below.
     pub slots: u64,
+    /// Executed instructions per pixel, from the cost model on the text below.
     pub executed: u64,
+    /// The checked listing, header and constants included.
     pub text: String,
 }
 
 /// One way to run the frame with the generated shaders.
 #[derive(Clone, Debug, Serialize)]
 pub struct Config {
+    /// The pass-1 form.
     pub form: Pass1Form,
+    /// Pass-1 block, texels per line × lines.
     pub block: [u32; 2],
+    /// The pass-1 target, blocks across × blocks down.
     pub targets: [u32; 2],
+    /// File name of the pass-1 shader (every column, or all but the last).
     pub pass1: String,
     /// The last-column shader, when the frame width is not a multiple of
     /// the block width.
@@ -81,21 +89,28 @@ pub enum BlockChoice {
 /// A request to `ps30 unroll`.
 #[derive(Clone, Debug)]
 pub struct Request {
+    /// The frame, width × height in pixels.
     pub frame: (u32, u32),
     /// Pass-1 forms and how to choose each one's block.
     pub picks: Vec<(Pass1Form, BlockChoice)>,
     /// Keep REPEAT_BLOCK in the output instead of expanding it.
     pub macros: bool,
+    /// δ of log2(δ + L), baked into the shaders.
     pub delta: f64,
 }
 
 /// Everything `ps30 unroll` produced.
 #[derive(Clone, Debug, Serialize)]
 pub struct Bundle {
+    /// The frame, width × height in pixels.
     pub frame: [u32; 2],
+    /// The limits the shaders were fitted to and checked against.
     pub profile: Profile,
+    /// δ of log2(δ + L), baked into the shaders.
     pub delta: f64,
+    /// Every shader written.
     pub shaders: Vec<Generated>,
+    /// The ways to run the frame with them, one per pass-1 form and block.
     pub configs: Vec<Config>,
     /// How each block was chosen, in numbers.
     pub notes: Vec<String>,
@@ -870,7 +885,9 @@ pub fn frame_dir(frame: (u32, u32)) -> String {
 /// Every committed file: (path relative to `asm/generated/`, contents),
 /// with the per-frame bundles and plans.
 pub struct GeneratedSet {
+    /// (path relative to `asm/generated/`, contents), sorted by path.
     pub files: Vec<(String, String)>,
+    /// Per frame: its size, its bundle and its plan.
     pub frames: Vec<((u32, u32), Bundle, plan::Plan)>,
 }
 
