@@ -45,19 +45,27 @@ use serde::Serialize;
 /// Min, mean, max and a histogram of a list of slot counts.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct CostStats {
+    /// How many values (pixels or quads).
     pub count: u64,
+    /// The smallest value; 0 for an empty list.
     pub min: u64,
+    /// The arithmetic mean; 0 for an empty list.
     pub mean: f64,
+    /// The largest value; 0 for an empty list.
     pub max: u64,
     /// Bins `lo..=hi` with their counts, in order; one bin per distinct
     /// value when there are at most as many values as bins requested.
     pub histogram: Vec<Bin>,
 }
 
+/// One histogram bin: the values from `lo` to `hi`, both included.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 pub struct Bin {
+    /// Smallest value in the bin.
     pub lo: u64,
+    /// Largest value in the bin (`lo` when the bin holds one value).
     pub hi: u64,
+    /// How many values fall in it.
     pub count: u64,
 }
 
@@ -115,9 +123,13 @@ impl CostStats {
 /// Per-pixel and per-quad costs of one draw.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct QuadCosts {
+    /// Executed slots per pixel, each on its own path.
     pub per_pixel: CostStats,
+    /// Executed slots per 2×2 quad in lockstep: every slot any of its pixels ran.
     pub per_quad: CostStats,
+    /// Quads the draw covered (partial ones at odd target sides included).
     pub quads: u64,
+    /// Quads where some instruction ran with only part of the quad.
     pub divergent_quads: u64,
     /// Σ pixel slots / Σ (quad slots × the quad's pixels in the target).
     pub lockstep_efficiency: f64,
@@ -172,9 +184,13 @@ pub enum Input {
     /// An image sampled by s0, v0 = the start of each pixel's block of it
     /// (as `ps30 run`), into a `target`.
     Image {
+        /// The image, sampled through s0.
         image: HdrImage,
+        /// Its name, for the report.
         name: String,
+        /// The render target, width × height in pixels.
         target: (u32, u32),
+        /// s0's sampler state.
         sampler: SamplerState,
         /// Build a full box-filtered mip chain for s0.
         mips: bool,
@@ -184,10 +200,15 @@ pub enum Input {
 /// Everything `ps30 profile` needs besides the shader.
 #[derive(Clone, Debug)]
 pub struct Setup {
+    /// What the shader runs on.
     pub input: Input,
+    /// `-D NAME=N`: the numbers the source names (REPEAT_BLOCK counts).
     pub defines: Vec<(String, u64)>,
+    /// The application's constants (`--const`), besides those the input sets.
     pub constants: Constants,
+    /// Histogram bins asked for (at least 1 is used).
     pub bins: usize,
+    /// Emulator threads; `None` for every core.
     pub threads: Option<usize>,
     /// The emulator's bounds (executed slots per pixel, target size).
     pub limits: emu::EmuLimits,
@@ -206,16 +227,26 @@ pub fn floats_set_by(input: &Input) -> &'static [u32] {
 /// The result of `ps30 profile`.
 #[derive(Clone, Debug)]
 pub struct ProfileRun {
+    /// The shader's source, for diagnostics.
     pub file: SourceFile,
+    /// What it ran on, in words (`memorial (512×768, 1 level) → 4×6 target`).
     pub input: String,
+    /// Target width in pixels.
     pub width: u32,
+    /// Target height in pixels.
     pub height: u32,
+    /// The cost model's shortest and longest executed count per pixel.
     pub static_executed: Range,
     /// The static slots and executed count fit the ps_3_0 limits.
     pub within_limits: bool,
+    /// Whether every pixel's emulated count lies inside [`ProfileRun::static_executed`].
     pub counts_agree: bool,
+    /// Per-pixel and per-quad costs, with lockstep efficiency.
     pub costs: QuadCosts,
+    /// Every instruction that takes a gradient, with how often quads ran it
+    /// divergently.
     pub gradients: Vec<SiteSummary>,
+    /// Divergent-gradient and LOD findings (module docs).
     pub findings: Vec<Finding>,
     /// Warnings the validator gave.
     pub warnings: crate::core::diag::Diagnostics,
