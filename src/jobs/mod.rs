@@ -35,9 +35,7 @@ pub mod gen;
 #[allow(missing_docs)] // not yet documented item by item (ARCHITECTURE.md, "Documentation")
 pub mod luminance;
 pub mod outputs;
-#[allow(missing_docs)] // not yet documented item by item (ARCHITECTURE.md, "Documentation")
 pub mod profile;
-#[allow(missing_docs)] // not yet documented item by item (ARCHITECTURE.md, "Documentation")
 pub mod render;
 pub mod scenes;
 #[allow(missing_docs)] // not yet documented item by item (ARCHITECTURE.md, "Documentation")

@@ -76,8 +76,12 @@ impl Default for FileLimits {
 /// A problem in a draw-list file: the file, where in it, and what.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct FileError {
+    /// The draw-list file.
     pub path: PathBuf,
+    /// Where in it: `line L column C` for JSON errors, the field path
+    /// (`textures[0].size`) for the rest; empty when the whole file is at fault.
     pub at: String,
+    /// What is wrong, in one sentence.
     pub message: String,
 }
 
@@ -188,7 +192,9 @@ struct FileBlend {
 /// A draw list read from a file, with its description.
 #[derive(Clone, Debug)]
 pub struct Loaded {
+    /// The file's `description`, if it has one.
     pub description: Option<String>,
+    /// The list, ready to run: images read, shaders loaded.
     pub list: DrawList,
     /// The files it read besides itself (images, shaders): a command must not
     /// write over them.

@@ -33,8 +33,11 @@ use serde::Serialize;
 /// A texture a draw list reads: an image or a synthetic input, owned.
 #[derive(Clone, Debug, PartialEq)]
 pub struct TextureData {
+    /// The name steps and reports use for it.
     pub name: String,
+    /// Width in texels.
     pub width: u32,
+    /// Height in texels.
     pub height: u32,
     /// `width × height` texels, row-major, top row first.
     pub texels: Vec<[f32; 4]>,
@@ -43,9 +46,13 @@ pub struct TextureData {
 /// A render target of a draw list.
 #[derive(Clone, Debug, PartialEq, Eq, Serialize)]
 pub struct TargetSpec {
+    /// The name steps and reports use for it.
     pub name: String,
+    /// Width in pixels.
     pub width: u32,
+    /// Height in pixels.
     pub height: u32,
+    /// The D3D9 format it stores (each write is rounded to it).
     pub format: TargetFormat,
 }
 
@@ -54,6 +61,7 @@ pub struct TargetSpec {
 pub struct ShaderSpec {
     /// The bundled name or the file it came from.
     pub name: String,
+    /// The validated shader and its source.
     pub loaded: load::Loaded,
 }
 
@@ -69,13 +77,17 @@ pub enum Source {
 /// One draw: a full-screen quad over `target`.
 #[derive(Clone, Debug)]
 pub struct DrawStep {
+    /// Index into [`DrawList::targets`]: the target drawn over, whole.
     pub target: usize,
     /// Index into [`DrawList::shaders`].
     pub shader: usize,
     /// `(v#, value)`.
     pub inputs: Vec<(u32, LinearInput)>,
+    /// The application's `c#`, `i#`, `b#`.
     pub constants: Constants,
+    /// `(s#, what it reads, its sampler state)`.
     pub samplers: Vec<(u32, Source, SamplerState)>,
+    /// Blend state and write mask of the output merger.
     pub output: OutputState,
 }
 
@@ -84,14 +96,19 @@ pub struct DrawStep {
 pub enum Step {
     /// `Clear(D3DCLEAR_TARGET)` with a D3DCOLOR (R, G, B, A bytes).
     Clear {
+        /// Index into [`DrawList::targets`].
         target: usize,
+        /// R, G, B, A bytes.
         color: [u8; 4],
     },
+    /// A full-screen draw into one target.
     Draw(DrawStep),
     /// Build the target's full mip chain in its format (the reduction to
     /// 1 × 1); later draws sample it with its levels.
     Mips {
+        /// Index into [`DrawList::targets`].
         target: usize,
+        /// How levels with an odd side are reduced.
         odd: OddSides,
     },
 }
@@ -99,9 +116,13 @@ pub enum Step {
 /// A runnable draw list.
 #[derive(Clone, Debug)]
 pub struct DrawList {
+    /// The render targets, by index; each starts black.
     pub targets: Vec<TargetSpec>,
+    /// The textures, by index.
     pub textures: Vec<TextureData>,
+    /// The shaders, by index.
     pub shaders: Vec<ShaderSpec>,
+    /// What runs, in order.
     pub steps: Vec<Step>,
 }
 
@@ -110,16 +131,20 @@ pub struct DrawList {
 pub struct Settings {
     /// Emulator threads (`None`: all cores).
     pub threads: Option<usize>,
+    /// The emulator's bounds (executed slots per pixel, target size).
     pub limits: emu::EmuLimits,
 }
 
 /// What one step did.
 #[derive(Clone, Debug, Serialize)]
 pub struct StepReport {
+    /// The step's index in [`DrawList::steps`].
     pub index: usize,
     /// `clear`, `draw` or `mips`.
     pub kind: &'static str,
+    /// The name of the target it changed.
     pub target: String,
+    /// What the step did, by kind.
     pub detail: StepDetail,
 }
 
@@ -127,10 +152,14 @@ pub struct StepReport {
 #[derive(Clone, Debug, Serialize)]
 #[serde(untagged)]
 pub enum StepDetail {
+    /// A clear.
     Clear {
+        /// R, G, B, A bytes.
         color: [u8; 4],
     },
+    /// A draw.
     Draw {
+        /// The shader's name.
         shader: String,
         /// Executed slots per pixel, from the cost model with the draw's
         /// integer and boolean constants (`executed` in JSON, as for every
@@ -140,13 +169,20 @@ pub enum StepDetail {
         /// What the emulator counted (min, max over pixels).
         #[serde(rename = "executed_emulated")]
         executed: Range,
+        /// Whether every pixel's emulated count lies inside the static range.
         counts_agree: bool,
+        /// What the output merger wrote, blended and masked.
         merged: MergeStats,
+        /// The emulator's findings about the draw's quads (divergent gradients,
+        /// LOD far from level 0); not in JSON.
         #[serde(skip)]
         findings: Vec<Finding>,
     },
+    /// A mip-chain reduction.
     Mips {
+        /// How levels with an odd side were reduced.
         odd: OddSides,
+        /// Levels in the chain, the base included.
         levels: usize,
         /// The 1 × 1 level: the reduction of the target.
         mean: [f32; 4],
@@ -156,6 +192,7 @@ pub enum StepDetail {
 /// A target as it is during and after a run.
 #[derive(Clone, Debug, PartialEq)]
 pub struct TargetState {
+    /// The target's texels, in its format.
     pub target: RenderTarget,
     /// The mip chain of its last [`Step::Mips`], until it is drawn into again.
     pub mips: Option<MipChain>,
@@ -166,16 +203,23 @@ pub struct TargetState {
 pub enum RenderError {
     /// Step `index`, and what went wrong there.
     Step {
+        /// The step's index in [`DrawList::steps`].
         index: usize,
+        /// What is wrong, in one sentence.
         message: String,
     },
+    /// The emulator refused or could not finish a draw.
     Emu {
+        /// The step's index in [`DrawList::steps`].
         index: usize,
+        /// The emulator's error.
         error: EmuError,
     },
     /// A shader the emulator cannot compile.
     Compile {
+        /// The shader's name.
         shader: String,
+        /// The emulator's error.
         error: EmuError,
     },
 }
