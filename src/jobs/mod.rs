@@ -38,7 +38,6 @@ pub mod outputs;
 pub mod profile;
 pub mod render;
 pub mod scenes;
-#[allow(missing_docs)] // not yet documented item by item (ARCHITECTURE.md, "Documentation")
 pub mod studies;
 #[allow(missing_docs)] // not yet documented item by item (ARCHITECTURE.md, "Documentation")
 pub mod tonemap;

@@ -126,6 +126,7 @@ pub struct SumCheck {
     pub channels: u64,
     /// Channels outside their bound.
     pub outside: u64,
+    /// The largest |stored − f64 sum| over the channels.
     pub max_error: f64,
     /// The bound where the error is largest relative to its bound.
     pub bound_there: f64,
@@ -184,17 +185,23 @@ pub fn check_sum(scene: &Scene, lights: &[Light], buffer: &RenderTarget) -> SumC
 /// Everything the chain produced.
 #[derive(Clone, Debug)]
 pub struct ChainRun {
+    /// Frame width in pixels.
     pub width: u32,
+    /// Frame height in pixels.
     pub height: u32,
+    /// The lights drawn, in order.
     pub lights: Vec<Light>,
     /// Pixels per light model.
     pub models: [u64; 3],
+    /// Every step of the draw list, as it ran.
     pub steps: Vec<StepReport>,
+    /// The accumulated lights against their f64 sum.
     pub sum: SumCheck,
     /// The lit buffer as it was stored.
     pub buffer: RenderTarget,
     /// The smallest and largest luminance in the buffer.
     pub luminance_range: (f64, f64),
+    /// The lit buffer tone-mapped, with its check against the f64 operator.
     pub tonemap: ToneMapped,
 }
 

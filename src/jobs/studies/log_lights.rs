@@ -75,8 +75,10 @@ pub enum Method {
 }
 
 impl Method {
+    /// Every method, in the order the tables list them.
     pub const ALL: [Method; 3] = [Method::Rgba8, Method::LogRgba8, Method::Half];
 
+    /// The method as tables and figures name it.
     pub fn name(self) -> &'static str {
         match self {
             Method::Rgba8 => "RGBA8 raw",
@@ -96,8 +98,11 @@ impl Method {
 /// One configuration, run: every pixel's true and recovered light.
 #[derive(Clone, Debug, Serialize)]
 pub struct Accumulation {
+    /// How the lights are stored.
     pub method: Method,
+    /// How many lights overlap (K).
     pub lights: u32,
+    /// Each light's brightness b: its ramp runs from 0 to b.
     pub brightness: f32,
     /// The true sum at each pixel (f64).
     #[serde(skip)]
@@ -113,8 +118,11 @@ pub struct Accumulation {
 /// What one configuration shows, in numbers.
 #[derive(Clone, Debug, Serialize)]
 pub struct Summary {
+    /// How the lights are stored.
     pub method: Method,
+    /// How many lights overlap (K).
     pub lights: u32,
+    /// Each light's brightness b.
     #[serde(serialize_with = "crate::core::numbers::serialize_f32_shortest")]
     pub brightness: f32,
     /// The largest true sum on the ramp.
@@ -128,9 +136,9 @@ pub struct Summary {
     /// Distinct recovered values where the true sum is at most [`DIM`]
     /// (banding: fewer is coarser).
     pub levels_dim: usize,
-    /// Pixels within the method's range, and how many of them are within
-    /// their derived bound.
+    /// Pixels within the method's range.
     pub in_range: u64,
+    /// Of [`Summary::in_range`], the pixels within their derived bound.
     pub within_bound: u64,
     /// The largest error / bound over pixels in range.
     pub largest_bound_fraction: f64,
@@ -139,6 +147,7 @@ pub struct Summary {
 }
 
 impl Summary {
+    /// Whether every pixel in range is within its bound.
     pub fn agree(&self) -> bool {
         self.within_bound == self.in_range
     }
@@ -358,6 +367,7 @@ impl Accumulation {
 /// The whole study.
 #[derive(Clone, Debug, Serialize)]
 pub struct Study {
+    /// Pixels across each ramp ([`WIDTH`]).
     pub width: u32,
     /// Every method at each of [`BRIGHTNESS`], one light.
     pub brightness: Vec<Summary>,

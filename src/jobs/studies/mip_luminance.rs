@@ -138,22 +138,29 @@ pub fn draw_list(
 /// One run of the method on one image with one range.
 #[derive(Clone, Debug, Serialize)]
 pub struct MipRun {
+    /// The frame's name (a crop's names its size).
     pub image: String,
+    /// Frame width in pixels.
     pub width: u32,
+    /// Frame height in pixels.
     pub height: u32,
     /// [2^−min, 2^max].
     pub range: (f64, f64),
+    /// How the chain reduced odd sides.
     pub odd: OddSides,
     /// Levels after the base.
     pub levels: u32,
-    /// The 1 × 1 alpha, decoded: the method's L̄w.
+    /// ē: the 1 × 1 alpha as stored, in [0, 1].
     pub encoded: f64,
+    /// The method's L̄w: ē decoded, 2^(ē·(min + max) − min).
     pub log_average: f64,
     /// The true L̄w (f64, every pixel once).
     pub reference: f64,
+    /// (L̄w − reference) / reference.
     pub relative_error: f64,
-    /// Pixels below 2^−min and above 2^max (clamped).
+    /// Pixels below 2^−min (clamped).
     pub below: u64,
+    /// Pixels above 2^max (clamped).
     pub above: u64,
     /// The f64 mean of the clamped encodings, uniform weights, decoded.
     pub ideal_uniform: f64,
@@ -163,6 +170,7 @@ pub struct MipRun {
     pub quantisation_codes: f64,
     /// The derived bound on it, in codes.
     pub quantisation_bound_codes: f64,
+    /// Whether the measured quantisation is within its bound.
     pub within_bound: bool,
     /// The relative error of L̄w the bound allows: 2^((min + max)·bound) − 1.
     pub relative_bound: f64,
@@ -257,14 +265,19 @@ pub fn run(
 /// R32F): its L̄w and relative error against the same truth.
 #[derive(Clone, Debug, Serialize)]
 pub struct ArticleRun {
+    /// The image's name.
     pub image: String,
+    /// L̄w from the two passes.
     pub log_average: f64,
+    /// The true L̄w (f64, every pixel once).
     pub reference: f64,
+    /// (L̄w − reference) / reference.
     pub relative_error: f64,
+    /// Whether the run agrees everywhere: blocks, pass 2, L̄w and the counts.
     pub agree: bool,
 }
 
-pub fn article(
+fn article(
     name: &str,
     image: &HdrImage,
     settings: &render::Settings,
@@ -316,9 +329,13 @@ pub const ODD_RANGE: (f64, f64) = (8.0, 8.0);
 /// One frame of the study: its runs with every range, the article's result.
 #[derive(Clone, Debug, Serialize)]
 pub struct Frame {
+    /// The frame's name (a crop's names its size).
     pub image: String,
+    /// Frame width in pixels.
     pub width: u32,
+    /// Frame height in pixels.
     pub height: u32,
+    /// The article's two passes on the same frame.
     pub article: ArticleRun,
     /// One per [`RANGES`], odd sides folded.
     pub runs: Vec<MipRun>,
@@ -331,7 +348,9 @@ pub struct Frame {
 /// The whole study.
 #[derive(Clone, Debug, Serialize)]
 pub struct Study {
+    /// δ of log2(δ + L), the article's, in every run.
     pub delta: f32,
+    /// Every image given, then [`SWEEP_IMAGE`] cropped to each of [`CROPS`].
     pub frames: Vec<Frame>,
     /// [`SWEEP_IMAGE`] with the symmetric ranges of [`SWEEP`].
     pub sweep: Vec<MipRun>,
