@@ -41,5 +41,4 @@ pub mod scenes;
 pub mod studies;
 #[allow(missing_docs)] // not yet documented item by item (ARCHITECTURE.md, "Documentation")
 pub mod tonemap;
-#[allow(missing_docs)] // not yet documented item by item (ARCHITECTURE.md, "Documentation")
 pub mod verify;

@@ -15,11 +15,13 @@ use serde::Serialize;
 /// One stated figure and ps30's value for it.
 #[derive(Clone, Debug, Serialize)]
 pub struct Claim {
+    /// What is claimed (`loop version: cycles for a 128×56 block`).
     pub claim: String,
     /// What the article prints.
     pub article: String,
     /// What ps30 computes.
     pub ps30: String,
+    /// Whether ps30's value is the article's.
     pub agrees: bool,
     /// How ps30 got its number.
     pub how: String,
@@ -296,18 +298,29 @@ pub const CROSSCHECK_IMAGE: &str = "assets/hdr/courtyard_1280x1024.exr";
 /// One configuration of the cross-check and what ps30 expects of it.
 #[derive(Clone, Debug, Serialize)]
 pub struct CrossRow {
+    /// The pass-1 shader's bundled name (`article:unrolled`, `corrected:loop`).
     pub pass1: String,
+    /// The pass-2 shader's bundled name.
     pub pass2: String,
+    /// Pixels per pass-1 block, (width, height).
     pub block: (u32, u32),
+    /// The pass-1 target's D3D9 format (`D3DFMT_R32F`, `D3DFMT_A16B16G16R16F`).
     pub format: &'static str,
+    /// Blocks whose emulated sum is within its bound of the f64 reference.
     pub blocks_agreeing: usize,
+    /// Blocks in the pass-1 target.
     pub blocks: usize,
     /// Blocks whose sum the target format cannot hold.
     pub overflowed: usize,
+    /// L̄w as the emulator computed it.
     pub log_average: f64,
+    /// L̄w of the f64 reference.
     pub reference_log_average: f64,
+    /// (L̄w − reference) / reference.
     pub relative_error: f64,
+    /// The derived bound on |relative_error|.
     pub relative_tolerance: f64,
+    /// Whether the run agrees everywhere: blocks, pass 2, L̄w and the counts.
     pub agree: bool,
     /// Whether ps30 expects this configuration to agree.
     pub expected_to_agree: bool,
@@ -316,6 +329,8 @@ pub struct CrossRow {
 }
 
 impl CrossRow {
+    /// Whether the run came out as ps30 expected: agreeing where it should,
+    /// disagreeing where the configuration is known to fail.
     pub fn as_expected(&self) -> bool {
         self.agree == self.expected_to_agree
     }
