@@ -98,6 +98,8 @@ pub fn draw_text(c: &DrawComparison) -> String {
     s
 }
 
+/// `--json` of one draw's comparison: the device, the comparison and
+/// whether every pixel is bit-identical.
 pub fn draw_json(device: &DeviceInfo, c: &DrawComparison) -> serde_json::Value {
     serde_json::json!({ "device": device, "comparison": c, "all_identical": c.all_identical() })
 }
@@ -134,6 +136,7 @@ pub fn luminance_text(c: &LuminanceComparison) -> String {
     s
 }
 
+/// `--json` of the luminance pipeline's comparison, with the device.
 pub fn luminance_json(device: &DeviceInfo, c: &LuminanceComparison) -> serde_json::Value {
     serde_json::json!({ "device": device, "comparison": c })
 }
@@ -155,6 +158,7 @@ pub fn tonemap_text(c: &TonemapComparison) -> String {
     s
 }
 
+/// `--json` of tone mapping's comparison, with the device.
 pub fn tonemap_json(device: &DeviceInfo, c: &TonemapComparison) -> serde_json::Value {
     serde_json::json!({ "device": device, "comparison": c })
 }
