@@ -47,10 +47,13 @@ const EXECUTED_COLOR: [u8; 3] = [53, 183, 121];
 /// One shader's budget.
 #[derive(Clone, Debug, Serialize)]
 pub struct Budget {
+    /// `name (file)`: the bundled name and the listing's path.
     pub shader: String,
     /// The constants it was measured with.
     pub constants: String,
+    /// Instruction slots, from the cost model.
     pub slots: u64,
+    /// Executed instructions per pixel (the longest path), from the cost model.
     pub executed: u64,
     /// The limits it was measured against.
     pub limits: crate::core::cost::Profile,
@@ -59,46 +62,77 @@ pub struct Budget {
 /// One heat map of pass-1 blocks.
 #[derive(Clone, Debug, Serialize)]
 pub struct BlockFigure {
+    /// The PNG's file name under `figures/` (`blocks-log-luminance.png`).
     pub file: String,
+    /// The pass-1 shader's bundled name.
     pub pass1: String,
+    /// The pass-2 shader's bundled name.
     pub pass2: String,
     /// What a cell shows.
     pub quantity: String,
     /// The values at the two ends of the colour map.
     pub range: (f64, f64),
+    /// Blocks in the pass-1 target.
     pub blocks: usize,
+    /// Blocks whose emulated sum is within its bound of the f64 reference.
     pub blocks_agreeing: usize,
 }
 
 /// One tone-mapped image.
 #[derive(Clone, Debug, Serialize)]
 pub struct TonemapRow {
+    /// The image's file name.
     pub image: String,
+    /// Width in pixels.
     pub width: u32,
+    /// Height in pixels.
     pub height: u32,
+    /// L̄w as the emulated luminance passes computed it.
     pub log_average: f64,
+    /// L̄w of the f64 reference.
     pub reference_log_average: f64,
+    /// Whether the luminance passes agree with the reference everywhere.
     pub luminance_agrees: bool,
+    /// The key a.
     pub key: f64,
     /// `None` when infinite.
     pub white: Option<f64>,
+    /// Where the white point came from.
     pub white_source: tonemap::WhiteSource,
+    /// k = a / L̄w, the scale from world luminance to L.
     pub scale: f64,
+    /// The tone-mapping shader's instruction slots.
     pub slots: u64,
+    /// Its executed instructions per pixel (the emulator's count where it ran).
     pub executed_per_pixel: u64,
+    /// Largest |emulated − reference| over all channels.
     pub max_error: f64,
+    /// The bound at that channel.
     pub max_error_bound: f64,
+    /// Largest |emulated − reference| / bound over channels with a bound > 0.
     pub largest_bound_fraction: f64,
+    /// Channels outside their bound (must be 0).
     pub outside_bound: u64,
+    /// Channels whose 8-bit codes differ from the reference's.
     pub mismatched_8bit_channels: u64,
+    /// Pixels with at least one differing 8-bit code.
     pub mismatched_8bit_pixels: u64,
+    /// Differing codes no rounding boundary inside the bound explains (must be 0).
     pub unexplained_8bit: u64,
+    /// Pixels with Lw < 0 (shown black).
     pub negative_luminance_pixels: u64,
+    /// Pixels with Lw exactly 0 (shown black).
     pub zero_luminance_pixels: u64,
+    /// Pixels whose computed luminance could have either sign.
     pub sign_ambiguous_pixels: u64,
+    /// Pixels with a channel at or above 1 before saturation.
     pub clipped_pixels: u64,
+    /// Whether the whole run agrees ([`tonemap::ToneMapped::all_agree`]):
+    /// luminance, limits, counts and the per-pixel check.
     pub agree: bool,
+    /// The preview PNG, relative to the reports directory.
     pub preview: String,
+    /// The preview's size in pixels, (width, height), at most [`PREVIEW_WIDTH`] wide.
     pub preview_size: (u32, u32),
 }
 
@@ -107,8 +141,11 @@ pub struct TonemapRow {
 pub struct Generated {
     /// Files written, relative to the reports directory, in order.
     pub files: Vec<String>,
+    /// Every bundled shader's budget, as charted.
     pub budgets: Vec<Budget>,
+    /// The block heat maps, one per figure.
     pub block_figures: Vec<BlockFigure>,
+    /// One row per bundled image.
     pub tonemap: Vec<TonemapRow>,
 }
 
