@@ -105,6 +105,8 @@ pub fn text(r: &ChainRun, written: Option<&str>) -> String {
     s
 }
 
+/// `--json` of the chain: sizes, lights, steps, sums and the tone-mapping
+/// check; `written` is the PNG written, if any.
 pub fn json(r: &ChainRun, written: Option<&str>) -> serde_json::Value {
     let t = &r.tonemap;
     serde_json::json!({

@@ -53,17 +53,17 @@ const HEADER: [&str; 9] = [
 ];
 
 /// The headline numbers: range and dim-light error of each method.
-pub struct Headline {
-    pub raw_range: Option<f64>,
-    pub log_range: Option<f64>,
-    pub half_range: Option<f64>,
-    pub dim_raw: f64,
-    pub dim_log: f64,
-    pub levels_raw: usize,
-    pub levels_log: usize,
+struct Headline {
+    raw_range: Option<f64>,
+    log_range: Option<f64>,
+    half_range: Option<f64>,
+    dim_raw: f64,
+    dim_log: f64,
+    levels_raw: usize,
+    levels_log: usize,
 }
 
-pub fn headline(s: &Study) -> Headline {
+fn headline(s: &Study) -> Headline {
     let sweep = |m: Method| s.sweep.iter().find(|a| a.method == m).map(|a| a.summary());
     let dim = |m: Method| {
         s.brightness
@@ -137,6 +137,7 @@ pub fn text(s: &Study) -> String {
     t
 }
 
+/// `--json` of the study: every summary, with the headline numbers.
 pub fn json(s: &Study) -> serde_json::Value {
     let h = headline(s);
     serde_json::json!({

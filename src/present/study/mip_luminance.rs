@@ -141,6 +141,7 @@ pub fn text(s: &Study) -> String {
     t
 }
 
+/// `--json` of the study: every frame and the range sweep.
 pub fn json(s: &Study) -> serde_json::Value {
     serde_json::json!({
         "delta": s.delta,
