@@ -3,7 +3,6 @@
 //! a job or a core stage returned and renders it.
 
 pub mod check;
-#[allow(missing_docs)] // not yet documented item by item (ARCHITECTURE.md, "Documentation")
 pub mod compare;
 pub mod constants;
 pub mod disasm;
@@ -12,12 +11,9 @@ pub mod luminance;
 pub mod plan;
 pub mod profile;
 pub mod render;
-#[allow(missing_docs)] // not yet documented item by item (ARCHITECTURE.md, "Documentation")
 pub mod report;
 pub mod shaders;
-#[allow(missing_docs)] // not yet documented item by item (ARCHITECTURE.md, "Documentation")
 pub mod study;
 pub mod tonemap;
 pub mod unroll;
-#[allow(missing_docs)] // not yet documented item by item (ARCHITECTURE.md, "Documentation")
 pub mod verify;

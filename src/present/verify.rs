@@ -43,19 +43,27 @@ pub fn claims_text(claims: &[Claim]) -> String {
 
 /// Everything `ps30 verify` found, for its text and JSON output.
 pub struct Summary<'a> {
+    /// Every article claim with ps30's value.
     pub claims: &'a [Claim],
+    /// The luminance cross-check on the bundled image.
     pub crosscheck: &'a [CrossRow],
+    /// What the report pages and figures show.
     pub figures: &'a Generated,
+    /// The committed generated shaders, rebuilt in memory.
     pub set: &'a GeneratedSet,
     /// The generated-shader directory checked; `None` outside a checkout
     /// (no `asm/generated` here and none named), where nothing is checked.
     pub generated: Option<&'a Path>,
+    /// Whether `--regenerate` rewrote the stale files instead of failing.
     pub regenerated: bool,
+    /// Files under [`Summary::generated`] that differ from what ps30 generates
+    /// now (empty after a regeneration).
     pub stale: &'a [String],
     /// `wrote …` / `removed …` lines of a regeneration.
     pub rewritten: &'a [String],
     /// The pages verify wrote itself (claims, cross-check, generated shaders).
     pub pages: [&'a Path; 3],
+    /// The reports directory the pages were written to.
     pub reports: &'a Path,
 }
 
