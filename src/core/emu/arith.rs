@@ -55,6 +55,7 @@ impl Worker<'_, '_> {
     /// them when `SCALAR`).
     #[inline(always)]
     pub(super) fn store<const SCALAR: bool>(&mut self, d: DstOp, mask: u8) {
+        let n = self.span();
         let full = self.exec == self.live && !d.predicated();
         let sat = d.sat();
         let base = d.row as usize;
@@ -72,14 +73,14 @@ impl Worker<'_, '_> {
             let dst = &mut self.rows[base + c];
             if full {
                 if sat {
-                    for l in 0..LANES {
+                    for l in 0..n {
                         dst[l] = math::sat(t[l]);
                     }
                 } else {
                     *dst = *t;
                 }
             } else {
-                for l in 0..LANES {
+                for l in 0..n {
                     let v = if sat { math::sat(t[l]) } else { t[l] };
                     if (lanes >> l) & 1 != 0 {
                         dst[l] = v;
@@ -96,6 +97,7 @@ impl Worker<'_, '_> {
     /// Component-wise unary op.
     #[inline(always)]
     pub(super) fn map1(&mut self, d: DstOp, a: SrcOp, f: impl Fn(f32) -> f32) {
+        let n = self.span();
         let (am, ax) = a.mod_bits();
         let mask = d.mask();
         for c in 0..4 {
@@ -105,7 +107,7 @@ impl Worker<'_, '_> {
             let ra = self.row(a, c);
             let src = &self.rows[ra];
             let out = &mut self.tmp[c];
-            for l in 0..LANES {
+            for l in 0..n {
                 out[l] = f(modify(src[l], am, ax));
             }
         }
@@ -115,6 +117,7 @@ impl Worker<'_, '_> {
     /// Component-wise binary op.
     #[inline(always)]
     pub(super) fn map2(&mut self, d: DstOp, a: SrcOp, b: SrcOp, f: impl Fn(f32, f32) -> f32) {
+        let n = self.span();
         let (am, ax) = a.mod_bits();
         let (bm, bx) = b.mod_bits();
         let mask = d.mask();
@@ -125,7 +128,7 @@ impl Worker<'_, '_> {
             let (ra, rb) = (self.row(a, c), self.row(b, c));
             let (sa, sb) = (&self.rows[ra], &self.rows[rb]);
             let out = &mut self.tmp[c];
-            for l in 0..LANES {
+            for l in 0..n {
                 out[l] = f(modify(sa[l], am, ax), modify(sb[l], bm, bx));
             }
         }
@@ -142,6 +145,7 @@ impl Worker<'_, '_> {
         c3: SrcOp,
         f: impl Fn(f32, f32, f32) -> f32,
     ) {
+        let n = self.span();
         let (am, ax) = a.mod_bits();
         let (bm, bx) = b.mod_bits();
         let (cm, cx) = c3.mod_bits();
@@ -153,7 +157,7 @@ impl Worker<'_, '_> {
             let (ra, rb, rc) = (self.row(a, c), self.row(b, c), self.row(c3, c));
             let (sa, sb, sc) = (&self.rows[ra], &self.rows[rb], &self.rows[rc]);
             let out = &mut self.tmp[c];
-            for l in 0..LANES {
+            for l in 0..n {
                 out[l] = f(
                     modify(sa[l], am, ax),
                     modify(sb[l], bm, bx),
@@ -168,23 +172,25 @@ impl Worker<'_, '_> {
     /// swizzle), replicated to every written component.
     #[inline(always)]
     pub(super) fn scalar1(&mut self, d: DstOp, a: SrcOp, f: impl Fn(f32) -> f32) {
+        let n = self.span();
         let (am, ax) = a.mod_bits();
         let ra = self.row(a, 0);
         let src = &self.rows[ra];
         let out = &mut self.tmp[0];
-        for l in 0..LANES {
+        for l in 0..n {
             out[l] = f(modify(src[l], am, ax));
         }
         self.store::<true>(d, d.mask());
     }
 
     pub(super) fn pow(&mut self, d: DstOp, a: SrcOp, b: SrcOp) {
+        let n = self.span();
         let (am, ax) = a.mod_bits();
         let (bm, bx) = b.mod_bits();
         let (ra, rb) = (self.row(a, 0), self.row(b, 0));
         let (sa, sb) = (&self.rows[ra], &self.rows[rb]);
         let out = &mut self.tmp[0];
-        for l in 0..LANES {
+        for l in 0..n {
             out[l] = math::pow(modify(sa[l], am, ax), modify(sb[l], bm, bx));
         }
         self.store::<true>(d, d.mask());
@@ -194,6 +200,7 @@ impl Worker<'_, '_> {
     /// to right in f32.
     #[inline(always)]
     pub(super) fn dot<const N: usize>(&mut self, _d: DstOp, a: SrcOp, b: SrcOp, k: usize) {
+        let n = self.span();
         let (am, ax) = a.mod_bits();
         let (bm, bx) = b.mod_bits();
         let ra: [usize; N] = std::array::from_fn(|c| self.row(a, c));
@@ -201,7 +208,7 @@ impl Worker<'_, '_> {
         let sa: [&[f32; LANES]; N] = std::array::from_fn(|c| &self.rows[ra[c]]);
         let sb: [&[f32; LANES]; N] = std::array::from_fn(|c| &self.rows[rb[c]]);
         let out = &mut self.tmp[k];
-        for l in 0..LANES {
+        for l in 0..n {
             let mut s = modify(sa[0][l], am, ax) * modify(sb[0][l], bm, bx);
             for c in 1..N {
                 s += modify(sa[c][l], am, ax) * modify(sb[c][l], bm, bx);
@@ -219,12 +226,13 @@ impl Worker<'_, '_> {
 
     /// `dp2add`: a.x·b.x + a.y·b.y + c (c's replicate component).
     pub(super) fn dp2add(&mut self, d: DstOp, a: SrcOp, b: SrcOp, c3: SrcOp) {
+        let n = self.span();
         self.dot::<2>(d, a, b, 0);
         let (cm, cx) = c3.mod_bits();
         let rc = self.row(c3, 0);
         let sc = &self.rows[rc];
         let out = &mut self.tmp[0];
-        for l in 0..LANES {
+        for l in 0..n {
             out[l] += modify(sc[l], cm, cx);
         }
         self.store::<true>(d, d.mask());
@@ -250,6 +258,7 @@ impl Worker<'_, '_> {
 
     /// `crs`: cross product of xyz; w is never written.
     pub(super) fn crs(&mut self, d: DstOp, a: SrcOp, b: SrcOp) {
+        let n = self.span();
         let (am, ax) = a.mod_bits();
         let (bm, bx) = b.mod_bits();
         let ra: [usize; 3] = std::array::from_fn(|c| self.row(a, c));
@@ -259,7 +268,7 @@ impl Worker<'_, '_> {
             let (ai, aj) = (&self.rows[ra[i]], &self.rows[ra[j]]);
             let (bi, bj) = (&self.rows[rb[i]], &self.rows[rb[j]]);
             let out = &mut self.tmp[c];
-            for l in 0..LANES {
+            for l in 0..n {
                 out[l] = modify(ai[l], am, ax) * modify(bj[l], bm, bx)
                     - modify(aj[l], am, ax) * modify(bi[l], bm, bx);
             }
@@ -270,11 +279,12 @@ impl Worker<'_, '_> {
     /// `nrm`: src · (1/sqrt(x²+y²+z²)), FLT_MAX for a zero length (MS
     /// `nrm---ps`), applied to all four components.
     pub(super) fn nrm(&mut self, d: DstOp, a: SrcOp) {
+        let n = self.span();
         let (am, ax) = a.mod_bits();
         let r: [usize; 4] = std::array::from_fn(|c| self.row(a, c));
         let s: [&[f32; LANES]; 4] = std::array::from_fn(|c| &self.rows[r[c]]);
         let mut scale = [0.0f32; LANES];
-        for l in 0..LANES {
+        for l in 0..n {
             let (x, y, z) = (
                 modify(s[0][l], am, ax),
                 modify(s[1][l], am, ax),
@@ -284,7 +294,7 @@ impl Worker<'_, '_> {
         }
         for c in 0..4 {
             let out = &mut self.tmp[c];
-            for l in 0..LANES {
+            for l in 0..n {
                 out[l] = modify(s[c][l], am, ax) * scale[l];
             }
         }
@@ -294,11 +304,12 @@ impl Worker<'_, '_> {
     /// `sincos`: x = cos, y = sin of the replicate component; z and w are
     /// left untouched (ps_3_0 form, MS `sincos---ps`).
     pub(super) fn sincos(&mut self, d: DstOp, a: SrcOp) {
+        let n = self.span();
         let (am, ax) = a.mod_bits();
         let ra = self.row(a, 0);
         let src = &self.rows[ra];
         let [t0, t1, _, _] = &mut self.tmp;
-        for l in 0..LANES {
+        for l in 0..n {
             let v = modify(src[l], am, ax);
             t0[l] = v.cos();
             t1[l] = v.sin();
@@ -317,6 +328,7 @@ impl Worker<'_, '_> {
     /// Coarse `dsx` (`neighbour` 1: top-right − top-left) or `dsy`
     /// (`neighbour` 2: bottom-left − top-left), one value per quad.
     pub(super) fn deriv(&mut self, d: DstOp, a: SrcOp, neighbour: usize) {
+        let n = self.span();
         let (am, ax) = a.mod_bits();
         let mask = d.mask();
         for c in 0..4 {
@@ -326,7 +338,7 @@ impl Worker<'_, '_> {
             let ra = self.row(a, c);
             let src = &self.rows[ra];
             let out = &mut self.tmp[c];
-            for q in (0..LANES).step_by(4) {
+            for q in (0..n).step_by(4) {
                 let v = modify(src[q + neighbour], am, ax) - modify(src[q], am, ax);
                 out[q..q + 4].copy_from_slice(&[v; 4]);
             }
@@ -386,6 +398,7 @@ impl Worker<'_, '_> {
     /// mask) below zero (MS `texkill---ps`); predication applies per
     /// component.
     pub(super) fn texkill(&self, d: DstOp) -> u64 {
+        let n = self.span();
         let mut kill = 0u64;
         for c in 0..3 {
             if d.mask() & (1 << c) == 0 {
@@ -393,7 +406,7 @@ impl Worker<'_, '_> {
             }
             let src = &self.rows[d.row as usize + c];
             let mut m = 0u64;
-            for l in 0..LANES {
+            for l in 0..n {
                 m |= ((src[l] < 0.0) as u64) << l;
             }
             kill |= m & self.write_mask(d, c);

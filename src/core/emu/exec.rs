@@ -119,6 +119,10 @@ pub(crate) struct Worker<'c, 'a> {
     pub(super) al: i32,
     pub(super) written: u8,
     batch: u64,
+    /// Lanes `0..span` hold the batch's live quads, rounded up to a multiple
+    /// of 16; ops compute only those (the rest of the rows is stale and never
+    /// read back).
+    span: usize,
 }
 
 fn malformed(pc: usize, reason: &str) -> EmuError {
@@ -177,6 +181,7 @@ impl<'c, 'a> Worker<'c, 'a> {
             al: 0,
             written: 0,
             batch: 0,
+            span: LANES,
         }
     }
 
@@ -197,11 +202,20 @@ impl<'c, 'a> Worker<'c, 'a> {
             xs[l] = x as f32;
             ys[l] = y as f32;
         }
+        // Whole quads run when any of their pixels is inside the target.
+        let mut live = 0u64;
+        for q in (0..LANES).step_by(4) {
+            if target & (0xf << q) != 0 {
+                live |= 0xf << q;
+            }
+        }
+        self.span = (LANES - live.leading_zeros() as usize).next_multiple_of(16);
+        let n = self.span();
         for (v, input) in ctx.inputs.iter().enumerate() {
             if let Some(input) = input {
                 for c in 0..4 {
                     let row = &mut self.rows[layout.input as usize + 4 * v + c];
-                    for l in 0..LANES {
+                    for l in 0..n {
                         row[l] = input.base[c] + xs[l] * input.ddx[c] + ys[l] * input.ddy[c];
                     }
                 }
@@ -211,13 +225,6 @@ impl<'c, 'a> Worker<'c, 'a> {
         self.rows[pos] = xs;
         self.rows[pos + 1] = ys;
         self.p = [0; 4];
-        // Whole quads run when any of their pixels is inside the target.
-        let mut live = 0u64;
-        for q in (0..LANES).step_by(4) {
-            if target & (0xf << q) != 0 {
-                live |= 0xf << q;
-            }
-        }
         self.target = target;
         self.exec = live;
         self.live = live;
@@ -272,6 +279,14 @@ impl<'c, 'a> Worker<'c, 'a> {
             st.finish(bias);
         }
         Ok(out)
+    }
+
+    /// Lanes the batch's ops compute: `0..span()`, at most [`LANES`] (so
+    /// the lane loops need no bounds checks) and a multiple of 16 (so they
+    /// vectorise without a scalar remainder).
+    #[inline(always)]
+    pub(super) fn span(&self) -> usize {
+        self.span.min(LANES) & !15
     }
 
     // ----- counting -------------------------------------------------------
