@@ -125,6 +125,22 @@ pub(crate) struct Worker<'c, 'a> {
     span: usize,
 }
 
+#[cfg(test)]
+thread_local! {
+    /// Tests set this to run the portable copy of the executor on a CPU
+    /// with AVX2, to compare the two.
+    pub(super) static PORTABLE_ONLY: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+}
+
+/// Whether this thread must use the portable executor (tests only).
+#[inline(always)]
+fn portable_only() -> bool {
+    #[cfg(test)]
+    return PORTABLE_ONLY.with(|p| p.get());
+    #[cfg(not(test))]
+    false
+}
+
 fn malformed(pc: usize, reason: &str) -> EmuError {
     EmuError::Malformed {
         index: pc,
@@ -453,10 +469,33 @@ impl<'c, 'a> Worker<'c, 'a> {
 
     // ----- the dispatch loop ----------------------------------------------
 
+    /// Runs the ops from pc 0 until main ends, compiled for AVX2 when the CPU
+    /// has it (detected at run time, so the portable binary gets 8-lane
+    /// vector arithmetic). The AVX2 copy computes the same values: it adds
+    /// wider vectors only, and Rust never fuses a multiply and an add unless
+    /// told to (no `mul_add` in the emulator), so every op rounds as before.
+    fn execute(&mut self, out: &mut BatchOut) -> Result<(), EmuError> {
+        #[cfg(target_arch = "x86_64")]
+        if std::arch::is_x86_feature_detected!("avx2") && !portable_only() {
+            // SAFETY: the CPU supports AVX2 (checked just above).
+            return unsafe { self.execute_avx2(out) };
+        }
+        self.execute_ops(out)
+    }
+
+    /// [`Worker::execute_ops`] with AVX2 enabled; the hot handlers are
+    /// `#[inline(always)]`, so they are compiled into this copy.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    unsafe fn execute_avx2(&mut self, out: &mut BatchOut) -> Result<(), EmuError> {
+        self.execute_ops(out)
+    }
+
     /// Runs the ops from pc 0 until main ends: one match per op, each arm a
     /// handler of its family (arithmetic in `arith.rs`, texture in
     /// `texop.rs`, flow control below).
-    fn execute(&mut self, out: &mut BatchOut) -> Result<(), EmuError> {
+    #[inline(always)]
+    fn execute_ops(&mut self, out: &mut BatchOut) -> Result<(), EmuError> {
         let ops = &self.ctx.compiled.ops[..];
         let mut pc = 0usize;
         loop {
@@ -471,33 +510,141 @@ impl<'c, 'a> Worker<'c, 'a> {
                 Op::Nop => {
                     self.begin(s);
                 }
-                Op::Mov { d, a } => self.when_any(s, |w| w.map1(d, a, |x| x)),
-                Op::Add { d, a, b } => self.when_any(s, |w| w.map2(d, a, b, |x, y| x + y)),
-                Op::Sub { d, a, b } => self.when_any(s, |w| w.map2(d, a, b, |x, y| x - y)),
-                Op::Mul { d, a, b } => self.when_any(s, |w| w.map2(d, a, b, |x, y| x * y)),
-                Op::Mad { d, a, b, c } => self.when_any(s, |w| w.map3(d, a, b, c, math::mad)),
-                Op::Min { d, a, b } => self.when_any(s, |w| w.map2(d, a, b, math::min)),
-                Op::Max { d, a, b } => self.when_any(s, |w| w.map2(d, a, b, math::max)),
-                Op::Lrp { d, a, b, c } => self.when_any(s, |w| w.map3(d, a, b, c, math::lrp)),
-                Op::Cmp { d, a, b, c } => self.when_any(s, |w| w.map3(d, a, b, c, math::cmp)),
-                Op::Frc { d, a } => self.when_any(s, |w| w.map1(d, a, math::frc)),
-                Op::Abs { d, a } => self.when_any(s, |w| w.map1(d, a, f32::abs)),
-                Op::Rcp { d, a } => self.when_any(s, |w| w.scalar1(d, a, math::rcp)),
-                Op::Rsq { d, a } => self.when_any(s, |w| w.scalar1(d, a, math::rsq)),
-                Op::Exp { d, a } => self.when_any(s, |w| w.scalar1(d, a, math::exp)),
-                Op::Log { d, a } => self.when_any(s, |w| w.scalar1(d, a, math::log)),
-                Op::Pow { d, a, b } => self.when_any(s, |w| w.pow(d, a, b)),
-                Op::Dp3 { d, a, b } => self.when_any(s, |w| w.dp::<3>(d, a, b)),
-                Op::Dp4 { d, a, b } => self.when_any(s, |w| w.dp::<4>(d, a, b)),
-                Op::Dp2Add { d, a, b, c } => self.when_any(s, |w| w.dp2add(d, a, b, c)),
-                Op::Mat { d, a, b, n, dims } => self.when_any(s, |w| w.matrix(d, a, b, n, dims)),
-                Op::Crs { d, a, b } => self.when_any(s, |w| w.crs(d, a, b)),
-                Op::Nrm { d, a } => self.when_any(s, |w| w.nrm(d, a)),
-                Op::SinCos { d, a } => self.when_any(s, |w| w.sincos(d, a)),
-                Op::Dsx { d, a, site } => self.when_any(s, |w| w.derivative(d, a, site, 1)),
-                Op::Dsy { d, a, site } => self.when_any(s, |w| w.derivative(d, a, site, 2)),
-                Op::Setp { d, a, b, cmp } => self.when_any(s, |w| w.setp(d, a, b, cmp)),
-                Op::TexKill { d } => self.when_any(s, |w| w.killed |= w.texkill(d)),
+                Op::Mov { d, a } => {
+                    if self.begin(s) {
+                        self.map1(d, a, |x| x);
+                    }
+                }
+                Op::Add { d, a, b } => {
+                    if self.begin(s) {
+                        self.map2(d, a, b, |x, y| x + y);
+                    }
+                }
+                Op::Sub { d, a, b } => {
+                    if self.begin(s) {
+                        self.map2(d, a, b, |x, y| x - y);
+                    }
+                }
+                Op::Mul { d, a, b } => {
+                    if self.begin(s) {
+                        self.map2(d, a, b, |x, y| x * y);
+                    }
+                }
+                Op::Mad { d, a, b, c } => {
+                    if self.begin(s) {
+                        self.map3(d, a, b, c, math::mad);
+                    }
+                }
+                Op::Min { d, a, b } => {
+                    if self.begin(s) {
+                        self.map2(d, a, b, math::min);
+                    }
+                }
+                Op::Max { d, a, b } => {
+                    if self.begin(s) {
+                        self.map2(d, a, b, math::max);
+                    }
+                }
+                Op::Lrp { d, a, b, c } => {
+                    if self.begin(s) {
+                        self.map3(d, a, b, c, math::lrp);
+                    }
+                }
+                Op::Cmp { d, a, b, c } => {
+                    if self.begin(s) {
+                        self.map3(d, a, b, c, math::cmp);
+                    }
+                }
+                Op::Frc { d, a } => {
+                    if self.begin(s) {
+                        self.map1(d, a, math::frc);
+                    }
+                }
+                Op::Abs { d, a } => {
+                    if self.begin(s) {
+                        self.map1(d, a, f32::abs);
+                    }
+                }
+                Op::Rcp { d, a } => {
+                    if self.begin(s) {
+                        self.scalar1(d, a, math::rcp);
+                    }
+                }
+                Op::Rsq { d, a } => {
+                    if self.begin(s) {
+                        self.scalar1(d, a, math::rsq);
+                    }
+                }
+                Op::Exp { d, a } => {
+                    if self.begin(s) {
+                        self.scalar1(d, a, math::exp);
+                    }
+                }
+                Op::Log { d, a } => {
+                    if self.begin(s) {
+                        self.scalar1(d, a, math::log);
+                    }
+                }
+                Op::Pow { d, a, b } => {
+                    if self.begin(s) {
+                        self.pow(d, a, b);
+                    }
+                }
+                Op::Dp3 { d, a, b } => {
+                    if self.begin(s) {
+                        self.dp::<3>(d, a, b);
+                    }
+                }
+                Op::Dp4 { d, a, b } => {
+                    if self.begin(s) {
+                        self.dp::<4>(d, a, b);
+                    }
+                }
+                Op::Dp2Add { d, a, b, c } => {
+                    if self.begin(s) {
+                        self.dp2add(d, a, b, c);
+                    }
+                }
+                Op::Mat { d, a, b, n, dims } => {
+                    if self.begin(s) {
+                        self.matrix(d, a, b, n, dims);
+                    }
+                }
+                Op::Crs { d, a, b } => {
+                    if self.begin(s) {
+                        self.crs(d, a, b);
+                    }
+                }
+                Op::Nrm { d, a } => {
+                    if self.begin(s) {
+                        self.nrm(d, a);
+                    }
+                }
+                Op::SinCos { d, a } => {
+                    if self.begin(s) {
+                        self.sincos(d, a);
+                    }
+                }
+                Op::Dsx { d, a, site } => {
+                    if self.begin(s) {
+                        self.derivative(d, a, site, 1);
+                    }
+                }
+                Op::Dsy { d, a, site } => {
+                    if self.begin(s) {
+                        self.derivative(d, a, site, 2);
+                    }
+                }
+                Op::Setp { d, a, b, cmp } => {
+                    if self.begin(s) {
+                        self.setp(d, a, b, cmp);
+                    }
+                }
+                Op::TexKill { d } => {
+                    if self.begin(s) {
+                        self.killed |= self.texkill(d);
+                    }
+                }
 
                 // ----- texture ---------------------------------------------
                 Op::Tex {
@@ -506,7 +653,11 @@ impl<'c, 'a> Worker<'c, 'a> {
                     s: smp,
                     kind,
                     site,
-                } => self.when_any(s, |w| w.texld(d, a, smp, kind, site)),
+                } => {
+                    if self.begin(s) {
+                        self.texld(d, a, smp, kind, site);
+                    }
+                }
                 Op::TexD {
                     d,
                     a,
@@ -553,15 +704,6 @@ impl<'c, 'a> Worker<'c, 'a> {
                     pc = self.ret(pc, true)?;
                 }
             }
-        }
-    }
-
-    /// Runs `f` when some lane executes the op, after charging them its
-    /// slots.
-    #[inline(always)]
-    fn when_any(&mut self, slots: u8, f: impl FnOnce(&mut Self)) {
-        if self.begin(slots) {
-            f(self)
         }
     }
 

@@ -206,6 +206,7 @@ impl<'a> Level<'a> {
     }
 
     /// Bilinear sampling.
+    #[inline(always)]
     pub fn linear(&self, u: f32, v: f32) -> [f32; 4] {
         let fu = u * self.wf - 0.5;
         let fv = v * self.hf - 0.5;
@@ -244,6 +245,7 @@ impl<'a> Level<'a> {
 
     /// Samples lanes `0..n` with `filter`; `out[c]` receives sampled
     /// component `swz(c)`.
+    #[inline(always)]
     fn sample_lanes(
         &self,
         filter: Filter,
@@ -353,6 +355,7 @@ impl<'a> Sampler<'a> {
 
     /// Samples lanes `0..n` at the base level, ignoring the LOD (valid when
     /// [`Sampler::lod_matters`] is false).
+    #[inline(always)]
     pub fn sample_lanes(
         &self,
         n: usize,
@@ -407,6 +410,7 @@ impl<'a> Sampler<'a> {
 
     /// Samples lanes `0..n` at their own LODs (`lod[l]`, bias already
     /// added).
+    #[inline(always)]
     pub fn sample_lanes_lod(
         &self,
         n: usize,

@@ -90,6 +90,7 @@ impl Worker<'_, '_> {
     /// λ of `texld`/`texldp`/`texldb` from the quads' gradients: recorded
     /// for `site`, and written per lane to `lod` when `need` (`bias_w`: the
     /// source whose w `texldb` adds).
+    #[inline(always)]
     fn implicit_lod(&mut self, sm: &Sampler, site: u16, need: bool, bias_w: Option<SrcOp>) {
         let n = self.span();
         let (wf, hf) = sm.size();
@@ -134,6 +135,7 @@ impl Worker<'_, '_> {
     }
 
     /// `texld`, `texldp`, `texldb`, `texldl` on a 2D sampler.
+    #[inline(always)]
     pub(super) fn texld(&mut self, d: DstOp, a: SrcOp, s: SamplerOp, kind: TexKind, site: u16) {
         let n = self.span();
         if kind != TexKind::LdL {
@@ -194,6 +196,7 @@ impl Worker<'_, '_> {
 
     /// Samples at the coordinates in `aux` (and the LODs in `lod` when
     /// `need`) and stores the result.
+    #[inline(always)]
     fn tex_sample(&mut self, d: DstOp, s: SamplerOp, sampler: Option<&Sampler>, need: bool) {
         let swz: [usize; 4] = std::array::from_fn(|c| ((s.swz >> (2 * c)) & 3) as usize);
         let n = self.span();
