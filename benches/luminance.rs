@@ -10,8 +10,9 @@
 //!   with `Draw::record_lod` on pass 1, as `ps30 luminance` runs it;
 //!   `emulate/loop`: the corrected loop shaders (128×56 blocks);
 //! * `pass1/1t`, `pass1/2t`: pass 1 alone on one and two emulator threads;
-//! * `phase/decode`, `phase/crosscheck`: decoding the file, and the f64
-//!   cross-check's one scan (every term, the block bounds, the reference);
+//! * `phase/decode/Nt`, `phase/crosscheck/Nt`: decoding the file, and the
+//!   f64 cross-check's one scan (every term, the block bounds, the
+//!   reference), on N threads;
 //! * `command/luminance|tonemap|run/Nt`: what `ps30 luminance`, `ps30
 //!   tonemap` and `ps30 run` compute (decoding included, no printing) with
 //!   all their work on N threads, as `--threads N` runs them.
@@ -220,16 +221,18 @@ fn luminance(c: &mut Criterion) {
         });
     }
     eprintln!("pass1 through the GPU backend (llvmpipe): skipped, this build has no GPU backend");
-    g.bench_function("phase/decode", |b| {
-        b.iter(|| on_threads(1, || load(&path, &ImageLimits::default()).unwrap().width))
-    });
-    g.bench_function("phase/crosscheck", |b| {
-        b.iter(|| {
-            on_threads(1, || {
-                luminance::pass1_bounds(black_box(&img), (125, 128), 1e-4, Policy::ABS).1
+    for t in [1, 2] {
+        g.bench_function(format!("phase/decode/{t}t"), |b| {
+            b.iter(|| on_threads(t, || load(&path, &ImageLimits::default()).unwrap().width))
+        });
+        g.bench_function(format!("phase/crosscheck/{t}t"), |b| {
+            b.iter(|| {
+                on_threads(t, || {
+                    luminance::pass1_bounds(black_box(&img), (125, 128), 1e-4, Policy::ABS).1
+                })
             })
-        })
-    });
+        });
+    }
     for t in [1, 2] {
         g.bench_function(format!("command/luminance/{t}t"), |b| {
             b.iter(|| {
