@@ -21,55 +21,12 @@
 
 use ps30::core::diag::{Diagnostic, SourceError};
 use ps30::core::load::{self, Options};
-use std::alloc::{GlobalAlloc, Layout, System};
-use std::cell::Cell;
 use std::collections::BTreeMap;
 use std::time::{Duration, Instant};
 
-// ---------------------------------------------------------------------------
-// A counting allocator, per thread, so the macro-bomb test can prove the
-// expansion is refused before it is allocated.
-
-struct Counting;
-
-thread_local! {
-    static ALLOCATED: Cell<u64> = const { Cell::new(0) };
-}
-
-fn note_alloc(bytes: usize) {
-    let _ = ALLOCATED.try_with(|a| a.set(a.get() + bytes as u64));
-}
-
-unsafe impl GlobalAlloc for Counting {
-    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
-        note_alloc(layout.size());
-        System.alloc(layout)
-    }
-
-    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
-        System.dealloc(ptr, layout)
-    }
-
-    unsafe fn alloc_zeroed(&self, layout: Layout) -> *mut u8 {
-        note_alloc(layout.size());
-        System.alloc_zeroed(layout)
-    }
-
-    unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
-        note_alloc(new_size);
-        System.realloc(ptr, layout, new_size)
-    }
-}
-
-#[global_allocator]
-static GLOBAL: Counting = Counting;
-
-fn allocated_by<T>(f: impl FnOnce() -> T) -> (T, u64) {
-    let before = ALLOCATED.with(|a| a.get());
-    let out = f();
-    let after = ALLOCATED.with(|a| a.get());
-    (out, after - before)
-}
+#[path = "common/counting.rs"]
+mod counting;
+use counting::allocated_by;
 
 // ---------------------------------------------------------------------------
 // Helpers.
