@@ -491,9 +491,53 @@ impl<'c, 'a> Worker<'c, 'a> {
         self.execute_ops(out)
     }
 
-    /// Runs the ops from pc 0 until main ends: one match per op, each arm a
-    /// handler of its family (arithmetic in `arith.rs`, texture in
-    /// `texop.rs`, flow control below).
+    /// Runs one arithmetic or `texld`-family op for the executing lanes;
+    /// flow control and `texldd` (which can fail) are run by
+    /// [`Worker::execute_ops`] and never reach here.
+    #[inline(always)]
+    fn compute(&mut self, op: Op) {
+        match op {
+            Op::Mov { d, a } => self.map1(d, a, |x| x),
+            Op::Add { d, a, b } => self.map2(d, a, b, |x, y| x + y),
+            Op::Sub { d, a, b } => self.map2(d, a, b, |x, y| x - y),
+            Op::Mul { d, a, b } => self.map2(d, a, b, |x, y| x * y),
+            Op::Mad { d, a, b, c } => self.map3(d, a, b, c, math::mad),
+            Op::Min { d, a, b } => self.map2(d, a, b, math::min),
+            Op::Max { d, a, b } => self.map2(d, a, b, math::max),
+            Op::Lrp { d, a, b, c } => self.map3(d, a, b, c, math::lrp),
+            Op::Cmp { d, a, b, c } => self.map3(d, a, b, c, math::cmp),
+            Op::Frc { d, a } => self.map1(d, a, math::frc),
+            Op::Abs { d, a } => self.map1(d, a, f32::abs),
+            Op::Rcp { d, a } => self.scalar1(d, a, math::rcp),
+            Op::Rsq { d, a } => self.scalar1(d, a, math::rsq),
+            Op::Exp { d, a } => self.scalar1(d, a, math::exp),
+            Op::Log { d, a } => self.scalar1(d, a, math::log),
+            Op::Pow { d, a, b } => self.pow(d, a, b),
+            Op::Dp3 { d, a, b } => self.dp::<3>(d, a, b),
+            Op::Dp4 { d, a, b } => self.dp::<4>(d, a, b),
+            Op::Dp2Add { d, a, b, c } => self.dp2add(d, a, b, c),
+            Op::Mat { d, a, b, n, dims } => self.matrix(d, a, b, n, dims),
+            Op::Crs { d, a, b } => self.crs(d, a, b),
+            Op::Nrm { d, a } => self.nrm(d, a),
+            Op::SinCos { d, a } => self.sincos(d, a),
+            Op::Dsx { d, a, site } => self.derivative(d, a, site, 1),
+            Op::Dsy { d, a, site } => self.derivative(d, a, site, 2),
+            Op::Setp { d, a, b, cmp } => self.setp(d, a, b, cmp),
+            Op::TexKill { d } => self.killed |= self.texkill(d),
+            Op::Tex {
+                d,
+                a,
+                s,
+                kind,
+                site,
+            } => self.texld(d, a, s, kind, site),
+            _ => debug_assert!(false, "{op:?} is run by execute_ops"),
+        }
+    }
+
+    /// Runs the ops from pc 0 until main ends: one match per op, flow
+    /// control handled below, the rest by [`Worker::compute`] (arithmetic
+    /// in `arith.rs`, texture in `texop.rs`).
     #[inline(always)]
     fn execute_ops(&mut self, out: &mut BatchOut) -> Result<(), EmuError> {
         let ops = &self.ctx.compiled.ops[..];
@@ -506,157 +550,8 @@ impl<'c, 'a> Worker<'c, 'a> {
             pc += 1;
             let s = m.slots;
             match m.op {
-                // ----- arithmetic ------------------------------------------
                 Op::Nop => {
                     self.begin(s);
-                }
-                Op::Mov { d, a } => {
-                    if self.begin(s) {
-                        self.map1(d, a, |x| x);
-                    }
-                }
-                Op::Add { d, a, b } => {
-                    if self.begin(s) {
-                        self.map2(d, a, b, |x, y| x + y);
-                    }
-                }
-                Op::Sub { d, a, b } => {
-                    if self.begin(s) {
-                        self.map2(d, a, b, |x, y| x - y);
-                    }
-                }
-                Op::Mul { d, a, b } => {
-                    if self.begin(s) {
-                        self.map2(d, a, b, |x, y| x * y);
-                    }
-                }
-                Op::Mad { d, a, b, c } => {
-                    if self.begin(s) {
-                        self.map3(d, a, b, c, math::mad);
-                    }
-                }
-                Op::Min { d, a, b } => {
-                    if self.begin(s) {
-                        self.map2(d, a, b, math::min);
-                    }
-                }
-                Op::Max { d, a, b } => {
-                    if self.begin(s) {
-                        self.map2(d, a, b, math::max);
-                    }
-                }
-                Op::Lrp { d, a, b, c } => {
-                    if self.begin(s) {
-                        self.map3(d, a, b, c, math::lrp);
-                    }
-                }
-                Op::Cmp { d, a, b, c } => {
-                    if self.begin(s) {
-                        self.map3(d, a, b, c, math::cmp);
-                    }
-                }
-                Op::Frc { d, a } => {
-                    if self.begin(s) {
-                        self.map1(d, a, math::frc);
-                    }
-                }
-                Op::Abs { d, a } => {
-                    if self.begin(s) {
-                        self.map1(d, a, f32::abs);
-                    }
-                }
-                Op::Rcp { d, a } => {
-                    if self.begin(s) {
-                        self.scalar1(d, a, math::rcp);
-                    }
-                }
-                Op::Rsq { d, a } => {
-                    if self.begin(s) {
-                        self.scalar1(d, a, math::rsq);
-                    }
-                }
-                Op::Exp { d, a } => {
-                    if self.begin(s) {
-                        self.scalar1(d, a, math::exp);
-                    }
-                }
-                Op::Log { d, a } => {
-                    if self.begin(s) {
-                        self.scalar1(d, a, math::log);
-                    }
-                }
-                Op::Pow { d, a, b } => {
-                    if self.begin(s) {
-                        self.pow(d, a, b);
-                    }
-                }
-                Op::Dp3 { d, a, b } => {
-                    if self.begin(s) {
-                        self.dp::<3>(d, a, b);
-                    }
-                }
-                Op::Dp4 { d, a, b } => {
-                    if self.begin(s) {
-                        self.dp::<4>(d, a, b);
-                    }
-                }
-                Op::Dp2Add { d, a, b, c } => {
-                    if self.begin(s) {
-                        self.dp2add(d, a, b, c);
-                    }
-                }
-                Op::Mat { d, a, b, n, dims } => {
-                    if self.begin(s) {
-                        self.matrix(d, a, b, n, dims);
-                    }
-                }
-                Op::Crs { d, a, b } => {
-                    if self.begin(s) {
-                        self.crs(d, a, b);
-                    }
-                }
-                Op::Nrm { d, a } => {
-                    if self.begin(s) {
-                        self.nrm(d, a);
-                    }
-                }
-                Op::SinCos { d, a } => {
-                    if self.begin(s) {
-                        self.sincos(d, a);
-                    }
-                }
-                Op::Dsx { d, a, site } => {
-                    if self.begin(s) {
-                        self.derivative(d, a, site, 1);
-                    }
-                }
-                Op::Dsy { d, a, site } => {
-                    if self.begin(s) {
-                        self.derivative(d, a, site, 2);
-                    }
-                }
-                Op::Setp { d, a, b, cmp } => {
-                    if self.begin(s) {
-                        self.setp(d, a, b, cmp);
-                    }
-                }
-                Op::TexKill { d } => {
-                    if self.begin(s) {
-                        self.killed |= self.texkill(d);
-                    }
-                }
-
-                // ----- texture ---------------------------------------------
-                Op::Tex {
-                    d,
-                    a,
-                    s: smp,
-                    kind,
-                    site,
-                } => {
-                    if self.begin(s) {
-                        self.texld(d, a, smp, kind, site);
-                    }
                 }
                 Op::TexD {
                     d,
@@ -702,6 +597,12 @@ impl<'c, 'a> Worker<'c, 'a> {
                         return Ok(());
                     }
                     pc = self.ret(pc, true)?;
+                }
+                // ----- arithmetic and texld ---------------------------------
+                op => {
+                    if self.begin(s) {
+                        self.compute(op);
+                    }
                 }
             }
         }
