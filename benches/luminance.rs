@@ -15,13 +15,21 @@
 //!   reference), on N threads;
 //! * `command/luminance|tonemap|run/Nt`: what `ps30 luminance`, `ps30
 //!   tonemap` and `ps30 run` compute (decoding included, no printing) with
-//!   all their work on N threads, as `--threads N` runs them.
+//!   all their work on N threads, as `--threads N` runs them;
+//! * `gpu/unrolled`, `gpu/loop`: the `emulate/*` draws on the GPU backend
+//!   (the first Vulkan adapter: llvmpipe here), each pass as `--backend
+//!   gpu` runs it — translation, pipeline, the image uploaded, the draw,
+//!   the target read back; `gpu/pass1/Nt`: pass 1 alone there with
+//!   llvmpipe on N threads (`LP_NUM_THREADS`), beside `pass1/Nt`. Skipped,
+//!   with a line saying so, without an adapter.
 //!
 //! The cross-check's bounds are not part of the `emulate/*` entries.
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use ps30::core::emu::{self, Address, Constants, Draw, Filter, LinearInput, SamplerState};
+use ps30::core::gpu::{self, Gpu, TargetKind};
 use ps30::core::image::{load, HdrImage, ImageLimits, RenderTarget, TargetFormat};
+use ps30::core::ir::Shader;
 use ps30::core::load::{load_str, Loaded, Options};
 use ps30::jobs::bundled::{CORRECTED_LOOP, CORRECTED_PASS2, CORRECTED_UNROLLED};
 use ps30::jobs::luminance::reference::{self, Policy};
@@ -30,12 +38,53 @@ use ps30::jobs::tonemap;
 use std::hint::black_box;
 use std::path::Path;
 
-fn compile(src: (&str, &str), defines: &[(&str, u64)]) -> emu::Compiled {
+fn shader(src: (&str, &str), defines: &[(&str, u64)]) -> Shader {
     let mut opts = Options::default();
     for (k, v) in defines {
         opts.defines.insert(k.to_string(), *v);
     }
-    emu::compile(&load_str(src.0, src.1, &opts).unwrap().shader).unwrap()
+    load_str(src.0, src.1, &opts).unwrap().shader
+}
+
+/// Both passes, as the emulator and the GPU backend take them.
+struct Passes {
+    shaders: [Shader; 2],
+    compiled: [emu::Compiled; 2],
+}
+
+impl Passes {
+    fn new(pass1: Shader, pass2: Shader) -> Passes {
+        let compiled = [&pass1, &pass2].map(|s| emu::compile(s).unwrap());
+        Passes {
+            shaders: [pass1, pass2],
+            compiled,
+        }
+    }
+}
+
+/// Who draws a pass: the emulator on a number of threads, or a GPU.
+#[derive(Clone, Copy)]
+enum Drawer<'a> {
+    Emulator(&'a Passes, usize),
+    Gpu(&'a Gpu, &'a Passes),
+}
+
+impl Drawer<'_> {
+    /// Pass `k`'s oC0, one value per pixel.
+    fn draw(self, k: usize, d: &Draw) -> Vec<[f32; 4]> {
+        let out = match self {
+            Drawer::Emulator(p, threads) => {
+                emu::run_with_threads(&p.compiled[k], d, threads)
+                    .unwrap()
+                    .color
+            }
+            Drawer::Gpu(g, p) => {
+                let kind = TargetKind::Format(TargetFormat::R32F);
+                gpu::run(g, &p.shaders[k], d, kind).unwrap().color
+            }
+        };
+        out.into_iter().next().flatten().unwrap()
+    }
 }
 
 fn state() -> SamplerState {
@@ -47,15 +96,8 @@ fn state() -> SamplerState {
     }
 }
 
-/// Pass 1 on `threads` emulator threads: the `nx × ny` R32F target.
-fn pass1(
-    img: &HdrImage,
-    p1: &emu::Compiled,
-    bw: u32,
-    bh: u32,
-    record_lod: bool,
-    threads: usize,
-) -> RenderTarget {
+/// Pass 1: the `nx × ny` R32F target.
+fn pass1(img: &HdrImage, by: Drawer, bw: u32, bh: u32, record_lod: bool) -> RenderTarget {
     let (w, h) = (img.width, img.height);
     let (nx, ny) = (w.div_ceil(bw), h.div_ceil(bh));
     let mut d1 = Draw::new(nx, ny);
@@ -79,26 +121,19 @@ fn pass1(
         bool: Vec::new(),
     };
     d1.samplers.push((0, img.as_texture().into(), state()));
-    let out1 = emu::run_with_threads(p1, &d1, threads).unwrap();
+    let out1 = by.draw(0, &d1);
     let mut t1 = RenderTarget::new(nx, ny, TargetFormat::R32F);
-    for (i, v) in out1.color[0].as_ref().unwrap().iter().enumerate() {
+    for (i, v) in out1.iter().enumerate() {
         t1.store(i as u32 % nx, i as u32 / nx, *v);
     }
     t1
 }
 
-/// Pass 1 then pass 2 on one thread; returns L̄w.
-fn two_pass(
-    img: &HdrImage,
-    p1: &emu::Compiled,
-    p2: &emu::Compiled,
-    bw: u32,
-    bh: u32,
-    record_lod: bool,
-) -> f32 {
+/// Pass 1 then pass 2; returns L̄w.
+fn two_pass(img: &HdrImage, by: Drawer, bw: u32, bh: u32, record_lod: bool) -> f32 {
     let (w, h) = (img.width, img.height);
     let (nx, ny) = (w.div_ceil(bw), h.div_ceil(bh));
-    let t1 = pass1(img, p1, bw, bh, record_lod, 1);
+    let t1 = pass1(img, by, bw, bh, record_lod);
     let mut d2 = Draw::new(1, 1);
     d2.inputs.push((
         0,
@@ -109,9 +144,7 @@ fn two_pass(
         [1.0 / nx as f32, 1.0 / ny as f32, 0.0, 1.0],
     ];
     d2.samplers.push((0, t1.as_texture().into(), state()));
-    emu::run_with_threads(p2, &d2, 1).unwrap().color[0]
-        .as_ref()
-        .unwrap()[0][0]
+    by.draw(1, &d2)[0][0]
 }
 
 /// The floor: pass 1's arithmetic as a plain f32 loop over 125×128 blocks
@@ -171,6 +204,8 @@ fn run_command(path: &Path, loop1: &Loaded, threads: usize) -> f32 {
         format: TargetFormat::R32F,
         threads: Some(threads),
         limits: emu::EmuLimits::default(),
+        backend: ps30::jobs::backend::Backend::Emulator,
+        float_rules: ps30::core::float_rules::FloatRules::D3d9,
     };
     run_pass(loop1, &img, &setup).unwrap().target.texel(0, 0)[0]
 }
@@ -178,14 +213,15 @@ fn run_command(path: &Path, loop1: &Loaded, threads: usize) -> f32 {
 fn luminance(c: &mut Criterion) {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/hdr/courtyard_1280x1024.exr");
     let img = load(&path, &ImageLimits::default()).unwrap();
-    let unrolled = (
-        compile(CORRECTED_UNROLLED.listing(), &[]),
-        compile(CORRECTED_PASS2.listing(), &[("xsize", 11), ("ysize", 8)]),
+    let unrolled = Passes::new(
+        shader(CORRECTED_UNROLLED.listing(), &[]),
+        shader(CORRECTED_PASS2.listing(), &[("xsize", 11), ("ysize", 8)]),
     );
-    let looped = (
-        compile(CORRECTED_LOOP.listing(), &[]),
-        compile(CORRECTED_PASS2.listing(), &[("xsize", 10), ("ysize", 19)]),
+    let looped = Passes::new(
+        shader(CORRECTED_LOOP.listing(), &[]),
+        shader(CORRECTED_PASS2.listing(), &[("xsize", 10), ("ysize", 19)]),
     );
+    let device = Gpu::open();
     let loop1 = load_str(
         CORRECTED_LOOP.listing().0,
         CORRECTED_LOOP.listing().1,
@@ -207,20 +243,77 @@ fn luminance(c: &mut Criterion) {
         b.iter(|| native_f32(black_box(&img), 125, 128))
     });
     g.bench_function("emulate/unrolled", |b| {
-        b.iter(|| two_pass(black_box(&img), &unrolled.0, &unrolled.1, 125, 128, false))
+        b.iter(|| {
+            two_pass(
+                black_box(&img),
+                Drawer::Emulator(&unrolled, 1),
+                125,
+                128,
+                false,
+            )
+        })
     });
     g.bench_function("emulate/unrolled+lod", |b| {
-        b.iter(|| two_pass(black_box(&img), &unrolled.0, &unrolled.1, 125, 128, true))
+        b.iter(|| {
+            two_pass(
+                black_box(&img),
+                Drawer::Emulator(&unrolled, 1),
+                125,
+                128,
+                true,
+            )
+        })
     });
     g.bench_function("emulate/loop", |b| {
-        b.iter(|| two_pass(black_box(&img), &looped.0, &looped.1, 128, 56, false))
+        b.iter(|| {
+            two_pass(
+                black_box(&img),
+                Drawer::Emulator(&looped, 1),
+                128,
+                56,
+                false,
+            )
+        })
     });
     for t in [1, 2] {
         g.bench_function(format!("pass1/{t}t"), |b| {
-            b.iter(|| pass1(black_box(&img), &unrolled.0, 125, 128, false, t))
+            b.iter(|| {
+                pass1(
+                    black_box(&img),
+                    Drawer::Emulator(&unrolled, t),
+                    125,
+                    128,
+                    false,
+                )
+            })
         });
     }
-    eprintln!("pass1 through the GPU backend (llvmpipe): skipped, this build has no GPU backend");
+    match &device {
+        Ok(d) => {
+            g.bench_function("gpu/unrolled", |b| {
+                b.iter(|| two_pass(black_box(&img), Drawer::Gpu(d, &unrolled), 125, 128, false))
+            });
+            g.bench_function("gpu/loop", |b| {
+                b.iter(|| two_pass(black_box(&img), Drawer::Gpu(d, &looped), 128, 56, false))
+            });
+        }
+        Err(e) => eprintln!("gpu/unrolled, gpu/loop: skipped: {e}"),
+    }
+    // llvmpipe reads LP_NUM_THREADS when a device is created: one device per
+    // thread count, for pass 1 beside `pass1/1t` and `pass1/2t`.
+    for t in [1, 2] {
+        std::env::set_var("LP_NUM_THREADS", t.to_string());
+        let lp = Gpu::open();
+        std::env::remove_var("LP_NUM_THREADS");
+        match &lp {
+            Ok(d) => {
+                g.bench_function(format!("gpu/pass1/{t}t"), |b| {
+                    b.iter(|| pass1(black_box(&img), Drawer::Gpu(d, &unrolled), 125, 128, false))
+                });
+            }
+            Err(e) => eprintln!("gpu/pass1/{t}t: skipped: {e}"),
+        }
+    }
     for t in [1, 2] {
         g.bench_function(format!("phase/decode/{t}t"), |b| {
             b.iter(|| on_threads(t, || load(&path, &ImageLimits::default()).unwrap().width))

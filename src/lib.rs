@@ -17,9 +17,10 @@
 //!                                                                              │
 //!                         ┌────────────────────┬────────────────────────────────┤
 //!                         ▼                    ▼                                ▼
-//!                    cost model      emulator (micro-ops,                  asm printer
-//!                 (slots, executed,   64 lanes = 16 quads)
-//!                  loop breakdown)           │
+//!                    cost model      emulator (micro-ops,    naga lowering ──▶ WGSL, SPIR-V, GLSL,
+//!                 (slots, executed,   64 lanes = 16 quads)      │          HLSL, MSL; asm printer
+//!                  loop breakdown)           │  float rules     ▼
+//!                                            │           GPU backend (wgpu, Vulkan)
 //!                                            ▼
 //!         images ──▶ output merger ──▶ render targets (8-bit, half, single; mip chains)
 //!                                            │
@@ -32,8 +33,9 @@
 //!
 //! * [`core`](mod@core) — the stages every job shares: the instruction table
 //!   and IR, the front end and printer, bytecode in and out, validation, the
-//!   cost model, the emulator, images and render targets, and the output
-//!   merger;
+//!   cost model, the emulator, the float rules, the translation to naga
+//!   (WGSL, SPIR-V, GLSL, HLSL, MSL), the GPU backend (wgpu, Vulkan), images
+//!   and render targets, and the output merger;
 //! * [`jobs`] — what ps30 does with them: the luminance pipeline with its
 //!   reference, tone mapping, profiling, the generator and planner, scenes,
 //!   draw lists, the studies of the alternatives, the article's claims, and

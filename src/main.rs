@@ -25,6 +25,8 @@ fn main() -> ExitCode {
         Command::Run(args) => cli::run::run(args, &ui),
         Command::Luminance(args) => cli::luminance::run(args, &ui),
         Command::Tonemap(args) => cli::tonemap::run(args, &ui),
+        Command::Compare(args) => cli::compare::run(args, &ui),
+        Command::Translate(args) => cli::translate::run(args, &ui),
         Command::Profile(args) => cli::profile::run(args, &ui),
         Command::Render(args) => cli::render::run(args, &ui),
         Command::Study(args) => cli::study::run(args, &ui),

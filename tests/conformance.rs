@@ -6,9 +6,10 @@
 //! own writer, to Wine's token arrays token for token, and Wine's arrays
 //! must read back through the product's reader and listing to the same
 //! tokens; shaders Windows refuses must be refused with the recorded
-//! message; every other case is drawn by each
-//! backend — the emulator always; a GPU once ps30 has a GPU backend — and
-//! every probe converted to the render target's 8-bit format and compared.
+//! message; every other case is drawn by each backend — the emulator
+//! always; the GPU backend (`core/gpu`, the translated shader on a Vulkan
+//! device) when there is an adapter, and always under `CI` — and every
+//! probe converted to the render target's 8-bit format and compared.
 //!
 //! The conversion is the library's D3DFMT_A8R8G8B8 rule
 //! (`ps30::core::image::unorm8`): D3D9 does not document how a shader's
@@ -27,6 +28,9 @@
 //! the exact value sits on the boundary itself (0.5 · 255 = 127.5 in
 //! nested_loop_test and test_dsy), and Wine allows ±1 there. The exact
 //! comparisons (vFace, vPos, multiple render targets) store only 0 and 1.
+
+#[path = "common/gpu.rs"]
+mod gpu_device;
 
 use ps30::core::bytecode::write;
 use ps30::core::emu::{Draw, DrawOutput};
@@ -237,10 +241,20 @@ struct Backends {
 }
 
 fn backends() -> Backends {
-    Backends {
-        run: vec![("emulator", Box::new(conformance::emulate))],
-        not_run: vec![("GPU", "not run: ps30 has no GPU backend yet")],
+    let mut run: Vec<(&'static str, Backend)> = vec![("emulator", Box::new(conformance::emulate))];
+    let mut not_run = Vec::new();
+    match gpu_device::gpu("every_case_gives_the_colours_wine_expects") {
+        Some(g) => run.push((
+            "GPU",
+            Box::new(move |shader: &Shader, draw: &Draw| {
+                ps30::core::gpu::run(&g, shader, draw, ps30::core::gpu::TargetKind::Raw)
+                    .map(|o| o.into_draw_output())
+                    .map_err(|e| e.to_string())
+            }),
+        )),
+        None => not_run.push(("GPU", "not run: no GPU adapter (see the line above)")),
     }
+    Backends { run, not_run }
 }
 
 #[test]

@@ -526,3 +526,64 @@ impl From<AddressArg> for Address {
         }
     }
 }
+
+/// `--float-rules`: the special values the emulator and the translation
+/// compute (see `ps30::core::float_rules`).
+#[derive(Clone, Copy, Debug, Default, clap::ValueEnum)]
+pub enum FloatRulesArg {
+    /// Microsoft's instruction pages: log(0) = -FLT_MAX, |x| in log and rsq, nrm(0) scaled by FLT_MAX.
+    #[default]
+    D3d9,
+    /// Plain IEEE results.
+    Ieee,
+    /// d3d9, and a product with a zero factor is 0 (0 × inf = 0).
+    D3d9ZeroMul,
+}
+
+impl From<FloatRulesArg> for ps30::core::float_rules::FloatRules {
+    fn from(r: FloatRulesArg) -> Self {
+        use ps30::core::float_rules::FloatRules;
+        match r {
+            FloatRulesArg::D3d9 => FloatRules::D3d9,
+            FloatRulesArg::Ieee => FloatRules::Ieee,
+            FloatRulesArg::D3d9ZeroMul => FloatRules::D3d9ZeroMul,
+        }
+    }
+}
+
+/// `--backend`: who draws.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum)]
+pub enum BackendArg {
+    /// The CPU emulator.
+    #[default]
+    Emulator,
+    /// A GPU through Vulkan (Mesa's llvmpipe is one, on the CPU).
+    Gpu,
+}
+
+/// Who draws, and with which float rules (run, luminance, tonemap).
+#[derive(Args)]
+pub struct BackendArgs {
+    /// Draw on the emulator (default) or on a GPU through Vulkan, with the translated shader.
+    #[arg(long, value_enum, default_value = "emulator")]
+    pub backend: BackendArg,
+    /// Special values: d3d9 (Microsoft's pages, the default), ieee, or d3d9-zero-mul.
+    #[arg(long, value_enum, default_value = "d3d9")]
+    pub float_rules: FloatRulesArg,
+}
+
+impl BackendArgs {
+    /// The backend; opening a GPU that is not there is bad input (exit 2),
+    /// with a message that says how to get one.
+    pub fn open(&self) -> Result<ps30::jobs::backend::Backend, super::BadInput> {
+        use ps30::jobs::backend::Backend;
+        Ok(match self.backend {
+            BackendArg::Emulator => Backend::Emulator,
+            BackendArg::Gpu => Backend::Gpu(std::sync::Arc::new(ps30::core::gpu::Gpu::open()?)),
+        })
+    }
+
+    pub fn rules(&self) -> ps30::core::float_rules::FloatRules {
+        self.float_rules.into()
+    }
+}

@@ -1,6 +1,6 @@
 //! `ps30 luminance`: both passes on an HDR image, cross-checked.
 
-use super::args::{parse_delta, parse_size, ExecArgs, FormatArg, InputArgs};
+use super::args::{parse_delta, parse_size, BackendArgs, ExecArgs, FormatArg, InputArgs};
 use super::io::{print_json, say, shader_source};
 use super::ui::Ui;
 use super::Outcome;
@@ -38,6 +38,8 @@ pub struct Args {
     #[command(flatten)]
     exec: ExecArgs,
     #[command(flatten)]
+    draw: BackendArgs,
+    #[command(flatten)]
     input: InputArgs,
 }
 
@@ -61,6 +63,8 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         },
         threads: args.exec.threads(),
         limits: args.exec.limits(),
+        backend: args.draw.open()?,
+        float_rules: args.draw.rules(),
     };
     let (pass1, pass2) = (
         shader_source(&args.pass1, args.input.max_input_bytes)?,

@@ -13,6 +13,7 @@
 pub mod args;
 pub mod asm;
 pub mod check;
+pub mod compare;
 pub mod disasm;
 pub mod expand;
 pub mod io;
@@ -23,6 +24,7 @@ pub mod render;
 pub mod run;
 pub mod study;
 pub mod tonemap;
+pub mod translate;
 pub mod ui;
 pub mod unroll;
 pub mod verify;
@@ -80,6 +82,16 @@ pub enum Command {
         after_help = "L̄w comes from the corrected luminance passes (125x128 blocks, R32F). The shader is\nasm/tonemap/reinhard.psh; every pixel is cross-checked against the f64 reference within a\nbound derived from the shader's f32 arithmetic (exit 1 if any pixel is outside it).\n\nExamples:\n  ps30 tonemap assets/hdr/courtyard_1280x1024.exr -o courtyard.png\n  ps30 tonemap assets/hdr/city.exr -o city.png --key 0.36 --white 5000\n  ps30 tonemap assets/hdr/forest.hdr --white inf --json"
     )]
     Tonemap(tonemap::Args),
+    /// Run a draw on the emulator and on a GPU and compare them pixel by pixel (--all: every bundled shader, into reports/gpu-crosscheck.md).
+    #[command(
+        after_help = "Per output channel: bit-identical pixels, a histogram of distances in ulp, NaN/∞\ndisagreements and the worst pixels with their inputs; --luminance adds L̄w from both\nbackends against the f64 reference. Needs a Vulkan device (exit 2 without one).\n\nExit codes: 0 every difference is explained (within the derived bounds, traced to\ninstructions the probes show differ); 1 a finding; 2 bad input or no GPU.\n\nExamples:\n  ps30 compare --luminance --image assets/hdr/courtyard_1280x1024.exr\n  ps30 compare --tonemap --image assets/hdr/forest.hdr --json\n  ps30 compare corrected:loop --image assets/hdr/forest.hdr --target 8x10 --int i1=128 --int i2=52 \\\n      --const c1=0.0009765625,0.001953125,0,1 --const c3=0.27,0.67,0.06,0.01 --target-format f32\n  ps30 compare --all"
+    )]
+    Compare(compare::Args),
+    /// Translate a shader to WGSL, SPIR-V, GLSL, HLSL or MSL (through naga), with its binding layout.
+    #[command(
+        after_help = "The module passes naga's validator before it is written; the header names the source,\nthe float rules and where every c#, i#, b#, sampler, input and output is bound.\n\nExamples:\n  ps30 translate asm/corrected/lum_pass1_unrolled.psh --to wgsl\n  ps30 translate tonemap:reinhard --to glsl -o reinhard.frag\n  ps30 translate asm/article/lum_pass2.psh -D xsize=11 -D ysize=8 --to spirv -o pass2.spv\n  ps30 translate lights:select --to hlsl --float-rules ieee"
+    )]
+    Translate(translate::Args),
     /// Per-pixel and per-quad costs over an image, divergence, and gradients
     /// that rely on undefined behaviour.
     #[command(

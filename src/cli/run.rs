@@ -1,8 +1,8 @@
 //! `ps30 run`: one pass of any shader over an image into a render target.
 
 use super::args::{
-    parse_float4, parse_float_const, AddressArg, ConstRef, ConstantArgs, ExecArgs, FilterArg,
-    FormatArg, InputArgs, Resolved, SourceArgs,
+    parse_float4, parse_float_const, AddressArg, BackendArgs, ConstRef, ConstantArgs, ExecArgs,
+    FilterArg, FormatArg, InputArgs, Resolved, SourceArgs,
 };
 use super::io::{check_output_path, load_file, print_json, say};
 use super::ui::Ui;
@@ -47,6 +47,8 @@ pub struct Args {
     #[command(flatten)]
     exec: ExecArgs,
     #[command(flatten)]
+    draw: BackendArgs,
+    #[command(flatten)]
     input: InputArgs,
 }
 
@@ -80,6 +82,8 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         format: args.target_format.into(),
         threads: args.exec.threads(),
         limits: args.exec.limits(),
+        backend: args.draw.open()?,
+        float_rules: args.draw.rules(),
     };
     let out = {
         let _spinner = ui.spinner("running the shader");

@@ -1,7 +1,7 @@
 //! `ps30 tonemap`: the article's operator, run in the emulator, into an
 //! 8-bit sRGB PNG, cross-checked pixel by pixel.
 
-use super::args::{parse_key, parse_white, ExecArgs, InputArgs};
+use super::args::{parse_key, parse_white, BackendArgs, ExecArgs, InputArgs};
 use super::io::{check_output_path, print_json, say, shader_source};
 use super::ui::Ui;
 use super::Outcome;
@@ -27,6 +27,8 @@ pub struct Args {
     #[command(flatten)]
     exec: ExecArgs,
     #[command(flatten)]
+    draw: BackendArgs,
+    #[command(flatten)]
     input: InputArgs,
 }
 
@@ -45,6 +47,8 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         band_rows: 0,
         shader,
         limits: args.exec.limits(),
+        backend: args.draw.open()?,
+        float_rules: args.draw.rules(),
     };
     let result = {
         let bar = std::cell::RefCell::new(ui.bar("tone mapping", img.height as u64));

@@ -269,6 +269,20 @@ impl Opcode {
         &TABLE[self as usize]
     }
 
+    /// For the matrix instructions (m4x4 … m3x2): how many consecutive
+    /// registers they read from `src1` (the rows, one per result
+    /// component) and the width of each dot product, as (rows, width).
+    pub fn matrix_shape(self) -> Option<(u32, u32)> {
+        match self {
+            Opcode::M4x4 => Some((4, 4)),
+            Opcode::M4x3 => Some((3, 4)),
+            Opcode::M3x4 => Some((4, 3)),
+            Opcode::M3x3 => Some((3, 3)),
+            Opcode::M3x2 => Some((2, 3)),
+            _ => None,
+        }
+    }
+
     /// Looks up a base mnemonic (no suffixes), with whether a comparison
     /// suffix was given (it selects `ifc` and `breakc`).
     pub fn from_mnemonic(base: &str, has_comparison: bool) -> Option<Opcode> {

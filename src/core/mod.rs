@@ -7,10 +7,13 @@
 //! [`ir::Shader`], and [`load`] runs the three in one call. [`bytecode`]
 //! reads compiled shaders into a listing the front end reads like text, and
 //! writes the tokens back. The [`cost`]
-//! model and the [`emu`]lator take a validated shader; [`image`] reads and
-//! writes the pixels they work on, in the render-target formats of D3D9, and
-//! [`merge`] is the output merger that puts a draw's colours into a target
-//! (blending, the colour write mask, clears). [`diag`] renders every stage's errors,
+//! model and the [`emu`]lator take a validated shader, and so does the
+//! [`translate`]ion to a naga module, which the [`gpu`] backend draws on a
+//! Vulkan device; the emulator and the translation compute by the same
+//! [`float_rules`]. [`image`] reads and writes the pixels they work on, in
+//! the render-target formats of D3D9, and [`merge`] is the output merger
+//! that puts a draw's colours into a target (blending, the colour write
+//! mask, clears). [`diag`] renders every stage's errors,
 //! [`numbers`] formats figures the same way everywhere, and [`output`] writes
 //! files atomically. Nothing here imports from `jobs` or `present`.
 
@@ -18,7 +21,9 @@ pub mod bytecode;
 pub mod cost;
 pub mod diag;
 pub mod emu;
+pub mod float_rules;
 pub mod front;
+pub mod gpu;
 pub mod image;
 pub mod ir;
 pub mod isa;
@@ -26,4 +31,5 @@ pub mod load;
 pub mod merge;
 pub mod numbers;
 pub mod output;
+pub mod translate;
 pub mod valid;

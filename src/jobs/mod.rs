@@ -3,7 +3,8 @@
 //! Each job has a folder of its own and computes results as plain data; how
 //! those results are printed is the business of [`crate::present`].
 //! [`bundled`] is the table of shaders shipped inside the binary, shared by
-//! every job. Jobs import the core and [`bundled`]; a job may use another
+//! every job, and [`backend`] the one way a job draws (emulator or GPU).
+//! Jobs import the core, [`bundled`] and [`backend`]; a job may use another
 //! job only where the arrow below points (no cycles):
 //!
 //! * `verify` → `gen`, `luminance`, `tonemap`
@@ -12,10 +13,13 @@
 //! * `profile` → `scenes`, `luminance`
 //! * `studies` → `render`, `luminance`, `tonemap`, `scenes`
 //! * `render` → `scenes` (its synthetic textures)
+//! * `compare` → `luminance`, `tonemap`, `gen`, `scenes` (the shaders it draws twice)
 //!
 //! [`conformance`] (the draws of the conformance corpus) uses no other job.
 
+pub mod backend;
 pub mod bundled;
+pub mod compare;
 pub mod conformance;
 pub mod gen;
 pub mod luminance;

@@ -12,6 +12,7 @@ pub fn run_json(image: &str, r: &LuminanceRun) -> serde_json::Value {
         "image": image,
         "width": r.width,
         "height": r.height,
+        "drawn_by": r.drawn_by,
         "log_average": r.log_average,
         "reference_log_average": r.reference_log_average,
         "relative_error": r.relative_error,
@@ -27,9 +28,9 @@ pub fn run_json(image: &str, r: &LuminanceRun) -> serde_json::Value {
         "padded_samples": r.padded_samples,
         "padding_factor": r.padding_factor,
         "executed_per_pixel": {
-            "pass1": range_json(r.pass1.executed_emulated),
-            "pass1_last": r.pass1_last.as_ref().map(|p| range_json(p.executed_emulated)),
-            "pass2": range_json(r.pass2.executed_emulated),
+            "pass1": r.pass1.executed_emulated.map(range_json),
+            "pass1_last": r.pass1_last.as_ref().and_then(|p| p.executed_emulated.map(range_json)),
+            "pass2": r.pass2.executed_emulated.map(range_json),
         },
         "passes": [&r.pass1, &r.pass2],
         "pass1_last": &r.pass1_last,
@@ -41,18 +42,29 @@ pub fn run_json(image: &str, r: &LuminanceRun) -> serde_json::Value {
     })
 }
 
+/// `emulator counted 64,774, same`, or what a GPU run says instead.
+pub fn counted_text(p: &PassCost) -> String {
+    match p.executed_emulated {
+        Some(r) => format!(
+            "emulator counted {}{}",
+            range_text(r),
+            if p.counts_agree {
+                ", same"
+            } else {
+                ", DIFFERENT"
+            }
+        ),
+        None => "not counted: drawn on the GPU".into(),
+    }
+}
+
 fn pass_line(label: &str, p: &PassCost) -> String {
     let mut s = format!(
-        "{label} {}: {} slots, {} executed per pixel (emulator counted {}{})\n",
+        "{label} {}: {} slots, {} executed per pixel ({})\n",
         p.shader,
         p.slots,
         range_text(p.executed_static),
-        range_text(p.executed_emulated),
-        if p.counts_agree {
-            ", same"
-        } else {
-            ", DIFFERENT"
-        }
+        counted_text(p)
     );
     s.push_str(&findings_text(&p.shader, &p.findings));
     s
@@ -84,6 +96,9 @@ pub fn run_text(image: &str, r: &LuminanceRun) -> String {
         r.target_format.d3d_name(),
         r.delta
     );
+    if r.drawn_by != "emulator" {
+        s.push_str(&format!("drawn on the {}\n", r.drawn_by));
+    }
     s.push_str(&pass_line("pass 1", &r.pass1));
     if let Some(p) = &r.pass1_last {
         s.push_str(&pass_line("pass 1 (last column)", p));
@@ -166,7 +181,12 @@ pub fn run_text(image: &str, r: &LuminanceRun) -> String {
         return s;
     }
     s.push_str(&format!(
-        "L̄w: emulated {:.7}, reference {:.7} (every pixel once), relative error {:.2e}, tolerance {:.2e}: {}\n",
+        "L̄w: {} {:.7}, reference {:.7} (every pixel once), relative error {:.2e}, tolerance {:.2e}: {}\n",
+        if r.drawn_by == "emulator" {
+            "emulated"
+        } else {
+            "GPU"
+        },
         r.log_average,
         r.reference_log_average,
         r.relative_error,
@@ -213,17 +233,27 @@ pub fn pass_text(
         t.height,
         t.format.d3d_name()
     );
-    s.push_str(&format!(
-        "slots {}, executed per pixel {} (cost model: {}{})\n",
-        out.cost.slots,
-        range_text(out.cost.executed_emulated),
-        range_text(out.cost.executed_static),
-        if out.cost.counts_agree {
-            ", same"
-        } else {
-            ", DIFFERENT"
-        }
-    ));
+    if out.drawn_by != "emulator" {
+        s.push_str(&format!("drawn on the {}\n", out.drawn_by));
+    }
+    s.push_str(&match out.cost.executed_emulated {
+        Some(e) => format!(
+            "slots {}, executed per pixel {} (cost model: {}{})\n",
+            out.cost.slots,
+            range_text(e),
+            range_text(out.cost.executed_static),
+            if out.cost.counts_agree {
+                ", same"
+            } else {
+                ", DIFFERENT"
+            }
+        ),
+        None => format!(
+            "slots {}, executed per pixel {} (cost model; not counted: drawn on the GPU)\n",
+            out.cost.slots,
+            range_text(out.cost.executed_static)
+        ),
+    });
     s.push_str(&findings_text(&out.cost.shader, &out.cost.findings));
     if !out.cost.within_limits {
         s.push_str("the shader does not fit the ps_3_0 limits (see ps30 check)\n");
@@ -244,8 +274,9 @@ pub fn pass_json(out: &PassOutput) -> serde_json::Value {
     serde_json::json!({
         "target": [t.width, t.height],
         "target_format": t.format.d3d_name(),
+        "drawn_by": out.drawn_by,
         "cost": &out.cost,
-        "executed_per_pixel": range_json(out.cost.executed_emulated),
+        "executed_per_pixel": out.cost.executed_emulated.map(range_json),
         "red": {"min": min, "max": max, "mean": mean},
         "texels": t.texels.iter().map(|v| v[0]).collect::<Vec<f32>>(),
     })

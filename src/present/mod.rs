@@ -3,6 +3,7 @@
 //! a job or a core stage returned and renders it.
 
 pub mod check;
+pub mod compare;
 pub mod constants;
 pub mod disasm;
 pub mod luminance;

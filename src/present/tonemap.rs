@@ -41,6 +41,9 @@ pub fn text(image: &str, t: &ToneMapped, written: Option<&str>) -> String {
         lum.relative_tolerance,
         if lum.all_agree() { "agree" } else { "DISAGREE" }
     );
+    if lum.drawn_by != "emulator" {
+        s.push_str(&format!("drawn on the {}\n", lum.drawn_by));
+    }
     s.push_str(&format!(
         "key a = {}, {} → a/L̄w = {}, L_white = {}\n",
         number(op.key),
@@ -49,16 +52,11 @@ pub fn text(image: &str, t: &ToneMapped, written: Option<&str>) -> String {
         number(op.white_scaled())
     ));
     s.push_str(&format!(
-        "shader {}: {} slots, {} executed per pixel (emulator counted {}{})\n",
+        "shader {}: {} slots, {} executed per pixel ({})\n",
         t.cost.shader,
         t.cost.slots,
         range_text(t.cost.executed_static),
-        range_text(t.cost.executed_emulated),
-        if t.cost.counts_agree {
-            ", same"
-        } else {
-            ", DIFFERENT"
-        }
+        crate::present::luminance::counted_text(&t.cost)
     ));
     s.push_str(&format!(
         "cross-check against the f64 reference: {} pixels, largest difference {:.1e} (its bound {:.1e}; at most {:.0}% of the bound anywhere): {}\n",
@@ -129,6 +127,7 @@ pub fn json(image: &str, t: &ToneMapped, written: Option<&str>) -> serde_json::V
         "width": t.width,
         "height": t.height,
         "output": written,
+        "drawn_by": t.luminance.drawn_by,
         "log_average": t.luminance.log_average,
         "reference_log_average": t.luminance.reference_log_average,
         "log_average_relative_error": t.luminance.relative_error,
@@ -140,7 +139,7 @@ pub fn json(image: &str, t: &ToneMapped, written: Option<&str>) -> serde_json::V
         "white_scaled": finite(op.white_scaled()),
         "scale": op.scale(),
         "shader": &t.cost,
-        "executed_per_pixel": range_json(t.cost.executed_emulated),
+        "executed_per_pixel": t.cost.executed_emulated.map(range_json),
         "pixels": c.pixels,
         "checked_pixels": c.checked_pixels,
         "nonfinite_pixels": c.nonfinite_pixels,

@@ -87,7 +87,7 @@ impl Out {
         let at = self.at();
         self.bytes.extend(s.as_bytes());
         self.bytes.push(0);
-        while self.bytes.len() % 4 != 0 {
+        while !self.bytes.len().is_multiple_of(4) {
             self.bytes.push(0xab);
         }
         at

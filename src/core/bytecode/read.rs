@@ -78,7 +78,7 @@ struct Tokens<'a> {
 
 impl<'a> Tokens<'a> {
     fn new(bytes: &'a [u8]) -> Result<Tokens<'a>, ReadError> {
-        if bytes.len() % 4 != 0 {
+        if !bytes.len().is_multiple_of(4) {
             let last = bytes.len() - bytes.len() % 4;
             return Err(ReadError::at(
                 last,

@@ -1,5 +1,8 @@
 //! Arithmetic and comparison handlers of the executor (the texld family is
-//! in `texop.rs`).
+//! in `texop.rs`). The handlers whose results the float rules change
+//! (`core/float_rules.rs`: mul, mad, lrp, the dot products, nrm, log, rsq,
+//! pow, frc) choose their scalar function by the draw's rules once per
+//! batch of lanes.
 //!
 //! Every handler is a loop over all [`LANES`] lanes of fixed-size rows (so
 //! the compiler can vectorise it), built from a few generic helpers:
@@ -183,15 +186,79 @@ impl Worker<'_, '_> {
         self.store::<true>(d, d.mask());
     }
 
+    // ----- the float rules (core/float_rules.rs) --------------------------
+
+    #[inline(always)]
+    pub(super) fn mul(&mut self, d: DstOp, a: SrcOp, b: SrcOp) {
+        if self.ctx.rules.zero_mul() {
+            self.map2(d, a, b, math::zmul)
+        } else {
+            self.map2(d, a, b, |x, y| x * y)
+        }
+    }
+
+    #[inline(always)]
+    pub(super) fn mad(&mut self, d: DstOp, a: SrcOp, b: SrcOp, c: SrcOp) {
+        if self.ctx.rules.zero_mul() {
+            self.map3(d, a, b, c, |x, y, z| math::zmul(x, y) + z)
+        } else {
+            self.map3(d, a, b, c, math::mad)
+        }
+    }
+
+    #[inline(always)]
+    pub(super) fn lrp(&mut self, d: DstOp, a: SrcOp, b: SrcOp, c: SrcOp) {
+        if self.ctx.rules.zero_mul() {
+            self.map3(d, a, b, c, |x, y, z| {
+                math::zmul(x, y) + math::zmul(1.0 - x, z)
+            })
+        } else {
+            self.map3(d, a, b, c, math::lrp)
+        }
+    }
+
+    #[inline(always)]
+    pub(super) fn log(&mut self, d: DstOp, a: SrcOp) {
+        if self.ctx.rules.d3d9_specials() {
+            self.scalar1(d, a, math::log)
+        } else {
+            self.scalar1(d, a, math::ieee_log)
+        }
+    }
+
+    #[inline(always)]
+    pub(super) fn rsq(&mut self, d: DstOp, a: SrcOp) {
+        if self.ctx.rules.d3d9_specials() {
+            self.scalar1(d, a, math::rsq)
+        } else {
+            self.scalar1(d, a, math::ieee_rsq)
+        }
+    }
+
+    #[inline(always)]
+    pub(super) fn frc(&mut self, d: DstOp, a: SrcOp) {
+        if self.ctx.rules.d3d9_specials() {
+            self.map1(d, a, math::frc)
+        } else {
+            self.map1(d, a, math::ieee_frc)
+        }
+    }
+
+    #[inline(always)]
     pub(super) fn pow(&mut self, d: DstOp, a: SrcOp, b: SrcOp) {
         let n = self.span();
+        let f = if self.ctx.rules.d3d9_specials() {
+            math::pow
+        } else {
+            math::ieee_pow
+        };
         let (am, ax) = a.mod_bits();
         let (bm, bx) = b.mod_bits();
         let (ra, rb) = (self.row(a, 0), self.row(b, 0));
         let (sa, sb) = (&self.rows[ra], &self.rows[rb]);
         let out = &mut self.tmp[0];
         for l in 0..n {
-            out[l] = math::pow(modify(sa[l], am, ax), modify(sb[l], bm, bx));
+            out[l] = f(modify(sa[l], am, ax), modify(sb[l], bm, bx));
         }
         self.store::<true>(d, d.mask());
     }
@@ -207,11 +274,16 @@ impl Worker<'_, '_> {
         let rb: [usize; N] = std::array::from_fn(|c| self.row(b, c));
         let sa: [&[f32; LANES]; N] = std::array::from_fn(|c| &self.rows[ra[c]]);
         let sb: [&[f32; LANES]; N] = std::array::from_fn(|c| &self.rows[rb[c]]);
+        let mul = if self.ctx.rules.zero_mul() {
+            math::zmul
+        } else {
+            |x: f32, y: f32| x * y
+        };
         let out = &mut self.tmp[k];
         for l in 0..n {
-            let mut s = modify(sa[0][l], am, ax) * modify(sb[0][l], bm, bx);
+            let mut s = mul(modify(sa[0][l], am, ax), modify(sb[0][l], bm, bx));
             for c in 1..N {
-                s += modify(sa[c][l], am, ax) * modify(sb[c][l], bm, bx);
+                s += mul(modify(sa[c][l], am, ax), modify(sb[c][l], bm, bx));
             }
             out[l] = s;
         }
@@ -283,6 +355,17 @@ impl Worker<'_, '_> {
         let (am, ax) = a.mod_bits();
         let r: [usize; 4] = std::array::from_fn(|c| self.row(a, c));
         let s: [&[f32; LANES]; 4] = std::array::from_fn(|c| &self.rows[r[c]]);
+        let rules = self.ctx.rules;
+        let scale_of = if rules.d3d9_specials() {
+            math::nrm_scale
+        } else {
+            math::ieee_nrm_scale
+        };
+        let mul = if rules.zero_mul() {
+            math::zmul
+        } else {
+            |x: f32, y: f32| x * y
+        };
         let mut scale = [0.0f32; LANES];
         for l in 0..n {
             let (x, y, z) = (
@@ -290,12 +373,12 @@ impl Worker<'_, '_> {
                 modify(s[1][l], am, ax),
                 modify(s[2][l], am, ax),
             );
-            scale[l] = math::nrm_scale(x * x + y * y + z * z);
+            scale[l] = scale_of(x * x + y * y + z * z);
         }
         for c in 0..4 {
             let out = &mut self.tmp[c];
             for l in 0..n {
-                out[l] = modify(s[c][l], am, ax) * scale[l];
+                out[l] = mul(modify(s[c][l], am, ax), scale[l]);
             }
         }
         self.store::<false>(d, d.mask());

@@ -463,16 +463,10 @@ struct Usage {
     consts: BTreeSet<u32>,
 }
 
-/// How many consecutive registers a matrix instruction reads from `src1`.
+/// How many consecutive registers a matrix instruction reads from `src1`,
+/// and its dot-product width ([`Opcode::matrix_shape`]).
 fn matrix_rows(op: Opcode) -> Option<(u8, u8)> {
-    match op {
-        Opcode::M4x4 => Some((4, 4)),
-        Opcode::M4x3 => Some((3, 4)),
-        Opcode::M3x4 => Some((4, 3)),
-        Opcode::M3x3 => Some((3, 3)),
-        Opcode::M3x2 => Some((2, 3)),
-        _ => None,
-    }
+    op.matrix_shape().map(|(r, w)| (r as u8, w as u8))
 }
 
 /// Pass 1: which temps and constants are used (with matrix ranges).

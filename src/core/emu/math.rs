@@ -7,6 +7,10 @@
 //! `ps_3_0-facts.md` §1). Everything is `f32`: ps_3_0 full precision is IEEE
 //! single precision, and `_pp` (partial precision, "implementations may
 //! ignore it", MS-MOD) is ignored, i.e. computed in full precision too.
+//!
+//! The functions without a prefix are the `d3d9` float rules
+//! (`core/float_rules.rs`); `ieee_*` are the `ieee` set's, and [`zmul`] the
+//! product of `d3d9-zero-mul`.
 
 /// Largest finite f32 (FLT_MAX).
 pub const FLT_MAX: f32 = f32::MAX;
@@ -188,4 +192,61 @@ pub fn nrm_scale(f: f32) -> f32 {
     } else {
         FLT_MAX
     }
+}
+
+/// `log` under the `ieee` rules: log2(x), −∞ at ±0, NaN below 0.
+#[inline(always)]
+pub fn ieee_log(x: f32) -> f32 {
+    if x > 0.0 && x.is_finite() {
+        log2(x)
+    } else if x == 0.0 {
+        f32::NEG_INFINITY
+    } else if x == f32::INFINITY {
+        x
+    } else {
+        f32::NAN
+    }
+}
+
+/// `rsq` under the `ieee` rules: 1/sqrt(x), NaN below 0.
+#[inline(always)]
+pub fn ieee_rsq(x: f32) -> f32 {
+    1.0 / x.sqrt()
+}
+
+/// `pow` under the `ieee` rules: IEEE 754's powr(a, b) = exp(b·log a),
+/// defined for a ≥ 0: NaN for a < 0, for pow(0, 0), pow(∞, 0) and
+/// pow(1, ±∞); elsewhere as `powf`.
+#[inline(always)]
+pub fn ieee_pow(a: f32, b: f32) -> f32 {
+    let undefined = a < 0.0
+        || a.is_nan()
+        || b.is_nan()
+        || (a == 0.0 || a == f32::INFINITY) && b == 0.0
+        || a == 1.0 && b.is_infinite();
+    if undefined {
+        f32::NAN
+    } else {
+        a.powf(b)
+    }
+}
+
+/// The `nrm` scale under the `ieee` rules: 1/sqrt(f) (+∞ for 0).
+#[inline(always)]
+pub fn ieee_nrm_scale(f: f32) -> f32 {
+    1.0 / f.sqrt()
+}
+
+/// `frc` under the `ieee` rules: x − floor(x), which rounds to 1.0 for
+/// tiny negative x.
+#[inline(always)]
+pub fn ieee_frc(x: f32) -> f32 {
+    x - x.floor()
+}
+
+/// `a · b` under `d3d9-zero-mul`: 0 when either factor is 0 (0 × ∞ = 0).
+#[inline(always)]
+pub fn zmul(a: f32, b: f32) -> f32 {
+    use crate::core::float_rules::zero_mul_operand as z;
+    z(a, b) * z(b, a)
 }

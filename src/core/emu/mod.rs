@@ -308,6 +308,9 @@ pub struct Draw<'a> {
     /// every execution costs about 9% of the instructions of a texture-bound
     /// shader such as the luminance pass. Divergence counts are always kept.
     pub record_lod: bool,
+    /// The special values of the arithmetic (`ps30 … --float-rules`),
+    /// shared with the translation that `core/gpu` draws.
+    pub float_rules: crate::core::float_rules::FloatRules,
     /// Which side of the primitive the draw shows: the sign of `vFace`.
     pub face: Face,
 }
@@ -349,6 +352,7 @@ impl<'a> Draw<'a> {
             samplers: Vec::new(),
             limits: EmuLimits::default(),
             record_lod: false,
+            float_rules: crate::core::float_rules::FloatRules::D3d9,
             face: Face::Front,
         }
     }
@@ -607,6 +611,8 @@ pub(crate) struct RunCtx<'c, 'a> {
     pub record_lod: bool,
     /// The value of every component of `vFace`.
     pub face: f32,
+    /// The draw's float rules.
+    pub rules: crate::core::float_rules::FloatRules,
 }
 
 impl<'c, 'a> RunCtx<'c, 'a> {
@@ -672,6 +678,7 @@ impl<'c, 'a> RunCtx<'c, 'a> {
             cap: draw.limits.max_executed_per_pixel,
             record_lod: draw.record_lod,
             face: draw.face.value(),
+            rules: draw.float_rules,
         })
     }
 
@@ -785,6 +792,14 @@ fn bind_samplers<'a>(
         }
     }
     Ok(samplers)
+}
+
+/// Checks a draw against a compiled shader as [`run`] does before any pixel
+/// runs — target size, constants, `i#` ranges for rep/loop, inputs and
+/// samplers supplied as declared, texture shapes — so that another backend
+/// (`core/gpu`) refuses exactly what the emulator refuses.
+pub fn check(compiled: &Compiled, draw: &Draw) -> Result<(), EmuError> {
+    RunCtx::new(compiled, draw, 1).map(|_| ())
 }
 
 /// Runs a draw on rayon's global pool.

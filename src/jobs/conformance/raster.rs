@@ -100,7 +100,7 @@ pub fn assemble(
     // (vertex indices in winding order, provoking vertex index)
     let corners: Vec<([usize; 3], usize)> = match primitive {
         Primitive::TriangleList => {
-            if vertices.len() % 3 != 0 {
+            if !vertices.len().is_multiple_of(3) {
                 return Err(format!(
                     "a triangle list needs a multiple of 3 vertices, not {}",
                     vertices.len()

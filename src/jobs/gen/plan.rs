@@ -220,7 +220,7 @@ fn largest_divisors(w: u32, cap: u32) -> Vec<u32> {
     let mut out = Vec::new();
     let mut d = cap.min(w);
     while d >= 1 && out.len() < 2 {
-        if w % d == 0 {
+        if w.is_multiple_of(d) {
             out.push(d);
         }
         d -= 1;

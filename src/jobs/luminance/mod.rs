@@ -33,9 +33,12 @@
 use crate::core::cost::{self, Environment, Profile, Range};
 use crate::core::diag::SourceFile;
 use crate::core::emu::{self, Address, Constants, Draw, Filter, LinearInput, SamplerState};
+use crate::core::float_rules::FloatRules;
+use crate::core::gpu::TargetKind;
 use crate::core::image::{HdrImage, RenderTarget, TargetFormat, Texture};
 use crate::core::isa::Opcode;
 use crate::core::load::{self, Options};
+use crate::jobs::backend::{self, Backend, DrawError};
 pub mod reference;
 
 use reference::{BlockFold, Policy, Tiling};
@@ -82,6 +85,10 @@ pub struct Settings {
     pub threads: Option<usize>,
     /// The emulator's bounds (executed slots per pixel, target size).
     pub limits: emu::EmuLimits,
+    /// Who draws the passes.
+    pub backend: Backend,
+    /// The special values of the arithmetic.
+    pub float_rules: FloatRules,
 }
 
 impl Default for Settings {
@@ -93,6 +100,8 @@ impl Default for Settings {
             policy: Policy::ABS,
             threads: None,
             limits: emu::EmuLimits::default(),
+            backend: Backend::Emulator,
+            float_rules: FloatRules::D3d9,
         }
     }
 }
@@ -103,7 +112,7 @@ impl Default for Settings {
 pub enum PipelineError {
     Source(crate::core::diag::SourceError),
     Cost(String),
-    Emu(emu::EmuError),
+    Draw(DrawError),
     Reference(String),
     /// The shader and the requested block do not fit together.
     Mismatch(String),
@@ -116,7 +125,7 @@ impl std::fmt::Display for PipelineError {
             PipelineError::Cost(e) | PipelineError::Reference(e) | PipelineError::Mismatch(e) => {
                 f.write_str(e)
             }
-            PipelineError::Emu(e) => write!(f, "emulator: {e}"),
+            PipelineError::Draw(e) => write!(f, "{e}"),
         }
     }
 }
@@ -139,13 +148,15 @@ pub struct PassCost {
     pub slots: u64,
     /// Executed slots per pixel from the cost model.
     pub executed_static: Range,
-    /// Executed slots per pixel the emulator counted (min, max over pixels).
-    pub executed_emulated: Range,
+    /// Executed slots per pixel the emulator counted (min, max over
+    /// pixels); `None` when a GPU drew the pass (it counts nothing).
+    pub executed_emulated: Option<Range>,
     /// Warnings from the draw's quads (divergent gradients, a level of
     /// detail far from level 0 on a texture that has only level 0): see
     /// [`crate::jobs::profile`].
     pub findings: Vec<crate::core::emu::findings::Finding>,
-    /// Whether every pixel's count lies in the static range.
+    /// Whether every pixel's count lies in the static range (true when
+    /// nothing was counted).
     pub counts_agree: bool,
     pub within_limits: bool,
 }
@@ -243,6 +254,8 @@ pub struct LuminanceRun {
     /// Non-finite pixels in the image.
     pub nonfinite_pixels: u64,
     pub negative_pixels: u64,
+    /// Who drew the passes: `emulator`, or `GPU: <device>`.
+    pub drawn_by: String,
 }
 
 impl LuminanceRun {
@@ -432,42 +445,37 @@ fn sampler(texture: Texture<'_>) -> (u32, emu::TextureLevels<'_>, SamplerState) 
     )
 }
 
-/// Runs a draw and stores oC0 into a target of the run's format.
+/// Runs a draw on the run's backend and stores oC0 into a target of the
+/// run's format.
 fn draw_into(
-    compiled: &emu::Compiled,
+    loaded: &load::Loaded,
     draw: &Draw,
     format: TargetFormat,
+    backend: &Backend,
     threads: Option<usize>,
-    file: &crate::core::diag::SourceFile,
-) -> Result<
-    (
-        RenderTarget,
-        Range,
-        Vec<crate::core::emu::findings::Finding>,
-    ),
-    PipelineError,
-> {
-    let out = match threads {
-        Some(t) => emu::run_with_threads(compiled, draw, t),
-        None => emu::run(compiled, draw),
-    }
-    .map_err(PipelineError::Emu)?;
+) -> Result<(RenderTarget, Option<Range>, Vec<emu::findings::Finding>), PipelineError> {
+    let out = backend::draw(
+        backend,
+        &loaded.shader,
+        &loaded.file,
+        draw,
+        TargetKind::Format(format),
+        threads,
+    )
+    .map_err(PipelineError::Draw)?;
     let mut target = RenderTarget::new(out.width, out.height, format);
-    if let Some(Some(color)) = out.color.first() {
+    if let Some(color) = &out.color {
         for (i, v) in color.iter().enumerate() {
             target.store(i as u32 % out.width, i as u32 / out.width, *v);
         }
     }
-    let min = out.executed.iter().copied().min().unwrap_or(0);
-    let max = out.executed.iter().copied().max().unwrap_or(0);
-    let findings = crate::core::emu::findings::findings(&out, draw, file);
-    Ok((target, Range { min, max }, findings))
+    Ok((target, out.executed, out.findings))
 }
 
 fn pass_cost(
     loaded: &load::Loaded,
     env: &Environment,
-    emulated: Range,
+    emulated: Option<Range>,
     findings: Vec<crate::core::emu::findings::Finding>,
 ) -> Result<(PassCost, cost::Analysis), PipelineError> {
     let a = cost::analyse(&loaded.shader, &loaded.file, env, &Profile::ps_3_0())
@@ -479,7 +487,8 @@ fn pass_cost(
             executed_static: a.executed,
             executed_emulated: emulated,
             findings,
-            counts_agree: a.executed.min <= emulated.min && emulated.max <= a.executed.max,
+            counts_agree: emulated
+                .is_none_or(|e| a.executed.min <= e.min && e.max <= a.executed.max),
             within_limits: a.verdict == cost::Verdict::Within,
         },
         a,
@@ -651,6 +660,7 @@ fn run_impl(
         ill_conditioned: ill,
         nonfinite_pixels: true_ref.nonfinite_pixels,
         negative_pixels: true_ref.negative_pixels,
+        drawn_by: s.backend.describe(),
     })
 }
 
@@ -673,17 +683,17 @@ fn run_pass1(
         texels: &image.pixels,
     };
     let mut t1 = RenderTarget::new(nx, ny, s.format);
-    let mut emulated1 = Range::ZERO;
+    let mut emulated1 = Some(Range::ZERO);
     let mut findings1 = Vec::new();
     if main_cols > 0 {
-        let c1 = emu::compile(&l1.shader).map_err(PipelineError::Emu)?;
         let mut d1 = Draw::new(main_cols, ny);
+        d1.float_rules = s.float_rules;
         d1.limits = s.limits;
         d1.record_lod = true;
         d1.inputs.push((0, block_start(w, h, bw, bh)));
         d1.constants = g.pass1_constants(s.delta, bw);
         d1.samplers.push(sampler(texture));
-        let (t, e, f) = draw_into(&c1, &d1, s.format, s.threads, &l1.file)?;
+        let (t, e, f) = draw_into(&l1, &d1, s.format, &s.backend, s.threads)?;
         for y in 0..ny {
             for x in 0..main_cols {
                 t1.store(x, y, t.texel(x, y));
@@ -715,8 +725,8 @@ fn run_last_column(
     s: &Settings,
 ) -> Result<PassCost, PipelineError> {
     let (ll, envl) = load_pass1(src, g.last_w, g.bh)?;
-    let cl = emu::compile(&ll.shader).map_err(PipelineError::Emu)?;
     let mut dl = Draw::new(1, g.ny);
+    dl.float_rules = s.float_rules;
     dl.limits = s.limits;
     dl.record_lod = true;
     let mut input = block_start(g.w, g.h, g.bw, g.bh);
@@ -724,7 +734,7 @@ fn run_last_column(
     dl.inputs.push((0, input));
     dl.constants = g.pass1_constants(s.delta, g.last_w);
     dl.samplers.push(sampler(texture));
-    let (t, e, f) = draw_into(&cl, &dl, s.format, s.threads, &ll.file)?;
+    let (t, e, f) = draw_into(&ll, &dl, s.format, &s.backend, s.threads)?;
     for y in 0..g.ny {
         t1.store(g.nx - 1, y, t.texel(0, y));
     }
@@ -785,8 +795,8 @@ fn run_pass2(
 ) -> Result<(PassCost, f64, Comparison, f64), PipelineError> {
     let (nx, ny) = (g.nx, g.ny);
     let l2 = load(pass2, &[("xsize", nx as u64), ("ysize", ny as u64)])?;
-    let c2 = emu::compile(&l2.shader).map_err(PipelineError::Emu)?;
     let mut d2 = Draw::new(1, 1);
+    d2.float_rules = s.float_rules;
     d2.limits = s.limits;
     d2.inputs.push((
         0,
@@ -803,7 +813,7 @@ fn run_pass2(
     };
     d2.samplers.push(sampler(t1.as_texture()));
     d2.record_lod = true;
-    let (t2, emulated2, findings2) = draw_into(&c2, &d2, s.format, s.threads, &l2.file)?;
+    let (t2, emulated2, findings2) = draw_into(&l2, &d2, s.format, &s.backend, s.threads)?;
     let (pass2_cost, _) = pass_cost(&l2, &Environment::default(), emulated2, findings2)?;
     let log_average = t2.texel(0, 0)[0] as f64;
     let applied = if reads_c0y(&l2) { correction } else { 0.0 };
@@ -867,6 +877,8 @@ pub struct PassSetup {
     pub format: TargetFormat,
     pub threads: Option<usize>,
     pub limits: emu::EmuLimits,
+    pub backend: Backend,
+    pub float_rules: FloatRules,
 }
 
 /// What one pass produced.
@@ -874,6 +886,8 @@ pub struct PassSetup {
 pub struct PassOutput {
     pub target: RenderTarget,
     pub cost: PassCost,
+    /// Who drew it: `emulator`, or `GPU: <device>`.
+    pub drawn_by: String,
 }
 
 /// Runs `loaded` over a `target` whose pixel (x, y) gets v0 = the start of
@@ -884,9 +898,9 @@ pub fn run_pass(
     setup: &PassSetup,
 ) -> Result<PassOutput, PipelineError> {
     let (tw, th) = setup.target;
-    let compiled = emu::compile(&loaded.shader).map_err(PipelineError::Emu)?;
     let mut draw = Draw::new(tw, th);
     draw.limits = setup.limits;
+    draw.float_rules = setup.float_rules;
     let declared = |file: crate::core::isa::RegFile, index: u32| {
         loaded
             .shader
@@ -913,7 +927,7 @@ pub fn run_pass(
     }
     draw.record_lod = true;
     let (target, emulated, findings) =
-        draw_into(&compiled, &draw, setup.format, setup.threads, &loaded.file)?;
+        draw_into(loaded, &draw, setup.format, &setup.backend, setup.threads)?;
     // A draw sets every constant: what the application did not set is 0 /
     // false, for the cost model as for the emulator.
     let mut env = Environment::default();
@@ -926,5 +940,9 @@ pub fn run_pass(
         );
     }
     let (cost, _) = pass_cost(loaded, &env, emulated, findings)?;
-    Ok(PassOutput { target, cost })
+    Ok(PassOutput {
+        target,
+        cost,
+        drawn_by: setup.backend.describe(),
+    })
 }

@@ -56,7 +56,7 @@
 //! reported, never absorbed by a wider bound.
 
 use crate::core::cost::{self, Environment, Profile, Range};
-use crate::core::emu::{self, Address, Constants, Draw, Filter, LinearInput, SamplerState};
+use crate::core::emu::{Address, Constants, Draw, Filter, LinearInput, SamplerState};
 use crate::core::image::LUMINANCE_WEIGHTS;
 use crate::core::image::{HdrImage, RenderTarget, TargetFormat};
 use crate::core::load::{self, Options};
@@ -96,6 +96,10 @@ pub struct Settings {
     pub shader: ShaderSource,
     /// The emulator's bounds, for the luminance passes and the tone map.
     pub limits: crate::core::emu::EmuLimits,
+    /// Who draws the luminance passes and the tone map.
+    pub backend: crate::jobs::backend::Backend,
+    /// The special values of the arithmetic.
+    pub float_rules: crate::core::float_rules::FloatRules,
 }
 
 impl Default for Settings {
@@ -110,6 +114,8 @@ impl Default for Settings {
                 crate::jobs::bundled::TONEMAP_REINHARD.text,
             ),
             limits: crate::core::emu::EmuLimits::default(),
+            backend: Default::default(),
+            float_rules: Default::default(),
         }
     }
 }
@@ -127,7 +133,7 @@ pub enum TonemapError {
         value: f64,
         non_finite: u64,
     },
-    Emu(emu::EmuError),
+    Draw(crate::jobs::backend::DrawError),
     Shader(String),
 }
 
@@ -144,7 +150,7 @@ impl std::fmt::Display for TonemapError {
                 f,
                 "the luminance pipeline gave L̄w = {value}, which cannot scale the image (it needs a positive finite value): {non_finite} pixels are NaN or infinite"
             ),
-            TonemapError::Emu(e) => write!(f, "emulator: {e}"),
+            TonemapError::Draw(e) => write!(f, "{e}"),
         }
     }
 }
@@ -701,6 +707,8 @@ pub fn run(
         &luminance::Settings {
             threads: settings.threads,
             limits: settings.limits,
+            backend: settings.backend.clone(),
+            float_rules: settings.float_rules,
             ..luminance::Settings::default()
         },
     )
@@ -744,7 +752,6 @@ pub fn emulate(
     let src = &settings.shader;
     let loaded = load::load(src.file.clone(), &Options::default())
         .map_err(|e| TonemapError::Shader(e.diagnostics.render(&e.file)))?;
-    let compiled = emu::compile(&loaded.shader).map_err(TonemapError::Emu)?;
     let analysis = cost::analyse(
         &loaded.shader,
         &loaded.file,
@@ -767,15 +774,13 @@ pub fn emulate(
         n => n,
     };
     let mut linear = Vec::with_capacity(image.pixels.len());
-    let mut executed = Range {
-        min: u64::MAX,
-        max: 0,
-    };
+    let mut executed: Option<Range> = None;
     let mut y0 = 0;
     while y0 < h {
         let rows = band.min(h - y0);
         let mut draw = Draw::new(w, rows);
         draw.limits = settings.limits;
+        draw.float_rules = settings.float_rules;
         // The image was admitted by its own pixel cap; a band of it is not a
         // new target to refuse.
         draw.limits.max_target_pixels = draw.limits.max_target_pixels.max(w as u64 * rows as u64);
@@ -801,12 +806,16 @@ pub fn emulate(
         draw.samplers.push((0, image.as_texture().into(), clamp));
         draw.samplers
             .push((1, lw_target.as_texture().into(), clamp));
-        let out = match settings.threads {
-            Some(t) => emu::run_with_threads(&compiled, &draw, t),
-            None => emu::run(&compiled, &draw),
-        }
-        .map_err(TonemapError::Emu)?;
-        match out.color.into_iter().next().flatten() {
+        let out = crate::jobs::backend::draw(
+            &settings.backend,
+            &loaded.shader,
+            &loaded.file,
+            &draw,
+            crate::core::gpu::TargetKind::Raw,
+            settings.threads,
+        )
+        .map_err(TonemapError::Draw)?;
+        match out.color {
             Some(c) => linear.extend(c),
             None => {
                 return Err(TonemapError::Shader(format!(
@@ -815,10 +824,14 @@ pub fn emulate(
                 )))
             }
         }
-        for &e in &out.executed {
-            executed.min = executed.min.min(e);
-            executed.max = executed.max.max(e);
-        }
+        executed = match (executed, out.executed) {
+            (Some(a), Some(b)) => Some(Range {
+                min: a.min.min(b.min),
+                max: a.max.max(b.max),
+            }),
+            (None, b) => b,
+            (a, None) => a,
+        };
         y0 += rows;
         progress(y0 as u64, h as u64);
     }
@@ -827,8 +840,8 @@ pub fn emulate(
         slots: analysis.slots,
         executed_static: analysis.executed,
         executed_emulated: executed,
-        counts_agree: analysis.executed.min <= executed.min
-            && executed.max <= analysis.executed.max,
+        counts_agree: executed
+            .is_none_or(|e| analysis.executed.min <= e.min && e.max <= analysis.executed.max),
         within_limits: analysis.verdict == cost::Verdict::Within,
         findings: Vec::new(),
     };

@@ -19,6 +19,7 @@
 pub mod claims;
 pub mod figures;
 pub mod generated;
+pub mod gpu;
 
 use crate::core::image::encode_png_rgb8;
 use crate::core::image::{HdrImage, ImageLimits};
@@ -554,7 +555,11 @@ fn tonemap_row(image: &str, t: &tonemap::ToneMapped, file: &str, size: (u32, u32
         white_source: op.white_source,
         scale: op.scale(),
         slots: t.cost.slots,
-        executed_per_pixel: t.cost.executed_emulated.max,
+        executed_per_pixel: t
+            .cost
+            .executed_emulated
+            .unwrap_or(t.cost.executed_static)
+            .max,
         max_error: c.max_error,
         max_error_bound: c.max_error_bound,
         largest_bound_fraction: c.largest_bound_fraction,
@@ -676,7 +681,10 @@ fn index_page(g: &Generated) -> String {
          | [log-lights.md](log-lights.md) | lights as exp2(−light) multiplied into RGBA8, against raw \
          RGBA8 and A16B16G16R16F accumulation (`ps30 study log-lights`) |\n\
          | [article-chain.md](article-chain.md) | the article's chain: lights added into \
-         A16B16G16R16F, L̄w, tone map (`ps30 study article-chain`) |\n",
+         A16B16G16R16F, L̄w, tone map (`ps30 study article-chain`) |\n\n\
+         [gpu-crosscheck.md](gpu-crosscheck.md) is not written by `verify`: `ps30 compare --all` \
+         writes it on the GPU it finds (the page names the device), every bundled shader on the \
+         emulator and on that device.\n",
         n = g.tonemap.len(),
         files = g
             .files

@@ -1,0 +1,244 @@
+//! `ps30 compare`: the emulator against a GPU — one draw, the luminance
+//! pipeline, tone mapping, or everything bundled (`--all`, which writes
+//! `reports/gpu-crosscheck.md`).
+
+use super::args::{
+    parse_delta, parse_float4, parse_float_const, parse_size, AddressArg, ConstRef, ConstantArgs,
+    FilterArg, FloatRulesArg, FormatArg, InputArgs, Resolved, SourceArgs,
+};
+use super::io::{color_stderr, print_json, say, shader_source};
+use super::ui::Ui;
+use super::{BadInput, Outcome};
+use ps30::core::emu::{Draw, SamplerState};
+use ps30::core::gpu::{Gpu, TargetKind};
+use ps30::core::image::{self, ImageLimits};
+use ps30::core::load;
+use ps30::jobs::compare::{self, all, explain};
+use ps30::jobs::luminance::{self, block_start};
+use ps30::present::compare as show;
+use std::path::PathBuf;
+use std::sync::Arc;
+
+#[derive(clap::Args)]
+pub struct Args {
+    /// Shader file or bundled name for one draw (with --image and --target).
+    shader: Option<String>,
+    /// The image the draw samples (s0) or the pipeline runs on.
+    #[arg(long)]
+    image: Option<PathBuf>,
+    /// Render-target size WxH of the draw.
+    #[arg(long, value_name = "WxH", value_parser = parse_size)]
+    target: Option<(u32, u32)>,
+    /// Compare the luminance pipeline on --image instead of one draw.
+    #[arg(long, conflicts_with_all = ["shader", "tonemap", "all"])]
+    luminance: bool,
+    /// Compare tone mapping on --image instead of one draw.
+    #[arg(long, conflicts_with_all = ["shader", "luminance", "all"])]
+    tonemap: bool,
+    /// Every bundled shader on the bundled images; writes gpu-crosscheck.md to --reports.
+    #[arg(long, conflicts_with_all = ["shader", "luminance", "tonemap", "image"])]
+    all: bool,
+    /// Where --all writes gpu-crosscheck.md.
+    #[arg(long, default_value = "reports", requires = "all")]
+    reports: PathBuf,
+    /// Where --all finds the bundled images.
+    #[arg(long, default_value = "assets/hdr", requires = "all")]
+    images: PathBuf,
+    /// Pass-1 shader for --luminance.
+    #[arg(long, default_value = "corrected:unrolled")]
+    pass1: String,
+    /// Pass-2 shader for --luminance.
+    #[arg(long, default_value = "corrected:pass2")]
+    pass2: String,
+    /// Block size WxH for --luminance.
+    #[arg(long, value_name = "WxH", value_parser = parse_size, default_value = "125x128")]
+    block: (u32, u32),
+    /// The δ of log(δ + L) for --luminance.
+    #[arg(long, default_value_t = 1e-4, value_parser = parse_delta)]
+    delta: f32,
+    #[command(flatten)]
+    source: SourceArgs,
+    #[command(flatten)]
+    input: InputArgs,
+    #[command(flatten)]
+    constants: ConstantArgs,
+    /// Float constant set by the application, by register or by its name in the
+    /// shader's constant table, e.g. --const c3=0.27,0.67,0.06,0.01 or --const g_fKey=0.18.
+    #[arg(long = "const", value_name = "cN|NAME=X[,Y,Z,W]", value_parser = parse_float_const)]
+    floats: Vec<(ConstRef, Vec<f32>)>,
+    #[arg(long, value_enum, default_value = "point")]
+    filter: FilterArg,
+    #[arg(long, value_enum, default_value = "border")]
+    address: AddressArg,
+    /// Border colour R,G,B,A for --address border.
+    #[arg(long, value_parser = parse_float4, default_value = "0,0,0,0")]
+    border: [f32; 4],
+    /// The draw's target: f32 (D3DFMT_R32F), f16 (D3DFMT_A16B16G16R16F); without it, unrounded f32.
+    #[arg(long, value_enum)]
+    target_format: Option<FormatArg>,
+    /// Special values: d3d9 (the default), ieee, or d3d9-zero-mul.
+    #[arg(long, value_enum, default_value = "d3d9")]
+    float_rules: FloatRulesArg,
+    /// Print JSON instead of text.
+    #[arg(long)]
+    json: bool,
+}
+
+pub fn run(args: Args, ui: &Ui) -> super::Result {
+    if !args.all && !args.luminance && !args.tonemap && args.shader.is_none() {
+        return Err(BadInput(
+            "give a SHADER (with --image and --target), --luminance, --tonemap or --all".into(),
+        ));
+    }
+    if args.all {
+        return run_all(&args, ui);
+    }
+    let path = args
+        .image
+        .clone()
+        .ok_or_else(|| BadInput("--image is needed".into()))?;
+    let img = image::load(&path, &ImageLimits::default())?;
+    let gpu = Arc::new(Gpu::open()?);
+    if !ui.quiet && !args.json {
+        eprintln!("device: {}", gpu.info().line());
+    }
+    let name = path.display().to_string();
+    if args.luminance {
+        let settings = luminance::Settings {
+            block: args.block,
+            delta: args.delta,
+            float_rules: args.float_rules.into(),
+            ..Default::default()
+        };
+        let (p1, p2) = (
+            shader_source(&args.pass1, args.input.max_input_bytes)?,
+            shader_source(&args.pass2, args.input.max_input_bytes)?,
+        );
+        let c = {
+            let _s = ui.spinner("running both passes on both backends, and the probes");
+            let mut c = compare::compare_luminance(&gpu, (&name, &img), &p1, None, &p2, &settings)?;
+            c.explanation = Some(explain::luminance(&c, &compare::probe::run(&gpu)?));
+            c
+        };
+        if args.json {
+            print_json(&show::luminance_json(gpu.info(), &c))?;
+        } else {
+            say(ui, &show::luminance_text(&c))?;
+        }
+        return Ok(Outcome::from_ok(
+            c.explanation.as_ref().is_some_and(|e| !e.finding),
+        ));
+    }
+    if args.tonemap {
+        let c = {
+            let _s = ui.spinner("tone mapping on both backends, and the probes");
+            let mut c = all::compare_tonemap(&gpu, &name, &img)?;
+            c.explanation = Some(explain::tonemap(&c, &compare::probe::run(&gpu)?));
+            c
+        };
+        if args.json {
+            print_json(&show::tonemap_json(gpu.info(), &c))?;
+        } else {
+            say(ui, &show::tonemap_text(&c))?;
+        }
+        return Ok(Outcome::from_ok(
+            c.explanation.as_ref().is_some_and(|e| !e.finding),
+        ));
+    }
+    let spec = args.shader.as_deref().unwrap_or_default();
+    let (tw, th) = args
+        .target
+        .ok_or_else(|| BadInput("--target WxH is needed for one draw".into()))?;
+    let src = shader_source(spec, args.input.max_input_bytes)?;
+    let loaded = load::load(src.file, &args.source.options()).map_err(|e| {
+        e.diagnostics.emit(&e.file, color_stderr());
+        BadInput(e.to_string())
+    })?;
+    let program = loaded.shader.program();
+    let mut draw = Draw::new(tw, th);
+    draw.float_rules = args.float_rules.into();
+    if program
+        .inputs
+        .iter()
+        .any(|d| d.reg.file == ps30::core::isa::RegFile::Input && d.reg.index == 0)
+    {
+        draw.inputs.push((
+            0,
+            block_start(
+                img.width,
+                img.height,
+                img.width.div_ceil(tw),
+                img.height.div_ceil(th),
+            ),
+        ));
+    }
+    draw.constants = Resolved::new(
+        &args.floats,
+        &args.constants.ints,
+        &args.constants.bools,
+        loaded.constants.as_ref(),
+    )?
+    .constants();
+    let address = args.address.into();
+    if program.sampler_type(0).is_some() {
+        draw.samplers.push((
+            0,
+            img.as_texture().into(),
+            SamplerState {
+                address_u: address,
+                address_v: address,
+                border: args.border,
+                ..SamplerState::filtered(args.filter.into())
+            },
+        ));
+    }
+    let target = args
+        .target_format
+        .map_or(TargetKind::Raw, |f| TargetKind::Format(f.into()));
+    let c = {
+        let _s = ui.spinner("drawing on both backends, and the probes");
+        let mut c = compare::compare_draw(&gpu, &loaded, &draw, target, None)?;
+        c.explanation = Some(explain::draw(&c, &compare::probe::run(&gpu)?));
+        c
+    };
+    if args.json {
+        print_json(&show::draw_json(gpu.info(), &c))?;
+    } else {
+        say(ui, &show::draw_text(&c))?;
+    }
+    Ok(Outcome::from_ok(
+        c.special_mismatches() == 0 && c.killed_mismatches == 0,
+    ))
+}
+
+fn run_all(args: &Args, ui: &Ui) -> super::Result {
+    let path = args.reports.join("gpu-crosscheck.md");
+    super::io::check_output_path(&path, &[])?;
+    let gpu = Arc::new(Gpu::open()?);
+    // The device is printed first, on stdout, so a log of the run says
+    // where it ran.
+    if !args.json {
+        say(ui, &format!("device: {}\n", gpu.info().line()))?;
+    }
+    let names: Vec<&str> = ps30::present::report::IMAGES.to_vec();
+    let result = {
+        let bar = std::cell::RefCell::new(ui.bar("comparing", 1));
+        all::run(&gpu, &args.images, &names, &|step, total, what| {
+            bar.borrow_mut().set(Some(what), step as u64, total as u64)
+        })?
+    };
+    let page = ps30::present::report::gpu::page(&result);
+    ps30::core::output::write_bytes(&path, page.as_bytes())
+        .map_err(|e| BadInput(format!("{}: {e}", path.display())))?;
+    if args.json {
+        print_json(&result)?;
+    } else {
+        say(ui, &show::all_text(&result))?;
+        if !ui.quiet {
+            say(ui, &format!("wrote {}\n", path.display()))?;
+        }
+    }
+    Ok(Outcome::from_ok(
+        ps30::jobs::compare::explain::all_explained(&result),
+    ))
+}

@@ -1,0 +1,819 @@
+//! One draw on the device: resources from an [`emu::Draw`], one triangle
+//! over the target, and the targets read back into the emulator's layout.
+
+use super::sampler;
+use super::{Gpu, GpuError};
+use crate::core::emu::{self, Draw};
+use crate::core::image::{unorm8_value, Encoding, TargetFormat};
+use crate::core::ir::Shader;
+use crate::core::translate::{self, interface, Entry};
+use std::borrow::Cow;
+
+/// What each `oC#` is rendered into.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum TargetKind {
+    /// `Rgba32Float`: the shader's f32 output unrounded, as
+    /// [`emu::DrawOutput`] holds it.
+    Raw,
+    /// The D3D9 format: the device stores (and rounds) the value.
+    Format(TargetFormat),
+}
+
+impl TargetKind {
+    fn wgpu(self) -> wgpu::TextureFormat {
+        use wgpu::TextureFormat as W;
+        match self {
+            TargetKind::Raw => W::Rgba32Float,
+            TargetKind::Format(f) => match f {
+                TargetFormat::A8R8G8B8 => W::Rgba8Unorm,
+                TargetFormat::R16F => W::R16Float,
+                TargetFormat::G16R16F => W::Rg16Float,
+                TargetFormat::Rgba16F => W::Rgba16Float,
+                TargetFormat::R32F => W::R32Float,
+                TargetFormat::G32R32F => W::Rg32Float,
+                TargetFormat::A32B32G32R32F => W::Rgba32Float,
+            },
+        }
+    }
+
+    /// A stored texel as four floats; channels the format does not store
+    /// read back as 1, the D3D9 default (as [`TargetFormat::round`]).
+    fn decode(self, b: &[u8]) -> [f32; 4] {
+        let format = match self {
+            TargetKind::Raw => TargetFormat::A32B32G32R32F,
+            TargetKind::Format(f) => f,
+        };
+        std::array::from_fn(|c| {
+            if !format.stores(c) {
+                return 1.0;
+            }
+            match format.encoding() {
+                Encoding::Unorm8 => unorm8_value(b[c]),
+                Encoding::Half => half::f16::from_le_bytes([b[2 * c], b[2 * c + 1]]).to_f32(),
+                Encoding::Float => {
+                    f32::from_le_bytes([b[4 * c], b[4 * c + 1], b[4 * c + 2], b[4 * c + 3]])
+                }
+            }
+        })
+    }
+}
+
+/// Per-pixel results of a GPU draw, row-major (`index = y · width + x`),
+/// laid out as [`emu::DrawOutput`]'s.
+#[derive(Clone, Debug, PartialEq)]
+pub struct GpuOutput {
+    pub width: u32,
+    pub height: u32,
+    /// One entry per `oC0..oC3`; `None` if the shader never writes it.
+    pub color: Vec<Option<Vec<[f32; 4]>>>,
+    /// `oDepth` as the depth target stored it (the device clamps it to [0, 1]).
+    pub depth: Option<Vec<f32>>,
+    /// Pixels discarded by `texkill` (their colours and depth are zero).
+    pub killed: Vec<bool>,
+}
+
+impl GpuOutput {
+    /// The output as an [`emu::DrawOutput`], for code written against the
+    /// emulator (the conformance harness takes any backend that returns
+    /// one): colours, depth and killed pixels as drawn; executed counts are
+    /// zero and the per-quad statistics empty — a GPU counts nothing.
+    pub fn into_draw_output(self) -> emu::DrawOutput {
+        let n = self.width as usize * self.height as usize;
+        emu::DrawOutput {
+            width: self.width,
+            height: self.height,
+            color: self.color,
+            depth: self.depth,
+            killed: self.killed,
+            executed: vec![0; n],
+            quads_x: self.width.div_ceil(2),
+            quad_executed: Vec::new(),
+            quad_divergent: Vec::new(),
+            gradients: Vec::new(),
+        }
+    }
+}
+
+/// The full-screen triangle: vertices (−1, −1), (3, −1), (−1, 3),
+/// counter-clockwise in WebGPU's normalised coordinates; the pipeline's
+/// `front_face` makes it front- or back-facing as [`Draw::face`] asks.
+const VERTEX_WGSL: &str =
+    "@vertex fn vs(@builtin(vertex_index) i: u32) -> @builtin(position) vec4<f32> {
+    let x = f32(i32(i & 1u) * 4 - 1);
+    let y = f32(i32(i >> 1u) * 4 - 1);
+    return vec4<f32>(x, y, 0.0, 1.0);
+}";
+
+const ROW_ALIGN: u32 = wgpu::COPY_BYTES_PER_ROW_ALIGNMENT;
+
+/// Runs `draw` of `shader` on the device; `targets` chooses the colour
+/// targets' format.
+pub fn run(
+    gpu: &Gpu,
+    shader: &Shader,
+    draw: &Draw,
+    targets: TargetKind,
+) -> Result<GpuOutput, GpuError> {
+    refuse(gpu, shader, draw)?;
+    let (w, h) = (draw.target_width, draw.target_height);
+    let t =
+        translate::translate(shader, draw.float_rules, Entry::Draw).map_err(GpuError::Translate)?;
+    let iface = t.interface.clone();
+    let device = &gpu.device;
+    let validation = device.push_error_scope(wgpu::ErrorFilter::Validation);
+    let memory = device.push_error_scope(wgpu::ErrorFilter::OutOfMemory);
+
+    let bindings = Bindings::new(gpu, draw, &iface)?;
+    let color_targets = color_targets(&iface, targets);
+    let pipeline = render_pipeline(device, t.module, &bindings, &color_targets, draw, &iface)?;
+    let attachments: Vec<Option<(wgpu::Texture, wgpu::TextureFormat)>> = color_targets
+        .iter()
+        .map(|c| {
+            c.as_ref()
+                .map(|c| (target_texture(device, w, h, c.format), c.format))
+        })
+        .collect();
+    let depth = iface
+        .depth
+        .then(|| target_texture(device, w, h, wgpu::TextureFormat::Depth32Float));
+
+    let mut encoder = device.create_command_encoder(&Default::default());
+    record_pass(
+        &mut encoder,
+        &attachments,
+        depth.as_ref(),
+        &pipeline,
+        &bindings.group,
+    );
+    let readbacks = copy_targets(device, &mut encoder, &attachments, depth.as_ref(), w, h);
+    gpu.queue.submit([encoder.finish()]);
+    let data = read_all(gpu, &readbacks)?;
+    if let Some(e) = pollster::block_on(memory.pop()) {
+        return Err(GpuError::Failed(e.to_string()));
+    }
+    if let Some(e) = pollster::block_on(validation.pop()) {
+        return Err(GpuError::Failed(e.to_string()));
+    }
+    if let Some(e) = gpu.uncaptured.lock().ok().and_then(|mut e| e.take()) {
+        return Err(GpuError::Failed(e));
+    }
+    Ok(assemble(w, h, &iface, targets, &readbacks, data))
+}
+
+/// Refuses what the emulator refuses ([`emu::check`]), samplers other than
+/// 2D (as the emulator does), and targets larger than the device's.
+fn refuse(gpu: &Gpu, shader: &Shader, draw: &Draw) -> Result<(), GpuError> {
+    let compiled = emu::compile(shader).map_err(GpuError::Draw)?;
+    emu::check(&compiled, draw).map_err(GpuError::Draw)?;
+    if let Some(d) = shader
+        .program()
+        .samplers
+        .iter()
+        .find(|d| d.ty != crate::core::isa::SamplerType::Tex2d)
+    {
+        return Err(GpuError::Draw(emu::EmuError::UnsupportedSampler {
+            sampler: d.index,
+            ty: d.ty,
+        }));
+    }
+    let (w, h) = (draw.target_width, draw.target_height);
+    let max = gpu.limits.max_texture_dimension_2d;
+    if w > max || h > max {
+        return Err(GpuError::Unsupported(format!(
+            "a {w}×{h} target: the device's textures are at most {max} texels a side"
+        )));
+    }
+    Ok(())
+}
+
+/// One colour target per written `oC#` (slot k for `oC`k), then the
+/// texkill flag when the shader kills; trailing empty slots dropped.
+fn color_targets(
+    iface: &interface::Interface,
+    targets: TargetKind,
+) -> Vec<Option<wgpu::ColorTargetState>> {
+    let format = targets.wgpu();
+    let mut color_targets: Vec<Option<wgpu::ColorTargetState>> = vec![None; 4];
+    for &k in &iface.outputs {
+        color_targets[k as usize] = Some(format.into());
+    }
+    if iface.kills {
+        color_targets.push(Some(wgpu::TextureFormat::R32Uint.into()));
+    }
+    while color_targets.last().is_some_and(|c| c.is_none()) {
+        color_targets.pop();
+    }
+    color_targets
+}
+
+/// The pipeline: the full-screen triangle and the translated shader.
+fn render_pipeline(
+    device: &wgpu::Device,
+    fragment: naga::Module,
+    bindings: &Bindings,
+    color_targets: &[Option<wgpu::ColorTargetState>],
+    draw: &Draw,
+    iface: &interface::Interface,
+) -> Result<wgpu::RenderPipeline, GpuError> {
+    let vertex = naga::front::wgsl::parse_str(VERTEX_WGSL)
+        .map_err(|e| GpuError::Failed(format!("vertex shader: {e}")))?;
+    let vs = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+        label: Some("ps30 full-screen triangle"),
+        source: wgpu::ShaderSource::Naga(Cow::Owned(vertex)),
+    });
+    let fs = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+        label: Some("ps30 translated shader"),
+        source: wgpu::ShaderSource::Naga(Cow::Owned(fragment)),
+    });
+    let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+        label: None,
+        bind_group_layouts: &[Some(&bindings.layout)],
+        immediate_size: 0,
+    });
+    Ok(
+        device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+            label: Some("ps30 draw"),
+            layout: Some(&layout),
+            vertex: wgpu::VertexState {
+                module: &vs,
+                entry_point: Some("vs"),
+                compilation_options: Default::default(),
+                buffers: &[],
+            },
+            // The triangle is counter-clockwise in WebGPU's terms; calling
+            // that winding the back face makes its pixels back-facing.
+            primitive: wgpu::PrimitiveState {
+                front_face: match draw.face {
+                    emu::Face::Front => wgpu::FrontFace::Ccw,
+                    emu::Face::Back => wgpu::FrontFace::Cw,
+                },
+                ..Default::default()
+            },
+            depth_stencil: iface.depth.then(|| wgpu::DepthStencilState {
+                format: wgpu::TextureFormat::Depth32Float,
+                depth_write_enabled: Some(true),
+                depth_compare: Some(wgpu::CompareFunction::Always),
+                stencil: Default::default(),
+                bias: Default::default(),
+            }),
+            multisample: Default::default(),
+            fragment: Some(wgpu::FragmentState {
+                module: &fs,
+                entry_point: Some("ps30_draw"),
+                compilation_options: Default::default(),
+                targets: color_targets,
+            }),
+            multiview_mask: None,
+            cache: None,
+        }),
+    )
+}
+
+/// The render pass: every target cleared, one triangle drawn.
+fn record_pass(
+    encoder: &mut wgpu::CommandEncoder,
+    attachments: &[Option<(wgpu::Texture, wgpu::TextureFormat)>],
+    depth: Option<&wgpu::Texture>,
+    pipeline: &wgpu::RenderPipeline,
+    group: &wgpu::BindGroup,
+) {
+    let views: Vec<Option<wgpu::TextureView>> = attachments
+        .iter()
+        .map(|a| a.as_ref().map(|(t, _)| t.create_view(&Default::default())))
+        .collect();
+    let depth_view = depth.map(|t| t.create_view(&Default::default()));
+    let color_attachments: Vec<Option<wgpu::RenderPassColorAttachment>> = views
+        .iter()
+        .map(|v| {
+            v.as_ref().map(|view| wgpu::RenderPassColorAttachment {
+                view,
+                depth_slice: None,
+                resolve_target: None,
+                ops: wgpu::Operations {
+                    load: wgpu::LoadOp::Clear(wgpu::Color::TRANSPARENT),
+                    store: wgpu::StoreOp::Store,
+                },
+            })
+        })
+        .collect();
+    let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+        label: Some("ps30 draw"),
+        color_attachments: &color_attachments,
+        depth_stencil_attachment: depth_view.as_ref().map(|view| {
+            wgpu::RenderPassDepthStencilAttachment {
+                view,
+                depth_ops: Some(wgpu::Operations {
+                    load: wgpu::LoadOp::Clear(0.0),
+                    store: wgpu::StoreOp::Store,
+                }),
+                stencil_ops: None,
+            }
+        }),
+        ..Default::default()
+    });
+    pass.set_pipeline(pipeline);
+    pass.set_bind_group(0, group, &[]);
+    pass.draw(0..3, 0..1);
+}
+
+/// Copies every target into a buffer the host can map.
+fn copy_targets(
+    device: &wgpu::Device,
+    encoder: &mut wgpu::CommandEncoder,
+    attachments: &[Option<(wgpu::Texture, wgpu::TextureFormat)>],
+    depth: Option<&wgpu::Texture>,
+    w: u32,
+    h: u32,
+) -> Vec<(Slot, Readback)> {
+    let mut readbacks = Vec::new();
+    for (k, a) in attachments.iter().enumerate() {
+        if let Some((texture, format)) = a {
+            let bytes = format.block_copy_size(None).unwrap_or(16);
+            let aspect = wgpu::TextureAspect::All;
+            let r = copy_out(device, encoder, texture, w, h, bytes, aspect);
+            readbacks.push((Slot::Color(k), r));
+        }
+    }
+    if let Some(d) = depth {
+        let aspect = wgpu::TextureAspect::DepthOnly;
+        let r = copy_out(device, encoder, d, w, h, 4, aspect);
+        readbacks.push((Slot::Depth, r));
+    }
+    readbacks
+}
+
+/// Which target a read-back buffer holds.
+#[derive(Clone, Copy)]
+enum Slot {
+    /// Colour attachment k (k = 4: the texkill flag).
+    Color(usize),
+    Depth,
+}
+
+/// A buffer a target was copied into, and its row pitch.
+struct Readback {
+    buffer: wgpu::Buffer,
+    pitch: u32,
+    texel: u32,
+}
+
+fn target_texture(
+    device: &wgpu::Device,
+    w: u32,
+    h: u32,
+    format: wgpu::TextureFormat,
+) -> wgpu::Texture {
+    device.create_texture(&wgpu::TextureDescriptor {
+        label: None,
+        size: wgpu::Extent3d {
+            width: w,
+            height: h,
+            depth_or_array_layers: 1,
+        },
+        mip_level_count: 1,
+        sample_count: 1,
+        dimension: wgpu::TextureDimension::D2,
+        format,
+        usage: wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC,
+        view_formats: &[],
+    })
+}
+
+fn copy_out(
+    device: &wgpu::Device,
+    encoder: &mut wgpu::CommandEncoder,
+    texture: &wgpu::Texture,
+    w: u32,
+    h: u32,
+    texel: u32,
+    aspect: wgpu::TextureAspect,
+) -> Readback {
+    let pitch = (w * texel).div_ceil(ROW_ALIGN) * ROW_ALIGN;
+    let buffer = device.create_buffer(&wgpu::BufferDescriptor {
+        label: None,
+        size: pitch as u64 * h as u64,
+        usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
+        mapped_at_creation: false,
+    });
+    encoder.copy_texture_to_buffer(
+        wgpu::TexelCopyTextureInfo {
+            texture,
+            mip_level: 0,
+            origin: wgpu::Origin3d::ZERO,
+            aspect,
+        },
+        wgpu::TexelCopyBufferInfo {
+            buffer: &buffer,
+            layout: wgpu::TexelCopyBufferLayout {
+                offset: 0,
+                bytes_per_row: Some(pitch),
+                rows_per_image: Some(h),
+            },
+        },
+        wgpu::Extent3d {
+            width: w,
+            height: h,
+            depth_or_array_layers: 1,
+        },
+    );
+    Readback {
+        buffer,
+        pitch,
+        texel,
+    }
+}
+
+/// Maps every read-back buffer and copies its rows out.
+fn read_all(gpu: &Gpu, readbacks: &[(Slot, Readback)]) -> Result<Vec<Vec<u8>>, GpuError> {
+    let (tx, rx) = std::sync::mpsc::channel();
+    for (i, (_, r)) in readbacks.iter().enumerate() {
+        let tx = tx.clone();
+        r.buffer.map_async(wgpu::MapMode::Read, .., move |res| {
+            let _ = tx.send((i, res));
+        });
+    }
+    gpu.device
+        .poll(wgpu::PollType::wait_indefinitely())
+        .map_err(|e| GpuError::Failed(e.to_string()))?;
+    drop(tx);
+    for (i, res) in rx.iter() {
+        res.map_err(|e| GpuError::Failed(format!("reading target {i} back: {e}")))?;
+    }
+    readbacks
+        .iter()
+        .map(|(_, r)| {
+            let view = r
+                .buffer
+                .get_mapped_range(..)
+                .map_err(|e| GpuError::Failed(e.to_string()))?;
+            Ok(view.to_vec())
+        })
+        .collect()
+}
+
+/// The read-back bytes as per-pixel values in the emulator's layout.
+fn assemble(
+    w: u32,
+    h: u32,
+    iface: &translate::Interface,
+    targets: TargetKind,
+    readbacks: &[(Slot, Readback)],
+    data: Vec<Vec<u8>>,
+) -> GpuOutput {
+    let n = w as usize * h as usize;
+    let mut out = GpuOutput {
+        width: w,
+        height: h,
+        color: vec![None; 4],
+        depth: None,
+        killed: vec![false; n],
+    };
+    let texels = |r: &Readback, bytes: &[u8]| -> Vec<Vec<u8>> {
+        let mut v = Vec::with_capacity(n);
+        for y in 0..h as usize {
+            for x in 0..w as usize {
+                let at = y * r.pitch as usize + x * r.texel as usize;
+                v.push(bytes[at..at + r.texel as usize].to_vec());
+            }
+        }
+        v
+    };
+    for ((slot, r), bytes) in readbacks.iter().zip(&data) {
+        let px = texels(r, bytes);
+        match *slot {
+            Slot::Color(k) if k < 4 => {
+                out.color[k] = Some(px.iter().map(|b| targets.decode(b)).collect());
+            }
+            Slot::Color(_) => {
+                out.killed = px.iter().map(|b| b.iter().any(|&x| x != 0)).collect();
+            }
+            Slot::Depth => {
+                out.depth = Some(
+                    px.iter()
+                        .map(|b| f32::from_le_bytes([b[0], b[1], b[2], b[3]]))
+                        .collect(),
+                );
+            }
+        }
+    }
+    if iface.kills {
+        for (i, &k) in out.killed.clone().iter().enumerate() {
+            if k {
+                for c in out.color.iter_mut().flatten() {
+                    c[i] = [0.0; 4];
+                }
+                if let Some(d) = &mut out.depth {
+                    d[i] = 0.0;
+                }
+            }
+        }
+    }
+    out
+}
+
+/// The bind group: constants, textures with their samplers, inputs.
+struct Bindings {
+    layout: wgpu::BindGroupLayout,
+    group: wgpu::BindGroup,
+}
+
+impl Bindings {
+    fn new(gpu: &Gpu, draw: &Draw, iface: &translate::Interface) -> Result<Bindings, GpuError> {
+        let device = &gpu.device;
+        let filterable = gpu.float32_filterable();
+        let mut block = constant_block(draw);
+        let mut layout_entries = vec![entry(
+            interface::CONSTANTS_BINDING,
+            wgpu::BindingType::Buffer {
+                ty: wgpu::BufferBindingType::Uniform,
+                has_dynamic_offset: false,
+                min_binding_size: None,
+            },
+        )];
+        let mut views = Vec::new();
+        let mut samplers = Vec::new();
+        for s in &iface.samplers {
+            let (view, sampler) = bind_sampler(gpu, draw, s.register, &mut block)?;
+            views.push((s.texture_binding, view));
+            samplers.push((s.sampler_binding, sampler));
+            layout_entries.push(entry(s.texture_binding, texture_type(filterable, false)));
+            layout_entries.push(entry(
+                s.sampler_binding,
+                wgpu::BindingType::Sampler(if filterable {
+                    wgpu::SamplerBindingType::Filtering
+                } else {
+                    wgpu::SamplerBindingType::NonFiltering
+                }),
+            ));
+        }
+        let inputs = (!iface.inputs.is_empty()).then(|| input_texture(gpu, draw, iface));
+        if inputs.is_some() {
+            let ty = texture_type(false, true);
+            layout_entries.push(entry(interface::DRAW_INPUTS_BINDING, ty));
+        }
+        let buffer = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("ps30 constants"),
+            size: block.len() as u64,
+            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        gpu.queue.write_buffer(&buffer, 0, &block);
+        let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: None,
+            entries: &layout_entries,
+        });
+        let input_view = inputs.as_ref().map(|t| {
+            t.create_view(&wgpu::TextureViewDescriptor {
+                dimension: Some(wgpu::TextureViewDimension::D2Array),
+                ..Default::default()
+            })
+        });
+        let mut entries = vec![wgpu::BindGroupEntry {
+            binding: interface::CONSTANTS_BINDING,
+            resource: buffer.as_entire_binding(),
+        }];
+        for (b, v) in &views {
+            let resource = wgpu::BindingResource::TextureView(v);
+            entries.push(wgpu::BindGroupEntry {
+                binding: *b,
+                resource,
+            });
+        }
+        for (b, s) in &samplers {
+            let resource = wgpu::BindingResource::Sampler(s);
+            entries.push(wgpu::BindGroupEntry {
+                binding: *b,
+                resource,
+            });
+        }
+        if let Some(v) = &input_view {
+            entries.push(wgpu::BindGroupEntry {
+                binding: interface::DRAW_INPUTS_BINDING,
+                resource: wgpu::BindingResource::TextureView(v),
+            });
+        }
+        let group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: None,
+            layout: &layout,
+            entries: &entries,
+        });
+        Ok(Bindings { layout, group })
+    }
+}
+
+/// A binding the fragment stage sees.
+fn entry(binding: u32, ty: wgpu::BindingType) -> wgpu::BindGroupLayoutEntry {
+    wgpu::BindGroupLayoutEntry {
+        binding,
+        visibility: wgpu::ShaderStages::FRAGMENT,
+        ty,
+        count: None,
+    }
+}
+
+/// A float texture binding: 2D, or a 2D array (the draw's inputs).
+fn texture_type(filterable: bool, array: bool) -> wgpu::BindingType {
+    wgpu::BindingType::Texture {
+        sample_type: wgpu::TextureSampleType::Float { filterable },
+        view_dimension: if array {
+            wgpu::TextureViewDimension::D2Array
+        } else {
+            wgpu::TextureViewDimension::D2
+        },
+        multisampled: false,
+    }
+}
+
+/// The uniform block with the draw's `c#`, `i#` and `b#` at the offsets of
+/// [`interface`] (the sampler records are filled by [`bind_sampler`]).
+fn constant_block(draw: &Draw) -> Vec<u8> {
+    let mut block = vec![0u8; interface::CONSTANTS_SIZE as usize];
+    let mut put = |offset: usize, words: [u32; 4]| {
+        for (i, w) in words.iter().enumerate() {
+            block[offset + 4 * i..offset + 4 * i + 4].copy_from_slice(&w.to_le_bytes());
+        }
+    };
+    for (i, v) in draw.constants.float.iter().enumerate() {
+        put(
+            interface::FLOATS_OFFSET as usize + 16 * i,
+            v.map(f32::to_bits),
+        );
+    }
+    for (i, v) in draw.constants.int.iter().enumerate() {
+        put(
+            interface::INTS_OFFSET as usize + 16 * i,
+            v.map(|x| x as u32),
+        );
+    }
+    for (i, &b) in draw.constants.bool.iter().enumerate() {
+        put(
+            interface::BOOLS_OFFSET as usize + 16 * i,
+            [b as u32, 0, 0, 0],
+        );
+    }
+    block
+}
+
+/// Sampler `register`: its texture uploaded, its D3D9 state mapped to a
+/// wgpu sampler and view, and what the shader applies itself written into
+/// `block`'s record for it.
+fn bind_sampler(
+    gpu: &Gpu,
+    draw: &Draw,
+    register: u32,
+    block: &mut [u8],
+) -> Result<(wgpu::TextureView, wgpu::Sampler), GpuError> {
+    let bound = draw.samplers.iter().find(|b| b.0 == register);
+    let (levels, state) = match bound {
+        Some((_, tex, state)) => (tex.views(), *state),
+        // An unbound sampler reads (0, 0, 0, 1) (MS texldl---ps): a
+        // 1×1 texture of that value, clamped.
+        None => (
+            Vec::new(),
+            emu::SamplerState {
+                address_u: emu::Address::Clamp,
+                address_v: emu::Address::Clamp,
+                ..Default::default()
+            },
+        ),
+    };
+    let count = levels.len().max(1) as u32;
+    let mapped = sampler::map(&state, count, register, gpu.clamp_to_border())?;
+    if mapped.filtering && !gpu.float32_filterable() {
+        return Err(GpuError::Unsupported(format!(
+            "s{register} filters linearly and the device cannot filter 32-bit float textures (FLOAT32_FILTERABLE)"
+        )));
+    }
+    block[interface::SAMPLERS_OFFSET as usize + 64 * register as usize..][..64]
+        .copy_from_slice(&mapped.block);
+    let texture = upload(gpu, &levels, register)?;
+    let view = texture.create_view(&wgpu::TextureViewDescriptor {
+        base_mip_level: mapped.base_level,
+        mip_level_count: Some(mapped.level_count),
+        ..Default::default()
+    });
+    Ok((view, gpu.device.create_sampler(&mapped.descriptor)))
+}
+
+/// An `Rgba32Float` texture with `levels` (none: the 1×1 unbound value).
+fn upload(gpu: &Gpu, levels: &[emu::Texture], sampler: u32) -> Result<wgpu::Texture, GpuError> {
+    let unbound = [[0.0f32, 0.0, 0.0, 1.0]];
+    let fallback = [emu::Texture {
+        width: 1,
+        height: 1,
+        texels: &unbound,
+    }];
+    let levels = if levels.is_empty() {
+        &fallback[..]
+    } else {
+        levels
+    };
+    let (w, h) = (levels[0].width, levels[0].height);
+    let max = gpu.limits.max_texture_dimension_2d;
+    if w > max || h > max {
+        return Err(GpuError::Unsupported(format!(
+            "s{sampler}: a {w}×{h} texture; the device's textures are at most {max} texels a side"
+        )));
+    }
+    for (i, l) in levels.iter().enumerate() {
+        let want = ((w >> i).max(1), (h >> i).max(1));
+        if (l.width, l.height) != want {
+            return Err(GpuError::Unsupported(format!(
+                "s{sampler}: mip level {i} is {}×{}, where Vulkan needs {}×{}",
+                l.width, l.height, want.0, want.1
+            )));
+        }
+    }
+    let texture = gpu.device.create_texture(&wgpu::TextureDescriptor {
+        label: None,
+        size: wgpu::Extent3d {
+            width: w,
+            height: h,
+            depth_or_array_layers: 1,
+        },
+        mip_level_count: levels.len() as u32,
+        sample_count: 1,
+        dimension: wgpu::TextureDimension::D2,
+        format: wgpu::TextureFormat::Rgba32Float,
+        usage: wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
+        view_formats: &[],
+    });
+    for (i, l) in levels.iter().enumerate() {
+        write_texels(gpu, &texture, i as u32, 0, l.width, l.height, l.texels);
+    }
+    Ok(texture)
+}
+
+fn write_texels(
+    gpu: &Gpu,
+    texture: &wgpu::Texture,
+    level: u32,
+    layer: u32,
+    w: u32,
+    h: u32,
+    texels: &[[f32; 4]],
+) {
+    let bytes: Vec<u8> = texels
+        .iter()
+        .flat_map(|t| t.iter().flat_map(|c| c.to_le_bytes()))
+        .collect();
+    gpu.queue.write_texture(
+        wgpu::TexelCopyTextureInfo {
+            texture,
+            mip_level: level,
+            origin: wgpu::Origin3d {
+                x: 0,
+                y: 0,
+                z: layer,
+            },
+            aspect: wgpu::TextureAspect::All,
+        },
+        &bytes,
+        wgpu::TexelCopyBufferLayout {
+            offset: 0,
+            bytes_per_row: Some(16 * w),
+            rows_per_image: Some(h),
+        },
+        wgpu::Extent3d {
+            width: w,
+            height: h,
+            depth_or_array_layers: 1,
+        },
+    );
+}
+
+/// The inputs, evaluated per pixel with the emulator's formula, one layer
+/// per declared `v#` in register order.
+fn input_texture(gpu: &Gpu, draw: &Draw, iface: &translate::Interface) -> wgpu::Texture {
+    let (w, h) = (draw.target_width, draw.target_height);
+    let texture = gpu.device.create_texture(&wgpu::TextureDescriptor {
+        label: Some("ps30 inputs"),
+        size: wgpu::Extent3d {
+            width: w,
+            height: h,
+            depth_or_array_layers: iface.inputs.len() as u32,
+        },
+        mip_level_count: 1,
+        sample_count: 1,
+        dimension: wgpu::TextureDimension::D2,
+        format: wgpu::TextureFormat::Rgba32Float,
+        usage: wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
+        view_formats: &[],
+    });
+    for (layer, input) in iface.inputs.iter().enumerate() {
+        let value = draw
+            .inputs
+            .iter()
+            .find(|(v, _)| *v == input.register)
+            .map(|(_, value)| *value)
+            .unwrap_or_default();
+        let mut texels = Vec::with_capacity(w as usize * h as usize);
+        for y in 0..h {
+            for x in 0..w {
+                texels.push(value.at(x as f32, y as f32));
+            }
+        }
+        write_texels(gpu, &texture, 0, layer as u32, w, h, &texels);
+    }
+    texture
+}

@@ -1,0 +1,184 @@
+//! The GPU backend: the emulator's draw, run on a real device through
+//! wgpu's Vulkan backend — a second witness for every result ps30 prints.
+//!
+//! [`run`] takes exactly what [`emu::run`](crate::core::emu::run) takes — a
+//! validated shader and an [`emu::Draw`] — and returns the same per-pixel
+//! colour data ([`GpuOutput`], laid out like
+//! [`emu::DrawOutput`](crate::core::emu::DrawOutput)'s colours). The
+//! shader is the translation (`core/translate`, its `Entry::Draw` entry
+//! point) under the draw's float rules; the draw is the emulator's:
+//!
+//! * **pixel centres**: the target is covered by one triangle; WebGPU's
+//!   pixel (x, y) has its centre at (x + ½, y + ½), and the entry point
+//!   subtracts ½ so `vPos` is (x, y) as in Direct3D 9;
+//! * **inputs**: each `v#` is evaluated on the CPU at every pixel with the
+//!   emulator's own formula ([`LinearInput::at`](crate::core::emu::LinearInput::at))
+//!   and read by the shader from a texture array, so the GPU starts from
+//!   bit-identical inputs and any difference comes from the shader's
+//!   instructions, not from interpolation hardware;
+//! * **targets**: one per written `oC#`, in the format asked for
+//!   ([`TargetKind`]): the wgpu format that stores what the D3D9 one does
+//!   (`R32Float` for D3DFMT_R32F, `Rgba16Float` for D3DFMT_A16B16G16R16F,
+//!   `Rg16Float`, `R16Float`, `Rg32Float`, `Rgba32Float`, and `Rgba8Unorm`
+//!   for D3DFMT_A8R8G8B8) — the device rounds what it stores — or
+//!   `Rgba32Float`, the emulator's unrounded output;
+//! * **samplers**: `sampler.rs` maps each D3D9 state to a wgpu sampler and
+//!   texture view plus the `Ps30Sampler` values the shader applies itself;
+//! * **texkill**: the pixel keeps running and its flag is read back, so a
+//!   killed pixel is reported as the emulator reports it (colours zero).
+//!
+//! Without a Vulkan adapter, [`Gpu::open`] fails with [`GpuError::NoAdapter`],
+//! whose message says how to get one; the build itself needs no Vulkan
+//! (the loader is opened at run time).
+
+mod draw;
+mod sampler;
+
+pub use draw::{run, GpuOutput, TargetKind};
+
+use crate::core::emu::EmuError;
+use crate::core::translate::TranslateError;
+use std::fmt;
+
+/// What the device is, for reports.
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub struct DeviceInfo {
+    pub name: String,
+    /// `Vulkan`.
+    pub backend: String,
+    /// `Cpu`, `DiscreteGpu`, …
+    pub device_type: String,
+    pub driver: String,
+    pub driver_info: String,
+    pub vendor: u32,
+    pub device: u32,
+}
+
+impl DeviceInfo {
+    /// One line: `llvmpipe (LLVM 15.0.6, 256 bits), Vulkan, Cpu, driver llvmpipe (Mesa 22.3.6 (LLVM 15.0.6))`.
+    pub fn line(&self) -> String {
+        format!(
+            "{}, {}, {}, driver {} ({})",
+            self.name, self.backend, self.device_type, self.driver, self.driver_info
+        )
+    }
+}
+
+/// An open device.
+pub struct Gpu {
+    pub(crate) device: wgpu::Device,
+    /// An error wgpu reported outside the error scopes of a draw (wgpu's
+    /// default would panic); `run` returns it as [`GpuError::Failed`].
+    pub(crate) uncaptured: std::sync::Arc<std::sync::Mutex<Option<String>>>,
+    pub(crate) queue: wgpu::Queue,
+    pub(crate) features: wgpu::Features,
+    pub(crate) limits: wgpu::Limits,
+    info: DeviceInfo,
+}
+
+/// Why the GPU backend could not run a draw.
+#[derive(Debug)]
+pub enum GpuError {
+    /// No Vulkan adapter: the message says how to get one.
+    NoAdapter(String),
+    /// The adapter would not give a device.
+    Device(String),
+    /// The draw is not one the emulator would run either.
+    Draw(EmuError),
+    /// The shader did not translate.
+    Translate(TranslateError),
+    /// The device cannot do what the draw asks (a feature or a limit).
+    Unsupported(String),
+    /// wgpu reported an error while drawing or reading back.
+    Failed(String),
+}
+
+impl fmt::Display for GpuError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            GpuError::NoAdapter(why) => write!(
+                f,
+                "no GPU adapter: wgpu found no Vulkan device ({why}). Install a Vulkan driver — on Debian or Ubuntu, \
+                 `apt-get install mesa-vulkan-drivers` gives llvmpipe, a CPU Vulkan device — or leave out --backend gpu"
+            ),
+            GpuError::Device(e) => write!(f, "the GPU adapter gave no device: {e}"),
+            GpuError::Draw(e) => write!(f, "{e}"),
+            GpuError::Translate(e) => write!(f, "{e}"),
+            GpuError::Unsupported(e) => write!(f, "the GPU cannot draw this: {e}"),
+            GpuError::Failed(e) => write!(f, "GPU: {e}"),
+        }
+    }
+}
+
+impl std::error::Error for GpuError {}
+
+/// Features used when the adapter has them: BORDER addressing with a
+/// colour, and linear filtering of 32-bit float textures (both exist on
+/// llvmpipe and on current desktop GPUs).
+const WANTED: wgpu::Features =
+    wgpu::Features::ADDRESS_MODE_CLAMP_TO_BORDER.union(wgpu::Features::FLOAT32_FILTERABLE);
+
+impl Gpu {
+    /// Opens the first Vulkan adapter (a real GPU is preferred to a CPU one).
+    pub fn open() -> Result<Gpu, GpuError> {
+        let instance = wgpu::Instance::new(wgpu::InstanceDescriptor {
+            backends: wgpu::Backends::VULKAN,
+            flags: wgpu::InstanceFlags::empty(),
+            ..wgpu::InstanceDescriptor::new_without_display_handle()
+        });
+        let adapter = pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions {
+            power_preference: wgpu::PowerPreference::HighPerformance,
+            force_fallback_adapter: false,
+            ..Default::default()
+        }))
+        .map_err(|e| GpuError::NoAdapter(e.to_string()))?;
+        let features = adapter.features() & WANTED;
+        let limits = adapter.limits();
+        let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
+            label: Some("ps30"),
+            required_features: features,
+            required_limits: limits.clone(),
+            ..Default::default()
+        }))
+        .map_err(|e| GpuError::Device(e.to_string()))?;
+        let uncaptured = std::sync::Arc::new(std::sync::Mutex::new(None));
+        let sink = uncaptured.clone();
+        device.on_uncaptured_error(std::sync::Arc::new(move |e: wgpu::Error| {
+            if let Ok(mut slot) = sink.lock() {
+                slot.get_or_insert_with(|| e.to_string());
+            }
+        }));
+        let a = adapter.get_info();
+        Ok(Gpu {
+            device,
+            uncaptured,
+            queue,
+            features,
+            limits,
+            info: DeviceInfo {
+                name: a.name,
+                backend: format!("{:?}", a.backend),
+                device_type: format!("{:?}", a.device_type),
+                driver: a.driver,
+                driver_info: a.driver_info,
+                vendor: a.vendor,
+                device: a.device,
+            },
+        })
+    }
+
+    pub fn info(&self) -> &DeviceInfo {
+        &self.info
+    }
+
+    /// Whether 32-bit float textures can be filtered linearly.
+    pub fn float32_filterable(&self) -> bool {
+        self.features.contains(wgpu::Features::FLOAT32_FILTERABLE)
+    }
+
+    /// Whether BORDER addressing is available.
+    pub fn clamp_to_border(&self) -> bool {
+        self.features
+            .contains(wgpu::Features::ADDRESS_MODE_CLAMP_TO_BORDER)
+    }
+}

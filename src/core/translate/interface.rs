@@ -1,0 +1,200 @@
+//! The binding layout of a translated shader: what an application (or the
+//! GPU backend) binds where. One description, read by the lowering that
+//! builds the module, by the header that tells a reader, and by
+//! `core/gpu`, which fills the buffers — so the three cannot drift apart.
+//!
+//! ```text
+//! @group(0) @binding(0)        var<uniform> ps30: Ps30Constants
+//!   c: array<vec4<f32>, 224>   byte 0      c# at 16·#       (SetPixelShaderConstantF)
+//!   i: array<vec4<i32>, 16>    byte 3584   i# at 3584 + 16·# (SetPixelShaderConstantI)
+//!   b: array<vec4<u32>, 16>    byte 3840   b# true when b[#].x ≠ 0 (SetPixelShaderConstantB)
+//!   s: array<Ps30Sampler, 16>  byte 4096   sampler state the shader applies itself, 64 bytes per s#
+//! @group(0) @binding(1 + 2·#)  s#'s texture (texture_2d, texture_cube or texture_3d of f32)
+//! @group(0) @binding(2 + 2·#)  s#'s sampler
+//! @location(#)                 v# in, oC# out; vPos = @builtin(position) − 0.5, vFace = ±1 from
+//!                              @builtin(front_facing); oDepth = @builtin(frag_depth)
+//! ```
+//!
+//! `Ps30Sampler` holds what WebGPU samplers cannot express: `lod` (x: added
+//! to the level of detail of texld/texldp/texldb — D3DSAMP_MIPMAPLODBIAS;
+//! y: added to texldl's; z: the factor texldd's gradients are scaled by,
+//! 2^bias), `border` (the border colour the shader adds where it emulates
+//! BORDER), `mirror_once` (per axis u, v, w: 1 = D3DTADDRESS_MIRRORONCE,
+//! the shader mirrors the coordinate and the sampler clamps to the edge)
+//! and `border_mode` (per axis u, v, w: 1 = BORDER emulated with this
+//! colour, the sampler set to clamp-to-border with transparent black; w:
+//! the filter it was computed for, 1 point, 2 linear). All zero means the
+//! plain sampler state does everything.
+
+use crate::core::ir::Shader;
+use crate::core::isa::{RegFile, SamplerType};
+
+/// Binding of the constant block.
+pub const CONSTANTS_BINDING: u32 = 0;
+/// Byte offsets inside the constant block.
+pub const FLOATS_OFFSET: u32 = 0;
+pub const INTS_OFFSET: u32 = 224 * 16;
+pub const BOOLS_OFFSET: u32 = INTS_OFFSET + 16 * 16;
+pub const SAMPLERS_OFFSET: u32 = BOOLS_OFFSET + 16 * 16;
+/// Bytes of one `Ps30Sampler`.
+pub const SAMPLER_STATE_SIZE: u32 = 64;
+/// Bytes of the whole constant block.
+pub const CONSTANTS_SIZE: u32 = SAMPLERS_OFFSET + 16 * SAMPLER_STATE_SIZE;
+/// Binding of the per-pixel input texture of the GPU backend's own entry
+/// point (not part of the application interface).
+pub const DRAW_INPUTS_BINDING: u32 = 40;
+/// Location of the GPU backend's texkill flag output (D3D9 has four
+/// colour outputs, so location 4 is free).
+pub const DRAW_KILLED_LOCATION: u32 = 4;
+
+/// The texture binding of `s#`.
+pub fn texture_binding(sampler: u32) -> u32 {
+    1 + 2 * sampler
+}
+
+/// The sampler binding of `s#`.
+pub fn sampler_binding(sampler: u32) -> u32 {
+    2 + 2 * sampler
+}
+
+/// A declared input register.
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub struct Input {
+    pub register: u32,
+    pub usage: String,
+    pub usage_index: u32,
+    /// Its `@location`: the register number.
+    pub location: u32,
+    pub centroid: bool,
+}
+
+/// A declared sampler.
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
+pub struct Sampler {
+    pub register: u32,
+    #[serde(serialize_with = "sampler_type_name")]
+    pub ty: SamplerType,
+    pub texture_binding: u32,
+    pub sampler_binding: u32,
+}
+
+fn sampler_type_name<S: serde::Serializer>(ty: &SamplerType, s: S) -> Result<S::Ok, S::Error> {
+    s.serialize_str(ty.suffix())
+}
+
+/// Everything an application binds, derived from the shader.
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub struct Interface {
+    pub inputs: Vec<Input>,
+    pub position: bool,
+    pub face: bool,
+    /// `oC#` the shader writes (each at `@location(#)`).
+    pub outputs: Vec<u32>,
+    pub depth: bool,
+    pub samplers: Vec<Sampler>,
+    /// `c#`, `i#`, `b#` the shader defines itself: values set by the
+    /// application are ignored for them (as in Direct3D).
+    pub float_defs: Vec<u32>,
+    pub int_defs: Vec<u32>,
+    pub bool_defs: Vec<u32>,
+    /// `c#`, `i#`, `b#` the shader reads from the application (not
+    /// defined by the shader itself).
+    pub floats_read: Vec<u32>,
+    pub ints_read: Vec<u32>,
+    pub bools_read: Vec<u32>,
+    /// Whether the shader uses `texkill` (the pixel is discarded at the end).
+    pub kills: bool,
+}
+
+impl Interface {
+    pub fn of(shader: &Shader) -> Interface {
+        let p = shader.program();
+        let mut inputs = Vec::new();
+        let (mut position, mut face) = (false, false);
+        for d in &p.inputs {
+            match d.reg.file {
+                RegFile::Input => inputs.push(Input {
+                    register: d.reg.index,
+                    usage: d.usage.clone(),
+                    usage_index: d.usage_index,
+                    location: d.reg.index,
+                    centroid: d.centroid,
+                }),
+                RegFile::Position => position = true,
+                RegFile::Face => face = true,
+                _ => {}
+            }
+        }
+        inputs.sort_by_key(|i| i.register);
+        inputs.dedup_by_key(|i| i.register);
+        let mut outputs = Vec::new();
+        let mut depth = false;
+        let mut kills = false;
+        for ins in shader.instructions() {
+            if ins.op == crate::core::isa::Opcode::TexKill {
+                kills = true;
+                continue;
+            }
+            match ins.dst.map(|d| d.reg) {
+                Some(r) if r.file == RegFile::ColorOut => outputs.push(r.index),
+                Some(r) if r.file == RegFile::DepthOut => depth = true,
+                _ => {}
+            }
+        }
+        outputs.sort_unstable();
+        outputs.dedup();
+        let mut samplers: Vec<Sampler> = p
+            .samplers
+            .iter()
+            .map(|d| Sampler {
+                register: d.index,
+                ty: d.ty,
+                texture_binding: texture_binding(d.index),
+                sampler_binding: sampler_binding(d.index),
+            })
+            .collect();
+        samplers.sort_by_key(|s| s.register);
+        samplers.dedup_by_key(|s| s.register);
+        let defs = |v: Vec<u32>| {
+            let mut v = v;
+            v.sort_unstable();
+            v.dedup();
+            v
+        };
+        let float_defs = defs(p.float_defs.iter().map(|d| d.index).collect());
+        let int_defs = defs(p.int_defs.iter().map(|d| d.index).collect());
+        let bool_defs = defs(p.bool_defs.iter().map(|d| d.index).collect());
+        let read = |file: RegFile, own: &[u32]| {
+            let mut v = Vec::new();
+            for ins in shader.instructions() {
+                for (k, s) in ins.src.iter().enumerate() {
+                    if s.reg.file != file {
+                        continue;
+                    }
+                    let rows = ins
+                        .op
+                        .matrix_shape()
+                        .filter(|_| k == 1)
+                        .map_or(1, |(n, _)| n);
+                    v.extend((s.reg.index..s.reg.index + rows).filter(|r| !own.contains(r)));
+                }
+            }
+            defs(v)
+        };
+        Interface {
+            inputs,
+            position,
+            face,
+            outputs,
+            depth,
+            samplers,
+            floats_read: read(RegFile::Const, &float_defs),
+            ints_read: read(RegFile::ConstInt, &int_defs),
+            bools_read: read(RegFile::ConstBool, &bool_defs),
+            float_defs,
+            int_defs,
+            bool_defs,
+            kills,
+        }
+    }
+}

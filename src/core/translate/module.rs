@@ -1,0 +1,616 @@
+//! The module-level parts of a translation: types, the constant block, the
+//! register variables, the shader's own `def`/`defi`/`defb` constants, and
+//! the two entry points that wrap the lowered program.
+//!
+//! D3D9's registers are global to the program — subroutines read and write
+//! the caller's `r#`, `aL` and `p0` — so every register is a private global
+//! variable, zero at the start of each invocation (the emulator zeroes them
+//! too). `v#` is one private array so that `v[aL + n]` can index it.
+
+use super::builder::{Expr, Fb};
+use super::interface::{self, Interface};
+use super::TranslateError;
+use crate::core::ir::Shader;
+use crate::core::isa::{RegFile, SamplerType};
+use naga::{
+    AddressSpace, ArraySize, Binding, BuiltIn, Constant, Expression, GlobalVariable, Handle,
+    ImageClass, ImageDimension, Interpolation, Literal, Module, ResourceBinding, Sampling, Scalar,
+    ScalarKind, Span, Statement, StructMember, Type, TypeInner, VectorSize,
+};
+use std::collections::BTreeMap;
+
+/// Type handles the lowering uses.
+pub(super) struct Types {
+    pub f32: Handle<Type>,
+    pub i32: Handle<Type>,
+    pub bool: Handle<Type>,
+    pub vec3: Handle<Type>,
+    pub vec4: Handle<Type>,
+    pub ivec4: Handle<Type>,
+    pub uvec4: Handle<Type>,
+    pub bvec4: Handle<Type>,
+}
+
+/// A sampler's texture and sampler variables.
+#[derive(Clone, Copy)]
+pub(super) struct Tex {
+    pub ty: SamplerType,
+    pub image: Handle<GlobalVariable>,
+    pub sampler: Handle<GlobalVariable>,
+}
+
+/// Everything module-level the function bodies refer to.
+pub(super) struct Ctx {
+    pub t: Types,
+    pub consts: Handle<GlobalVariable>,
+    pub temps: BTreeMap<u32, Handle<GlobalVariable>>,
+    pub inputs: Handle<GlobalVariable>,
+    pub pos: Handle<GlobalVariable>,
+    pub face: Handle<GlobalVariable>,
+    pub outputs: [Handle<GlobalVariable>; 4],
+    pub depth: Handle<GlobalVariable>,
+    pub al: Handle<GlobalVariable>,
+    pub p0: Handle<GlobalVariable>,
+    pub killed: Handle<GlobalVariable>,
+    pub textures: BTreeMap<u32, Tex>,
+    /// `ps30_border`, when a 2D or volume sampler may need it.
+    pub border: Option<Handle<naga::Function>>,
+    pub float_defs: BTreeMap<u32, Handle<Constant>>,
+    pub int_defs: BTreeMap<u32, Handle<Constant>>,
+    pub bool_defs: BTreeMap<u32, bool>,
+}
+
+fn ty(m: &mut Module, name: Option<&str>, inner: TypeInner) -> Handle<Type> {
+    m.types.insert(
+        Type {
+            name: name.map(str::to_string),
+            inner,
+        },
+        Span::UNDEFINED,
+    )
+}
+
+fn vector(m: &mut Module, size: VectorSize, scalar: Scalar) -> Handle<Type> {
+    ty(m, None, TypeInner::Vector { size, scalar })
+}
+
+fn array(m: &mut Module, base: Handle<Type>, len: u32, stride: u32) -> Handle<Type> {
+    ty(
+        m,
+        None,
+        TypeInner::Array {
+            base,
+            size: ArraySize::Constant(std::num::NonZeroU32::new(len).expect("non-zero length")),
+            stride,
+        },
+    )
+}
+
+fn member(name: &str, ty: Handle<Type>, offset: u32) -> StructMember {
+    StructMember {
+        name: Some(name.into()),
+        ty,
+        binding: None,
+        offset,
+    }
+}
+
+fn global(
+    m: &mut Module,
+    name: &str,
+    space: AddressSpace,
+    binding: Option<u32>,
+    ty: Handle<Type>,
+) -> Handle<GlobalVariable> {
+    m.global_variables.append(
+        GlobalVariable {
+            name: Some(name.into()),
+            space,
+            binding: binding.map(|b| ResourceBinding {
+                group: 0,
+                binding: b,
+            }),
+            ty,
+            init: None,
+            memory_decorations: Default::default(),
+        },
+        Span::UNDEFINED,
+    )
+}
+
+fn types(m: &mut Module) -> Types {
+    let f = Scalar::F32;
+    Types {
+        f32: ty(m, None, TypeInner::Scalar(f)),
+        i32: ty(m, None, TypeInner::Scalar(Scalar::I32)),
+        bool: ty(m, None, TypeInner::Scalar(Scalar::BOOL)),
+        vec3: vector(m, VectorSize::Tri, f),
+        vec4: vector(m, VectorSize::Quad, f),
+        ivec4: vector(m, VectorSize::Quad, Scalar::I32),
+        uvec4: vector(m, VectorSize::Quad, Scalar::U32),
+        bvec4: vector(m, VectorSize::Quad, Scalar::BOOL),
+    }
+}
+
+/// The uniform block's type (layout in [`interface`]).
+fn constant_block(m: &mut Module, t: &Types) -> Handle<Type> {
+    let sampler = ty(
+        m,
+        Some("Ps30Sampler"),
+        TypeInner::Struct {
+            members: vec![
+                member("lod", t.vec4, 0),
+                member("border", t.vec4, 16),
+                member("mirror_once", t.uvec4, 32),
+                member("border_mode", t.uvec4, 48),
+            ],
+            span: interface::SAMPLER_STATE_SIZE,
+        },
+    );
+    let c = array(m, t.vec4, 224, 16);
+    let i = array(m, t.ivec4, 16, 16);
+    let b = array(m, t.uvec4, 16, 16);
+    let s = array(m, sampler, 16, interface::SAMPLER_STATE_SIZE);
+    ty(
+        m,
+        Some("Ps30Constants"),
+        TypeInner::Struct {
+            members: vec![
+                member("c", c, interface::FLOATS_OFFSET),
+                member("i", i, interface::INTS_OFFSET),
+                member("b", b, interface::BOOLS_OFFSET),
+                member("s", s, interface::SAMPLERS_OFFSET),
+            ],
+            span: interface::CONSTANTS_SIZE,
+        },
+    )
+}
+
+/// A constant of `ty` composed of `literals` (one literal: a scalar).
+fn constant(
+    m: &mut Module,
+    name: String,
+    ty: Handle<Type>,
+    literals: &[Literal],
+) -> Handle<Constant> {
+    let parts: Vec<_> = literals
+        .iter()
+        .map(|&l| {
+            m.global_expressions
+                .append(Expression::Literal(l), Span::UNDEFINED)
+        })
+        .collect();
+    let init = if parts.len() == 1 {
+        parts[0]
+    } else {
+        m.global_expressions.append(
+            Expression::Compose {
+                ty,
+                components: parts,
+            },
+            Span::UNDEFINED,
+        )
+    };
+    m.constants.append(
+        Constant {
+            name: Some(name),
+            ty,
+            init,
+        },
+        Span::UNDEFINED,
+    )
+}
+
+impl Ctx {
+    /// Declares every type, variable and constant the program needs.
+    pub fn new(m: &mut Module, shader: &Shader) -> Result<Ctx, TranslateError> {
+        let t = types(m);
+        let block = constant_block(m, &t);
+        let consts = global(
+            m,
+            "ps30",
+            AddressSpace::Uniform,
+            Some(interface::CONSTANTS_BINDING),
+            block,
+        );
+        let p = shader.program();
+        let mut textures = BTreeMap::new();
+        for d in &p.samplers {
+            let dim = match d.ty {
+                SamplerType::Tex2d => ImageDimension::D2,
+                SamplerType::Cube => ImageDimension::Cube,
+                SamplerType::Volume => ImageDimension::D3,
+            };
+            let image_ty = ty(
+                m,
+                None,
+                TypeInner::Image {
+                    dim,
+                    arrayed: false,
+                    class: ImageClass::Sampled {
+                        kind: ScalarKind::Float,
+                        multi: false,
+                    },
+                },
+            );
+            let sampler_ty = ty(m, None, TypeInner::Sampler { comparison: false });
+            let image = global(
+                m,
+                &format!("s{}_texture", d.index),
+                AddressSpace::Handle,
+                Some(interface::texture_binding(d.index)),
+                image_ty,
+            );
+            let sampler = global(
+                m,
+                &format!("s{}_sampler", d.index),
+                AddressSpace::Handle,
+                Some(interface::sampler_binding(d.index)),
+                sampler_ty,
+            );
+            textures.insert(
+                d.index,
+                Tex {
+                    ty: d.ty,
+                    image,
+                    sampler,
+                },
+            );
+        }
+        let mut temps = BTreeMap::new();
+        let mut used = std::collections::BTreeSet::new();
+        for ins in shader.instructions() {
+            let regs = ins
+                .dst
+                .iter()
+                .map(|d| (d.reg, 1))
+                .chain(ins.src.iter().enumerate().map(|(k, s)| {
+                    let rows = ins.op.matrix_shape().filter(|_| k == 1);
+                    (s.reg, rows.map_or(1, |(n, _)| n))
+                }));
+            for (reg, rows) in regs {
+                if reg.file == RegFile::Temp {
+                    used.extend(reg.index..reg.index + rows);
+                }
+            }
+        }
+        for r in used {
+            let g = global(m, &format!("r{r}"), AddressSpace::Private, None, t.vec4);
+            temps.insert(r, g);
+        }
+        let input_array = array(m, t.vec4, 10, 16);
+        let inputs = global(m, "v", AddressSpace::Private, None, input_array);
+        let pos = global(m, "vPos", AddressSpace::Private, None, t.vec4);
+        let face = global(m, "vFace", AddressSpace::Private, None, t.vec4);
+        let outputs = std::array::from_fn(|k| {
+            global(m, &format!("oC{k}"), AddressSpace::Private, None, t.vec4)
+        });
+        let depth = global(m, "oDepth", AddressSpace::Private, None, t.vec4);
+        let al = global(m, "aL", AddressSpace::Private, None, t.i32);
+        let p0 = global(m, "p0", AddressSpace::Private, None, t.bvec4);
+        let killed = global(m, "killed", AddressSpace::Private, None, t.bool);
+
+        let mut float_defs = BTreeMap::new();
+        for d in &p.float_defs {
+            if let Some(bad) = d.value.iter().find(|v| !v.is_finite()) {
+                return Err(TranslateError::NonFinite {
+                    what: format!("def c{}", d.index),
+                    value: *bad,
+                });
+            }
+            let lits = d.value.map(Literal::F32);
+            let c = constant(m, format!("c{}", d.index), t.vec4, &lits);
+            float_defs.insert(d.index, c);
+        }
+        let mut int_defs = BTreeMap::new();
+        for d in &p.int_defs {
+            let lits = d.value.map(Literal::I32);
+            let c = constant(m, format!("i{}", d.index), t.ivec4, &lits);
+            int_defs.insert(d.index, c);
+        }
+        let bool_defs = p.bool_defs.iter().map(|d| (d.index, d.value)).collect();
+        Ok(Ctx {
+            t,
+            consts,
+            temps,
+            inputs,
+            pos,
+            face,
+            outputs,
+            depth,
+            al,
+            p0,
+            killed,
+            textures,
+            // Added by `core::translate` with `texture::add_border_function`.
+            border: None,
+            float_defs,
+            int_defs,
+            bool_defs,
+        })
+    }
+
+    /// A pointer to a global variable.
+    pub fn var(&self, fb: &mut Fb, g: Handle<GlobalVariable>) -> Expr {
+        fb.add(Expression::GlobalVariable(g))
+    }
+
+    /// A pointer to member `member` of the constant block.
+    pub fn block(&self, fb: &mut Fb, member: u32) -> Expr {
+        let base = self.var(fb, self.consts);
+        fb.index(base, member)
+    }
+}
+
+/// Which entry point wraps the lowered program.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Entry {
+    /// `main`: inputs from the vertex stage by `@location`, as an
+    /// application binds the shader; texkill discards the pixel.
+    Application,
+    /// `ps30_draw`: inputs from a per-pixel texture array (one layer per
+    /// declared `v#`, in register order), the texkill flag written to
+    /// `@location(4)` instead of discarding — how `core/gpu` draws, so that
+    /// inputs are bit-identical to the emulator's and killed pixels are
+    /// reported as the emulator reports them.
+    Draw,
+}
+
+/// An output's location (no interpolation: it leaves the pipeline).
+fn output(location: u32) -> Binding {
+    Binding::Location {
+        location,
+        interpolation: None,
+        sampling: None,
+        blend_src: None,
+        per_primitive: false,
+    }
+}
+
+fn location(location: u32, centroid: bool, interpolate: bool) -> Binding {
+    Binding::Location {
+        location,
+        interpolation: Some(if interpolate {
+            Interpolation::Perspective
+        } else {
+            Interpolation::Flat
+        }),
+        sampling: Some(if centroid {
+            Sampling::Centroid
+        } else {
+            Sampling::Center
+        }),
+        blend_src: None,
+        per_primitive: false,
+    }
+}
+
+/// Adds the entry point: copies the stage's inputs into the register
+/// variables, calls `ps_main`, and returns the outputs.
+pub(super) fn entry_point(
+    m: &mut Module,
+    cx: &Ctx,
+    iface: &Interface,
+    main: Handle<naga::Function>,
+    entry: Entry,
+) {
+    let t = &cx.t;
+    let mut fb = Fb::new(match entry {
+        Entry::Application => "main",
+        Entry::Draw => "ps30_draw",
+    });
+    let pos_ty = t.vec4;
+    let mut args = vec![
+        (
+            "position",
+            pos_ty,
+            Binding::BuiltIn(BuiltIn::Position { invariant: false }),
+        ),
+        (
+            "front_facing",
+            t.bool,
+            Binding::BuiltIn(BuiltIn::FrontFacing),
+        ),
+    ];
+    if entry == Entry::Application {
+        for i in &iface.inputs {
+            args.push(("v", t.vec4, location(i.location, i.centroid, true)));
+        }
+    }
+    for (k, (name, ty, binding)) in args.iter().enumerate() {
+        let name = if *name == "v" {
+            format!("v{}", iface.inputs[k - 2].register)
+        } else {
+            name.to_string()
+        };
+        fb.f.arguments.push(naga::FunctionArgument {
+            name: Some(name),
+            ty: *ty,
+            binding: Some(binding.clone()),
+        });
+    }
+    let position = fb.add(Expression::FunctionArgument(0));
+    let front = fb.add(Expression::FunctionArgument(1));
+    // vPos: D3D9 pixel centres are integers (facts sheet §2), WebGPU's are
+    // at +0.5.
+    let half = fb.f32(0.5);
+    let half2 = fb.splat(half, VectorSize::Bi);
+    let xy = fb.add(Expression::Swizzle {
+        size: VectorSize::Bi,
+        vector: position,
+        pattern: [
+            naga::SwizzleComponent::X,
+            naga::SwizzleComponent::Y,
+            naga::SwizzleComponent::X,
+            naga::SwizzleComponent::X,
+        ],
+    });
+    let centre = fb.binary(naga::BinaryOperator::Subtract, xy, half2);
+    let zero = fb.f32(0.0);
+    let (cx0, cy0) = (fb.index(centre, 0), fb.index(centre, 1));
+    let vpos = fb.add(Expression::Compose {
+        ty: t.vec4,
+        components: vec![cx0, cy0, zero, zero],
+    });
+    let p = cx.var(&mut fb, cx.pos);
+    fb.store(p, vpos);
+    let (one, minus) = (fb.f32(1.0), fb.f32(-1.0));
+    let sign = fb.select(front, one, minus);
+    let vface = fb.splat(sign, VectorSize::Quad);
+    let p = cx.var(&mut fb, cx.face);
+    fb.store(p, vface);
+
+    match entry {
+        Entry::Application => {
+            for (k, i) in iface.inputs.iter().enumerate() {
+                let value = fb.add(Expression::FunctionArgument(2 + k as u32));
+                let v = cx.var(&mut fb, cx.inputs);
+                let slot = fb.index(v, i.register);
+                fb.store(slot, value);
+            }
+        }
+        Entry::Draw => draw_inputs(m, cx, iface, &mut fb, centre),
+    }
+
+    fb.push(Statement::Call {
+        function: main,
+        arguments: Vec::new(),
+        result: None,
+    });
+
+    let result = outputs(m, cx, iface, &mut fb, entry);
+    fb.f.result = result.map(|ty| naga::FunctionResult { ty, binding: None });
+    let function = fb.finish();
+    m.entry_points.push(naga::EntryPoint {
+        name: function.name.clone().unwrap_or_default(),
+        stage: naga::ShaderStage::Fragment,
+        early_depth_test: None,
+        workgroup_size: [0; 3],
+        workgroup_size_overrides: None,
+        function,
+        mesh_info: None,
+        task_payload: None,
+        incoming_ray_payload: None,
+    });
+}
+
+/// `Entry::Draw`'s inputs: `v#` = layer k of the input texture at this
+/// pixel, k counting declared inputs in register order.
+fn draw_inputs(m: &mut Module, cx: &Ctx, iface: &Interface, fb: &mut Fb, centre: Expr) {
+    if iface.inputs.is_empty() {
+        return;
+    }
+    let image_ty = ty(
+        m,
+        None,
+        TypeInner::Image {
+            dim: ImageDimension::D2,
+            arrayed: true,
+            class: ImageClass::Sampled {
+                kind: ScalarKind::Float,
+                multi: false,
+            },
+        },
+    );
+    let texture = global(
+        m,
+        "ps30_inputs",
+        AddressSpace::Handle,
+        Some(interface::DRAW_INPUTS_BINDING),
+        image_ty,
+    );
+    let pixel = fb.add(Expression::As {
+        expr: centre,
+        kind: ScalarKind::Sint,
+        convert: Some(4),
+    });
+    let level = fb.i32(0);
+    for (k, i) in iface.inputs.iter().enumerate() {
+        let image = fb.add(Expression::GlobalVariable(texture));
+        let layer = fb.i32(k as i32);
+        let value = fb.add(Expression::ImageLoad {
+            image,
+            coordinate: pixel,
+            array_index: Some(layer),
+            sample: None,
+            level: Some(level),
+        });
+        let v = cx.var(fb, cx.inputs);
+        let slot = fb.index(v, i.register);
+        fb.store(slot, value);
+    }
+}
+
+/// The entry point's result: a struct of the written outputs (and the
+/// texkill flag or discard). Returns its type, if any output exists.
+fn outputs(
+    m: &mut Module,
+    cx: &Ctx,
+    iface: &Interface,
+    fb: &mut Fb,
+    entry: Entry,
+) -> Option<Handle<Type>> {
+    let t = &cx.t;
+    let mut members = Vec::new();
+    let mut values = Vec::new();
+    let mut offset = 0;
+    for &k in &iface.outputs {
+        members.push(StructMember {
+            name: Some(format!("oC{k}")),
+            ty: t.vec4,
+            binding: Some(output(k)),
+            offset,
+        });
+        offset += 16;
+        let p = cx.var(fb, cx.outputs[k as usize]);
+        values.push(fb.load(p));
+    }
+    if iface.depth {
+        members.push(StructMember {
+            name: Some("oDepth".into()),
+            ty: t.f32,
+            binding: Some(Binding::BuiltIn(BuiltIn::FragDepth)),
+            offset,
+        });
+        offset += 4;
+        let p = cx.var(fb, cx.depth);
+        let d = fb.load(p);
+        values.push(fb.index(d, 0));
+    }
+    if iface.kills {
+        let p = cx.var(fb, cx.killed);
+        let killed = fb.load(p);
+        match entry {
+            Entry::Application => fb.if_then(killed, |fb| fb.push(Statement::Kill)),
+            Entry::Draw => {
+                let u32_ty = ty(m, None, TypeInner::Scalar(Scalar::U32));
+                members.push(StructMember {
+                    name: Some("killed".into()),
+                    ty: u32_ty,
+                    binding: Some(output(interface::DRAW_KILLED_LOCATION)),
+                    offset,
+                });
+                offset += 4;
+                let (yes, no) = (fb.u32(1), fb.u32(0));
+                values.push(fb.select(killed, yes, no));
+            }
+        }
+    }
+    if members.is_empty() {
+        return None;
+    }
+    let out_ty = ty(
+        m,
+        Some("Ps30Out"),
+        TypeInner::Struct {
+            members,
+            span: offset.max(16).next_multiple_of(16),
+        },
+    );
+    let value = fb.add(Expression::Compose {
+        ty: out_ty,
+        components: values,
+    });
+    fb.push(Statement::Return { value: Some(value) });
+    Some(out_ty)
+}

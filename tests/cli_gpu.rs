@@ -1,0 +1,170 @@
+//! The GPU commands from the outside: `translate`, `compare`, and
+//! `--backend gpu` with and without a Vulkan adapter (exit codes, messages).
+
+#[path = "common/bin.rs"]
+mod bin;
+#[path = "common/gpu.rs"]
+mod gpu_device;
+
+use bin::{ps30, repo};
+use std::process::Command;
+
+#[test]
+fn translate_prints_wgsl_that_parses_back() {
+    let out = ps30(
+        &[
+            "translate",
+            "asm/corrected/lum_pass1_unrolled.psh",
+            "--to",
+            "wgsl",
+        ],
+        repo(),
+    );
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let wgsl = String::from_utf8(out.stdout).unwrap();
+    assert!(wgsl.starts_with("// asm/corrected/lum_pass1_unrolled.psh: Direct3D 9 ps_3_0"));
+    let module = naga::front::wgsl::parse_str(&wgsl).unwrap();
+    assert_eq!(module.entry_points.len(), 1);
+}
+
+#[test]
+fn translate_writes_every_target_to_a_file() {
+    let dir = tempfile::tempdir().unwrap();
+    for (to, file) in [
+        ("wgsl", "a.wgsl"),
+        ("spirv", "a.spv"),
+        ("glsl", "a.frag"),
+        ("hlsl", "a.hlsl"),
+        ("msl", "a.metal"),
+    ] {
+        let path = dir.path().join(file);
+        let out = ps30(
+            &[
+                "translate",
+                "tonemap:reinhard",
+                "--to",
+                to,
+                "-o",
+                path.to_str().unwrap(),
+                "-q",
+            ],
+            repo(),
+        );
+        assert_eq!(
+            out.status.code(),
+            Some(0),
+            "{to}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        assert!(out.stdout.is_empty());
+        let bytes = std::fs::read(&path).unwrap();
+        if to == "spirv" {
+            assert_eq!(&bytes[..4], &[0x03, 0x02, 0x23, 0x07]);
+        } else {
+            assert!(String::from_utf8(bytes)
+                .unwrap()
+                .contains("asm/tonemap/reinhard.psh"));
+        }
+    }
+}
+
+#[test]
+fn translate_refuses_bad_input_with_exit_2() {
+    let out = ps30(&["translate", "no/such.psh", "--to", "wgsl"], repo());
+    assert_eq!(out.status.code(), Some(2));
+    let out = ps30(
+        &[
+            "translate",
+            "corrected:loop",
+            "--to",
+            "wgsl",
+            "-o",
+            "no/dir/x.wgsl",
+        ],
+        repo(),
+    );
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("does not exist"));
+    let out = ps30(&["compare"], repo());
+    assert_eq!(out.status.code(), Some(2));
+}
+
+/// Without a Vulkan driver (none is found when the loader is pointed at
+/// nothing) the GPU commands say how to get one and exit with 2.
+#[test]
+fn without_an_adapter_the_gpu_commands_say_how_to_get_one() {
+    let reports = tempfile::tempdir().unwrap();
+    let reports = reports.path().to_str().unwrap();
+    for args in [
+        &["luminance", "assets/hdr/forest.hdr", "--backend", "gpu"][..],
+        &["compare", "--all", "--reports", reports][..],
+    ] {
+        let out = Command::new(env!("CARGO_BIN_EXE_ps30"))
+            .args(args)
+            .current_dir(repo())
+            .env("VK_ICD_FILENAMES", "/nonexistent/icd.json")
+            .env("VK_DRIVER_FILES", "/nonexistent/icd.json")
+            .output()
+            .unwrap();
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
+        assert!(
+            err.contains("no GPU adapter") && err.contains("mesa-vulkan-drivers"),
+            "{err}"
+        );
+    }
+}
+
+#[test]
+fn compare_on_the_luminance_pipeline_names_the_device() {
+    if gpu_device::gpu("compare_on_the_luminance_pipeline_names_the_device").is_none() {
+        return;
+    }
+    let out = ps30(
+        &[
+            "compare",
+            "--luminance",
+            "--image",
+            "assets/hdr/forest.hdr",
+            "--json",
+        ],
+        repo(),
+    );
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert!(v["device"]["name"].as_str().is_some_and(|n| !n.is_empty()));
+    assert_eq!(v["comparison"]["gpu_agrees"], true);
+    assert_eq!(v["comparison"]["emulator_agrees"], true);
+    assert_eq!(v["comparison"]["explanation"]["finding"], false);
+}
+
+#[test]
+fn luminance_on_the_gpu_prints_the_device_and_agrees() {
+    if gpu_device::gpu("luminance_on_the_gpu_prints_the_device_and_agrees").is_none() {
+        return;
+    }
+    let out = ps30(
+        &["luminance", "assets/hdr/forest.hdr", "--backend", "gpu"],
+        repo(),
+    );
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(text.contains("drawn on the GPU: "), "{text}");
+    assert!(text.contains("not counted: drawn on the GPU"), "{text}");
+    assert!(text.contains(": agree"), "{text}");
+}
