@@ -10,16 +10,18 @@
 //!   with `Draw::record_lod` on pass 1, as `ps30 luminance` runs it;
 //!   `emulate/loop`: the corrected loop shaders (128×56 blocks);
 //! * `pass1/1t`, `pass1/2t`: pass 1 alone on one and two emulator threads;
-//! * `phase/decode`, `phase/crosscheck`: decoding the file, and the f64
-//!   cross-check's one scan (every term, the block bounds, the reference);
+//! * `phase/decode/Nt`, `phase/crosscheck/Nt`: decoding the file, and the
+//!   f64 cross-check's one scan (every term, the block bounds, the
+//!   reference), on N threads;
 //! * `command/luminance|tonemap|run/Nt`: what `ps30 luminance`, `ps30
 //!   tonemap` and `ps30 run` compute (decoding included, no printing) with
 //!   all their work on N threads, as `--threads N` runs them;
 //! * `gpu/unrolled`, `gpu/loop`: the `emulate/*` draws on the GPU backend
 //!   (the first Vulkan adapter: llvmpipe here), each pass as `--backend
 //!   gpu` runs it — translation, pipeline, the image uploaded, the draw,
-//!   the target read back. Skipped, with a line saying so, without an
-//!   adapter.
+//!   the target read back; `gpu/pass1/Nt`: pass 1 alone there with
+//!   llvmpipe on N threads (`LP_NUM_THREADS`), beside `pass1/Nt`. Skipped,
+//!   with a line saying so, without an adapter.
 //!
 //! The cross-check's bounds are not part of the `emulate/*` entries.
 
@@ -297,16 +299,33 @@ fn luminance(c: &mut Criterion) {
         }
         Err(e) => eprintln!("gpu/unrolled, gpu/loop: skipped: {e}"),
     }
-    g.bench_function("phase/decode", |b| {
-        b.iter(|| on_threads(1, || load(&path, &ImageLimits::default()).unwrap().width))
-    });
-    g.bench_function("phase/crosscheck", |b| {
-        b.iter(|| {
-            on_threads(1, || {
-                luminance::pass1_bounds(black_box(&img), (125, 128), 1e-4, Policy::ABS).1
+    // llvmpipe reads LP_NUM_THREADS when a device is created: one device per
+    // thread count, for pass 1 beside `pass1/1t` and `pass1/2t`.
+    for t in [1, 2] {
+        std::env::set_var("LP_NUM_THREADS", t.to_string());
+        let lp = Gpu::open();
+        std::env::remove_var("LP_NUM_THREADS");
+        match &lp {
+            Ok(d) => {
+                g.bench_function(format!("gpu/pass1/{t}t"), |b| {
+                    b.iter(|| pass1(black_box(&img), Drawer::Gpu(d, &unrolled), 125, 128, false))
+                });
+            }
+            Err(e) => eprintln!("gpu/pass1/{t}t: skipped: {e}"),
+        }
+    }
+    for t in [1, 2] {
+        g.bench_function(format!("phase/decode/{t}t"), |b| {
+            b.iter(|| on_threads(t, || load(&path, &ImageLimits::default()).unwrap().width))
+        });
+        g.bench_function(format!("phase/crosscheck/{t}t"), |b| {
+            b.iter(|| {
+                on_threads(t, || {
+                    luminance::pass1_bounds(black_box(&img), (125, 128), 1e-4, Policy::ABS).1
+                })
             })
-        })
-    });
+        });
+    }
     for t in [1, 2] {
         g.bench_function(format!("command/luminance/{t}t"), |b| {
             b.iter(|| {

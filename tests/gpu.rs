@@ -279,7 +279,7 @@ mov oC2, r3
         } else {
             assert!(mul_inf_zero.is_nan(), "{rules}: 0 × ∞ is NaN");
         }
-        for k in 0..3 {
+        for (k, ulp) in VULKAN_ULP.iter().enumerate() {
             let (ec, gc) = (e.color[k].as_ref().unwrap(), o.color[k].as_ref().unwrap());
             for (i, (a, b)) in ec.iter().zip(gc).enumerate() {
                 for c in 0..4 {
@@ -301,7 +301,7 @@ mov oC2, r3
                     // about) bit for bit.
                     let ordinary = inputs[i].is_finite() && inputs[i] != 0.0;
                     let allowed = if ordinary && a[c].is_finite() && b[c].is_finite() {
-                        VULKAN_ULP[k][c]
+                        ulp[c]
                     } else {
                         0
                     };

@@ -58,6 +58,7 @@ impl Worker<'_, '_> {
     /// them when `SCALAR`).
     #[inline(always)]
     pub(super) fn store<const SCALAR: bool>(&mut self, d: DstOp, mask: u8) {
+        let n = self.span();
         let full = self.exec == self.live && !d.predicated();
         let sat = d.sat();
         let base = d.row as usize;
@@ -75,14 +76,14 @@ impl Worker<'_, '_> {
             let dst = &mut self.rows[base + c];
             if full {
                 if sat {
-                    for l in 0..LANES {
+                    for l in 0..n {
                         dst[l] = math::sat(t[l]);
                     }
                 } else {
                     *dst = *t;
                 }
             } else {
-                for l in 0..LANES {
+                for l in 0..n {
                     let v = if sat { math::sat(t[l]) } else { t[l] };
                     if (lanes >> l) & 1 != 0 {
                         dst[l] = v;
@@ -99,6 +100,7 @@ impl Worker<'_, '_> {
     /// Component-wise unary op.
     #[inline(always)]
     pub(super) fn map1(&mut self, d: DstOp, a: SrcOp, f: impl Fn(f32) -> f32) {
+        let n = self.span();
         let (am, ax) = a.mod_bits();
         let mask = d.mask();
         for c in 0..4 {
@@ -108,7 +110,7 @@ impl Worker<'_, '_> {
             let ra = self.row(a, c);
             let src = &self.rows[ra];
             let out = &mut self.tmp[c];
-            for l in 0..LANES {
+            for l in 0..n {
                 out[l] = f(modify(src[l], am, ax));
             }
         }
@@ -118,6 +120,7 @@ impl Worker<'_, '_> {
     /// Component-wise binary op.
     #[inline(always)]
     pub(super) fn map2(&mut self, d: DstOp, a: SrcOp, b: SrcOp, f: impl Fn(f32, f32) -> f32) {
+        let n = self.span();
         let (am, ax) = a.mod_bits();
         let (bm, bx) = b.mod_bits();
         let mask = d.mask();
@@ -128,7 +131,7 @@ impl Worker<'_, '_> {
             let (ra, rb) = (self.row(a, c), self.row(b, c));
             let (sa, sb) = (&self.rows[ra], &self.rows[rb]);
             let out = &mut self.tmp[c];
-            for l in 0..LANES {
+            for l in 0..n {
                 out[l] = f(modify(sa[l], am, ax), modify(sb[l], bm, bx));
             }
         }
@@ -145,6 +148,7 @@ impl Worker<'_, '_> {
         c3: SrcOp,
         f: impl Fn(f32, f32, f32) -> f32,
     ) {
+        let n = self.span();
         let (am, ax) = a.mod_bits();
         let (bm, bx) = b.mod_bits();
         let (cm, cx) = c3.mod_bits();
@@ -156,7 +160,7 @@ impl Worker<'_, '_> {
             let (ra, rb, rc) = (self.row(a, c), self.row(b, c), self.row(c3, c));
             let (sa, sb, sc) = (&self.rows[ra], &self.rows[rb], &self.rows[rc]);
             let out = &mut self.tmp[c];
-            for l in 0..LANES {
+            for l in 0..n {
                 out[l] = f(
                     modify(sa[l], am, ax),
                     modify(sb[l], bm, bx),
@@ -171,11 +175,12 @@ impl Worker<'_, '_> {
     /// swizzle), replicated to every written component.
     #[inline(always)]
     pub(super) fn scalar1(&mut self, d: DstOp, a: SrcOp, f: impl Fn(f32) -> f32) {
+        let n = self.span();
         let (am, ax) = a.mod_bits();
         let ra = self.row(a, 0);
         let src = &self.rows[ra];
         let out = &mut self.tmp[0];
-        for l in 0..LANES {
+        for l in 0..n {
             out[l] = f(modify(src[l], am, ax));
         }
         self.store::<true>(d, d.mask());
@@ -183,6 +188,7 @@ impl Worker<'_, '_> {
 
     // ----- the float rules (core/float_rules.rs) --------------------------
 
+    #[inline(always)]
     pub(super) fn mul(&mut self, d: DstOp, a: SrcOp, b: SrcOp) {
         if self.ctx.rules.zero_mul() {
             self.map2(d, a, b, math::zmul)
@@ -191,6 +197,7 @@ impl Worker<'_, '_> {
         }
     }
 
+    #[inline(always)]
     pub(super) fn mad(&mut self, d: DstOp, a: SrcOp, b: SrcOp, c: SrcOp) {
         if self.ctx.rules.zero_mul() {
             self.map3(d, a, b, c, |x, y, z| math::zmul(x, y) + z)
@@ -199,6 +206,7 @@ impl Worker<'_, '_> {
         }
     }
 
+    #[inline(always)]
     pub(super) fn lrp(&mut self, d: DstOp, a: SrcOp, b: SrcOp, c: SrcOp) {
         if self.ctx.rules.zero_mul() {
             self.map3(d, a, b, c, |x, y, z| {
@@ -209,6 +217,7 @@ impl Worker<'_, '_> {
         }
     }
 
+    #[inline(always)]
     pub(super) fn log(&mut self, d: DstOp, a: SrcOp) {
         if self.ctx.rules.d3d9_specials() {
             self.scalar1(d, a, math::log)
@@ -217,6 +226,7 @@ impl Worker<'_, '_> {
         }
     }
 
+    #[inline(always)]
     pub(super) fn rsq(&mut self, d: DstOp, a: SrcOp) {
         if self.ctx.rules.d3d9_specials() {
             self.scalar1(d, a, math::rsq)
@@ -225,6 +235,7 @@ impl Worker<'_, '_> {
         }
     }
 
+    #[inline(always)]
     pub(super) fn frc(&mut self, d: DstOp, a: SrcOp) {
         if self.ctx.rules.d3d9_specials() {
             self.map1(d, a, math::frc)
@@ -233,7 +244,9 @@ impl Worker<'_, '_> {
         }
     }
 
+    #[inline(always)]
     pub(super) fn pow(&mut self, d: DstOp, a: SrcOp, b: SrcOp) {
+        let n = self.span();
         let f = if self.ctx.rules.d3d9_specials() {
             math::pow
         } else {
@@ -244,7 +257,7 @@ impl Worker<'_, '_> {
         let (ra, rb) = (self.row(a, 0), self.row(b, 0));
         let (sa, sb) = (&self.rows[ra], &self.rows[rb]);
         let out = &mut self.tmp[0];
-        for l in 0..LANES {
+        for l in 0..n {
             out[l] = f(modify(sa[l], am, ax), modify(sb[l], bm, bx));
         }
         self.store::<true>(d, d.mask());
@@ -254,6 +267,7 @@ impl Worker<'_, '_> {
     /// to right in f32.
     #[inline(always)]
     pub(super) fn dot<const N: usize>(&mut self, _d: DstOp, a: SrcOp, b: SrcOp, k: usize) {
+        let n = self.span();
         let (am, ax) = a.mod_bits();
         let (bm, bx) = b.mod_bits();
         let ra: [usize; N] = std::array::from_fn(|c| self.row(a, c));
@@ -266,7 +280,7 @@ impl Worker<'_, '_> {
             |x: f32, y: f32| x * y
         };
         let out = &mut self.tmp[k];
-        for l in 0..LANES {
+        for l in 0..n {
             let mut s = mul(modify(sa[0][l], am, ax), modify(sb[0][l], bm, bx));
             for c in 1..N {
                 s += mul(modify(sa[c][l], am, ax), modify(sb[c][l], bm, bx));
@@ -284,12 +298,13 @@ impl Worker<'_, '_> {
 
     /// `dp2add`: a.x·b.x + a.y·b.y + c (c's replicate component).
     pub(super) fn dp2add(&mut self, d: DstOp, a: SrcOp, b: SrcOp, c3: SrcOp) {
+        let n = self.span();
         self.dot::<2>(d, a, b, 0);
         let (cm, cx) = c3.mod_bits();
         let rc = self.row(c3, 0);
         let sc = &self.rows[rc];
         let out = &mut self.tmp[0];
-        for l in 0..LANES {
+        for l in 0..n {
             out[l] += modify(sc[l], cm, cx);
         }
         self.store::<true>(d, d.mask());
@@ -315,6 +330,7 @@ impl Worker<'_, '_> {
 
     /// `crs`: cross product of xyz; w is never written.
     pub(super) fn crs(&mut self, d: DstOp, a: SrcOp, b: SrcOp) {
+        let n = self.span();
         let (am, ax) = a.mod_bits();
         let (bm, bx) = b.mod_bits();
         let ra: [usize; 3] = std::array::from_fn(|c| self.row(a, c));
@@ -324,7 +340,7 @@ impl Worker<'_, '_> {
             let (ai, aj) = (&self.rows[ra[i]], &self.rows[ra[j]]);
             let (bi, bj) = (&self.rows[rb[i]], &self.rows[rb[j]]);
             let out = &mut self.tmp[c];
-            for l in 0..LANES {
+            for l in 0..n {
                 out[l] = modify(ai[l], am, ax) * modify(bj[l], bm, bx)
                     - modify(aj[l], am, ax) * modify(bi[l], bm, bx);
             }
@@ -335,6 +351,7 @@ impl Worker<'_, '_> {
     /// `nrm`: src · (1/sqrt(x²+y²+z²)), FLT_MAX for a zero length (MS
     /// `nrm---ps`), applied to all four components.
     pub(super) fn nrm(&mut self, d: DstOp, a: SrcOp) {
+        let n = self.span();
         let (am, ax) = a.mod_bits();
         let r: [usize; 4] = std::array::from_fn(|c| self.row(a, c));
         let s: [&[f32; LANES]; 4] = std::array::from_fn(|c| &self.rows[r[c]]);
@@ -350,7 +367,7 @@ impl Worker<'_, '_> {
             |x: f32, y: f32| x * y
         };
         let mut scale = [0.0f32; LANES];
-        for l in 0..LANES {
+        for l in 0..n {
             let (x, y, z) = (
                 modify(s[0][l], am, ax),
                 modify(s[1][l], am, ax),
@@ -360,7 +377,7 @@ impl Worker<'_, '_> {
         }
         for c in 0..4 {
             let out = &mut self.tmp[c];
-            for l in 0..LANES {
+            for l in 0..n {
                 out[l] = mul(modify(s[c][l], am, ax), scale[l]);
             }
         }
@@ -370,11 +387,12 @@ impl Worker<'_, '_> {
     /// `sincos`: x = cos, y = sin of the replicate component; z and w are
     /// left untouched (ps_3_0 form, MS `sincos---ps`).
     pub(super) fn sincos(&mut self, d: DstOp, a: SrcOp) {
+        let n = self.span();
         let (am, ax) = a.mod_bits();
         let ra = self.row(a, 0);
         let src = &self.rows[ra];
         let [t0, t1, _, _] = &mut self.tmp;
-        for l in 0..LANES {
+        for l in 0..n {
             let v = modify(src[l], am, ax);
             t0[l] = v.cos();
             t1[l] = v.sin();
@@ -393,6 +411,7 @@ impl Worker<'_, '_> {
     /// Coarse `dsx` (`neighbour` 1: top-right − top-left) or `dsy`
     /// (`neighbour` 2: bottom-left − top-left), one value per quad.
     pub(super) fn deriv(&mut self, d: DstOp, a: SrcOp, neighbour: usize) {
+        let n = self.span();
         let (am, ax) = a.mod_bits();
         let mask = d.mask();
         for c in 0..4 {
@@ -402,7 +421,7 @@ impl Worker<'_, '_> {
             let ra = self.row(a, c);
             let src = &self.rows[ra];
             let out = &mut self.tmp[c];
-            for q in (0..LANES).step_by(4) {
+            for q in (0..n).step_by(4) {
                 let v = modify(src[q + neighbour], am, ax) - modify(src[q], am, ax);
                 out[q..q + 4].copy_from_slice(&[v; 4]);
             }
@@ -462,6 +481,7 @@ impl Worker<'_, '_> {
     /// mask) below zero (MS `texkill---ps`); predication applies per
     /// component.
     pub(super) fn texkill(&self, d: DstOp) -> u64 {
+        let n = self.span();
         let mut kill = 0u64;
         for c in 0..3 {
             if d.mask() & (1 << c) == 0 {
@@ -469,7 +489,7 @@ impl Worker<'_, '_> {
             }
             let src = &self.rows[d.row as usize + c];
             let mut m = 0u64;
-            for l in 0..LANES {
+            for l in 0..n {
                 m |= ((src[l] < 0.0) as u64) << l;
             }
             kill |= m & self.write_mask(d, c);

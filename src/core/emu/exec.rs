@@ -119,6 +119,26 @@ pub(crate) struct Worker<'c, 'a> {
     pub(super) al: i32,
     pub(super) written: u8,
     batch: u64,
+    /// Lanes `0..span` hold the batch's live quads, rounded up to a multiple
+    /// of 16; ops compute only those (the rest of the rows is stale and never
+    /// read back).
+    span: usize,
+}
+
+#[cfg(test)]
+thread_local! {
+    /// Tests set this to run the portable copy of the executor on a CPU
+    /// with AVX2, to compare the two.
+    pub(super) static PORTABLE_ONLY: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+}
+
+/// Whether this thread must use the portable executor (tests only).
+#[inline(always)]
+fn portable_only() -> bool {
+    #[cfg(test)]
+    return PORTABLE_ONLY.with(|p| p.get());
+    #[cfg(not(test))]
+    false
 }
 
 fn malformed(pc: usize, reason: &str) -> EmuError {
@@ -177,6 +197,7 @@ impl<'c, 'a> Worker<'c, 'a> {
             al: 0,
             written: 0,
             batch: 0,
+            span: LANES,
         }
     }
 
@@ -197,11 +218,20 @@ impl<'c, 'a> Worker<'c, 'a> {
             xs[l] = x as f32;
             ys[l] = y as f32;
         }
+        // Whole quads run when any of their pixels is inside the target.
+        let mut live = 0u64;
+        for q in (0..LANES).step_by(4) {
+            if target & (0xf << q) != 0 {
+                live |= 0xf << q;
+            }
+        }
+        self.span = (LANES - live.leading_zeros() as usize).next_multiple_of(16);
+        let n = self.span();
         for (v, input) in ctx.inputs.iter().enumerate() {
             if let Some(input) = input {
                 for c in 0..4 {
                     let row = &mut self.rows[layout.input as usize + 4 * v + c];
-                    for l in 0..LANES {
+                    for l in 0..n {
                         row[l] = input.base[c] + xs[l] * input.ddx[c] + ys[l] * input.ddy[c];
                     }
                 }
@@ -211,13 +241,6 @@ impl<'c, 'a> Worker<'c, 'a> {
         self.rows[pos] = xs;
         self.rows[pos + 1] = ys;
         self.p = [0; 4];
-        // Whole quads run when any of their pixels is inside the target.
-        let mut live = 0u64;
-        for q in (0..LANES).step_by(4) {
-            if target & (0xf << q) != 0 {
-                live |= 0xf << q;
-            }
-        }
         self.target = target;
         self.exec = live;
         self.live = live;
@@ -272,6 +295,14 @@ impl<'c, 'a> Worker<'c, 'a> {
             st.finish(bias);
         }
         Ok(out)
+    }
+
+    /// Lanes the batch's ops compute: `0..span()`, at most [`LANES`] (so
+    /// the lane loops need no bounds checks) and a multiple of 16 (so they
+    /// vectorise without a scalar remainder).
+    #[inline(always)]
+    pub(super) fn span(&self) -> usize {
+        self.span.min(LANES) & !15
     }
 
     // ----- counting -------------------------------------------------------
@@ -438,10 +469,77 @@ impl<'c, 'a> Worker<'c, 'a> {
 
     // ----- the dispatch loop ----------------------------------------------
 
-    /// Runs the ops from pc 0 until main ends: one match per op, each arm a
-    /// handler of its family (arithmetic in `arith.rs`, texture in
-    /// `texop.rs`, flow control below).
+    /// Runs the ops from pc 0 until main ends, compiled for AVX2 when the CPU
+    /// has it (detected at run time, so the portable binary gets 8-lane
+    /// vector arithmetic). The AVX2 copy computes the same values: it adds
+    /// wider vectors only, and Rust never fuses a multiply and an add unless
+    /// told to (no `mul_add` in the emulator), so every op rounds as before.
     fn execute(&mut self, out: &mut BatchOut) -> Result<(), EmuError> {
+        #[cfg(target_arch = "x86_64")]
+        if std::arch::is_x86_feature_detected!("avx2") && !portable_only() {
+            // SAFETY: the CPU supports AVX2 (checked just above).
+            return unsafe { self.execute_avx2(out) };
+        }
+        self.execute_ops(out)
+    }
+
+    /// [`Worker::execute_ops`] with AVX2 enabled; the hot handlers are
+    /// `#[inline(always)]`, so they are compiled into this copy.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    unsafe fn execute_avx2(&mut self, out: &mut BatchOut) -> Result<(), EmuError> {
+        self.execute_ops(out)
+    }
+
+    /// Runs one arithmetic or `texld`-family op for the executing lanes;
+    /// flow control and `texldd` (which can fail) are run by
+    /// [`Worker::execute_ops`] and never reach here.
+    #[inline(always)]
+    fn compute(&mut self, op: Op) {
+        match op {
+            Op::Mov { d, a } => self.map1(d, a, |x| x),
+            Op::Add { d, a, b } => self.map2(d, a, b, |x, y| x + y),
+            Op::Sub { d, a, b } => self.map2(d, a, b, |x, y| x - y),
+            Op::Mul { d, a, b } => self.mul(d, a, b),
+            Op::Mad { d, a, b, c } => self.mad(d, a, b, c),
+            Op::Min { d, a, b } => self.map2(d, a, b, math::min),
+            Op::Max { d, a, b } => self.map2(d, a, b, math::max),
+            Op::Lrp { d, a, b, c } => self.lrp(d, a, b, c),
+            Op::Cmp { d, a, b, c } => self.map3(d, a, b, c, math::cmp),
+            Op::Frc { d, a } => self.frc(d, a),
+            Op::Abs { d, a } => self.map1(d, a, f32::abs),
+            Op::Rcp { d, a } => self.scalar1(d, a, math::rcp),
+            Op::Rsq { d, a } => self.rsq(d, a),
+            Op::Exp { d, a } => self.scalar1(d, a, math::exp),
+            Op::Log { d, a } => self.log(d, a),
+            Op::Pow { d, a, b } => self.pow(d, a, b),
+            Op::Dp3 { d, a, b } => self.dp::<3>(d, a, b),
+            Op::Dp4 { d, a, b } => self.dp::<4>(d, a, b),
+            Op::Dp2Add { d, a, b, c } => self.dp2add(d, a, b, c),
+            Op::Mat { d, a, b, n, dims } => self.matrix(d, a, b, n, dims),
+            Op::Crs { d, a, b } => self.crs(d, a, b),
+            Op::Nrm { d, a } => self.nrm(d, a),
+            Op::SinCos { d, a } => self.sincos(d, a),
+            Op::Dsx { d, a, site } => self.derivative(d, a, site, 1),
+            Op::Dsy { d, a, site } => self.derivative(d, a, site, 2),
+            Op::Setp { d, a, b, cmp } => self.setp(d, a, b, cmp),
+            Op::TexKill { d } => self.killed |= self.texkill(d),
+            Op::Tex {
+                d,
+                a,
+                s,
+                kind,
+                site,
+            } => self.texld(d, a, s, kind, site),
+            _ => debug_assert!(false, "{op:?} is run by execute_ops"),
+        }
+    }
+
+    /// Runs the ops from pc 0 until main ends: one match per op, flow
+    /// control handled below, the rest by [`Worker::compute`] (arithmetic
+    /// in `arith.rs`, texture in `texop.rs`).
+    #[inline(always)]
+    fn execute_ops(&mut self, out: &mut BatchOut) -> Result<(), EmuError> {
         let ops = &self.ctx.compiled.ops[..];
         let mut pc = 0usize;
         loop {
@@ -452,46 +550,9 @@ impl<'c, 'a> Worker<'c, 'a> {
             pc += 1;
             let s = m.slots;
             match m.op {
-                // ----- arithmetic ------------------------------------------
                 Op::Nop => {
                     self.begin(s);
                 }
-                Op::Mov { d, a } => self.when_any(s, |w| w.map1(d, a, |x| x)),
-                Op::Add { d, a, b } => self.when_any(s, |w| w.map2(d, a, b, |x, y| x + y)),
-                Op::Sub { d, a, b } => self.when_any(s, |w| w.map2(d, a, b, |x, y| x - y)),
-                Op::Mul { d, a, b } => self.when_any(s, |w| w.mul(d, a, b)),
-                Op::Mad { d, a, b, c } => self.when_any(s, |w| w.mad(d, a, b, c)),
-                Op::Min { d, a, b } => self.when_any(s, |w| w.map2(d, a, b, math::min)),
-                Op::Max { d, a, b } => self.when_any(s, |w| w.map2(d, a, b, math::max)),
-                Op::Lrp { d, a, b, c } => self.when_any(s, |w| w.lrp(d, a, b, c)),
-                Op::Cmp { d, a, b, c } => self.when_any(s, |w| w.map3(d, a, b, c, math::cmp)),
-                Op::Frc { d, a } => self.when_any(s, |w| w.frc(d, a)),
-                Op::Abs { d, a } => self.when_any(s, |w| w.map1(d, a, f32::abs)),
-                Op::Rcp { d, a } => self.when_any(s, |w| w.scalar1(d, a, math::rcp)),
-                Op::Rsq { d, a } => self.when_any(s, |w| w.rsq(d, a)),
-                Op::Exp { d, a } => self.when_any(s, |w| w.scalar1(d, a, math::exp)),
-                Op::Log { d, a } => self.when_any(s, |w| w.log(d, a)),
-                Op::Pow { d, a, b } => self.when_any(s, |w| w.pow(d, a, b)),
-                Op::Dp3 { d, a, b } => self.when_any(s, |w| w.dp::<3>(d, a, b)),
-                Op::Dp4 { d, a, b } => self.when_any(s, |w| w.dp::<4>(d, a, b)),
-                Op::Dp2Add { d, a, b, c } => self.when_any(s, |w| w.dp2add(d, a, b, c)),
-                Op::Mat { d, a, b, n, dims } => self.when_any(s, |w| w.matrix(d, a, b, n, dims)),
-                Op::Crs { d, a, b } => self.when_any(s, |w| w.crs(d, a, b)),
-                Op::Nrm { d, a } => self.when_any(s, |w| w.nrm(d, a)),
-                Op::SinCos { d, a } => self.when_any(s, |w| w.sincos(d, a)),
-                Op::Dsx { d, a, site } => self.when_any(s, |w| w.derivative(d, a, site, 1)),
-                Op::Dsy { d, a, site } => self.when_any(s, |w| w.derivative(d, a, site, 2)),
-                Op::Setp { d, a, b, cmp } => self.when_any(s, |w| w.setp(d, a, b, cmp)),
-                Op::TexKill { d } => self.when_any(s, |w| w.killed |= w.texkill(d)),
-
-                // ----- texture ---------------------------------------------
-                Op::Tex {
-                    d,
-                    a,
-                    s: smp,
-                    kind,
-                    site,
-                } => self.when_any(s, |w| w.texld(d, a, smp, kind, site)),
                 Op::TexD {
                     d,
                     a,
@@ -537,16 +598,13 @@ impl<'c, 'a> Worker<'c, 'a> {
                     }
                     pc = self.ret(pc, true)?;
                 }
+                // ----- arithmetic and texld ---------------------------------
+                op => {
+                    if self.begin(s) {
+                        self.compute(op);
+                    }
+                }
             }
-        }
-    }
-
-    /// Runs `f` when some lane executes the op, after charging them its
-    /// slots.
-    #[inline(always)]
-    fn when_any(&mut self, slots: u8, f: impl FnOnce(&mut Self)) {
-        if self.begin(slots) {
-            f(self)
         }
     }
 

@@ -12,7 +12,9 @@
 //!   offsets, jumps become op indices, every op carries its slot cost.
 //! * The executor runs [`LANES`] pixels in lockstep: lanes `4k..4k+3` are one
 //!   2×2 quad (top-left, top-right, bottom-left, bottom-right), quads are
-//!   taken in row-major order over the quad grid, 16 quads per batch.
+//!   taken in row-major order over the quad grid, 16 quads per batch (fewer
+//!   on small targets, so that they still split over threads); ops compute
+//!   only the lanes up to the batch's last quad in the target.
 //!   Registers are structure-of-arrays (one row of lane values per register
 //!   component). Divergent flow control uses per-lane execution masks (`u64`
 //!   bit sets); when every live lane is active, ops run without any mask
@@ -593,6 +595,9 @@ pub(crate) struct RunCtx<'c, 'a> {
     /// Quads per row of the quad grid.
     pub quads_x: u64,
     pub quads: u64,
+    /// Quads per batch: [`QUADS_PER_BATCH`], fewer when the target has
+    /// fewer full batches than there are threads ([`batch_quads`]).
+    pub batch_quads: u64,
     pub cap: u64,
     pub record_lod: bool,
     /// The value of every component of `vFace`.
@@ -602,7 +607,11 @@ pub(crate) struct RunCtx<'c, 'a> {
 }
 
 impl<'c, 'a> RunCtx<'c, 'a> {
-    fn new(compiled: &'c Compiled, draw: &Draw<'a>) -> Result<RunCtx<'c, 'a>, EmuError> {
+    fn new(
+        compiled: &'c Compiled,
+        draw: &Draw<'a>,
+        threads: usize,
+    ) -> Result<RunCtx<'c, 'a>, EmuError> {
         let (w, h) = (draw.target_width as u64, draw.target_height as u64);
         if w * h > draw.limits.max_target_pixels {
             return Err(EmuError::TargetTooLarge {
@@ -644,6 +653,7 @@ impl<'c, 'a> RunCtx<'c, 'a> {
         let inputs = bind_inputs(compiled, draw)?;
         let samplers = bind_samplers(compiled, draw)?;
         let quads_x = w.div_ceil(2);
+        let quads = quads_x * h.div_ceil(2);
         Ok(RunCtx {
             compiled,
             ints,
@@ -654,7 +664,8 @@ impl<'c, 'a> RunCtx<'c, 'a> {
             width: w,
             height: h,
             quads_x,
-            quads: quads_x * h.div_ceil(2),
+            quads,
+            batch_quads: batch_quads(quads, threads),
             cap: draw.limits.max_executed_per_pixel,
             record_lod: draw.record_lod,
             face: draw.face.value(),
@@ -663,18 +674,33 @@ impl<'c, 'a> RunCtx<'c, 'a> {
     }
 
     fn batches(&self) -> u64 {
-        self.quads.div_ceil(QUADS_PER_BATCH)
+        self.quads.div_ceil(self.batch_quads)
     }
 
     /// Pixel of `lane` in `batch`, and whether it lies inside the target.
     #[inline]
     pub fn lane_pixel(&self, batch: u64, lane: usize) -> (u64, u64, bool) {
-        let quad = batch * QUADS_PER_BATCH + (lane / 4) as u64;
+        let q = (lane / 4) as u64;
+        let quad = batch * self.batch_quads + q;
         let (qx, qy) = (quad % self.quads_x.max(1), quad / self.quads_x.max(1));
         let x = 2 * qx + (lane & 1) as u64;
         let y = 2 * qy + ((lane >> 1) & 1) as u64;
-        (x, y, quad < self.quads && x < self.width && y < self.height)
+        let inside = q < self.batch_quads && quad < self.quads;
+        (x, y, inside && x < self.width && y < self.height)
     }
+}
+
+/// Quads per batch for a target of `quads` quads on `threads` threads: full
+/// batches, unless that leaves a thread without work; then one batch per
+/// thread, in multiples of 4 quads (16 lanes, which vectorise without a
+/// remainder). Pass 1 of the luminance job draws 6×4 quads: one batch of 16
+/// and one of 8 on one thread, two of 12 on two. The batches a draw is cut
+/// into change no result (pixels are independent).
+fn batch_quads(quads: u64, threads: usize) -> u64 {
+    quads
+        .div_ceil(threads.max(1) as u64)
+        .next_multiple_of(4)
+        .clamp(4, QUADS_PER_BATCH)
 }
 
 /// The integer constants (the draw's, then `defi`), each one a rep or loop
@@ -764,7 +790,7 @@ fn bind_samplers<'a>(
 /// samplers supplied as declared, texture shapes — so that another backend
 /// (`core/gpu`) refuses exactly what the emulator refuses.
 pub fn check(compiled: &Compiled, draw: &Draw) -> Result<(), EmuError> {
-    RunCtx::new(compiled, draw).map(|_| ())
+    RunCtx::new(compiled, draw, 1).map(|_| ())
 }
 
 /// Runs a draw on rayon's global pool.
@@ -781,7 +807,11 @@ pub fn run_with_threads(
     draw: &Draw,
     threads: usize,
 ) -> Result<DrawOutput, EmuError> {
-    let ctx = RunCtx::new(compiled, draw)?;
+    let workers = match threads {
+        0 => rayon::current_num_threads(),
+        n => n,
+    };
+    let ctx = RunCtx::new(compiled, draw, workers)?;
     let n = (ctx.width * ctx.height) as usize;
     let q = ctx.quads as usize;
     let color = (0..4)
@@ -989,8 +1019,8 @@ fn scatter(ctx: &RunCtx, out: &mut DrawOutput, batch: u64, r: &BatchOut) -> u8 {
             d[i] = r.depth[lane];
         }
     }
-    for q in 0..LANES / 4 {
-        let quad = batch * QUADS_PER_BATCH + q as u64;
+    for q in 0..ctx.batch_quads.min(QUADS_PER_BATCH) as usize {
+        let quad = batch * ctx.batch_quads + q as u64;
         if quad < ctx.quads {
             out.quad_executed[quad as usize] = r.quad_executed[q];
             out.quad_divergent[quad as usize] = (r.diverged >> (4 * q)) & 1 != 0;

@@ -42,12 +42,14 @@ pub(super) fn lod_of_len2(len2: f32) -> f32 {
 const ALL_QUADS: u64 = 0x1111_1111_1111_1111;
 
 /// The smallest and largest max(|dX|², |dY|²) (level-0 texels) over the
-/// quads marked in `quads` (bit 4q = quad q, whose top-left lane is 4q);
+/// quads marked in `quads` (bit 4q = quad q, whose top-left lane is 4q) among
+/// the first `n / 4`;
 /// (+∞, −∞) when none is. Quads are taken four at a time with their corners
 /// transposed into rows, which the compiler maps onto vector operations;
 /// the comparisons are plain `<`/`>`, so a NaN length is skipped.
 #[inline(always)]
 pub(super) fn quad_len2_range(
+    n: usize,
     u: &[f32; LANES],
     v: &[f32; LANES],
     wf: f32,
@@ -56,6 +58,7 @@ pub(super) fn quad_len2_range(
 ) -> (f32, f32) {
     #[inline(always)]
     fn range<const ALL: bool>(
+        n: usize,
         u: &[f32; LANES],
         v: &[f32; LANES],
         wf: f32,
@@ -64,7 +67,7 @@ pub(super) fn quad_len2_range(
     ) -> (f32, f32) {
         let mut lo = [f32::INFINITY; 4];
         let mut hi = [f32::NEG_INFINITY; 4];
-        for g in 0..LANES / 16 {
+        for g in 0..n.min(LANES) / 16 {
             let mut c = [[0f32; 4]; 6];
             for k in 0..4 {
                 let b = 16 * g + 4 * k;
@@ -94,9 +97,9 @@ pub(super) fn quad_len2_range(
         (lo, hi)
     }
     if quads == ALL_QUADS {
-        range::<true>(u, v, wf, hf, quads)
+        range::<true>(n, u, v, wf, hf, quads)
     } else {
-        range::<false>(u, v, wf, hf, quads)
+        range::<false>(n, u, v, wf, hf, quads)
     }
 }
 

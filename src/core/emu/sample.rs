@@ -206,6 +206,7 @@ impl<'a> Level<'a> {
     }
 
     /// Bilinear sampling.
+    #[inline(always)]
     pub fn linear(&self, u: f32, v: f32) -> [f32; 4] {
         let fu = u * self.wf - 0.5;
         let fv = v * self.hf - 0.5;
@@ -242,32 +243,35 @@ impl<'a> Level<'a> {
         }
     }
 
-    /// Samples every lane with `filter`; `out[c]` receives sampled component
-    /// `swz(c)`.
+    /// Samples lanes `0..n` with `filter`; `out[c]` receives sampled
+    /// component `swz(c)`.
+    #[inline(always)]
     fn sample_lanes(
         &self,
         filter: Filter,
+        n: usize,
         u: &[f32; LANES],
         v: &[f32; LANES],
         swz: [usize; 4],
         out: &mut [[f32; LANES]; 4],
     ) {
+        let n = n.min(LANES);
         match (filter, self.au, self.av) {
             (Filter::Point, Address::Border, Address::Border) => {
                 // Indices first (vectorises), then the gather.
                 let mut idx = [BORDER; LANES];
-                for l in 0..LANES {
+                for l in 0..n {
                     idx[l] = self.point_border_index(u[l], v[l]);
                 }
                 if swz == [0, 1, 2, 3] {
-                    for l in 0..LANES {
+                    for l in 0..n {
                         let t = self.texels.get(idx[l] as usize).unwrap_or(&self.border);
                         for c in 0..4 {
                             out[c][l] = t[c];
                         }
                     }
                 } else {
-                    for l in 0..LANES {
+                    for l in 0..n {
                         let t = self.texels.get(idx[l] as usize).unwrap_or(&self.border);
                         for c in 0..4 {
                             out[c][l] = t[swz[c]];
@@ -276,7 +280,7 @@ impl<'a> Level<'a> {
                 }
             }
             (Filter::Point, _, _) => {
-                for l in 0..LANES {
+                for l in 0..n {
                     let t = self.point(u[l], v[l]);
                     for c in 0..4 {
                         out[c][l] = t[swz[c]];
@@ -284,7 +288,7 @@ impl<'a> Level<'a> {
                 }
             }
             (Filter::Linear, _, _) => {
-                for l in 0..LANES {
+                for l in 0..n {
                     let t = self.linear(u[l], v[l]);
                     for c in 0..4 {
                         out[c][l] = t[swz[c]];
@@ -349,16 +353,18 @@ impl<'a> Sampler<'a> {
         self.bias
     }
 
-    /// Samples every lane at the base level, ignoring the LOD (valid when
+    /// Samples lanes `0..n` at the base level, ignoring the LOD (valid when
     /// [`Sampler::lod_matters`] is false).
+    #[inline(always)]
     pub fn sample_lanes(
         &self,
+        n: usize,
         u: &[f32; LANES],
         v: &[f32; LANES],
         swz: [usize; 4],
         out: &mut [[f32; LANES]; 4],
     ) {
-        self.levels[self.base].sample_lanes(self.mag, u, v, swz, out);
+        self.levels[self.base].sample_lanes(self.mag, n, u, v, swz, out);
     }
 
     /// Level(s), blend weight of the second and filter for LOD `lod` (bias
@@ -402,16 +408,20 @@ impl<'a> Sampler<'a> {
         std::array::from_fn(|c| c0[c] * (1.0 - t) + c1[c] * t)
     }
 
-    /// Samples every lane at its own LOD (`lod[l]`, bias already added).
+    /// Samples lanes `0..n` at their own LODs (`lod[l]`, bias already
+    /// added).
+    #[inline(always)]
     pub fn sample_lanes_lod(
         &self,
+        n: usize,
         u: &[f32; LANES],
         v: &[f32; LANES],
         lod: &[f32; LANES],
         swz: [usize; 4],
         out: &mut [[f32; LANES]; 4],
     ) {
-        for l in 0..LANES {
+        let n = n.min(LANES);
+        for l in 0..n {
             let t = self.sample_lod(u[l], v[l], lod[l]);
             for c in 0..4 {
                 out[c][l] = t[swz[c]];

@@ -1182,6 +1182,98 @@ fn busy_draw(texels: &[[f32; 4]], w: u32, h: u32) -> Draw<'_> {
     d
 }
 
+/// Runs `f` with the portable executor forced on this thread.
+fn portable<T>(f: impl FnOnce() -> T) -> T {
+    exec::PORTABLE_ONLY.with(|p| p.set(true));
+    let r = f();
+    exec::PORTABLE_ONLY.with(|p| p.set(false));
+    r
+}
+
+/// Every arithmetic op on operands from tiny (subnormal) to huge, negative,
+/// zero and through the special cases of log, rcp, rsq, pow and nrm.
+const EVERY_OP: &str = "dcl_texcoord0 v0
+     def c0, 1e-40, 3e38, -0.5, 0.1
+     mul r0, v0, v0
+     mad r1, r0, c0.y, -v0
+     mul r2, v0, c0.x
+     log r3.x, r0.x
+     log r3.y, r2.y
+     exp r3.z, v0.z
+     rcp r3.w, r2.x
+     rsq r4.x, v0.y
+     pow r4.y, v0.x, v0.w
+     frc r4.z, r1.z
+     lrp r4.w, c0.w, r0.x, r1.y
+     nrm r5.xyz, r2
+     sincos r6.xy, c0.w
+     dp2add r6.z, v0, r1, c0.z
+     dp3 r6.w, r1, r0
+     cmp r7, -v0, r0, r1
+     min r8, r1, r2
+     max r9, r1, r3
+     dsx r10, r1
+     dsy r11, r3
+     add r0, r0, r3
+     add r0, r0, r4
+     add r0, r0, r5
+     add r0, r0, r6
+     add r7, r7, r8
+     add r7, r7, r9
+     add r7, r7, r10
+     add r7, r7, r11
+     mov_sat r12, r1
+     mov oC0, r0
+     mov oC1, r7
+     mov oC2, r12";
+
+#[test]
+fn the_avx2_executor_matches_the_portable_one_bit_for_bit() {
+    let texels: Vec<[f32; 4]> = (0..15)
+        .map(|i| {
+            let f = i as f32;
+            [f * 0.1, 1.0 - f * 0.05, f * f * 0.01, 0.5]
+        })
+        .collect();
+    let busy = compiled(BUSY);
+    let every = compiled(EVERY_OP);
+    let mut wide = Draw::new(37, 23);
+    wide.inputs.push((
+        0,
+        LinearInput {
+            base: [-3.0e-20, -7.5, 0.0, -1.0e30],
+            ddx: [1.3e-19, 0.71, -0.37, 3.1e28],
+            ddy: [-2.1e-21, -1.9, 2.3, -7.7e27],
+        },
+    ));
+    for (c, d) in [(&busy, busy_draw(&texels, 37, 23)), (&every, wide)] {
+        let fast = run_with_threads(c, &d, 1).unwrap();
+        let slow = portable(|| run_with_threads(c, &d, 1).unwrap());
+        assert!(same_bits(&fast, &slow), "the two executors differ");
+    }
+}
+
+#[test]
+fn small_targets_split_over_threads_with_identical_results() {
+    let texels: Vec<[f32; 4]> = (0..15).map(|i| [i as f32 * 0.3, 0.5, 0.25, 1.0]).collect();
+    let c = compiled(BUSY);
+    // 11×8 is pass 1's target shape: 24 quads, 2 full batches on one
+    // thread (16 + 8 quads), cut into 12 + 12, 8 + 8 + 8, 4 × 6... on more.
+    for (w, h) in [(11, 8), (3, 3), (1, 1), (17, 2)] {
+        let d = busy_draw(&texels, w, h);
+        let one = run_with_threads(&c, &d, 1).unwrap();
+        for threads in 2..=7 {
+            let other = run_with_threads(&c, &d, threads).unwrap();
+            assert!(same_bits(&one, &other), "{w}x{h}: {threads} threads differ");
+        }
+    }
+    assert_eq!(batch_quads(24, 1), 16);
+    assert_eq!(batch_quads(24, 2), 12);
+    assert_eq!(batch_quads(24, 3), 8);
+    assert_eq!(batch_quads(24, 8), 4);
+    assert_eq!(batch_quads(10_000, 2), 16);
+}
+
 #[test]
 fn results_are_identical_for_any_thread_count() {
     let texels: Vec<[f32; 4]> = (0..15)

@@ -68,18 +68,19 @@ impl Worker<'_, '_> {
     /// w, MS `texldp---ps`).
     #[inline(always)]
     fn tex_coords(&mut self, a: SrcOp, projected: bool) {
+        let n = self.span();
         let (am, ax) = a.mod_bits();
         let (ru, rv, rw) = (self.row(a, 0), self.row(a, 1), self.row(a, 3));
         let [u, v] = &mut self.aux;
         let (su, sv, sw) = (&self.rows[ru], &self.rows[rv], &self.rows[rw]);
         if projected {
-            for l in 0..LANES {
+            for l in 0..n {
                 let w = modify(sw[l], am, ax);
                 u[l] = modify(su[l], am, ax) / w;
                 v[l] = modify(sv[l], am, ax) / w;
             }
         } else {
-            for l in 0..LANES {
+            for l in 0..n {
                 u[l] = modify(su[l], am, ax);
                 v[l] = modify(sv[l], am, ax);
             }
@@ -89,13 +90,15 @@ impl Worker<'_, '_> {
     /// λ of `texld`/`texldp`/`texldb` from the quads' gradients: recorded
     /// for `site`, and written per lane to `lod` when `need` (`bias_w`: the
     /// source whose w `texldb` adds).
+    #[inline(always)]
     fn implicit_lod(&mut self, sm: &Sampler, site: u16, need: bool, bias_w: Option<SrcOp>) {
+        let n = self.span();
         let (wf, hf) = sm.size();
         let bias = sm.bias();
         let any = quads_any(self.exec);
         if !need && bias_w.is_none() {
             // Only the statistic.
-            let (lo, hi) = quad_len2_range(&self.aux[0], &self.aux[1], wf, hf, any);
+            let (lo, hi) = quad_len2_range(n, &self.aux[0], &self.aux[1], wf, hf, any);
             if let Some(st) = self.sites.get_mut(site as usize) {
                 st.len2_min = if lo < st.len2_min { lo } else { st.len2_min };
                 st.len2_max = if hi > st.len2_max { hi } else { st.len2_max };
@@ -103,7 +106,7 @@ impl Worker<'_, '_> {
             return;
         }
         let mut lod = [0f32; LANES];
-        for q in 0..LANES / 4 {
+        for q in 0..n / 4 {
             let lq = lod_of_len2(quad_len2(&self.aux[0], &self.aux[1], wf, hf, q)) + bias;
             lod[4 * q..4 * q + 4].copy_from_slice(&[lq; 4]);
         }
@@ -113,13 +116,13 @@ impl Worker<'_, '_> {
             // result is undefined).
             let (am, ax) = w.mod_bits();
             let rw = &self.rows[self.row(w, 3)];
-            for l in 0..LANES {
+            for l in 0..n {
                 lod[l] += modify(rw[l], am, ax);
             }
         }
         let (mut lo, mut hi) = (f32::INFINITY, f32::NEG_INFINITY);
         let e = self.exec;
-        for l in 0..LANES {
+        for l in 0..n {
             if (e >> l) & 1 != 0 {
                 lo = lo.min(lod[l]);
                 hi = hi.max(lod[l]);
@@ -132,7 +135,9 @@ impl Worker<'_, '_> {
     }
 
     /// `texld`, `texldp`, `texldb`, `texldl` on a 2D sampler.
+    #[inline(always)]
     pub(super) fn texld(&mut self, d: DstOp, a: SrcOp, s: SamplerOp, kind: TexKind, site: u16) {
+        let n = self.span();
         if kind != TexKind::LdL {
             self.note_site(site);
         }
@@ -155,7 +160,7 @@ impl Worker<'_, '_> {
                         let (am, ax) = a.mod_bits();
                         let rw = &self.rows[self.row(a, 3)];
                         let bias = sm.bias();
-                        for l in 0..LANES {
+                        for l in 0..n {
                             self.lod[l] = modify(rw[l], am, ax) + bias;
                         }
                     }
@@ -167,6 +172,7 @@ impl Worker<'_, '_> {
 
     /// `texldd`: λ from the given gradients (src2 = ∂/∂x, src3 = ∂/∂y, .xy).
     pub(super) fn texldd(&mut self, d: DstOp, a: SrcOp, s: SamplerOp, gx: SrcOp, gy: SrcOp) {
+        let n = self.span();
         self.tex_coords(a, false);
         let ctx = self.ctx;
         let sampler = ctx.samplers.get(s.index as usize).and_then(|x| x.as_ref());
@@ -178,7 +184,7 @@ impl Worker<'_, '_> {
             let (ym, yx) = gy.mod_bits();
             let (gxu, gxv) = (&self.rows[self.row(gx, 0)], &self.rows[self.row(gx, 1)]);
             let (gyu, gyv) = (&self.rows[self.row(gy, 0)], &self.rows[self.row(gy, 1)]);
-            for l in 0..LANES {
+            for l in 0..n {
                 let (xu, xv) = (modify(gxu[l], xm, xx) * wf, modify(gxv[l], xm, xx) * hf);
                 let (yu, yv) = (modify(gyu[l], ym, yx) * wf, modify(gyv[l], ym, yx) * hf);
                 let len2 = (xu * xu + xv * xv).max(yu * yu + yv * yv);
@@ -190,8 +196,10 @@ impl Worker<'_, '_> {
 
     /// Samples at the coordinates in `aux` (and the LODs in `lod` when
     /// `need`) and stores the result.
+    #[inline(always)]
     fn tex_sample(&mut self, d: DstOp, s: SamplerOp, sampler: Option<&Sampler>, need: bool) {
         let swz: [usize; 4] = std::array::from_fn(|c| ((s.swz >> (2 * c)) & 3) as usize);
+        let n = self.span();
         let Some(sampler) = sampler else {
             for c in 0..4 {
                 self.tmp[c] = [UNBOUND[swz[c]]; LANES];
@@ -200,7 +208,7 @@ impl Worker<'_, '_> {
             return;
         };
         if need {
-            sampler.sample_lanes_lod(&self.aux[0], &self.aux[1], &self.lod, swz, &mut self.tmp);
+            sampler.sample_lanes_lod(n, &self.aux[0], &self.aux[1], &self.lod, swz, &mut self.tmp);
             self.store::<false>(d, d.mask());
             return;
         }
@@ -210,7 +218,7 @@ impl Worker<'_, '_> {
             let base = d.row as usize;
             if let Some(dst) = self.rows.get_mut(base..base + 4) {
                 if let Ok(dst) = <&mut [[f32; LANES]; 4]>::try_from(dst) {
-                    sampler.sample_lanes(&self.aux[0], &self.aux[1], swz, dst);
+                    sampler.sample_lanes(n, &self.aux[0], &self.aux[1], swz, dst);
                     if d.output() {
                         let k = (base - self.ctx.compiled.layout.output as usize) / 4;
                         self.written |= 1 << k;
@@ -219,7 +227,7 @@ impl Worker<'_, '_> {
                 }
             }
         }
-        sampler.sample_lanes(&self.aux[0], &self.aux[1], swz, &mut self.tmp);
+        sampler.sample_lanes(n, &self.aux[0], &self.aux[1], swz, &mut self.tmp);
         self.store::<false>(d, d.mask());
     }
 }

@@ -37,34 +37,7 @@ pub(super) fn read(
     let row_bytes = width * header.channels * 4;
     let expected = (row_bytes * height) as u64;
 
-    let mut data = Vec::new();
     let read_error = |e| ImageError::io(path, "read", e);
-    (&mut reader)
-        .take(expected + 1)
-        .read_to_end(&mut data)
-        .map_err(read_error)?;
-    let found = data.len() as u64;
-    if found < expected {
-        let incomplete = height - data.len() / row_bytes;
-        return Err(ImageError::Truncated {
-            path: path.to_path_buf(),
-            format: FORMAT,
-            missing: format!(
-                "pixel data ends after {found} of {expected} bytes; rows are stored \
-                 bottom-to-top, so the top {incomplete} of the {height} rows of the picture are \
-                 incomplete"
-            ),
-        });
-    }
-    if found > expected {
-        let extra = io::copy(&mut reader, &mut io::sink()).map_err(read_error)?;
-        return Err(ImageError::TrailingData {
-            path: path.to_path_buf(),
-            format: FORMAT,
-            extra_bytes: extra + 1,
-        });
-    }
-
     let decode = |b: &[u8]| {
         let bytes = [b[0], b[1], b[2], b[3]];
         match header.little_endian {
@@ -72,17 +45,50 @@ pub(super) fn read(
             false => f32::from_be_bytes(bytes),
         }
     };
-    let mut pixels = Vec::with_capacity(width * height);
-    // File row 0 is the bottom of the picture: walk the file's rows backwards
-    // so that pixels[0..width] is the top row.
-    for row in data.chunks_exact(row_bytes).rev() {
-        for sample in row.chunks_exact(header.channels * 4) {
-            let r = decode(&sample[0..4]);
-            pixels.push(match header.channels {
-                3 => [r, decode(&sample[4..8]), decode(&sample[8..12]), 1.0],
-                _ => [r, r, r, 1.0],
+    // Rows are decoded as they are read: the file is never held whole, and
+    // memory grows with the bytes actually found.
+    let mut pixels: Vec<[f32; 4]> = Vec::new();
+    let mut row = Vec::with_capacity(row_bytes);
+    for i in 0..height {
+        row.clear();
+        (&mut reader)
+            .take(row_bytes as u64)
+            .read_to_end(&mut row)
+            .map_err(read_error)?;
+        if row.len() < row_bytes {
+            let found = (i * row_bytes + row.len()) as u64;
+            let incomplete = height - i;
+            return Err(ImageError::Truncated {
+                path: path.to_path_buf(),
+                format: FORMAT,
+                missing: format!(
+                    "pixel data ends after {found} of {expected} bytes; rows are stored \
+                     bottom-to-top, so the top {incomplete} of the {height} rows of the picture \
+                     are incomplete"
+                ),
             });
         }
+        pixels.extend(row.chunks_exact(header.channels * 4).map(|sample| {
+            let r = decode(&sample[0..4]);
+            match header.channels {
+                3 => [r, decode(&sample[4..8]), decode(&sample[8..12]), 1.0],
+                _ => [r, r, r, 1.0],
+            }
+        }));
+    }
+    // File row 0 is the bottom of the picture: swap rows end for end so that
+    // pixels[0..width] is the top row.
+    for i in 0..height / 2 {
+        let (upper, lower) = pixels.split_at_mut((height - 1 - i) * width);
+        upper[i * width..(i + 1) * width].swap_with_slice(&mut lower[..width]);
+    }
+    let extra = io::copy(&mut reader, &mut io::sink()).map_err(read_error)?;
+    if extra > 0 {
+        return Err(ImageError::TrailingData {
+            path: path.to_path_buf(),
+            format: FORMAT,
+            extra_bytes: extra,
+        });
     }
     Ok(HdrImage {
         width: header.width,

@@ -461,12 +461,19 @@ pub fn srgb8_thresholds() -> &'static [f64; 255] {
     })
 }
 
-/// Linear RGBA (row-major) to packed 8-bit sRGB RGB, alpha dropped.
+/// Linear RGBA (row-major) to packed 8-bit sRGB RGB, alpha dropped; pixels
+/// are independent, so they are encoded in parallel on rayon's current pool.
 pub fn to_srgb8(linear: &[[f32; 4]]) -> Vec<u8> {
-    linear
-        .iter()
-        .flat_map(|p| [p[0], p[1], p[2]].map(|c| srgb8(c as f64)))
-        .collect()
+    use rayon::prelude::*;
+    let mut out = vec![0u8; 3 * linear.len()];
+    out.par_chunks_mut(3)
+        .zip(linear.par_iter())
+        .for_each(|(rgb, p)| {
+            for c in 0..3 {
+                rgb[c] = srgb8(p[c] as f64);
+            }
+        });
+    out
 }
 
 /// Counts and extremes of the per-pixel cross-check.
