@@ -51,6 +51,7 @@ const U32: f64 = f32::EPSILON as f64 / 2.0;
 /// listing ([`load::source_file`]).
 #[derive(Clone, Debug)]
 pub struct ShaderSource {
+    /// The source, named: text, or a compiled shader's listing.
     pub file: SourceFile,
 }
 
@@ -67,6 +68,7 @@ impl ShaderSource {
         ShaderSource { file }
     }
 
+    /// The source's name (a bundled name or the file's path).
     pub fn name(&self) -> &str {
         &self.file.name
     }
@@ -75,8 +77,12 @@ impl ShaderSource {
 /// Settings of one pipeline run.
 #[derive(Clone, Debug)]
 pub struct Settings {
+    /// Pixels per pass-1 block, (width, height): the article's 125 × 128 by
+    /// default.
     pub block: (u32, u32),
+    /// δ of log2(δ + L), set in the shader's constants.
     pub delta: f32,
+    /// The pass-1 target's format (R32F by default).
     pub format: TargetFormat,
     /// How the reference treats negative and non-finite luminance; the
     /// default, `Abs`, is what the `log` instruction computes.
@@ -110,9 +116,13 @@ impl Default for Settings {
 /// results).
 #[derive(Debug)]
 pub enum PipelineError {
+    /// A shader does not load; its diagnostics are inside.
     Source(crate::core::diag::SourceError),
+    /// The cost model cannot analyse a pass.
     Cost(String),
+    /// A pass's draw failed, on the emulator or on a GPU.
     Draw(DrawError),
+    /// The f64 reference cannot be computed for the block layout.
     Reference(String),
     /// The shader and the requested block do not fit together.
     Mismatch(String),
@@ -187,7 +197,9 @@ pub fn refuse_unset(
 /// One pass's cost: static analysis next to what the emulator counted.
 #[derive(Clone, Debug, Serialize)]
 pub struct PassCost {
+    /// The shader's name.
     pub shader: String,
+    /// Instruction slots, from the cost model.
     pub slots: u64,
     /// Executed slots per pixel from the cost model.
     pub executed_static: Range,
@@ -201,13 +213,16 @@ pub struct PassCost {
     /// Whether every pixel's count lies in the static range (true when
     /// nothing was counted).
     pub counts_agree: bool,
+    /// Whether the slots and the executed count fit the ps_3_0 limits.
     pub within_limits: bool,
 }
 
 /// The cross-check of one pass-1 block.
 #[derive(Clone, Debug, Serialize)]
 pub struct BlockCheck {
+    /// Block column, from the left.
     pub x: u32,
+    /// Block row, from the top.
     pub y: u32,
     /// What the emulated target holds.
     pub emulated: f64,
@@ -217,6 +232,8 @@ pub struct BlockCheck {
     pub difference: f64,
     /// The derived bound on |emulated − reference|.
     pub tolerance: f64,
+    /// Whether `difference` is within a finite `tolerance`, or both sides are
+    /// the same special value.
     pub agree: bool,
     /// The target format cannot hold the block's sum (f16 beyond ±65504).
     pub overflow: bool,
@@ -225,10 +242,17 @@ pub struct BlockCheck {
 /// A scalar comparison with its derived bound.
 #[derive(Clone, Debug, Serialize)]
 pub struct Comparison {
+    /// The value the passes produced.
     pub emulated: f64,
+    /// The value computed in f64.
     pub reference: f64,
+    /// |emulated − reference|; 0 when both are the same special value, ∞ when
+    /// only one is non-finite or they differ.
     pub difference: f64,
+    /// The derived bound on `difference` (0 for non-finite values).
     pub tolerance: f64,
+    /// Whether `difference` is within a finite `tolerance`, or both sides are
+    /// the same special value.
     pub agree: bool,
 }
 
@@ -263,19 +287,28 @@ impl Comparison {
 /// Everything a run computed.
 #[derive(Clone, Debug, Serialize)]
 pub struct LuminanceRun {
+    /// Image width in pixels.
     pub width: u32,
+    /// Image height in pixels.
     pub height: u32,
+    /// Pixels per pass-1 block, (width, height).
     pub block: (u32, u32),
+    /// The pass-1 target's size in blocks, (⌈W / bw⌉, ⌈H / bh⌉).
     pub targets: (u32, u32),
+    /// The pass-1 target's format.
     pub target_format: TargetFormat,
+    /// δ of log2(δ + L), as the shaders received it.
     pub delta: f32,
     /// Texels read outside the image (BORDER returns black: log2(δ) each).
     pub padded_samples: u64,
+    /// Pass 1's cost (every column, or all but the last).
     pub pass1: PassCost,
     /// The last column's pass-1 shader, when one draws it
     /// ([`run_with_last_column`]); `None` with BORDER padding in x.
     pub pass1_last: Option<PassCost>,
+    /// Pass 2's cost.
     pub pass2: PassCost,
+    /// Every pass-1 block against its f64 sum, row by row from the top left.
     pub blocks: Vec<BlockCheck>,
     /// Pass 2's output against its formula applied in f64 to the stored
     /// pass-1 target.
@@ -285,9 +318,11 @@ pub struct LuminanceRun {
     pub log_average: f64,
     /// The true L̄w of the image: every pixel once, no padding.
     pub reference_log_average: f64,
+    /// |L̄w − reference| / reference.
     pub relative_error: f64,
     /// Derived bound on the relative error if the shaders are right.
     pub relative_tolerance: f64,
+    /// Whether L̄w is within [`LuminanceRun::relative_tolerance`] of the reference.
     pub agree: bool,
     /// What BORDER padding does to L̄w when nobody corrects for it: the
     /// factor 2^(P·log2(δ)/N).
@@ -296,6 +331,7 @@ pub struct LuminanceRun {
     pub ill_conditioned: u64,
     /// Non-finite pixels in the image.
     pub nonfinite_pixels: u64,
+    /// Pixels with negative luminance in the image.
     pub negative_pixels: u64,
     /// Who drew the passes: `emulator`, or `GPU: <device>`.
     pub drawn_by: String,
@@ -322,6 +358,7 @@ impl LuminanceRun {
             && self.pass2.within_limits
     }
 
+    /// Whether every pass-1 block is within its bound.
     pub fn blocks_agree(&self) -> bool {
         self.blocks.iter().all(|b| b.agree)
     }
@@ -942,13 +979,21 @@ fn reads_c0y(l: &load::Loaded) -> bool {
 /// One pass of any shader over a texture: what `ps30 run` does.
 #[derive(Clone, Debug)]
 pub struct PassSetup {
+    /// The render target, width × height in pixels.
     pub target: (u32, u32),
+    /// The application's constants.
     pub constants: Constants,
+    /// s0's sampler state.
     pub sampler: SamplerState,
+    /// The format the target stores.
     pub format: TargetFormat,
+    /// Emulator threads; `None` for every core.
     pub threads: Option<usize>,
+    /// The emulator's bounds (executed slots per pixel, target size).
     pub limits: emu::EmuLimits,
+    /// Who draws the pass.
     pub backend: Backend,
+    /// The special values of the arithmetic.
     pub float_rules: FloatRules,
 }
 
@@ -960,6 +1005,7 @@ pub struct PassOutput {
     /// Every output register the shader writes, with the statistics of
     /// what the target stores.
     pub outputs: Vec<crate::jobs::outputs::OutputRegister>,
+    /// Its cost: static, and counted where the emulator drew it.
     pub cost: PassCost,
     /// Who drew it: `emulator`, or `GPU: <device>`.
     pub drawn_by: String,

@@ -68,7 +68,9 @@ pub enum NonFinitePolicy {
 /// The two policy decisions together.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize)]
 pub struct Policy {
+    /// What a negative luminance contributes.
     pub negative: NegativePolicy,
+    /// What a NaN or infinite luminance contributes.
     pub non_finite: NonFinitePolicy,
 }
 
@@ -103,9 +105,13 @@ impl Policy {
 /// The log-average luminance of an image and the figures behind it.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Reference {
+    /// Image width in pixels.
     pub width: u32,
+    /// Image height in pixels.
     pub height: u32,
+    /// δ of log2(δ + L).
     pub delta: f64,
+    /// How negative and non-finite luminances were treated.
     pub policy: Policy,
     /// Terms in the sum: `width * height`, less the pixels the policy skips.
     pub samples: u64,
@@ -149,6 +155,7 @@ pub fn log_average(image: &HdrImage, delta: f64, policy: Policy) -> Reference {
 pub struct Band<'a> {
     /// The image row of the band's first row.
     pub y0: u32,
+    /// Image width in pixels: the length of each of the band's rows.
     pub width: u32,
     /// The band's pixels, row-major.
     pub pixels: &'a [[f32; 4]],
@@ -283,8 +290,12 @@ impl<A: BlockFold, B: BlockFold> BlockFold for (A, B) {
 /// corner, the last column reading `last_width` texels per line.
 #[derive(Clone, Copy, Debug)]
 pub struct Tiling {
+    /// Block width in texels.
     pub block_width: u32,
+    /// Block height in texels.
     pub block_height: u32,
+    /// Texels per line the last column of blocks reads (`block_width` unless a
+    /// last-column shader reads fewer).
     pub last_width: u32,
 }
 
@@ -413,7 +424,9 @@ impl SumFold {
 /// them.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct BlockSums {
+    /// Block width in texels.
     pub block_width: u32,
+    /// Block height in texels.
     pub block_height: u32,
     /// Blocks per row: `ceil(width / block_width)`.
     pub nx: u32,
@@ -442,12 +455,20 @@ impl BlockSums {
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum ReferenceError {
     /// A block side is 0.
-    ZeroBlockSize { block_width: u32, block_height: u32 },
+    ZeroBlockSize {
+        /// The block width asked for.
+        block_width: u32,
+        /// The block height asked for.
+        block_height: u32,
+    },
     /// The last column's read width does not cover the frame's real width
     /// there, or exceeds the block width.
     LastWidth {
+        /// Texels per line the last column reads.
         last_width: u32,
+        /// The image's texels in the last column: `W − (nx − 1)·bw`.
         real_width: u32,
+        /// The block width.
         block_width: u32,
     },
 }
