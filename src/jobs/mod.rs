@@ -32,13 +32,11 @@ pub mod bundled;
 pub mod compare;
 pub mod conformance;
 pub mod gen;
-#[allow(missing_docs)] // not yet documented item by item (ARCHITECTURE.md, "Documentation")
 pub mod luminance;
 pub mod outputs;
 pub mod profile;
 pub mod render;
 pub mod scenes;
 pub mod studies;
-#[allow(missing_docs)] // not yet documented item by item (ARCHITECTURE.md, "Documentation")
 pub mod tonemap;
 pub mod verify;

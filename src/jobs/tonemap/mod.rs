@@ -129,7 +129,12 @@ pub enum TonemapError {
     Pipeline(luminance::PipelineError),
     /// The pipeline ran but its L̄w cannot scale anything; the image has
     /// `non_finite` NaN or infinite pixels.
-    LogAverage { value: f64, non_finite: u64 },
+    LogAverage {
+        /// L̄w as the pipeline gave it (0, negative, NaN or ∞).
+        value: f64,
+        /// NaN or infinite pixels in the image.
+        non_finite: u64,
+    },
     /// The draw failed, on the emulator or on a GPU.
     Draw(crate::jobs::backend::DrawError),
     /// The tone-mapping shader does not load (its diagnostics are inside).
@@ -178,6 +183,7 @@ pub struct Operator {
     pub key: f64,
     /// The white point W, in the image's luminance units (may be ∞).
     pub white: f64,
+    /// Where the white point came from.
     pub white_source: WhiteSource,
     /// L̄w exactly as the shader samples it (the f32 in pass 2's target).
     pub log_average: f64,
@@ -479,9 +485,11 @@ pub fn to_srgb8(linear: &[[f32; 4]]) -> Vec<u8> {
 /// Counts and extremes of the per-pixel cross-check.
 #[derive(Clone, Debug, Default, Serialize)]
 pub struct Crosscheck {
+    /// Pixels in the image.
     pub pixels: u64,
     /// Pixels compared (all but the non-finite ones).
     pub checked_pixels: u64,
+    /// Non-finite pixels (not compared).
     pub nonfinite_pixels: u64,
     /// Pixels with Lw exactly 0 (shown black).
     pub zero_luminance_pixels: u64,
@@ -516,6 +524,8 @@ pub struct Crosscheck {
 }
 
 impl Crosscheck {
+    /// Whether every channel is within its bound and every differing 8-bit
+    /// code is explained.
     pub fn agree(&self) -> bool {
         self.outside_bound == 0 && self.unexplained_8bit == 0
     }
@@ -640,14 +650,19 @@ fn crosscheck_chunk(
 /// Everything a tone-mapping run produced.
 #[derive(Clone, Debug)]
 pub struct ToneMapped {
+    /// Image width in pixels.
     pub width: u32,
+    /// Image height in pixels.
     pub height: u32,
     /// The luminance pipeline's run that gave L̄w (and its own cross-check).
     pub luminance: LuminanceRun,
+    /// The key, white point and L̄w the shader ran with.
     pub operator: Operator,
     /// The shader's oC0 per pixel, row-major: linear, saturated.
     pub linear: Vec<[f32; 4]>,
+    /// The tone-mapping pass's cost.
     pub cost: PassCost,
+    /// The per-pixel cross-check against the f64 operator.
     pub check: Crosscheck,
 }
 
