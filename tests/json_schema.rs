@@ -166,20 +166,6 @@ fn check(command: &str, args: &[&str], dir: &Path, codes: &[i32]) -> Value {
     v
 }
 
-/// The loop listing's constants for forest.hdr, as the README's `run` sets them.
-const LOOP: [&str; 10] = [
-    "--int",
-    "i1=128",
-    "--int",
-    "i2=52",
-    "--const",
-    "c0=0,0,0,0",
-    "--const",
-    "c1=0.0009765625,0.001953125,0,1",
-    "--const",
-    "c3=0.27,0.67,0.06,0.01",
-];
-
 #[test]
 fn every_command_matches_the_schema() {
     let repo = bin::repo();
@@ -227,7 +213,7 @@ fn every_command_matches_the_schema() {
         "8x10",
         "--json",
     ];
-    run.extend(LOOP);
+    run.extend(bin::LOOP_CONSTANTS);
     check("run", &run, repo, &[0]);
     let v = check(
         "luminance",

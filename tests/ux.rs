@@ -25,21 +25,6 @@ fn err(o: &Output) -> String {
     String::from_utf8_lossy(&o.stderr).into_owned()
 }
 
-/// The constants the loop listing reads, as the README's `run` example sets
-/// them for forest.hdr (c0.z = 0 clears the accumulator).
-const LOOP_CONSTANTS: [&str; 10] = [
-    "--int",
-    "i1=128",
-    "--int",
-    "i2=52",
-    "--const",
-    "c0=0,0,0,0",
-    "--const",
-    "c1=0.0009765625,0.001953125,0,1",
-    "--const",
-    "c3=0.27,0.67,0.06,0.01",
-];
-
 /// A `w × h` PFM (colour) whose pixels vary smoothly, written to `path`.
 fn pfm(path: &Path, w: u32, h: u32) {
     let mut bytes = format!("PF\n{w} {h}\n-1\n").into_bytes();
@@ -97,7 +82,7 @@ fn a_run_on_constants_nobody_set_is_refused_naming_them() {
         "--target",
         "8x10",
     ];
-    args.extend(LOOP_CONSTANTS);
+    args.extend(bin::LOOP_CONSTANTS);
     let o = ps30(&args);
     assert_eq!(o.status.code(), Some(0), "{}", err(&o));
     assert!(err(&o).is_empty(), "{}", err(&o));
@@ -291,7 +276,7 @@ fn the_output_format_follows_the_extension() {
             "-o",
             name,
         ];
-        args.extend(LOOP_CONSTANTS);
+        args.extend(bin::LOOP_CONSTANTS);
         ps30_in(d, &args)
     };
     for (name, magic) in [

@@ -42,3 +42,20 @@ pub fn ps30_with_stdin(args: &[&str], dir: &Path, input: &[u8]) -> Output {
         .expect("write stdin");
     child.wait_with_output().expect("wait for ps30")
 }
+
+/// The constants `corrected:loop` reads, as the README's `run` example sets
+/// them for forest.hdr (c0.z = 0 clears the accumulator; 128 × 52 texels
+/// of a 1024 × 512 image).
+#[allow(dead_code)] // not every test crate needs it
+pub const LOOP_CONSTANTS: [&str; 10] = [
+    "--int",
+    "i1=128",
+    "--int",
+    "i2=52",
+    "--const",
+    "c0=0,0,0,0",
+    "--const",
+    "c1=0.0009765625,0.001953125,0,1",
+    "--const",
+    "c3=0.27,0.67,0.06,0.01",
+];

@@ -67,20 +67,28 @@ fn ordinary_clause(p: &Probe) -> String {
         thousands(p.emulator_max_ulp_exact),
         p.emulator_max_abs_exact
     );
-    if !p.orders.is_empty() {
-        let matches: Vec<String> = p
-            .orders
-            .iter()
-            .map(|(n, _, m)| format!("{n} {}", thousands(*m)))
-            .collect();
-        s.push_str(&format!(
-            " (where the orders differ, {} inputs, the device matches: {})",
-            thousands(p.orders[0].1),
-            matches.join(", ")
-        ));
-    }
+    s.push_str(&orders_clause(p));
     s.push_str(&spec_clause(p));
     s
+}
+
+/// Which evaluation order the device's results match, where the orders
+/// give different results (fused or not, left to right or pairwise); empty
+/// for instructions with one order.
+fn orders_clause(p: &Probe) -> String {
+    if p.orders.is_empty() {
+        return String::new();
+    }
+    let matches: Vec<String> = p
+        .orders
+        .iter()
+        .map(|(n, _, m)| format!("{n} {}", thousands(*m)))
+        .collect();
+    format!(
+        " (where the orders differ, {} inputs, the device matches: {})",
+        thousands(p.orders[0].1),
+        matches.join(", ")
+    )
 }
 
 /// Whether the device meets Vulkan's precision for the instruction.
@@ -102,18 +110,7 @@ pub fn describe_probe(p: &Probe) -> String {
     let mut parts = Vec::new();
     if p.ordinary_identical() {
         let mut s = format!("ordinary inputs: all {} identical", thousands(p.ordinary));
-        if !p.orders.is_empty() {
-            let matches: Vec<String> = p
-                .orders
-                .iter()
-                .map(|(n, _, m)| format!("{n} {}", thousands(*m)))
-                .collect();
-            s.push_str(&format!(
-                " (where the orders differ, {} inputs, the device matches: {})",
-                thousands(p.orders[0].1),
-                matches.join(", ")
-            ));
-        }
+        s.push_str(&orders_clause(p));
         parts.push(s);
     } else {
         parts.push(ordinary_clause(p));
