@@ -189,7 +189,7 @@ fn many_diagnostics_are_reported_in_linear_time_and_capped() {
         d,
         &["check", "errors.psh", "--max-input-bytes", "2000000"],
         2,
-        "99940 more errors not shown",
+        "99,940 more errors not shown",
     );
     assert_eq!(r.stderr.matches("unknown instruction").count(), 50);
     // 99,990 times the same error: one report with its count and lines.

@@ -515,7 +515,10 @@ impl Diagnostics {
         let count = |n: u64, what: &str| match n {
             0 => None,
             1 => Some(format!("1 more {what}")),
-            n => Some(format!("{n} more {what}s")),
+            n => Some(format!(
+                "{} more {what}s",
+                crate::core::numbers::thousands(n)
+            )),
         };
         let parts: Vec<String> = [count(errors, "error"), count(warnings, "warning")]
             .into_iter()

@@ -1,9 +1,8 @@
-//! Numbers as ps30 prints them, in one place: thousands separators, ranges,
-//! and short decimals, so that every command and report spells a figure the
-//! same way.
-
-use crate::core::cost::Range;
-use serde_json::{json, Value};
+//! Numbers as ps30 prints them, in one place: thousands separators, plurals,
+//! saturated counts and short decimals (a range of counts is spelled by
+//! `cost::Range::text` with these), so that every command and report spells
+//! a figure the same way. It sits below every other core module, so even
+//! diagnostics can use it.
 
 /// `64853` → `64,853`.
 pub fn thousands(v: u64) -> String {
@@ -41,24 +40,6 @@ pub fn count(v: u64) -> String {
         format!("more than {}", thousands(u64::MAX - 1))
     } else {
         thousands(v)
-    }
-}
-
-/// A range as `64,853` or `1,000–2,000` (saturated ends as [`count`] says).
-pub fn range_text(r: Range) -> String {
-    if r.is_exact() {
-        count(r.min)
-    } else {
-        format!("{}–{}", count(r.min), count(r.max))
-    }
-}
-
-/// A range as a JSON number when exact, `{"min":…,"max":…}` otherwise.
-pub fn range_json(r: Range) -> Value {
-    if r.is_exact() {
-        json!(r.min)
-    } else {
-        json!({"min": r.min, "max": r.max})
     }
 }
 

@@ -4,7 +4,7 @@
 use crate::core::audit;
 use crate::core::cost::{Analysis, Verdict};
 use crate::core::load::Loaded;
-use crate::core::numbers::{range_text, thousands};
+use crate::core::numbers::thousands;
 use crate::present::json;
 use serde_json::{json, Value};
 
@@ -36,8 +36,8 @@ pub fn check_text(name: &str, a: &Analysis) -> String {
             l.line,
             text,
             thousands(l.slots),
-            range_text(l.executions),
-            range_text(l.executed)
+            l.executions.text(),
+            l.executed.text()
         ));
     }
     if !a.loops.is_empty() {
@@ -50,11 +50,11 @@ pub fn check_text(name: &str, a: &Analysis) -> String {
                 "{:>5}  {:<14}  {:>10}  {:>8}  {:>13}  {:>8}  {:>11}\n",
                 l.line,
                 l.header,
-                range_text(l.iterations),
-                range_text(l.entries),
-                range_text(l.cost_per_iteration),
-                range_text(l.own_cost_per_iteration),
-                range_text(l.total)
+                l.iterations.text(),
+                l.entries.text(),
+                l.cost_per_iteration.text(),
+                l.own_cost_per_iteration.text(),
+                l.total.text()
             ));
         }
         out.push_str("(per iteration: one pass of the body with its own rep/endrep; own: excluding nested loops)\n");
@@ -69,7 +69,7 @@ pub fn check_text(name: &str, a: &Analysis) -> String {
     ));
     out.push_str(&format!(
         "executed  {:>11} / {:<8} {}\n",
-        range_text(a.executed),
+        a.executed.text(),
         thousands(p.max_executed),
         budget_text(a.executed.min, a.executed.max, p.max_executed)
     ));

@@ -6,7 +6,7 @@ use crate::core::cost::Profile;
 use crate::core::emu::findings::{grouped, Finding};
 use crate::core::image::Written;
 use crate::core::load::Loaded;
-use crate::core::numbers::{decimal, number_grouped, plural, range_text, thousands};
+use crate::core::numbers::{decimal, number_grouped, plural, thousands};
 use crate::jobs::luminance::{
     BlockCheck, Comparison, LuminanceRun, PassCost, PassOutput, FIT_TOLERANCE,
 };
@@ -143,7 +143,7 @@ fn limits_text(p: &PassCost) -> String {
     if p.executed_static.max > profile.max_executed {
         over.push(format!(
             "{} executed per pixel, {} allowed ({} over)",
-            range_text(p.executed_static),
+            p.executed_static.text(),
             thousands(profile.max_executed),
             thousands(p.executed_static.max - profile.max_executed)
         ));
@@ -160,7 +160,7 @@ pub fn counted_text(p: &PassCost) -> String {
     match p.executed_emulated {
         Some(r) => format!(
             "emulator counted {}{}",
-            range_text(r),
+            r.text(),
             if p.counts_agree {
                 ", same"
             } else {
@@ -176,7 +176,7 @@ fn pass_line(label: &str, p: &PassCost) -> String {
         "{label} {}: {} slots, {} executed per pixel ({})\n",
         p.shader,
         p.slots,
-        range_text(p.executed_static),
+        p.executed_static.text(),
         counted_text(p)
     );
     s.push_str(&limits_text(p));
@@ -395,8 +395,8 @@ pub fn pass_text(image: &str, out: &PassOutput, written: Option<(&Path, &Written
         Some(e) => format!(
             "slots {}, executed per pixel {} (cost model: {}{})\n",
             out.cost.slots,
-            range_text(e),
-            range_text(out.cost.executed_static),
+            e.text(),
+            out.cost.executed_static.text(),
             if out.cost.counts_agree {
                 ", same"
             } else {
@@ -406,7 +406,7 @@ pub fn pass_text(image: &str, out: &PassOutput, written: Option<(&Path, &Written
         None => format!(
             "slots {}, executed per pixel {} (cost model; not counted: drawn on the GPU)\n",
             out.cost.slots,
-            range_text(out.cost.executed_static)
+            out.cost.executed_static.text()
         ),
     });
     s.push_str(&limits_text(&out.cost));

@@ -3,7 +3,7 @@
 
 use crate::core::image::{Encoding, RenderTarget};
 use crate::core::merge::{BlendState, OutputState};
-use crate::core::numbers::{number, range_text, thousands};
+use crate::core::numbers::{number, thousands};
 use crate::jobs::render::{DrawList, Step, StepDetail, StepReport, TargetState};
 use serde_json::{json, Value};
 
@@ -56,8 +56,8 @@ pub fn step_line(list: &DrawList, r: &StepReport) -> String {
             "{shader}: {} pixels written, {} discarded; executed {} per pixel (cost model {}{}); {}",
             thousands(merged.written),
             thousands(merged.killed),
-            range_text(*executed),
-            range_text(*executed_static),
+            executed.text(),
+            executed_static.text(),
             if *counts_agree { ", same" } else { ", DIFFERENT" },
             output_text(&d.output)
         ),

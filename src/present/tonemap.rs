@@ -1,7 +1,7 @@
 //! What `ps30 tonemap` prints: L̄w, the operator, the cost and the pixel
 //! cross-check, as text and JSON.
 
-use crate::core::numbers::{number, plural, range_text, thousands};
+use crate::core::numbers::{number, plural, thousands};
 use crate::jobs::tonemap::{Operator, ToneMapped, WhiteSource};
 use crate::present::json as shape;
 
@@ -47,7 +47,7 @@ pub fn text(image: &str, t: &ToneMapped, written: Option<&str>) -> String {
         "shader {}: {} slots, {} executed per pixel ({})\n",
         t.cost.shader,
         t.cost.slots,
-        range_text(t.cost.executed_static),
+        t.cost.executed_static.text(),
         crate::present::luminance::counted_text(&t.cost)
     ));
     s.push_str(&format!(

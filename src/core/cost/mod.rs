@@ -90,6 +90,19 @@ pub struct Range {
 }
 
 impl Range {
+    /// The range as `64,853` or `1,000–2,000`, saturated ends as
+    /// [`count`](crate::core::numbers::count) spells them.
+    pub fn text(self) -> String {
+        use crate::core::numbers::count;
+        if self.is_exact() {
+            count(self.min)
+        } else {
+            format!("{}–{}", count(self.min), count(self.max))
+        }
+    }
+}
+
+impl Range {
     /// Nothing on every path.
     pub const ZERO: Range = Range { min: 0, max: 0 };
 

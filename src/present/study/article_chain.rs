@@ -2,7 +2,7 @@
 //! `reports/article-chain.md` with a preview of the tone-mapped frame.
 
 use super::{table, Page};
-use crate::core::numbers::{number, range_text, thousands};
+use crate::core::numbers::{number, thousands};
 use crate::jobs::render::StepDetail;
 use crate::jobs::studies::article_chain::ChainRun;
 use crate::present::report::figures::{box_downscale, Canvas};
@@ -26,8 +26,8 @@ fn lights_rows(r: &ChainRun) -> Vec<Vec<String>> {
                     ..
                 } => format!(
                     "{} ({}{})",
-                    range_text(*executed),
-                    range_text(*executed_static),
+                    executed.text(),
+                    executed_static.text(),
                     if *counts_agree {
                         ", same"
                     } else {
