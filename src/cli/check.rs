@@ -29,12 +29,7 @@ pub struct Args {
 }
 
 pub fn run(args: Args, ui: &Ui) -> super::Result {
-    let loaded = load_shader(
-        ui,
-        &args.shader,
-        &args.source.options(),
-        args.input.max_input_bytes,
-    )?;
+    let loaded = load_shader(ui, &args.shader, &args.source, &args.input)?;
     let resolved = args.constants.resolve(loaded.constants.as_ref())?;
     let found = audit(ui, &loaded, &resolved.given(&[], &args.source), false)?;
     let env = resolved.environment();

@@ -146,7 +146,7 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
     let (tw, th) = args
         .target
         .ok_or_else(|| BadInput("--target WxH is needed for one draw".into()))?;
-    let loaded = load_shader(ui, spec, &args.source.options(), args.input.max_input_bytes)?;
+    let loaded = load_shader(ui, spec, &args.source, &args.input)?;
     let program = loaded.shader.program();
     let mut draw = Draw::new(tw, th);
     draw.float_rules = args.float_rules.into();

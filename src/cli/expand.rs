@@ -30,12 +30,7 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
     if let Some(path) = &args.output {
         check_output_path(path, &[Path::new(&args.shader)])?;
     }
-    let loaded = load_shader(
-        ui,
-        &args.shader,
-        &args.source.options(),
-        args.input.max_input_bytes,
-    )?;
+    let loaded = load_shader(ui, &args.shader, &args.source, &args.input)?;
     let given = Given {
         defines: args.source.define.iter().map(|(n, _)| n.clone()).collect(),
         ..Given::default()

@@ -4,6 +4,7 @@
 //! success), writing to stderr (a closed stderr is no reason to stop),
 //! emitting diagnostics, and refusing an output path before any work.
 
+use super::args::{InputArgs, SourceArgs};
 use super::ui::Ui;
 use super::BadInput;
 use ps30::core::audit::{self, Finding, Given, Kind};
@@ -131,16 +132,18 @@ pub fn shader_source(spec: &str, max_bytes: u64) -> Result<ShaderSource, BadInpu
     )?))
 }
 
-/// Loads a shader argument (see [`shader_file`]): warnings to stderr; on
-/// errors every diagnostic to stderr and a one-line summary as the error.
+/// Loads a shader argument (see [`shader_file`]) with the command's `-D`,
+/// expansion cap and input cap: warnings to stderr; on errors every
+/// diagnostic to stderr and a one-line summary as the error.
 pub fn load_shader(
     ui: &Ui,
     spec: &str,
-    options: &Options,
-    max_bytes: u64,
+    source: &SourceArgs,
+    input: &InputArgs,
 ) -> Result<Loaded, BadInput> {
-    let file = shader_file(spec, options, max_bytes)?;
-    match load::load(file, options) {
+    let options = source.options();
+    let file = shader_file(spec, &options, input.max_input_bytes)?;
+    match load::load(file, &options) {
         Ok(l) => {
             if !ui.quiet {
                 emit(ui, &l.warnings, &l.file);

@@ -91,12 +91,7 @@ impl Args {
 /// found a problem.
 pub fn run(args: Args, ui: &Ui) -> super::Result {
     super::bound_threads(args.exec.threads())?;
-    let loaded = load_shader(
-        ui,
-        &args.shader,
-        &args.source.options(),
-        args.input.max_input_bytes,
-    )?;
+    let loaded = load_shader(ui, &args.shader, &args.source, &args.input)?;
     let input = args.input()?;
     let resolved = args.constants.resolve(loaded.constants.as_ref())?;
     let given = resolved.given(floats_set_by(&input), &args.source);

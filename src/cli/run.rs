@@ -53,12 +53,7 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
     if let Some(path) = &args.output {
         super::io::check_image_output(path, &[&args.image, Path::new(&args.shader)])?;
     }
-    let loaded = load_shader(
-        ui,
-        &args.shader,
-        &args.source.options(),
-        args.input.max_input_bytes,
-    )?;
+    let loaded = load_shader(ui, &args.shader, &args.source, &args.input)?;
     let resolved = args.constants.resolve(loaded.constants.as_ref())?;
     let found = audit(ui, &loaded, &resolved.given(&[], &args.source), true)?;
     let img = image::load(&args.image, &args.exec.image_limits())?;

@@ -66,12 +66,7 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
     if let Some(out) = &args.output {
         super::io::check_output_path(out, &[std::path::Path::new(&args.shader)])?;
     }
-    let loaded = load_shader(
-        ui,
-        &args.shader,
-        &args.source.options(),
-        args.input.max_input_bytes,
-    )?;
+    let loaded = load_shader(ui, &args.shader, &args.source, &args.input)?;
     let translation =
         translate::translate(&loaded.shader, args.float_rules.into(), Entry::Application)
             .map_err(|e| BadInput(format!("{}: {e}", loaded.file.name)))?;
