@@ -338,31 +338,7 @@ fn luminance_refuses_bad_images_and_values_with_exit_2() {
 fn run_writes_a_target_that_reads_back() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("sums.exr");
-    let o = ps30(
-        &[
-            "run",
-            "corrected:loop",
-            "--image",
-            "assets/hdr/forest.hdr",
-            "--target",
-            "8x10",
-            "--int",
-            "i1=128",
-            "--int",
-            "i2=52",
-            "--const",
-            "c0=0,0,0,0",
-            "--const",
-            "c1=0.0009765625,0.001953125,0,1",
-            "--const",
-            "c3=0.27,0.67,0.06,0.01",
-            "-o",
-            out.to_str().unwrap(),
-            "--json",
-            "--texels",
-        ],
-        repo(),
-    );
+    let o = bin::run_loop_example(&["-o", out.to_str().unwrap(), "--json", "--texels"]);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
     // 5 set-up + 52 lines of (3 + 128·9 + 1 + 2) + 1.
@@ -379,28 +355,7 @@ fn run_writes_a_target_that_reads_back() {
         assert_eq!(t[0].as_f64().unwrap() as f32, p[0]);
     }
     // Without --texels, no per-pixel data.
-    let o = ps30(
-        &[
-            "run",
-            "corrected:loop",
-            "--image",
-            "assets/hdr/forest.hdr",
-            "--target",
-            "8x10",
-            "--int",
-            "i1=128",
-            "--int",
-            "i2=52",
-            "--const",
-            "c0=0,0,0,0",
-            "--const",
-            "c1=0.0009765625,0.001953125,0,1",
-            "--const",
-            "c3=0.27,0.67,0.06,0.01",
-            "--json",
-        ],
-        repo(),
-    );
+    let o = bin::run_loop_example(&["--json"]);
     let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
     assert!(v.get("texels").is_none());
 }

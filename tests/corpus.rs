@@ -574,25 +574,11 @@ fn every_bound_is_tested_on_both_sides() {
     let run = |cap: &str| {
         ps30(
             &[
-                "run",
-                "corrected:loop",
-                "--image",
-                img,
-                "--target",
-                "8x10",
-                "--int",
-                "i1=128",
-                "--int",
-                "i2=52",
-                "--const",
-                "c0=0,0,0,0",
-                "--const",
-                "c1=0.0009765625,0.001953125,0,1",
-                "--const",
-                "c3=0.27,0.67,0.06,0.01",
-                "--max-target-pixels",
-                cap,
-            ],
+                &["run", "corrected:loop", "--image", img, "--target", "8x10"][..],
+                &bin::LOOP_CONSTANTS,
+                &["--max-target-pixels", cap],
+            ]
+            .concat(),
             d,
         )
     };
@@ -648,27 +634,18 @@ fn a_failed_run_leaves_no_file_behind() {
     // The draw fails (executed cap): no output file, not even a partial one.
     let o = ps30(
         &[
-            "run",
-            "corrected:loop",
-            "--image",
-            img.to_str().unwrap(),
-            "--target",
-            "8x10",
-            "--int",
-            "i1=128",
-            "--int",
-            "i2=52",
-            "--const",
-            "c0=0,0,0,0",
-            "--const",
-            "c1=0.0009765625,0.001953125,0,1",
-            "--const",
-            "c3=0.27,0.67,0.06,0.01",
-            "--max-executed-per-pixel",
-            "100",
-            "-o",
-            "out.exr",
-        ],
+            &[
+                "run",
+                "corrected:loop",
+                "--image",
+                img.to_str().unwrap(),
+                "--target",
+                "8x10",
+            ][..],
+            &bin::LOOP_CONSTANTS,
+            &["--max-executed-per-pixel", "100", "-o", "out.exr"],
+        ]
+        .concat(),
         d,
     );
     expect("a failing draw", &o, 2, "--max-executed-per-pixel");
@@ -705,28 +682,18 @@ fn outputs_are_byte_identical_across_runs_and_thread_counts() {
         let out = format!("out{i}.exr");
         let o = ps30(
             &[
-                "run",
-                "corrected:loop",
-                "--image",
-                img.to_str().unwrap(),
-                "--target",
-                "8x10",
-                "--int",
-                "i1=128",
-                "--int",
-                "i2=52",
-                "--const",
-                "c0=0,0,0,0",
-                "--const",
-                "c1=0.0009765625,0.001953125,0,1",
-                "--const",
-                "c3=0.27,0.67,0.06,0.01",
-                "--threads",
-                threads,
-                "-o",
-                &out,
-                "--json",
-            ],
+                &[
+                    "run",
+                    "corrected:loop",
+                    "--image",
+                    img.to_str().unwrap(),
+                    "--target",
+                    "8x10",
+                ][..],
+                &bin::LOOP_CONSTANTS,
+                &["--threads", threads, "-o", &out, "--json"],
+            ]
+            .concat(),
             d,
         );
         assert_eq!(o.code, Some(0), "{}", o.stderr);

@@ -59,3 +59,21 @@ pub const LOOP_CONSTANTS: [&str; 10] = [
     "--const",
     "c3=0.27,0.67,0.06,0.01",
 ];
+
+/// Runs the README's `run` example — `corrected:loop` over forest.hdr into
+/// an 8 × 10 target with [`LOOP_CONSTANTS`] — with `extra` flags, in the
+/// repository root.
+#[allow(dead_code)] // not every test crate needs it
+pub fn run_loop_example(extra: &[&str]) -> Output {
+    let mut args = vec![
+        "run",
+        "corrected:loop",
+        "--image",
+        "assets/hdr/forest.hdr",
+        "--target",
+        "8x10",
+    ];
+    args.extend(LOOP_CONSTANTS);
+    args.extend(extra);
+    ps30(&args, repo())
+}
