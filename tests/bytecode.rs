@@ -20,12 +20,9 @@
 //! structure definitions) with several kinds of constants, arrays, a struct
 //! and defaults, and decoded field by field.
 
-#[path = "common/bin.rs"]
-mod bin;
-#[path = "common/ctab.rs"]
-mod ctab_builder;
-#[path = "common/program_gen.rs"]
-mod program_gen;
+use crate::common::bin;
+use crate::common::ctab as ctab_builder;
+use crate::common::program_gen;
 
 use ctab_builder::{comment, comment_lines, table, Const, Ty};
 use proptest::prelude::*;
@@ -37,8 +34,7 @@ use ps30::core::load::{self, Options};
 use std::path::Path;
 use std::time::{Duration, Instant};
 
-#[path = "common/counting.rs"]
-mod counting;
+use crate::common::counting;
 use counting::allocated_by;
 
 // ---------------------------------------------------------------------------

@@ -3,8 +3,7 @@
 
 use std::process::Output;
 
-#[path = "common/bin.rs"]
-mod bin;
+use crate::common::bin;
 use bin::{ps30, repo};
 
 fn stdout(o: &Output) -> String {
@@ -702,8 +701,7 @@ fn a_closed_stdout_is_not_an_error() {
 // Compiled shaders: ps30 asm, ps30 disasm, and bytecode everywhere a shader
 // is read.
 
-#[path = "common/ctab.rs"]
-mod ctab_builder;
+use crate::common::ctab as ctab_builder;
 
 /// `ps30 asm ARGS -o dir/NAME`, which must succeed; the path written.
 fn asm(dir: &std::path::Path, args: &[&str], name: &str) -> std::path::PathBuf {

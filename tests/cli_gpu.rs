@@ -1,10 +1,8 @@
 //! The GPU commands from the outside: `translate`, `compare`, and
 //! `--backend gpu` with and without a Vulkan adapter (exit codes, messages).
 
-#[path = "common/bin.rs"]
-mod bin;
-#[path = "common/gpu.rs"]
-mod gpu_device;
+use crate::common::bin;
+use crate::common::gpu as gpu_device;
 
 use bin::{ps30, repo};
 use std::process::Command;

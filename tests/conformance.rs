@@ -29,8 +29,7 @@
 //! nested_loop_test and test_dsy), and Wine allows ±1 there. The exact
 //! comparisons (vFace, vPos, multiple render targets) store only 0 and 1.
 
-#[path = "common/gpu.rs"]
-mod gpu_device;
+use crate::common::gpu as gpu_device;
 
 use ps30::core::bytecode::write;
 use ps30::core::emu::{Draw, DrawOutput};

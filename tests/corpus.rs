@@ -9,10 +9,8 @@
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
-#[path = "common/bin.rs"]
-mod bin;
-#[path = "common/malformed_asm.rs"]
-mod malformed_asm;
+use crate::common::bin;
+use crate::common::malformed_asm;
 
 struct Outcome {
     code: Option<i32>,

@@ -553,8 +553,7 @@ fn the_doc_example_and_the_article_figures() {
 // ---------------------------------------------------------------------------
 // Random static programs.
 
-#[path = "common/program_gen.rs"]
-mod program_gen;
+use crate::common::program_gen;
 use program_gen::random_program;
 
 proptest! {

@@ -5,7 +5,7 @@
 
 use ps30::core::image::{load, ImageLimits};
 
-mod common;
+use crate::common;
 use common::{asset, IMAGES};
 
 fn original(name: &str) -> Vec<u8> {

@@ -32,7 +32,7 @@ use std::path::{Path, PathBuf};
 
 // Only `asset` is used here; the shared image list serves the per-image suites.
 #[allow(dead_code)]
-mod common;
+use crate::common;
 use common::asset;
 
 fn generated_dir() -> PathBuf {

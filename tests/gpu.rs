@@ -5,8 +5,7 @@
 //! `common/gpu.rs` opens; without one it says it was skipped (and fails
 //! under `CI`).
 
-#[path = "common/gpu.rs"]
-mod gpu_device;
+use crate::common::gpu as gpu_device;
 
 use gpu_device::gpu;
 use ps30::core::emu::{

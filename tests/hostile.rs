@@ -12,9 +12,7 @@ use std::path::Path;
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
-#[path = "common/bin.rs"]
-#[allow(dead_code)] // only repo() is used here
-mod bin;
+use crate::common::bin;
 
 /// What a bounded run left: exit code (None when killed by a signal or the
 /// deadline), stdout, stderr.

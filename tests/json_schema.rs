@@ -11,8 +11,7 @@
 use serde_json::Value;
 use std::path::Path;
 
-#[path = "common/bin.rs"]
-mod bin;
+use crate::common::bin;
 
 /// Keywords the validator checks, and annotations it may ignore.
 const CHECKED: [&str; 6] = ["type", "properties", "required", "items", "enum", "$ref"];

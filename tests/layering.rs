@@ -1,7 +1,8 @@
 //! The shape of the crate, checked: imports point one way (core ← jobs ←
 //! presentation ← command line), the library holds no command-line types,
-//! no two modules import each other, directly or around a cycle, and no
-//! function is longer than a reader can hold ([`MAX_FUNCTION_LINES`]).
+//! no two modules import each other, directly or around a cycle, no
+//! function is longer than a reader can hold ([`MAX_FUNCTION_LINES`]), and
+//! every test file is part of the one test binary.
 //!
 //! The check reads the sources: every `crate::…` and `super::…` path in
 //! code (comments and strings stripped), including the groups of `use`
@@ -652,4 +653,38 @@ fn the_reader_measures_functions() {
         .collect();
     assert_eq!(found, want);
     assert!(found[1].lines > MAX_FUNCTION_LINES);
+}
+
+/// The integration tests are one binary (`tests/suite.rs`, `autotests =
+/// false` in Cargo.toml): a file in `tests/` that `suite.rs` does not
+/// declare would never be compiled or run.
+#[test]
+fn every_test_file_is_part_of_the_suite() {
+    let tests = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests");
+    let suite = std::fs::read_to_string(tests.join("suite.rs")).unwrap();
+    let declared: BTreeSet<&str> = suite
+        .lines()
+        .filter_map(|l| l.strip_prefix("mod ")?.strip_suffix(';'))
+        .collect();
+    let mut files = BTreeSet::new();
+    for entry in std::fs::read_dir(&tests).unwrap() {
+        let path = entry.unwrap().path();
+        let is_rust = path.extension().is_some_and(|e| e == "rs");
+        let stem = path.file_stem().unwrap().to_str().unwrap().to_string();
+        if is_rust && stem != "suite" {
+            files.insert(stem);
+        }
+    }
+    let missing: Vec<&String> = files
+        .iter()
+        .filter(|f| !declared.contains(f.as_str()))
+        .collect();
+    assert!(
+        missing.is_empty(),
+        "tests/suite.rs does not declare {missing:?}"
+    );
+    // And the reading above finds the declarations it should: every file,
+    // plus `common`, which is a folder.
+    assert_eq!(declared.len(), files.len() + 1, "{declared:?}");
+    assert!(declared.contains("common") && declared.contains("layering"));
 }

@@ -267,8 +267,7 @@ fn the_luminance_pass_is_warned_about_its_level_of_detail() {
 
 // ----- the command line ----------------------------------------------------------
 
-#[path = "common/bin.rs"]
-mod bin;
+use crate::common::bin;
 
 fn ps30(args: &[&str]) -> std::process::Output {
     bin::ps30(args, bin::repo())

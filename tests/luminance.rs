@@ -14,7 +14,7 @@ use ps30::jobs::bundled::listing as bundled;
 use ps30::jobs::luminance::{run, LuminanceRun, Settings, ShaderSource};
 use serde_json::Value;
 
-mod common;
+use crate::common;
 use common::{asset, IMAGES};
 
 fn image(name: &str) -> HdrImage {

@@ -24,8 +24,7 @@ use ps30::core::load::{self, Options};
 use std::collections::BTreeMap;
 use std::time::{Duration, Instant};
 
-#[path = "common/counting.rs"]
-mod counting;
+use crate::common::counting;
 use counting::allocated_by;
 
 // ---------------------------------------------------------------------------
@@ -103,8 +102,7 @@ fn load_err(src: &str) -> SourceError {
 // ---------------------------------------------------------------------------
 // The table: (source, expected substring of the first error, line, column).
 
-#[path = "common/malformed_asm.rs"]
-mod malformed_asm;
+use crate::common::malformed_asm;
 use malformed_asm::CASES;
 
 #[test]

@@ -49,7 +49,7 @@
 //! tolerance; log-averages: relative 1.4e-13 against 1.4e-10 to 8e-10).
 //! Run with `--nocapture` to see them.
 
-mod common;
+use crate::common;
 use ps30::core::image::{load, HdrImage, ImageLimits};
 use ps30::jobs::luminance::reference::{block_sums, log_average, Policy, F64_UNIT_ROUNDOFF as U};
 use serde::Deserialize;

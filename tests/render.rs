@@ -2,8 +2,7 @@
 //! its lights, the light-model shader against its CPU computation, mip
 //! reductions against the f64 mean, and `ps30 render` on good and bad files.
 
-#[path = "common/bin.rs"]
-mod bin;
+use crate::common::bin;
 
 use bin::{ps30, repo};
 use ps30::core::image::{chain_weights, full_chain_levels, Encoding, OddSides, TargetFormat};

@@ -1,8 +1,7 @@
 //! The studies' numbers, asserted from ps30's own computation, each with the
 //! bound or the derivation it is held to written beside it.
 
-#[path = "common/bin.rs"]
-mod bin;
+use crate::common::bin;
 
 use bin::{ps30, repo};
 use ps30::core::image::{self, HdrImage, OddSides};

@@ -6,7 +6,7 @@
 //! shader's f32 arithmetic; nothing here widens it. The tests that perturb
 //! an output or the shader show that the check does fail when it should.
 
-mod common;
+use crate::common;
 
 use common::{asset, IMAGES};
 use ps30::core::image::{HdrImage, ImageLimits};
@@ -209,8 +209,7 @@ fn nan_pixels_are_refused_not_a_panic() {
 
 // ---- the command ----
 
-#[path = "common/bin.rs"]
-mod bin;
+use crate::common::bin;
 use bin::{ps30, repo};
 
 fn stderr(o: &Output) -> String {

@@ -6,8 +6,7 @@
 use std::path::Path;
 use std::process::Output;
 
-#[path = "common/bin.rs"]
-mod bin;
+use crate::common::bin;
 
 fn ps30(args: &[&str]) -> Output {
     bin::ps30(args, bin::repo())

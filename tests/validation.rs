@@ -18,8 +18,7 @@
 //! * `dcl_2d_centroid s0`, `dcl_2d_pp s0`: Microsoft's assembler encodes
 //!   both (Wine's vectors ps_3_0 #13 and #14), so `ps30 expand` keeps them.
 
-#[path = "common/bin.rs"]
-mod bin;
+use crate::common::bin;
 
 use ps30::core::front::print::write_program;
 use ps30::core::load::{self, Options};

@@ -15,13 +15,11 @@ pub fn ps30(args: &[&str], dir: &Path) -> Output {
 }
 
 /// The repository root (where `asm/` and `assets/` are).
-#[allow(dead_code)] // not every test crate needs it
 pub fn repo() -> &'static Path {
     Path::new(env!("CARGO_MANIFEST_DIR"))
 }
 
 /// Runs `ps30 ARGS` in `dir` with `input` on standard input.
-#[allow(dead_code)] // not every test crate needs it
 pub fn ps30_with_stdin(args: &[&str], dir: &Path, input: &[u8]) -> Output {
     use std::io::Write;
     use std::process::Stdio;
@@ -46,7 +44,6 @@ pub fn ps30_with_stdin(args: &[&str], dir: &Path, input: &[u8]) -> Output {
 /// The constants `corrected:loop` reads, as the README's `run` example sets
 /// them for forest.hdr (c0.z = 0 clears the accumulator; 128 × 52 texels
 /// of a 1024 × 512 image).
-#[allow(dead_code)] // not every test crate needs it
 pub const LOOP_CONSTANTS: [&str; 10] = [
     "--int",
     "i1=128",
@@ -63,7 +60,6 @@ pub const LOOP_CONSTANTS: [&str; 10] = [
 /// Runs the README's `run` example — `corrected:loop` over forest.hdr into
 /// an 8 × 10 target with [`LOOP_CONSTANTS`] — with `extra` flags, in the
 /// repository root.
-#[allow(dead_code)] // not every test crate needs it
 pub fn run_loop_example(extra: &[&str]) -> Output {
     let mut args = vec![
         "run",

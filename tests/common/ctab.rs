@@ -6,7 +6,6 @@
 //! d3dx9shader.h, independently of ps30's decoder.
 
 // Not every test crate that includes this module uses every function.
-#![allow(dead_code)]
 
 /// A D3DXSHADER_TYPEINFO to lay out.
 #[derive(Clone, Debug)]

@@ -1,11 +1,20 @@
-//! Shared by the integration tests that read the bundled HDR images.
+//! What several test modules share: the bundled images' paths (here), running
+//! the binary (`bin`), a counting allocator (`counting`), constant-table
+//! builders (`ctab`), a random valid-program generator (`program_gen`), the
+//! malformed-assembly cases (`malformed_asm`) and the GPU adapter check
+//! (`gpu`).
+
+pub mod bin;
+pub mod counting;
+pub mod ctab;
+pub mod gpu;
+pub mod malformed_asm;
+pub mod program_gen;
 
 use std::path::PathBuf;
 
 /// Every image in `assets/hdr` (tests/reference_values.rs checks the list
 /// against the folder and reference.json): the library's own list.
-// Not every test crate that includes this module reads the list.
-#[allow(unused_imports)]
 pub use ps30::present::report::IMAGES;
 
 /// Path of a bundled image or of `reference.json`.

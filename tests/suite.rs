@@ -1,0 +1,40 @@
+//! The integration tests, one test binary: each file in `tests/` is a module
+//! of this crate, so the library and its dependencies are linked into one
+//! executable instead of one per file (a clean `cargo test` spends its time
+//! compiling, and 28 test crates each compiled and linked the whole crate
+//! again). `tests/common/` holds what several files share. Run one file's
+//! tests with `cargo test --test suite FILE::`, e.g. `cargo test --test suite
+//! conformance::`. `Cargo.toml` turns off the discovery of separate test
+//! binaries (`autotests = false`); `layering.rs` checks that every file in
+//! `tests/` is declared here.
+
+mod common;
+
+mod bytecode;
+mod cli;
+mod cli_gpu;
+mod cli_ux;
+mod conformance;
+mod corpus;
+mod cost;
+mod damaged_inputs;
+mod gen;
+mod gpu;
+mod hostile;
+mod json_schema;
+mod layering;
+mod lights;
+mod luminance;
+mod malformed;
+mod quads;
+mod readme;
+mod reference_values;
+mod render;
+mod reports;
+mod roundtrip;
+mod studies;
+mod tonemap;
+mod translate;
+mod ux;
+mod validation;
+mod wine_vectors;
