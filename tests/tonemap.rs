@@ -19,6 +19,11 @@ fn load(name: &str) -> HdrImage {
 }
 
 fn run(image: &HdrImage, settings: &Settings) -> tonemap::ToneMapped {
+    run_pixels(image, settings).0
+}
+
+/// The run and the tone-mapped pixels (linear RGBA, row-major).
+fn run_pixels(image: &HdrImage, settings: &Settings) -> (tonemap::ToneMapped, Vec<[f32; 4]>) {
     tonemap::run(image, settings, &|_, _| {}).unwrap()
 }
 
@@ -59,9 +64,9 @@ fn the_shader_agrees_with_the_reference_on_every_shared_image() {
 fn negative_luminance_pixels_of_the_shared_images_are_black() {
     // courtyard.exr has 354 pixels with negative luminance (DWAB ringing).
     let img = load("courtyard.exr");
-    let t = run(&img, &Settings::default());
+    let (t, linear) = run_pixels(&img, &Settings::default());
     let mut negative = 0;
-    for (p, o) in img.pixels.iter().zip(&t.linear) {
+    for (p, o) in img.pixels.iter().zip(&linear) {
         if ps30::core::image::luminance(*p) < 0.0 {
             negative += 1;
             assert_eq!(&o[..3], &[0.0, 0.0, 0.0], "{p:?}");
@@ -95,17 +100,17 @@ fn synthetic() -> HdrImage {
 #[test]
 fn black_and_negative_pixels_are_exactly_black() {
     let img = synthetic();
-    let t = run(&img, &Settings::default());
+    let (t, linear) = run_pixels(&img, &Settings::default());
     assert!(t.all_agree(), "{:?}", t.check.first_outside);
-    assert_eq!(&t.linear[64][..3], &[0.0; 3], "black");
-    assert_eq!(&t.linear[65][..3], &[0.0; 3], "negative luminance");
+    assert_eq!(&linear[64][..3], &[0.0; 3], "black");
+    assert_eq!(&linear[65][..3], &[0.0; 3], "negative luminance");
     assert_eq!(t.check.zero_luminance_pixels, 1);
     assert_eq!(t.check.negative_luminance_pixels, 1);
     // The cancelling pixel: f32 cannot tell its luminance's sign, so black
     // and the scaled colour are both inside its bound.
     assert_eq!(t.check.sign_ambiguous_pixels, 1);
     // Alpha passes through, saturated.
-    assert!(t.linear.iter().all(|p| p[3] == 1.0));
+    assert!(linear.iter().all(|p| p[3] == 1.0));
 }
 
 #[test]
@@ -127,8 +132,7 @@ fn without_the_cmp_negative_pixels_light_up_and_the_check_fails() {
 #[test]
 fn a_perturbed_output_is_caught() {
     let img = synthetic();
-    let t = run(&img, &Settings::default());
-    let mut linear = t.linear.clone();
+    let (t, mut linear) = run_pixels(&img, &Settings::default());
     // A mid-grey channel moved by 1e-5: far beyond its ~1e-6 bound.
     let i = 30;
     assert!(linear[i][1] > 0.05 && linear[i][1] < 0.95);
@@ -149,7 +153,7 @@ fn the_white_point_maps_to_white() {
     // bound, and in 8 bits exactly), brighter ones are exactly 1 and
     // darker ones are below 1 (the ramp's steps are 20 % apart).
     let white = ps30::core::image::luminance(img.pixels[40]);
-    let t = run(
+    let (t, linear) = run_pixels(
         &img,
         &Settings {
             white: Some(white),
@@ -158,13 +162,13 @@ fn the_white_point_maps_to_white() {
     );
     assert!(t.all_agree());
     assert_eq!(t.operator.white_source, WhiteSource::Given);
-    assert!((t.linear[40][0] - 1.0).abs() < 1e-5, "{:?}", t.linear[40]);
-    assert_eq!(tonemap::srgb8(t.linear[40][0] as f64), 255);
-    for i in 41..64 {
-        assert_eq!(&t.linear[i][..3], &[1.0; 3], "pixel {i} is brighter than W");
+    assert!((linear[40][0] - 1.0).abs() < 1e-5, "{:?}", linear[40]);
+    assert_eq!(tonemap::srgb8(linear[40][0] as f64), 255);
+    for (i, p) in linear.iter().enumerate().take(64).skip(41) {
+        assert_eq!(&p[..3], &[1.0; 3], "pixel {i} is brighter than W");
     }
-    for i in 0..40 {
-        assert!(t.linear[i][0] < 0.999, "pixel {i}: {:?}", t.linear[i]);
+    for (i, p) in linear.iter().enumerate().take(40) {
+        assert!(p[0] < 0.999, "pixel {i}: {p:?}");
     }
     // Infinite: L / (1 + L) never reaches 1 in the reference.
     let t = run(
@@ -183,8 +187,8 @@ fn the_white_point_maps_to_white() {
 #[test]
 fn results_do_not_depend_on_bands_or_threads() {
     let img = load("sunset.pfm");
-    let a = run(&img, &Settings::default());
-    let b = run(
+    let (a, a_linear) = run_pixels(&img, &Settings::default());
+    let (b, b_linear) = run_pixels(
         &img,
         &Settings {
             band_rows: 2,
@@ -192,8 +196,9 @@ fn results_do_not_depend_on_bands_or_threads() {
             ..Settings::default()
         },
     );
-    assert!(a.linear == b.linear);
-    assert_eq!(a.srgb8(), b.srgb8());
+    assert!(a_linear == b_linear);
+    // The cross-check, made band by band, is the same scan whatever the bands.
+    assert_eq!(format!("{:?}", a.check), format!("{:?}", b.check));
 }
 
 #[test]
@@ -251,11 +256,37 @@ fn tonemap_writes_the_png_the_library_computes() {
     assert_eq!(v["white_source"], "scene_maximum");
     let decoded = image::open(&out).unwrap().to_rgb8();
     assert_eq!(decoded.dimensions(), (1024, 512));
-    let t = run(&load("city.exr"), &Settings::default());
-    assert_eq!(decoded.into_raw(), t.srgb8());
+    let (t, linear) = run_pixels(&load("city.exr"), &Settings::default());
+    assert_eq!(decoded.into_raw(), tonemap::to_srgb8(&linear));
     assert_eq!(v["log_average"], t.luminance.log_average);
     // Nothing on stderr: no progress bar without a terminal.
     assert_eq!(stderr(&o), "");
+}
+
+/// The float outputs, written band by band while the image is drawn, are
+/// the whole-image writer's files of the library's result, byte for byte.
+#[test]
+fn tonemap_float_outputs_are_the_whole_image_writers_bytes() {
+    let dir = tempfile::tempdir().unwrap();
+    let (t, linear) = run_pixels(&load("sunset.pfm"), &Settings::default());
+    let rgb: Vec<[f32; 3]> = linear.iter().map(|p| [p[0], p[1], p[2]]).collect();
+    for ext in ["exr", "pfm", "hdr"] {
+        let out = dir.path().join(format!("banded.{ext}"));
+        let o = ps30(
+            &[
+                "tonemap",
+                "assets/hdr/sunset.pfm",
+                "-o",
+                out.to_str().unwrap(),
+            ],
+            repo(),
+        );
+        assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+        let whole = dir.path().join(format!("whole.{ext}"));
+        ps30::core::image::write_rgb_float(&whole, t.width, t.height, &rgb).unwrap();
+        let (a, b) = (std::fs::read(&out).unwrap(), std::fs::read(&whole).unwrap());
+        assert!(a == b, ".{ext}: {} against {} bytes", a.len(), b.len());
+    }
 }
 
 #[test]

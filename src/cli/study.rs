@@ -116,7 +116,12 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
             .map_err(BadInput)?;
             let written = match &args.output {
                 Some(out) => {
-                    let png = encode_png_rgb8(out, r.width, r.height, &r.tonemap.srgb8())?;
+                    let png = encode_png_rgb8(
+                        out,
+                        r.width,
+                        r.height,
+                        &ps30::jobs::tonemap::to_srgb8(&r.tonemapped),
+                    )?;
                     Some((out.display().to_string(), png))
                 }
                 None => None,

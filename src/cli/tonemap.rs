@@ -1,11 +1,12 @@
 //! `ps30 tonemap`: the article's operator, run in the emulator, into an
-//! 8-bit sRGB PNG, cross-checked pixel by pixel.
+//! 8-bit sRGB PNG, cross-checked pixel by pixel. The result is never held
+//! whole in floating point: each band of rows is encoded as it is drawn.
 
 use super::args::{parse_key, parse_white, BackendArgs, ExecArgs, InputArgs};
 use super::io::{check_image_output, print_json, say, shader_source};
 use super::ui::Ui;
 use super::Outcome;
-use ps30::core::image::{self, write_png_rgb8, write_rgb_float, OutputFormat};
+use ps30::core::image::{self, write_png_rgb8, HdrImage, ImageError, OutputFormat, RgbBands};
 use ps30::jobs::tonemap::{self, Settings};
 use std::path::{Path, PathBuf};
 
@@ -52,27 +53,27 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         backend: args.draw.open()?,
         float_rules: args.draw.rules(),
     };
+    let mut output = args
+        .output
+        .as_deref()
+        .map(|out| Output::create(out, &img))
+        .transpose()?;
     let result = {
         let bar = std::cell::RefCell::new(ui.bar("tone mapping", img.height as u64));
-        tonemap::run(&img, &settings, &|done, total| {
-            bar.borrow_mut().set(None, done, total)
+        let progress = |done, total| bar.borrow_mut().set(None, done, total);
+        tonemap::run_into(&img, &settings, &progress, &mut |band| match &mut output {
+            Some(out) => out.band(band),
+            None => Ok(()),
         })?
     };
-    let written = match &args.output {
-        Some(out) => {
-            match OutputFormat::of(out)? {
-                OutputFormat::Png => {
-                    write_png_rgb8(out, result.width, result.height, &result.srgb8())?
-                }
-                _ => {
-                    let rgb: Vec<[f32; 3]> =
-                        result.linear.iter().map(|p| [p[0], p[1], p[2]]).collect();
-                    write_rgb_float(out, result.width, result.height, &rgb)?;
-                }
-            }
-            Some(out.display().to_string())
+    // The image is not needed any more: the PNG is encoded without it.
+    drop(img);
+    let written = match (output, &args.output) {
+        (Some(out), Some(path)) => {
+            out.finish(path, result.width, result.height)?;
+            Some(path.display().to_string())
         }
-        None => None,
+        _ => None,
     };
     let name = args.image.display().to_string();
     let ok = result.all_agree();
@@ -89,4 +90,37 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         )?;
     }
     Ok(Outcome::from_ok(ok))
+}
+
+/// Where the tone-mapped bands go.
+enum Output {
+    /// The 8-bit sRGB samples (3 bytes a pixel), compressed into the PNG
+    /// when complete, as one image (so the file is the same for any bands).
+    Png(Vec<u8>),
+    /// A floating-point file written band by band.
+    Float(Box<RgbBands>),
+}
+
+impl Output {
+    fn create(path: &Path, img: &HdrImage) -> Result<Output, ImageError> {
+        Ok(match OutputFormat::of(path)? {
+            OutputFormat::Png => Output::Png(Vec::with_capacity(3 * img.pixels.len())),
+            _ => Output::Float(Box::new(RgbBands::create(path, img.width, img.height)?)),
+        })
+    }
+
+    fn band(&mut self, band: &[[f32; 4]]) -> Result<(), image::ForeignError> {
+        match self {
+            Output::Png(rgb) => rgb.extend(tonemap::to_srgb8(band)),
+            Output::Float(file) => file.write_rows(band)?,
+        }
+        Ok(())
+    }
+
+    fn finish(self, path: &Path, width: u32, height: u32) -> Result<(), ImageError> {
+        match self {
+            Output::Png(rgb) => write_png_rgb8(path, width, height, &rgb),
+            Output::Float(file) => file.finish(),
+        }
+    }
 }

@@ -12,6 +12,7 @@
 //! an [`ImageError`] naming the file and the problem. Writing is atomic: a
 //! failed write leaves no partial file behind.
 
+mod bands;
 mod error;
 mod mip;
 mod openexr;
@@ -21,6 +22,7 @@ mod radiance;
 mod save;
 mod target;
 
+pub use bands::RgbBands;
 pub use error::{ForeignError, ImageError};
 pub use mip::{chain_weights, full_chain_levels, side_taps, weight_bound, MipChain, OddSides};
 pub use openexr::{encode_exr, write_exr};
@@ -53,8 +55,14 @@ fn write_atomically(
     format: &'static str,
     encode: impl FnOnce(&mut BufWriter<File>) -> Result<(), ForeignError>,
 ) -> Result<(), ImageError> {
-    use crate::core::output::{self, Failure};
-    output::write_atomically(path, encode).map_err(|f| match f {
+    crate::core::output::write_atomically(path, encode).map_err(|f| image_failure(path, format, f))
+}
+
+/// A failed atomic write of `path` as an [`ImageError`] naming the file and
+/// its `format`.
+fn image_failure(path: &Path, format: &'static str, f: crate::core::output::Failure) -> ImageError {
+    use crate::core::output::Failure;
+    match f {
         Failure::Refused(why) => ImageError::Refused {
             path: path.to_path_buf(),
             why,
@@ -65,7 +73,7 @@ fn write_atomically(
             format,
             source,
         },
-    })
+    }
 }
 
 /// The error for a text header whose lines end in CR LF (a Windows line

@@ -16,7 +16,7 @@
 //! `A`.
 
 use super::write_atomically;
-use super::{HdrImage, ImageError, ImageLimits, RenderTarget};
+use super::{ForeignError, HdrImage, ImageError, ImageLimits, RenderTarget};
 use exr::block::chunk::CompressedBlock;
 use exr::block::reader::ChunksReader;
 use exr::math::Vec2;
@@ -623,24 +623,150 @@ pub fn write_rgb_f32(
             found: rgb.len() as u64,
         });
     }
-    let channels: Vec<AnyChannel<FlatSamples>> = ["R", "G", "B"]
-        .iter()
-        .enumerate()
-        .map(|(i, name)| {
-            AnyChannel::new(*name, FlatSamples::F32(rgb.iter().map(|p| p[i]).collect()))
-        })
-        .collect();
-    let layer = Layer::new(
-        (width as usize, height as usize),
-        LayerAttributes::default(),
-        Encoding::SMALL_LOSSLESS,
-        AnyChannels::sort(channels.into()),
-    );
-    let image = Image::from_layer(layer);
+    let planes = std::array::from_fn(|i| rgb.iter().map(|p| p[i]).collect());
+    let image = Image::from_layer(rgb_layer(width, height, planes));
     write_atomically(path, FORMAT, |w| {
         image.write().to_buffered(w)?;
         Ok(())
     })
+}
+
+/// The layer [`write_rgb_f32`] writes: f32 `R`, `G`, `B`, ZIP-compressed
+/// scan lines in increasing order.
+fn rgb_layer(width: u32, height: u32, planes: [Vec<f32>; 3]) -> Layer<AnyChannels<FlatSamples>> {
+    let channels: Vec<AnyChannel<FlatSamples>> = ["R", "G", "B"]
+        .into_iter()
+        .zip(planes)
+        .map(|(name, plane)| AnyChannel::new(name, FlatSamples::F32(plane)))
+        .collect();
+    Layer::new(
+        (width as usize, height as usize),
+        LayerAttributes::default(),
+        Encoding::SMALL_LOSSLESS,
+        AnyChannels::sort(channels.into()),
+    )
+}
+
+/// The file [`write_rgb_f32`] writes, made a band of rows at a time: the
+/// rows are packed into the file's blocks of scan lines (16 for ZIP), the
+/// blocks a band fills are compressed in parallel on rayon's current pool,
+/// and a thread writes them through the `exr` crate's chunk writer, in
+/// order, so that no more than a band and a few blocks are held. The
+/// headers, chunks and offset table are the whole-image writer's.
+pub(super) struct RgbScanLines {
+    width: usize,
+    height: usize,
+    lines_per_block: usize,
+    /// The block being filled: per scan line, each channel's row of f32 in
+    /// the file's channel order (B, G, R).
+    pending: Vec<u8>,
+    /// Scan lines given so far.
+    lines: usize,
+    headers: exr::meta::Headers,
+    chunks: Option<std::sync::mpsc::SyncSender<exr::block::chunk::Chunk>>,
+    writer: Option<std::thread::JoinHandle<exr::error::UnitResult>>,
+}
+
+impl RgbScanLines {
+    /// Starts the writing thread on `file` (a staged file, written from its
+    /// start).
+    pub(super) fn start(file: std::fs::File, width: u32, height: u32) -> RgbScanLines {
+        use exr::block::writer::ChunksWriter;
+        let headers = Image::from_layer(rgb_layer(width, height, Default::default()))
+            .write()
+            .infer_meta_data();
+        let lines_per_block = headers[0].compression.scan_lines_per_block();
+        // A few chunks in flight: the writer writes while the next band is drawn.
+        let (chunks, queue) = std::sync::mpsc::sync_channel::<exr::block::chunk::Chunk>(4);
+        let for_writer = headers.clone();
+        let writer = std::thread::spawn(move || {
+            let out = std::io::BufWriter::new(file);
+            exr::block::write(out, for_writer, true, move |_, writer| {
+                for (index, chunk) in queue.into_iter().enumerate() {
+                    writer.write_chunk(index, chunk)?;
+                }
+                Ok(())
+            })
+        });
+        RgbScanLines {
+            width: width as usize,
+            height: height as usize,
+            lines_per_block,
+            pending: Vec::new(),
+            lines: 0,
+            headers,
+            chunks: Some(chunks),
+            writer: Some(writer),
+        }
+    }
+
+    /// Adds whole rows (top row first; alpha is not written).
+    pub(super) fn rows(&mut self, pixels: &[[f32; 4]]) -> Result<(), ForeignError> {
+        use rayon::prelude::*;
+        let mut filled = Vec::new();
+        for row in pixels.chunks_exact(self.width.max(1)) {
+            for c in [2, 1, 0] {
+                for p in row {
+                    self.pending.extend_from_slice(&p[c].to_le_bytes());
+                }
+            }
+            self.lines += 1;
+            if self.lines.is_multiple_of(self.lines_per_block) || self.lines == self.height {
+                filled.push(self.block());
+            }
+        }
+        let headers = &self.headers;
+        let chunks: Vec<_> = filled
+            .into_par_iter()
+            .map(|block| block.compress_to_chunk(headers))
+            .collect::<Result<_, _>>()?;
+        for chunk in chunks {
+            if self.chunks.as_ref().map(|c| c.send(chunk).is_ok()) != Some(true) {
+                // The thread stopped: its error says why.
+                let stopped = self.join().err();
+                return Err(stopped.unwrap_or_else(|| "the OpenEXR writer stopped".into()));
+            }
+        }
+        Ok(())
+    }
+
+    /// The block just filled, ending at the last line given.
+    fn block(&mut self) -> exr::block::UncompressedBlock {
+        let rows = (self.lines - 1) % self.lines_per_block + 1;
+        exr::block::UncompressedBlock {
+            index: exr::block::BlockIndex {
+                layer: 0,
+                pixel_position: Vec2(0, self.lines - rows),
+                pixel_size: Vec2(self.width, rows),
+                level: Vec2(0, 0),
+            },
+            data: std::mem::take(&mut self.pending),
+        }
+    }
+
+    /// Waits for the writing thread to complete the file (every row must
+    /// have been given).
+    pub(super) fn finish(mut self) -> Result<(), ForeignError> {
+        self.join()
+    }
+
+    /// Ends the queue and waits for the thread (once).
+    fn join(&mut self) -> Result<(), ForeignError> {
+        self.chunks = None;
+        match self.writer.take().map(|w| w.join()) {
+            Some(Ok(written)) => Ok(written?),
+            Some(Err(_)) => Err("the OpenEXR writer panicked".into()),
+            None => Ok(()),
+        }
+    }
+}
+
+impl Drop for RgbScanLines {
+    /// Abandoned (an error elsewhere): the thread ends with an incomplete
+    /// file, which its staged file's drop removes; no thread outlives it.
+    fn drop(&mut self) {
+        let _ = self.join();
+    }
 }
 
 #[cfg(test)]

@@ -129,20 +129,25 @@ pub fn write_radiance(
         .filter(|v| !(v.is_finite() && **v >= 0.0))
         .count();
     if bad > 0 {
-        return Err(ImageError::Unwritable {
-            path: path.to_path_buf(),
-            problem: format!(
-                "Radiance RGBE holds only finite values ≥ 0, and {} of the {} values are negative or not finite; write .exr or .pfm instead",
-                crate::core::numbers::thousands(bad as u64),
-                crate::core::numbers::thousands(rgb.len() as u64 * 3)
-            ),
-        });
+        return Err(radiance_refusal(path, bad as u64, rgb.len() as u64 * 3));
     }
     let pixels: Vec<image::Rgb<f32>> = rgb.iter().map(|&p| image::Rgb(p)).collect();
     write_atomically(path, "Radiance HDR", |w| {
         image::codecs::hdr::HdrEncoder::new(w).encode(&pixels, width as usize, height as usize)?;
         Ok(())
     })
+}
+
+/// Why `bad` of an image's `total` values cannot be written as RGBE.
+pub(super) fn radiance_refusal(path: &Path, bad: u64, total: u64) -> ImageError {
+    ImageError::Unwritable {
+        path: path.to_path_buf(),
+        problem: format!(
+            "Radiance RGBE holds only finite values ≥ 0, and {} of the {} values are negative or not finite; write .exr or .pfm instead",
+            crate::core::numbers::thousands(bad),
+            crate::core::numbers::thousands(total)
+        ),
+    }
 }
 
 /// Writes linear RGB floats (e.g. a tone-mapped image before its sRGB

@@ -230,20 +230,24 @@ pub fn compare_tonemap(
     image: &HdrImage,
 ) -> Result<TonemapComparison, CompareError> {
     let settings = tonemap::Settings::default();
-    let e = tonemap::run(image, &settings, &|_, _| {})
+    let (e, e_linear) = tonemap::run(image, &settings, &|_, _| {})
         .map_err(|e| CompareError::Other(e.to_string()))?;
     let on_gpu = tonemap::Settings {
         backend: Backend::Gpu(gpu.clone()),
         band_rows: image.height,
         ..settings
     };
-    let (linear, _) = tonemap::emulate(image, &e.operator, &on_gpu, &|_, _| {})
-        .map_err(|e| CompareError::Other(e.to_string()))?;
+    let mut linear = Vec::with_capacity(image.pixels.len());
+    tonemap::emulate(image, &e.operator, &on_gpu, &|_, _| {}, &mut |band| {
+        linear.extend_from_slice(band);
+        Ok(())
+    })
+    .map_err(|e| CompareError::Other(e.to_string()))?;
     let g_check = tonemap::crosscheck(&e.operator, image, &linear);
     let w = image.width;
     let channels = (0..3)
         .map(|c| {
-            let ev: Vec<f32> = e.linear.iter().map(|v| v[c]).collect();
+            let ev: Vec<f32> = e_linear.iter().map(|v| v[c]).collect();
             let gv: Vec<f32> = linear.iter().map(|v| v[c]).collect();
             ChannelStats::of(format!("oC0.{}", ["r", "g", "b"][c]), w, &ev, &gv)
         })

@@ -203,6 +203,8 @@ pub struct ChainRun {
     pub luminance_range: (f64, f64),
     /// The lit buffer tone-mapped, with its check against the f64 operator.
     pub tonemap: ToneMapped,
+    /// The tone-mapped buffer: linear, saturated RGBA, row-major.
+    pub tonemapped: Vec<[f32; 4]>,
 }
 
 impl ChainRun {
@@ -249,7 +251,8 @@ pub fn run(
         lum.iter().copied().fold(f64::INFINITY, f64::min),
         lum.iter().copied().fold(f64::NEG_INFINITY, f64::max),
     );
-    let tonemap = tonemap::run(&image, tone, &|_, _| {}).map_err(|e| e.to_string())?;
+    let (tonemap, tonemapped) =
+        tonemap::run(&image, tone, &|_, _| {}).map_err(|e| e.to_string())?;
     progress(total, total);
     Ok(ChainRun {
         width: size.0,
@@ -261,5 +264,6 @@ pub fn run(
         buffer,
         luminance_range,
         tonemap,
+        tonemapped,
     })
 }

@@ -141,6 +141,8 @@ pub enum TonemapError {
     Source(crate::core::diag::SourceError),
     /// The shader cannot run with the operator's inputs.
     Shader(String),
+    /// The caller's sink refused a band (a file could not be written).
+    Output(crate::core::output::ForeignError),
 }
 
 impl std::fmt::Display for TonemapError {
@@ -158,6 +160,7 @@ impl std::fmt::Display for TonemapError {
             ),
             TonemapError::Draw(e) => write!(f, "{e}"),
             TonemapError::Source(e) => write!(f, "{e}"),
+            TonemapError::Output(e) => write!(f, "{e}"),
         }
     }
 }
@@ -538,19 +541,30 @@ const CHECK_CHUNK: usize = 1 << 14;
 /// chunks on rayon's current pool, merged in order (the same result for any
 /// thread count).
 pub fn crosscheck(op: &Operator, image: &HdrImage, emulated: &[[f32; 4]]) -> Crosscheck {
+    let mut r = crosscheck_from(op, &image.pixels, emulated, 0, image.width.max(1) as usize);
+    r.pixels = image.pixels.len() as u64;
+    r
+}
+
+/// [`crosscheck`] of the pixels from index `first` on (rows `w` wide), in
+/// chunks on rayon's current pool. Merging such parts in order gives what
+/// one left-to-right scan gives, so a whole image may be checked a band at
+/// a time (`pixels` is left 0).
+fn crosscheck_from(
+    op: &Operator,
+    pixels: &[[f32; 4]],
+    emulated: &[[f32; 4]],
+    first: usize,
+    w: usize,
+) -> Crosscheck {
     use rayon::prelude::*;
-    let w = image.width.max(1) as usize;
-    let parts: Vec<Crosscheck> = image
-        .pixels
+    let parts: Vec<Crosscheck> = pixels
         .par_chunks(CHECK_CHUNK)
         .zip(emulated.par_chunks(CHECK_CHUNK))
         .enumerate()
-        .map(|(k, (p, e))| crosscheck_chunk(op, p, e, k * CHECK_CHUNK, w))
+        .map(|(k, (p, e))| crosscheck_chunk(op, p, e, first + k * CHECK_CHUNK, w))
         .collect();
-    let mut r = Crosscheck {
-        pixels: image.pixels.len() as u64,
-        ..Crosscheck::default()
-    };
+    let mut r = Crosscheck::default();
     for part in parts {
         r.merge(part);
     }
@@ -658,8 +672,6 @@ pub struct ToneMapped {
     pub luminance: LuminanceRun,
     /// The key, white point and L̄w the shader ran with.
     pub operator: Operator,
-    /// The shader's oC0 per pixel, row-major: linear, saturated.
-    pub linear: Vec<[f32; 4]>,
     /// The tone-mapping pass's cost.
     pub cost: PassCost,
     /// The per-pixel cross-check against the f64 operator.
@@ -676,11 +688,6 @@ impl ToneMapped {
             && self.cost.counts_agree
             && self.cost.within_limits
             && self.check.agree()
-    }
-
-    /// The image as 8-bit sRGB, what `ps30 tonemap` writes.
-    pub fn srgb8(&self) -> Vec<u8> {
-        to_srgb8(&self.linear)
     }
 }
 
@@ -708,14 +715,37 @@ pub fn white_point(image: &HdrImage, given: Option<f64>) -> (f64, WhiteSource) {
     }
 }
 
-/// Computes L̄w with the luminance passes planned for the image's size
-/// ([`crate::jobs::blocks::planned`]: generated shaders, R32F),
-/// then runs the tone-mapping shader over the image and cross-checks it.
-/// `progress(done, total)` is called after each band of rows.
+/// Receives the tone-mapped image a band of whole rows at a time, top band
+/// first: the shader's oC0 per pixel, row-major, linear, saturated. An error
+/// ends the run ([`TonemapError::Output`]).
+pub type Sink<'a> = dyn FnMut(&[[f32; 4]]) -> Result<(), crate::core::output::ForeignError> + 'a;
+
+/// [`run_into`], keeping the whole tone-mapped image (row-major RGBA):
+/// for callers that need it all at once.
 pub fn run(
     image: &HdrImage,
     settings: &Settings,
     progress: &dyn Fn(u64, u64),
+) -> Result<(ToneMapped, Vec<[f32; 4]>), TonemapError> {
+    let mut linear = Vec::with_capacity(image.pixels.len());
+    let result = run_into(image, settings, progress, &mut |band| {
+        linear.extend_from_slice(band);
+        Ok(())
+    })?;
+    Ok((result, linear))
+}
+
+/// Computes L̄w with the luminance passes planned for the image's size
+/// ([`crate::jobs::blocks::planned`]: generated shaders, R32F),
+/// then runs the tone-mapping shader over the image in bands of rows,
+/// cross-checks each band and hands it to `sink`, which keeps what it needs
+/// (a file written band by band holds no more than a band).
+/// `progress(done, total)` is called after each band.
+pub fn run_into(
+    image: &HdrImage,
+    settings: &Settings,
+    progress: &dyn Fn(u64, u64),
+    sink: &mut Sink<'_>,
 ) -> Result<ToneMapped, TonemapError> {
     check_values(settings.key, settings.white)?;
     let delta = luminance::reference::DEFAULT_DELTA;
@@ -750,27 +780,41 @@ pub fn run(
         white_source,
         log_average: lw32 as f64,
     };
-    let (linear, cost) = emulate(image, &op, settings, progress)?;
-    let check = crosscheck(&op, image, &linear);
+    let w = image.width.max(1) as usize;
+    let mut check = Crosscheck {
+        pixels: image.pixels.len() as u64,
+        ..Crosscheck::default()
+    };
+    let mut done = 0;
+    let cost = emulate(image, &op, settings, progress, &mut |band| {
+        let pixels = &image.pixels[done..done + band.len()];
+        check.merge(crosscheck_from(&op, pixels, band, done, w));
+        done += band.len();
+        sink(band).map_err(TonemapError::Output)
+    })?;
     Ok(ToneMapped {
         width: image.width,
         height: image.height,
         luminance,
         operator: op,
-        linear,
         cost,
         check,
     })
 }
 
+/// What [`emulate`] hands each band of rows to, top band first.
+pub type BandSink<'a> = dyn FnMut(&[[f32; 4]]) -> Result<(), TonemapError> + 'a;
+
 /// Runs the shader over the image with the operator's constants: pass 2's
-/// 1×1 R32F target holding L̄w on s1, the image on s0.
+/// 1×1 R32F target holding L̄w on s1, the image on s0. Each band of rows
+/// goes to `band` as it is drawn, top band first.
 pub fn emulate(
     image: &HdrImage,
     op: &Operator,
     settings: &Settings,
     progress: &dyn Fn(u64, u64),
-) -> Result<(Vec<[f32; 4]>, PassCost), TonemapError> {
+    band: &mut BandSink<'_>,
+) -> Result<PassCost, TonemapError> {
     let src = &settings.shader;
     let loaded = load::load(src.file.clone(), &Options::default()).map_err(TonemapError::Source)?;
     luminance::refuse_unset(
@@ -795,15 +839,14 @@ pub fn emulate(
         ..SamplerState::filtered(Filter::Point)
     };
     let (w, h) = (image.width, image.height);
-    let band = match settings.band_rows {
+    let band_rows = match settings.band_rows {
         0 => ((1u32 << 18) / w.max(1)).max(2),
         n => n,
     };
-    let mut linear = Vec::with_capacity(image.pixels.len());
     let mut executed: Option<Range> = None;
     let mut y0 = 0;
     while y0 < h {
-        let rows = band.min(h - y0);
+        let rows = band_rows.min(h - y0);
         let mut draw = Draw::new(w, rows);
         draw.limits = settings.limits;
         draw.float_rules = settings.float_rules;
@@ -842,7 +885,7 @@ pub fn emulate(
         )
         .map_err(TonemapError::Draw)?;
         match out.color {
-            Some(c) => linear.extend(c),
+            Some(c) => band(&c)?,
             None => {
                 return Err(TonemapError::Shader(format!(
                     "{} never writes oC0",
@@ -871,7 +914,7 @@ pub fn emulate(
         within_limits: analysis.verdict == cost::Verdict::Within,
         findings: Vec::new(),
     };
-    Ok((linear, cost))
+    Ok(cost)
 }
 
 #[cfg(test)]

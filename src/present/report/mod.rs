@@ -269,8 +269,9 @@ pub fn generate(
             threads,
             ..tonemap::Settings::default()
         };
-        let t = tonemap::run(&img, &settings, &|_, _| {}).map_err(|e| format!("{rel}: {e}"))?;
-        let (pw, ph, small) = box_downscale(t.width, t.height, &t.linear, PREVIEW_WIDTH);
+        let (t, linear) =
+            tonemap::run(&img, &settings, &|_, _| {}).map_err(|e| format!("{rel}: {e}"))?;
+        let (pw, ph, small) = box_downscale(t.width, t.height, &linear, PREVIEW_WIDTH);
         let file = format!("tonemap-{}.png", name.replace('.', "-"));
         let canvas = figures::Canvas {
             width: pw,

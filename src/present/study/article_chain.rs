@@ -129,7 +129,7 @@ pub fn json(r: &ChainRun, written: Option<&str>) -> serde_json::Value {
 
 fn preview(r: &ChainRun) -> Canvas {
     let t = &r.tonemap;
-    let (w, h, px) = box_downscale(t.width, t.height, &t.linear, PREVIEW_WIDTH);
+    let (w, h, px) = box_downscale(t.width, t.height, &r.tonemapped, PREVIEW_WIDTH);
     Canvas {
         width: w,
         height: h,
