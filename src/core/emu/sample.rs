@@ -293,7 +293,11 @@ impl<'a> Level<'a> {
                     (true, 0x7) => self.gather::<0x7>(n, &idx, out),
                     _ => {
                         for l in 0..n {
-                            put(out, l, self.texels.get(idx[l] as usize).unwrap_or(&self.border));
+                            put(
+                                out,
+                                l,
+                                self.texels.get(idx[l] as usize).unwrap_or(&self.border),
+                            );
                         }
                     }
                 }

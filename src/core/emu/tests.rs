@@ -1287,7 +1287,9 @@ fn point_border_draw(texels: &[[f32; 4]]) -> Draw<'_> {
 
 #[test]
 fn masked_texld_writes_only_its_components() {
-    let texels: Vec<[f32; 4]> = (0..15).map(|i| [i as f32, 10.0 + i as f32, 0.5, 9.0]).collect();
+    let texels: Vec<[f32; 4]> = (0..15)
+        .map(|i| [i as f32, 10.0 + i as f32, 0.5, 9.0])
+        .collect();
     // Pixel (0, 0) reads texel (3, 1), number 8, at (0.7, 0.5) = (3.5/5,
     // 1.5/3); swapped, (0.5, 0.7) is texel (2, 2), number 12; 0.8 further
     // right is beyond the texture: the border colour. Its quad's helper
