@@ -264,9 +264,26 @@ impl Worker<'_, '_> {
     }
 
     /// `N`-component dot product of `a` and `b` into `tmp[k]`, summed left
-    /// to right in f32.
+    /// to right in f32, with the draw's product (chosen once, so that the
+    /// lane loop is compiled with the product inlined and vectorises).
     #[inline(always)]
     pub(super) fn dot<const N: usize>(&mut self, _d: DstOp, a: SrcOp, b: SrcOp, k: usize) {
+        if self.ctx.rules.zero_mul() {
+            self.dot_with::<N>(a, b, k, math::zmul)
+        } else {
+            self.dot_with::<N>(a, b, k, |x, y| x * y)
+        }
+    }
+
+    /// [`Worker::dot`] with the product `mul`.
+    #[inline(always)]
+    fn dot_with<const N: usize>(
+        &mut self,
+        a: SrcOp,
+        b: SrcOp,
+        k: usize,
+        mul: impl Fn(f32, f32) -> f32,
+    ) {
         let n = self.span();
         let (am, ax) = a.mod_bits();
         let (bm, bx) = b.mod_bits();
@@ -274,11 +291,6 @@ impl Worker<'_, '_> {
         let rb: [usize; N] = std::array::from_fn(|c| self.row(b, c));
         let sa: [&[f32; LANES]; N] = std::array::from_fn(|c| &self.rows[ra[c]]);
         let sb: [&[f32; LANES]; N] = std::array::from_fn(|c| &self.rows[rb[c]]);
-        let mul = if self.ctx.rules.zero_mul() {
-            math::zmul
-        } else {
-            |x: f32, y: f32| x * y
-        };
         let out = &mut self.tmp[k];
         for l in 0..n {
             let mut s = mul(modify(sa[0][l], am, ax), modify(sb[0][l], bm, bx));

@@ -243,9 +243,26 @@ impl<'a> Level<'a> {
         }
     }
 
-    /// Samples lanes `0..n` with `filter`; `out[c]` receives sampled
-    /// component `swz(c)`.
+    /// The texels at `idx` (or the border colour) of lanes `0..n`, the
+    /// components of `MASK` unswizzled (a constant, so that the lane loop
+    /// tests no mask).
     #[inline(always)]
+    fn gather<const MASK: u8>(&self, n: usize, idx: &[u32; LANES], out: &mut [[f32; LANES]; 4]) {
+        for l in 0..n.min(LANES) {
+            let t = self.texels.get(idx[l] as usize).unwrap_or(&self.border);
+            for c in 0..4 {
+                if MASK & (1 << c) != 0 {
+                    out[c][l] = t[c];
+                }
+            }
+        }
+    }
+
+    /// Samples lanes `0..n` with `filter`; `out[c]` receives sampled
+    /// component `swz(c)` for the components `c` of `mask` (the others are
+    /// left as they are).
+    #[inline(always)]
+    #[allow(clippy::too_many_arguments)] // one sampling request, spelled out
     fn sample_lanes(
         &self,
         filter: Filter,
@@ -253,9 +270,17 @@ impl<'a> Level<'a> {
         u: &[f32; LANES],
         v: &[f32; LANES],
         swz: [usize; 4],
+        mask: u8,
         out: &mut [[f32; LANES]; 4],
     ) {
         let n = n.min(LANES);
+        let put = |out: &mut [[f32; LANES]; 4], l: usize, t: &[f32; 4]| {
+            for c in 0..4 {
+                if mask & (1 << c) != 0 {
+                    out[c][l] = t[swz[c]];
+                }
+            }
+        };
         match (filter, self.au, self.av) {
             (Filter::Point, Address::Border, Address::Border) => {
                 // Indices first (vectorises), then the gather.
@@ -263,36 +288,28 @@ impl<'a> Level<'a> {
                 for l in 0..n {
                     idx[l] = self.point_border_index(u[l], v[l]);
                 }
-                if swz == [0, 1, 2, 3] {
-                    for l in 0..n {
-                        let t = self.texels.get(idx[l] as usize).unwrap_or(&self.border);
-                        for c in 0..4 {
-                            out[c][l] = t[c];
-                        }
-                    }
-                } else {
-                    for l in 0..n {
-                        let t = self.texels.get(idx[l] as usize).unwrap_or(&self.border);
-                        for c in 0..4 {
-                            out[c][l] = t[swz[c]];
+                match (swz == [0, 1, 2, 3], mask) {
+                    (true, 0xf) => self.gather::<0xf>(n, &idx, out),
+                    (true, 0x7) => self.gather::<0x7>(n, &idx, out),
+                    _ => {
+                        for l in 0..n {
+                            put(
+                                out,
+                                l,
+                                self.texels.get(idx[l] as usize).unwrap_or(&self.border),
+                            );
                         }
                     }
                 }
             }
             (Filter::Point, _, _) => {
                 for l in 0..n {
-                    let t = self.point(u[l], v[l]);
-                    for c in 0..4 {
-                        out[c][l] = t[swz[c]];
-                    }
+                    put(out, l, &self.point(u[l], v[l]));
                 }
             }
             (Filter::Linear, _, _) => {
                 for l in 0..n {
-                    let t = self.linear(u[l], v[l]);
-                    for c in 0..4 {
-                        out[c][l] = t[swz[c]];
-                    }
+                    put(out, l, &self.linear(u[l], v[l]));
                 }
             }
         }
@@ -354,7 +371,7 @@ impl<'a> Sampler<'a> {
     }
 
     /// Samples lanes `0..n` at the base level, ignoring the LOD (valid when
-    /// [`Sampler::lod_matters`] is false).
+    /// [`Sampler::lod_matters`] is false), into the components of `mask`.
     #[inline(always)]
     pub fn sample_lanes(
         &self,
@@ -362,9 +379,10 @@ impl<'a> Sampler<'a> {
         u: &[f32; LANES],
         v: &[f32; LANES],
         swz: [usize; 4],
+        mask: u8,
         out: &mut [[f32; LANES]; 4],
     ) {
-        self.levels[self.base].sample_lanes(self.mag, n, u, v, swz, out);
+        self.levels[self.base].sample_lanes(self.mag, n, u, v, swz, mask, out);
     }
 
     /// Level(s), blend weight of the second and filter for LOD `lod` (bias

@@ -1227,6 +1227,126 @@ const EVERY_OP: &str = "dcl_texcoord0 v0
      mov oC1, r7
      mov oC2, r12";
 
+/// Pass 1's shape on a point-sampled BORDER texture: a masked `texld` that
+/// every lane runs (it gathers straight into the destination), and one
+/// with a swizzled mask that only some lanes run (through the scratch rows).
+const POINT_BORDER: &str = "dcl_texcoord0 v0
+     dcl_2d s0
+     def c0, 0.27, 0.67, 0.06, 0.01
+     def c1, 0.11, -0.07, 0, 0.5
+     defi i0, 7, 0, 0, 0
+     mov r1, v0
+     mov r2, c1.w
+     mov r4, c1.w
+     mov r5, c1.z
+     rep i0
+       texld r2.xyz, r1, s0
+       dp4 r3.x, r2, c0
+       log r3.y, r3.x
+       add r5.xw, r5.xwww, r3.yyyy
+       if_lt r3.x, c0.y
+         mov r6, r1.yxzw
+         texld r4.yw, r6, s0
+         add r5.y, r5.y, r4.w
+       endif
+       add r1.xy, r1, c1.xy
+     endrep
+     mov oC0, r5
+     mov oC1, r2
+     mov oC2, r4";
+
+/// A 37×23 draw of [`POINT_BORDER`] over a 5×3 texture, its coordinates
+/// starting left of and above it and leaving it on the right and below.
+fn point_border_draw(texels: &[[f32; 4]]) -> Draw<'_> {
+    let mut d = Draw::new(37, 23);
+    d.inputs.push((
+        0,
+        LinearInput {
+            base: [-0.05, -0.03, 0.0, 0.0],
+            ddx: [0.031, 0.007, 0.0, 0.0],
+            ddy: [0.004, 0.049, 0.0, 0.0],
+        },
+    ));
+    d.samplers.push((
+        0,
+        Texture {
+            width: 5,
+            height: 3,
+            texels,
+        }
+        .into(),
+        SamplerState {
+            address_u: Address::Border,
+            address_v: Address::Border,
+            border: [0.25, 0.5, 0.75, 2.0],
+            ..SamplerState::filtered(Filter::Point)
+        },
+    ));
+    d
+}
+
+#[test]
+fn masked_texld_writes_only_its_components() {
+    let texels: Vec<[f32; 4]> = (0..15)
+        .map(|i| [i as f32, 10.0 + i as f32, 0.5, 9.0])
+        .collect();
+    // Pixel (0, 0) reads texel (3, 1), number 8, at (0.7, 0.5) = (3.5/5,
+    // 1.5/3); swapped, (0.5, 0.7) is texel (2, 2), number 12; 0.8 further
+    // right is beyond the texture: the border colour. Its quad's helper
+    // lanes (v0.x = 0.9) skip the `if`, so the `texld` there runs on part
+    // of the lanes.
+    let text = "dcl_texcoord0 v0
+         dcl_2d s0
+         def c0, -1, -2, -3, -4
+         def c1, 0.8, 0, 0, 0
+         mov r0, c0
+         mov r1, c0
+         mov r2, c0
+         mov r3, v0.yxzw
+         mov r4, c0
+         add r5, v0, c1.x
+         texld r0.xz, v0, s0
+         texld r2.yw, r3, s0
+         texld r4.zw, r5, s0
+         if_lt v0.x, c1.x
+           texld r1.y, v0, s0
+         endif
+         mov oC0, r0
+         mov oC1, r1
+         mov oC2, r2
+         mov oC3, r4";
+    let mut d = Draw::new(1, 1);
+    d.inputs.push((
+        0,
+        LinearInput {
+            base: [0.7, 0.5, 0.0, 0.0],
+            ddx: [0.2, 0.0, 0.0, 0.0],
+            ddy: [0.0; 4],
+        },
+    ));
+    d.samplers.push((
+        0,
+        Texture {
+            width: 5,
+            height: 3,
+            texels: &texels,
+        }
+        .into(),
+        SamplerState {
+            address_u: Address::Border,
+            address_v: Address::Border,
+            border: [0.25, 0.5, 0.75, 2.0],
+            ..SamplerState::filtered(Filter::Point)
+        },
+    ));
+    let out = run_text(text, &d);
+    let c = |k: usize| out.color[k].as_ref().unwrap()[0];
+    assert_eq!(bits(c(0)), bits([8.0, -2.0, 0.5, -4.0]));
+    assert_eq!(bits(c(1)), bits([-1.0, 18.0, -3.0, -4.0]));
+    assert_eq!(bits(c(2)), bits([-1.0, 22.0, -3.0, 9.0]));
+    assert_eq!(bits(c(3)), bits([-1.0, -2.0, 0.75, 2.0]));
+}
+
 #[test]
 fn the_avx2_executor_matches_the_portable_one_bit_for_bit() {
     let texels: Vec<[f32; 4]> = (0..15)
@@ -1237,6 +1357,7 @@ fn the_avx2_executor_matches_the_portable_one_bit_for_bit() {
         .collect();
     let busy = compiled(BUSY);
     let every = compiled(EVERY_OP);
+    let border = compiled(POINT_BORDER);
     let mut wide = Draw::new(37, 23);
     wide.inputs.push((
         0,
@@ -1246,7 +1367,12 @@ fn the_avx2_executor_matches_the_portable_one_bit_for_bit() {
             ddy: [-2.1e-21, -1.9, 2.3, -7.7e27],
         },
     ));
-    for (c, d) in [(&busy, busy_draw(&texels, 37, 23)), (&every, wide)] {
+    let cases = [
+        (&busy, busy_draw(&texels, 37, 23)),
+        (&every, wide),
+        (&border, point_border_draw(&texels)),
+    ];
+    for (c, d) in cases {
         let fast = run_with_threads(c, &d, 1).unwrap();
         let slow = portable(|| run_with_threads(c, &d, 1).unwrap());
         assert!(same_bits(&fast, &slow), "the two executors differ");

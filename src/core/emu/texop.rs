@@ -212,13 +212,14 @@ impl Worker<'_, '_> {
             self.store::<false>(d, d.mask());
             return;
         }
-        // Unmasked full writes gather straight into the destination rows (the
-        // coordinates are already in `aux`, so nothing reads them).
-        if d.mask() == 0xf && self.exec == self.live && !d.predicated() {
+        // Writes to every executing lane gather straight into the written
+        // components of the destination (the coordinates are already in
+        // `aux`, so nothing reads them).
+        if d.mask() != 0 && self.exec == self.live && !d.predicated() && !d.sat() {
             let base = d.row as usize;
             if let Some(dst) = self.rows.get_mut(base..base + 4) {
                 if let Ok(dst) = <&mut [[f32; LANES]; 4]>::try_from(dst) {
-                    sampler.sample_lanes(n, &self.aux[0], &self.aux[1], swz, dst);
+                    sampler.sample_lanes(n, &self.aux[0], &self.aux[1], swz, d.mask(), dst);
                     if d.output() {
                         let k = (base - self.ctx.compiled.layout.output as usize) / 4;
                         self.written |= 1 << k;
@@ -227,7 +228,7 @@ impl Worker<'_, '_> {
                 }
             }
         }
-        sampler.sample_lanes(n, &self.aux[0], &self.aux[1], swz, &mut self.tmp);
+        sampler.sample_lanes(n, &self.aux[0], &self.aux[1], swz, d.mask(), &mut self.tmp);
         self.store::<false>(d, d.mask());
     }
 }
