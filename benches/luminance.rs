@@ -14,8 +14,9 @@
 //!   f64 cross-check's one scan (every term, the block bounds, the
 //!   reference), on N threads;
 //! * `command/luminance|tonemap|run/Nt`: what `ps30 luminance`, `ps30
-//!   tonemap` and `ps30 run` compute (decoding included, no printing) with
-//!   all their work on N threads, as `--threads N` runs them;
+//!   tonemap` and `ps30 run` compute (decoding and, for the first two, the
+//!   planned block's generated shaders included, no printing) with all their
+//!   work on N threads, as `--threads N` runs them;
 //! * `gpu/unrolled`, `gpu/loop`: the `emulate/*` draws on the GPU backend
 //!   (the first Vulkan adapter: llvmpipe here), each pass as `--backend
 //!   gpu` runs it — translation, pipeline, the image uploaded, the draw,
@@ -31,8 +32,9 @@ use ps30::core::gpu::{self, Gpu, TargetKind};
 use ps30::core::image::{load, HdrImage, ImageLimits, RenderTarget, TargetFormat};
 use ps30::core::ir::Shader;
 use ps30::core::load::{load_str, Loaded, Options};
+use ps30::jobs::blocks;
 use ps30::jobs::bundled::{CORRECTED_LOOP, CORRECTED_PASS2, CORRECTED_UNROLLED};
-use ps30::jobs::luminance::reference::{self, Policy};
+use ps30::jobs::luminance::reference::{self, Policy, DEFAULT_DELTA};
 use ps30::jobs::luminance::{self, run_pass, PassSetup, ShaderSource};
 use ps30::jobs::tonemap;
 use std::hint::black_box;
@@ -330,12 +332,16 @@ fn luminance(c: &mut Criterion) {
         g.bench_function(format!("command/luminance/{t}t"), |b| {
             b.iter(|| {
                 on_threads(t, || {
+                    // As `ps30 luminance IMAGE` runs: the block planned for
+                    // the image and the shaders generated for it.
                     let img = load(&path, &ImageLimits::default()).unwrap();
+                    let planned = blocks::planned(img.width, img.height, DEFAULT_DELTA).unwrap();
                     let settings = luminance::Settings {
+                        block: planned.block(),
                         threads: Some(t),
                         ..Default::default()
                     };
-                    luminance::run(&img, &p1, &p2, &settings)
+                    luminance::run(&img, &planned.pass1, &planned.pass2, &settings)
                         .unwrap()
                         .log_average
                 })
