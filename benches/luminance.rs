@@ -35,7 +35,7 @@ use ps30::core::load::{load_str, Loaded, Options};
 use ps30::jobs::blocks;
 use ps30::jobs::bundled::{CORRECTED_LOOP, CORRECTED_PASS2, CORRECTED_UNROLLED};
 use ps30::jobs::luminance::reference::{self, Policy, DEFAULT_DELTA};
-use ps30::jobs::luminance::{self, run_pass, PassSetup, ShaderSource};
+use ps30::jobs::luminance::{self, run_pass, PassSetup};
 use ps30::jobs::tonemap;
 use std::hint::black_box;
 use std::path::Path;
@@ -230,8 +230,6 @@ fn luminance(c: &mut Criterion) {
         &Options::default(),
     )
     .unwrap();
-    let source = |b: &ps30::jobs::bundled::Bundled| ShaderSource::new(b.listing().0, b.listing().1);
-    let (p1, p2) = (source(&CORRECTED_UNROLLED), source(&CORRECTED_PASS2));
     let mut g = c.benchmark_group("courtyard_1280x1024");
     g.sample_size(10);
     g.bench_function("reference/f64", |b| {

@@ -53,13 +53,16 @@ fn check(name: &str, shader: &ps30::core::ir::Shader, rules: FloatRules, entry: 
 
 #[test]
 fn every_bundled_shader_translates_to_every_target() {
-    for b in ps30::jobs::bundled::ALL {
+    use rayon::prelude::*;
+    // Shader by shader on the pool: naga is unoptimised in the test profile
+    // (Cargo.toml), and this is the suite's longest test.
+    ps30::jobs::bundled::ALL.par_iter().for_each(|b| {
         let shader = load(b.path, b.text);
         for rules in FloatRules::ALL {
             check(b.path, &shader, rules, Entry::Application);
         }
         check(b.path, &shader, FloatRules::D3d9, Entry::Draw);
-    }
+    });
 }
 
 /// The constant block's layout, as the WGSL output declares it (WGSL
