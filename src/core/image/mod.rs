@@ -229,7 +229,7 @@ pub fn load_bytes(name: &Path, bytes: &[u8], limits: &ImageLimits) -> Result<Hdr
 /// Decodes from `reader` with the decoder its magic number names.
 fn decode(
     path: &Path,
-    mut reader: impl BufRead + Seek,
+    mut reader: impl BufRead + Seek + Send,
     limits: &ImageLimits,
 ) -> Result<HdrImage, ImageError> {
     let mut magic = Vec::with_capacity(4);

@@ -28,6 +28,7 @@ use exr::prelude::{
 };
 use std::io::{BufRead, Read, Seek};
 use std::path::Path;
+use std::sync::Mutex;
 
 const FORMAT: &str = "OpenEXR";
 
@@ -87,7 +88,7 @@ impl ChannelMap {
 
 pub(super) fn read(
     path: &Path,
-    mut reader: impl BufRead + Seek,
+    mut reader: impl BufRead + Seek + Send,
     limits: &ImageLimits,
 ) -> Result<HdrImage, ImageError> {
     let decode_error = |e| decode_error(path, e);
@@ -149,18 +150,21 @@ pub(super) fn read(
 
 /// Decodes the first layer's full-resolution blocks straight into RGBA
 /// pixels (alpha 1 where the file has none), converting each line of
-/// samples in bulk. Blocks are decompressed on a pool as large as rayon's
-/// current one, so a command's thread bound holds for decoding too; one
-/// thread decodes in order on the calling thread. Only the pixels and the
-/// blocks in flight are held, never the whole file or a second copy.
+/// samples in bulk. Each block is read, decompressed and written into its
+/// own rows by one thread of rayon's current pool, so a command's thread
+/// bound holds for decoding too and the calling thread only waits. Chunks
+/// are read in file order, one at a time, so only the pixels and one block
+/// per thread are held, never the whole file or a second copy. When blocks
+/// fail, the error reported is that of the first in file order, as one
+/// thread decoding in order would meet it.
 fn decode_pixels(
     path: &Path,
-    reader: impl BufRead + Seek,
+    reader: impl BufRead + Seek + Send,
     map: &ChannelMap,
     channels: &exr::meta::attribute::ChannelList,
     (width, height): (usize, usize),
 ) -> Result<Vec<[f32; 4]>, ImageError> {
-    use exr::block::reader::{ChunksReader, ParallelBlockDecompressor};
+    use rayon::iter::{ParallelBridge, ParallelIterator};
     let decode_error = |e| decode_error(path, e);
     let chunks = exr::block::read(reader, false)
         .map_err(decode_error)?
@@ -168,24 +172,95 @@ fn decode_pixels(
             block.layer == 0 && tile.is_largest_resolution_level()
         })
         .map_err(decode_error)?;
-    // The RGBA slots each channel of the file fills (none: not read).
-    let slots: Vec<&[usize]> = channels
-        .list
-        .iter()
-        .map(|c| {
-            map.sources
-                .iter()
-                .find(|(name, _)| c.name.eq(name))
-                .map_or(&[][..], |(_, slots)| *slots)
-        })
-        .collect();
-    let mut pixels = vec![[0.0, 0.0, 0.0, 1.0]; width * height];
-    let mut lines = LineBuffers::default();
-    let mut insert = |block: exr::block::UncompressedBlock| -> Result<(), ImageError> {
-        for line in block.lines(channels) {
+    let meta = chunks.meta_data().clone();
+    let target = Target::new(map, channels, (width, height));
+    // Zeroed memory comes from the allocator as it is: the pixels are
+    // written once, by the blocks (alpha included, see `Target::insert`).
+    let mut pixels = vec![[0.0f32; 4]; width * height];
+    let rows: Vec<Mutex<&mut [[f32; 4]]>> =
+        pixels.chunks_mut(width.max(1)).map(Mutex::new).collect();
+    // The failing block first in file order, by its index. The bridge hands
+    // out chunks in order and every chunk handed out is finished, so when
+    // an error stops the work, every earlier chunk has been tried.
+    let first_error: Mutex<Option<(usize, ImageError)>> = Mutex::new(None);
+    // An error stops the work early; it is taken from `first_error` below.
+    let _ = chunks.enumerate().par_bridge().try_for_each_init(
+        LineBuffers::default,
+        |lines, (index, chunk)| {
+            let decoded = chunk
+                .and_then(|c| exr::block::UncompressedBlock::decompress_chunk(c, &meta, false))
+                .map_err(decode_error)
+                .and_then(|block| target.insert(path, &block, &rows, lines));
+            decoded.map_err(|e| {
+                let mut first = first_error.lock().unwrap_or_else(|p| p.into_inner());
+                if first.as_ref().is_none_or(|(i, _)| index < *i) {
+                    *first = Some((index, e));
+                }
+            })
+        },
+    );
+    drop(rows);
+    match first_error.into_inner().unwrap_or_else(|p| p.into_inner()) {
+        Some((_, e)) => Err(e),
+        None => Ok(pixels),
+    }
+}
+
+/// Where decoded blocks go: which RGBA slots each channel of the file
+/// fills, in an image of `width` × `height` pixels.
+struct Target {
+    channels: exr::meta::attribute::ChannelList,
+    /// Per channel of the file, in its order, the slots it fills (none: not
+    /// read).
+    slots: Vec<&'static [usize]>,
+    /// The file has no `A`: alpha is set to 1 wherever slot 0 is written,
+    /// which is every pixel, since [`check_chunks`] found every row (or
+    /// tile) in exactly one chunk.
+    alpha_one: bool,
+    width: usize,
+    height: usize,
+}
+
+impl Target {
+    fn new(
+        map: &ChannelMap,
+        channels: &exr::meta::attribute::ChannelList,
+        (width, height): (usize, usize),
+    ) -> Target {
+        let slots = channels
+            .list
+            .iter()
+            .map(|c| {
+                map.sources
+                    .iter()
+                    .find(|(name, _)| c.name.eq(name))
+                    .map_or(&[][..], |(_, slots)| *slots)
+            })
+            .collect();
+        Target {
+            channels: channels.clone(),
+            slots,
+            alpha_one: !map.sources.iter().any(|(name, _)| *name == "A"),
+            width,
+            height,
+        }
+    }
+
+    /// Writes one decoded block's lines into `rows`, the image's rows, each
+    /// locked only while one line is written (blocks of other rows never
+    /// wait). A line outside the data window is an error.
+    fn insert(
+        &self,
+        path: &Path,
+        block: &exr::block::UncompressedBlock,
+        rows: &[Mutex<&mut [[f32; 4]]>],
+        lines: &mut LineBuffers,
+    ) -> Result<(), ImageError> {
+        let (width, height) = (self.width, self.height);
+        for line in block.lines(&self.channels) {
             let at = line.location;
-            let channel_slots = slots.get(at.channel).copied().unwrap_or(&[]);
-            if channel_slots.is_empty() {
+            let slots = self.slots.get(at.channel).copied().unwrap_or(&[]);
+            if slots.is_empty() {
                 continue;
             }
             let (x, y, n) = (at.position.x(), at.position.y(), at.sample_count);
@@ -194,36 +269,21 @@ fn decode_pixels(
                 return Err(ImageError::bad_header(path, FORMAT, "blocks", problem));
             }
             let values = lines
-                .read(line, channels.list[at.channel].sample_type)
-                .map_err(decode_error)?;
-            for (pixel, &v) in pixels[y * width + x..][..n].iter_mut().zip(values) {
-                for &slot in channel_slots {
+                .read(line, self.channels.list[at.channel].sample_type)
+                .map_err(|e| decode_error(path, e))?;
+            let mut row = rows[y].lock().unwrap_or_else(|p| p.into_inner());
+            let pixels = &mut row[x..][..n];
+            for (pixel, &v) in pixels.iter_mut().zip(values) {
+                for &slot in slots {
                     pixel[slot] = v;
                 }
             }
+            if self.alpha_one && slots[0] == 0 {
+                pixels.iter_mut().for_each(|pixel| pixel[3] = 1.0);
+            }
         }
         Ok(())
-    };
-    let threads = rayon::current_num_threads();
-    let pool = || {
-        rayon::ThreadPoolBuilder::new()
-            .num_threads(threads)
-            .thread_name(|i| format!("ps30 EXR decoder {i}"))
-            .build()
-    };
-    let parallel = match threads {
-        1 => Err(chunks),
-        _ => ParallelBlockDecompressor::new_with_thread_pool(chunks, false, pool),
-    };
-    match parallel {
-        Ok(blocks) => blocks
-            .into_iter()
-            .try_for_each(|b| insert(b.map_err(decode_error)?)),
-        Err(chunks) => chunks
-            .sequential_decompressor(false)
-            .try_for_each(|b| insert(b.map_err(decode_error)?)),
-    }?;
-    Ok(pixels)
+    }
 }
 
 /// Reused buffers for one line of samples, converted to f32.
@@ -833,6 +893,54 @@ mod tests {
             image.pixels,
             vec![[0.25, 0.25, 0.25, 1.0], [4.0, 4.0, 4.0, 1.0]]
         );
+    }
+
+    /// Tiles share rows, so blocks of one row are written by different
+    /// threads: every pixel must still be written once, alpha included,
+    /// whatever the number of threads (1, 2, 5) and the tiles' order.
+    #[test]
+    fn tiled_file_decodes_alike_on_any_thread_count() {
+        use exr::prelude::{Blocks, LineOrder};
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("tiled.exr");
+        let (width, height) = (53, 37); // partial tiles at the right and bottom
+        let plane = |k: usize| -> Vec<f32> {
+            (0..width * height)
+                .map(|i| (i * 7 + k) as f32 * 0.25)
+                .collect()
+        };
+        let channels: Vec<AnyChannel<FlatSamples>> = ["R", "G", "B"]
+            .iter()
+            .enumerate()
+            .map(|(k, name)| AnyChannel::new(*name, FlatSamples::F32(plane(k))))
+            .collect();
+        let encoding = Encoding {
+            compression: Compression::ZIP1,
+            blocks: Blocks::Tiles(Vec2(16, 8)),
+            line_order: LineOrder::Unspecified,
+        };
+        let layer = Layer::new(
+            (width, height),
+            LayerAttributes::default(),
+            encoding,
+            AnyChannels::sort(channels.into()),
+        );
+        Image::from_layer(layer).write().to_file(&path).unwrap();
+        let expected: Vec<[f32; 4]> = (0..width * height)
+            .map(|i| {
+                let v = |k: usize| (i * 7 + k) as f32 * 0.25;
+                [v(0), v(1), v(2), 1.0]
+            })
+            .collect();
+        for threads in [1, 2, 5] {
+            let pool = rayon::ThreadPoolBuilder::new()
+                .num_threads(threads)
+                .build()
+                .unwrap();
+            let image = pool.install(|| load_default(&path)).unwrap();
+            assert_eq!((image.width, image.height), (53, 37));
+            assert!(image.pixels == expected, "{threads} threads");
+        }
     }
 
     #[test]
