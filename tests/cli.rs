@@ -4,15 +4,7 @@
 use std::process::Output;
 
 use crate::common::bin;
-use bin::{ps30, repo};
-
-fn stdout(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stdout).into_owned()
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
-}
+use bin::{ps30, repo, stderr, stdout};
 
 #[test]
 fn check_prints_the_articles_loop_figures() {

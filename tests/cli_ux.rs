@@ -3,13 +3,9 @@
 //! terminal.
 
 use std::path::Path;
-use std::process::Output;
 
 use crate::common::bin;
-
-fn ps30(args: &[&str]) -> Output {
-    bin::ps30(args, bin::repo())
-}
+use bin::in_repo as ps30;
 
 const COMMANDS: [&str; 10] = [
     "check",

@@ -267,11 +267,7 @@ fn the_luminance_pass_is_warned_about_its_level_of_detail() {
 
 // ----- the command line ----------------------------------------------------------
 
-use crate::common::bin;
-
-fn ps30(args: &[&str]) -> std::process::Output {
-    bin::ps30(args, bin::repo())
-}
+use crate::common::bin::in_repo as ps30;
 
 #[test]
 fn profile_command_exit_codes_and_output() {

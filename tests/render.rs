@@ -4,7 +4,7 @@
 
 use crate::common::bin;
 
-use bin::{ps30, repo};
+use bin::{ps30, repo, stderr};
 use ps30::core::image::{chain_weights, full_chain_levels, Encoding, OddSides, TargetFormat};
 use ps30::core::merge::OutputState;
 use ps30::jobs::render::{self, file, DrawList, DrawStep, Step, TargetSpec};
@@ -188,10 +188,6 @@ fn mip_reduction_against_the_f64_mean_for_even_and_odd_sizes() {
             }
         }
     }
-}
-
-fn stderr(o: &std::process::Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
 }
 
 #[test]

@@ -12,7 +12,6 @@ use common::{asset, IMAGES};
 use ps30::core::image::{HdrImage, ImageLimits};
 use ps30::jobs::luminance::ShaderSource;
 use ps30::jobs::tonemap::{self, Settings, WhiteSource};
-use std::process::Output;
 
 fn load(name: &str) -> HdrImage {
     ps30::core::image::load(&asset(name), &ImageLimits::default()).unwrap()
@@ -215,11 +214,7 @@ fn nan_pixels_are_refused_not_a_panic() {
 // ---- the command ----
 
 use crate::common::bin;
-use bin::{ps30, repo};
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
-}
+use bin::{ps30, repo, stderr};
 
 #[test]
 fn tonemap_writes_the_png_the_library_computes() {

@@ -7,21 +7,10 @@ use std::path::Path;
 use std::process::Output;
 
 use crate::common::bin;
-
-fn ps30(args: &[&str]) -> Output {
-    bin::ps30(args, bin::repo())
-}
+use bin::{in_repo as ps30, stderr as err, stdout as out};
 
 fn ps30_in(dir: &Path, args: &[&str]) -> Output {
     bin::ps30(args, dir)
-}
-
-fn out(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stdout).into_owned()
-}
-
-fn err(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
 }
 
 /// A `w × h` PFM (colour) whose pixels vary smoothly, written to `path`.
@@ -73,16 +62,7 @@ fn a_run_on_constants_nobody_set_is_refused_naming_them() {
         assert!(e.contains("--int i1=N"), "the fix is spelled out: {e}");
     }
     // With them set, the same run works.
-    let mut args = vec![
-        "run",
-        "corrected:loop",
-        "--image",
-        "assets/hdr/forest.hdr",
-        "--target",
-        "8x10",
-    ];
-    args.extend(bin::LOOP_CONSTANTS);
-    let o = ps30(&args);
+    let o = bin::run_loop_example(&[]);
     assert_eq!(o.status.code(), Some(0), "{}", err(&o));
     assert!(err(&o).is_empty(), "{}", err(&o));
 }

@@ -19,6 +19,21 @@ pub fn repo() -> &'static Path {
     Path::new(env!("CARGO_MANIFEST_DIR"))
 }
 
+/// Runs `ps30 ARGS` in the repository root.
+pub fn in_repo(args: &[&str]) -> Output {
+    ps30(args, repo())
+}
+
+/// A run's standard output, as text.
+pub fn stdout(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stdout).into_owned()
+}
+
+/// A run's standard error, as text.
+pub fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
 /// Runs `ps30 ARGS` in `dir` with `input` on standard input.
 pub fn ps30_with_stdin(args: &[&str], dir: &Path, input: &[u8]) -> Output {
     use std::io::Write;
