@@ -848,7 +848,7 @@ pub fn run_with_threads(
             written |= scatter(&ctx, &mut out, b, &r);
         }
     } else {
-        let mut all = || -> Result<u8, EmuError> {
+        let all = || -> Result<u8, EmuError> {
             let mut written = 0u8;
             let mut start = 0;
             while start < batches {
@@ -893,11 +893,7 @@ pub fn run_with_threads(
             }
             Ok(written)
         };
-        written = if threads == 0 {
-            all()?
-        } else {
-            pool(threads)?.install(all)?
-        };
+        written = on_threads(threads, all)??;
     }
     for (i, c) in out.color.iter_mut().enumerate() {
         if written & (1 << i) == 0 {
@@ -976,6 +972,18 @@ impl Total {
             return Err(self.error());
         }
         Ok(())
+    }
+}
+
+/// Runs `f` on a rayon pool of `threads` threads: the current one when it
+/// has that many (or `threads` is 0), so that a caller's other work on the
+/// same pool shares its threads with the draw instead of adding to them;
+/// otherwise a pool of its own.
+pub fn on_threads<T: Send>(threads: usize, f: impl FnOnce() -> T + Send) -> Result<T, EmuError> {
+    if threads == 0 || threads == rayon::current_num_threads() {
+        Ok(f())
+    } else {
+        Ok(pool(threads)?.install(f))
     }
 }
 

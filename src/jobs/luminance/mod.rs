@@ -432,6 +432,7 @@ fn bounds_of(tiling: Tiling, folds: Vec<Vec<BoundFold>>) -> (Vec<Vec<f64>>, u64)
 
 /// One block's pass-1 bound, folded over its texels in the shader's order:
 /// the running f32 sum's partial sums, and each term's own error.
+#[derive(Clone, Copy)]
 struct BoundFold {
     delta: f64,
     partial: f64,
@@ -468,24 +469,26 @@ impl BoundFold {
 }
 
 impl BlockFold for BoundFold {
-    fn row(&mut self, pixels: &[[f32; 4]], terms: &[Option<f64>], padding: u32) {
+    #[inline]
+    fn pixel(&mut self, p: [f32; 4], term: Option<f64>) {
+        let Some(t) = term else {
+            return;
+        };
         let delta = self.delta;
-        for (&p, &term) in pixels.iter().zip(terms) {
-            let Some(t) = term else {
-                continue;
-            };
-            let l = crate::core::image::luminance(p);
-            let a = 0.27 * (p[0] as f64).abs()
-                + 0.67 * (p[1] as f64).abs()
-                + 0.06 * (p[2] as f64).abs()
-                + delta;
-            let x_exact = (delta + l).abs();
-            let abs_err = 8.0 * U32 * a;
-            if t.is_finite() && abs_err >= x_exact / 2.0 {
-                self.ill += 1;
-            }
-            self.add(t, abs_err / (x_exact * std::f64::consts::LN_2) + ulp32(t));
+        let l = crate::core::image::luminance(p);
+        let a = 0.27 * (p[0] as f64).abs()
+            + 0.67 * (p[1] as f64).abs()
+            + 0.06 * (p[2] as f64).abs()
+            + delta;
+        let x_exact = (delta + l).abs();
+        let abs_err = 8.0 * U32 * a;
+        if t.is_finite() && abs_err >= x_exact / 2.0 {
+            self.ill += 1;
         }
+        self.add(t, abs_err / (x_exact * std::f64::consts::LN_2) + ulp32(t));
+    }
+
+    fn end_row(&mut self, padding: u32) {
         self.add_padding(padding);
     }
 
@@ -726,8 +729,17 @@ fn run_impl(
 ) -> Result<LuminanceRun, PipelineError> {
     let g = Geometry::new(image, s.block, last.is_some())?;
     let delta = s.delta as f64;
-    let (t1, pass1_cost, pass1_last) = run_pass1(image, &g, pass1, last, s)?;
-    let (blocks, ill, true_ref) = check_blocks(image, &g, &t1, s)?;
+    // Pass 1 and the f64 reference do not depend on each other: they share
+    // the run's threads.
+    let (drawn, references) = emu::on_threads(s.threads.unwrap_or(0), || {
+        rayon::join(
+            || run_pass1(image, &g, pass1, last, s),
+            || block_references(image, &g, s),
+        )
+    })
+    .map_err(|e| PipelineError::Draw(DrawError::Emu(e)))?;
+    let (t1, pass1_cost, pass1_last) = drawn?;
+    let (blocks, ill, true_ref) = check_blocks(&g, &t1, references?, s);
     let (pass2_cost, log_average, pass2_check, rel2) = run_pass2(&g, &t1, pass2, s)?;
 
     // End to end: the emulated L̄w against the true L̄w of the image (every
@@ -845,27 +857,55 @@ fn run_last_column(
     Ok(pass_cost(&ll, &envl, e, f)?.0)
 }
 
-/// Every block of pass 1's target against the f64 reference and its bound;
-/// also returns the number of ill-conditioned terms and the whole image's
-/// reference (one scan computes all three).
-fn check_blocks(
+/// The f64 reference of every block of pass 1 with its bound, and the whole
+/// image's (one scan computes them all).
+struct BlockReferences {
+    whole: reference::Reference,
+    sums: reference::BlockSums,
+    bounds: Vec<Vec<f64>>,
+    ill: u64,
+}
+
+fn block_references(
     image: &HdrImage,
     g: &Geometry,
-    t1: &RenderTarget,
     s: &Settings,
-) -> Result<(Vec<BlockCheck>, u64, reference::Reference), PipelineError> {
+) -> Result<BlockReferences, PipelineError> {
     let delta = s.delta as f64;
     let tiling = Tiling {
         block_width: g.bw,
         block_height: g.bh,
         last_width: g.last_w,
     };
-    let (whole, refs, folds) =
+    let (whole, sums, folds) =
         reference::fold_blocks_with_sums(image, delta, s.policy, tiling, |_, _| {
             BoundFold::new(delta)
         })
         .map_err(|e| PipelineError::Reference(e.to_string()))?;
     let (bounds, ill) = bounds_of(tiling, folds);
+    Ok(BlockReferences {
+        whole,
+        sums,
+        bounds,
+        ill,
+    })
+}
+
+/// Every block of pass 1's target against its f64 reference and bound;
+/// also returns the number of ill-conditioned terms and the whole image's
+/// reference.
+fn check_blocks(
+    g: &Geometry,
+    t1: &RenderTarget,
+    r: BlockReferences,
+    s: &Settings,
+) -> (Vec<BlockCheck>, u64, reference::Reference) {
+    let BlockReferences {
+        whole,
+        sums: refs,
+        bounds,
+        ill,
+    } = r;
     let mut blocks = Vec::with_capacity((g.nx * g.ny) as usize);
     for by in 0..g.ny {
         for bx in 0..g.nx {
@@ -886,7 +926,7 @@ fn check_blocks(
             });
         }
     }
-    Ok((blocks, ill, whole))
+    (blocks, ill, whole)
 }
 
 /// Pass 2 over pass 1's target: its cost, the emulated L̄w, and its check

@@ -210,7 +210,7 @@ pub fn scan(
     image: &HdrImage,
     delta: f64,
     policy: Policy,
-    mut visit: impl FnMut(&Band<'_>),
+    mut visit: impl FnMut(&Band<'_>) + Send,
 ) -> Reference {
     use rayon::prelude::*;
     let mut result = Reference {
@@ -247,17 +247,27 @@ pub fn scan(
             result.negative_pixels += s.negative;
             result.nonfinite_pixels += s.nonfinite;
         }
-        for &term in terms.iter().flatten() {
-            result.samples += 1;
-            result.log2_sum += term;
-            result.magnitude_sum += term.abs();
-        }
-        visit(&Band {
+        let band = Band {
             y0: (band * band_rows) as u32,
             width: image.width,
             pixels: band_pixels,
             terms,
-        });
+        };
+        // The whole image's sum is one chain in row-major order; the
+        // blocks' folds are others: on two threads they run side by side.
+        rayon::join(
+            || {
+                let (mut samples, mut sum, mut magnitude) =
+                    (result.samples, result.log2_sum, result.magnitude_sum);
+                for &term in band.terms.iter().flatten() {
+                    samples += 1;
+                    sum += term;
+                    magnitude += term.abs();
+                }
+                (result.samples, result.log2_sum, result.magnitude_sum) = (samples, sum, magnitude);
+            },
+            || visit(&band),
+        );
     }
     result.log_average = (result.log2_sum / result.samples as f64).exp2();
     result
@@ -266,19 +276,31 @@ pub fn scan(
 /// What is folded over one block's texels, in the shader's order: rows top
 /// to bottom, each left to right, padding texels (outside the image, black)
 /// after the row's pixels and in the rows below the image.
-pub trait BlockFold: Send {
-    /// One row of the block inside the image: its pixels and their terms,
-    /// then `padding` texels beyond the image's right edge.
-    fn row(&mut self, pixels: &[[f32; 4]], terms: &[Option<f64>], padding: u32);
+///
+/// Folds take one pixel at a time so that two folds over the same texels
+/// (a pair) run as one loop: each fold's running sums are a chain of
+/// dependent additions, and in one loop the processor overlaps the chains
+/// instead of waiting on each in turn.
+pub trait BlockFold: Send + Copy {
+    /// One pixel of the block inside the image, and its term.
+    fn pixel(&mut self, pixel: [f32; 4], term: Option<f64>);
+    /// The end of one row inside the image: `padding` texels beyond the
+    /// image's right edge.
+    fn end_row(&mut self, padding: u32);
     /// `rows` rows of the block below the image, `read` texels each.
     fn rows_below(&mut self, rows: u32, read: u32);
 }
 
 /// Two folds over the same texels.
 impl<A: BlockFold, B: BlockFold> BlockFold for (A, B) {
-    fn row(&mut self, pixels: &[[f32; 4]], terms: &[Option<f64>], padding: u32) {
-        self.0.row(pixels, terms, padding);
-        self.1.row(pixels, terms, padding);
+    #[inline]
+    fn pixel(&mut self, pixel: [f32; 4], term: Option<f64>) {
+        self.0.pixel(pixel, term);
+        self.1.pixel(pixel, term);
+    }
+    fn end_row(&mut self, padding: u32) {
+        self.0.end_row(padding);
+        self.1.end_row(padding);
     }
     fn rows_below(&mut self, rows: u32, read: u32) {
         self.0.rows_below(rows, read);
@@ -366,11 +388,17 @@ pub fn fold_blocks<F: BlockFold>(
                     let x0 = bx * bw;
                     let x1 = (x0 + tiling.read(bx, nx)).min(width);
                     let padding = x0 + tiling.read(bx, nx) - x1;
+                    // A local copy keeps the running sums in registers.
+                    let mut f = *fold;
                     for row in y..end {
                         let start = ((row - band.y0) * width) as usize;
                         let span = start + x0 as usize..start + x1 as usize;
-                        fold.row(&band.pixels[span.clone()], &band.terms[span], padding);
+                        for (&p, &t) in band.pixels[span.clone()].iter().zip(&band.terms[span]) {
+                            f.pixel(p, t);
+                        }
+                        f.end_row(padding);
                     }
+                    *fold = f;
                 });
             y = end;
         }
@@ -385,6 +413,7 @@ pub fn fold_blocks<F: BlockFold>(
 }
 
 /// The block sums' fold: the terms in order, padding added once at the end.
+#[derive(Clone, Copy)]
 struct SumFold {
     sum: f64,
     magnitude: f64,
@@ -397,13 +426,15 @@ struct SumFold {
 }
 
 impl BlockFold for SumFold {
-    fn row(&mut self, pixels: &[[f32; 4]], terms: &[Option<f64>], _padding: u32) {
-        self.inside += pixels.len() as u64;
-        for &term in terms.iter().flatten() {
+    #[inline]
+    fn pixel(&mut self, _: [f32; 4], term: Option<f64>) {
+        self.inside += 1;
+        if let Some(term) = term {
             self.sum += term;
             self.magnitude += term.abs();
         }
     }
+    fn end_row(&mut self, _padding: u32) {}
     fn rows_below(&mut self, _rows: u32, _read: u32) {}
 }
 
@@ -582,7 +613,8 @@ pub fn fold_blocks_with_sums<F: BlockFold>(
 
 /// No fold: [`block_sums_last_width`] folds only the sums.
 impl BlockFold for () {
-    fn row(&mut self, _: &[[f32; 4]], _: &[Option<f64>], _: u32) {}
+    fn pixel(&mut self, _: [f32; 4], _: Option<f64>) {}
+    fn end_row(&mut self, _: u32) {}
     fn rows_below(&mut self, _: u32, _: u32) {}
 }
 
