@@ -129,7 +129,11 @@ impl SourceFile {
 
     /// 1-based line number of a byte offset.
     pub fn line_of(&self, offset: u32) -> usize {
-        self.line_col(offset).0
+        let offset = (offset as usize).min(self.text.len());
+        match self.line_starts.binary_search(&offset) {
+            Ok(i) => i + 1,
+            Err(i) => i,
+        }
     }
 
     /// The byte range of a 0-based line, line break included.

@@ -14,7 +14,7 @@ use super::ast::{Count, InstrAst, OperandAst, RegAst, RelAst, Stmt};
 use crate::core::diag::{excerpt, Diagnostic, Diagnostics};
 use crate::core::ir::Span;
 use nom::branch::alt;
-use nom::bytes::complete::{tag_no_case, take_while, take_while1};
+use nom::bytes::complete::{take_while, take_while1};
 use nom::character::complete::{char, digit1, space0};
 use nom::combinator::recognize;
 use nom::number::complete::recognize_float;
@@ -272,6 +272,19 @@ fn is_ident_char(c: char) -> bool {
 /// Separators inside the article's spelling `BEGIN REPEAT BLOCK(n)`.
 fn macro_sep(i: &str) -> IResult<&str, &str> {
     take_while1(|c: char| c == '_' || c == ' ' || c == '\t').parse(i)
+}
+
+/// `word` in any ASCII case. Every keyword of the language is ASCII; nom's
+/// `tag_no_case` compares Unicode lowercase letter by letter, which was a
+/// tenth of loading a long listing (and took `K`, the Kelvin sign, for `k`).
+fn tag_no_case<'a>(word: &'static str) -> impl Fn(&'a str) -> IResult<&'a str, &'a str> {
+    move |i: &'a str| match i.get(..word.len()) {
+        Some(head) if head.eq_ignore_ascii_case(word) => Ok((&i[word.len()..], head)),
+        _ => Err(nom::Err::Error(NomError::new(
+            i,
+            nom::error::ErrorKind::Tag,
+        ))),
+    }
 }
 
 fn repeat_keyword<'a>(
