@@ -122,10 +122,6 @@ impl<'p> Fitter<'p> {
         measure(loaded, &env, profile).map(Some)
     }
 
-    fn pass1_fits(&mut self, form: Pass1Form, taps: u32, rows: u32) -> Result<bool, GenError> {
-        Ok(self.pass1(form, taps, rows)?.is_some_and(|c| c.fits()))
-    }
-
     /// The widest block (texels per line) of `form`, at most `cap`, whose
     /// one-line block fits the profile.
     pub fn widest(&mut self, form: Pass1Form, cap: u32) -> Result<Option<u32>, GenError> {
@@ -133,7 +129,7 @@ impl<'p> Fitter<'p> {
             Pass1Form::Loop => cap.min(self.profile.max_rep_count),
             Pass1Form::Unrolled => cap.min(self.profile.max_slots.min(u32::MAX as u64) as u32),
         };
-        self.largest(cap, |f, taps| f.pass1_fits(form, taps, 1))
+        self.largest(cap, |f, taps| f.pass1(form, taps, 1))
     }
 
     /// The tallest block (lines), at most `cap`, of `form` with `taps`
@@ -145,33 +141,89 @@ impl<'p> Fitter<'p> {
         cap: u32,
     ) -> Result<Option<u32>, GenError> {
         let cap = cap.min(self.profile.max_rep_count);
-        self.largest(cap, |f, rows| f.pass1_fits(form, taps, rows))
+        self.largest(cap, |f, rows| f.pass1(form, taps, rows))
     }
 
-    /// The largest n in 1..=cap with `fits(n)`, for a predicate that holds
-    /// up to some n and not beyond.
+    /// The largest n in 1..=cap whose measured listing fits, for listings
+    /// that fit up to some n and not beyond.
+    ///
+    /// The answer is found by measuring, never by formula: n = 1 and 2 give
+    /// the counts' growth, a straight line through them guesses the last n
+    /// within the limits, and the guess is taken only when it fits and the
+    /// next n does not. Otherwise (counts that do not grow in a straight
+    /// line) a bisection between what was learnt finishes the search. The
+    /// generated listings grow in a straight line, so this takes four
+    /// measurements where bisection alone took about ten.
     fn largest(
         &mut self,
         cap: u32,
-        mut fits: impl FnMut(&mut Self, u32) -> Result<bool, GenError>,
+        mut measure: impl FnMut(&mut Self, u32) -> Result<Option<Checked>, GenError>,
     ) -> Result<Option<u32>, GenError> {
-        if cap == 0 || !fits(self, 1)? {
+        let fits = |c: &Option<Checked>| c.as_ref().is_some_and(Checked::fits);
+        if cap == 0 {
             return Ok(None);
         }
-        let (mut lo, mut hi) = (1u32, cap);
-        if fits(self, hi)? {
-            return Ok(Some(hi));
+        let one = measure(self, 1)?;
+        if !fits(&one) {
+            return Ok(None);
         }
-        // fits(lo) and !fits(hi)
+        // fits(lo); !fits(hi), or hi = cap + 1 when nothing above lo is known
+        // not to fit.
+        let (mut lo, mut hi) = (1u32, cap.saturating_add(1));
+        if cap >= 2 {
+            let two = measure(self, 2)?;
+            if !fits(&two) {
+                return Ok(Some(1));
+            }
+            lo = 2;
+            let guess = self.straight_line(&one, &two).clamp(2, cap);
+            if guess > lo {
+                if fits(&measure(self, guess)?) {
+                    lo = guess;
+                } else {
+                    hi = guess;
+                }
+            }
+            if lo == guess && guess < cap {
+                if fits(&measure(self, guess + 1)?) {
+                    lo = guess + 1;
+                } else {
+                    hi = guess + 1;
+                }
+            }
+        }
+        if hi == cap.saturating_add(1) && lo < cap {
+            if fits(&measure(self, cap)?) {
+                return Ok(Some(cap));
+            }
+            hi = cap;
+        }
         while hi - lo > 1 {
             let mid = lo + (hi - lo) / 2;
-            if fits(self, mid)? {
+            if fits(&measure(self, mid)?) {
                 lo = mid;
             } else {
                 hi = mid;
             }
         }
         Ok(Some(lo))
+    }
+
+    /// The last n at which counts growing in a straight line through the
+    /// measurements at n = 1 and n = 2 stay within the profile's slot and
+    /// executed limits (a guess; `u32::MAX` when they do not grow).
+    fn straight_line(&self, one: &Option<Checked>, two: &Option<Checked>) -> u32 {
+        let (Some(one), Some(two)) = (one, two) else {
+            return u32::MAX;
+        };
+        let last = |at1: u64, at2: u64, limit: u64| match at2.checked_sub(at1) {
+            Some(step) if step > 0 => 1 + limit.saturating_sub(at1) / step,
+            _ => u64::MAX,
+        };
+        let p = self.profile;
+        last(one.slots, two.slots, p.max_slots)
+            .min(last(one.executed, two.executed, p.max_executed))
+            .min(u32::MAX as u64) as u32
     }
 
     /// The pass-2 listing for an `nx × ny` target: the first of unrolled,
@@ -249,6 +301,68 @@ pub fn balanced(frame: u32, tallest: u32) -> u32 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Slots and executed instructions as functions of n.
+    type Growth = fn(u64) -> (u64, u64);
+
+    /// Counts as a function of n, with the profile's problems when over.
+    fn counted(p: &Profile, slots: u64, executed: u64) -> Option<Checked> {
+        let mut problems = Vec::new();
+        if slots > p.max_slots {
+            problems.push("slots".into());
+        }
+        if executed > p.max_executed {
+            problems.push("executed".into());
+        }
+        Some(Checked {
+            slots,
+            executed,
+            nesting: 0,
+            max_rep: 0,
+            problems,
+        })
+    }
+
+    /// The search from a guess finds what trying every n finds, whether the
+    /// counts grow in a straight line (the guess is right), in steps, or
+    /// faster than a line (the guess is wrong and bisection finishes), and
+    /// at every cap.
+    #[test]
+    fn the_search_finds_what_trying_every_n_finds() {
+        let p = Profile::ps_3_0();
+        let growths: [(&str, Growth); 5] = [
+            ("straight", |n| (3 + 4 * n, 6 + 506 * n)),
+            ("flat slots", |n| (9, 1 + 300 * n)),
+            ("steps", |n| (3 + 4 * (n / 7) * 7, 10 * n)),
+            ("faster", |n| (n * n, n)),
+            ("never fits", |n| (600 + n, n)),
+        ];
+        for (name, growth) in growths {
+            for cap in [0, 1, 2, 3, 50, 127, 128, 129, 600, 1024] {
+                let brute = (1..=cap)
+                    .take_while(|&n| {
+                        counted(&p, growth(n as u64).0, growth(n as u64).1)
+                            .unwrap()
+                            .fits()
+                    })
+                    .last();
+                let mut f = Fitter::new(&p);
+                let mut measured = 0;
+                let found = f
+                    .largest(cap, |_, n| {
+                        measured += 1;
+                        let (slots, executed) = growth(n as u64);
+                        Ok(counted(&p, slots, executed))
+                    })
+                    .unwrap();
+                assert_eq!(found, brute, "{name}, cap {cap}");
+                if name == "straight" && cap >= 600 {
+                    // 1, 2, the guess and the one after it.
+                    assert_eq!(measured, 4, "{name}, cap {cap}");
+                }
+            }
+        }
+    }
 
     #[test]
     fn the_widest_unroll_at_512_slots_is_the_articles_125() {
