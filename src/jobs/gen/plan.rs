@@ -422,12 +422,21 @@ pub fn plan_with_range(
     delta: f64,
     log_range: (f64, f64),
 ) -> Result<Plan, GenError> {
-    let mut fitter = Fitter::new(profile);
-    let mut notes = Vec::new();
-    let mut all = Vec::new();
-    for form in [Pass1Form::Unrolled, Pass1Form::Loop] {
-        all.extend(candidates(&mut fitter, frame, delta, form, &mut notes)?);
-    }
+    // The forms and the mip-chain method are measured side by side, each
+    // form with a fitter of its own; notes and errors keep the forms' order.
+    let form = |form| {
+        let mut notes = Vec::new();
+        candidates(&mut Fitter::new(profile), frame, delta, form, &mut notes).map(|c| (c, notes))
+    };
+    let (unrolled, (looped, approximate)) = rayon::join(
+        || form(Pass1Form::Unrolled),
+        || rayon::join(|| form(Pass1Form::Loop), || mip_candidate(frame, log_range)),
+    );
+    let (mut all, mut notes) = unrolled?;
+    let (more, more_notes) = looped?;
+    all.extend(more);
+    notes.extend(more_notes);
+    let approximate = approximate?;
     all.sort_by_key(rank_key);
     let recommended = all.iter().find(|c| c.passes == 2);
     let why = match recommended {
@@ -444,7 +453,7 @@ pub fn plan_with_range(
         rule: RULE.to_string(),
         why,
         notes,
-        approximate: mip_candidate(frame, log_range)?,
+        approximate,
     })
 }
 
