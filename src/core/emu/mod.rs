@@ -793,12 +793,12 @@ pub fn check(compiled: &Compiled, draw: &Draw) -> Result<(), EmuError> {
     RunCtx::new(compiled, draw, 1).map(|_| ())
 }
 
-/// Runs a draw on rayon's global pool.
+/// Runs a draw on the current rayon pool (the global one outside any other).
 pub fn run(compiled: &Compiled, draw: &Draw) -> Result<DrawOutput, EmuError> {
     run_with_threads(compiled, draw, 0)
 }
 
-/// Runs a draw on `threads` worker threads (`0`: rayon's global pool, `1`:
+/// Runs a draw on `threads` worker threads (`0`: the current rayon pool, `1`:
 /// the calling thread only). Results, executed counts and errors are the same
 /// for every thread count: pixels are independent, and when several batches
 /// fail, the error of the first failing batch is reported.
