@@ -831,22 +831,20 @@ fn every_command_that_reads_a_shader_takes_bytecode_and_gets_the_same_results() 
     let run = |s: &str| {
         json(&ps30(
             &[
-                "run",
-                s,
-                "--image",
-                "assets/hdr/sunset.pfm",
-                "--target",
-                "9x4",
-                "--const",
-                "c0=0,0,0,0",
-                "--const",
-                "c1=0.0009765625,0.001953125,0,1",
-                "--const",
-                "c3=0.27,0.67,0.06,0.01",
-                "--int",
-                "i2=128",
-                "--json",
-            ],
+                &[
+                    "run",
+                    s,
+                    "--image",
+                    "assets/hdr/sunset.pfm",
+                    "--target",
+                    "9x4",
+                    "--int",
+                    "i2=128",
+                    "--json",
+                ][..],
+                &bin::LOOP_FLOATS,
+            ]
+            .concat(),
             repo(),
         ))
     };

@@ -569,17 +569,7 @@ fn every_bound_is_tested_on_both_sides() {
         "--max-executed-per-pixel",
     );
     // --max-target-pixels: 8×10 blocks of 128×52 make an 8×10 = 80-pixel target.
-    let run = |cap: &str| {
-        ps30(
-            &[
-                &["run", "corrected:loop", "--image", img, "--target", "8x10"][..],
-                &bin::LOOP_CONSTANTS,
-                &["--max-target-pixels", cap],
-            ]
-            .concat(),
-            d,
-        )
-    };
+    let run = |cap: &str| ps30(&bin::loop_args(img, &["--max-target-pixels", cap]), d);
     expect("target at the cap", &run("80"), 0, "8×10 target");
     expect(
         "target one over the cap",
@@ -631,19 +621,10 @@ fn a_failed_run_leaves_no_file_behind() {
     let img = repo().join("assets/hdr/sunset.exr");
     // The draw fails (executed cap): no output file, not even a partial one.
     let o = ps30(
-        &[
-            &[
-                "run",
-                "corrected:loop",
-                "--image",
-                img.to_str().unwrap(),
-                "--target",
-                "8x10",
-            ][..],
-            &bin::LOOP_CONSTANTS,
+        &bin::loop_args(
+            img.to_str().unwrap(),
             &["--max-executed-per-pixel", "100", "-o", "out.exr"],
-        ]
-        .concat(),
+        ),
         d,
     );
     expect("a failing draw", &o, 2, "--max-executed-per-pixel");
@@ -679,19 +660,10 @@ fn outputs_are_byte_identical_across_runs_and_thread_counts() {
     for (i, threads) in ["1", "2", "2"].iter().enumerate() {
         let out = format!("out{i}.exr");
         let o = ps30(
-            &[
-                &[
-                    "run",
-                    "corrected:loop",
-                    "--image",
-                    img.to_str().unwrap(),
-                    "--target",
-                    "8x10",
-                ][..],
-                &bin::LOOP_CONSTANTS,
+            &bin::loop_args(
+                img.to_str().unwrap(),
                 &["--threads", threads, "-o", &out, "--json"],
-            ]
-            .concat(),
+            ),
             d,
         );
         assert_eq!(o.code, Some(0), "{}", o.stderr);

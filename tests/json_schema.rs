@@ -203,16 +203,7 @@ fn every_command_matches_the_schema() {
         repo,
         &[0],
     );
-    let mut run = vec![
-        "run",
-        "corrected:loop",
-        "--image",
-        "assets/hdr/forest.hdr",
-        "--target",
-        "8x10",
-        "--json",
-    ];
-    run.extend(bin::LOOP_CONSTANTS);
+    let run = bin::loop_args("assets/hdr/forest.hdr", &["--json"]);
     check("run", &run, repo, &[0]);
     let v = check(
         "luminance",

@@ -244,20 +244,7 @@ fn the_output_format_follows_the_extension() {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
     let img = bin::repo().join("assets/hdr/forest.hdr");
-    let run = |name: &str| {
-        let mut args = vec![
-            "run",
-            "corrected:loop",
-            "--image",
-            img.to_str().unwrap(),
-            "--target",
-            "8x10",
-            "-o",
-            name,
-        ];
-        args.extend(bin::LOOP_CONSTANTS);
-        ps30_in(d, &args)
-    };
+    let run = |name: &str| ps30_in(d, &bin::loop_args(img.to_str().unwrap(), &["-o", name]));
     for (name, magic) in [
         ("a.exr", &[0x76u8, 0x2f, 0x31, 0x01][..]),
         ("a.pfm", b"Pf"),

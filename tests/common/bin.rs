@@ -56,14 +56,14 @@ pub fn ps30_with_stdin(args: &[&str], dir: &Path, input: &[u8]) -> Output {
     child.wait_with_output().expect("wait for ps30")
 }
 
-/// The constants `corrected:loop` reads, as the README's `run` example sets
-/// them for forest.hdr (c0.z = 0 clears the accumulator; 128 × 52 texels
-/// of a 1024 × 512 image).
-pub const LOOP_CONSTANTS: [&str; 10] = [
-    "--int",
-    "i1=128",
-    "--int",
-    "i2=52",
+/// The loop counts `corrected:loop` reads, as the README's `run` example
+/// sets them for forest.hdr: 128 × 52 texels of a 1024 × 512 image.
+pub const LOOP_INTS: [&str; 4] = ["--int", "i1=128", "--int", "i2=52"];
+
+/// The float constants `corrected:loop` reads (c0.z = 0 clears the
+/// accumulator; c1 is one texel of a 1024 × 512 image; c3 the luminance
+/// weights and δ).
+pub const LOOP_FLOATS: [&str; 6] = [
     "--const",
     "c0=0,0,0,0",
     "--const",
@@ -72,19 +72,25 @@ pub const LOOP_CONSTANTS: [&str; 10] = [
     "c3=0.27,0.67,0.06,0.01",
 ];
 
-/// Runs the README's `run` example — `corrected:loop` over forest.hdr into
-/// an 8 × 10 target with [`LOOP_CONSTANTS`] — with `extra` flags, in the
-/// repository root.
-pub fn run_loop_example(extra: &[&str]) -> Output {
+/// The README's `run` example on `image`: `corrected:loop` into an 8 × 10
+/// target with [`LOOP_INTS`] and [`LOOP_FLOATS`], then `extra`.
+pub fn loop_args<'a>(image: &'a str, extra: &[&'a str]) -> Vec<&'a str> {
     let mut args = vec![
         "run",
         "corrected:loop",
         "--image",
-        "assets/hdr/forest.hdr",
+        image,
         "--target",
         "8x10",
     ];
-    args.extend(LOOP_CONSTANTS);
+    args.extend(LOOP_INTS);
+    args.extend(LOOP_FLOATS);
     args.extend(extra);
-    ps30(&args, repo())
+    args
+}
+
+/// Runs the README's `run` example over forest.hdr ([`loop_args`]) with
+/// `extra` flags, in the repository root.
+pub fn run_loop_example(extra: &[&str]) -> Output {
+    ps30(&loop_args("assets/hdr/forest.hdr", extra), repo())
 }

@@ -39,6 +39,21 @@ fn pos_draw<'a>(w: u32, h: u32) -> Draw<'a> {
     d
 }
 
+/// A `w × h` draw with v0 interpolated by `input` and `texture` on s0
+/// under `state`.
+fn textured<'a>(
+    w: u32,
+    h: u32,
+    input: LinearInput,
+    texture: Texture<'a>,
+    state: SamplerState,
+) -> Draw<'a> {
+    let mut d = Draw::new(w, h);
+    d.inputs.push((0, input));
+    d.samplers.push((0, texture.into(), state));
+    d
+}
+
 fn bits(v: [f32; 4]) -> [u32; 4] {
     v.map(f32::to_bits)
 }
@@ -1155,31 +1170,26 @@ const BUSY: &str = "dcl_texcoord0 v0
      mov oC1, r1";
 
 fn busy_draw(texels: &[[f32; 4]], w: u32, h: u32) -> Draw<'_> {
-    let mut d = Draw::new(w, h);
-    d.inputs.push((
-        0,
+    textured(
+        w,
+        h,
         LinearInput {
             base: [0.01, 0.02, 0.3, 1.0],
             ddx: [0.013, 0.007, 0.011, 0.0],
             ddy: [0.005, 0.017, 0.023, 0.0],
         },
-    ));
-    d.samplers.push((
-        0,
         Texture {
             width: 5,
             height: 3,
             texels,
-        }
-        .into(),
+        },
         SamplerState {
             address_u: Address::Wrap,
             address_v: Address::Mirror,
             border: [0.0; 4],
             ..SamplerState::filtered(Filter::Linear)
         },
-    ));
-    d
+    )
 }
 
 /// Runs `f` with the portable executor forced on this thread.
@@ -1258,31 +1268,26 @@ const POINT_BORDER: &str = "dcl_texcoord0 v0
 /// A 37×23 draw of [`POINT_BORDER`] over a 5×3 texture, its coordinates
 /// starting left of and above it and leaving it on the right and below.
 fn point_border_draw(texels: &[[f32; 4]]) -> Draw<'_> {
-    let mut d = Draw::new(37, 23);
-    d.inputs.push((
-        0,
+    textured(
+        37,
+        23,
         LinearInput {
             base: [-0.05, -0.03, 0.0, 0.0],
             ddx: [0.031, 0.007, 0.0, 0.0],
             ddy: [0.004, 0.049, 0.0, 0.0],
         },
-    ));
-    d.samplers.push((
-        0,
         Texture {
             width: 5,
             height: 3,
             texels,
-        }
-        .into(),
+        },
         SamplerState {
             address_u: Address::Border,
             address_v: Address::Border,
             border: [0.25, 0.5, 0.75, 2.0],
             ..SamplerState::filtered(Filter::Point)
         },
-    ));
-    d
+    )
 }
 
 #[test]
@@ -1315,30 +1320,26 @@ fn masked_texld_writes_only_its_components() {
          mov oC1, r1
          mov oC2, r2
          mov oC3, r4";
-    let mut d = Draw::new(1, 1);
-    d.inputs.push((
-        0,
+    let d = textured(
+        1,
+        1,
         LinearInput {
             base: [0.7, 0.5, 0.0, 0.0],
             ddx: [0.2, 0.0, 0.0, 0.0],
             ddy: [0.0; 4],
         },
-    ));
-    d.samplers.push((
-        0,
         Texture {
             width: 5,
             height: 3,
             texels: &texels,
-        }
-        .into(),
+        },
         SamplerState {
             address_u: Address::Border,
             address_v: Address::Border,
             border: [0.25, 0.5, 0.75, 2.0],
             ..SamplerState::filtered(Filter::Point)
         },
-    ));
+    );
     let out = run_text(text, &d);
     let c = |k: usize| out.color[k].as_ref().unwrap()[0];
     assert_eq!(bits(c(0)), bits([8.0, -2.0, 0.5, -4.0]));
@@ -1661,44 +1662,21 @@ fn nested_text() -> String {
     )
 }
 
-#[test]
-#[ignore]
-fn perf_nested_workload() {
-    let c = compiled(&nested_text());
-    let texels: Vec<[f32; 4]> = (0..64 * 64)
-        .map(|i| [(i % 5) as f32 * 0.2 + 0.01, 0.5, 0.25, 1.0])
-        .collect();
-    let mut d = Draw::new(10, 19);
-    d.inputs.push((
-        0,
-        LinearInput {
-            base: [0.0; 4],
-            ddx: [0.1, 0.0, 0.0, 0.0],
-            ddy: [0.0, 1.0 / 19.0, 0.0, 0.0],
-        },
-    ));
-    d.samplers.push((
-        0,
-        Texture {
-            width: 64,
-            height: 64,
-            texels: &texels,
-        }
-        .into(),
-        SamplerState::default(),
-    ));
+/// Prints the draw's best time over 30 runs on one and two threads, and
+/// its throughput (minimum over runs: the machine may be shared).
+fn print_speed(label: &str, c: &Compiled, d: &Draw) {
     for threads in [1, 2] {
         let mut dt = std::time::Duration::MAX;
         let mut out = None;
         for _ in 0..30 {
             let t = std::time::Instant::now();
-            out = Some(run_with_threads(&c, &d, threads).unwrap());
+            out = Some(run_with_threads(c, d, threads).unwrap());
             dt = dt.min(t.elapsed());
         }
         let out = out.unwrap();
         let slots: u64 = out.executed.iter().sum();
         println!(
-            "nested, {threads} thread(s): {:?} per draw, {} slots/pixel, {:.1} M slot-lanes/s",
+            "{label}{threads} thread(s): {:?} per draw, {} slots/pixel, {:.1} M slot-lanes/s",
             dt,
             out.executed[0],
             slots as f64 / dt.as_secs_f64() / 1e6
@@ -1708,48 +1686,52 @@ fn perf_nested_workload() {
 
 #[test]
 #[ignore]
+fn perf_nested_workload() {
+    let c = compiled(&nested_text());
+    let texels: Vec<[f32; 4]> = (0..64 * 64)
+        .map(|i| [(i % 5) as f32 * 0.2 + 0.01, 0.5, 0.25, 1.0])
+        .collect();
+    let d = textured(
+        10,
+        19,
+        LinearInput {
+            base: [0.0; 4],
+            ddx: [0.1, 0.0, 0.0, 0.0],
+            ddy: [0.0, 1.0 / 19.0, 0.0, 0.0],
+        },
+        Texture {
+            width: 64,
+            height: 64,
+            texels: &texels,
+        },
+        SamplerState::default(),
+    );
+    print_speed("nested, ", &c, &d);
+}
+
+#[test]
+#[ignore]
 fn perf_heavy_workload() {
     let c = compiled(&heavy_text(125));
     let texels: Vec<[f32; 4]> = (0..64 * 64)
         .map(|i| [(i % 7) as f32 * 0.1 + 0.01, 0.5, 0.25, 1.0])
         .collect();
-    let mut d = Draw::new(11, 8);
-    d.inputs.push((
-        0,
+    let d = textured(
+        11,
+        8,
         LinearInput {
             base: [0.0, 0.0, 0.0, 0.0],
             ddx: [1.0 / 11.0, 0.0, 0.0, 0.0],
             ddy: [0.0, 1.0 / 8.0, 0.0, 0.0],
         },
-    ));
-    d.samplers.push((
-        0,
         Texture {
             width: 64,
             height: 64,
             texels: &texels,
-        }
-        .into(),
+        },
         SamplerState::default(),
-    ));
-    for threads in [1, 2] {
-        // Minimum over runs: the machine may be shared.
-        let mut dt = std::time::Duration::MAX;
-        let mut out = None;
-        for _ in 0..30 {
-            let t = std::time::Instant::now();
-            out = Some(run_with_threads(&c, &d, threads).unwrap());
-            dt = dt.min(t.elapsed());
-        }
-        let out = out.unwrap();
-        let slots: u64 = out.executed.iter().sum();
-        println!(
-            "{threads} thread(s): {:?} per draw, {} slots/pixel, {:.1} M slot-lanes/s",
-            dt,
-            out.executed[0],
-            slots as f64 / dt.as_secs_f64() / 1e6
-        );
-    }
+    );
+    print_speed("", &c, &d);
 }
 
 #[test]
@@ -1864,25 +1846,21 @@ fn texld_into_outputs_and_inside_divergent_branches() {
            texld r0, v0, s0
          endif
          mov oC0, r0";
-    let mut d = Draw::new(4, 1);
-    d.inputs.push((
-        0,
+    let d = textured(
+        4,
+        1,
         LinearInput {
             base: [0.125, 0.5, 0.0, 0.0],
             ddx: [0.25, 0.0, 0.0, 0.0],
             ddy: [0.0; 4],
         },
-    ));
-    d.samplers.push((
-        0,
         Texture {
             width: 2,
             height: 1,
             texels: &tex,
-        }
-        .into(),
+        },
         SamplerState::default(),
-    ));
+    );
     let out = run_text(text, &d);
     let c2 = out.color[2].as_ref().unwrap();
     assert_eq!(c2, &vec![tex[0], tex[0], tex[1], tex[1]]);

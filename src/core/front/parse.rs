@@ -277,7 +277,7 @@ fn macro_sep(i: &str) -> IResult<&str, &str> {
 /// `word` in any ASCII case. Every keyword of the language is ASCII; nom's
 /// `tag_no_case` compares Unicode lowercase letter by letter, which was a
 /// tenth of loading a long listing (and took `K`, the Kelvin sign, for `k`).
-fn tag_no_case<'a>(word: &'static str) -> impl Fn(&'a str) -> IResult<&'a str, &'a str> {
+fn ascii_tag<'a>(word: &'static str) -> impl Fn(&'a str) -> IResult<&'a str, &'a str> {
     move |i: &'a str| match i.get(..word.len()) {
         Some(head) if head.eq_ignore_ascii_case(word) => Ok((&i[word.len()..], head)),
         _ => Err(nom::Err::Error(NomError::new(
@@ -291,11 +291,11 @@ fn repeat_keyword<'a>(
     word: &'static str,
 ) -> impl Parser<&'a str, Output = (), Error = NomError<'a>> {
     (
-        tag_no_case(word),
+        ascii_tag(word),
         macro_sep,
-        tag_no_case("repeat"),
+        ascii_tag("repeat"),
         macro_sep,
-        tag_no_case("block"),
+        ascii_tag("block"),
     )
         .map(|_| ())
 }
@@ -304,7 +304,7 @@ fn repeat_keyword<'a>(
 /// refused by name)
 fn version(i: &str) -> IResult<&str, (u32, u32)> {
     let sep = |i| alt((char('_'), char('.'))).parse(i);
-    let (i, _) = alt((tag_no_case("ps"), tag_no_case("vs"))).parse(i)?;
+    let (i, _) = alt((ascii_tag("ps"), ascii_tag("vs"))).parse(i)?;
     let (i, _) = sep(i)?;
     let (i, major) = digit1(i)?;
     let (i, _) = sep(i)?;
@@ -583,7 +583,7 @@ impl<'a> Cursor<'a> {
                 span,
             });
         }
-        if let Some(word) = self.eat(alt((tag_no_case("true"), tag_no_case("false")))) {
+        if let Some(word) = self.eat(alt((ascii_tag("true"), ascii_tag("false")))) {
             if !self.rest.starts_with(is_ident_char) {
                 return Ok(OperandAst::Bool {
                     value: word.eq_ignore_ascii_case("true"),
@@ -841,6 +841,12 @@ mod tests {
         ));
         assert!(matches!(one("END REPEAT BLOCK"), Stmt::RepeatEnd { .. }));
         assert!(matches!(one("END_REPEAT_BLOCK"), Stmt::RepeatEnd { .. }));
+        assert!(matches!(one("End_Repeat_Block"), Stmt::RepeatEnd { .. }));
+        // Keywords are ASCII: the Kelvin sign, whose lowercase is `k`, does
+        // not spell BLOCK: the line is refused.
+        let (stmts, diags) = parse("END_REPEAT_BLOC\u{212A}");
+        assert!(!matches!(stmts.first(), Some(Stmt::RepeatEnd { .. })));
+        assert!(diags.has_errors());
     }
 
     #[test]

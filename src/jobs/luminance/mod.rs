@@ -575,27 +575,28 @@ fn draw_into(
     Ok((target, out.executed, out.findings))
 }
 
+/// The cost model's analysis of a loaded pass under `env`.
+fn analyse(loaded: &load::Loaded, env: &Environment) -> Result<cost::Analysis, PipelineError> {
+    cost::analyse(&loaded.shader, &loaded.file, env, &Profile::ps_3_0())
+        .map_err(|e| PipelineError::Cost(e.to_string()))
+}
+
+/// A pass's cost: its static analysis `a` beside what the draw executed.
 fn pass_cost(
     loaded: &load::Loaded,
-    env: &Environment,
+    a: &cost::Analysis,
     emulated: Option<Range>,
     findings: Vec<crate::core::emu::findings::Finding>,
-) -> Result<(PassCost, cost::Analysis), PipelineError> {
-    let a = cost::analyse(&loaded.shader, &loaded.file, env, &Profile::ps_3_0())
-        .map_err(|e| PipelineError::Cost(e.to_string()))?;
-    Ok((
-        PassCost {
-            shader: loaded.file.name.clone(),
-            slots: a.slots,
-            executed_static: a.executed,
-            executed_emulated: emulated,
-            findings,
-            counts_agree: emulated
-                .is_none_or(|e| a.executed.min <= e.min && e.max <= a.executed.max),
-            within_limits: a.verdict == cost::Verdict::Within,
-        },
-        a,
-    ))
+) -> PassCost {
+    PassCost {
+        shader: loaded.file.name.clone(),
+        slots: a.slots,
+        executed_static: a.executed,
+        executed_emulated: emulated,
+        findings,
+        counts_agree: emulated.is_none_or(|e| a.executed.min <= e.min && e.max <= a.executed.max),
+        within_limits: a.verdict == cost::Verdict::Within,
+    }
 }
 
 /// Runs pass 1 and pass 2 on an image and cross-checks every step.
@@ -625,12 +626,12 @@ pub fn run_with_last_column(
 }
 
 /// Loads a pass-1 shader and checks that it reads `bw × bh` texels with
-/// i1 = bw, i2 = bh.
+/// i1 = bw, i2 = bh; returns it with its analysis under those counts.
 fn load_pass1(
     src: &ShaderSource,
     bw: u32,
     bh: u32,
-) -> Result<(load::Loaded, Environment), PipelineError> {
+) -> Result<(load::Loaded, cost::Analysis), PipelineError> {
     let l1 = load(
         src,
         &[("bw", bw as u64), ("bh", bh as u64)],
@@ -639,8 +640,7 @@ fn load_pass1(
     let mut env1 = Environment::default();
     env1.ints.insert(1, [bw as i32, 0, 0, 0]);
     env1.ints.insert(2, [bh as i32, 0, 0, 0]);
-    let static1 = cost::analyse(&l1.shader, &l1.file, &env1, &Profile::ps_3_0())
-        .map_err(|e| PipelineError::Cost(e.to_string()))?;
+    let static1 = analyse(&l1, &env1)?;
     let reads: u64 = l1
         .shader
         .instructions()
@@ -656,7 +656,7 @@ fn load_pass1(
             bw as u64 * bh as u64
         )));
     }
-    Ok((l1, env1))
+    Ok((l1, static1))
 }
 
 /// The geometry of one run: the frame, its blocks and the padding.
@@ -791,7 +791,7 @@ fn run_pass1(
     s: &Settings,
 ) -> Result<(RenderTarget, PassCost, Option<PassCost>), PipelineError> {
     let (w, h, bw, bh, nx, ny) = (g.w, g.h, g.bw, g.bh, g.nx, g.ny);
-    let (l1, env1) = load_pass1(pass1, bw, bh)?;
+    let (l1, static1) = load_pass1(pass1, bw, bh)?;
     let main_cols = if last.is_some() { nx - 1 } else { nx };
     let texture = Texture {
         width: w,
@@ -818,7 +818,7 @@ fn run_pass1(
         emulated1 = e;
         findings1 = f;
     }
-    let (mut pass1_cost, _) = pass_cost(&l1, &env1, emulated1, findings1)?;
+    let mut pass1_cost = pass_cost(&l1, &static1, emulated1, findings1);
     if main_cols == 0 {
         // A frame no wider than one block: the last-column shader draws the
         // only column and `pass1` never runs, so there is no count to compare.
@@ -840,7 +840,7 @@ fn run_last_column(
     t1: &mut RenderTarget,
     s: &Settings,
 ) -> Result<PassCost, PipelineError> {
-    let (ll, envl) = load_pass1(src, g.last_w, g.bh)?;
+    let (ll, static_last) = load_pass1(src, g.last_w, g.bh)?;
     let mut dl = Draw::new(1, g.ny);
     dl.float_rules = s.float_rules;
     dl.limits = s.limits;
@@ -854,7 +854,7 @@ fn run_last_column(
     for y in 0..g.ny {
         t1.store(g.nx - 1, y, t.texel(0, y));
     }
-    Ok(pass_cost(&ll, &envl, e, f)?.0)
+    Ok(pass_cost(&ll, &static_last, e, f))
 }
 
 /// The f64 reference of every block of pass 1 with its bound, and the whole
@@ -962,7 +962,8 @@ fn run_pass2(
     d2.samplers.push(sampler(t1.as_texture()));
     d2.record_lod = true;
     let (t2, emulated2, findings2) = draw_into(&l2, &d2, s.format, &s.backend, s.threads)?;
-    let (pass2_cost, _) = pass_cost(&l2, &Environment::default(), emulated2, findings2)?;
+    let static2 = analyse(&l2, &Environment::default())?;
+    let pass2_cost = pass_cost(&l2, &static2, emulated2, findings2);
     let log_average = t2.texel(0, 0)[0] as f64;
     let applied = if reads_c0y(&l2) { correction } else { 0.0 };
     let (check, rel2) = pass2_check(g, t1, applied, log_average, s.format);
@@ -1100,7 +1101,7 @@ pub fn run_pass(
             setup.constants.bool.get(i).copied().unwrap_or(false),
         );
     }
-    let (cost, _) = pass_cost(loaded, &env, emulated, findings)?;
+    let cost = pass_cost(loaded, &analyse(loaded, &env)?, emulated, findings);
     let outputs = crate::jobs::outputs::summarise(&loaded.shader, &target);
     Ok(PassOutput {
         target,
