@@ -109,8 +109,9 @@ pub fn draw(
                 None => emu::run(&compiled, draw),
             }
             .map_err(DrawError::Emu)?;
-            let min = out.executed.iter().copied().min().unwrap_or(0);
-            let max = out.executed.iter().copied().max().unwrap_or(0);
+            let (min, max) =
+                emu::on_threads(threads.unwrap_or(0), || executed_range(&out.executed))
+                    .map_err(DrawError::Emu)?;
             let findings = emu::findings::findings(&out, draw, file);
             Ok(Drawn {
                 width: out.width,
@@ -131,4 +132,19 @@ pub fn draw(
             })
         }
     }
+}
+
+/// The smallest and largest per-pixel count (0 and 0 for no pixels), in
+/// one parallel pass: on a large target two serial scans cost a tenth of
+/// the draw.
+fn executed_range(executed: &[u64]) -> (u64, u64) {
+    use rayon::prelude::*;
+    if executed.is_empty() {
+        return (0, 0);
+    }
+    executed
+        .par_iter()
+        .with_min_len(1 << 14)
+        .fold(|| (u64::MAX, 0), |(lo, hi), &e| (lo.min(e), hi.max(e)))
+        .reduce(|| (u64::MAX, 0), |a, b| (a.0.min(b.0), a.1.max(b.1)))
 }

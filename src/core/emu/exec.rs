@@ -29,6 +29,7 @@
 
 use super::compile::{Cond, DstOp, Op, Pc, SamplerOp, SrcOp};
 use super::math;
+use super::planes::Planes;
 use super::quad::{quads_all, quads_any, SiteBatch};
 use super::{EmuError, RunCtx, LANES};
 use crate::core::isa::Compare;
@@ -68,19 +69,14 @@ impl Frame {
     }
 }
 
-/// What one batch produced.
+/// What one batch produced besides its pixels and quads (those go straight
+/// into the output: [`Planes`]).
 pub(crate) struct BatchOut {
-    pub color: [[[f32; 4]; LANES]; 4],
-    pub depth: [f32; LANES],
     /// Bit i: `oC#` written by some lane (bit 4: oDepth).
     pub written: u8,
-    pub killed: u64,
-    pub executed: [u64; LANES],
-    /// Executed slots of each quad: each op once per quad with any lane in
-    /// it executing.
-    pub quad_executed: [u64; LANES / 4],
-    /// Bit 4q: quad q ran some op with some but not all of its lanes.
-    pub diverged: u64,
+    /// Executed slots summed over the batch's lanes, helpers included
+    /// (saturating).
+    pub executed: u64,
     /// What each gradient site saw ([`super::Compiled`]'s site order).
     pub sites: Vec<SiteBatch>,
 }
@@ -201,8 +197,9 @@ impl<'c, 'a> Worker<'c, 'a> {
         }
     }
 
-    /// Runs batch `batch` from scratch.
-    pub fn run(&mut self, batch: u64) -> Result<Box<BatchOut>, EmuError> {
+    /// Runs batch `batch` from scratch, writing its pixels and quads into
+    /// `planes`.
+    pub fn run(&mut self, batch: u64, planes: &Planes) -> Result<BatchOut, EmuError> {
         let ctx = self.ctx;
         let layout = &ctx.compiled.layout;
         self.batch = batch;
@@ -256,37 +253,16 @@ impl<'c, 'a> Worker<'c, 'a> {
         self.al = 0;
         self.written = 0;
 
-        let mut out = Box::new(BatchOut {
-            color: [[[0.0; 4]; LANES]; 4],
-            depth: [0.0; LANES],
-            written: 0,
-            killed: 0,
-            executed: [0; LANES],
-            quad_executed: [0; LANES / 4],
-            diverged: 0,
-            sites: Vec::new(),
-        });
         if target != 0 {
-            self.execute(&mut out)?;
+            self.execute(planes)?;
         }
         self.flush();
         self.check_limit(true)?;
-        self.save_outputs(self.live, &mut out);
-        // A discarded pixel reports zeros.
-        for l in lanes(self.killed) {
-            for k in 0..4 {
-                out.color[k][l] = [0.0; 4];
-            }
-            out.depth[l] = 0.0;
-        }
-        out.written = self.written;
-        out.killed = self.killed & self.target;
-        out.executed = self.counts;
-        out.quad_executed = self.quad_counts;
-        out.diverged = self.diverged;
+        self.save_outputs(self.live, planes);
+        self.save_counts(planes);
         let ctx = self.ctx;
-        out.sites = self.sites.clone();
-        for (st, info) in out.sites.iter_mut().zip(&ctx.compiled.sites) {
+        let mut sites = self.sites.clone();
+        for (st, info) in sites.iter_mut().zip(&ctx.compiled.sites) {
             let bias = info
                 .sampler
                 .and_then(|s| ctx.samplers.get(s as usize))
@@ -294,7 +270,11 @@ impl<'c, 'a> Worker<'c, 'a> {
                 .map_or(0.0, |s| s.bias());
             st.finish(bias);
         }
-        Ok(out)
+        Ok(BatchOut {
+            written: self.written,
+            executed: self.counts.iter().fold(0u64, |a, &e| a.saturating_add(e)),
+            sites,
+        })
     }
 
     /// Lanes the batch's ops compute: `0..span()`, at most [`LANES`] (so
@@ -397,23 +377,71 @@ impl<'c, 'a> Worker<'c, 'a> {
 
     /// `ret` in main: the lanes finish now; their outputs are saved because
     /// later full-mask ops may overwrite their (no longer live) rows.
-    fn retire(&mut self, mask: u64, out: &mut BatchOut) {
+    fn retire(&mut self, mask: u64, planes: &Planes) {
         if mask != 0 {
             self.flush();
-            self.save_outputs(mask, out);
+            self.save_outputs(mask, planes);
             self.live &= !mask;
             self.exec &= !mask;
         }
     }
 
-    fn save_outputs(&self, mask: u64, out: &mut BatchOut) {
+    /// The target's pixel index of each lane in `mask` that is inside the
+    /// target.
+    fn pixels(&self, mask: u64) -> impl Iterator<Item = (usize, usize)> + '_ {
+        let w = self.ctx.width;
+        lanes(mask & self.target).map(move |l| {
+            let (x, y, _) = self.ctx.lane_pixel(self.batch, l);
+            (l, (y * w + x) as usize)
+        })
+    }
+
+    /// Writes the outputs the shader writes (no others are kept) of the
+    /// lanes in `mask` inside the target from their rows.
+    fn save_outputs(&self, mask: u64, planes: &Planes) {
         let base = self.ctx.compiled.layout.output as usize;
-        for l in lanes(mask) {
-            for k in 0..4 {
-                let r = base + 4 * k;
-                out.color[k][l] = std::array::from_fn(|c| self.rows[r + c][l]);
+        for (k, plane) in planes.color.iter().enumerate() {
+            let Some(plane) = plane else { continue };
+            let r = base + 4 * k;
+            for (l, i) in self.pixels(mask) {
+                // SAFETY: pixel `i` belongs to this batch alone (`Planes`).
+                unsafe { plane.set(i, std::array::from_fn(|c| self.rows[r + c][l])) };
             }
-            out.depth[l] = self.rows[base + 16][l];
+        }
+        if let Some(plane) = &planes.depth {
+            for (l, i) in self.pixels(mask) {
+                // SAFETY: as above.
+                unsafe { plane.set(i, self.rows[base + 16][l]) };
+            }
+        }
+    }
+
+    /// Writes the batch's discarded pixels (zeros), per-pixel counts and
+    /// per-quad counts.
+    fn save_counts(&self, planes: &Planes) {
+        // SAFETY (every `set` here): pixel `i` and quad `quad` belong to
+        // this batch alone (`Planes`).
+        for (_, i) in self.pixels(self.killed) {
+            for plane in planes.color.iter().flatten() {
+                unsafe { plane.set(i, [0.0; 4]) };
+            }
+            if let Some(plane) = &planes.depth {
+                unsafe { plane.set(i, 0.0) };
+            }
+        }
+        for (l, i) in self.pixels(!0) {
+            unsafe { planes.executed.set(i, self.counts[l]) };
+            unsafe { planes.killed.set(i, self.killed & (1 << l) != 0) };
+        }
+        let ctx = self.ctx;
+        for q in 0..ctx.batch_quads as usize {
+            let quad = self.batch * ctx.batch_quads + q as u64;
+            if quad < ctx.quads {
+                let quad = quad as usize;
+                unsafe { planes.quad_executed.set(quad, self.quad_counts[q]) };
+                let divergent = (self.diverged >> (4 * q)) & 1 != 0;
+                unsafe { planes.quad_divergent.set(quad, divergent) };
+            }
         }
     }
 
@@ -474,21 +502,21 @@ impl<'c, 'a> Worker<'c, 'a> {
     /// vector arithmetic). The AVX2 copy computes the same values: it adds
     /// wider vectors only, and Rust never fuses a multiply and an add unless
     /// told to (no `mul_add` in the emulator), so every op rounds as before.
-    fn execute(&mut self, out: &mut BatchOut) -> Result<(), EmuError> {
+    fn execute(&mut self, planes: &Planes) -> Result<(), EmuError> {
         #[cfg(target_arch = "x86_64")]
         if std::arch::is_x86_feature_detected!("avx2") && !portable_only() {
             // SAFETY: the CPU supports AVX2 (checked just above).
-            return unsafe { self.execute_avx2(out) };
+            return unsafe { self.execute_avx2(planes) };
         }
-        self.execute_ops(out)
+        self.execute_ops(planes)
     }
 
     /// [`Worker::execute_ops`] with AVX2 enabled; the hot handlers are
     /// `#[inline(always)]`, so they are compiled into this copy.
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2")]
-    unsafe fn execute_avx2(&mut self, out: &mut BatchOut) -> Result<(), EmuError> {
-        self.execute_ops(out)
+    unsafe fn execute_avx2(&mut self, planes: &Planes) -> Result<(), EmuError> {
+        self.execute_ops(planes)
     }
 
     /// Runs one arithmetic or `texld`-family op for the executing lanes;
@@ -539,7 +567,7 @@ impl<'c, 'a> Worker<'c, 'a> {
     /// control handled below, the rest by [`Worker::compute`] (arithmetic
     /// in `arith.rs`, texture in `texop.rs`).
     #[inline(always)]
-    fn execute_ops(&mut self, out: &mut BatchOut) -> Result<(), EmuError> {
+    fn execute_ops(&mut self, planes: &Planes) -> Result<(), EmuError> {
         let ops = &self.ctx.compiled.ops[..];
         let mut pc = 0usize;
         loop {
@@ -586,7 +614,7 @@ impl<'c, 'a> Worker<'c, 'a> {
                     pc = self.call_when(self.cond_mask(cond), target, s, pc, at)?
                 }
                 Op::Ret => {
-                    let Some(next) = self.ret_op(s, pc, out)? else {
+                    let Some(next) = self.ret_op(s, pc, planes)? else {
                         return Ok(());
                     };
                     pc = next;
@@ -861,16 +889,11 @@ impl<'c, 'a> Worker<'c, 'a> {
     /// `ret`: in main the executing lanes finish (`None` once no lane is
     /// live), in a subroutine they return; returns the next pc.
     #[inline(always)]
-    fn ret_op(
-        &mut self,
-        slots: u8,
-        pc: usize,
-        out: &mut BatchOut,
-    ) -> Result<Option<usize>, EmuError> {
+    fn ret_op(&mut self, slots: u8, pc: usize, planes: &Planes) -> Result<Option<usize>, EmuError> {
         self.charge(self.exec, slots);
         if self.calls == 0 {
             // ret in main ends the shader for these lanes.
-            self.retire(self.exec, out);
+            self.retire(self.exec, planes);
             Ok((self.live != 0).then_some(pc))
         } else {
             self.ret(pc, false).map(Some)

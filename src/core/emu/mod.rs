@@ -79,6 +79,7 @@ mod compile;
 mod exec;
 pub mod findings;
 mod math;
+mod planes;
 mod quad;
 mod sample;
 #[cfg(test)]
@@ -91,6 +92,7 @@ pub use compile::{compile, Compiled, MicroOp};
 
 use crate::core::isa::SamplerType;
 use exec::{BatchOut, Worker};
+use planes::Planes;
 use rayon::prelude::*;
 use sample::Sampler;
 use std::fmt;
@@ -100,7 +102,7 @@ use std::sync::{Arc, Mutex, OnceLock};
 /// Lanes per batch: 16 quads of 2×2 pixels.
 pub const LANES: usize = 64;
 const QUADS_PER_BATCH: u64 = (LANES / 4) as u64;
-/// Batches run between two merges of results into the output.
+/// Batches run between two merges of their counts, in batch order.
 const CHUNK: u64 = 1024;
 
 /// An interpolated input varying linearly over the target:
@@ -798,8 +800,8 @@ pub fn run(compiled: &Compiled, draw: &Draw) -> Result<DrawOutput, EmuError> {
     run_with_threads(compiled, draw, 0)
 }
 
-/// Runs a draw on `threads` worker threads (`0`: the current rayon pool, `1`:
-/// the calling thread only). Results, executed counts and errors are the same
+/// Runs a draw on `threads` worker threads (`0`: the current rayon pool;
+/// see [`on_threads`]). Results, executed counts and errors are the same
 /// for every thread count: pixels are independent, and when several batches
 /// fail, the error of the first failing batch is reported.
 pub fn run_with_threads(
@@ -837,64 +839,58 @@ pub fn run_with_threads(
         quad_divergent: filled(q, false)?,
         gradients: compiled.sites.clone(),
     };
-    let mut written = 0u8;
     let batches = ctx.batches();
     let mut total = Total::new(&ctx, draw.limits.max_executed_total);
-    if threads == 1 {
-        let mut worker = Worker::new(&ctx);
-        for b in 0..batches {
-            let r = worker.run(b)?;
-            total.add(&r)?;
-            written |= scatter(&ctx, &mut out, b, &r);
-        }
-    } else {
-        let all = || -> Result<u8, EmuError> {
-            let mut written = 0u8;
-            let mut start = 0;
-            while start < batches {
-                let end = (start + CHUNK).min(batches);
-                // Batches after the first failure stop early; the ones before
-                // it always finish, so the reported error does not depend on
-                // scheduling.
-                // Once the batches done (in any order) are over the total
-                // limit, the rest are skipped: the draw fails either way.
-                let first_err = AtomicU64::new(u64::MAX);
-                let results: Vec<Option<Result<Box<BatchOut>, EmuError>>> = (start..end)
-                    .into_par_iter()
-                    .map_init(
-                        || Worker::new(&ctx),
-                        |w, b| {
-                            if b > first_err.load(Ordering::Relaxed) || total.over() {
-                                return None;
-                            }
-                            let r = w.run(b);
-                            match &r {
-                                Ok(out) => total.race(out),
-                                Err(_) => {
-                                    first_err.fetch_min(b, Ordering::Relaxed);
-                                }
-                            }
-                            Some(r)
-                        },
-                    )
-                    .collect();
-                for (b, r) in (start..end).zip(results) {
-                    match r {
-                        Some(Ok(r)) => {
-                            total.add(&r)?;
-                            written |= scatter(&ctx, &mut out, b, &r)
+    let mut gradients = std::mem::take(&mut out.gradients);
+    let planes = Planes::new(&mut out);
+    let all = || -> Result<u8, EmuError> {
+        let mut written = 0u8;
+        let mut start = 0;
+        while start < batches {
+            let end = (start + CHUNK).min(batches);
+            // Batches after the first failure stop early; the ones before
+            // it always finish, so the reported error does not depend on
+            // scheduling.
+            // Once the batches done (in any order) are over the total
+            // limit, the rest are skipped: the draw fails either way.
+            let first_err = AtomicU64::new(u64::MAX);
+            let results: Vec<Option<Result<BatchOut, EmuError>>> = (start..end)
+                .into_par_iter()
+                .map_init(
+                    || Worker::new(&ctx),
+                    |w, b| {
+                        if b > first_err.load(Ordering::Relaxed) || total.over() {
+                            return None;
                         }
-                        Some(Err(e)) => return Err(e),
-                        None if total.over() => return Err(total.error()),
-                        None => {}
+                        let r = w.run(b, &planes);
+                        match &r {
+                            Ok(out) => total.race(out),
+                            Err(_) => {
+                                first_err.fetch_min(b, Ordering::Relaxed);
+                            }
+                        }
+                        Some(r)
+                    },
+                )
+                .collect();
+            for r in results {
+                match r {
+                    Some(Ok(r)) => {
+                        total.add(&r)?;
+                        written |= r.written;
+                        merge_sites(&mut gradients, &r);
                     }
+                    Some(Err(e)) => return Err(e),
+                    // Skipped: only after a failure or over the limit.
+                    None => return Err(total.error()),
                 }
-                start = end;
             }
-            Ok(written)
-        };
-        written = on_threads(threads, all)??;
-    }
+            start = end;
+        }
+        Ok(written)
+    };
+    let written = on_threads(threads, all)??;
+    out.gradients = gradients;
     for (i, c) in out.color.iter_mut().enumerate() {
         if written & (1 << i) == 0 {
             *c = None;
@@ -941,7 +937,7 @@ impl Total {
     }
 
     fn slots(r: &BatchOut) -> u64 {
-        r.executed.iter().fold(0u64, |a, &e| a.saturating_add(e))
+        r.executed
     }
 
     /// A worker finished a batch.
@@ -1007,34 +1003,9 @@ fn pool(threads: usize) -> Result<Arc<rayon::ThreadPool>, EmuError> {
     Ok(p)
 }
 
-/// Copies one batch's results into the output; returns its written-output
-/// bits.
-fn scatter(ctx: &RunCtx, out: &mut DrawOutput, batch: u64, r: &BatchOut) -> u8 {
-    for lane in 0..LANES {
-        let (x, y, inside) = ctx.lane_pixel(batch, lane);
-        if !inside {
-            continue;
-        }
-        let i = (y * ctx.width + x) as usize;
-        out.executed[i] = r.executed[lane];
-        out.killed[i] = r.killed & (1 << lane) != 0;
-        for (k, c) in out.color.iter_mut().enumerate() {
-            if let Some(c) = c {
-                c[i] = r.color[k][lane];
-            }
-        }
-        if let Some(d) = &mut out.depth {
-            d[i] = r.depth[lane];
-        }
-    }
-    for q in 0..ctx.batch_quads.min(QUADS_PER_BATCH) as usize {
-        let quad = batch * ctx.batch_quads + q as u64;
-        if quad < ctx.quads {
-            out.quad_executed[quad as usize] = r.quad_executed[q];
-            out.quad_divergent[quad as usize] = (r.diverged >> (4 * q)) & 1 != 0;
-        }
-    }
-    for (g, b) in out.gradients.iter_mut().zip(&r.sites) {
+/// Adds what a batch's gradient sites saw to the draw's.
+fn merge_sites(gradients: &mut [GradientSite], r: &BatchOut) {
+    for (g, b) in gradients.iter_mut().zip(&r.sites) {
         g.quads += b.quads.count_ones() as u64;
         g.divergent_quads += b.divergent.count_ones() as u64;
         g.executions += b.executions;
@@ -1046,5 +1017,4 @@ fn scatter(ctx: &RunCtx, out: &mut DrawOutput, batch: u64, r: &BatchOut) -> u8 {
             });
         }
     }
-    r.written
 }

@@ -1434,6 +1434,62 @@ fn results_are_identical_for_any_thread_count() {
     }
 }
 
+/// A target of more than one chunk of batches (16,761 quads: 1,048 batches
+/// of 16), odd in both sizes, with lanes leaving early three ways: every
+/// pixel, count and quad lands where it belongs, on any thread count.
+#[test]
+fn every_pixel_of_a_large_target_lands_in_place() {
+    let text = "dcl vPos.xy
+         def c0, 0.25, -0.5, 0, 1
+         def c1, 2, 0, 0, 0
+         mul r0.xy, vPos, c0.x
+         frc r1.xy, r0
+         mov r3, c0.zzzw
+         mov r3.xy, vPos
+         if_lt r1.y, c0.x
+           mov oC0, -r3
+           ret
+         endif
+         add r2, r1.x, c0.y
+         texkill r2
+         mov r3.z, c1.x
+         mov oC0, r3";
+    let c = compiled(text);
+    let (w, h) = (301u32, 221u32);
+    let d = Draw::new(w, h);
+    let one = run_with_threads(&c, &d, 1).unwrap();
+    let color = one.color[0].as_ref().unwrap();
+    for y in 0..h {
+        for x in 0..w {
+            let i = (y * w + x) as usize;
+            let (xf, yf) = (x as f32, y as f32);
+            // Rows y % 4 = 0 return early; elsewhere x % 4 < 2 is killed.
+            let (want, killed) = if y % 4 == 0 {
+                ([-xf, -yf, -0.0, -1.0], false)
+            } else if x % 4 < 2 {
+                ([0.0; 4], true)
+            } else {
+                ([xf, yf, 2.0, 1.0], false)
+            };
+            assert_eq!(bits(color[i]), bits(want), "pixel ({x}, {y})");
+            assert_eq!(one.killed[i], killed, "pixel ({x}, {y})");
+        }
+    }
+    // A quad diverges where its top row returns and its bottom row goes
+    // on (quad rows 0, 2, 4...); killing takes whole quads (x = 2k, 2k + 1).
+    assert_eq!(one.quad_executed.len(), 151 * 111);
+    assert!(one.quad_executed.iter().all(|&n| n > 0));
+    for (q, &divergent) in one.quad_divergent.iter().enumerate() {
+        assert_eq!(divergent, (q / 151) % 2 == 0, "quad {q}");
+    }
+    for threads in [2, 3] {
+        let other = run_with_threads(&c, &d, threads).unwrap();
+        assert!(same_bits(&one, &other), "{threads} threads differ");
+        assert_eq!(one.quad_executed, other.quad_executed);
+        assert_eq!(one.quad_divergent, other.quad_divergent);
+    }
+}
+
 #[test]
 fn partial_batches_cover_odd_targets() {
     let text = "dcl vPos.xy
