@@ -257,6 +257,38 @@ pub fn check_values(key: f64, white: Option<f64>) -> Result<(), TonemapError> {
 /// The operator in f64, as the article writes it, for one pixel: the linear
 /// colour before saturation. Pixels with Lw ≤ 0 (or NaN) are black.
 pub fn reference_unsaturated(op: &Operator, pixel: [f32; 4]) -> [f64; 3] {
+    unsaturated(&Terms::of(op), pixel)
+}
+
+/// The operator's values that do not depend on the pixel, each computed as
+/// the per-pixel formulas would compute it, once per image.
+#[derive(Clone, Copy, Debug)]
+struct Terms {
+    /// k = a / L̄w.
+    scale: f64,
+    /// L_white².
+    white2: f64,
+    /// The shader's k = a · (1 / L̄w) with its bound ([`factor`]).
+    k: Bounded,
+    /// The shader's L̄w · c0.y with its bound.
+    wz: Bounded,
+}
+
+impl Terms {
+    fn of(op: &Operator) -> Terms {
+        let lwhite = op.white_scaled();
+        let lw = Bounded::exact(op.log_average);
+        Terms {
+            scale: op.scale(),
+            white2: lwhite * lwhite,
+            k: lw.rcp().mul(Bounded::constant(op.key)), // rcp r0.y; mul r0.y
+            wz: lw.mul(Bounded::constant(op.c0y())),    // mul r0.z, r0.x, c0.y
+        }
+    }
+}
+
+/// [`reference_unsaturated`] with the operator's terms at hand.
+fn unsaturated(t: &Terms, pixel: [f32; 4]) -> [f64; 3] {
     let c = [pixel[0] as f64, pixel[1] as f64, pixel[2] as f64];
     let lw =
         LUMINANCE_WEIGHTS[0] * c[0] + LUMINANCE_WEIGHTS[1] * c[1] + LUMINANCE_WEIGHTS[2] * c[2];
@@ -264,9 +296,8 @@ pub fn reference_unsaturated(op: &Operator, pixel: [f32; 4]) -> [f64; 3] {
     if lw.is_nan() || lw <= 0.0 {
         return [0.0; 3];
     }
-    let l = op.scale() * lw;
-    let lwhite = op.white_scaled();
-    let ld = l * (1.0 + l / (lwhite * lwhite)) / (1.0 + l);
+    let l = t.scale * lw;
+    let ld = l * (1.0 + l / t.white2) / (1.0 + l);
     c.map(|ch| ch / lw * ld)
 }
 
@@ -369,44 +400,49 @@ fn dp3(c: [f64; 3]) -> Bounded {
 
 /// What the shader's per-pixel factor Ld / Lw comes to, for a luminance
 /// known as `lum`.
-fn factor(op: &Operator, lum: Bounded) -> Bounded {
-    let lw = Bounded::exact(op.log_average);
-    let key = Bounded::constant(op.key);
-    let c0y = Bounded::constant(op.c0y());
+fn factor(t: &Terms, lum: Bounded) -> Bounded {
     let one = Bounded::exact(1.0);
-    let k = lw.rcp().mul(key); //           rcp r0.y; mul r0.y
-    let wz = lw.mul(c0y); //                 mul r0.z, r0.x, c0.y
-    let l = lum.mul(k); //                   mul r2.y, r2.x, r0.y
-    let n = lum.mul(wz).add(one); //         mad r2.z, r2.x, r0.z, c0.w
+    let l = lum.mul(t.k); //                 mul r2.y, r2.x, r0.y
+    let n = lum.mul(t.wz).add(one); //       mad r2.z, r2.x, r0.z, c0.w
     let d = l.add(one).rcp(); //             add r2.w; rcp r2.w
-    n.mul(d).mul(k) //                       mul r2.z ×2
+    n.mul(d).mul(t.k) //                     mul r2.z ×2
 }
 
 /// The interval each emulated channel must lie in, and whether the pixel's
 /// luminance sign was uncertain. `None` for non-finite pixels (not checked).
 pub fn channel_bounds(op: &Operator, pixel: [f32; 4]) -> Option<([(f64, f64); 3], bool)> {
+    bounds_and_reference(&Terms::of(op), pixel).map(|(bounds, ambiguous, _)| (bounds, ambiguous))
+}
+
+/// Each channel's allowed interval, whether the luminance sign was
+/// uncertain, and the reference's unsaturated colour.
+type Checked = ([(f64, f64); 3], bool, [f64; 3]);
+
+/// [`channel_bounds`], and the reference's unsaturated colour it is built
+/// around, with the operator's terms at hand.
+fn bounds_and_reference(t: &Terms, pixel: [f32; 4]) -> Option<Checked> {
     let c = [pixel[0] as f64, pixel[1] as f64, pixel[2] as f64];
     if c.iter().any(|v| !v.is_finite()) {
         return None;
     }
     let lum = dp3(c);
-    let raw = reference_unsaturated(op, pixel);
+    let raw = unsaturated(t, pixel);
     if lum.v + lum.e <= 0.0 {
         // The computed luminance is ≤ 0 for certain: cmp selects 0.
-        return Some(([(0.0, 0.0); 3], false));
+        return Some(([(0.0, 0.0); 3], false, raw));
     }
     if lum.v - lum.e > 0.0 {
-        let s = factor(op, lum);
+        let s = factor(t, lum);
         let out = std::array::from_fn(|i| {
             let b = Bounded::exact(c[i]).mul(s);
             (sat(raw[i] - b.e), sat(raw[i] + b.e))
         });
-        return Some((out, false));
+        return Some((out, false, raw));
     }
     // Sign uncertain: black, or the colour for any luminance in (0, hi].
     let hi = lum.v + lum.e;
     let s = factor(
-        op,
+        t,
         Bounded {
             v: hi / 2.0,
             e: hi / 2.0,
@@ -418,7 +454,7 @@ pub fn channel_bounds(op: &Operator, pixel: [f32; 4]) -> Option<([(f64, f64); 3]
         let up = (b.v + b.e).max(0.0).max(raw[i]);
         (sat(lo), sat(up))
     });
-    Some((out, true))
+    Some((out, true, raw))
 }
 
 /// The standard sRGB transfer function (IEC 61966-2-1) of a linear value in
@@ -432,11 +468,55 @@ pub fn srgb_encode(linear: f64) -> f64 {
 }
 
 /// A linear value as an 8-bit sRGB code: clamped to [0, 1] (NaN to 0),
-/// encoded, rounded to the nearest code — found in [`srgb8_thresholds`],
-/// which gives the same code as [`srgb8_by_formula`] without a `powf`.
+/// encoded, rounded to the nearest code — the number of
+/// [`srgb8_thresholds`] at or below it, which is [`srgb8_by_formula`]'s code
+/// without a `powf`, counted in one step by [`Srgb8Buckets`].
 pub fn srgb8(linear: f64) -> u8 {
     let x = sat(linear);
-    srgb8_thresholds().partition_point(|&t| t <= x) as u8
+    let t = Srgb8Buckets::get();
+    // Exact: a power-of-two scale, and truncation is floor for x ≥ 0.
+    let b = (x * SRGB8_BUCKETS as f64) as usize;
+    t.base[b] + (x >= t.next[b]) as u8
+}
+
+/// Buckets [`srgb8`] cuts [0, 1] into: each is narrower than the gap
+/// between two thresholds (the encoding is steepest at 0, 12.92 · 255 ≈
+/// 3295 codes per unit, so thresholds lie at least 1/3295 apart), so it
+/// holds at most one threshold.
+const SRGB8_BUCKETS: usize = 4096;
+
+/// For bucket `b` = [b / 4096, (b + 1) / 4096): the code of its lower end
+/// and the one threshold inside it (∞ if none), so that the code of any x
+/// in it is `base[b] + (x ≥ next[b])`. Bucket 4096 is x = 1 alone.
+struct Srgb8Buckets {
+    base: [u8; SRGB8_BUCKETS + 1],
+    next: [f64; SRGB8_BUCKETS + 1],
+}
+
+impl Srgb8Buckets {
+    fn get() -> &'static Srgb8Buckets {
+        static TABLE: std::sync::OnceLock<Srgb8Buckets> = std::sync::OnceLock::new();
+        TABLE.get_or_init(|| {
+            let thresholds = srgb8_thresholds();
+            let edge = |b: usize| b as f64 / SRGB8_BUCKETS as f64;
+            let mut t = Srgb8Buckets {
+                base: [0; SRGB8_BUCKETS + 1],
+                next: [f64::INFINITY; SRGB8_BUCKETS + 1],
+            };
+            for b in 0..=SRGB8_BUCKETS {
+                let below = thresholds.partition_point(|&th| th <= edge(b));
+                t.base[b] = below as u8;
+                let inside = thresholds[below..]
+                    .iter()
+                    .take_while(|&&th| b < SRGB8_BUCKETS && th < edge(b + 1));
+                assert!(inside.clone().count() <= 1, "two thresholds in bucket {b}");
+                if let Some(&th) = inside.last() {
+                    t.next[b] = th;
+                }
+            }
+            t
+        })
+    }
 }
 
 /// The definition [`srgb8`] follows: encode, scale, round.
@@ -558,11 +638,12 @@ fn crosscheck_from(
     w: usize,
 ) -> Crosscheck {
     use rayon::prelude::*;
+    let terms = Terms::of(op);
     let parts: Vec<Crosscheck> = pixels
         .par_chunks(CHECK_CHUNK)
         .zip(emulated.par_chunks(CHECK_CHUNK))
         .enumerate()
-        .map(|(k, (p, e))| crosscheck_chunk(op, p, e, first + k * CHECK_CHUNK, w))
+        .map(|(k, (p, e))| crosscheck_chunk(&terms, p, e, first + k * CHECK_CHUNK, w))
         .collect();
     let mut r = Crosscheck::default();
     for part in parts {
@@ -597,7 +678,7 @@ impl Crosscheck {
 
 /// [`crosscheck`] over the pixels from index `first` on (rows `w` wide).
 fn crosscheck_chunk(
-    op: &Operator,
+    terms: &Terms,
     pixels: &[[f32; 4]],
     emulated: &[[f32; 4]],
     first: usize,
@@ -607,7 +688,7 @@ fn crosscheck_chunk(
     for (j, (&p, o)) in pixels.iter().zip(emulated).enumerate() {
         let i = first + j;
         let lw = crate::core::image::luminance(p);
-        let Some((bounds, ambiguous)) = channel_bounds(op, p) else {
+        let Some((bounds, ambiguous, raw)) = bounds_and_reference(terms, p) else {
             r.nonfinite_pixels += 1;
             continue;
         };
@@ -618,7 +699,6 @@ fn crosscheck_chunk(
         } else if lw < 0.0 {
             r.negative_luminance_pixels += 1;
         }
-        let raw = reference_unsaturated(op, p);
         if raw.iter().any(|&v| v >= 1.0) {
             r.saturated_pixels += 1;
         }
@@ -954,7 +1034,8 @@ mod tests {
     }
 
     /// The table gives the formula's code at and just below every
-    /// threshold, and on every 64th f32 in [0, 1] (16.6 million values).
+    /// threshold and every bucket edge, and on every 64th f32 in [0, 1]
+    /// (16.6 million values).
     #[test]
     fn srgb_table_codes_are_the_formulas() {
         for (k, &t) in srgb8_thresholds().iter().enumerate() {
@@ -962,6 +1043,12 @@ mod tests {
             assert_eq!(srgb8_by_formula(t), k as u8 + 1, "at {t}");
             assert_eq!(srgb8_by_formula(below), k as u8, "below {t}");
             assert_eq!((srgb8(t), srgb8(below)), (k as u8 + 1, k as u8));
+        }
+        for b in 0..=SRGB8_BUCKETS {
+            let edge = b as f64 / SRGB8_BUCKETS as f64;
+            for x in [edge, f64::from_bits(edge.to_bits().saturating_sub(1))] {
+                assert_eq!(srgb8(x), srgb8_by_formula(x), "at {x}");
+            }
         }
         for bits in (0..=1f32.to_bits()).step_by(64) {
             let x = f32::from_bits(bits) as f64;
