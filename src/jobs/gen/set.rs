@@ -6,7 +6,7 @@
 use super::asm::{self, Counts, Pass1Form, Pass2Form};
 use super::fit::{balanced, Fitter};
 use super::plan::{self, f16_holds};
-use super::{Checked, GenError};
+use super::GenError;
 use crate::core::cost::Profile;
 use crate::core::numbers::{size, thousands};
 use serde::Serialize;
@@ -211,7 +211,7 @@ fn pass1_shader(
     h.push(String::new());
     h.push(spec.target_format(fr));
     h.extend(spec.application_sets(fr));
-    let text = headed(&file, &h, &body, &profile, &c)?;
+    let text = headed(&file, &h, &body)?;
     Ok(Ok(Generated {
         file,
         role,
@@ -357,22 +357,18 @@ impl Pass1Spec<'_> {
     }
 }
 
-/// `body` under the comment header `h`. The header is comments only: the
-/// program, and so its figures (`c`), are unchanged. The final text is
-/// checked anyway.
-fn headed(
-    file: &str,
-    h: &[String],
-    body: &str,
-    profile: &Profile,
-    c: &Checked,
-) -> Result<String, GenError> {
-    let text = format!("{}{body}", asm::comment_block(h));
-    let again = super::check(file, &text, profile)?;
-    if (again.slots, again.executed) != (c.slots, c.executed) {
-        return Err(GenError(format!("{file}: the header changed the program")));
+/// `body` under the comment header `h`. Each entry of `h` becomes one line
+/// after `//`, and the front end takes a line's code to be what precedes
+/// `//` (lines end at `\n` only), so an entry without a line break is a
+/// comment whatever it says: the program, and so its figures (checked on
+/// `body`), are unchanged.
+fn headed(file: &str, h: &[String], body: &str) -> Result<String, GenError> {
+    if let Some(l) = h.iter().find(|l| l.contains('\n')) {
+        return Err(GenError(format!(
+            "{file}: a header line holds a line break (a bug): {l:?}"
+        )));
     }
-    Ok(text)
+    Ok(format!("{}{body}", asm::comment_block(h)))
 }
 
 /// Writes, checks and heads one pass-2 listing; `uses` lists (what, P) for
@@ -467,7 +463,7 @@ fn pass2_shader(
     if choice.form != Pass2Form::Unrolled {
         h.push("  i0, i1 = nothing to set: defined in the shader (defi)".into());
     }
-    let text = headed(&file, &h, &body, &profile, &c)?;
+    let text = headed(&file, &h, &body)?;
     Ok(Ok(Generated {
         file,
         role: Role::Pass2,
@@ -1046,4 +1042,29 @@ pub fn write_set(dir: &Path, set: &GeneratedSet) -> Result<(Vec<String>, Vec<Str
         }
     }
     Ok((written, removed))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_header_is_comments_only() {
+        let body = "ps_3_0\nmov oC0, c0\n";
+        let h = [
+            "title".to_string(),
+            String::new(),
+            "mov oC0, c1".to_string(),
+        ];
+        let text = headed("t.psh", &h, body).unwrap();
+        assert_eq!(text, "// title\n//\n// mov oC0, c1\nps_3_0\nmov oC0, c0\n");
+        let figures = |t: &str| {
+            let c = super::super::check("t.psh", t, &Profile::ps_3_0()).unwrap();
+            (c.slots, c.executed)
+        };
+        assert_eq!(figures(&text), figures(body));
+        let broken = ["title\nmov oC0, c1".to_string()];
+        let err = headed("t.psh", &broken, body).unwrap_err();
+        assert!(err.0.contains("line break"), "{}", err.0);
+    }
 }
