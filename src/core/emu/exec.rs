@@ -106,6 +106,9 @@ pub(crate) struct Worker<'c, 'a> {
     /// Lanes inside the target (reported; the others are helpers).
     target: u64,
     counts: [u64; LANES],
+    /// Each lane's pixel index in the target (`y · width + x`; meaningful
+    /// for the lanes in `target`), found once per batch.
+    pixel: [usize; LANES],
     /// Slots charged to every lane of `live` since the last flush.
     uniform: u64,
     /// Upper bound of `counts` (for a cheap executed-limit check).
@@ -186,6 +189,7 @@ impl<'c, 'a> Worker<'c, 'a> {
             killed: 0,
             target: 0,
             counts: [0; LANES],
+            pixel: [0; LANES],
             uniform: 0,
             bound: 0,
             stack: Vec::with_capacity(16),
@@ -214,6 +218,7 @@ impl<'c, 'a> Worker<'c, 'a> {
             target |= (inside as u64) << l;
             xs[l] = x as f32;
             ys[l] = y as f32;
+            self.pixel[l] = (y * ctx.width + x) as usize;
         }
         // Whole quads run when any of their pixels is inside the target.
         let mut live = 0u64;
@@ -389,11 +394,7 @@ impl<'c, 'a> Worker<'c, 'a> {
     /// The target's pixel index of each lane in `mask` that is inside the
     /// target.
     fn pixels(&self, mask: u64) -> impl Iterator<Item = (usize, usize)> + '_ {
-        let w = self.ctx.width;
-        lanes(mask & self.target).map(move |l| {
-            let (x, y, _) = self.ctx.lane_pixel(self.batch, l);
-            (l, (y * w + x) as usize)
-        })
+        lanes(mask & self.target).map(|l| (l, self.pixel[l]))
     }
 
     /// Writes the outputs the shader writes (no others are kept) of the

@@ -936,16 +936,12 @@ impl Total {
         }
     }
 
-    fn slots(r: &BatchOut) -> u64 {
-        r.executed
-    }
-
     /// A worker finished a batch.
     fn race(&self, r: &BatchOut) {
         let _ = self
             .finished
             .fetch_update(Ordering::Relaxed, Ordering::Relaxed, |v| {
-                Some(v.saturating_add(Total::slots(r)))
+                Some(v.saturating_add(r.executed))
             });
     }
 
@@ -963,7 +959,7 @@ impl Total {
 
     /// Merges a batch.
     fn add(&mut self, r: &BatchOut) -> Result<(), EmuError> {
-        self.executed = self.executed.saturating_add(Total::slots(r));
+        self.executed = self.executed.saturating_add(r.executed);
         if self.executed > self.limit {
             return Err(self.error());
         }

@@ -470,7 +470,7 @@ pub fn srgb_encode(linear: f64) -> f64 {
 /// A linear value as an 8-bit sRGB code: clamped to [0, 1] (NaN to 0),
 /// encoded, rounded to the nearest code — the number of
 /// [`srgb8_thresholds`] at or below it, which is [`srgb8_by_formula`]'s code
-/// without a `powf`, counted in one step by [`Srgb8Buckets`].
+/// without a `powf`, counted in one step (a table of 4,096 buckets of [0, 1]).
 pub fn srgb8(linear: f64) -> u8 {
     let x = sat(linear);
     let t = Srgb8Buckets::get();
