@@ -344,15 +344,19 @@ impl Opcode {
     /// Looks up a base mnemonic (no suffixes), with whether a comparison
     /// suffix was given (it selects `ifc` and `breakc`).
     pub fn from_mnemonic(base: &str, has_comparison: bool) -> Option<Opcode> {
-        let base = base.to_ascii_lowercase();
-        match (base.as_str(), has_comparison) {
-            ("if", true) => Some(Opcode::Ifc),
-            ("break", true) => Some(Opcode::BreakC),
-            (b, _) => TABLE
-                .iter()
-                .find(|r| r.mnemonic == b && !matches!(r.op, Opcode::Ifc | Opcode::BreakC))
-                .map(|r| r.op),
+        if has_comparison && base.eq_ignore_ascii_case("if") {
+            return Some(Opcode::Ifc);
         }
+        if has_comparison && base.eq_ignore_ascii_case("break") {
+            return Some(Opcode::BreakC);
+        }
+        TABLE
+            .iter()
+            .find(|r| {
+                r.mnemonic.eq_ignore_ascii_case(base)
+                    && !matches!(r.op, Opcode::Ifc | Opcode::BreakC)
+            })
+            .map(|r| r.op)
     }
 
     /// What kind of instruction it is.

@@ -14,7 +14,7 @@
 use crate::core::bytecode::{self, ctab, ReadError};
 use crate::core::diag::{Diagnostic, Diagnostics, SourceError, SourceFile};
 use crate::core::front::{ast, parse, repeat};
-use crate::core::ir::{Origin, Shader};
+use crate::core::ir::Shader;
 use std::collections::{BTreeMap, BTreeSet};
 use std::fmt;
 
@@ -199,8 +199,7 @@ fn stages(file: SourceFile, options: &Options) -> Result<Stages, SourceError> {
         // And the checks of each line that did parse on its own.
         for stmt in &stmts {
             if let ast::Stmt::Instr(instr) = stmt {
-                let origin = Origin::at(instr.span);
-                if let Err(d) = crate::core::valid::lower::lower(instr, &origin) {
+                if let Err(d) = crate::core::valid::lower::lower(instr) {
                     diags.push(d);
                 }
             }

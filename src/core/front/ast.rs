@@ -2,6 +2,7 @@
 //! every node keeps the byte span it was parsed from.
 
 use crate::core::ir::Span;
+pub use compact_str::CompactString;
 
 /// One statement per source line.
 #[derive(Clone, Debug, PartialEq)]
@@ -68,11 +69,11 @@ pub struct InstrAst {
     /// `(p0.x)` / `(!p0)` prefix.
     pub predicate: Option<RegAst>,
     /// Mnemonic before the first `_`, lower-cased (`texld`, `if`, `dcl`).
-    pub base: String,
+    pub base: CompactString,
     /// Where the mnemonic is.
     pub base_span: Span,
     /// `_`-separated suffixes, lower-cased (`sat`, `pp`, `gt`, `texcoord0`, `2d`).
-    pub suffixes: Vec<(String, Span)>,
+    pub suffixes: Vec<(CompactString, Span)>,
     /// The operands, in order.
     pub operands: Vec<OperandAst>,
     /// The whole statement.
@@ -120,7 +121,7 @@ pub struct RegAst {
     /// Leading `!`.
     pub not: bool,
     /// Letters of the register name (`r`, `oC`, `vPos`, `aL`), as written.
-    pub name: String,
+    pub name: CompactString,
     /// Number after the name, if any (`r12` → 12).
     pub index: Option<u64>,
     /// Where the name and number are.
@@ -130,7 +131,7 @@ pub struct RegAst {
     /// `_abs`.
     pub abs: bool,
     /// Letters after the `.` (swizzle or write mask), lower-cased.
-    pub components: Option<(String, Span)>,
+    pub components: Option<(CompactString, Span)>,
     /// The whole operand.
     pub span: Span,
 }
@@ -139,7 +140,7 @@ pub struct RegAst {
 #[derive(Clone, Debug, PartialEq)]
 pub struct RelAst {
     /// The index register as written (`aL`).
-    pub index_reg: String,
+    pub index_reg: CompactString,
     /// Swizzle written on the index register, which ps_3_0 forbids.
     pub index_swizzle: Option<Span>,
     /// Sum of the constant offsets.

@@ -10,7 +10,7 @@
 //! expected. Parsing never stops at the first bad line: every line is read,
 //! and all errors are returned together.
 
-use super::ast::{Count, InstrAst, OperandAst, RegAst, RelAst, Stmt};
+use super::ast::{CompactString, Count, InstrAst, OperandAst, RegAst, RelAst, Stmt};
 use crate::core::diag::{excerpt, Diagnostic, Diagnostics};
 use crate::core::ir::Span;
 use nom::branch::alt;
@@ -23,10 +23,24 @@ use nom::{IResult, Parser};
 
 type NomError<'a> = nom::error::Error<&'a str>;
 
+/// `s` lower-cased, kept inline when short (as mnemonics and swizzles are).
+fn lower(s: &str) -> CompactString {
+    let mut s = CompactString::from(s);
+    s.make_ascii_lowercase();
+    s
+}
+
+/// The most statements [`parse`] reserves room for before it reads them.
+const MAX_RESERVED_STATEMENTS: usize = 1 << 12;
+
 /// Parses a whole source. Returns the statements of every line that parsed
 /// and the diagnostics of every line that did not.
 pub fn parse(text: &str) -> (Vec<Stmt>, Diagnostics) {
-    let mut stmts = Vec::new();
+    // At most one statement per line: room for them at once rather than
+    // copying the list as it grows (capped, so a file of empty lines does
+    // not reserve room it will not use).
+    let lines = text.bytes().filter(|&b| b == b'\n').count() + 1;
+    let mut stmts = Vec::with_capacity(lines.min(MAX_RESERVED_STATEMENTS));
     let mut diags = Diagnostics::default();
     let mut line_start = 0;
     // Whether the previous line was a comment-block line that `//#+` continues.
@@ -494,16 +508,13 @@ impl<'a> Cursor<'a> {
                 .with_label("not an instruction mnemonic"));
         };
         let mut parts = mnemonic.split('_');
-        let base = parts.next().unwrap_or_default().to_ascii_lowercase();
+        let base = lower(parts.next().unwrap_or_default());
         let base_span = Span::new(mstart, mstart + base.len());
         let mut suffixes = Vec::new();
         let mut off = mstart + base.len();
         for part in parts {
             off += 1;
-            suffixes.push((
-                part.to_ascii_lowercase(),
-                Span::new(off - 1, off + part.len()),
-            ));
+            suffixes.push((lower(part), Span::new(off - 1, off + part.len())));
             off += part.len();
         }
         let mut operands = Vec::new();
@@ -640,7 +651,7 @@ impl<'a> Cursor<'a> {
                     ))
                     .with_label("expected letters from xyzw or rgba"));
             };
-            Some((letters.to_ascii_lowercase(), self.span_from(cstart)))
+            Some((lower(letters), self.span_from(cstart)))
         } else {
             None
         };
@@ -656,7 +667,7 @@ impl<'a> Cursor<'a> {
         Ok(RegAst {
             negate,
             not,
-            name: name.to_string(),
+            name: name.into(),
             index,
             name_span,
             relative,
@@ -734,7 +745,7 @@ impl<'a> Cursor<'a> {
             offset = offset.saturating_add(d.parse::<i64>().unwrap_or(i64::MAX));
         }
         Ok(RelAst {
-            index_reg: index_reg.to_string(),
+            index_reg: index_reg.into(),
             index_swizzle,
             offset,
             span: self.span_from(start),

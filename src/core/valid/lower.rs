@@ -46,12 +46,14 @@ const NOT_PS30: &[(&str, &str)] = &[
     ("cnd", "cnd is ps_1_x; use cmp"),
 ];
 
-/// Lowers one statement of the AST (with its origin) to the IR, or a diagnostic naming what is wrong.
-pub fn lower(ast: &InstrAst, origin: &Origin) -> R<Lowered> {
+/// Lowers one statement of the AST to the IR, or a diagnostic naming what is
+/// wrong. The lowering's origin is left empty: a statement repeated by
+/// REPEAT_BLOCK is lowered once, and the validator gives each copy its own.
+pub fn lower(ast: &InstrAst) -> R<Lowered> {
     match ast.base.as_str() {
-        "dcl" => lower_dcl(ast, origin),
-        "def" | "defi" | "defb" => lower_def(ast, origin),
-        _ => lower_instruction(ast, origin).map(Lowered::Instr),
+        "dcl" => lower_dcl(ast),
+        "def" | "defi" | "defb" => lower_def(ast),
+        _ => lower_instruction(ast).map(Lowered::Instr),
     }
 }
 
@@ -122,7 +124,7 @@ struct Suffixes {
     compare: Option<Compare>,
 }
 
-fn lower_instruction(ast: &InstrAst, origin: &Origin) -> R<Instruction> {
+fn lower_instruction(ast: &InstrAst) -> R<Instruction> {
     let m = suffixes(ast)?;
     let op = opcode(ast, m.compare)?;
     let info = op.info();
@@ -140,7 +142,7 @@ fn lower_instruction(ast: &InstrAst, origin: &Origin) -> R<Instruction> {
         predicate,
         dst,
         src,
-        origin: origin.clone(),
+        origin: Origin::default(),
     })
 }
 
@@ -306,7 +308,7 @@ fn check_operand_count(ast: &InstrAst, info: &OpInfo) -> R<()> {
 /// destination (if any) and the sources in order.
 fn operands(ast: &InstrAst, info: &OpInfo) -> R<(Option<Dst>, Vec<Src>)> {
     let mut dst = None;
-    let mut src = Vec::new();
+    let mut src = Vec::with_capacity(ast.operands.len());
     for (pos, (kind, operand)) in info.operands.iter().zip(&ast.operands).enumerate() {
         let reg = match operand {
             OperandAst::Reg(r) => r,
@@ -943,27 +945,27 @@ struct DclSuffixes<'a> {
     kind: Option<(&'a str, Span)>,
 }
 
-fn lower_dcl(ast: &InstrAst, origin: &Origin) -> R<Lowered> {
+fn lower_dcl(ast: &InstrAst) -> R<Lowered> {
     let r = declared_operand(ast)?;
     let reg = resolve_reg(r)?;
     no_modifiers(r, "a declared register")?;
     let m = dcl_suffixes(ast)?;
     match (reg.file, m.kind) {
-        (RegFile::Sampler, Some((k, span))) => sampler_decl(r, reg, (k, span), &m, origin),
+        (RegFile::Sampler, Some((k, span))) => sampler_decl(r, reg, (k, span), &m),
         (RegFile::Sampler, None) => Err(Diagnostic::error(
             ast.base_span,
             "a sampler declaration needs a type",
         )
         .with_label("e.g. dcl_2d s0")
         .with_help("write dcl_2d, dcl_cube or dcl_volume")),
-        (RegFile::Input, Some((k, span))) => input_decl(r, reg, (k, span), &m, origin),
+        (RegFile::Input, Some((k, span))) => input_decl(r, reg, (k, span), &m),
         (RegFile::Input, None) => Err(Diagnostic::error(
             ast.base_span,
             "ps_3_0 input declarations need a usage",
         )
         .with_label("e.g. dcl_texcoord0 v0.xy")
         .with_help("write dcl_<usage><index> v#, such as dcl_texcoord0 v0 or dcl_color0 v1")),
-        (RegFile::Position | RegFile::Face, None) => pos_face_decl(r, reg, &m, origin),
+        (RegFile::Position | RegFile::Face, None) => pos_face_decl(r, reg, &m),
         (RegFile::Position | RegFile::Face, Some((_, span))) => Err(Diagnostic::error(
             span,
             "vPos and vFace are declared with plain `dcl`",
@@ -1038,13 +1040,7 @@ fn dcl_suffixes(ast: &InstrAst) -> R<DclSuffixes<'_>> {
 
 /// `dcl_2d` / `dcl_cube` / `dcl_volume s#` (type `k` at `span`), with its
 /// `_centroid` / `_pp`.
-fn sampler_decl(
-    r: &RegAst,
-    reg: Reg,
-    (k, span): (&str, Span),
-    m: &DclSuffixes,
-    origin: &Origin,
-) -> R<Lowered> {
+fn sampler_decl(r: &RegAst, reg: Reg, (k, span): (&str, Span), m: &DclSuffixes) -> R<Lowered> {
     let ty = match k {
         "2d" => SamplerType::Tex2d,
         "cube" => SamplerType::Cube,
@@ -1074,18 +1070,12 @@ fn sampler_decl(
         ty,
         centroid: m.centroid,
         pp: m.pp,
-        origin: origin.clone(),
+        origin: Origin::default(),
     }))
 }
 
 /// `dcl_<usage><index> v#` (usage `k` at `span`).
-fn input_decl(
-    r: &RegAst,
-    reg: Reg,
-    (k, span): (&str, Span),
-    m: &DclSuffixes,
-    origin: &Origin,
-) -> R<Lowered> {
+fn input_decl(r: &RegAst, reg: Reg, (k, span): (&str, Span), m: &DclSuffixes) -> R<Lowered> {
     let name = k.trim_end_matches(|c: char| c.is_ascii_digit());
     let digits = &k[name.len()..];
     if !USAGES.contains(&name) {
@@ -1128,12 +1118,12 @@ fn input_decl(
         mask: write_mask(r)?,
         centroid: m.centroid,
         pp: m.pp,
-        origin: origin.clone(),
+        origin: Origin::default(),
     }))
 }
 
 /// `dcl vPos.xy` / `dcl vFace`.
-fn pos_face_decl(r: &RegAst, reg: Reg, m: &DclSuffixes, origin: &Origin) -> R<Lowered> {
+fn pos_face_decl(r: &RegAst, reg: Reg, m: &DclSuffixes) -> R<Lowered> {
     let mask = write_mask(r)?;
     if reg.file == RegFile::Position && !matches!(mask.0, 1..=3) {
         return Err(
@@ -1154,11 +1144,11 @@ fn pos_face_decl(r: &RegAst, reg: Reg, m: &DclSuffixes, origin: &Origin) -> R<Lo
         mask,
         centroid: m.centroid,
         pp: m.pp,
-        origin: origin.clone(),
+        origin: Origin::default(),
     }))
 }
 
-fn lower_def(ast: &InstrAst, origin: &Origin) -> R<Lowered> {
+fn lower_def(ast: &InstrAst) -> R<Lowered> {
     if let Some((_, span)) = ast.suffixes.first() {
         return Err(Diagnostic::error(
             *span,
@@ -1217,7 +1207,7 @@ fn lower_def(ast: &InstrAst, origin: &Origin) -> R<Lowered> {
             OperandAst::Bool { value, .. } => Ok(Lowered::Bool(BoolDef {
                 index: reg.index,
                 value: *value,
-                origin: origin.clone(),
+                origin: Origin::default(),
             })),
             other => Err(Diagnostic::error(other.span(), "expected true or false")
                 .with_label("not a boolean")),
@@ -1263,13 +1253,13 @@ fn lower_def(ast: &InstrAst, origin: &Origin) -> R<Lowered> {
                 Lowered::Float(FloatDef {
                     index: reg.index,
                     value: nums.map(|v| v as f32),
-                    origin: origin.clone(),
+                    origin: Origin::default(),
                 })
             } else {
                 Lowered::Int(IntDef {
                     index: reg.index,
                     value: nums.map(|v| v as i32),
-                    origin: origin.clone(),
+                    origin: Origin::default(),
                 })
             })
         }

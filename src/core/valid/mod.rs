@@ -22,7 +22,7 @@ use crate::core::front::repeat::Expanded;
 use crate::core::ir::{Info, Instruction, Program, Shader, Span, Src, SrcMod};
 use crate::core::isa::{self, Class, Opcode, RegFile};
 use lower::Lowered;
-use std::collections::{BTreeMap, BTreeSet, HashMap};
+use std::collections::{BTreeMap, BTreeSet};
 
 /// Validates an expanded statement list.
 pub fn validate(
@@ -96,20 +96,32 @@ fn collect(
     diags: &mut Diagnostics,
 ) -> Program {
     let mut program = Program::default();
-    let mut cache: HashMap<usize, Option<Lowered>> = HashMap::new();
+    // Each statement's lowering, kept while copies of it (REPEAT_BLOCK)
+    // remain: the last copy takes it instead of cloning it.
+    let mut copies_left = vec![0u32; stmts.len()];
+    for e in body {
+        copies_left[e.stmt] += 1;
+    }
+    let mut lowerings: Vec<Option<Option<Lowered>>> = stmts.iter().map(|_| None).collect();
     let mut first_instr: Option<Span> = None;
     for e in body {
         let lowered = match &stmts[e.stmt] {
-            Stmt::Instr(ast) => cache
-                .entry(e.stmt)
-                .or_insert_with(|| match lower::lower(ast, &e.origin) {
+            Stmt::Instr(ast) => {
+                let slot = &mut lowerings[e.stmt];
+                let lowered = slot.get_or_insert_with(|| match lower::lower(ast) {
                     Ok(l) => Some(l),
                     Err(d) => {
                         diags.push(d.in_origin(&e.origin, file));
                         None
                     }
-                })
-                .clone(),
+                });
+                copies_left[e.stmt] -= 1;
+                if copies_left[e.stmt] == 0 {
+                    slot.take().flatten()
+                } else {
+                    lowered.clone()
+                }
+            }
             Stmt::Version { span, .. } => {
                 diags.push(
                     Diagnostic::error(*span, "the version line may appear only once, first")
