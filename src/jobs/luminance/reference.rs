@@ -163,9 +163,11 @@ pub struct Band<'a> {
     pub terms: &'a [Option<f64>],
 }
 
-/// Pixels per band of [`scan`]: enough work to share between threads, and a
-/// term buffer (16 bytes a pixel) that stays small beside the image.
-const BAND_PIXELS: usize = 1 << 16;
+/// Pixels per band of [`scan`]: enough work to share between threads, and
+/// small enough that the band's pixels and terms (32 bytes a pixel, 512 KB)
+/// are still in the second-level cache when the blocks' folds read them
+/// again after the terms' pass.
+const BAND_PIXELS: usize = 1 << 14;
 
 /// Extremes and counts over one row; merged in row order.
 #[derive(Clone, Copy)]
@@ -277,13 +279,28 @@ pub fn scan(
 /// to bottom, each left to right, padding texels (outside the image, black)
 /// after the row's pixels and in the rows below the image.
 ///
-/// Folds take one pixel at a time so that two folds over the same texels
-/// (a pair) run as one loop: each fold's running sums are a chain of
-/// dependent additions, and in one loop the processor overlaps the chains
-/// instead of waiting on each in turn.
+/// A pixel is folded in two steps. [`BlockFold::ahead`] works out what a
+/// run of pixels contributes from the pixels alone, in a loop of its own: no
+/// pixel waits on another there, so the processor takes several at once
+/// (vector instructions, the divisions of an error bound among them).
+/// [`BlockFold::pixel`] then adds each pixel's part to the running sums, one
+/// after another in order, which is all that must stay serial. The results
+/// are the same bits as one step per pixel: the same operations on the same
+/// values.
+///
+/// Two folds over the same texels (a pair) run as one loop: each fold's
+/// running sums are a chain of dependent additions, and in one loop the
+/// processor overlaps the chains instead of waiting on each in turn.
 pub trait BlockFold: Send + Copy {
-    /// One pixel of the block inside the image, and its term.
-    fn pixel(&mut self, pixel: [f32; 4], term: Option<f64>);
+    /// What [`BlockFold::ahead`] works out for a run of up to
+    /// [`AHEAD_RUN`] pixels.
+    type Run: Default;
+    /// Fills `run` for `pixels` and their `terms` (at most [`AHEAD_RUN`]);
+    /// the fold's running sums are not read.
+    fn ahead(&self, pixels: &[[f32; 4]], terms: &[Option<f64>], run: &mut Self::Run);
+    /// Pixel `i` of the run, inside the image: its term and what
+    /// [`BlockFold::ahead`] worked out for it.
+    fn pixel(&mut self, run: &Self::Run, i: usize, term: Option<f64>);
     /// The end of one row inside the image: `padding` texels beyond the
     /// image's right edge.
     fn end_row(&mut self, padding: u32);
@@ -293,10 +310,16 @@ pub trait BlockFold: Send + Copy {
 
 /// Two folds over the same texels.
 impl<A: BlockFold, B: BlockFold> BlockFold for (A, B) {
+    type Run = (A::Run, B::Run);
     #[inline]
-    fn pixel(&mut self, pixel: [f32; 4], term: Option<f64>) {
-        self.0.pixel(pixel, term);
-        self.1.pixel(pixel, term);
+    fn ahead(&self, pixels: &[[f32; 4]], terms: &[Option<f64>], run: &mut Self::Run) {
+        self.0.ahead(pixels, terms, &mut run.0);
+        self.1.ahead(pixels, terms, &mut run.1);
+    }
+    #[inline]
+    fn pixel(&mut self, run: &Self::Run, i: usize, term: Option<f64>) {
+        self.0.pixel(&run.0, i, term);
+        self.1.pixel(&run.1, i, term);
     }
     fn end_row(&mut self, padding: u32) {
         self.0.end_row(padding);
@@ -305,6 +328,23 @@ impl<A: BlockFold, B: BlockFold> BlockFold for (A, B) {
     fn rows_below(&mut self, rows: u32, read: u32) {
         self.0.rows_below(rows, read);
         self.1.rows_below(rows, read);
+    }
+}
+
+/// Pixels whose [`BlockFold::ahead`] is worked out before they are added:
+/// a few vectors' worth, small enough to stay in the first-level cache.
+pub const AHEAD_RUN: usize = 32;
+
+/// Folds one row of a block: `pixels` and their `terms`, in order, in runs
+/// of [`AHEAD_RUN`] (see [`BlockFold`]).
+#[inline]
+fn fold_span<F: BlockFold>(f: &mut F, pixels: &[[f32; 4]], terms: &[Option<f64>]) {
+    let mut run = F::Run::default();
+    for (pixels, terms) in pixels.chunks(AHEAD_RUN).zip(terms.chunks(AHEAD_RUN)) {
+        f.ahead(pixels, terms, &mut run);
+        for (i, &t) in terms.iter().enumerate() {
+            f.pixel(&run, i, t);
+        }
     }
 }
 
@@ -393,9 +433,7 @@ pub fn fold_blocks<F: BlockFold>(
                     for row in y..end {
                         let start = ((row - band.y0) * width) as usize;
                         let span = start + x0 as usize..start + x1 as usize;
-                        for (&p, &t) in band.pixels[span.clone()].iter().zip(&band.terms[span]) {
-                            f.pixel(p, t);
-                        }
+                        fold_span(&mut f, &band.pixels[span.clone()], &band.terms[span]);
                         f.end_row(padding);
                     }
                     *fold = f;
@@ -426,8 +464,11 @@ struct SumFold {
 }
 
 impl BlockFold for SumFold {
+    type Run = ();
     #[inline]
-    fn pixel(&mut self, _: [f32; 4], term: Option<f64>) {
+    fn ahead(&self, _: &[[f32; 4]], _: &[Option<f64>], _: &mut ()) {}
+    #[inline]
+    fn pixel(&mut self, _: &(), _: usize, term: Option<f64>) {
         self.inside += 1;
         if let Some(term) = term {
             self.sum += term;
@@ -613,7 +654,9 @@ pub fn fold_blocks_with_sums<F: BlockFold>(
 
 /// No fold: [`block_sums_last_width`] folds only the sums.
 impl BlockFold for () {
-    fn pixel(&mut self, _: [f32; 4], _: Option<f64>) {}
+    type Run = ();
+    fn ahead(&self, _: &[[f32; 4]], _: &[Option<f64>], _: &mut ()) {}
+    fn pixel(&mut self, _: &(), _: usize, _: Option<f64>) {}
     fn end_row(&mut self, _: u32) {}
     fn rows_below(&mut self, _: u32, _: u32) {}
 }
