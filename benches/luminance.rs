@@ -30,7 +30,7 @@
 use criterion::{criterion_group, criterion_main, Criterion};
 use ps30::core::emu::{self, Address, Constants, Draw, Filter, LinearInput, SamplerState};
 use ps30::core::gpu::{self, Gpu, TargetKind};
-use ps30::core::image::{load, HdrImage, ImageLimits, RenderTarget, TargetFormat};
+use ps30::core::image::{load, load_beside, HdrImage, ImageLimits, RenderTarget, TargetFormat};
 use ps30::core::ir::Shader;
 use ps30::core::load::{load_str, Loaded, Options};
 use ps30::jobs::blocks;
@@ -332,9 +332,13 @@ fn luminance(c: &mut Criterion) {
             b.iter(|| {
                 on_threads(t, || {
                     // As `ps30 luminance IMAGE` runs: the block planned for
-                    // the image and the shaders generated for it.
-                    let img = load(&path, &ImageLimits::default()).unwrap();
-                    let planned = blocks::planned(img.width, img.height, DEFAULT_DELTA).unwrap();
+                    // the image (beside the decoding) and the shaders
+                    // generated for it.
+                    let (img, planned) = load_beside(&path, &ImageLimits::default(), |w, h| {
+                        blocks::planned(w, h, DEFAULT_DELTA)
+                    })
+                    .unwrap();
+                    let planned = planned.unwrap();
                     let settings = luminance::Settings {
                         block: planned.block(),
                         threads: Some(t),

@@ -1,9 +1,9 @@
 //! Damaged copies of the real test images (truncated, or with bytes
 //! overwritten) must give an `ImageError` naming the file, never a panic or
-//! an abort. The real files exercise the decoders' compressed paths (DWAB,
+//! an abort, read whole or only for their header's size. The real files exercise the decoders' compressed paths (DWAB,
 //! PIZ, RLE-RGBE) that small synthetic files in the unit tests do not reach.
 
-use ps30::core::image::{load, ImageLimits};
+use ps30::core::image::{load, load_beside, size, ImageLimits};
 
 use crate::common;
 use common::{asset, IMAGES};
@@ -28,6 +28,10 @@ fn truncated_images_are_errors_that_name_the_file() {
                 Err(e) => {
                     let text = e.to_string();
                     assert!(text.contains(&path.display().to_string()), "{text}");
+                    // Read beside other work (the header may be whole):
+                    // the same error.
+                    let beside = load_beside(&path, &ImageLimits::default(), |_, _| ());
+                    assert_eq!(beside.unwrap_err().to_string(), text);
                 }
             }
         }
@@ -65,8 +69,13 @@ fn overwritten_bytes_never_panic() {
             std::fs::write(&path, &bytes).unwrap();
             // Damage to pixel data can decode to other pixel values: Ok is
             // allowed, a panic (or abort) is not.
+            let header = size(&path, &ImageLimits::default());
             match load(&path, &ImageLimits::default()) {
-                Ok(_) => loaded += 1,
+                Ok(image) => {
+                    loaded += 1;
+                    // What decodes, the header said.
+                    assert_eq!(header.unwrap(), (image.width, image.height));
+                }
                 Err(_) => errors += 1,
             }
         }

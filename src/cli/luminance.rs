@@ -117,8 +117,12 @@ impl Args {
 
 pub fn run(args: Args, ui: &Ui) -> super::Result {
     super::bound_threads(args.exec.threads())?;
-    let img = image::load(&args.image, &args.exec.image_limits())?;
-    let passes = args.passes(img.width, img.height)?;
+    // The passes need only the image's size: planning them runs beside the
+    // decoding.
+    let (img, passes) = image::load_beside(&args.image, &args.exec.image_limits(), |w, h| {
+        args.passes(w, h)
+    })?;
+    let passes = passes?;
     let settings = Settings {
         block: passes.block,
         delta: args.delta,

@@ -226,25 +226,145 @@ pub fn load_bytes(name: &Path, bytes: &[u8], limits: &ImageLimits) -> Result<Hdr
     decode(name, std::io::Cursor::new(bytes), limits)
 }
 
+/// Reads `path` with [`load`] while `beside` runs on the image's width and
+/// height, read from the header first (and checked against `limits`), on
+/// the current rayon pool: work that needs only the size (planning the
+/// luminance passes) takes no time of its own on two threads or more. On
+/// one thread the image is decoded first, then `beside` runs, as one after
+/// the other would. A header that does not read leaves the error to
+/// [`load`], which meets it again.
+pub fn load_beside<T: Send>(
+    path: &Path,
+    limits: &ImageLimits,
+    beside: impl FnOnce(u32, u32) -> T + Send,
+) -> Result<(HdrImage, T), ImageError> {
+    match size(path, limits) {
+        Ok((width, height)) => {
+            let (image, t) = rayon::join(|| load(path, limits), || beside(width, height));
+            Ok((image?, t))
+        }
+        Err(_) => {
+            let image = load(path, limits)?;
+            let t = beside(image.width, image.height);
+            Ok((image, t))
+        }
+    }
+}
+
+/// The width and height an image file's header states, checked against
+/// `limits`; no pixel is read.
+pub fn size(path: &Path, limits: &ImageLimits) -> Result<(u32, u32), ImageError> {
+    let file = File::open(path).map_err(|e| ImageError::io(path, "open", e))?;
+    let mut reader = BufReader::new(file);
+    match detect(path, &mut reader)? {
+        Format::OpenExr => openexr::size(path, reader, limits),
+        Format::Radiance => radiance::size(path, reader, limits),
+        Format::Pfm => pfm::size(path, reader, limits),
+    }
+}
+
+/// The format `reader`'s first bytes name; `reader` is left at the start.
+fn detect(path: &Path, reader: &mut (impl BufRead + Seek)) -> Result<Format, ImageError> {
+    let mut magic = Vec::with_capacity(4);
+    reader
+        .take(4)
+        .read_to_end(&mut magic)
+        .and_then(|_| reader.rewind())
+        .map_err(|e| ImageError::io(path, "read", e))?;
+    Format::detect(&magic).ok_or_else(|| ImageError::UnknownFormat {
+        path: path.to_path_buf(),
+        first_bytes: magic,
+    })
+}
+
 /// Decodes from `reader` with the decoder its magic number names.
 fn decode(
     path: &Path,
     mut reader: impl BufRead + Seek + Send,
     limits: &ImageLimits,
 ) -> Result<HdrImage, ImageError> {
-    let mut magic = Vec::with_capacity(4);
-    (&mut reader)
-        .take(4)
-        .read_to_end(&mut magic)
-        .and_then(|_| reader.rewind())
-        .map_err(|e| ImageError::io(path, "read", e))?;
-    match Format::detect(&magic) {
-        Some(Format::OpenExr) => openexr::read(path, reader, limits),
-        Some(Format::Radiance) => radiance::read(path, reader, limits),
-        Some(Format::Pfm) => pfm::read(path, reader, limits),
-        None => Err(ImageError::UnknownFormat {
-            path: path.to_path_buf(),
-            first_bytes: magic,
-        }),
+    match detect(path, &mut reader)? {
+        Format::OpenExr => openexr::read(path, reader, limits),
+        Format::Radiance => radiance::read(path, reader, limits),
+        Format::Pfm => pfm::read(path, reader, limits),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::path::PathBuf;
+
+    fn bundled() -> Vec<PathBuf> {
+        let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/hdr");
+        ["courtyard.exr", "forest.hdr", "sunset.pfm"]
+            .iter()
+            .map(|name| dir.join(name))
+            .collect()
+    }
+
+    /// The header's size is the decoded image's, and a limit the image
+    /// exceeds refuses both alike.
+    #[test]
+    fn size_is_what_load_decodes() {
+        for path in bundled() {
+            let image = load(&path, &ImageLimits::default()).unwrap();
+            let stated = size(&path, &ImageLimits::default()).unwrap();
+            assert_eq!(stated, (image.width, image.height), "{}", path.display());
+            let tight = ImageLimits {
+                max_pixels: u64::from(image.width) * u64::from(image.height) - 1,
+            };
+            let refused = size(&path, &tight).unwrap_err().to_string();
+            assert_eq!(refused, load(&path, &tight).unwrap_err().to_string());
+        }
+    }
+
+    /// `beside` gets the image's size and runs once; the image is `load`'s,
+    /// on one thread and on two.
+    #[test]
+    fn load_beside_hands_the_size_over_and_decodes_alike() {
+        for threads in [1, 2] {
+            let pool = rayon::ThreadPoolBuilder::new()
+                .num_threads(threads)
+                .build()
+                .unwrap();
+            for path in bundled() {
+                let alone = load(&path, &ImageLimits::default()).unwrap();
+                let runs = std::sync::atomic::AtomicU32::new(0);
+                let (image, size) = pool
+                    .install(|| {
+                        load_beside(&path, &ImageLimits::default(), |w, h| {
+                            runs.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+                            (w, h)
+                        })
+                    })
+                    .unwrap();
+                assert_eq!(size, (alone.width, alone.height));
+                assert_eq!(runs.into_inner(), 1);
+                let bits =
+                    |p: &[[f32; 4]]| p.iter().flatten().map(|v| v.to_bits()).collect::<Vec<_>>();
+                assert!(
+                    bits(&image.pixels) == bits(&alone.pixels),
+                    "{}",
+                    path.display()
+                );
+            }
+        }
+    }
+
+    /// A file whose header does not read gives `load`'s error, and `beside`
+    /// never runs on a size nobody read.
+    #[test]
+    fn load_beside_of_a_bad_header_is_loads_error() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("bad.pfm");
+        std::fs::write(&path, b"PF\n12 x\n-1\n").unwrap();
+        let alone = load(&path, &ImageLimits::default())
+            .unwrap_err()
+            .to_string();
+        let beside = load_beside(&path, &ImageLimits::default(), |_, _| {
+            panic!("beside ran without a size")
+        });
+        assert_eq!(beside.unwrap_err().to_string(), alone);
     }
 }

@@ -86,29 +86,53 @@ impl ChannelMap {
     }
 }
 
-pub(super) fn read(
+/// The headers, checked (the raw attributes, then every layer's size
+/// against `limits`); the file has at least one layer.
+fn headers(
     path: &Path,
-    mut reader: impl BufRead + Seek + Send,
+    mut reader: impl BufRead + Seek,
     limits: &ImageLimits,
-) -> Result<HdrImage, ImageError> {
-    let decode_error = |e| decode_error(path, e);
+) -> Result<MetaData, ImageError> {
     check_raw_header(path, &mut reader)?;
     reader
         .rewind()
         .map_err(|e| ImageError::io(path, "read", e))?;
-    let meta = MetaData::read_from_buffered(&mut reader, false).map_err(decode_error)?;
+    let meta =
+        MetaData::read_from_buffered(&mut reader, false).map_err(|e| decode_error(path, e))?;
     for header in &meta.headers {
         let size = header.layer_size;
         limits.check(path, FORMAT, size.width() as u64, size.height() as u64)?;
     }
-    let Some(header) = meta.headers.first() else {
+    if meta.headers.is_empty() {
         return Err(ImageError::bad_header(
             path,
             FORMAT,
             "headers",
             "the file has no layer",
         ));
-    };
+    }
+    Ok(meta)
+}
+
+/// The first layer's size (what [`read`] decodes), checked against
+/// `limits`.
+pub(super) fn size(
+    path: &Path,
+    reader: impl BufRead + Seek,
+    limits: &ImageLimits,
+) -> Result<(u32, u32), ImageError> {
+    let meta = headers(path, reader, limits)?;
+    let size = meta.headers[0].layer_size;
+    Ok((size.width() as u32, size.height() as u32))
+}
+
+pub(super) fn read(
+    path: &Path,
+    mut reader: impl BufRead + Seek + Send,
+    limits: &ImageLimits,
+) -> Result<HdrImage, ImageError> {
+    let meta = headers(path, &mut reader, limits)?;
+    let header = &meta.headers[0];
     if header.deep {
         return Err(ImageError::bad_header(
             path,

@@ -26,6 +26,17 @@ struct Header {
     little_endian: bool,
 }
 
+/// The size the header states, checked against `limits`.
+pub(super) fn size(
+    path: &Path,
+    mut reader: impl BufRead,
+    limits: &ImageLimits,
+) -> Result<(u32, u32), ImageError> {
+    let header = read_header(path, &mut reader)?;
+    limits.check(path, FORMAT, header.width.into(), header.height.into())?;
+    Ok((header.width, header.height))
+}
+
 pub(super) fn read(
     path: &Path,
     mut reader: impl BufRead,

@@ -18,25 +18,50 @@ use std::path::Path;
 
 const FORMAT: &str = "Radiance HDR";
 
-pub(super) fn read(
-    path: &Path,
-    mut reader: impl BufRead,
-    limits: &ImageLimits,
-) -> Result<HdrImage, ImageError> {
-    let decode_error = |e: image::ImageError| ImageError::Decode {
+fn decode_error(path: &Path, e: image::ImageError) -> ImageError {
+    ImageError::Decode {
         path: path.to_path_buf(),
         format: FORMAT,
         source: Box::new(e),
-    };
+    }
+}
+
+/// The header read by the decoder, its size checked against `limits`.
+fn header<R: BufRead>(
+    path: &Path,
+    reader: R,
+    limits: &ImageLimits,
+) -> Result<HdrDecoder<R>, ImageError> {
+    let mut reader = reader;
     let head = reader
         .fill_buf()
         .map_err(|e| ImageError::io(path, "read", e))?;
     if crlf_header(head) {
         return Err(super::crlf_error(path, FORMAT));
     }
-    let decoder = HdrDecoder::new(&mut reader).map_err(decode_error)?;
+    let decoder = HdrDecoder::new(reader).map_err(|e| decode_error(path, e))?;
     let (width, height) = decoder.dimensions();
     limits.check(path, FORMAT, width.into(), height.into())?;
+    Ok(decoder)
+}
+
+/// The size the header states, checked against `limits`.
+pub(super) fn size(
+    path: &Path,
+    reader: impl BufRead,
+    limits: &ImageLimits,
+) -> Result<(u32, u32), ImageError> {
+    header(path, reader, limits).map(|d| d.dimensions())
+}
+
+pub(super) fn read(
+    path: &Path,
+    mut reader: impl BufRead,
+    limits: &ImageLimits,
+) -> Result<HdrImage, ImageError> {
+    let decode_error = |e| decode_error(path, e);
+    let decoder = header(path, &mut reader, limits)?;
+    let (width, height) = decoder.dimensions();
 
     // The decoder writes RGB f32 in native byte order.
     let mut bytes = vec![0u8; width as usize * height as usize * 12];
