@@ -98,7 +98,7 @@ fn collect(
     let mut program = Program::default();
     // Each statement's lowering, kept while copies of it (REPEAT_BLOCK)
     // remain: the last copy takes it instead of cloning it.
-    let mut copies_left = vec![0u32; stmts.len()];
+    let mut copies_left = vec![0usize; stmts.len()];
     for e in body {
         copies_left[e.stmt] += 1;
     }

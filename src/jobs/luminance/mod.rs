@@ -470,18 +470,10 @@ impl BoundFold {
 
 /// What [`BoundFold`] works out ahead for a run of pixels: each term's own
 /// error bound, and whether the term is ill-conditioned.
+#[derive(Default)]
 struct BoundRun {
     e: [f64; AHEAD_RUN],
     ill: [bool; AHEAD_RUN],
-}
-
-impl Default for BoundRun {
-    fn default() -> Self {
-        BoundRun {
-            e: [0.0; AHEAD_RUN],
-            ill: [false; AHEAD_RUN],
-        }
-    }
 }
 
 /// The f32 pass's error bound on the term `t` of pixel `p` (the luminance

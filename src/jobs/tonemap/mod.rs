@@ -257,7 +257,7 @@ pub fn check_values(key: f64, white: Option<f64>) -> Result<(), TonemapError> {
 /// The operator in f64, as the article writes it, for one pixel: the linear
 /// colour before saturation. Pixels with Lw ≤ 0 (or NaN) are black.
 pub fn reference_unsaturated(op: &Operator, pixel: [f32; 4]) -> [f64; 3] {
-    unsaturated(&Terms::of(op), pixel)
+    unsaturated(&Terms::of(op), pixel, crate::core::image::luminance(pixel))
 }
 
 /// The operator's values that do not depend on the pixel, each computed as
@@ -287,11 +287,10 @@ impl Terms {
     }
 }
 
-/// [`reference_unsaturated`] with the operator's terms at hand.
-fn unsaturated(t: &Terms, pixel: [f32; 4]) -> [f64; 3] {
+/// [`reference_unsaturated`] with the operator's terms and the pixel's
+/// luminance `lw` ([`crate::core::image::luminance`]) at hand.
+fn unsaturated(t: &Terms, pixel: [f32; 4], lw: f64) -> [f64; 3] {
     let c = [pixel[0] as f64, pixel[1] as f64, pixel[2] as f64];
-    let lw =
-        LUMINANCE_WEIGHTS[0] * c[0] + LUMINANCE_WEIGHTS[1] * c[1] + LUMINANCE_WEIGHTS[2] * c[2];
     // NaN fails `> 0` and is black too.
     if lw.is_nan() || lw <= 0.0 {
         return [0.0; 3];
@@ -411,7 +410,9 @@ fn factor(t: &Terms, lum: Bounded) -> Bounded {
 /// The interval each emulated channel must lie in, and whether the pixel's
 /// luminance sign was uncertain. `None` for non-finite pixels (not checked).
 pub fn channel_bounds(op: &Operator, pixel: [f32; 4]) -> Option<([(f64, f64); 3], bool)> {
-    bounds_and_reference(&Terms::of(op), pixel).map(|(bounds, ambiguous, _)| (bounds, ambiguous))
+    let lw = crate::core::image::luminance(pixel);
+    bounds_and_reference(&Terms::of(op), pixel, lw)
+        .map(|(bounds, ambiguous, _)| (bounds, ambiguous))
 }
 
 /// Each channel's allowed interval, whether the luminance sign was
@@ -419,14 +420,14 @@ pub fn channel_bounds(op: &Operator, pixel: [f32; 4]) -> Option<([(f64, f64); 3]
 type Checked = ([(f64, f64); 3], bool, [f64; 3]);
 
 /// [`channel_bounds`], and the reference's unsaturated colour it is built
-/// around, with the operator's terms at hand.
-fn bounds_and_reference(t: &Terms, pixel: [f32; 4]) -> Option<Checked> {
+/// around, with the operator's terms and the pixel's luminance `lw` at hand.
+fn bounds_and_reference(t: &Terms, pixel: [f32; 4], lw: f64) -> Option<Checked> {
     let c = [pixel[0] as f64, pixel[1] as f64, pixel[2] as f64];
     if c.iter().any(|v| !v.is_finite()) {
         return None;
     }
     let lum = dp3(c);
-    let raw = unsaturated(t, pixel);
+    let raw = unsaturated(t, pixel, lw);
     if lum.v + lum.e <= 0.0 {
         // The computed luminance is ≤ 0 for certain: cmp selects 0.
         return Some(([(0.0, 0.0); 3], false, raw));
@@ -688,7 +689,7 @@ fn crosscheck_chunk(
     for (j, (&p, o)) in pixels.iter().zip(emulated).enumerate() {
         let i = first + j;
         let lw = crate::core::image::luminance(p);
-        let Some((bounds, ambiguous, raw)) = bounds_and_reference(terms, p) else {
+        let Some((bounds, ambiguous, raw)) = bounds_and_reference(terms, p, lw) else {
             r.nonfinite_pixels += 1;
             continue;
         };
