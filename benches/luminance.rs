@@ -26,8 +26,16 @@
 //!   with a line saying so, without an adapter.
 //!
 //! The cross-check's bounds are not part of the `emulate/*` entries.
+//!
+//! After criterion's summary the benchmark prints the speed goals' table
+//! (`support/goals.rs`): each goal's ratio from this run's entries, with the
+//! machine stated, also written to `<criterion's directory>/
+//! courtyard_1280x1024/goals.md`.
 
-use criterion::{criterion_group, criterion_main, Criterion};
+#[path = "support/goals.rs"]
+mod goals;
+
+use criterion::{criterion_group, Criterion};
 use ps30::core::emu::{self, Address, Constants, Draw, Filter, LinearInput, SamplerState};
 use ps30::core::gpu::{self, Gpu, TargetKind};
 use ps30::core::image::{load, load_beside, HdrImage, ImageLimits, RenderTarget, TargetFormat};
@@ -40,6 +48,12 @@ use ps30::jobs::luminance::{self, run_pass, PassSetup};
 use ps30::jobs::tonemap;
 use std::hint::black_box;
 use std::path::Path;
+
+/// The group every entry belongs to.
+const GROUP: &str = "courtyard_1280x1024";
+
+/// The adapter `gpu/pass1/Nt` drew on, for the goals' table.
+static PEER: std::sync::OnceLock<String> = std::sync::OnceLock::new();
 
 fn shader(src: (&str, &str), defines: &[(&str, u64)]) -> Shader {
     let mut opts = Options::default();
@@ -231,7 +245,7 @@ fn luminance(c: &mut Criterion) {
         &Options::default(),
     )
     .unwrap();
-    let mut g = c.benchmark_group("courtyard_1280x1024");
+    let mut g = c.benchmark_group(GROUP);
     g.sample_size(10);
     g.bench_function("reference/f64", |b| {
         b.iter(|| {
@@ -308,6 +322,7 @@ fn luminance(c: &mut Criterion) {
         std::env::remove_var("LP_NUM_THREADS");
         match &lp {
             Ok(d) => {
+                PEER.get_or_init(|| d.info().name.clone());
                 g.bench_function(format!("gpu/pass1/{t}t"), |b| {
                     b.iter(|| pass1(black_box(&img), Drawer::Gpu(d, &unrolled), 125, 128, false))
                 });
@@ -378,4 +393,23 @@ fn luminance(c: &mut Criterion) {
 }
 
 criterion_group!(benches, luminance);
-criterion_main!(benches);
+
+/// criterion's own `main`, then the goals' table from this run's entries.
+fn main() {
+    let started = std::time::SystemTime::now();
+    benches();
+    Criterion::default().configure_from_args().final_summary();
+    let times = goals::criterion_dirs()
+        .into_iter()
+        .map(|dir| (goals::measured(&dir, GROUP, started), dir))
+        .find(|(times, _)| !times.is_empty());
+    let Some((times, dir)) = times else {
+        return; // nothing measured: a listing, a filter that matched nothing
+    };
+    let table = goals::table(&goals::machine(PEER.get().map(String::as_str)), &times);
+    println!("\n{table}");
+    let path = dir.join(GROUP).join("goals.md");
+    if let Err(e) = std::fs::write(&path, &table) {
+        eprintln!("goals: could not write {}: {e}", path.display());
+    }
+}

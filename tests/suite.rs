@@ -10,6 +10,7 @@
 
 mod common;
 
+mod bench_goals;
 mod bytecode;
 mod cli;
 mod cli_gpu;
