@@ -21,9 +21,13 @@
 //! * `gpu/unrolled`, `gpu/loop`: the `emulate/*` draws on the GPU backend
 //!   (the first Vulkan adapter: llvmpipe here), each pass as `--backend
 //!   gpu` runs it — translation, pipeline, the image uploaded, the draw,
-//!   the target read back; `gpu/pass1/Nt`: pass 1 alone there with
-//!   llvmpipe on N threads (`LP_NUM_THREADS`), beside `pass1/Nt`. Skipped,
-//!   with a line saying so, without an adapter.
+//!   the target read back; `gpu/pass1/Nt`: pass 1 alone that way on
+//!   llvmpipe (the CPU adapter, even beside a real GPU) with N threads
+//!   (`LP_NUM_THREADS`), beside `pass1/Nt`; `gpu/pass1-draw/Nt`: llvmpipe's
+//!   draw alone — the shader translated, its pipeline compiled and the
+//!   image uploaded once, beforehand; each iteration draws and reads the
+//!   target back (`gpu::prepare`, `Prepared::draw`). Skipped, with a line
+//!   saying so, without an adapter.
 //!
 //! The cross-check's bounds are not part of the `emulate/*` entries.
 //!
@@ -52,7 +56,7 @@ use std::path::Path;
 /// The group every entry belongs to.
 const GROUP: &str = "courtyard_1280x1024";
 
-/// The adapter `gpu/pass1/Nt` drew on, for the goals' table.
+/// The adapter `gpu/pass1*/Nt` drew on, for the goals' table.
 static PEER: std::sync::OnceLock<String> = std::sync::OnceLock::new();
 
 fn shader(src: (&str, &str), defines: &[(&str, u64)]) -> Shader {
@@ -113,8 +117,8 @@ fn state() -> SamplerState {
     }
 }
 
-/// Pass 1: the `nx × ny` R32F target.
-fn pass1(img: &HdrImage, by: Drawer, bw: u32, bh: u32, record_lod: bool) -> RenderTarget {
+/// Pass 1's draw: an `nx × ny` target, each pixel summing one block.
+fn pass1_draw(img: &HdrImage, bw: u32, bh: u32, record_lod: bool) -> Draw<'_> {
     let (w, h) = (img.width, img.height);
     let (nx, ny) = (w.div_ceil(bw), h.div_ceil(bh));
     let mut d1 = Draw::new(nx, ny);
@@ -138,6 +142,13 @@ fn pass1(img: &HdrImage, by: Drawer, bw: u32, bh: u32, record_lod: bool) -> Rend
         bool: Vec::new(),
     };
     d1.samplers.push((0, img.as_texture().into(), state()));
+    d1
+}
+
+/// Pass 1: the `nx × ny` R32F target.
+fn pass1(img: &HdrImage, by: Drawer, bw: u32, bh: u32, record_lod: bool) -> RenderTarget {
+    let d1 = pass1_draw(img, bw, bh, record_lod);
+    let (nx, ny) = (d1.target_width, d1.target_height);
     let out1 = by.draw(0, &d1);
     let mut t1 = RenderTarget::new(nx, ny, TargetFormat::R32F);
     for (i, v) in out1.iter().enumerate() {
@@ -314,11 +325,13 @@ fn luminance(c: &mut Criterion) {
         }
         Err(e) => eprintln!("gpu/unrolled, gpu/loop: skipped: {e}"),
     }
-    // llvmpipe reads LP_NUM_THREADS when a device is created: one device per
-    // thread count, for pass 1 beside `pass1/1t` and `pass1/2t`.
+    // The peer is llvmpipe, a CPU adapter, opened even beside a real GPU.
+    // It reads LP_NUM_THREADS when a device is created: one device per
+    // thread count, for pass 1 beside `pass1/1t` and `pass1/2t` — as the
+    // backend runs it, and its draw alone.
     for t in [1, 2] {
         std::env::set_var("LP_NUM_THREADS", t.to_string());
-        let lp = Gpu::open();
+        let lp = Gpu::open_cpu();
         std::env::remove_var("LP_NUM_THREADS");
         match &lp {
             Ok(d) => {
@@ -326,8 +339,14 @@ fn luminance(c: &mut Criterion) {
                 g.bench_function(format!("gpu/pass1/{t}t"), |b| {
                     b.iter(|| pass1(black_box(&img), Drawer::Gpu(d, &unrolled), 125, 128, false))
                 });
+                let draw = pass1_draw(&img, 125, 128, false);
+                let kind = TargetKind::Format(TargetFormat::R32F);
+                let ready = gpu::prepare(d, &unrolled.shaders[0], &draw, kind).unwrap();
+                g.bench_function(format!("gpu/pass1-draw/{t}t"), |b| {
+                    b.iter(|| ready.draw().unwrap().color.len())
+                });
             }
-            Err(e) => eprintln!("gpu/pass1/{t}t: skipped: {e}"),
+            Err(e) => eprintln!("gpu/pass1/{t}t, gpu/pass1-draw/{t}t: skipped: {e}"),
         }
     }
     for t in [1, 2] {

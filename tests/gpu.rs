@@ -475,11 +475,9 @@ fn mip_levels_bias_and_max_mip_level() {
 
 /// texkill, two colour outputs and oDepth: the killed pixels, the colours
 /// (zero where killed, as the emulator reports them) and the depth.
-#[test]
-fn texkill_several_outputs_and_depth() {
-    let Some(g) = gpu("texkill_several_outputs_and_depth") else {
-        return;
-    };
+/// Two outputs and depth from a shader that kills the pixels left of or
+/// above the middle of an 8×8 target.
+fn killing_draw() -> (ps30::core::ir::Shader, Draw<'static>) {
     let s = shader(
         "ps_3_0
 dcl_texcoord0 v0
@@ -500,6 +498,15 @@ mov oDepth, v0.y
             ddy: [0.0, 0.125, 0.0, 0.0],
         },
     ));
+    (s, d)
+}
+
+#[test]
+fn texkill_several_outputs_and_depth() {
+    let Some(g) = gpu("texkill_several_outputs_and_depth") else {
+        return;
+    };
+    let (s, d) = killing_draw();
     let (e, o) = both(&g, &s, &d, TargetKind::Raw);
     assert_eq!(e.killed, o.killed);
     assert!(e.killed.iter().any(|&k| k) && e.killed.iter().any(|&k| !k));
@@ -513,6 +520,51 @@ mov oDepth, v0.y
     }
     // Depth in [0, 1] is stored exactly by a Depth32Float target.
     assert_eq!(e.depth, o.depth);
+}
+
+/// A draw prepared once (pipeline compiled, targets allocated) and drawn
+/// three times gives `run`'s output every time: killed pixels, both
+/// colours bit for bit, depth.
+#[test]
+fn a_prepared_draw_gives_runs_output_each_time() {
+    let Some(g) = gpu("a_prepared_draw_gives_runs_output_each_time") else {
+        return;
+    };
+    let (s, d) = killing_draw();
+    let once = backend::run(&g, &s, &d, TargetKind::Raw).unwrap();
+    let ready = backend::prepare(&g, &s, &d, TargetKind::Raw).unwrap();
+    for time in 0..3 {
+        let again = ready.draw().unwrap();
+        assert_eq!(once.killed, again.killed, "draw {time}");
+        for k in 0..2 {
+            assert_same(
+                &format!("draw {time}, oC{k}"),
+                once.color[k].as_ref().unwrap(),
+                again.color[k].as_ref().unwrap(),
+                8,
+            );
+        }
+        assert_eq!(once.depth, again.depth, "draw {time}");
+    }
+}
+
+/// `Gpu::open_cpu` opens a CPU device (llvmpipe), the speed benchmark's
+/// peer, even where `Gpu::open` would take a real GPU.
+#[test]
+fn the_cpu_adapter_is_a_cpu_device() {
+    match Gpu::open_cpu() {
+        Ok(g) => assert_eq!(g.info().device_type, "Cpu", "{}", g.info().line()),
+        Err(e) if std::env::var_os("CI").is_some() => {
+            panic!("CI is set, so a CPU Vulkan adapter (llvmpipe) must open: {e}")
+        }
+        Err(e) => {
+            use std::io::Write;
+            let _ = writeln!(
+                std::io::stderr(),
+                "the_cpu_adapter_is_a_cpu_device: skipped: {e}"
+            );
+        }
+    }
 }
 
 #[test]

@@ -109,26 +109,50 @@ const VERTEX_WGSL: &str =
 const ROW_ALIGN: u32 = wgpu::COPY_BYTES_PER_ROW_ALIGNMENT;
 
 /// Runs `draw` of `shader` on the device; `targets` chooses the colour
-/// targets' format.
+/// targets' format. [`prepare`] and [`Prepared::draw`] in one.
 pub fn run(
     gpu: &Gpu,
     shader: &Shader,
     draw: &Draw,
     targets: TargetKind,
 ) -> Result<GpuOutput, GpuError> {
+    prepare(gpu, shader, draw, targets)?.draw()
+}
+
+/// A draw made ready on the device: the shader translated and its pipeline
+/// compiled, the constants and textures uploaded, the targets allocated.
+/// [`Prepared::draw`] draws and reads the targets back, as often as asked:
+/// preparing once and drawing many times measures the device's drawing
+/// alone, apart from what setting it up costs.
+pub struct Prepared<'g> {
+    gpu: &'g Gpu,
+    size: (u32, u32),
+    iface: translate::Interface,
+    targets: TargetKind,
+    bindings: Bindings,
+    pipeline: wgpu::RenderPipeline,
+    attachments: Vec<Option<(wgpu::Texture, wgpu::TextureFormat)>>,
+    depth: Option<wgpu::Texture>,
+}
+
+/// Makes `draw` of `shader` ready on the device (see [`Prepared`]).
+pub fn prepare<'g>(
+    gpu: &'g Gpu,
+    shader: &Shader,
+    draw: &Draw,
+    targets: TargetKind,
+) -> Result<Prepared<'g>, GpuError> {
     refuse(gpu, shader, draw)?;
     let (w, h) = (draw.target_width, draw.target_height);
     let t =
         translate::translate(shader, draw.float_rules, Entry::Draw).map_err(GpuError::Translate)?;
     let iface = t.interface.clone();
     let device = &gpu.device;
-    let validation = device.push_error_scope(wgpu::ErrorFilter::Validation);
-    let memory = device.push_error_scope(wgpu::ErrorFilter::OutOfMemory);
-
+    let scopes = ErrorScopes::push(gpu);
     let bindings = Bindings::new(gpu, draw, &iface)?;
     let color_targets = color_targets(&iface, targets);
     let pipeline = render_pipeline(device, t.module, &bindings, &color_targets, draw, &iface)?;
-    let attachments: Vec<Option<(wgpu::Texture, wgpu::TextureFormat)>> = color_targets
+    let attachments = color_targets
         .iter()
         .map(|c| {
             c.as_ref()
@@ -138,28 +162,75 @@ pub fn run(
     let depth = iface
         .depth
         .then(|| target_texture(device, w, h, wgpu::TextureFormat::Depth32Float));
+    scopes.pop(gpu)?;
+    Ok(Prepared {
+        gpu,
+        size: (w, h),
+        iface,
+        targets,
+        bindings,
+        pipeline,
+        attachments,
+        depth,
+    })
+}
 
-    let mut encoder = device.create_command_encoder(&Default::default());
-    record_pass(
-        &mut encoder,
-        &attachments,
-        depth.as_ref(),
-        &pipeline,
-        &bindings.group,
-    );
-    let readbacks = copy_targets(device, &mut encoder, &attachments, depth.as_ref(), w, h);
-    gpu.queue.submit([encoder.finish()]);
-    let data = read_all(gpu, &readbacks)?;
-    if let Some(e) = pollster::block_on(memory.pop()) {
-        return Err(GpuError::Failed(e.to_string()));
+impl Prepared<'_> {
+    /// Draws the triangle over the cleared targets and reads them back.
+    pub fn draw(&self) -> Result<GpuOutput, GpuError> {
+        let (gpu, (w, h)) = (self.gpu, self.size);
+        let device = &gpu.device;
+        let scopes = ErrorScopes::push(gpu);
+        let mut encoder = device.create_command_encoder(&Default::default());
+        record_pass(
+            &mut encoder,
+            &self.attachments,
+            self.depth.as_ref(),
+            &self.pipeline,
+            &self.bindings.group,
+        );
+        let readbacks = copy_targets(
+            device,
+            &mut encoder,
+            &self.attachments,
+            self.depth.as_ref(),
+            w,
+            h,
+        );
+        gpu.queue.submit([encoder.finish()]);
+        let data = read_all(gpu, &readbacks)?;
+        scopes.pop(gpu)?;
+        Ok(assemble(w, h, &self.iface, self.targets, &readbacks, data))
     }
-    if let Some(e) = pollster::block_on(validation.pop()) {
-        return Err(GpuError::Failed(e.to_string()));
+}
+
+/// The device's validation and out-of-memory errors over a span of calls,
+/// and any error it raised outside a scope.
+struct ErrorScopes {
+    validation: wgpu::ErrorScopeGuard,
+    memory: wgpu::ErrorScopeGuard,
+}
+
+impl ErrorScopes {
+    fn push(gpu: &Gpu) -> ErrorScopes {
+        let validation = gpu.device.push_error_scope(wgpu::ErrorFilter::Validation);
+        let memory = gpu.device.push_error_scope(wgpu::ErrorFilter::OutOfMemory);
+        ErrorScopes { validation, memory }
     }
-    if let Some(e) = gpu.uncaptured.lock().ok().and_then(|mut e| e.take()) {
-        return Err(GpuError::Failed(e));
+
+    /// The first error the span raised, if any (innermost scope first).
+    fn pop(self, gpu: &Gpu) -> Result<(), GpuError> {
+        if let Some(e) = pollster::block_on(self.memory.pop()) {
+            return Err(GpuError::Failed(e.to_string()));
+        }
+        if let Some(e) = pollster::block_on(self.validation.pop()) {
+            return Err(GpuError::Failed(e.to_string()));
+        }
+        if let Some(e) = gpu.uncaptured.lock().ok().and_then(|mut e| e.take()) {
+            return Err(GpuError::Failed(e));
+        }
+        Ok(())
     }
-    Ok(assemble(w, h, &iface, targets, &readbacks, data))
 }
 
 /// Refuses what the emulator refuses ([`emu::check`]), samplers other than

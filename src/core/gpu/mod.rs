@@ -34,7 +34,7 @@
 mod draw;
 mod sampler;
 
-pub use draw::{run, GpuOutput, TargetKind};
+pub use draw::{prepare, run, GpuOutput, Prepared, TargetKind};
 
 use crate::core::emu::EmuError;
 use crate::core::translate::TranslateError;
@@ -126,6 +126,17 @@ const WANTED: wgpu::Features =
 impl Gpu {
     /// Opens the first Vulkan adapter (a real GPU is preferred to a CPU one).
     pub fn open() -> Result<Gpu, GpuError> {
+        Gpu::open_adapter(false)
+    }
+
+    /// Opens a CPU Vulkan adapter (Mesa's llvmpipe), even where a real GPU
+    /// is present: the peer the emulator's speed is measured against.
+    pub fn open_cpu() -> Result<Gpu, GpuError> {
+        Gpu::open_adapter(true)
+    }
+
+    /// `cpu`: wgpu's fallback adapter, a CPU device, is asked for.
+    fn open_adapter(cpu: bool) -> Result<Gpu, GpuError> {
         let instance = wgpu::Instance::new(wgpu::InstanceDescriptor {
             backends: wgpu::Backends::VULKAN,
             flags: wgpu::InstanceFlags::empty(),
@@ -133,7 +144,7 @@ impl Gpu {
         });
         let adapter = pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions {
             power_preference: wgpu::PowerPreference::HighPerformance,
-            force_fallback_adapter: false,
+            force_fallback_adapter: cpu,
             ..Default::default()
         }))
         .map_err(|e| GpuError::NoAdapter(e.to_string()))?;
