@@ -548,6 +548,33 @@ fn a_prepared_draw_gives_runs_output_each_time() {
     }
 }
 
+/// A texture wider than any device allows is refused by `prepare` with an
+/// error, not a panic: the error scopes the setup opened are closed in
+/// order when it stops early (wgpu panics on scopes popped out of order).
+#[test]
+fn an_oversized_texture_is_an_error_from_prepare() {
+    let Some(g) = gpu("an_oversized_texture_is_an_error_from_prepare") else {
+        return;
+    };
+    let wide = 65_537; // Vulkan devices give at most 65,536 texels a side
+    let texels = vec![[0.5f32; 4]; wide];
+    let s = shader("ps_3_0\ndcl_texcoord0 v0\ndcl_2d s0\ntexld r0, v0, s0\nmov oC0, r0\n");
+    let mut d = Draw::new(2, 2);
+    d.inputs
+        .push((0, LinearInput::constant([0.5, 0.5, 0.0, 0.0])));
+    let texture = Texture {
+        width: wide as u32,
+        height: 1,
+        texels: &texels,
+    };
+    d.samplers
+        .push((0, texture.into(), SamplerState::filtered(Filter::Point)));
+    let e = backend::prepare(&g, &s, &d, TargetKind::Raw)
+        .err()
+        .expect("a 65,537-texel-wide texture is refused");
+    assert!(e.to_string().contains("65537×1 texture"), "{e}");
+}
+
 /// `Gpu::open_cpu` opens a CPU device (llvmpipe), the speed benchmark's
 /// peer, even where `Gpu::open` would take a real GPU.
 #[test]

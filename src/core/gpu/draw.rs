@@ -207,15 +207,17 @@ impl Prepared<'_> {
 /// The device's validation and out-of-memory errors over a span of calls,
 /// and any error it raised outside a scope.
 struct ErrorScopes {
-    validation: wgpu::ErrorScopeGuard,
+    // wgpu panics when scopes are popped out of order, and a span left
+    // early (`?`) drops them in field order: the inner scope comes first.
     memory: wgpu::ErrorScopeGuard,
+    validation: wgpu::ErrorScopeGuard,
 }
 
 impl ErrorScopes {
     fn push(gpu: &Gpu) -> ErrorScopes {
         let validation = gpu.device.push_error_scope(wgpu::ErrorFilter::Validation);
         let memory = gpu.device.push_error_scope(wgpu::ErrorFilter::OutOfMemory);
-        ErrorScopes { validation, memory }
+        ErrorScopes { memory, validation }
     }
 
     /// The first error the span raised, if any (innermost scope first).
