@@ -30,6 +30,17 @@ impl Bound {
             Bound::AtLeast(b) => ratio >= b,
         }
     }
+
+    /// `ratio` to two decimals, or to as many more (up to six) as it takes
+    /// for the figure shown to fall on the same side of the bound as the
+    /// ratio itself: 1.695 against ≥ 1.7 is not shown as a failing 1.70.
+    fn shown(self, ratio: f64) -> String {
+        let holds = self.holds(ratio);
+        (2..=6)
+            .map(|d| format!("{ratio:.d$}"))
+            .find(|s| s.parse().is_ok_and(|r: f64| self.holds(r) == holds))
+            .unwrap_or_else(|| format!("{ratio}"))
+    }
 }
 
 /// One goal: the ratio of two benchmark entries and its bound.
@@ -178,13 +189,14 @@ pub fn table(machine: &str, times: &[(String, f64)]) -> String {
         let row = match (time(g.numerator), time(g.denominator)) {
             (Some(a), Some(b)) => {
                 let ratio = a / b;
+                let shown = g.bound.shown(ratio);
                 let verdict = if g.bound.holds(ratio) {
                     "met"
                 } else {
                     "**not met**"
                 };
                 format!(
-                    "`{}` {} / `{}` {} | {ratio:.2} ({sign} {bound}) | {verdict}",
+                    "`{}` {} / `{}` {} | {shown} ({sign} {bound}) | {verdict}",
                     g.numerator,
                     ms(a),
                     g.denominator,
