@@ -227,7 +227,7 @@ impl<'c, 'a> Worker<'c, 'a> {
                 live |= 0xf << q;
             }
         }
-        self.span = (LANES - live.leading_zeros() as usize).next_multiple_of(16);
+        self.span = (LANES - live.leading_zeros() as usize).next_multiple_of(8);
         let n = self.span();
         for (v, input) in ctx.inputs.iter().enumerate() {
             if let Some(input) = input {
@@ -283,11 +283,12 @@ impl<'c, 'a> Worker<'c, 'a> {
     }
 
     /// Lanes the batch's ops compute: `0..span()`, at most [`LANES`] (so
-    /// the lane loops need no bounds checks) and a multiple of 16 (so they
-    /// vectorise without a scalar remainder).
+    /// the lane loops need no bounds checks) and a multiple of 8, two quads
+    /// (so they vectorise without a scalar remainder: eight f32 lanes are
+    /// one AVX2 vector, two SSE ones).
     #[inline(always)]
     pub(super) fn span(&self) -> usize {
-        self.span.min(LANES) & !15
+        self.span.min(LANES) & !7
     }
 
     // ----- counting -------------------------------------------------------

@@ -694,15 +694,18 @@ impl<'c, 'a> RunCtx<'c, 'a> {
 
 /// Quads per batch for a target of `quads` quads on `threads` threads: full
 /// batches, unless that leaves a thread without work; then one batch per
-/// thread, in multiples of 4 quads (16 lanes, which vectorise without a
-/// remainder). Pass 1 of the luminance job draws 6×4 quads: one batch of 16
-/// and one of 8 on one thread, two of 12 on two. The batches a draw is cut
-/// into change no result (pixels are independent).
+/// thread, in multiples of 2 quads (8 lanes, which vectorise without a
+/// remainder; see `Worker::span`). Pass 1 of the luminance job draws 6×4
+/// quads: one batch of 16 and one of 8 on one thread, two of 12 on two; a
+/// 10×8 target (5×4 quads) two of 10 on two threads, where multiples of 4
+/// quads would give 12 and 8 and the draw would last as long as its larger
+/// batch. The batches a draw is cut into change no result (pixels are
+/// independent).
 fn batch_quads(quads: u64, threads: usize) -> u64 {
     quads
         .div_ceil(threads.max(1) as u64)
-        .next_multiple_of(4)
-        .clamp(4, QUADS_PER_BATCH)
+        .next_multiple_of(2)
+        .clamp(2, QUADS_PER_BATCH)
 }
 
 /// The integer constants (the draw's, then `defi`), each one a rep or loop

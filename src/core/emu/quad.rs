@@ -46,7 +46,9 @@ const ALL_QUADS: u64 = 0x1111_1111_1111_1111;
 /// the first `n / 4`;
 /// (+∞, −∞) when none is. Quads are taken four at a time with their corners
 /// transposed into rows, which the compiler maps onto vector operations;
-/// the comparisons are plain `<`/`>`, so a NaN length is skipped.
+/// a batch's span may end halfway through the last four (`n` is a multiple
+/// of 8), whose quads beyond it are never marked. The comparisons are plain
+/// `<`/`>`, so a NaN length is skipped.
 #[inline(always)]
 pub(super) fn quad_len2_range(
     n: usize,
@@ -67,7 +69,7 @@ pub(super) fn quad_len2_range(
     ) -> (f32, f32) {
         let mut lo = [f32::INFINITY; 4];
         let mut hi = [f32::NEG_INFINITY; 4];
-        for g in 0..n.min(LANES) / 16 {
+        for g in 0..n.min(LANES).div_ceil(16) {
             let mut c = [[0f32; 4]; 6];
             for k in 0..4 {
                 let b = 16 * g + 4 * k;

@@ -1380,13 +1380,73 @@ fn the_avx2_executor_matches_the_portable_one_bit_for_bit() {
     }
 }
 
+/// A texld's LOD statistic covers every quad of every batch, whatever the
+/// batch's size: batches of 2, 6 or 10 quads end halfway through the four
+/// quads the statistic takes at a time. The coordinate is interpolated, so
+/// every quad has the same gradients: dX = (0.013·8, 0.007·4) and dY =
+/// (0.005·8, 0.017·4) texels on an 8×4 texture, λ = ½·log2(max(|dX|²,
+/// |dY|²)), worked out here in f64. Tolerance: the coordinates stay below
+/// 0.5, so each f32 value is within 2^-25 of its exact value and each
+/// difference of two within 2^-24 = 6e-8 of the exact gradient (≥ 0.005 per
+/// pixel): a relative 1.2e-5 on each component, 2.4e-5 on the squared
+/// length, ½·2.4e-5/ln 2 = 1.8e-5 on λ, plus the emulator's log2 (within
+/// 2^-21 relative, below 2e-6 here); 1e-4 holds all of it.
+#[test]
+fn lod_statistic_covers_every_quad_of_small_batches() {
+    let texels = vec![[0.5f32; 4]; 32];
+    let c = compiled(
+        "dcl_texcoord0 v0
+         dcl_2d s0
+         texld r0, v0, s0
+         mov oC0, r0",
+    );
+    let (du, dv) = (0.013 * 8.0, 0.007 * 4.0);
+    let (eu, ev) = (0.005 * 8.0, 0.017 * 4.0);
+    let len2 = f64::max(du * du + dv * dv, eu * eu + ev * ev);
+    let expected = 0.5 * len2.log2();
+    for (w, h) in [(1, 1), (3, 3), (10, 8), (11, 8), (5, 6), (17, 2)] {
+        let mut d = textured(
+            w,
+            h,
+            LinearInput {
+                base: [0.01, 0.02, 0.0, 1.0],
+                ddx: [0.013, 0.007, 0.0, 0.0],
+                ddy: [0.005, 0.017, 0.0, 0.0],
+            },
+            Texture {
+                width: 8,
+                height: 4,
+                texels: &texels,
+            },
+            SamplerState::filtered(Filter::Point),
+        );
+        d.record_lod = true;
+        for threads in 1..=7 {
+            let out = run_with_threads(&c, &d, threads).unwrap();
+            let (lo, hi) = out.gradients[0]
+                .lod
+                .unwrap_or_else(|| panic!("{w}x{h}, {threads} threads: no LOD recorded"));
+            for l in [lo, hi] {
+                assert!(
+                    (l as f64 - expected).abs() < 1e-4,
+                    "{w}x{h}, {threads} threads: λ {l} against {expected}"
+                );
+            }
+            let quads = u64::from(w.div_ceil(2) * h.div_ceil(2));
+            assert_eq!(out.gradients[0].quads, quads, "{w}x{h}, {threads} threads");
+        }
+    }
+}
+
 #[test]
 fn small_targets_split_over_threads_with_identical_results() {
     let texels: Vec<[f32; 4]> = (0..15).map(|i| [i as f32 * 0.3, 0.5, 0.25, 1.0]).collect();
     let c = compiled(BUSY);
     // 11×8 is pass 1's target shape: 24 quads, 2 full batches on one
-    // thread (16 + 8 quads), cut into 12 + 12, 8 + 8 + 8, 4 × 6... on more.
-    for (w, h) in [(11, 8), (3, 3), (1, 1), (17, 2)] {
+    // thread (16 + 8 quads), cut into 12 + 12, 8 + 8 + 8, 6 × 4... on more;
+    // 10×8 (20 quads) into 10 + 10, batches whose lanes end mid-vector of
+    // 16 (40 lanes).
+    for (w, h) in [(11, 8), (10, 8), (3, 3), (1, 1), (17, 2)] {
         let d = busy_draw(&texels, w, h);
         let one = run_with_threads(&c, &d, 1).unwrap();
         for threads in 2..=7 {
@@ -1397,7 +1457,10 @@ fn small_targets_split_over_threads_with_identical_results() {
     assert_eq!(batch_quads(24, 1), 16);
     assert_eq!(batch_quads(24, 2), 12);
     assert_eq!(batch_quads(24, 3), 8);
+    assert_eq!(batch_quads(24, 4), 6);
     assert_eq!(batch_quads(24, 8), 4);
+    assert_eq!(batch_quads(20, 2), 10);
+    assert_eq!(batch_quads(1, 4), 2);
     assert_eq!(batch_quads(10_000, 2), 16);
 }
 
