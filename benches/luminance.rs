@@ -31,6 +31,9 @@
 //!
 //! The cross-check's bounds are not part of the `emulate/*` entries.
 //!
+//! The CPU entries run first, in the order above; the `gpu/*` entries
+//! last, their devices opened only then.
+//!
 //! After criterion's summary the benchmark prints the speed goals' table
 //! (`support/goals.rs`): each goal's ratio from this run's entries, with the
 //! machine stated, also written to `<criterion's directory>/
@@ -249,7 +252,6 @@ fn luminance(c: &mut Criterion) {
         shader(CORRECTED_LOOP.listing(), &[]),
         shader(CORRECTED_PASS2.listing(), &[("xsize", 10), ("ysize", 19)]),
     );
-    let device = Gpu::open();
     let loop1 = load_str(
         CORRECTED_LOOP.listing().0,
         CORRECTED_LOOP.listing().1,
@@ -314,41 +316,6 @@ fn luminance(c: &mut Criterion) {
             })
         });
     }
-    match &device {
-        Ok(d) => {
-            g.bench_function("gpu/unrolled", |b| {
-                b.iter(|| two_pass(black_box(&img), Drawer::Gpu(d, &unrolled), 125, 128, false))
-            });
-            g.bench_function("gpu/loop", |b| {
-                b.iter(|| two_pass(black_box(&img), Drawer::Gpu(d, &looped), 128, 56, false))
-            });
-        }
-        Err(e) => eprintln!("gpu/unrolled, gpu/loop: skipped: {e}"),
-    }
-    // The peer is llvmpipe, a CPU adapter, opened even beside a real GPU.
-    // It reads LP_NUM_THREADS when a device is created: one device per
-    // thread count, for pass 1 beside `pass1/1t` and `pass1/2t` — as the
-    // backend runs it, and its draw alone.
-    for t in [1, 2] {
-        std::env::set_var("LP_NUM_THREADS", t.to_string());
-        let lp = Gpu::open_cpu();
-        std::env::remove_var("LP_NUM_THREADS");
-        match &lp {
-            Ok(d) => {
-                PEER.get_or_init(|| d.info().name.clone());
-                g.bench_function(format!("gpu/pass1/{t}t"), |b| {
-                    b.iter(|| pass1(black_box(&img), Drawer::Gpu(d, &unrolled), 125, 128, false))
-                });
-                let draw = pass1_draw(&img, 125, 128, false);
-                let kind = TargetKind::Format(TargetFormat::R32F);
-                let ready = gpu::prepare(d, &unrolled.shaders[0], &draw, kind).unwrap();
-                g.bench_function(format!("gpu/pass1-draw/{t}t"), |b| {
-                    b.iter(|| ready.draw().unwrap().color.len())
-                });
-            }
-            Err(e) => eprintln!("gpu/pass1/{t}t, gpu/pass1-draw/{t}t: skipped: {e}"),
-        }
-    }
     for t in [1, 2] {
         g.bench_function(format!("phase/decode/{t}t"), |b| {
             b.iter(|| on_threads(t, || load(&path, &ImageLimits::default()).unwrap().width))
@@ -408,7 +375,56 @@ fn luminance(c: &mut Criterion) {
             b.iter(|| on_threads(t, || run_command(&path, &loop1, t)))
         });
     }
+    // The GPU entries come last, and the Vulkan devices are opened only
+    // now, so that no driver's threads or allocations are in the process
+    // while the CPU entries run — as none are in a `ps30 luminance` one.
+    gpu_entries(&mut g, &img, &unrolled, &looped);
     g.finish();
+}
+
+/// The `gpu/*` entries, on the first Vulkan adapter and on llvmpipe.
+fn gpu_entries(
+    g: &mut criterion::BenchmarkGroup<'_, criterion::measurement::WallTime>,
+    img: &HdrImage,
+    unrolled: &Passes,
+    looped: &Passes,
+) {
+    let device = Gpu::open();
+    match &device {
+        Ok(d) => {
+            g.bench_function("gpu/unrolled", |b| {
+                b.iter(|| two_pass(black_box(img), Drawer::Gpu(d, unrolled), 125, 128, false))
+            });
+            g.bench_function("gpu/loop", |b| {
+                b.iter(|| two_pass(black_box(img), Drawer::Gpu(d, looped), 128, 56, false))
+            });
+        }
+        Err(e) => eprintln!("gpu/unrolled, gpu/loop: skipped: {e}"),
+    }
+    // The peer is llvmpipe, a CPU adapter, opened even beside a real GPU.
+    // It reads LP_NUM_THREADS when a device is created: one device per
+    // thread count, for pass 1 beside `pass1/1t` and `pass1/2t` — as the
+    // backend runs it, and its draw alone.
+    for t in [1, 2] {
+        std::env::set_var("LP_NUM_THREADS", t.to_string());
+        let lp = Gpu::open_cpu();
+        std::env::remove_var("LP_NUM_THREADS");
+        match &lp {
+            Ok(d) => {
+                PEER.get_or_init(|| d.info().name.clone());
+                g.bench_function(format!("gpu/pass1/{t}t"), |b| {
+                    b.iter(|| pass1(black_box(img), Drawer::Gpu(d, unrolled), 125, 128, false))
+                });
+                let draw = pass1_draw(img, 125, 128, false);
+                let kind = TargetKind::Format(TargetFormat::R32F);
+                let ready = gpu::prepare(d, &unrolled.shaders[0], &draw, kind).unwrap();
+                g.bench_function(format!("gpu/pass1-draw/{t}t"), |b| {
+                    b.iter(|| ready.draw().unwrap().color.len())
+                });
+            }
+            Err(e) => eprintln!("gpu/pass1/{t}t, gpu/pass1-draw/{t}t: skipped: {e}"),
+        }
+    }
 }
 
 criterion_group!(benches, luminance);
