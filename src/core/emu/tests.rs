@@ -1383,9 +1383,9 @@ fn the_avx2_executor_matches_the_portable_one_bit_for_bit() {
 /// A texld's LOD statistic covers every quad of every batch, whatever the
 /// batch's size: batches of 2, 6 or 10 quads end halfway through the four
 /// quads the statistic takes at a time. The coordinate is interpolated, so
-/// every quad has the same gradients: dX = (0.013·8, 0.007·4) and dY =
-/// (0.005·8, 0.017·4) texels on an 8×4 texture, λ = ½·log2(max(|dX|²,
-/// |dY|²)), worked out here in f64. Tolerance: the coordinates stay below
+/// every quad has the same gradients (`busy_draw`'s): dX = (0.013·5,
+/// 0.007·3) and dY = (0.005·5, 0.017·3) texels on a 5×3 texture, and
+/// λ = ½·log2(max(|dX|², |dY|²)), worked out here in f64. Tolerance: the coordinates stay below
 /// 0.5, so each f32 value is within 2^-25 of its exact value and each
 /// difference of two within 2^-24 = 6e-8 of the exact gradient (≥ 0.005 per
 /// pixel): a relative 1.2e-5 on each component, 2.4e-5 on the squared
@@ -1393,33 +1393,19 @@ fn the_avx2_executor_matches_the_portable_one_bit_for_bit() {
 /// 2^-21 relative, below 2e-6 here); 1e-4 holds all of it.
 #[test]
 fn lod_statistic_covers_every_quad_of_small_batches() {
-    let texels = vec![[0.5f32; 4]; 32];
+    let texels = vec![[0.5f32; 4]; 15];
     let c = compiled(
         "dcl_texcoord0 v0
          dcl_2d s0
          texld r0, v0, s0
          mov oC0, r0",
     );
-    let (du, dv) = (0.013 * 8.0, 0.007 * 4.0);
-    let (eu, ev) = (0.005 * 8.0, 0.017 * 4.0);
+    let (du, dv) = (0.013 * 5.0, 0.007 * 3.0);
+    let (eu, ev) = (0.005 * 5.0, 0.017 * 3.0);
     let len2 = f64::max(du * du + dv * dv, eu * eu + ev * ev);
     let expected = 0.5 * len2.log2();
     for (w, h) in [(1, 1), (3, 3), (10, 8), (11, 8), (5, 6), (17, 2)] {
-        let mut d = textured(
-            w,
-            h,
-            LinearInput {
-                base: [0.01, 0.02, 0.0, 1.0],
-                ddx: [0.013, 0.007, 0.0, 0.0],
-                ddy: [0.005, 0.017, 0.0, 0.0],
-            },
-            Texture {
-                width: 8,
-                height: 4,
-                texels: &texels,
-            },
-            SamplerState::filtered(Filter::Point),
-        );
+        let mut d = busy_draw(&texels, w, h);
         d.record_lod = true;
         for threads in 1..=7 {
             let out = run_with_threads(&c, &d, threads).unwrap();
