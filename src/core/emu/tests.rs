@@ -1429,7 +1429,7 @@ fn small_targets_split_over_threads_with_identical_results() {
     let texels: Vec<[f32; 4]> = (0..15).map(|i| [i as f32 * 0.3, 0.5, 0.25, 1.0]).collect();
     let c = compiled(BUSY);
     // 11×8 is pass 1's target shape: 24 quads, 2 full batches on one
-    // thread (16 + 8 quads), cut into 12 + 12, 8 + 8 + 8, 6 × 4... on more;
+    // thread (16 + 8 quads), cut into 12 + 12, 8 + 8 + 8, four of 6... on more;
     // 10×8 (20 quads) into 10 + 10, batches whose lanes end mid-vector of
     // 16 (40 lanes).
     for (w, h) in [(11, 8), (10, 8), (3, 3), (1, 1), (17, 2)] {
