@@ -497,15 +497,12 @@ impl BoundFold {
     /// [`BlockFold::ahead`]'s loop: one pixel's bound after another, no
     /// branch, so the compiler makes it a vector loop.
     #[inline(always)]
-    fn bound_run(&self, pixels: &[[f32; 4]], terms: &[Option<f64>], run: &mut BoundRun) {
+    fn bound_run(&self, pixels: &[[f32; 4]], terms: &[f64], run: &mut BoundRun) {
         let delta = self.delta;
-        let mut t = [f64::NAN; AHEAD_RUN];
-        for (t, term) in t.iter_mut().zip(terms) {
-            // Skipped pixels get a bound too, which `pixel` drops.
-            *t = term.unwrap_or(f64::NAN);
-        }
-        for (i, &p) in pixels.iter().enumerate().take(AHEAD_RUN) {
-            (run.e[i], run.ill[i]) = term_bound(delta, p, t[i]);
+        // Skipped pixels (NaN terms) get a bound too, which `pixel` drops.
+        let runs = run.e.iter_mut().zip(&mut run.ill);
+        for ((&p, &t), (e, ill)) in pixels.iter().zip(terms).zip(runs) {
+            (*e, *ill) = term_bound(delta, p, t);
         }
     }
 
@@ -513,12 +510,7 @@ impl BoundFold {
     /// portable build has two). Same values: Rust fuses no multiply and add.
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2")]
-    unsafe fn bound_run_avx2(
-        &self,
-        pixels: &[[f32; 4]],
-        terms: &[Option<f64>],
-        run: &mut BoundRun,
-    ) {
+    unsafe fn bound_run_avx2(&self, pixels: &[[f32; 4]], terms: &[f64], run: &mut BoundRun) {
         self.bound_run(pixels, terms, run)
     }
 }
@@ -526,7 +518,7 @@ impl BoundFold {
 impl BlockFold for BoundFold {
     type Run = BoundRun;
 
-    fn ahead(&self, pixels: &[[f32; 4]], terms: &[Option<f64>], run: &mut BoundRun) {
+    fn ahead(&self, pixels: &[[f32; 4]], terms: &[f64], run: &mut BoundRun) {
         #[cfg(target_arch = "x86_64")]
         if std::arch::is_x86_feature_detected!("avx2") {
             // SAFETY: the CPU supports AVX2 (checked just above).
@@ -1214,16 +1206,19 @@ mod tests {
                 (i % 7 != 3).then(|| Policy::ABS.term(crate::core::image::luminance(p), delta))?
             })
             .collect();
+        // As a band holds them: NaN where the pixel is skipped.
+        let plain: Vec<f64> = terms.iter().map(|t| t.unwrap_or(f64::NAN)).collect();
         let mut checked = 0;
-        for (pixels, terms) in pixels.chunks(AHEAD_RUN).zip(terms.chunks(AHEAD_RUN)) {
+        let runs = pixels.chunks(AHEAD_RUN).zip(terms.chunks(AHEAD_RUN));
+        for ((pixels, terms), plain) in runs.zip(plain.chunks(AHEAD_RUN)) {
             let mut portable = BoundRun::default();
-            fold.bound_run(pixels, terms, &mut portable);
+            fold.bound_run(pixels, plain, &mut portable);
             let mut runs = vec![portable];
             #[cfg(target_arch = "x86_64")]
             if std::arch::is_x86_feature_detected!("avx2") {
                 let mut wide = BoundRun::default();
                 // SAFETY: the CPU supports AVX2 (checked just above).
-                unsafe { fold.bound_run_avx2(pixels, terms, &mut wide) };
+                unsafe { fold.bound_run_avx2(pixels, plain, &mut wide) };
                 runs.push(wide);
             }
             for (i, (&p, &term)) in pixels.iter().zip(terms).enumerate() {
