@@ -493,47 +493,50 @@ fn term_bound(delta: f64, p: [f32; 4], t: f64) -> (f64, bool) {
     (abs_err / (x_exact * std::f64::consts::LN_2) + ulp32(t), ill)
 }
 
-impl BoundFold {
-    /// [`BlockFold::ahead`]'s loop: one pixel's bound after another, no
-    /// branch, so the compiler makes it a vector loop.
-    #[inline(always)]
-    fn bound_run(&self, pixels: &[[f32; 4]], terms: &[f64], run: &mut BoundRun) {
-        let delta = self.delta;
-        // Skipped pixels (NaN terms) get a bound too, which `pixel` drops.
-        let runs = run.e.iter_mut().zip(&mut run.ill);
-        for ((&p, &t), (e, ill)) in pixels.iter().zip(terms).zip(runs) {
-            (*e, *ill) = term_bound(delta, p, t);
-        }
+/// [`BlockFold::ahead`]'s loop for [`BoundFold`]: one pixel's bound after
+/// another, no branch, so the compiler makes it a vector loop. It takes
+/// `delta`, not the fold: a fold whose address went to a call out of line
+/// would keep its running sums in memory instead of registers.
+#[inline(always)]
+fn bound_run(delta: f64, pixels: &[[f32; 4]], terms: &[f64], run: &mut BoundRun) {
+    // Skipped pixels (NaN terms) get a bound too, which `pixel` drops.
+    let runs = run.e.iter_mut().zip(&mut run.ill);
+    for ((&p, &t), (e, ill)) in pixels.iter().zip(terms).zip(runs) {
+        (*e, *ill) = term_bound(delta, p, t);
     }
+}
 
-    /// [`BoundFold::bound_run`] compiled for AVX2 (four f64 lanes where the
-    /// portable build has two). Same values: Rust fuses no multiply and add.
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx2")]
-    unsafe fn bound_run_avx2(&self, pixels: &[[f32; 4]], terms: &[f64], run: &mut BoundRun) {
-        self.bound_run(pixels, terms, run)
-    }
+/// [`bound_run`] compiled for AVX2 (four f64 lanes where the portable build
+/// has two). Same values: Rust fuses no multiply and add.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+unsafe fn bound_run_avx2(delta: f64, pixels: &[[f32; 4]], terms: &[f64], run: &mut BoundRun) {
+    bound_run(delta, pixels, terms, run)
 }
 
 impl BlockFold for BoundFold {
     type Run = BoundRun;
 
+    #[inline]
     fn ahead(&self, pixels: &[[f32; 4]], terms: &[f64], run: &mut BoundRun) {
+        let delta = self.delta;
         #[cfg(target_arch = "x86_64")]
         if std::arch::is_x86_feature_detected!("avx2") {
             // SAFETY: the CPU supports AVX2 (checked just above).
-            return unsafe { self.bound_run_avx2(pixels, terms, run) };
+            return unsafe { bound_run_avx2(delta, pixels, terms, run) };
         }
-        self.bound_run(pixels, terms, run)
+        bound_run(delta, pixels, terms, run)
     }
 
     #[inline]
     fn pixel(&mut self, run: &BoundRun, i: usize, term: Option<f64>) {
-        let Some(t) = term else {
-            return;
-        };
-        self.ill += u64::from(run.ill[i]);
-        self.add(t, run.e[i]);
+        // A skipped pixel adds +0 to each sum (see [`BlockFold::pixel`]):
+        // selections, not a branch, so the running sums stay in registers.
+        let kept = term.is_some();
+        self.ill += u64::from(kept & run.ill[i]);
+        self.partial += term.unwrap_or(0.0);
+        self.accumulation += if kept { self.partial.abs() } else { 0.0 };
+        self.terms += if kept { run.e[i] } else { 0.0 };
     }
 
     fn end_row(&mut self, padding: u32) {
@@ -1212,13 +1215,13 @@ mod tests {
         let runs = pixels.chunks(AHEAD_RUN).zip(terms.chunks(AHEAD_RUN));
         for ((pixels, terms), plain) in runs.zip(plain.chunks(AHEAD_RUN)) {
             let mut portable = BoundRun::default();
-            fold.bound_run(pixels, plain, &mut portable);
+            bound_run(delta, pixels, plain, &mut portable);
             let mut runs = vec![portable];
             #[cfg(target_arch = "x86_64")]
             if std::arch::is_x86_feature_detected!("avx2") {
                 let mut wide = BoundRun::default();
                 // SAFETY: the CPU supports AVX2 (checked just above).
-                unsafe { fold.bound_run_avx2(pixels, plain, &mut wide) };
+                unsafe { bound_run_avx2(delta, pixels, plain, &mut wide) };
                 runs.push(wide);
             }
             for (i, (&p, &term)) in pixels.iter().zip(terms).enumerate() {
@@ -1238,5 +1241,54 @@ mod tests {
             }
         }
         assert!(checked >= 500, "only {checked} bounds compared");
+    }
+
+    /// Folds `terms` (NaN where skipped) over `pixels` as a band's blocks
+    /// are folded: runs worked out ahead, then pixel by pixel.
+    fn fold_bound(delta: f64, pixels: &[[f32; 4]], terms: &[Option<f64>]) -> BoundFold {
+        let mut fold = BoundFold::new(delta);
+        for (pixels, terms) in pixels.chunks(AHEAD_RUN).zip(terms.chunks(AHEAD_RUN)) {
+            let plain: Vec<f64> = terms.iter().map(|t| t.unwrap_or(f64::NAN)).collect();
+            let mut run = BoundRun::default();
+            fold.ahead(pixels, &plain, &mut run);
+            for (i, &t) in terms.iter().enumerate() {
+                fold.pixel(&run, i, t);
+            }
+        }
+        fold
+    }
+
+    /// The fold adds +0 for a skipped pixel instead of branching around it:
+    /// the bound over pixels with some skipped is the bound over the kept
+    /// ones alone, bit for bit.
+    #[test]
+    fn a_skipped_pixel_leaves_the_bound_as_it_was() {
+        let delta = 1e-4;
+        let term = |p| Policy::ABS.term(crate::core::image::luminance(p), delta);
+        // Finite terms only, so that every sum compares by its bits.
+        let pixels: Vec<[f32; 4]> = awkward_pixels()
+            .into_iter()
+            .filter(|&p| term(p).is_some_and(f64::is_finite))
+            .collect();
+        let with_skips: Vec<Option<f64>> = pixels
+            .iter()
+            .enumerate()
+            .map(|(i, &p)| if i % 5 == 2 { None } else { term(p) })
+            .collect();
+        let kept: Vec<[f32; 4]> = pixels
+            .iter()
+            .zip(&with_skips)
+            .filter(|(_, t)| t.is_some())
+            .map(|(&p, _)| p)
+            .collect();
+        let kept_terms: Vec<Option<f64>> =
+            with_skips.iter().copied().filter(Option::is_some).collect();
+        assert!(kept.len() >= 100 && kept.len() < pixels.len());
+        let a = fold_bound(delta, &pixels, &with_skips);
+        let b = fold_bound(delta, &kept, &kept_terms);
+        let bits = |f: &BoundFold| [f.partial, f.accumulation, f.terms].map(f64::to_bits);
+        assert_eq!(bits(&a), bits(&b));
+        assert_eq!(a.ill, b.ill);
+        assert!(a.accumulation > 0.0 && a.terms > 0.0);
     }
 }

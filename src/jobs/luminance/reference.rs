@@ -369,10 +369,10 @@ pub fn scan(
                 let (mut samples, mut sum, mut magnitude) =
                     (result.samples, result.log2_sum, result.magnitude_sum);
                 for (&term, &kept) in band.terms.iter().zip(band.kept) {
-                    if !kept {
-                        continue;
-                    }
-                    samples += 1;
+                    // A skipped pixel adds +0, which changes no sum (see
+                    // [`BlockFold::pixel`]).
+                    let term = if kept { term } else { 0.0 };
+                    samples += u64::from(kept);
                     sum += term;
                     magnitude += term.abs();
                 }
@@ -410,6 +410,11 @@ pub trait BlockFold: Send + Copy {
     fn ahead(&self, pixels: &[[f32; 4]], terms: &[f64], run: &mut Self::Run);
     /// Pixel `i` of the run, inside the image: its term and what
     /// [`BlockFold::ahead`] worked out for it.
+    ///
+    /// A fold may treat a skipped pixel (`None`) as a term of +0 in a sum of
+    /// terms: no term is -0 (`log2` gives +0 for 1), so no such sum is ever
+    /// -0, and adding +0 leaves every other value, NaN and infinities
+    /// included, as it was.
     fn pixel(&mut self, run: &Self::Run, i: usize, term: Option<f64>);
     /// The end of one row inside the image: `padding` texels beyond the
     /// image's right edge.
@@ -582,10 +587,12 @@ impl BlockFold for SumFold {
     #[inline]
     fn pixel(&mut self, _: &(), _: usize, term: Option<f64>) {
         self.inside += 1;
-        if let Some(term) = term {
-            self.sum += term;
-            self.magnitude += term.abs();
-        }
+        // A skipped pixel adds +0, which changes no sum (see
+        // [`BlockFold::pixel`]): a selection, not a branch, so the running
+        // sums stay in registers.
+        let term = term.unwrap_or(0.0);
+        self.sum += term;
+        self.magnitude += term.abs();
     }
     fn end_row(&mut self, _padding: u32) {}
     fn rows_below(&mut self, _rows: u32, _read: u32) {}
@@ -952,6 +959,29 @@ mod tests {
                         (r.negative_pixels, r.nonfinite_pixels),
                         (negatives, nonfinite)
                     );
+                    // The blocks' sums (2x3 blocks, padded with black), the
+                    // plain way: a skipped pixel adds nothing.
+                    let blocks = block_sums(&image, delta, policy, 2, 3).unwrap();
+                    for (by, row) in blocks.sums.iter().enumerate() {
+                        for (bx, &got) in row.iter().enumerate() {
+                            let (x0, y0) = (2 * bx as u32, 3 * by as u32);
+                            let (mut sum, mut inside) = (0.0, 0);
+                            for y in y0..(y0 + 3).min(height) {
+                                for x in x0..(x0 + 2).min(width as u32) {
+                                    let p = image.pixels[(y * width as u32 + x) as usize];
+                                    inside += 1;
+                                    if let Some(t) = policy.term(luminance(p), delta) {
+                                        sum += t;
+                                    }
+                                }
+                            }
+                            if inside < 6 {
+                                sum += (6 - inside) as f64 * delta.log2();
+                            }
+                            let at = format!("{what}, block ({bx}, {by})");
+                            assert!(same(got, sum), "{at}: {got} against {sum}");
+                        }
+                    }
                     compared += 1;
                 }
             }
