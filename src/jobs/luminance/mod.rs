@@ -1199,7 +1199,6 @@ mod tests {
     #[test]
     fn bounds_worked_out_ahead_are_the_formula_bit_for_bit() {
         let delta = 1e-4;
-        let fold = BoundFold::new(delta);
         let pixels = awkward_pixels();
         let terms: Vec<Option<f64>> = pixels
             .iter()
