@@ -31,7 +31,11 @@
 //!
 //! The cross-check's bounds are not part of the `emulate/*` entries.
 //!
-//! The CPU entries run first, in the order above; the `gpu/*` entries
+//! The CPU entries run first, in the order above except that each
+//! goal's two entries run back to back (`phase/decode/1t` then
+//! `command/luminance/1t`; the two `tonemap` entries; the two `run`
+//! entries): a shared machine's speed drifts over minutes, and a ratio of
+//! times taken minutes apart would carry the drift. The `gpu/*` entries run
 //! last, their devices opened only then.
 //!
 //! After criterion's summary the benchmark prints the speed goals' table
@@ -316,19 +320,11 @@ fn luminance(c: &mut Criterion) {
             })
         });
     }
+    // Each goal's two entries back to back (see the module docs).
     for t in [1, 2] {
         g.bench_function(format!("phase/decode/{t}t"), |b| {
             b.iter(|| on_threads(t, || load(&path, &ImageLimits::default()).unwrap().width))
         });
-        g.bench_function(format!("phase/crosscheck/{t}t"), |b| {
-            b.iter(|| {
-                on_threads(t, || {
-                    luminance::pass1_bounds(black_box(&img), (125, 128), 1e-4, Policy::ABS).1
-                })
-            })
-        });
-    }
-    for t in [1, 2] {
         g.bench_function(format!("command/luminance/{t}t"), |b| {
             b.iter(|| {
                 on_threads(t, || {
@@ -351,6 +347,17 @@ fn luminance(c: &mut Criterion) {
                 })
             })
         });
+    }
+    for t in [1, 2] {
+        g.bench_function(format!("phase/crosscheck/{t}t"), |b| {
+            b.iter(|| {
+                on_threads(t, || {
+                    luminance::pass1_bounds(black_box(&img), (125, 128), 1e-4, Policy::ABS).1
+                })
+            })
+        });
+    }
+    for t in [1, 2] {
         g.bench_function(format!("command/tonemap/{t}t"), |b| {
             b.iter(|| {
                 on_threads(t, || {
@@ -371,6 +378,8 @@ fn luminance(c: &mut Criterion) {
                 })
             })
         });
+    }
+    for t in [1, 2] {
         g.bench_function(format!("command/run/{t}t"), |b| {
             b.iter(|| on_threads(t, || run_command(&path, &loop1, t)))
         });
