@@ -1167,11 +1167,13 @@ pub fn run_pass(
 mod tests {
     use super::*;
 
-    /// Pixels that reach every branch of the bound: ordinary, dark, zero,
-    /// negative, huge, subnormal, infinite and NaN channels.
-    fn awkward_pixels() -> Vec<[f32; 4]> {
+    /// Pixels that reach every branch of the bound and of the reference's
+    /// scan: ordinary, dark, zero (both signs), negative, huge, subnormal,
+    /// infinite (both signs) and NaN channels.
+    pub(super) fn awkward_pixels() -> Vec<[f32; 4]> {
         let values = [
             0.0,
+            -0.0,
             1e-4,
             0.18,
             1.0,
@@ -1181,6 +1183,7 @@ mod tests {
             f32::MIN_POSITIVE / 8.0,
             -1e-4,
             f32::INFINITY,
+            f32::NEG_INFINITY,
             f32::NAN,
         ];
         let mut pixels = Vec::new();

@@ -197,6 +197,16 @@ struct RowStats {
     nonfinite: u64,
 }
 
+/// One image row for [`RowStats::row`]: its pixels, what it fills in for
+/// them (each term and whether the policy keeps the pixel) and how.
+struct Row<'a> {
+    pixels: &'a [[f32; 4]],
+    terms: &'a mut [f64],
+    kept: &'a mut [bool],
+    delta: f64,
+    policy: Policy,
+}
+
 /// Pixels [`RowStats::row`] takes side by side, each with statistics of its
 /// own: vector lanes, and no chain of comparisons from one pixel to the next.
 const STAT_LANES: usize = 4;
@@ -209,46 +219,35 @@ impl RowStats {
         nonfinite: 0,
     };
 
-    /// Fills `terms` and `kept` for `pixels` and returns the row's
-    /// statistics. The `log2` calls come in a loop of their own: in the
-    /// loop that works out their arguments, a call would make the compiler
-    /// keep every other value in memory across it.
-    fn row(
-        pixels: &[[f32; 4]],
-        terms: &mut [f64],
-        kept: &mut [bool],
-        delta: f64,
-        policy: Policy,
-    ) -> Self {
+    /// Fills `row.terms` and `row.kept` and returns the row's statistics.
+    /// The `log2` calls come in a loop of their own: in the loop that works
+    /// out their arguments, a call would make the compiler keep every other
+    /// value in memory across it.
+    fn row(mut row: Row<'_>) -> Self {
         #[cfg(target_arch = "x86_64")]
         let stats = if std::arch::is_x86_feature_detected!("avx2") {
             // SAFETY: the CPU supports AVX2 (checked just above).
-            unsafe { Self::arguments_avx2(pixels, terms, kept, delta, policy) }
+            unsafe { Self::arguments_avx2(&mut row) }
         } else {
-            Self::arguments(pixels, terms, kept, delta, policy)
+            Self::arguments(&mut row)
         };
         #[cfg(not(target_arch = "x86_64"))]
-        let stats = Self::arguments(pixels, terms, kept, delta, policy);
-        for term in terms {
+        let stats = Self::arguments(&mut row);
+        for term in row.terms {
             *term = term.log2();
         }
         stats
     }
 
-    /// [`RowStats::row`] short of the `log2` calls: `terms` gets their
+    /// [`RowStats::row`] short of the `log2` calls: `row.terms` gets their
     /// arguments.
     #[inline(always)]
-    fn arguments(
-        pixels: &[[f32; 4]],
-        terms: &mut [f64],
-        kept: &mut [bool],
-        delta: f64,
-        policy: Policy,
-    ) -> Self {
+    fn arguments(row: &mut Row<'_>) -> Self {
+        let (delta, policy) = (row.delta, row.policy);
         let mut lanes = [RowStats::EMPTY; STAT_LANES];
-        let mut pixel_groups = pixels.chunks_exact(STAT_LANES);
-        let mut term_groups = terms.chunks_exact_mut(STAT_LANES);
-        let mut kept_groups = kept.chunks_exact_mut(STAT_LANES);
+        let mut pixel_groups = row.pixels.chunks_exact(STAT_LANES);
+        let mut term_groups = row.terms.chunks_exact_mut(STAT_LANES);
+        let mut kept_groups = row.kept.chunks_exact_mut(STAT_LANES);
         let groups = (&mut pixel_groups).zip(&mut term_groups);
         for ((p, t), k) in groups.zip(&mut kept_groups) {
             for j in 0..STAT_LANES {
@@ -270,14 +269,8 @@ impl RowStats {
     /// portable build has two). Same values: Rust fuses no multiply and add.
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2")]
-    unsafe fn arguments_avx2(
-        pixels: &[[f32; 4]],
-        terms: &mut [f64],
-        kept: &mut [bool],
-        delta: f64,
-        policy: Policy,
-    ) -> Self {
-        Self::arguments(pixels, terms, kept, delta, policy)
+    unsafe fn arguments_avx2(row: &mut Row<'_>) -> Self {
+        Self::arguments(row)
     }
 
     /// Counts `pixel`'s luminance (only finite values reach the extremes)
@@ -348,7 +341,15 @@ pub fn scan(
             .par_chunks(width)
             .zip(terms.par_chunks_mut(width))
             .zip(kept.par_chunks_mut(width))
-            .map(|((p, t), k)| RowStats::row(p, t, k, delta, policy))
+            .map(|((pixels, terms), kept)| {
+                RowStats::row(Row {
+                    pixels,
+                    terms,
+                    kept,
+                    delta,
+                    policy,
+                })
+            })
             .collect();
         let band_stats = rows.into_iter().fold(RowStats::EMPTY, RowStats::merge);
         result.min_luminance = result.min_luminance.min(band_stats.min);
@@ -879,32 +880,11 @@ mod tests {
     /// selections where the plain way branches; it must give the plain
     /// way's bits, and the plain way's sums of the terms in row-major order,
     /// under every policy. Widths of 1 to 9 leave every remainder of a
-    /// group of four; the values reach every branch (zero, negative,
-    /// subnormal, huge, infinite and NaN channels).
+    /// group of four; the pixels are the bound's awkward ones (zero,
+    /// negative, subnormal, huge, infinite and NaN channels).
     #[test]
     fn scan_is_the_plain_loop_bit_for_bit() {
-        let values = [
-            0.0,
-            -0.0,
-            1e-4,
-            0.18,
-            -0.5,
-            -1e-4,
-            65504.0,
-            3.0e38,
-            f32::MIN_POSITIVE / 8.0,
-            f32::INFINITY,
-            f32::NEG_INFINITY,
-            f32::NAN,
-        ];
-        let mut pixels = Vec::new();
-        for &r in &values {
-            for &g in &values {
-                for &b in &values[..6] {
-                    pixels.push([r, g, b, 1.0]);
-                }
-            }
-        }
+        let pixels = crate::jobs::luminance::tests::awkward_pixels();
         let delta = 1e-4;
         let mut compared = 0;
         for negative in [NegativePolicy::Abs, NegativePolicy::Clamp] {
