@@ -32,10 +32,11 @@
 //! The cross-check's bounds are not part of the `emulate/*` entries.
 //!
 //! The CPU entries run first, in the order above except that each
-//! goal's two entries run back to back (`phase/decode/1t` then
-//! `command/luminance/1t`; the two `tonemap` entries; the two `run`
-//! entries): a shared machine's speed drifts over minutes, and a ratio of
-//! times taken minutes apart would carry the drift. The `gpu/*` entries run
+//! goal's two entries run back to back (`phase/decode/1t`, then
+//! `command/luminance/1t` and `command/luminance/2t`, then
+//! `phase/decode/2t`; the two `tonemap` entries; the two `run` entries): a
+//! shared machine's speed drifts over minutes, and a ratio of times taken
+//! minutes apart would carry the drift. The `gpu/*` entries run
 //! last, their devices opened only then.
 //!
 //! After criterion's summary the benchmark prints the speed goals' table
@@ -320,11 +321,15 @@ fn luminance(c: &mut Criterion) {
             })
         });
     }
-    // Each goal's two entries back to back (see the module docs).
-    for t in [1, 2] {
+    // Each goal's two entries back to back (see the module docs): decoding
+    // on one thread, the command on one and on two, decoding on two.
+    let decode = |g: &mut criterion::BenchmarkGroup<'_, _>, t: usize| {
         g.bench_function(format!("phase/decode/{t}t"), |b| {
             b.iter(|| on_threads(t, || load(&path, &ImageLimits::default()).unwrap().width))
         });
+    };
+    decode(&mut g, 1);
+    for t in [1, 2] {
         g.bench_function(format!("command/luminance/{t}t"), |b| {
             b.iter(|| {
                 on_threads(t, || {
@@ -348,6 +353,7 @@ fn luminance(c: &mut Criterion) {
             })
         });
     }
+    decode(&mut g, 2);
     for t in [1, 2] {
         g.bench_function(format!("phase/crosscheck/{t}t"), |b| {
             b.iter(|| {

@@ -452,10 +452,15 @@ impl BoundFold {
         }
     }
 
-    fn add(&mut self, t: f64, e: f64) {
+    /// Adds a term `t` with its own bound `e`; a pixel the policy skips
+    /// (`kept` false, `t` +0) adds +0 to each sum (see
+    /// [`BlockFold::pixel`]): selections, not a branch, so the running sums
+    /// stay in registers.
+    #[inline(always)]
+    fn add(&mut self, t: f64, e: f64, kept: bool) {
         self.partial += t;
-        self.accumulation += self.partial.abs();
-        self.terms += e;
+        self.accumulation += if kept { self.partial.abs() } else { 0.0 };
+        self.terms += if kept { e } else { 0.0 };
     }
 
     /// A padding texel: black, the term log2(delta).
@@ -463,7 +468,7 @@ impl BoundFold {
         let padded_term = self.delta.log2();
         let e = 8.0 * U32 / std::f64::consts::LN_2 + ulp32(padded_term);
         for _ in 0..count {
-            self.add(padded_term, e);
+            self.add(padded_term, e, true);
         }
     }
 }
@@ -530,13 +535,9 @@ impl BlockFold for BoundFold {
 
     #[inline]
     fn pixel(&mut self, run: &BoundRun, i: usize, term: Option<f64>) {
-        // A skipped pixel adds +0 to each sum (see [`BlockFold::pixel`]):
-        // selections, not a branch, so the running sums stay in registers.
         let kept = term.is_some();
         self.ill += u64::from(kept & run.ill[i]);
-        self.partial += term.unwrap_or(0.0);
-        self.accumulation += if kept { self.partial.abs() } else { 0.0 };
-        self.terms += if kept { run.e[i] } else { 0.0 };
+        self.add(term.unwrap_or(0.0), run.e[i], kept);
     }
 
     fn end_row(&mut self, padding: u32) {

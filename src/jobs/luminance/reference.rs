@@ -90,19 +90,14 @@ impl Policy {
     /// skips it. `delta + L = 0` exactly gives `-inf`, as `log` of 0 does on
     /// the GPU.
     pub fn term(self, l: f64, delta: f64) -> Option<f64> {
-        self.argument(l, delta).map(f64::log2)
+        let (x, kept) = self.argument_flagged(l, delta);
+        kept.then(|| x.log2())
     }
 
     /// What the term takes the `log2` of (`|delta + L|` or
-    /// `delta + max(L, 0)`), or `None` if the policy skips the pixel.
-    pub fn argument(self, l: f64, delta: f64) -> Option<f64> {
-        let (x, kept) = self.argument_flagged(l, delta);
-        kept.then_some(x)
-    }
-
-    /// [`Policy::argument`] as a value (NaN if skipped) and whether the
-    /// policy keeps the pixel, worked out with selections, not branches,
-    /// so that a loop over pixels becomes vector code.
+    /// `delta + max(L, 0)`; NaN if the policy skips the pixel) and whether
+    /// the policy keeps the pixel, worked out with selections, not
+    /// branches, so that a loop over pixels becomes vector code.
     #[inline(always)]
     fn argument_flagged(self, l: f64, delta: f64) -> (f64, bool) {
         let kept = l.is_finite() | (self.non_finite != NonFinitePolicy::Skip);
