@@ -260,12 +260,94 @@ impl RowStats {
         lanes.into_iter().fold(RowStats::EMPTY, RowStats::merge)
     }
 
-    /// [`RowStats::arguments`] compiled for AVX2 (four f64 lanes where the
-    /// portable build has two). Same values: Rust fuses no multiply and add.
+    /// [`RowStats::arguments`] in AVX2 instructions: four pixels side by
+    /// side in the four f64 lanes of a register, lane `j` doing what
+    /// `arguments`' lane `j` does (pixels `4k + j`; the last few in lane 0)
+    /// with the same operations in the same order (no fused multiply-add),
+    /// so the results are the same bits. The compiler left `arguments`
+    /// mostly scalar: one pixel's luminance, tests and counts at a time.
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2")]
     unsafe fn arguments_avx2(row: &mut Row<'_>) -> Self {
-        Self::arguments(row)
+        use std::arch::x86_64::*;
+        let (delta, policy) = (row.delta, row.policy);
+        let [wr, wg, wb] = crate::core::image::LUMINANCE_WEIGHTS;
+        let (wr, wg, wb) = (_mm256_set1_pd(wr), _mm256_set1_pd(wg), _mm256_set1_pd(wb));
+        let (vdelta, zero) = (_mm256_set1_pd(delta), _mm256_setzero_pd());
+        let (inf, neg_inf) = (
+            _mm256_set1_pd(f64::INFINITY),
+            _mm256_set1_pd(f64::NEG_INFINITY),
+        );
+        let magnitude = _mm256_castsi256_pd(_mm256_set1_epi64x(i64::MAX));
+        let skip = policy.non_finite == NonFinitePolicy::Skip;
+        let abs = policy.negative == NegativePolicy::Abs;
+        let (mut min, mut max) = (inf, neg_inf);
+        // Counts are sums: which lane counts a pixel does not matter.
+        let (mut negative, mut finite_count) = (0u64, 0u64);
+        let groups = row.pixels.len() / STAT_LANES;
+        for k in 0..groups {
+            let i = k * STAT_LANES;
+            // SAFETY: pixels i..i + 4 are in the row (k < groups), and each
+            // pixel is four f32s.
+            let p = row.pixels.as_ptr().add(i) as *const f32;
+            let (mut c0, mut c1) = (_mm_loadu_ps(p), _mm_loadu_ps(p.add(4)));
+            let (mut c2, mut c3) = (_mm_loadu_ps(p.add(8)), _mm_loadu_ps(p.add(12)));
+            // Pixels in rows → channels in rows: c0 = the four R, c1 G, c2 B.
+            _MM_TRANSPOSE4_PS(&mut c0, &mut c1, &mut c2, &mut c3);
+            let (r, g, b) = (
+                _mm256_cvtps_pd(c0),
+                _mm256_cvtps_pd(c1),
+                _mm256_cvtps_pd(c2),
+            );
+            // `luminance`: (wr·R + wg·G) + wb·B.
+            let l = _mm256_add_pd(
+                _mm256_add_pd(_mm256_mul_pd(wr, r), _mm256_mul_pd(wg, g)),
+                _mm256_mul_pd(wb, b),
+            );
+            // |l| < ∞ is false for NaN: `is_finite`.
+            let finite = _mm256_cmp_pd::<_CMP_LT_OQ>(_mm256_and_pd(l, magnitude), inf);
+            let below_zero = _mm256_cmp_pd::<_CMP_LT_OQ>(l, zero);
+            // `if low < min { low } else { min }` is what MINPD computes
+            // (its first operand when less, else its second); MAXPD alike.
+            min = _mm256_min_pd(_mm256_blendv_pd(inf, l, finite), min);
+            max = _mm256_max_pd(_mm256_blendv_pd(neg_inf, l, finite), max);
+            let finite_bits = _mm256_movemask_pd(finite) as u32;
+            finite_count += u64::from(finite_bits.count_ones());
+            negative +=
+                u64::from((_mm256_movemask_pd(below_zero) as u32 & finite_bits).count_ones());
+            // `Policy::argument_flagged`.
+            let x = if abs {
+                _mm256_and_pd(_mm256_add_pd(vdelta, l), magnitude)
+            } else {
+                _mm256_add_pd(vdelta, _mm256_blendv_pd(l, zero, below_zero))
+            };
+            let (x, kept_bits) = if skip {
+                let nan = _mm256_set1_pd(f64::NAN);
+                (_mm256_blendv_pd(nan, x, finite), finite_bits)
+            } else {
+                (x, 0b1111)
+            };
+            _mm256_storeu_pd(row.terms.as_mut_ptr().add(i), x);
+            for (j, kept) in row.kept[i..i + STAT_LANES].iter_mut().enumerate() {
+                *kept = kept_bits >> j & 1 != 0;
+            }
+        }
+        let (mut mins, mut maxs) = ([0.0; STAT_LANES], [0.0; STAT_LANES]);
+        _mm256_storeu_pd(mins.as_mut_ptr(), min);
+        _mm256_storeu_pd(maxs.as_mut_ptr(), max);
+        let mut lanes = [RowStats::EMPTY; STAT_LANES];
+        for (lane, (min, max)) in lanes.iter_mut().zip(mins.into_iter().zip(maxs)) {
+            (lane.min, lane.max) = (min, max);
+        }
+        lanes[0].negative = negative;
+        lanes[0].nonfinite = (groups * STAT_LANES) as u64 - finite_count;
+        // The last few pixels, in the first lane.
+        let done = groups * STAT_LANES;
+        let rest = row.pixels[done..].iter().zip(&mut row.terms[done..]);
+        for ((&p, t), k) in rest.zip(&mut row.kept[done..]) {
+            (*t, *k) = lanes[0].pixel(p, delta, policy);
+        }
+        lanes.into_iter().fold(RowStats::EMPTY, RowStats::merge)
     }
 
     /// Counts `pixel`'s luminance (only finite values reach the extremes)
@@ -797,6 +879,87 @@ mod tests {
 
     fn t(v: f64, delta: f64) -> f64 {
         (delta + v).log2()
+    }
+
+    /// The AVX2 arguments against the portable ones, bit for bit: the
+    /// bound's awkward pixels, then channels drawn from every f32 bit
+    /// pattern (NaNs, infinities, subnormals, both zeros, both signs), in
+    /// rows of 1 to 13 pixels so that every remainder after the groups of
+    /// four comes up. Compared: each argument (NaNs by kind, their payload
+    /// aside), each kept flag, the extremes' bits and the counts.
+    #[cfg(target_arch = "x86_64")]
+    #[test]
+    fn avx2_arguments_are_the_portable_ones_bit_for_bit() {
+        if !std::arch::is_x86_feature_detected!("avx2") {
+            eprintln!("no AVX2 on this CPU: the AVX2 arguments are never used here");
+            return;
+        }
+        // Zeros of both signs one after another in each lane: which zero
+        // an extreme keeps depends on the order of MINPD's operands.
+        let (zero, negative_zero) = ([0.0; 4], [-0.0; 4]);
+        let mut pixels = [vec![zero; 4], vec![negative_zero; 8], vec![zero; 4]].concat();
+        pixels.extend(crate::jobs::luminance::tests::awkward_pixels());
+        let mut state = 0x9e37_79b9_7f4a_7c15_u64;
+        let mut bits = || {
+            // xorshift64*: a fixed sequence, the same every run.
+            state ^= state >> 12;
+            state ^= state << 25;
+            state ^= state >> 27;
+            (state.wrapping_mul(0x2545_f491_4f6c_dd1d) >> 32) as u32
+        };
+        for _ in 0..4000 {
+            pixels.push([0; 4].map(|_| f32::from_bits(bits())));
+        }
+        // Ordinary pixels too (random bits are mostly huge or tiny).
+        for _ in 0..2000 {
+            pixels.push([0; 4].map(|_| (bits() as f32 / u32::MAX as f32 - 0.1) * 8.0));
+        }
+        let same = |a: f64, b: f64| a.to_bits() == b.to_bits() || a.is_nan() && b.is_nan();
+        for negative in [NegativePolicy::Abs, NegativePolicy::Clamp] {
+            for non_finite in [NonFinitePolicy::Propagate, NonFinitePolicy::Skip] {
+                let policy = Policy {
+                    negative,
+                    non_finite,
+                };
+                for width in 1..=13 {
+                    for row_pixels in pixels.chunks(width) {
+                        let n = row_pixels.len();
+                        let run = |avx2: bool| {
+                            let (mut terms, mut kept) = (vec![0.0; n], vec![false; n]);
+                            let mut row = Row {
+                                pixels: row_pixels,
+                                terms: &mut terms,
+                                kept: &mut kept,
+                                delta: 1e-4,
+                                policy,
+                            };
+                            // SAFETY: the CPU supports AVX2 (checked above).
+                            let stats = if avx2 {
+                                unsafe { RowStats::arguments_avx2(&mut row) }
+                            } else {
+                                RowStats::arguments(&mut row)
+                            };
+                            (stats, terms, kept)
+                        };
+                        let (s, terms, kept) = run(true);
+                        let (p, terms_p, kept_p) = run(false);
+                        let what = format!("{policy:?}, row {row_pixels:?}");
+                        assert!(
+                            terms.iter().zip(&terms_p).all(|(&a, &b)| same(a, b)),
+                            "{what}"
+                        );
+                        assert_eq!(kept, kept_p, "{what}");
+                        assert_eq!(s.min.to_bits(), p.min.to_bits(), "{what}");
+                        assert_eq!(s.max.to_bits(), p.max.to_bits(), "{what}");
+                        assert_eq!(
+                            (s.negative, s.nonfinite),
+                            (p.negative, p.nonfinite),
+                            "{what}"
+                        );
+                    }
+                }
+            }
+        }
     }
 
     #[test]
