@@ -409,25 +409,30 @@ impl<'p, 'd> Checker<'p, 'd> {
 
     /// Read ports: distinct registers per file (Microsoft's register table).
     fn check_read_ports(&mut self, ins: &Instruction) {
-        let mut per_file: BTreeMap<RegFile, BTreeSet<(u32, bool)>> = BTreeMap::new();
-        for s in &ins.src {
-            per_file
-                .entry(s.reg.file)
-                .or_default()
-                .insert((s.reg.index, s.relative));
-        }
-        for (f, regs) in &per_file {
+        // The files whose read ports are checked, in the files' own order
+        // (that of the diagnostics). Distinct registers are counted without
+        // a set: an instruction has a few sources, and this runs for each.
+        let mut files = [RegFile::Temp, RegFile::Const, RegFile::Input];
+        files.sort_unstable();
+        for f in &files {
+            let key = |s: &Src| (s.reg.file, s.reg.index, s.relative);
+            let distinct = ins
+                .src
+                .iter()
+                .enumerate()
+                .filter(|(i, s)| {
+                    s.reg.file == *f && !ins.src[..*i].iter().any(|e| key(e) == key(s))
+                })
+                .count();
             let ports = f.info().read_ports;
-            if regs.len() as u32 > ports
-                && matches!(f, RegFile::Temp | RegFile::Const | RegFile::Input)
-            {
+            if distinct as u32 > ports {
                 self.err(
                     ins,
                     Diagnostic::error(
                         ins.origin.span,
                         format!(
                             "reads {} different {} registers; ps_3_0 allows {}",
-                            regs.len(),
+                            distinct,
                             f.info().name,
                             ports
                         ),
