@@ -333,6 +333,7 @@ fn request(frame: (u32, u32), picks: Vec<(Pass1Form, set::BlockChoice)>) -> set:
         picks,
         macros: false,
         delta: 1e-4,
+        last_columns: true,
     }
 }
 

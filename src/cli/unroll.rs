@@ -79,6 +79,7 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
             picks: forms.into_iter().map(|f| (f, choice)).collect(),
             macros: args.macros,
             delta: args.delta as f64,
+            last_columns: true,
         },
         &args.profile.profile(),
     )?;

@@ -64,6 +64,8 @@ pub fn planned(w: u32, h: u32, delta: f64) -> Result<Planned, GenError> {
             )],
             macros: false,
             delta,
+            // The planned passes pad the last column with BORDER.
+            last_columns: false,
         },
         &profile,
     )?;

@@ -97,6 +97,10 @@ pub struct Request {
     pub macros: bool,
     /// δ of log2(δ + L), baked into the shaders.
     pub delta: f64,
+    /// Also write each configuration's last-column shader where the frame
+    /// width is not a multiple of the block width (`ps30 unroll` does; a
+    /// caller that pads every column with BORDER needs none).
+    pub last_columns: bool,
 }
 
 /// Everything `ps30 unroll` produced.
@@ -484,6 +488,7 @@ struct Generator<'p> {
     fitter: Fitter<'p>,
     fr: Frame,
     macros: bool,
+    last_columns: bool,
     notes: Vec<String>,
     problems: Vec<String>,
     shaders: Vec<Generated>,
@@ -502,6 +507,7 @@ pub fn generate(req: &Request, profile: &Profile) -> Result<Bundle, GenError> {
             delta: req.delta,
         },
         macros: req.macros,
+        last_columns: req.last_columns,
         notes: Vec::new(),
         problems: Vec::new(),
         shaders: Vec::new(),
@@ -687,7 +693,8 @@ impl Generator<'_> {
     }
 
     /// One configuration: pass 1 for `form` and `(bw, bh)`, its last-column
-    /// shader when the width needs one, and its use of a pass-2 target.
+    /// shader when the width needs one (and the request wants them), and
+    /// its use of a pass-2 target.
     fn configure(&mut self, form: Pass1Form, (bw, bh): (u32, u32)) -> Result<(), GenError> {
         let spec = Pass1Spec {
             form,
@@ -710,7 +717,7 @@ impl Generator<'_> {
         let padded_border = nx as u64 * bw as u64 * covered_y - fr.n();
         let padded_last = fr.w as u64 * covered_y - fr.n();
         let real = fr.w - (nx - 1) * bw;
-        let last_file = if real < bw {
+        let last_file = if real < bw && self.last_columns {
             self.last_column(&main.file, (bw, bh), real)?
         } else {
             None
@@ -867,6 +874,7 @@ pub fn frame_set(frame: (u32, u32)) -> Result<(Bundle, plan::Plan), GenError> {
             picks,
             macros: false,
             delta: DEFAULT_DELTA,
+            last_columns: true,
         },
         &profile,
     )?;
