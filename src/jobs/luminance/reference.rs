@@ -862,6 +862,18 @@ impl BlockFold for () {
 mod tests {
     use super::*;
 
+    /// The four policies: either negative rule with either non-finite rule.
+    fn every_policy() -> impl Iterator<Item = Policy> {
+        [NegativePolicy::Abs, NegativePolicy::Clamp]
+            .into_iter()
+            .flat_map(|negative| {
+                [NonFinitePolicy::Propagate, NonFinitePolicy::Skip].map(|non_finite| Policy {
+                    negative,
+                    non_finite,
+                })
+            })
+    }
+
     /// Grey pixels: the weights sum to 1, so L = v up to f64 rounding.
     fn image(width: u32, height: u32, values: &[f32]) -> HdrImage {
         let pixels = values.iter().map(|&v| [v, v, v, 1.0]).collect();
@@ -915,48 +927,42 @@ mod tests {
             pixels.push([0; 4].map(|_| (bits() as f32 / u32::MAX as f32 - 0.1) * 8.0));
         }
         let same = |a: f64, b: f64| a.to_bits() == b.to_bits() || a.is_nan() && b.is_nan();
-        for negative in [NegativePolicy::Abs, NegativePolicy::Clamp] {
-            for non_finite in [NonFinitePolicy::Propagate, NonFinitePolicy::Skip] {
-                let policy = Policy {
-                    negative,
-                    non_finite,
-                };
-                for width in 1..=13 {
-                    for row_pixels in pixels.chunks(width) {
-                        let n = row_pixels.len();
-                        let run = |avx2: bool| {
-                            let (mut terms, mut kept) = (vec![0.0; n], vec![false; n]);
-                            let mut row = Row {
-                                pixels: row_pixels,
-                                terms: &mut terms,
-                                kept: &mut kept,
-                                delta: 1e-4,
-                                policy,
-                            };
-                            // SAFETY: the CPU supports AVX2 (checked above).
-                            let stats = if avx2 {
-                                unsafe { RowStats::arguments_avx2(&mut row) }
-                            } else {
-                                RowStats::arguments(&mut row)
-                            };
-                            (stats, terms, kept)
+        for policy in every_policy() {
+            for width in 1..=13 {
+                for row_pixels in pixels.chunks(width) {
+                    let n = row_pixels.len();
+                    let run = |avx2: bool| {
+                        let (mut terms, mut kept) = (vec![0.0; n], vec![false; n]);
+                        let mut row = Row {
+                            pixels: row_pixels,
+                            terms: &mut terms,
+                            kept: &mut kept,
+                            delta: 1e-4,
+                            policy,
                         };
-                        let (s, terms, kept) = run(true);
-                        let (p, terms_p, kept_p) = run(false);
-                        let what = format!("{policy:?}, row {row_pixels:?}");
-                        assert!(
-                            terms.iter().zip(&terms_p).all(|(&a, &b)| same(a, b)),
-                            "{what}"
-                        );
-                        assert_eq!(kept, kept_p, "{what}");
-                        assert_eq!(s.min.to_bits(), p.min.to_bits(), "{what}");
-                        assert_eq!(s.max.to_bits(), p.max.to_bits(), "{what}");
-                        assert_eq!(
-                            (s.negative, s.nonfinite),
-                            (p.negative, p.nonfinite),
-                            "{what}"
-                        );
-                    }
+                        // SAFETY: the CPU supports AVX2 (checked above).
+                        let stats = if avx2 {
+                            unsafe { RowStats::arguments_avx2(&mut row) }
+                        } else {
+                            RowStats::arguments(&mut row)
+                        };
+                        (stats, terms, kept)
+                    };
+                    let (s, terms, kept) = run(true);
+                    let (p, terms_p, kept_p) = run(false);
+                    let what = format!("{policy:?}, row {row_pixels:?}");
+                    assert!(
+                        terms.iter().zip(&terms_p).all(|(&a, &b)| same(a, b)),
+                        "{what}"
+                    );
+                    assert_eq!(kept, kept_p, "{what}");
+                    assert_eq!(s.min.to_bits(), p.min.to_bits(), "{what}");
+                    assert_eq!(s.max.to_bits(), p.max.to_bits(), "{what}");
+                    assert_eq!(
+                        (s.negative, s.nonfinite),
+                        (p.negative, p.nonfinite),
+                        "{what}"
+                    );
                 }
             }
         }
@@ -1045,83 +1051,76 @@ mod tests {
         let pixels = crate::jobs::luminance::tests::awkward_pixels();
         let delta = 1e-4;
         let mut compared = 0;
-        for negative in [NegativePolicy::Abs, NegativePolicy::Clamp] {
-            for non_finite in [NonFinitePolicy::Propagate, NonFinitePolicy::Skip] {
-                let policy = Policy {
-                    negative,
-                    non_finite,
+        for policy in every_policy() {
+            for width in 1..=9 {
+                let height = (pixels.len() / width) as u32;
+                let image = HdrImage {
+                    width: width as u32,
+                    height,
+                    pixels: pixels[..width * height as usize].to_vec(),
                 };
-                for width in 1..=9 {
-                    let height = (pixels.len() / width) as u32;
-                    let image = HdrImage {
-                        width: width as u32,
-                        height,
-                        pixels: pixels[..width * height as usize].to_vec(),
-                    };
-                    let (mut samples, mut sum, mut magnitude) = (0, 0.0, 0.0);
-                    let (mut min, mut max) = (f64::INFINITY, f64::NEG_INFINITY);
-                    let (mut negatives, mut nonfinite) = (0, 0);
-                    for &p in &image.pixels {
-                        let l = luminance(p);
-                        if l.is_finite() {
-                            min = min.min(l);
-                            max = max.max(l);
-                            negatives += u64::from(l < 0.0);
-                        } else {
-                            nonfinite += 1;
-                        }
-                        if let Some(t) = policy.term(l, delta) {
-                            samples += 1;
-                            sum += t;
-                            magnitude += t.abs();
-                        }
+                let (mut samples, mut sum, mut magnitude) = (0, 0.0, 0.0);
+                let (mut min, mut max) = (f64::INFINITY, f64::NEG_INFINITY);
+                let (mut negatives, mut nonfinite) = (0, 0);
+                for &p in &image.pixels {
+                    let l = luminance(p);
+                    if l.is_finite() {
+                        min = min.min(l);
+                        max = max.max(l);
+                        negatives += u64::from(l < 0.0);
+                    } else {
+                        nonfinite += 1;
                     }
-                    let r = log_average(&image, delta, policy);
-                    let what = format!("{policy:?}, width {width}");
-                    assert_eq!(r.samples, samples, "{what}");
-                    // NaN sums (a NaN term under Propagate) compare by kind;
-                    // under Skip the sums are finite and compare by bits.
-                    let same =
-                        |a: f64, b: f64| a.to_bits() == b.to_bits() || a.is_nan() && b.is_nan();
-                    assert!(
-                        same(r.log2_sum, sum),
-                        "{what}: {} against {sum}",
-                        r.log2_sum
-                    );
-                    assert!(same(r.magnitude_sum, magnitude), "{what}");
-                    // By value: which zero is the extreme when both are
-                    // there is left open (as `f64::min` leaves it).
-                    assert_eq!(r.min_luminance, min, "{what}");
-                    assert_eq!(r.max_luminance, max, "{what}");
-                    assert_eq!(
-                        (r.negative_pixels, r.nonfinite_pixels),
-                        (negatives, nonfinite)
-                    );
-                    // The blocks' sums (2x3 blocks, padded with black), the
-                    // plain way: a skipped pixel adds nothing.
-                    let blocks = block_sums(&image, delta, policy, 2, 3).unwrap();
-                    for (by, row) in blocks.sums.iter().enumerate() {
-                        for (bx, &got) in row.iter().enumerate() {
-                            let (x0, y0) = (2 * bx as u32, 3 * by as u32);
-                            let (mut sum, mut inside) = (0.0, 0);
-                            for y in y0..(y0 + 3).min(height) {
-                                for x in x0..(x0 + 2).min(width as u32) {
-                                    let p = image.pixels[(y * width as u32 + x) as usize];
-                                    inside += 1;
-                                    if let Some(t) = policy.term(luminance(p), delta) {
-                                        sum += t;
-                                    }
+                    if let Some(t) = policy.term(l, delta) {
+                        samples += 1;
+                        sum += t;
+                        magnitude += t.abs();
+                    }
+                }
+                let r = log_average(&image, delta, policy);
+                let what = format!("{policy:?}, width {width}");
+                assert_eq!(r.samples, samples, "{what}");
+                // NaN sums (a NaN term under Propagate) compare by kind;
+                // under Skip the sums are finite and compare by bits.
+                let same = |a: f64, b: f64| a.to_bits() == b.to_bits() || a.is_nan() && b.is_nan();
+                assert!(
+                    same(r.log2_sum, sum),
+                    "{what}: {} against {sum}",
+                    r.log2_sum
+                );
+                assert!(same(r.magnitude_sum, magnitude), "{what}");
+                // By value: which zero is the extreme when both are
+                // there is left open (as `f64::min` leaves it).
+                assert_eq!(r.min_luminance, min, "{what}");
+                assert_eq!(r.max_luminance, max, "{what}");
+                assert_eq!(
+                    (r.negative_pixels, r.nonfinite_pixels),
+                    (negatives, nonfinite)
+                );
+                // The blocks' sums (2x3 blocks, padded with black), the
+                // plain way: a skipped pixel adds nothing.
+                let blocks = block_sums(&image, delta, policy, 2, 3).unwrap();
+                for (by, row) in blocks.sums.iter().enumerate() {
+                    for (bx, &got) in row.iter().enumerate() {
+                        let (x0, y0) = (2 * bx as u32, 3 * by as u32);
+                        let (mut sum, mut inside) = (0.0, 0);
+                        for y in y0..(y0 + 3).min(height) {
+                            for x in x0..(x0 + 2).min(width as u32) {
+                                let p = image.pixels[(y * width as u32 + x) as usize];
+                                inside += 1;
+                                if let Some(t) = policy.term(luminance(p), delta) {
+                                    sum += t;
                                 }
                             }
-                            if inside < 6 {
-                                sum += (6 - inside) as f64 * delta.log2();
-                            }
-                            let at = format!("{what}, block ({bx}, {by})");
-                            assert!(same(got, sum), "{at}: {got} against {sum}");
                         }
+                        if inside < 6 {
+                            sum += (6 - inside) as f64 * delta.log2();
+                        }
+                        let at = format!("{what}, block ({bx}, {by})");
+                        assert!(same(got, sum), "{at}: {got} against {sum}");
                     }
-                    compared += 1;
                 }
+                compared += 1;
             }
         }
         assert_eq!(compared, 36);
