@@ -409,12 +409,11 @@ impl<'p, 'd> Checker<'p, 'd> {
 
     /// Read ports: distinct registers per file (Microsoft's register table).
     fn check_read_ports(&mut self, ins: &Instruction) {
-        // The files whose read ports are checked, in the files' own order
-        // (that of the diagnostics). Distinct registers are counted without
-        // a set: an instruction has a few sources, and this runs for each.
-        let mut files = [RegFile::Temp, RegFile::Const, RegFile::Input];
-        files.sort_unstable();
-        for f in &files {
+        // The files whose read ports are checked, in `RegFile`'s order (so
+        // the diagnostics come in it). Distinct registers are counted
+        // without a set: an instruction has a few sources, and this runs
+        // for every instruction.
+        for f in &[RegFile::Temp, RegFile::Input, RegFile::Const] {
             let key = |s: &Src| (s.reg.file, s.reg.index, s.relative);
             let distinct = ins
                 .src
