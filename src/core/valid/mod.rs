@@ -413,8 +413,8 @@ impl<'p, 'd> Checker<'p, 'd> {
         // the diagnostics come in it). Distinct registers are counted
         // without a set: an instruction has a few sources, and this runs
         // for every instruction.
+        let key = |s: &Src| (s.reg.file, s.reg.index, s.relative);
         for f in &[RegFile::Temp, RegFile::Input, RegFile::Const] {
-            let key = |s: &Src| (s.reg.file, s.reg.index, s.relative);
             let distinct = ins
                 .src
                 .iter()

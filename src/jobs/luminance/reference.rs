@@ -240,23 +240,15 @@ impl RowStats {
     fn arguments(row: &mut Row<'_>) -> Self {
         let (delta, policy) = (row.delta, row.policy);
         let mut lanes = [RowStats::EMPTY; STAT_LANES];
-        let mut pixel_groups = row.pixels.chunks_exact(STAT_LANES);
-        let mut term_groups = row.terms.chunks_exact_mut(STAT_LANES);
-        let mut kept_groups = row.kept.chunks_exact_mut(STAT_LANES);
-        let groups = (&mut pixel_groups).zip(&mut term_groups);
-        for ((p, t), k) in groups.zip(&mut kept_groups) {
+        let pixel_groups = row.pixels.chunks_exact(STAT_LANES);
+        let term_groups = row.terms.chunks_exact_mut(STAT_LANES);
+        let groups = pixel_groups.zip(term_groups);
+        for ((p, t), k) in groups.zip(row.kept.chunks_exact_mut(STAT_LANES)) {
             for j in 0..STAT_LANES {
                 (t[j], k[j]) = lanes[j].pixel(p[j], delta, policy);
             }
         }
-        // The last few pixels, in the first lane.
-        let rest = pixel_groups
-            .remainder()
-            .iter()
-            .zip(term_groups.into_remainder());
-        for ((&p, t), k) in rest.zip(kept_groups.into_remainder()) {
-            (*t, *k) = lanes[0].pixel(p, delta, policy);
-        }
+        lanes[0].rest(row, row.pixels.len() / STAT_LANES * STAT_LANES);
         lanes.into_iter().fold(RowStats::EMPTY, RowStats::merge)
     }
 
@@ -341,13 +333,19 @@ impl RowStats {
         }
         lanes[0].negative = negative;
         lanes[0].nonfinite = (groups * STAT_LANES) as u64 - finite_count;
-        // The last few pixels, in the first lane.
-        let done = groups * STAT_LANES;
-        let rest = row.pixels[done..].iter().zip(&mut row.terms[done..]);
-        for ((&p, t), k) in rest.zip(&mut row.kept[done..]) {
-            (*t, *k) = lanes[0].pixel(p, delta, policy);
-        }
+        lanes[0].rest(row, groups * STAT_LANES);
         lanes.into_iter().fold(RowStats::EMPTY, RowStats::merge)
+    }
+
+    /// Pixels `from..` of `row` one after another in this lane: the few
+    /// left over after the groups of [`STAT_LANES`].
+    #[inline(always)]
+    fn rest(&mut self, row: &mut Row<'_>, from: usize) {
+        let (delta, policy) = (row.delta, row.policy);
+        let pixels = row.pixels[from..].iter().zip(&mut row.terms[from..]);
+        for ((&p, t), k) in pixels.zip(&mut row.kept[from..]) {
+            (*t, *k) = self.pixel(p, delta, policy);
+        }
     }
 
     /// Counts `pixel`'s luminance (only finite values reach the extremes)
