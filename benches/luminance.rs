@@ -41,8 +41,10 @@
 //!
 //! After criterion's summary the benchmark prints the speed goals' table
 //! (`support/goals.rs`): each goal's ratio from this run's entries, with the
-//! machine stated, also written to `<criterion's directory>/
-//! courtyard_1280x1024/goals.md`.
+//! machine stated; then, for the goals on whole commands whose entries ran,
+//! the paired table: the goal's two workloads timed in turn, 20 times, in
+//! this process (about 15 seconds for all four). Both are also written to
+//! `<criterion's directory>/courtyard_1280x1024/goals.md`.
 
 #[path = "support/goals.rs"]
 mod goals;
@@ -220,35 +222,114 @@ fn on_threads<T: Send>(threads: usize, f: impl FnOnce() -> T + Send) -> T {
         .install(f)
 }
 
-/// `ps30 run corrected:loop` over the image into a 10×8 target (128×128
-/// blocks), as the README's example does on another image.
-fn run_command(path: &Path, loop1: &Loaded, threads: usize) -> f32 {
-    let img = load(path, &ImageLimits::default()).unwrap();
-    let setup = PassSetup {
-        target: (10, 8),
-        constants: Constants {
-            float: vec![
-                [0.0; 4],
-                [1.0 / 1280.0, 1.0 / 1024.0, 0.0, 1.0],
-                [0.0; 4],
-                [0.27, 0.67, 0.06, 0.01],
-            ],
-            int: vec![[0; 4], [128, 0, 0, 0], [128, 0, 0, 0]],
-            bool: Vec::new(),
-        },
-        sampler: state(),
-        format: TargetFormat::R32F,
-        threads: Some(threads),
-        limits: emu::EmuLimits::default(),
-        backend: ps30::jobs::backend::Backend::Emulator,
-        float_rules: ps30::core::float_rules::FloatRules::D3d9,
-    };
-    run_pass(loop1, &img, &setup).unwrap().target.texel(0, 0)[0]
+/// The whole commands and decoding alone, each a workload that an entry
+/// times and that the paired measurement (`goals::paired`) alternates with
+/// its goal's other workload.
+struct Commands {
+    path: std::path::PathBuf,
+    loop1: Loaded,
+}
+
+impl Commands {
+    fn new() -> Commands {
+        let (name, text) = CORRECTED_LOOP.listing();
+        Commands {
+            path: Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/hdr/courtyard_1280x1024.exr"),
+            loop1: load_str(name, text, &Options::default()).unwrap(),
+        }
+    }
+
+    /// The workload of the entry `name` (`phase/decode/Nt`,
+    /// `command/luminance|tonemap|run/Nt`), all its work on N threads.
+    fn workload(&self, name: &str) -> Option<impl FnMut() + '_> {
+        let (what, threads) = name.rsplit_once('/')?;
+        let t: usize = threads.strip_suffix('t')?.parse().ok()?;
+        let work: fn(&Commands, usize) = match what {
+            "phase/decode" => |c, _| {
+                black_box(load(&c.path, &ImageLimits::default()).unwrap().width);
+            },
+            "command/luminance" => |c, t| {
+                black_box(c.luminance(t));
+            },
+            "command/tonemap" => |c, t| {
+                black_box(c.tonemap(t));
+            },
+            "command/run" => |c, t| {
+                black_box(c.run(t));
+            },
+            _ => return None,
+        };
+        Some(move || on_threads(t, || work(self, t)))
+    }
+
+    /// As `ps30 luminance IMAGE` runs: the block planned for the image
+    /// (beside the decoding) and the shaders generated for it.
+    fn luminance(&self, t: usize) -> f64 {
+        let (img, planned) = load_beside(&self.path, &ImageLimits::default(), |w, h| {
+            blocks::planned(w, h, DEFAULT_DELTA)
+        })
+        .unwrap();
+        let planned = planned.unwrap();
+        let settings = luminance::Settings {
+            block: planned.block(),
+            threads: Some(t),
+            ..Default::default()
+        };
+        luminance::run(&img, &planned.pass1, &planned.pass2, &settings)
+            .unwrap()
+            .log_average
+    }
+
+    /// As `ps30 tonemap IMAGE -o x.png` runs, short of compressing the PNG:
+    /// each band encoded to 8-bit sRGB.
+    fn tonemap(&self, t: usize) -> usize {
+        let img = load(&self.path, &ImageLimits::default()).unwrap();
+        let settings = tonemap::Settings {
+            threads: Some(t),
+            ..Default::default()
+        };
+        let mut rgb = Vec::with_capacity(3 * img.pixels.len());
+        tonemap::run_into(&img, &settings, &|_, _| {}, &mut |band| {
+            rgb.extend(tonemap::to_srgb8(band));
+            Ok(())
+        })
+        .unwrap();
+        rgb.len()
+    }
+
+    /// `ps30 run corrected:loop` over the image into a 10×8 target (128×128
+    /// blocks), as the README's example does on another image.
+    fn run(&self, threads: usize) -> f32 {
+        let img = load(&self.path, &ImageLimits::default()).unwrap();
+        let setup = PassSetup {
+            target: (10, 8),
+            constants: Constants {
+                float: vec![
+                    [0.0; 4],
+                    [1.0 / 1280.0, 1.0 / 1024.0, 0.0, 1.0],
+                    [0.0; 4],
+                    [0.27, 0.67, 0.06, 0.01],
+                ],
+                int: vec![[0; 4], [128, 0, 0, 0], [128, 0, 0, 0]],
+                bool: Vec::new(),
+            },
+            sampler: state(),
+            format: TargetFormat::R32F,
+            threads: Some(threads),
+            limits: emu::EmuLimits::default(),
+            backend: ps30::jobs::backend::Backend::Emulator,
+            float_rules: ps30::core::float_rules::FloatRules::D3d9,
+        };
+        run_pass(&self.loop1, &img, &setup)
+            .unwrap()
+            .target
+            .texel(0, 0)[0]
+    }
 }
 
 fn luminance(c: &mut Criterion) {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/hdr/courtyard_1280x1024.exr");
-    let img = load(&path, &ImageLimits::default()).unwrap();
+    let commands = Commands::new();
+    let img = load(&commands.path, &ImageLimits::default()).unwrap();
     let unrolled = Passes::new(
         shader(CORRECTED_UNROLLED.listing(), &[]),
         shader(CORRECTED_PASS2.listing(), &[("xsize", 11), ("ysize", 8)]),
@@ -257,12 +338,6 @@ fn luminance(c: &mut Criterion) {
         shader(CORRECTED_LOOP.listing(), &[]),
         shader(CORRECTED_PASS2.listing(), &[("xsize", 10), ("ysize", 19)]),
     );
-    let loop1 = load_str(
-        CORRECTED_LOOP.listing().0,
-        CORRECTED_LOOP.listing().1,
-        &Options::default(),
-    )
-    .unwrap();
     let mut g = c.benchmark_group(GROUP);
     g.sample_size(10);
     g.bench_function("reference/f64", |b| {
@@ -323,37 +398,14 @@ fn luminance(c: &mut Criterion) {
     }
     // Each goal's two entries back to back (see the module docs): decoding
     // on one thread, the command on one and on two, decoding on two.
-    let decode = |g: &mut criterion::BenchmarkGroup<'_, _>, t: usize| {
-        g.bench_function(format!("phase/decode/{t}t"), |b| {
-            b.iter(|| on_threads(t, || load(&path, &ImageLimits::default()).unwrap().width))
-        });
+    let entry = |g: &mut criterion::BenchmarkGroup<'_, _>, name: &str| {
+        let mut work = commands.workload(name).expect("a command entry");
+        g.bench_function(name, |b| b.iter(&mut work));
     };
-    decode(&mut g, 1);
-    for t in [1, 2] {
-        g.bench_function(format!("command/luminance/{t}t"), |b| {
-            b.iter(|| {
-                on_threads(t, || {
-                    // As `ps30 luminance IMAGE` runs: the block planned for
-                    // the image (beside the decoding) and the shaders
-                    // generated for it.
-                    let (img, planned) = load_beside(&path, &ImageLimits::default(), |w, h| {
-                        blocks::planned(w, h, DEFAULT_DELTA)
-                    })
-                    .unwrap();
-                    let planned = planned.unwrap();
-                    let settings = luminance::Settings {
-                        block: planned.block(),
-                        threads: Some(t),
-                        ..Default::default()
-                    };
-                    luminance::run(&img, &planned.pass1, &planned.pass2, &settings)
-                        .unwrap()
-                        .log_average
-                })
-            })
-        });
-    }
-    decode(&mut g, 2);
+    entry(&mut g, "phase/decode/1t");
+    entry(&mut g, "command/luminance/1t");
+    entry(&mut g, "command/luminance/2t");
+    entry(&mut g, "phase/decode/2t");
     for t in [1, 2] {
         g.bench_function(format!("phase/crosscheck/{t}t"), |b| {
             b.iter(|| {
@@ -363,32 +415,13 @@ fn luminance(c: &mut Criterion) {
             })
         });
     }
-    for t in [1, 2] {
-        g.bench_function(format!("command/tonemap/{t}t"), |b| {
-            b.iter(|| {
-                on_threads(t, || {
-                    let img = load(&path, &ImageLimits::default()).unwrap();
-                    let settings = tonemap::Settings {
-                        threads: Some(t),
-                        ..Default::default()
-                    };
-                    // As `ps30 tonemap IMAGE -o x.png` runs, short of
-                    // compressing the PNG: each band encoded to 8-bit sRGB.
-                    let mut rgb = Vec::with_capacity(3 * img.pixels.len());
-                    tonemap::run_into(&img, &settings, &|_, _| {}, &mut |band| {
-                        rgb.extend(tonemap::to_srgb8(band));
-                        Ok(())
-                    })
-                    .unwrap();
-                    rgb.len()
-                })
-            })
-        });
-    }
-    for t in [1, 2] {
-        g.bench_function(format!("command/run/{t}t"), |b| {
-            b.iter(|| on_threads(t, || run_command(&path, &loop1, t)))
-        });
+    for name in [
+        "command/tonemap/1t",
+        "command/tonemap/2t",
+        "command/run/1t",
+        "command/run/2t",
+    ] {
+        entry(&mut g, name);
     }
     // The GPU entries come last, and the Vulkan devices are opened only
     // now, so that no driver's threads or allocations are in the process
@@ -444,6 +477,31 @@ fn gpu_entries(
 
 criterion_group!(benches, luminance);
 
+/// How many ratios the paired measurement takes for each goal.
+const PAIRS: usize = 20;
+
+/// The paired measurement (`goals::paired`) of every goal on whole
+/// commands whose two entries this run measured.
+fn paired(times: &[(String, f64)]) -> Vec<(&'static goals::Goal, goals::Paired)> {
+    let commands = Commands::new();
+    let measured = |name: &str| times.iter().any(|(n, _)| n == name);
+    let mut rows = Vec::new();
+    for g in goals::GOALS {
+        if !(measured(g.numerator) && measured(g.denominator)) {
+            continue;
+        }
+        let (Some(mut a), Some(mut b)) = (
+            commands.workload(g.numerator),
+            commands.workload(g.denominator),
+        ) else {
+            continue; // not a whole command's goal
+        };
+        eprintln!("paired: {} / {}, {PAIRS} times", g.numerator, g.denominator);
+        rows.extend(goals::paired(PAIRS, &mut a, &mut b).map(|p| (g, p)));
+    }
+    rows
+}
+
 /// criterion's own `main`, then the goals' table from this run's entries.
 fn main() {
     let started = std::time::SystemTime::now();
@@ -456,8 +514,13 @@ fn main() {
     let Some((times, dir)) = times else {
         return; // nothing measured: a listing, a filter that matched nothing
     };
-    let table = goals::table(&goals::machine(PEER.get().map(String::as_str)), &times);
+    let mut table = goals::table(&goals::machine(PEER.get().map(String::as_str)), &times);
     println!("\n{table}");
+    let paired = goals::paired_table(&paired(&times));
+    if !paired.is_empty() {
+        println!("{paired}");
+        table = format!("{table}\n{paired}");
+    }
     let path = dir.join(GROUP).join("goals.md");
     if let Err(e) = std::fs::write(&path, &table) {
         eprintln!("goals: could not write {}: {e}", path.display());

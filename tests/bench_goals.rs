@@ -8,7 +8,7 @@
 #[path = "../benches/support/goals.rs"]
 mod goals;
 
-use goals::{measured, table, typical_ns, GOALS};
+use goals::{measured, paired, paired_table, table, typical_ns, Paired, GOALS};
 use std::time::{Duration, SystemTime};
 
 /// An `estimates.json` as criterion writes it, cut to the fields read.
@@ -129,4 +129,60 @@ fn every_goal_names_two_entries_of_the_benchmark() {
             );
         }
     }
+}
+
+#[test]
+fn paired_ratios_are_summed_up_by_their_median_and_extremes() {
+    let odd = Paired::of(vec![1.9, 1.6, 1.8]).unwrap();
+    assert_eq!(
+        (odd.median, odd.low, odd.high, odd.pairs),
+        (1.8, 1.6, 1.9, 3)
+    );
+    // An even count: the mean of the middle two.
+    let even = Paired::of(vec![1.0, 4.0, 2.0, 3.0]).unwrap();
+    assert_eq!((even.median, even.low, even.high), (2.5, 1.0, 4.0));
+    assert_eq!(Paired::of(Vec::new()), None);
+    assert_eq!(Paired::of(vec![1.0, f64::NAN]), None);
+}
+
+/// The order the paired measurement runs its workloads in: one pair to warm
+/// up, then the numerator first and the denominator first in turn.
+#[test]
+fn paired_workloads_take_turns_going_first() {
+    let calls = std::cell::RefCell::new(String::new());
+    let mut a = || calls.borrow_mut().push('a');
+    let mut b = || calls.borrow_mut().push('b');
+    let p = paired(4, &mut a, &mut b).unwrap();
+    assert_eq!(
+        calls.into_inner(),
+        "ab".to_string() + "ab" + "ba" + "ab" + "ba"
+    );
+    assert_eq!(p.pairs, 4);
+}
+
+#[test]
+fn the_paired_table_judges_each_median_against_its_bound() {
+    let goal = |numerator: &str| GOALS.iter().find(|g| g.numerator == numerator).unwrap();
+    let lum = goal("command/luminance/1t"); // ≤ 1.5 over decoding
+    let run = goal("command/run/1t"); // ≥ 1.7 over two threads
+    let rows = [
+        (lum, Paired::of(vec![1.3, 1.6, 1.4]).unwrap()),
+        (run, Paired::of(vec![1.65, 1.8, 1.69]).unwrap()),
+    ];
+    let t = paired_table(&rows);
+    assert!(t.contains("3 times"), "{t}");
+    assert!(
+        t.contains(
+            "| `command/luminance/1t` / `phase/decode/1t` | 1.30 – 1.60 | 1.40 (≤ 1.5) | met |"
+        ),
+        "{t}"
+    );
+    // 1.69 is shown as it is, not rounded up to a passing 1.70.
+    assert!(
+        t.contains(
+            "| `command/run/1t` / `command/run/2t` | 1.65 – 1.80 | 1.69 (≥ 1.7) | **not met** |"
+        ),
+        "{t}"
+    );
+    assert_eq!(paired_table(&[]), "");
 }

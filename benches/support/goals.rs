@@ -8,10 +8,17 @@
 //! after `time:`. An entry counts only if its estimate was written after the
 //! run began, so a filtered run never mixes in figures from an older one.
 //! Peak memory is not a criterion figure; the README gives it apart.
+//!
+//! The goals on whole commands get a second table, from a paired
+//! measurement ([`paired`]): criterion times one entry for seconds before
+//! the next, and on a shared machine the load drifts in between, so the
+//! ratio of two estimates carries the drift. The paired measurement
+//! alternates the goal's two workloads in one process, and each ratio comes
+//! from two times taken a fraction of a second apart.
 
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
-use std::time::SystemTime;
+use std::time::{Instant, SystemTime};
 
 /// The side of its bound a goal's ratio must lie on (the bound itself
 /// included).
@@ -29,6 +36,25 @@ impl Bound {
             Bound::AtMost(b) => ratio <= b,
             Bound::AtLeast(b) => ratio >= b,
         }
+    }
+
+    /// The bound as the tables state it: `≤ 1.5`, `≥ 1.7`.
+    fn stated(self) -> String {
+        match self {
+            Bound::AtMost(b) => format!("≤ {b}"),
+            Bound::AtLeast(b) => format!("≥ {b}"),
+        }
+    }
+
+    /// `ratio` as the tables show it, with the bound and the verdict:
+    /// `1.34 (≤ 1.5) | met`.
+    fn judged(self, ratio: f64) -> String {
+        let verdict = if self.holds(ratio) {
+            "met"
+        } else {
+            "**not met**"
+        };
+        format!("{} ({}) | {verdict}", self.shown(ratio), self.stated())
     }
 
     /// `ratio` to two decimals, or to as many more (up to six) as it takes
@@ -107,6 +133,72 @@ pub const GOALS: &[Goal] = &[
     },
 ];
 
+/// The ratios of a goal's paired runs: their median, lowest and highest.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Paired {
+    /// The median (the mean of the middle two for an even count).
+    pub median: f64,
+    /// The lowest ratio.
+    pub low: f64,
+    /// The highest ratio.
+    pub high: f64,
+    /// How many ratios.
+    pub pairs: usize,
+}
+
+impl Paired {
+    /// The summary of `ratios` (None for none, or for one that is not a
+    /// number).
+    pub fn of(mut ratios: Vec<f64>) -> Option<Paired> {
+        if ratios.is_empty() || ratios.iter().any(|r| r.is_nan()) {
+            return None;
+        }
+        ratios.sort_by(f64::total_cmp);
+        let n = ratios.len();
+        let median = if n % 2 == 1 {
+            ratios[n / 2]
+        } else {
+            (ratios[n / 2 - 1] + ratios[n / 2]) / 2.0
+        };
+        Some(Paired {
+            median,
+            low: ratios[0],
+            high: ratios[n - 1],
+            pairs: n,
+        })
+    }
+}
+
+/// Times `numerator` and `denominator` in turn, `pairs` times after one
+/// pair that warms up: numerator first in even pairs, denominator first in
+/// odd ones, so that neither always runs on the other's leftovers (caches,
+/// freed memory). Each pair gives one ratio.
+pub fn paired(
+    pairs: usize,
+    numerator: &mut dyn FnMut(),
+    denominator: &mut dyn FnMut(),
+) -> Option<Paired> {
+    let time = |f: &mut dyn FnMut()| {
+        let start = Instant::now();
+        f();
+        start.elapsed().as_secs_f64()
+    };
+    time(numerator);
+    time(denominator);
+    let ratios = (0..pairs)
+        .map(|i| {
+            if i % 2 == 0 {
+                let a = time(numerator);
+                a / time(denominator)
+            } else {
+                let b = time(denominator);
+                time(numerator) / b
+            }
+        })
+        .collect();
+    Paired::of(ratios)
+}
+
 /// The typical time in nanoseconds from the text of criterion's
 /// `estimates.json`: the slope's point estimate, or the mean's.
 pub fn typical_ns(estimates: &str) -> Option<f64> {
@@ -182,33 +274,47 @@ pub fn table(machine: &str, times: &[(String, f64)]) -> String {
          | goal | measured | ratio | |\n|---|---|---|---|\n"
     );
     for g in GOALS {
-        let (bound, sign) = match g.bound {
-            Bound::AtMost(b) => (b, '≤'),
-            Bound::AtLeast(b) => (b, '≥'),
-        };
         let row = match (time(g.numerator), time(g.denominator)) {
-            (Some(a), Some(b)) => {
-                let ratio = a / b;
-                let shown = g.bound.shown(ratio);
-                let verdict = if g.bound.holds(ratio) {
-                    "met"
-                } else {
-                    "**not met**"
-                };
-                format!(
-                    "`{}` {} / `{}` {} | {shown} ({sign} {bound}) | {verdict}",
-                    g.numerator,
-                    ms(a),
-                    g.denominator,
-                    ms(b)
-                )
-            }
+            (Some(a), Some(b)) => format!(
+                "`{}` {} / `{}` {} | {}",
+                g.numerator,
+                ms(a),
+                g.denominator,
+                ms(b),
+                g.bound.judged(a / b)
+            ),
             _ => format!(
                 "`{}` / `{}` not measured in this run | | —",
                 g.numerator, g.denominator
             ),
         };
         let _ = writeln!(out, "| {} | {row} |", g.what);
+    }
+    out
+}
+
+/// The paired measurement's table: each goal's lowest and highest ratio,
+/// and the median judged against its bound.
+pub fn paired_table(rows: &[(&Goal, Paired)]) -> String {
+    let Some(pairs) = rows.first().map(|(_, p)| p.pairs) else {
+        return String::new();
+    };
+    let mut out = format!(
+        "The goals on whole commands, paired: each goal's two workloads timed in turn in one \
+         process, {pairs} times (the lowest and highest of the {pairs} ratios, and their median, \
+         judged):\n\n| goal | workloads | lowest – highest | median | |\n|---|---|---|---|---|\n"
+    );
+    for (g, p) in rows {
+        let _ = writeln!(
+            out,
+            "| {} | `{}` / `{}` | {:.2} – {:.2} | {} |",
+            g.what,
+            g.numerator,
+            g.denominator,
+            p.low,
+            p.high,
+            g.bound.judged(p.median)
+        );
     }
     out
 }
