@@ -43,7 +43,7 @@
 //! (`support/goals.rs`): each goal's ratio from this run's entries, with the
 //! machine stated; then, for the goals on whole commands whose entries ran,
 //! the paired table: the goal's two workloads timed in turn, 20 times, in
-//! this process (about 15 seconds for all four). Both are also written to
+//! this process (about 11 seconds for all four here). Both are also written to
 //! `<criterion's directory>/courtyard_1280x1024/goals.md`.
 
 #[path = "support/goals.rs"]
