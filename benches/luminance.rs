@@ -482,7 +482,7 @@ const PAIRS: usize = 20;
 
 /// The paired measurement (`goals::paired`) of every goal on whole
 /// commands whose two entries this run measured.
-fn paired(times: &[(String, f64)]) -> Vec<(&'static goals::Goal, goals::Paired)> {
+fn paired_rows(times: &[(String, f64)]) -> Vec<(&'static goals::Goal, goals::Paired)> {
     let commands = Commands::new();
     let measured = |name: &str| times.iter().any(|(n, _)| n == name);
     let mut rows = Vec::new();
@@ -516,7 +516,7 @@ fn main() {
     };
     let mut table = goals::table(&goals::machine(PEER.get().map(String::as_str)), &times);
     println!("\n{table}");
-    let paired = goals::paired_table(&paired(&times));
+    let paired = goals::paired_table(&paired_rows(&times));
     if !paired.is_empty() {
         println!("{paired}");
         table = format!("{table}\n{paired}");

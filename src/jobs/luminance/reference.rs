@@ -872,6 +872,11 @@ mod tests {
             })
     }
 
+    /// The same bits, or NaNs both (their payloads aside).
+    fn same(a: f64, b: f64) -> bool {
+        a.to_bits() == b.to_bits() || a.is_nan() && b.is_nan()
+    }
+
     /// Grey pixels: the weights sum to 1, so L = v up to f64 rounding.
     fn image(width: u32, height: u32, values: &[f32]) -> HdrImage {
         let pixels = values.iter().map(|&v| [v, v, v, 1.0]).collect();
@@ -924,7 +929,6 @@ mod tests {
         for _ in 0..2000 {
             pixels.push([0; 4].map(|_| (bits() as f32 / u32::MAX as f32 - 0.1) * 8.0));
         }
-        let same = |a: f64, b: f64| a.to_bits() == b.to_bits() || a.is_nan() && b.is_nan();
         for policy in every_policy() {
             for width in 1..=13 {
                 for row_pixels in pixels.chunks(width) {
@@ -1080,7 +1084,6 @@ mod tests {
                 assert_eq!(r.samples, samples, "{what}");
                 // NaN sums (a NaN term under Propagate) compare by kind;
                 // under Skip the sums are finite and compare by bits.
-                let same = |a: f64, b: f64| a.to_bits() == b.to_bits() || a.is_nan() && b.is_nan();
                 assert!(
                     same(r.log2_sum, sum),
                     "{what}: {} against {sum}",
