@@ -173,8 +173,9 @@ pub(super) fn read(
 }
 
 /// Decodes the first layer's full-resolution blocks straight into RGBA
-/// pixels (alpha 1 where the file has none), converting each line of
-/// samples in bulk. Each block is read, decompressed and written into its
+/// pixels (alpha 1 where the file has none; every pixel is written, since
+/// [`check_chunks`] found every row or tile in exactly one chunk),
+/// converting each line of samples in bulk. Each block is read, decompressed and written into its
 /// own rows by one thread of rayon's current pool, so a command's thread
 /// bound holds for decoding too and the calling thread only waits. Chunks
 /// are read in file order, one at a time, so only the pixels and one block
@@ -199,7 +200,7 @@ fn decode_pixels(
     let meta = chunks.meta_data().clone();
     let target = Target::new(map, channels, (width, height));
     // Zeroed memory comes from the allocator as it is: the pixels are
-    // written once, by the blocks (alpha included, see `Target::insert`).
+    // written once, whole, by the blocks (see `LineBuffers::write`).
     let mut pixels = vec![[0.0f32; 4]; width * height];
     let rows: Vec<Mutex<&mut [[f32; 4]]>> =
         pixels.chunks_mut(width.max(1)).map(Mutex::new).collect();
@@ -237,10 +238,6 @@ struct Target {
     /// Per channel of the file, in its order, the slots it fills (none: not
     /// read).
     slots: Vec<&'static [usize]>,
-    /// The file has no `A`: alpha is set to 1 wherever slot 0 is written,
-    /// which is every pixel, since [`check_chunks`] found every row (or
-    /// tile) in exactly one chunk.
-    alpha_one: bool,
     width: usize,
     height: usize,
 }
@@ -264,15 +261,16 @@ impl Target {
         Target {
             channels: channels.clone(),
             slots,
-            alpha_one: !map.sources.iter().any(|(name, _)| *name == "A"),
             width,
             height,
         }
     }
 
-    /// Writes one decoded block's lines into `rows`, the image's rows, each
-    /// locked only while one line is written (blocks of other rows never
-    /// wait). A line outside the data window is an error.
+    /// Writes one decoded block's lines into `rows`, the image's rows. The
+    /// lines of one row (one per channel) are gathered in `lines` first and
+    /// the row's pixels then written whole, its lock held only for that
+    /// (blocks of other rows never wait). A line outside the data window is
+    /// an error.
     fn insert(
         &self,
         path: &Path,
@@ -281,6 +279,8 @@ impl Target {
         lines: &mut LineBuffers,
     ) -> Result<(), ImageError> {
         let (width, height) = (self.width, self.height);
+        // The (x, y, n) of the row segment being gathered.
+        let mut gathering = None;
         for line in block.lines(&self.channels) {
             let at = line.location;
             let slots = self.slots.get(at.channel).copied().unwrap_or(&[]);
@@ -292,60 +292,99 @@ impl Target {
                 let problem = format!("a block's line at ({x}, {y}) of {n} samples lies outside the {width}×{height} data window");
                 return Err(ImageError::bad_header(path, FORMAT, "blocks", problem));
             }
-            let values = lines
-                .read(line, self.channels.list[at.channel].sample_type)
-                .map_err(|e| decode_error(path, e))?;
-            let mut row = rows[y].lock().unwrap_or_else(|p| p.into_inner());
-            let pixels = &mut row[x..][..n];
-            for (pixel, &v) in pixels.iter_mut().zip(values) {
-                for &slot in slots {
-                    pixel[slot] = v;
+            if gathering != Some((x, y, n)) {
+                if let Some(segment) = gathering {
+                    lines.write(rows, segment);
                 }
+                lines.start(n);
+                gathering = Some((x, y, n));
             }
-            if self.alpha_one && slots[0] == 0 {
-                pixels.iter_mut().for_each(|pixel| pixel[3] = 1.0);
-            }
+            lines
+                .read(line, self.channels.list[at.channel].sample_type, slots)
+                .map_err(|e| decode_error(path, e))?;
+        }
+        if let Some(segment) = gathering {
+            lines.write(rows, segment);
         }
         Ok(())
     }
 }
 
-/// Reused buffers for one line of samples, converted to f32.
+/// One row segment's samples, gathered line by line (a line per channel of
+/// the file) before its pixels are written, and the buffers the samples
+/// are converted through; reused from block to block by one thread.
 #[derive(Default)]
 struct LineBuffers {
     half: Vec<f16>,
-    float: Vec<f32>,
     uint: Vec<u32>,
+    /// Per RGBA slot, the segment's values as f32.
+    slots: [Vec<f32>; 4],
+    /// Which slots the segment's lines have filled so far.
+    filled: [bool; 4],
 }
 
 impl LineBuffers {
-    /// The line's samples as f32: half through `half`'s slice conversion,
-    /// u32 as `exr` converts them (`as f32`).
+    /// Starts a segment of `n` pixels, no slot filled yet.
+    fn start(&mut self, n: usize) {
+        for values in &mut self.slots {
+            values.resize(n, 0.0);
+        }
+        self.filled = [false; 4];
+    }
+
+    /// The line's samples as f32 into each of `slots`: half through
+    /// `half`'s slice conversion, u32 as `exr` converts them (`as f32`).
     fn read(
         &mut self,
         line: exr::block::lines::LineRef<'_>,
         sample_type: exr::meta::attribute::SampleType,
-    ) -> exr::error::Result<&[f32]> {
+        slots: &[usize],
+    ) -> exr::error::Result<()> {
         use exr::meta::attribute::SampleType;
         use half::slice::HalfFloatSliceExt;
         let n = line.location.sample_count;
-        self.float.resize(n, 0.0);
+        let mut values = std::mem::take(&mut self.slots[slots[0]]);
         match sample_type {
             SampleType::F16 => {
                 self.half.resize(n, f16::ZERO);
                 line.read_samples_into_slice(&mut self.half)?;
-                self.half.convert_to_f32_slice(&mut self.float);
+                self.half.convert_to_f32_slice(&mut values);
             }
-            SampleType::F32 => line.read_samples_into_slice(&mut self.float)?,
+            SampleType::F32 => line.read_samples_into_slice(&mut values)?,
             SampleType::U32 => {
                 self.uint.resize(n, 0);
                 line.read_samples_into_slice(&mut self.uint)?;
-                for (f, &u) in self.float.iter_mut().zip(&self.uint) {
+                for (f, &u) in values.iter_mut().zip(&self.uint) {
                     *f = u as f32;
                 }
             }
         }
-        Ok(&self.float)
+        for &slot in &slots[1..] {
+            self.slots[slot].copy_from_slice(&values);
+        }
+        self.slots[slots[0]] = values;
+        for &slot in slots {
+            self.filled[slot] = true;
+        }
+        Ok(())
+    }
+
+    /// Writes the gathered segment, `n` pixels from (`x`, `y`), into its
+    /// row. A slot no line filled is 0, alpha 1 (R, G and B are always
+    /// filled, since every channel has a line in every row of a block, and
+    /// alpha is filled when the file has `A`).
+    fn write(&mut self, rows: &[Mutex<&mut [[f32; 4]]>], (x, y, n): (usize, usize, usize)) {
+        for (slot, values) in self.slots.iter_mut().enumerate() {
+            if !self.filled[slot] {
+                values.fill(if slot == 3 { 1.0 } else { 0.0 });
+            }
+        }
+        let [r, g, b, a] = &self.slots;
+        let mut row = rows[y].lock().unwrap_or_else(|p| p.into_inner());
+        let pixels = row[x..][..n].iter_mut();
+        for (pixel, (((&r, &g), &b), &a)) in pixels.zip(r.iter().zip(g).zip(b).zip(a)) {
+            *pixel = [r, g, b, a];
+        }
     }
 }
 
