@@ -41,9 +41,10 @@
 //!
 //! After criterion's summary the benchmark prints the speed goals' table
 //! (`support/goals.rs`): each goal's ratio from this run's entries, with the
-//! machine stated; then, for the goals on whole commands whose entries ran,
-//! the paired table: the goal's two workloads timed in turn, 20 times, in
-//! this process (about 11 seconds for all four here). Both are also written to
+//! machine stated; then, for the goals on the CPU whose entries ran (all but
+//! the two against llvmpipe), the paired table: the goal's two workloads
+//! timed in turn, 20 times, in this process (about 11 seconds for all six
+//! here, nearly all of it the commands'). Both are also written to
 //! `<criterion's directory>/courtyard_1280x1024/goals.md`.
 
 #[path = "support/goals.rs"]
@@ -222,44 +223,73 @@ fn on_threads<T: Send>(threads: usize, f: impl FnOnce() -> T + Send) -> T {
         .install(f)
 }
 
-/// The whole commands and decoding alone, each a workload that an entry
-/// times and that the paired measurement (`goals::paired`) alternates with
-/// its goal's other workload.
-struct Commands {
+/// The workloads that both an entry times and the paired measurement
+/// (`goals::paired`) alternates with its goal's other workload: the
+/// emulator's two passes, the f64 reference and the native floor on the
+/// decoded image, one thread each; decoding alone and the whole commands on
+/// N threads.
+struct Workloads {
     path: std::path::PathBuf,
     loop1: Loaded,
+    img: HdrImage,
+    unrolled: Passes,
 }
 
-impl Commands {
-    fn new() -> Commands {
+impl Workloads {
+    fn new() -> Workloads {
         let (name, text) = CORRECTED_LOOP.listing();
-        Commands {
-            path: Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/hdr/courtyard_1280x1024.exr"),
+        let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/hdr/courtyard_1280x1024.exr");
+        Workloads {
+            img: load(&path, &ImageLimits::default()).unwrap(),
+            path,
             loop1: load_str(name, text, &Options::default()).unwrap(),
+            unrolled: Passes::new(
+                shader(CORRECTED_UNROLLED.listing(), &[]),
+                shader(CORRECTED_PASS2.listing(), &[("xsize", 11), ("ysize", 8)]),
+            ),
         }
     }
 
-    /// The workload of the entry `name` (`phase/decode/Nt`,
-    /// `command/luminance|tonemap|run/Nt`), all its work on N threads.
-    fn workload(&self, name: &str) -> Option<impl FnMut() + '_> {
+    /// The workload of the entry `name`: `reference/f64`, `native/f32`,
+    /// `emulate/unrolled` (one thread), `phase/decode/Nt` or
+    /// `command/luminance|tonemap|run/Nt` (all its work on N threads).
+    fn workload(&self, name: &str) -> Option<Box<dyn FnMut() + '_>> {
+        let on_one: Option<fn(&Workloads)> = match name {
+            "reference/f64" => Some(|w| {
+                black_box(on_threads(1, || {
+                    reference::log_average(black_box(&w.img), 1e-4, Policy::ABS).log_average
+                }));
+            }),
+            "native/f32" => Some(|w| {
+                black_box(native_f32(black_box(&w.img), 125, 128));
+            }),
+            "emulate/unrolled" => Some(|w| {
+                let by = Drawer::Emulator(&w.unrolled, 1);
+                black_box(two_pass(black_box(&w.img), by, 125, 128, false));
+            }),
+            _ => None,
+        };
+        if let Some(work) = on_one {
+            return Some(Box::new(move || work(self)));
+        }
         let (what, threads) = name.rsplit_once('/')?;
         let t: usize = threads.strip_suffix('t')?.parse().ok()?;
-        let work: fn(&Commands, usize) = match what {
-            "phase/decode" => |c, _| {
-                black_box(load(&c.path, &ImageLimits::default()).unwrap().width);
+        let work: fn(&Workloads, usize) = match what {
+            "phase/decode" => |w, _| {
+                black_box(load(&w.path, &ImageLimits::default()).unwrap().width);
             },
-            "command/luminance" => |c, t| {
-                black_box(c.luminance(t));
+            "command/luminance" => |w, t| {
+                black_box(w.luminance(t));
             },
-            "command/tonemap" => |c, t| {
-                black_box(c.tonemap(t));
+            "command/tonemap" => |w, t| {
+                black_box(w.tonemap(t));
             },
-            "command/run" => |c, t| {
-                black_box(c.run(t));
+            "command/run" => |w, t| {
+                black_box(w.run(t));
             },
             _ => return None,
         };
-        Some(move || on_threads(t, || work(self, t)))
+        Some(Box::new(move || on_threads(t, || work(self, t))))
     }
 
     /// As `ps30 luminance IMAGE` runs: the block planned for the image
@@ -328,44 +358,26 @@ impl Commands {
 }
 
 fn luminance(c: &mut Criterion) {
-    let commands = Commands::new();
-    let img = load(&commands.path, &ImageLimits::default()).unwrap();
-    let unrolled = Passes::new(
-        shader(CORRECTED_UNROLLED.listing(), &[]),
-        shader(CORRECTED_PASS2.listing(), &[("xsize", 11), ("ysize", 8)]),
-    );
+    let work = Workloads::new();
+    let (img, unrolled) = (&work.img, &work.unrolled);
     let looped = Passes::new(
         shader(CORRECTED_LOOP.listing(), &[]),
         shader(CORRECTED_PASS2.listing(), &[("xsize", 10), ("ysize", 19)]),
     );
     let mut g = c.benchmark_group(GROUP);
     g.sample_size(10);
-    g.bench_function("reference/f64", |b| {
-        b.iter(|| {
-            on_threads(1, || {
-                reference::log_average(black_box(&img), 1e-4, Policy::ABS).log_average
-            })
-        })
-    });
-    g.bench_function("native/f32", |b| {
-        b.iter(|| native_f32(black_box(&img), 125, 128))
-    });
-    g.bench_function("emulate/unrolled", |b| {
-        b.iter(|| {
-            two_pass(
-                black_box(&img),
-                Drawer::Emulator(&unrolled, 1),
-                125,
-                128,
-                false,
-            )
-        })
-    });
+    let entry = |g: &mut criterion::BenchmarkGroup<'_, _>, name: &str| {
+        let mut work = work.workload(name).expect("an entry with a workload");
+        g.bench_function(name, |b| b.iter(&mut work));
+    };
+    for name in ["reference/f64", "native/f32", "emulate/unrolled"] {
+        entry(&mut g, name);
+    }
     g.bench_function("emulate/unrolled+lod", |b| {
         b.iter(|| {
             two_pass(
-                black_box(&img),
-                Drawer::Emulator(&unrolled, 1),
+                black_box(img),
+                Drawer::Emulator(unrolled, 1),
                 125,
                 128,
                 true,
@@ -373,22 +385,14 @@ fn luminance(c: &mut Criterion) {
         })
     });
     g.bench_function("emulate/loop", |b| {
-        b.iter(|| {
-            two_pass(
-                black_box(&img),
-                Drawer::Emulator(&looped, 1),
-                128,
-                56,
-                false,
-            )
-        })
+        b.iter(|| two_pass(black_box(img), Drawer::Emulator(&looped, 1), 128, 56, false))
     });
     for t in [1, 2] {
         g.bench_function(format!("pass1/{t}t"), |b| {
             b.iter(|| {
                 pass1(
-                    black_box(&img),
-                    Drawer::Emulator(&unrolled, t),
+                    black_box(img),
+                    Drawer::Emulator(unrolled, t),
                     125,
                     128,
                     false,
@@ -398,10 +402,6 @@ fn luminance(c: &mut Criterion) {
     }
     // Each goal's two entries back to back (see the module docs): decoding
     // on one thread, the command on one and on two, decoding on two.
-    let entry = |g: &mut criterion::BenchmarkGroup<'_, _>, name: &str| {
-        let mut work = commands.workload(name).expect("a command entry");
-        g.bench_function(name, |b| b.iter(&mut work));
-    };
     entry(&mut g, "phase/decode/1t");
     entry(&mut g, "command/luminance/1t");
     entry(&mut g, "command/luminance/2t");
@@ -410,7 +410,7 @@ fn luminance(c: &mut Criterion) {
         g.bench_function(format!("phase/crosscheck/{t}t"), |b| {
             b.iter(|| {
                 on_threads(t, || {
-                    luminance::pass1_bounds(black_box(&img), (125, 128), 1e-4, Policy::ABS).1
+                    luminance::pass1_bounds(black_box(img), (125, 128), 1e-4, Policy::ABS).1
                 })
             })
         });
@@ -426,7 +426,7 @@ fn luminance(c: &mut Criterion) {
     // The GPU entries come last, and the Vulkan devices are opened only
     // now, so that no driver's threads or allocations are in the process
     // while the CPU entries run — as none are in a `ps30 luminance` one.
-    gpu_entries(&mut g, &img, &unrolled, &looped);
+    gpu_entries(&mut g, img, unrolled, &looped);
     g.finish();
 }
 
@@ -480,21 +480,19 @@ criterion_group!(benches, luminance);
 /// How many ratios the paired measurement takes for each goal.
 const PAIRS: usize = 20;
 
-/// The paired measurement (`goals::paired`) of every goal on whole
-/// commands whose two entries this run measured.
+/// The paired measurement (`goals::paired`) of every goal on the CPU whose
+/// two entries this run measured.
 fn paired_rows(times: &[(String, f64)]) -> Vec<(&'static goals::Goal, goals::Paired)> {
-    let commands = Commands::new();
+    let work = Workloads::new();
     let measured = |name: &str| times.iter().any(|(n, _)| n == name);
     let mut rows = Vec::new();
     for g in goals::GOALS {
         if !(measured(g.numerator) && measured(g.denominator)) {
             continue;
         }
-        let (Some(mut a), Some(mut b)) = (
-            commands.workload(g.numerator),
-            commands.workload(g.denominator),
-        ) else {
-            continue; // not a whole command's goal
+        let (Some(mut a), Some(mut b)) = (work.workload(g.numerator), work.workload(g.denominator))
+        else {
+            continue; // a goal on llvmpipe: no workload here
         };
         eprintln!("paired: {} / {}, {PAIRS} times", g.numerator, g.denominator);
         rows.extend(goals::paired(PAIRS, &mut a, &mut b).map(|p| (g, p)));

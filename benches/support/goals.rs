@@ -9,12 +9,12 @@
 //! run began, so a filtered run never mixes in figures from an older one.
 //! Peak memory is not a criterion figure; the README gives it apart.
 //!
-//! The goals on whole commands get a second table, from a paired
-//! measurement ([`paired`]): criterion times one entry for seconds before
-//! the next, and on a shared machine the load drifts in between, so the
-//! ratio of two estimates carries the drift. The paired measurement
-//! alternates the goal's two workloads in one process, and each ratio comes
-//! from two times taken a fraction of a second apart.
+//! The goals on the CPU (all but the two against llvmpipe) get a second
+//! table, from a paired measurement ([`paired`]): criterion times one entry
+//! for seconds before the next, and on a shared machine the load drifts in
+//! between, so the ratio of two estimates carries the drift. The paired
+//! measurement alternates the goal's two workloads in one process, and each
+//! ratio comes from two times taken a fraction of a second apart.
 
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -300,7 +300,7 @@ pub fn paired_table(rows: &[(&Goal, Paired)]) -> String {
         return String::new();
     };
     let mut out = format!(
-        "The goals on whole commands, paired: each goal's two workloads timed in turn in one \
+        "The goals on the CPU, paired: each goal's two workloads timed in turn in one \
          process, {pairs} times (the lowest and highest of the {pairs} ratios, and their median, \
          judged):\n\n| goal | workloads | lowest – highest | median | |\n|---|---|---|---|---|\n"
     );
