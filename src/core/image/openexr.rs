@@ -175,13 +175,14 @@ pub(super) fn read(
 /// Decodes the first layer's full-resolution blocks straight into RGBA
 /// pixels (alpha 1 where the file has none; every pixel is written, since
 /// [`check_chunks`] found every row or tile in exactly one chunk),
-/// converting each line of samples in bulk. Each block is read, decompressed and written into its
-/// own rows by one thread of rayon's current pool, so a command's thread
-/// bound holds for decoding too and the calling thread only waits. Chunks
-/// are read in file order, one at a time, so only the pixels and one block
-/// per thread are held, never the whole file or a second copy. When blocks
-/// fail, the error reported is that of the first in file order, as one
-/// thread decoding in order would meet it.
+/// converting each line of samples in bulk. Each block is read,
+/// decompressed and written into its own rows by one thread of rayon's
+/// current pool, so a command's thread bound holds for decoding too and
+/// the calling thread only waits. Chunks are read in file order, one at a
+/// time, so only the pixels and one block per thread are held, never the
+/// whole file or a second copy. When blocks fail, the error reported is
+/// that of the first in file order, as one thread decoding in order would
+/// meet it.
 fn decode_pixels(
     path: &Path,
     reader: impl BufRead + Seek + Send,
