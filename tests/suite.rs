@@ -27,6 +27,7 @@ mod layering;
 mod lights;
 mod luminance;
 mod malformed;
+mod oracle;
 mod quads;
 mod readme;
 mod reference_values;

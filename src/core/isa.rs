@@ -201,6 +201,12 @@ pub struct OpInfo {
     pub slots: u32,
     /// Slots when the sampler operand is a cube map, if different.
     pub cube_slots: Option<u32>,
+    /// Instruction slots as Microsoft's tools count them: the change in the
+    /// `// approximately N instruction slots used` line of `D3DDisassemble`'s
+    /// listing when one such instruction is added (measured with
+    /// `tools/oracle/`). It differs from the documented table for `nop`,
+    /// `lrp`, `texkill` and the texld family, and ignores the sampler type.
+    pub fxc_slots: u32,
     /// What kind of instruction it is.
     pub class: Class,
     /// Operand shape, in order.
@@ -227,6 +233,12 @@ impl OpInfo {
         };
         base + u32::from(predicated)
     }
+
+    /// The slots of one instruction of this row as Microsoft's listing counts
+    /// them ([`OpInfo::fxc_slots`]), one more when it is predicated.
+    pub fn fxc_slots_of(&self, predicated: bool) -> u32 {
+        self.fxc_slots + u32::from(predicated)
+    }
 }
 
 use Operand as O;
@@ -239,7 +251,7 @@ const TEX: &[Operand] = &[O::Dst, O::Src, O::Sampler];
 const NONE: &[Operand] = &[];
 
 macro_rules! row {
-    ($op:ident, $m:literal, $code:literal / $control:literal, $slots:expr, $cube:expr, $class:ident, $ops:expr, sat=$sat:literal, cmp=$cmp:literal, pred=$pred:literal, $sum:literal) => {
+    ($op:ident, $m:literal, $code:literal / $control:literal, $slots:expr, $cube:expr, fxc = $fxc:expr, $class:ident, $ops:expr, sat=$sat:literal, cmp=$cmp:literal, pred=$pred:literal, $sum:literal) => {
         OpInfo {
             op: Opcode::$op,
             mnemonic: $m,
@@ -247,6 +259,7 @@ macro_rules! row {
             control: $control,
             slots: $slots,
             cube_slots: $cube,
+            fxc_slots: $fxc,
             class: Class::$class,
             operands: $ops,
             allows_sat: $sat,
@@ -262,62 +275,62 @@ macro_rules! row {
 /// here), slots, cube slots, class, operands, modifiers, summary.
 #[rustfmt::skip]
 pub const TABLE: &[OpInfo] = &[
-    row!(Nop, "nop", 0x00/0, 1, None, Arithmetic, NONE, sat = false, cmp = false, pred = true, "no operation"),
-    row!(Mov, "mov", 0x01/0, 1, None, Arithmetic, DS, sat = true, cmp = false, pred = true, "copy"),
-    row!(Add, "add", 0x02/0, 1, None, Arithmetic, DSS, sat = true, cmp = false, pred = true, "a + b"),
-    row!(Sub, "sub", 0x03/0, 1, None, Arithmetic, DSS, sat = true, cmp = false, pred = true, "a - b"),
-    row!(Mad, "mad", 0x04/0, 1, None, Arithmetic, DSSS, sat = true, cmp = false, pred = true, "a * b + c"),
-    row!(Mul, "mul", 0x05/0, 1, None, Arithmetic, DSS, sat = true, cmp = false, pred = true, "a * b"),
-    row!(Rcp, "rcp", 0x06/0, 1, None, Arithmetic, DSCALAR, sat = true, cmp = false, pred = true, "1 / x (x = 0 gives infinity)"),
-    row!(Rsq, "rsq", 0x07/0, 1, None, Arithmetic, DSCALAR, sat = true, cmp = false, pred = true, "1 / sqrt(|x|) (x = 0 gives infinity)"),
-    row!(Dp3, "dp3", 0x08/0, 1, None, Arithmetic, DSS, sat = true, cmp = false, pred = true, "3-component dot product"),
-    row!(Dp4, "dp4", 0x09/0, 1, None, Arithmetic, DSS, sat = true, cmp = false, pred = true, "4-component dot product"),
-    row!(Min, "min", 0x0A/0, 1, None, Arithmetic, DSS, sat = true, cmp = false, pred = true, "component-wise minimum"),
-    row!(Max, "max", 0x0B/0, 1, None, Arithmetic, DSS, sat = true, cmp = false, pred = true, "component-wise maximum"),
-    row!(Exp, "exp", 0x0E/0, 1, None, Arithmetic, DSCALAR, sat = true, cmp = false, pred = true, "2^x"),
-    row!(Log, "log", 0x0F/0, 1, None, Arithmetic, DSCALAR, sat = true, cmp = false, pred = true, "log2(|x|) (x = 0 gives -FLT_MAX)"),
-    row!(Lrp, "lrp", 0x12/0, 2, None, Arithmetic, DSSS, sat = true, cmp = false, pred = true, "a * b + (1 - a) * c"),
-    row!(Frc, "frc", 0x13/0, 1, None, Arithmetic, DS, sat = false, cmp = false, pred = true, "x - floor(x)"),
-    row!(M4x4, "m4x4", 0x14/0, 4, None, Arithmetic, DSS, sat = true, cmp = false, pred = true, "four dp4 with src1..src1+3"),
-    row!(M4x3, "m4x3", 0x15/0, 3, None, Arithmetic, DSS, sat = true, cmp = false, pred = true, "three dp4 with src1..src1+2"),
-    row!(M3x4, "m3x4", 0x16/0, 4, None, Arithmetic, DSS, sat = true, cmp = false, pred = true, "four dp3 with src1..src1+3"),
-    row!(M3x3, "m3x3", 0x17/0, 3, None, Arithmetic, DSS, sat = true, cmp = false, pred = true, "three dp3 with src1..src1+2"),
-    row!(M3x2, "m3x2", 0x18/0, 2, None, Arithmetic, DSS, sat = true, cmp = false, pred = true, "two dp3 with src1..src1+1"),
-    row!(Pow, "pow", 0x20/0, 3, None, Arithmetic, &[O::Dst, O::ScalarSrc, O::ScalarSrc], sat = true, cmp = false, pred = true, "|a|^b"),
-    row!(Crs, "crs", 0x21/0, 2, None, Arithmetic, DSS, sat = true, cmp = false, pred = true, "cross product"),
-    row!(Abs, "abs", 0x23/0, 1, None, Arithmetic, DS, sat = true, cmp = false, pred = true, "|x|"),
-    row!(Nrm, "nrm", 0x24/0, 3, None, Arithmetic, DS, sat = true, cmp = false, pred = true, "normalise xyz (zero length scales by FLT_MAX)"),
-    row!(SinCos, "sincos", 0x25/0, 8, None, Arithmetic, DSCALAR, sat = false, cmp = false, pred = true, "x = cos, y = sin"),
-    row!(Cmp, "cmp", 0x58/0, 1, None, Arithmetic, DSSS, sat = true, cmp = false, pred = true, "a >= 0 ? b : c"),
-    row!(Dp2Add, "dp2add", 0x5A/0, 2, None, Arithmetic, &[O::Dst, O::Src, O::Src, O::ScalarSrc], sat = true, cmp = false, pred = true, "a.x*b.x + a.y*b.y + c"),
-    row!(Dsx, "dsx", 0x5B/0, 2, None, Arithmetic, DS, sat = true, cmp = false, pred = true, "screen-space x derivative"),
-    row!(Dsy, "dsy", 0x5C/0, 2, None, Arithmetic, DS, sat = true, cmp = false, pred = true, "screen-space y derivative"),
-    row!(TexKill, "texkill", 0x41/0, 2, None, Texture, &[O::KillSrc], sat = false, cmp = false, pred = true, "discard the pixel if any of x, y, z < 0"),
-    row!(TexLd, "texld", 0x42/0, 1, Some(4), Texture, TEX, sat = false, cmp = false, pred = true, "sample with implicit gradients"),
-    row!(TexLdP, "texldp", 0x42/1, 3, Some(4), Texture, TEX, sat = false, cmp = false, pred = true, "sample after dividing by w"),
-    row!(TexLdB, "texldb", 0x42/2, 6, None, Texture, TEX, sat = false, cmp = false, pred = true, "sample with LOD bias w"),
-    row!(TexLdL, "texldl", 0x5F/0, 2, Some(5), Texture, TEX, sat = false, cmp = false, pred = true, "sample at explicit LOD w"),
-    row!(TexLdD, "texldd", 0x5D/0, 3, None, Texture, &[O::Dst, O::Src, O::Sampler, O::Src, O::Src], sat = false, cmp = false, pred = true, "sample with explicit gradients"),
-    row!(Setp, "setp", 0x5E/0, 1, None, Arithmetic, &[O::PredDst, O::Src, O::Src], sat = false, cmp = true, pred = true, "p0.c = a.c <op> b.c"),
-    row!(Call, "call", 0x19/0, 2, None, Flow, &[O::Label], sat = false, cmp = false, pred = false, "call a subroutine"),
-    row!(CallNz, "callnz", 0x1A/0, 3, None, Flow, &[O::Label, O::Condition], sat = false, cmp = false, pred = false, "call if the condition holds"),
-    row!(Loop, "loop", 0x1B/0, 3, None, Flow, &[O::LoopCounter, O::IntReg], sat = false, cmp = false, pred = false, "loop i.x times, aL from i.y by i.z"),
-    row!(Ret, "ret", 0x1C/0, 1, None, Flow, NONE, sat = false, cmp = false, pred = false, "return (ends main)"),
-    row!(EndLoop, "endloop", 0x1D/0, 2, None, Flow, NONE, sat = false, cmp = false, pred = false, "end of loop"),
-    row!(Label, "label", 0x1E/0, 0, None, Flow, &[O::Label], sat = false, cmp = false, pred = false, "subroutine entry"),
-    row!(Rep, "rep", 0x26/0, 3, None, Flow, &[O::IntReg], sat = false, cmp = false, pred = false, "repeat i.x times"),
-    row!(EndRep, "endrep", 0x27/0, 2, None, Flow, NONE, sat = false, cmp = false, pred = false, "end of rep"),
-    row!(If, "if", 0x28/0, 3, None, Flow, &[O::Condition], sat = false, cmp = false, pred = false, "branch on b# or p0.c"),
-    row!(Ifc, "if", 0x29/0, 3, None, Flow, &[O::ScalarSrc, O::ScalarSrc], sat = false, cmp = true, pred = false, "branch on a comparison"),
-    row!(Else, "else", 0x2A/0, 1, None, Flow, NONE, sat = false, cmp = false, pred = false, "else branch"),
-    row!(EndIf, "endif", 0x2B/0, 1, None, Flow, NONE, sat = false, cmp = false, pred = false, "end of if"),
-    row!(Break, "break", 0x2C/0, 1, None, Flow, NONE, sat = false, cmp = false, pred = false, "leave the innermost rep/loop"),
-    row!(BreakC, "break", 0x2D/0, 3, None, Flow, &[O::ScalarSrc, O::ScalarSrc], sat = false, cmp = true, pred = false, "break if the comparison holds"),
-    row!(BreakP, "breakp", 0x60/0, 3, None, Flow, &[O::Condition], sat = false, cmp = false, pred = false, "break if p0.c holds"),
-    row!(Def, "def", 0x51/0, 0, None, Declaration, &[O::Dst, O::FloatLits], sat = false, cmp = false, pred = false, "define a float constant"),
-    row!(DefI, "defi", 0x30/0, 0, None, Declaration, &[O::Dst, O::IntLits], sat = false, cmp = false, pred = false, "define an integer constant"),
-    row!(DefB, "defb", 0x2F/0, 0, None, Declaration, &[O::Dst, O::BoolLit], sat = false, cmp = false, pred = false, "define a boolean constant"),
-    row!(Dcl, "dcl", 0x1F/0, 0, None, Declaration, NONE, sat = false, cmp = false, pred = false, "declare an input or sampler"),
+    row!(Nop, "nop", 0x00/0, 1, None, fxc = 0, Arithmetic, NONE, sat = false, cmp = false, pred = true, "no operation"),
+    row!(Mov, "mov", 0x01/0, 1, None, fxc = 1, Arithmetic, DS, sat = true, cmp = false, pred = true, "copy"),
+    row!(Add, "add", 0x02/0, 1, None, fxc = 1, Arithmetic, DSS, sat = true, cmp = false, pred = true, "a + b"),
+    row!(Sub, "sub", 0x03/0, 1, None, fxc = 1, Arithmetic, DSS, sat = true, cmp = false, pred = true, "a - b"),
+    row!(Mad, "mad", 0x04/0, 1, None, fxc = 1, Arithmetic, DSSS, sat = true, cmp = false, pred = true, "a * b + c"),
+    row!(Mul, "mul", 0x05/0, 1, None, fxc = 1, Arithmetic, DSS, sat = true, cmp = false, pred = true, "a * b"),
+    row!(Rcp, "rcp", 0x06/0, 1, None, fxc = 1, Arithmetic, DSCALAR, sat = true, cmp = false, pred = true, "1 / x (x = 0 gives infinity)"),
+    row!(Rsq, "rsq", 0x07/0, 1, None, fxc = 1, Arithmetic, DSCALAR, sat = true, cmp = false, pred = true, "1 / sqrt(|x|) (x = 0 gives infinity)"),
+    row!(Dp3, "dp3", 0x08/0, 1, None, fxc = 1, Arithmetic, DSS, sat = true, cmp = false, pred = true, "3-component dot product"),
+    row!(Dp4, "dp4", 0x09/0, 1, None, fxc = 1, Arithmetic, DSS, sat = true, cmp = false, pred = true, "4-component dot product"),
+    row!(Min, "min", 0x0A/0, 1, None, fxc = 1, Arithmetic, DSS, sat = true, cmp = false, pred = true, "component-wise minimum"),
+    row!(Max, "max", 0x0B/0, 1, None, fxc = 1, Arithmetic, DSS, sat = true, cmp = false, pred = true, "component-wise maximum"),
+    row!(Exp, "exp", 0x0E/0, 1, None, fxc = 1, Arithmetic, DSCALAR, sat = true, cmp = false, pred = true, "2^x"),
+    row!(Log, "log", 0x0F/0, 1, None, fxc = 1, Arithmetic, DSCALAR, sat = true, cmp = false, pred = true, "log2(|x|) (x = 0 gives -FLT_MAX)"),
+    row!(Lrp, "lrp", 0x12/0, 2, None, fxc = 1, Arithmetic, DSSS, sat = true, cmp = false, pred = true, "a * b + (1 - a) * c"),
+    row!(Frc, "frc", 0x13/0, 1, None, fxc = 1, Arithmetic, DS, sat = false, cmp = false, pred = true, "x - floor(x)"),
+    row!(M4x4, "m4x4", 0x14/0, 4, None, fxc = 4, Arithmetic, DSS, sat = true, cmp = false, pred = true, "four dp4 with src1..src1+3"),
+    row!(M4x3, "m4x3", 0x15/0, 3, None, fxc = 3, Arithmetic, DSS, sat = true, cmp = false, pred = true, "three dp4 with src1..src1+2"),
+    row!(M3x4, "m3x4", 0x16/0, 4, None, fxc = 4, Arithmetic, DSS, sat = true, cmp = false, pred = true, "four dp3 with src1..src1+3"),
+    row!(M3x3, "m3x3", 0x17/0, 3, None, fxc = 3, Arithmetic, DSS, sat = true, cmp = false, pred = true, "three dp3 with src1..src1+2"),
+    row!(M3x2, "m3x2", 0x18/0, 2, None, fxc = 2, Arithmetic, DSS, sat = true, cmp = false, pred = true, "two dp3 with src1..src1+1"),
+    row!(Pow, "pow", 0x20/0, 3, None, fxc = 3, Arithmetic, &[O::Dst, O::ScalarSrc, O::ScalarSrc], sat = true, cmp = false, pred = true, "|a|^b"),
+    row!(Crs, "crs", 0x21/0, 2, None, fxc = 2, Arithmetic, DSS, sat = true, cmp = false, pred = true, "cross product"),
+    row!(Abs, "abs", 0x23/0, 1, None, fxc = 1, Arithmetic, DS, sat = true, cmp = false, pred = true, "|x|"),
+    row!(Nrm, "nrm", 0x24/0, 3, None, fxc = 3, Arithmetic, DS, sat = true, cmp = false, pred = true, "normalise xyz (zero length scales by FLT_MAX)"),
+    row!(SinCos, "sincos", 0x25/0, 8, None, fxc = 8, Arithmetic, DSCALAR, sat = false, cmp = false, pred = true, "x = cos, y = sin"),
+    row!(Cmp, "cmp", 0x58/0, 1, None, fxc = 1, Arithmetic, DSSS, sat = true, cmp = false, pred = true, "a >= 0 ? b : c"),
+    row!(Dp2Add, "dp2add", 0x5A/0, 2, None, fxc = 2, Arithmetic, &[O::Dst, O::Src, O::Src, O::ScalarSrc], sat = true, cmp = false, pred = true, "a.x*b.x + a.y*b.y + c"),
+    row!(Dsx, "dsx", 0x5B/0, 2, None, fxc = 2, Arithmetic, DS, sat = true, cmp = false, pred = true, "screen-space x derivative"),
+    row!(Dsy, "dsy", 0x5C/0, 2, None, fxc = 2, Arithmetic, DS, sat = true, cmp = false, pred = true, "screen-space y derivative"),
+    row!(TexKill, "texkill", 0x41/0, 2, None, fxc = 1, Texture, &[O::KillSrc], sat = false, cmp = false, pred = true, "discard the pixel if any of x, y, z < 0"),
+    row!(TexLd, "texld", 0x42/0, 1, Some(4), fxc = 1, Texture, TEX, sat = false, cmp = false, pred = true, "sample with implicit gradients"),
+    row!(TexLdP, "texldp", 0x42/1, 3, Some(4), fxc = 1, Texture, TEX, sat = false, cmp = false, pred = true, "sample after dividing by w"),
+    row!(TexLdB, "texldb", 0x42/2, 6, None, fxc = 1, Texture, TEX, sat = false, cmp = false, pred = true, "sample with LOD bias w"),
+    row!(TexLdL, "texldl", 0x5F/0, 2, Some(5), fxc = 2, Texture, TEX, sat = false, cmp = false, pred = true, "sample at explicit LOD w"),
+    row!(TexLdD, "texldd", 0x5D/0, 3, None, fxc = 3, Texture, &[O::Dst, O::Src, O::Sampler, O::Src, O::Src], sat = false, cmp = false, pred = true, "sample with explicit gradients"),
+    row!(Setp, "setp", 0x5E/0, 1, None, fxc = 1, Arithmetic, &[O::PredDst, O::Src, O::Src], sat = false, cmp = true, pred = true, "p0.c = a.c <op> b.c"),
+    row!(Call, "call", 0x19/0, 2, None, fxc = 2, Flow, &[O::Label], sat = false, cmp = false, pred = false, "call a subroutine"),
+    row!(CallNz, "callnz", 0x1A/0, 3, None, fxc = 3, Flow, &[O::Label, O::Condition], sat = false, cmp = false, pred = false, "call if the condition holds"),
+    row!(Loop, "loop", 0x1B/0, 3, None, fxc = 3, Flow, &[O::LoopCounter, O::IntReg], sat = false, cmp = false, pred = false, "loop i.x times, aL from i.y by i.z"),
+    row!(Ret, "ret", 0x1C/0, 1, None, fxc = 1, Flow, NONE, sat = false, cmp = false, pred = false, "return (ends main)"),
+    row!(EndLoop, "endloop", 0x1D/0, 2, None, fxc = 2, Flow, NONE, sat = false, cmp = false, pred = false, "end of loop"),
+    row!(Label, "label", 0x1E/0, 0, None, fxc = 0, Flow, &[O::Label], sat = false, cmp = false, pred = false, "subroutine entry"),
+    row!(Rep, "rep", 0x26/0, 3, None, fxc = 3, Flow, &[O::IntReg], sat = false, cmp = false, pred = false, "repeat i.x times"),
+    row!(EndRep, "endrep", 0x27/0, 2, None, fxc = 2, Flow, NONE, sat = false, cmp = false, pred = false, "end of rep"),
+    row!(If, "if", 0x28/0, 3, None, fxc = 3, Flow, &[O::Condition], sat = false, cmp = false, pred = false, "branch on b# or p0.c"),
+    row!(Ifc, "if", 0x29/0, 3, None, fxc = 3, Flow, &[O::ScalarSrc, O::ScalarSrc], sat = false, cmp = true, pred = false, "branch on a comparison"),
+    row!(Else, "else", 0x2A/0, 1, None, fxc = 1, Flow, NONE, sat = false, cmp = false, pred = false, "else branch"),
+    row!(EndIf, "endif", 0x2B/0, 1, None, fxc = 1, Flow, NONE, sat = false, cmp = false, pred = false, "end of if"),
+    row!(Break, "break", 0x2C/0, 1, None, fxc = 1, Flow, NONE, sat = false, cmp = false, pred = false, "leave the innermost rep/loop"),
+    row!(BreakC, "break", 0x2D/0, 3, None, fxc = 3, Flow, &[O::ScalarSrc, O::ScalarSrc], sat = false, cmp = true, pred = false, "break if the comparison holds"),
+    row!(BreakP, "breakp", 0x60/0, 3, None, fxc = 3, Flow, &[O::Condition], sat = false, cmp = false, pred = false, "break if p0.c holds"),
+    row!(Def, "def", 0x51/0, 0, None, fxc = 0, Declaration, &[O::Dst, O::FloatLits], sat = false, cmp = false, pred = false, "define a float constant"),
+    row!(DefI, "defi", 0x30/0, 0, None, fxc = 0, Declaration, &[O::Dst, O::IntLits], sat = false, cmp = false, pred = false, "define an integer constant"),
+    row!(DefB, "defb", 0x2F/0, 0, None, fxc = 0, Declaration, &[O::Dst, O::BoolLit], sat = false, cmp = false, pred = false, "define a boolean constant"),
+    row!(Dcl, "dcl", 0x1F/0, 0, None, fxc = 0, Declaration, NONE, sat = false, cmp = false, pred = false, "declare an input or sampler"),
 ];
 
 impl Opcode {
