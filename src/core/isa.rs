@@ -239,6 +239,20 @@ impl OpInfo {
     pub fn fxc_slots_of(&self, predicated: bool) -> u32 {
         self.fxc_slots + u32::from(predicated)
     }
+
+    /// How the listing's `(T texture, A arithmetic)` split counts one
+    /// instruction of this row, as (texture, arithmetic): the texld family
+    /// counts its sampling as texture slots (`texld`, `texldp`, `texldb` 1,
+    /// `texldl` 2, `texldd` 1 texture and 2 arithmetic), everything else —
+    /// `texkill` and the predicate's extra slot included — as arithmetic.
+    pub fn fxc_split_of(&self, predicated: bool) -> (u32, u32) {
+        let texture = match self.op {
+            Opcode::TexLd | Opcode::TexLdP | Opcode::TexLdB | Opcode::TexLdD => 1,
+            Opcode::TexLdL => 2,
+            _ => 0,
+        };
+        (texture, self.fxc_slots_of(predicated) - texture)
+    }
 }
 
 use Operand as O;
