@@ -1,6 +1,6 @@
-// Refused by D3DCompile: tex2D needs gradients, gradients are not allowed in a loop
-// whose trip count comes from a uniform, so the compiler tries to unroll it and gives up
-// (X3511). The working version is blur/motion_blur.hlsl, which uses tex2Dlod.
+// Refused by D3DCompile: the trip count is a uniform, so the loop must stay a loop with an exit
+// test, where the compiler will not compute tex2D's gradients (warning X3553); it tries to
+// unroll the loop instead and gives up (X3511). blur/motion_blur.hlsl uses tex2Dlod and compiles.
 // Camera motion blur: velocity from current and previous clip position.
 sampler2D frame : register(s0);
 sampler2D depth : register(s1);
