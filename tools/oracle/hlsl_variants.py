@@ -38,8 +38,8 @@ WIDEN = {
 SCALAR_OF = {t: ("half" if t.startswith("half") else "float") for t in WIDEN}
 BOOL_OF = {t: "bool" + t[len(SCALAR_OF[t]):] for t in WIDEN}
 
-COMPONENT_TYPES = ["float", "float2", "float4", "half3"]
-UNARY_TYPES = ["float", "float4", "half3"]
+COMPONENT_TYPES = ["float", "float4", "half3"]
+UNARY_TYPES = ["float4", "half3"]
 VECTOR_TYPES = ["float2", "float3", "float4", "half3"]
 
 # name -> (expression over inputs a, b, c; result kind; types)
