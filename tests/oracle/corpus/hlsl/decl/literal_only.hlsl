@@ -1,0 +1,2 @@
+// No constants at all: a literal colour (no constant table entries).
+float4 main() : COLOR { return float4(1, 0.5, 0.25, 1); }

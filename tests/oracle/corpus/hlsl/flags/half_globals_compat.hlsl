@@ -1,0 +1,14 @@
+// oracle: flags=ENABLE_BACKWARDS_COMPATIBILITY
+// half globals accepted (treated as float) under the backwards-compatibility flag.
+// half throughout: _pp modifiers on arithmetic and texture loads.
+sampler2D baseMap;
+half4 tintColor;
+half  intensity;
+
+half4 main(half2 uv : TEXCOORD0, half3 n : TEXCOORD1) : COLOR
+{
+    half3 N = normalize(n);
+    half4 c = tex2D(baseMap, uv) * tintColor;
+    c.rgb *= saturate(N.z) * intensity;
+    return c;
+}

@@ -1,0 +1,21 @@
+// Refused by D3DCompile (X3548): switch works on unsigned values, and ps_3_0 (no integer
+// arithmetic) can only convert an int it knows is not negative. flow/switch_material.hlsl
+// switches on (int)abs(id) and compiles.
+// switch on an int material id coming from the vertex stream.
+sampler2D t0 : register(s0);
+sampler2D t1 : register(s1);
+float4 tints[4];
+
+float4 main(float2 uv : TEXCOORD0, float id : TEXCOORD1) : COLOR
+{
+    int m = (int)id;
+    float4 c;
+    switch (m)
+    {
+        case 0: c = tex2D(t0, uv); break;
+        case 1: c = tex2D(t1, uv); break;
+        case 2: c = tex2D(t0, uv) * tex2D(t1, uv); break;
+        default: c = tints[min(m, 3)]; break;
+    }
+    return c;
+}
