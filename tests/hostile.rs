@@ -710,3 +710,165 @@ fn compiled_shaders_at_the_bounds() {
     );
     assert_eq!(fs::read(d.join("again.fxo")).unwrap(), bytes(&comments));
 }
+
+/// A small valid draw list with one target named `name` and one step.
+fn draw_list(name: &str, step: &str) -> String {
+    let name = serde_json::to_string(name).unwrap();
+    format!(
+        r#"{{"targets": [{{"name": {name}, "size": "8x8", "format": "R32F"}}], "steps": [{step}]}}"#
+    )
+}
+
+#[test]
+fn draw_list_names_never_become_paths_outside_the_output_folder() {
+    let d = tempfile::tempdir().unwrap();
+    let work = d.path().join("work");
+    fs::create_dir(&work).unwrap();
+    let abs = d.path().join("abs").display().to_string();
+    for name in [
+        "../escape",
+        abs.as_str(),
+        "a/b",
+        "..",
+        ".",
+        "",
+        "bad\u{1b}]0;title\u{7}",
+    ] {
+        let list = draw_list(
+            name,
+            &format!(r#"{{"clear": {}}}"#, serde_json::to_string(name).unwrap()),
+        );
+        write(&work, "list.json", &list);
+        let r = expect(
+            &work,
+            &["render", "list.json", "-o", "out"],
+            2,
+            "targets[0].name",
+        );
+        assert!(
+            r.stderr.contains("cannot be a file name"),
+            "{name:?}: {}",
+            r.stderr
+        );
+        assert!(
+            !r.stderr.contains('\u{1b}') && !r.stderr.contains('\u{7}'),
+            "{:?}",
+            r.stderr
+        );
+        assert_eq!(names(&work), ["list.json"], "{name:?} wrote something");
+        assert_eq!(
+            names(d.path()),
+            ["work"],
+            "{name:?} wrote outside the folder"
+        );
+    }
+}
+
+#[test]
+fn files_a_draw_list_names_are_read_under_the_input_cap() {
+    let d = tempfile::tempdir().unwrap();
+    let d = d.path();
+    write(
+        d,
+        "list.json",
+        &draw_list("t", r#"{"draw": "t", "shader": "/dev/zero"}"#),
+    );
+    expect(d, &["render", "list.json"], 2, "--max-input-bytes");
+    write(d, "big.psh", &format!("ps_3_0\n{}", "nop\n".repeat(300)));
+    write(
+        d,
+        "list.json",
+        &draw_list("t", r#"{"draw": "t", "shader": "big.psh"}"#),
+    );
+    expect(
+        d,
+        &["render", "list.json", "--max-input-bytes", "1000"],
+        2,
+        "larger than the cap of 1,000 bytes",
+    );
+    // The list itself, too.
+    expect(d, &["render", "/dev/zero"], 2, "--max-input-bytes");
+}
+
+#[test]
+fn a_draw_list_may_start_with_a_byte_order_mark() {
+    let d = tempfile::tempdir().unwrap();
+    let d = d.path();
+    let list = format!(
+        "\u{feff}{}",
+        draw_list("t", r#"{"clear": "t", "color": [1, 0, 0, 0]}"#)
+    );
+    write(d, "list.json", &list);
+    expect(d, &["render", "list.json"], 0, "1 targets");
+}
+
+#[test]
+fn a_closed_pipe_keeps_the_verdict() {
+    let d = tempfile::tempdir().unwrap();
+    let d = d.path();
+    // 600 adds: over the 512-slot budget under either slot table.
+    write(
+        d,
+        "over.psh",
+        &format!(
+            "ps_3_0\nmov r0, c0\n{}mov oC0, r0\n",
+            "add r0, r0, c0\n".repeat(600)
+        ),
+    );
+    for args in [&["check", "over.psh"][..], &["check", "over.psh", "--json"]] {
+        let mut child = Command::new(env!("CARGO_BIN_EXE_ps30"))
+            .args(args)
+            .current_dir(d)
+            .stdin(Stdio::null())
+            .stdout(Stdio::piped())
+            .stderr(Stdio::null())
+            .spawn()
+            .unwrap();
+        // The reader goes away before anything is written (`| head -0`).
+        drop(child.stdout.take());
+        let status = child.wait().unwrap();
+        assert_eq!(
+            status.code(),
+            Some(1),
+            "{args:?}: the over-budget verdict was lost"
+        );
+    }
+}
+
+#[test]
+fn an_interrupted_render_removes_the_folder_it_created() {
+    let d = tempfile::tempdir().unwrap();
+    let d = d.path();
+    // Hundreds of mip reductions of a large target: seconds of work.
+    let steps = vec![r#"{"mips": "t"}"#; 400].join(", ");
+    let list = format!(
+        r#"{{"targets": [{{"name": "t", "size": "2048x2048", "format": "A32B32G32R32F"}}], "steps": [{steps}]}}"#
+    );
+    write(d, "list.json", &list);
+    let mut child = Command::new(env!("CARGO_BIN_EXE_ps30"))
+        .args(["render", "list.json", "-o", "new", "--max-steps", "1000"])
+        .current_dir(d)
+        .stdin(Stdio::null())
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    // Wait until the run has made its output folder, then interrupt it.
+    let start = Instant::now();
+    while !d.join("new").exists() && start.elapsed() < DEADLINE {
+        std::thread::sleep(Duration::from_millis(5));
+    }
+    assert!(
+        d.join("new").exists(),
+        "render never created its output folder"
+    );
+    // SAFETY: sending a signal to our own child.
+    unsafe { libc::kill(child.id() as libc::pid_t, libc::SIGINT) };
+    let status = child.wait().unwrap();
+    assert_eq!(status.code(), Some(130));
+    assert_eq!(
+        names(d),
+        ["list.json"],
+        "the interrupted run left its folder"
+    );
+}

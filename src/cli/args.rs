@@ -280,14 +280,12 @@ impl SourceArgs {
     }
 }
 
-/// Default cap on a shader file's size: 1 MiB holds a listing of more than
-/// 100,000 lines, far past the 32,768 slots of any ps_3_0 part.
-pub const DEFAULT_MAX_INPUT_BYTES: u64 = 1 << 20;
+use ps30::core::input::DEFAULT_MAX_INPUT_BYTES;
 
 /// The cap on shader files read from disk.
 #[derive(Args, Debug)]
 pub struct InputArgs {
-    /// Refuse shader files larger than this many bytes.
+    /// Refuse shader files and draw lists larger than this many bytes.
     #[arg(long, value_name = "N", default_value_t = DEFAULT_MAX_INPUT_BYTES, value_parser = clap::value_parser!(u64).range(1..))]
     pub max_input_bytes: u64,
 }

@@ -1,7 +1,7 @@
 //! `ps30 render`: runs a draw list a user wrote (JSON) — clears, draws with
 //! blending and write masks, mip-chain reductions — and writes its targets.
 
-use super::args::ExecArgs;
+use super::args::{ExecArgs, InputArgs};
 use super::io::{check_output_dir, eprint, print_json, say};
 use super::ui::Ui;
 use super::{BadInput, Outcome};
@@ -29,6 +29,8 @@ pub struct Args {
     max_steps: u64,
     #[command(flatten)]
     exec: ExecArgs,
+    #[command(flatten)]
+    input: InputArgs,
 }
 
 /// The files of `-o DIR`, staged together and renamed all at once at the
@@ -65,6 +67,7 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
     let limits = file::FileLimits {
         max_pixels: args.exec.max_pixels,
         max_steps: args.max_steps as usize,
+        max_input_bytes: args.input.max_input_bytes,
     };
     let loaded = file::read(&args.list, &limits)?;
     let list = &loaded.list;
