@@ -872,3 +872,34 @@ fn an_interrupted_render_removes_the_folder_it_created() {
         "the interrupted run left its folder"
     );
 }
+
+#[test]
+fn a_repeated_comment_block_is_bounded_by_its_tokens() {
+    let d = tempfile::tempdir().unwrap();
+    let d = d.path();
+    // One kept comment block of 32,767 tokens (a token a word, 8 hex digits),
+    // repeated 10,000 times: 1.3 GB of bytecode if it were expanded.
+    let words: Vec<String> = (0..32_767u32)
+        .map(|i| format!("{:08x}", 0x4000_0000 + i))
+        .collect();
+    let lines: Vec<String> = words.chunks(16).map(|c| c.join(" ")).collect();
+    let text = format!(
+        "ps_3_0\nBEGIN_REPEAT_BLOCK(10000)\n//#comment {}\n//#+ {}\nEND_REPEAT_BLOCK\nmov oC0, c0\n",
+        lines[0],
+        lines[1..].join("\n//#+ ")
+    );
+    write(d, "bomb.psh", &text);
+    for cmd in ["asm", "check", "expand"] {
+        let mut args = vec![cmd, "bomb.psh", "--max-input-bytes", "1000000"];
+        if cmd == "asm" {
+            args.extend(["-o", "bomb.fxo"]);
+        }
+        expand_refused(d, &args);
+    }
+    assert!(!d.join("bomb.fxo").exists());
+}
+
+#[track_caller]
+fn expand_refused(d: &Path, args: &[&str]) {
+    expect(d, args, 2, "counts one per token");
+}
