@@ -901,5 +901,97 @@ fn a_repeated_comment_block_is_bounded_by_its_tokens() {
 
 #[track_caller]
 fn expand_refused(d: &Path, args: &[&str]) {
-    expect(d, args, 2, "counts one per token");
+    expect(d, args, 2, "counts one per 6 tokens");
+}
+
+/// A constant table with one float4 constant `name` at c`index`, `count`
+/// registers, as `//#comment` lines.
+fn table_lines(name: &'static str, index: u16, count: u16) -> String {
+    use crate::common::ctab::{comment_lines, table, Const, Ty};
+    let body = table(
+        "t",
+        "ps_3_0",
+        0xffff_0300,
+        &[Const {
+            name,
+            set: 2,
+            index,
+            count,
+            ty: Ty::numeric(1, 3, 1, 4, count),
+            default: None,
+        }],
+    );
+    comment_lines(&body)
+}
+
+#[test]
+fn constant_tables_are_checked_against_the_register_files() {
+    let d = tempfile::tempdir().unwrap();
+    let d = d.path();
+    // c220 … c227: four registers that do not exist.
+    write(
+        d,
+        "past.psh",
+        &format!("ps_3_0\n{}mov oC0, c0\n", table_lines("k", 220, 8)),
+    );
+    for cmd in ["check", "asm"] {
+        let mut args = vec![cmd, "past.psh"];
+        if cmd == "asm" {
+            args.extend(["-o", "past.fxo"]);
+        }
+        expect(d, &args, 2, "past the last float4 register, c223");
+    }
+    // A second table that does not decode is refused as the bytecode reader
+    // would refuse what asm wrote; a table in a block repeated zero times is
+    // not written, so not listed either.
+    let broken = table_lines("k", 0, 1).replacen(" 0000001c", " 0000ffff", 1);
+    write(
+        d,
+        "two.psh",
+        &format!("ps_3_0\n{}{broken}mov oC0, c0\n", table_lines("k", 0, 1)),
+    );
+    expect(
+        d,
+        &["asm", "two.psh", "-o", "two.fxo"],
+        2,
+        "the constant table does not decode",
+    );
+    assert!(!d.join("two.fxo").exists());
+    write(
+        d,
+        "zero.psh",
+        &format!(
+            "ps_3_0\nBEGIN_REPEAT_BLOCK(0)\n{}END_REPEAT_BLOCK\nmov oC0, c0\n",
+            table_lines("g_hidden", 0, 1)
+        ),
+    );
+    let r = expect(d, &["check", "zero.psh"], 0, "");
+    assert!(!r.stdout.contains("g_hidden"), "{}", r.stdout);
+}
+
+#[test]
+fn names_from_a_file_are_escaped_in_messages() {
+    let d = tempfile::tempdir().unwrap();
+    let d = d.path();
+    write(
+        d,
+        "named.psh",
+        &format!(
+            "ps_3_0\n{}mov oC0, c0\n",
+            table_lines("k\u{1b}]0;owned\u{7}\nfake: line", 0, 1)
+        ),
+    );
+    let r = expect(
+        d,
+        &["check", "named.psh", "--const", "nosuch=1"],
+        2,
+        "has no `nosuch`",
+    );
+    assert!(
+        !r.stderr.contains('\u{1b}')
+            && !r.stderr.contains('\u{7}')
+            && !r.stderr.contains("\nfake: line"),
+        "{:?}",
+        r.stderr
+    );
 }

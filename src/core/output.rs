@@ -27,6 +27,7 @@
 //! `kill -9` cannot be caught, and leaves at most those `.NAME.PID.N.tmp`
 //! files, named after the process that left them.
 
+use crate::core::bytecode::ctab::escape;
 use std::error::Error;
 use std::fs::{self, File, OpenOptions};
 use std::io::{self, BufWriter, Write};
@@ -310,20 +311,6 @@ pub fn plain_name(name: &str) -> Result<(), String> {
         return Ok(());
     };
     Err(format!("`{}` cannot be a file name: {why}", escape(name)))
-}
-
-/// `text` with control characters written as escapes (`\u{1b}`), so that
-/// a name from the input cannot drive the terminal a message is shown on.
-pub fn escape(text: &str) -> String {
-    text.chars()
-        .flat_map(|c| {
-            if c.is_control() {
-                c.escape_default().collect::<Vec<_>>()
-            } else {
-                vec![c]
-            }
-        })
-        .collect()
 }
 
 /// Several files written all or nothing: each is staged as a temporary file

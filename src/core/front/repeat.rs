@@ -15,9 +15,15 @@ use std::sync::Arc;
 /// repetitions it may make. ps_3_0 programs have at most 32,768 slots, so a
 /// legitimate expansion is far below this; raise it with `--max-expanded`.
 /// A kept comment block (a constant table: up to 32,767 tokens in one
-/// statement) counts one statement per token, so that the cap bounds the
-/// bytes an expansion writes, not only its lines.
+/// statement) counts as many statements as instructions of its size would
+/// ([`COMMENT_TOKENS_PER_STATEMENT`]), so that the cap bounds the bytes an
+/// expansion writes, not only its lines.
 pub const DEFAULT_MAX_EXPANDED: u64 = 100_000;
+
+/// Tokens of a kept comment block that weigh one statement: a ps_3_0
+/// instruction takes at most six (`texldd`: its token, a destination and
+/// four sources).
+pub const COMMENT_TOKENS_PER_STATEMENT: u64 = 6;
 
 /// Deepest REPEAT_BLOCK nesting accepted (the article nests two).
 pub const MAX_DEPTH: usize = 64;
@@ -160,7 +166,9 @@ fn block_tree(stmts: &[Stmt], defines: &BTreeMap<String, u64>) -> Result<Vec<Nod
             },
             _ => {
                 let weight = match stmt {
-                    Stmt::Comment { tokens, .. } => (tokens.len() as u64).max(1),
+                    Stmt::Comment { tokens, .. } => {
+                        (tokens.len() as u64).div_ceil(COMMENT_TOKENS_PER_STATEMENT).max(1)
+                    }
                     _ => 1,
                 };
                 match stack.last_mut() {
@@ -278,7 +286,7 @@ fn over_cap(top: &[Node], stmts: &[Stmt], total: Size, cap: u64) -> Option<Diagn
 }
 
 /// How the cap's messages say that comment blocks weigh their tokens.
-const COMMENT_NOTE: &str = " (a kept comment block counts one per token)";
+const COMMENT_NOTE: &str = " (a kept comment block counts one per 6 tokens)";
 
 fn resolve(count: &Count, defines: &BTreeMap<String, u64>) -> Result<u32, Diagnostic> {
     let (value, span) = match count {
