@@ -995,3 +995,40 @@ fn names_from_a_file_are_escaped_in_messages() {
         r.stderr
     );
 }
+
+#[test]
+fn translating_a_long_shader_takes_time_linear_in_its_length() {
+    let d = tempfile::tempdir().unwrap();
+    let d = d.path();
+    // 40,000 instructions in one straight run (600 KB): naga's MSL writer
+    // removed each block's value names one by one from an ordered map,
+    // quadratic in a block's length (18 s in a release build); the
+    // translation now cuts long runs into nested blocks. Under the child's
+    // 20 s CPU limit the quadratic version does not finish.
+    write(
+        d,
+        "long.psh",
+        &format!(
+            "ps_3_0\ndef c0, 1, 2, 3, 4\nmov r0, c0\n{}mov oC0, r0\n",
+            "add r0, r0, c0\n".repeat(40_000)
+        ),
+    );
+    for to in ["msl", "wgsl"] {
+        let out = format!("long.{to}");
+        expect(
+            d,
+            &[
+                "translate",
+                "long.psh",
+                "--to",
+                to,
+                "--max-expanded",
+                "100000",
+                "-o",
+                &out,
+            ],
+            0,
+            "wrote",
+        );
+    }
+}

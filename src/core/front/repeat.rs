@@ -166,9 +166,9 @@ fn block_tree(stmts: &[Stmt], defines: &BTreeMap<String, u64>) -> Result<Vec<Nod
             },
             _ => {
                 let weight = match stmt {
-                    Stmt::Comment { tokens, .. } => {
-                        (tokens.len() as u64).div_ceil(COMMENT_TOKENS_PER_STATEMENT).max(1)
-                    }
+                    Stmt::Comment { tokens, .. } => (tokens.len() as u64)
+                        .div_ceil(COMMENT_TOKENS_PER_STATEMENT)
+                        .max(1),
                     _ => 1,
                 };
                 match stack.last_mut() {
