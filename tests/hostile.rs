@@ -846,7 +846,16 @@ fn an_interrupted_render_removes_the_folder_it_created() {
     );
     write(d, "list.json", &list);
     let mut child = Command::new(env!("CARGO_BIN_EXE_ps30"))
-        .args(["render", "list.json", "-o", "new", "--max-steps", "1000"])
+        .args([
+            "render",
+            "list.json",
+            "-o",
+            "new",
+            "--max-steps",
+            "1000",
+            "--max-list-pixels",
+            "10000000000",
+        ])
         .current_dir(d)
         .stdin(Stdio::null())
         .stdout(Stdio::null())
@@ -1031,4 +1040,67 @@ fn translating_a_long_shader_takes_time_linear_in_its_length() {
             "wrote",
         );
     }
+}
+
+#[test]
+fn a_whole_draw_list_is_held_to_a_budget() {
+    let d = tempfile::tempdir().unwrap();
+    let d = d.path();
+    // 300 reductions of a 2048 × 2048 target: refused before any step runs.
+    let mips = vec![r#"{"mips": "t"}"#; 300].join(", ");
+    write(
+        d,
+        "mips.json",
+        &format!(
+            r#"{{"targets": [{{"name": "t", "size": "2048x2048", "format": "A32B32G32R32F"}}], "steps": [{mips}]}}"#
+        ),
+    );
+    expect(d, &["render", "mips.json"], 2, "--max-list-pixels");
+    // Every step written after it: an upper bound on the staged bytes, checked
+    // before any step runs, and nothing left behind.
+    let clears = vec![r#"{"clear": "t", "color": [1, 1, 1, 1]}"#; 100].join(", ");
+    write(
+        d,
+        "clears.json",
+        &format!(
+            r#"{{"targets": [{{"name": "t", "size": "2048x2048", "format": "A32B32G32R32F"}}], "steps": [{clears}]}}"#
+        ),
+    );
+    expect(
+        d,
+        &[
+            "render",
+            "clears.json",
+            "-o",
+            "out",
+            "--every-step",
+            "--max-list-pixels",
+            "1000000000",
+        ],
+        2,
+        "--max-staged-bytes",
+    );
+    assert!(!d.join("out").exists());
+    // The instruction slots of all draws together: stopped at the draw that
+    // passes the budget (each draw here executes 3 slots in each of 64 pixels).
+    let draw = r#"{"draw": "t", "shader": "s.psh"}"#;
+    write(
+        d,
+        "s.psh",
+        "ps_3_0\ndef c0, 1, 2, 3, 4\nmov r0, c0\nadd r0, r0, c0\nmov oC0, r0\n",
+    );
+    write(
+        d,
+        "draws.json",
+        &draw_list("t", &vec![draw; 20].join(", ")).replace("R32F", "A32B32G32R32F"),
+    );
+    expect(d, &["render", "draws.json"], 0, "20 steps");
+    let r = expect(
+        d,
+        &["render", "draws.json", "--max-list-executed", "1000"],
+        2,
+        "--max-list-executed",
+    );
+    // 1,000 slots allow five draws of 192; the sixth passes the budget.
+    assert!(r.stderr.contains("steps[5]"), "{}", r.stderr);
 }

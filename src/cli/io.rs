@@ -85,11 +85,10 @@ pub const STDIN_NAME: &str = "<stdin>";
 pub fn read_input(spec: &str, max_bytes: u64) -> Result<(String, Vec<u8>), BadInput> {
     let name = if spec == "-" { STDIN_NAME } else { spec };
     let bytes = if spec == "-" {
-        input::read_capped(std::io::stdin().lock(), name, "shader", max_bytes)
-    } else {
-        std::fs::File::open(spec)
+        input::read_capped(std::io::stdin().lock(), "shader", max_bytes)
             .map_err(|e| format!("{name}: {e}"))
-            .and_then(|f| input::read_capped(f, name, "shader", max_bytes))
+    } else {
+        input::read_file(Path::new(spec), "shader", max_bytes)
     }
     .map_err(BadInput)?;
     Ok((name.to_string(), bytes))

@@ -14,34 +14,30 @@ use std::path::Path;
 pub const DEFAULT_MAX_INPUT_BYTES: u64 = 1 << 20;
 
 /// Reads all of `reader` if it holds at most `max_bytes` bytes; reads one
-/// byte past the cap to tell, never more. `name` and `what` make the error:
-/// "NAME: larger than the cap of N bytes for a WHAT (raise it with
-/// --max-input-bytes)".
-pub fn read_capped(
-    reader: impl Read,
-    name: &str,
-    what: &str,
-    max_bytes: u64,
-) -> Result<Vec<u8>, String> {
+/// byte past the cap to tell, never more. The error does not name the input
+/// (callers put its name before it): "larger than the cap of N bytes for a
+/// WHAT (raise it with --max-input-bytes)", or the system's reason.
+pub fn read_capped(reader: impl Read, what: &str, max_bytes: u64) -> Result<Vec<u8>, String> {
     let mut bytes = Vec::new();
     reader
         .take(max_bytes.saturating_add(1))
         .read_to_end(&mut bytes)
-        .map_err(|e| format!("{name}: {e}"))?;
+        .map_err(|e| e.to_string())?;
     if bytes.len() as u64 > max_bytes {
         return Err(format!(
-            "{name}: larger than the cap of {} bytes for a {what} (raise it with --max-input-bytes)",
+            "larger than the cap of {} bytes for a {what} (raise it with --max-input-bytes)",
             crate::core::numbers::thousands(max_bytes)
         ));
     }
     Ok(bytes)
 }
 
-/// [`read_capped`] on a file.
+/// [`read_capped`] on a file, the error naming it (`PATH: …`).
 pub fn read_file(path: &Path, what: &str, max_bytes: u64) -> Result<Vec<u8>, String> {
-    let name = path.display().to_string();
-    let file = std::fs::File::open(path).map_err(|e| format!("{name}: {e}"))?;
-    read_capped(file, &name, what, max_bytes)
+    std::fs::File::open(path)
+        .map_err(|e| e.to_string())
+        .and_then(|f| read_capped(f, what, max_bytes))
+        .map_err(|e| format!("{}: {e}", path.display()))
 }
 
 #[cfg(test)]
@@ -51,12 +47,15 @@ mod tests {
     #[test]
     fn a_reader_past_the_cap_is_refused_after_one_byte_more() {
         let endless = std::io::repeat(7);
-        let e = read_capped(endless, "zero", "shader", 1000).unwrap_err();
-        assert!(e.contains("larger than the cap of 1,000 bytes"), "{e}");
+        let e = read_capped(endless, "shader", 1000).unwrap_err();
+        assert!(
+            e.starts_with("larger than the cap of 1,000 bytes for a shader"),
+            "{e}"
+        );
         assert_eq!(
-            read_capped(&[1u8, 2, 3][..], "x", "shader", 3).unwrap(),
+            read_capped(&[1u8, 2, 3][..], "shader", 3).unwrap(),
             vec![1, 2, 3]
         );
-        assert!(read_capped(&[1u8, 2, 3, 4][..], "x", "shader", 3).is_err());
+        assert!(read_capped(&[1u8, 2, 3, 4][..], "shader", 3).is_err());
     }
 }

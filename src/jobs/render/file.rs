@@ -217,7 +217,9 @@ pub fn read(path: &Path, limits: &FileLimits) -> Result<Loaded, FileError> {
         at: at.to_string(),
         message,
     };
-    let mut bytes = crate::core::input::read_file(path, "draw list", limits.max_input_bytes)
+    let mut bytes = std::fs::File::open(path)
+        .map_err(|e| e.to_string())
+        .and_then(|f| crate::core::input::read_capped(f, "draw list", limits.max_input_bytes))
         .map_err(|e| fail("", e))?;
     // A UTF-8 byte-order mark (editors on Windows write one) is not JSON,
     // but it says nothing the text does not: it is dropped.
