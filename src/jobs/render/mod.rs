@@ -20,7 +20,7 @@
 
 pub mod file;
 
-use crate::core::cost::{self, Environment, Profile, Range};
+use crate::core::cost::{self, Profile, Range};
 use crate::core::emu::{
     self, findings::Finding, Compiled, Constants, Draw, EmuError, LinearInput, SamplerState,
     TextureLevels,
@@ -516,20 +516,12 @@ fn draw(
     Ok((detail, executed_total))
 }
 
-/// The cost model's executed range for a draw: every integer and boolean
-/// constant as the draw sets it (0 / false where it sets none).
+/// The cost model's executed range for a draw, under its constants.
 fn static_count(shader: &ShaderSpec, c: &Constants) -> Result<Range, DrawFailure> {
-    let mut env = Environment::default();
-    for i in 0..16usize {
-        env.ints
-            .insert(i as u32, c.int.get(i).copied().unwrap_or([0; 4]));
-        env.bools
-            .insert(i as u32, c.bool.get(i).copied().unwrap_or(false));
-    }
     let a = cost::analyse(
         &shader.loaded.shader,
         &shader.loaded.file,
-        &env,
+        &crate::jobs::backend::environment(c),
         &Profile::ps_3_0(),
     )
     .map_err(|e| DrawFailure::Message(format!("{}: {e}", shader.name)))?;
