@@ -319,7 +319,8 @@ impl Decoder<'_> {
                 return err(
                     at + 4,
                     format!(
-                        "constant `{name}` has register set {s}, which does not exist (0 to 3)"
+                        "constant `{}` has register set {s}, which does not exist (0 to 3)",
+                        escape(&name)
                     ),
                 )
             }
@@ -450,7 +451,8 @@ impl Decoder<'_> {
             return err(
                 from,
                 format!(
-                    "the default value of `{name}` ({words} words at offset {at}) runs past the end of the table ({} bytes)",
+                    "the default value of `{}` ({words} words at offset {at}) runs past the end of the table ({} bytes)",
+                    escape(name),
                     self.bytes.len()
                 ),
             );
