@@ -166,3 +166,44 @@ fn luminance_on_the_gpu_prints_the_device_and_agrees() {
     assert!(text.contains("not counted: drawn on the GPU"), "{text}");
     assert!(text.contains(": agree"), "{text}");
 }
+
+#[test]
+fn a_gpu_draw_is_held_to_the_per_pixel_cap() {
+    if gpu_device::gpu("a_gpu_draw_is_held_to_the_per_pixel_cap").is_none() {
+        return;
+    }
+    // Three nested rep 255: 16,581,375 additions a pixel, past the default
+    // cap of 10,000,000 executed slots. The emulator stops the pixel; a GPU
+    // cannot, and a driver may cut the loops short (llvmpipe gave 65,025),
+    // so the GPU draw is refused up front.
+    let dir = tempfile::tempdir().unwrap();
+    let shader = dir.path().join("rep3.psh");
+    std::fs::write(
+        &shader,
+        "ps_3_0\ndefi i0, 255, 0, 0, 0\ndef c0, 1, 0, 0, 0\nmov r0, c0.y\nrep i0\nrep i0\nrep i0\nadd r0, r0, c0\nendrep\nendrep\nendrep\nmov oC0, r0\n",
+    )
+    .unwrap();
+    let shader = shader.to_str().unwrap();
+    let image = "assets/hdr/forest.hdr";
+    let run = |backend: &str| {
+        ps30(
+            &[
+                "run",
+                shader,
+                "--image",
+                image,
+                "--target",
+                "1x1",
+                "--backend",
+                backend,
+            ],
+            repo(),
+        )
+    };
+    for backend in ["emulator", "gpu"] {
+        let out = run(backend);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{backend}: {err}");
+        assert!(err.contains("--max-executed-per-pixel"), "{backend}: {err}");
+    }
+}

@@ -710,3 +710,397 @@ fn compiled_shaders_at_the_bounds() {
     );
     assert_eq!(fs::read(d.join("again.fxo")).unwrap(), bytes(&comments));
 }
+
+/// A small valid draw list with one target named `name` and one step.
+fn draw_list(name: &str, step: &str) -> String {
+    let name = serde_json::to_string(name).unwrap();
+    format!(
+        r#"{{"targets": [{{"name": {name}, "size": "8x8", "format": "R32F"}}], "steps": [{step}]}}"#
+    )
+}
+
+#[test]
+fn draw_list_names_never_become_paths_outside_the_output_folder() {
+    let d = tempfile::tempdir().unwrap();
+    let work = d.path().join("work");
+    fs::create_dir(&work).unwrap();
+    let abs = d.path().join("abs").display().to_string();
+    for name in [
+        "../escape",
+        abs.as_str(),
+        "a/b",
+        "..",
+        ".",
+        "",
+        "bad\u{1b}]0;title\u{7}",
+    ] {
+        let list = draw_list(
+            name,
+            &format!(r#"{{"clear": {}}}"#, serde_json::to_string(name).unwrap()),
+        );
+        write(&work, "list.json", &list);
+        let r = expect(
+            &work,
+            &["render", "list.json", "-o", "out"],
+            2,
+            "targets[0].name",
+        );
+        assert!(
+            r.stderr.contains("cannot be a file name"),
+            "{name:?}: {}",
+            r.stderr
+        );
+        assert!(
+            !r.stderr.contains('\u{1b}') && !r.stderr.contains('\u{7}'),
+            "{:?}",
+            r.stderr
+        );
+        assert_eq!(names(&work), ["list.json"], "{name:?} wrote something");
+        assert_eq!(
+            names(d.path()),
+            ["work"],
+            "{name:?} wrote outside the folder"
+        );
+    }
+}
+
+#[test]
+fn files_a_draw_list_names_are_read_under_the_input_cap() {
+    let d = tempfile::tempdir().unwrap();
+    let d = d.path();
+    write(
+        d,
+        "list.json",
+        &draw_list("t", r#"{"draw": "t", "shader": "/dev/zero"}"#),
+    );
+    expect(d, &["render", "list.json"], 2, "--max-input-bytes");
+    write(d, "big.psh", &format!("ps_3_0\n{}", "nop\n".repeat(300)));
+    write(
+        d,
+        "list.json",
+        &draw_list("t", r#"{"draw": "t", "shader": "big.psh"}"#),
+    );
+    expect(
+        d,
+        &["render", "list.json", "--max-input-bytes", "1000"],
+        2,
+        "larger than the cap of 1,000 bytes",
+    );
+    // The list itself, too.
+    expect(d, &["render", "/dev/zero"], 2, "--max-input-bytes");
+}
+
+#[test]
+fn a_draw_list_may_start_with_a_byte_order_mark() {
+    let d = tempfile::tempdir().unwrap();
+    let d = d.path();
+    let list = format!(
+        "\u{feff}{}",
+        draw_list("t", r#"{"clear": "t", "color": [1, 0, 0, 0]}"#)
+    );
+    write(d, "list.json", &list);
+    expect(d, &["render", "list.json"], 0, "1 targets");
+}
+
+#[test]
+fn a_closed_pipe_keeps_the_verdict() {
+    let d = tempfile::tempdir().unwrap();
+    let d = d.path();
+    // 600 adds: over the 512-slot budget under either slot table.
+    write(
+        d,
+        "over.psh",
+        &format!(
+            "ps_3_0\nmov r0, c0\n{}mov oC0, r0\n",
+            "add r0, r0, c0\n".repeat(600)
+        ),
+    );
+    for args in [&["check", "over.psh"][..], &["check", "over.psh", "--json"]] {
+        let mut child = Command::new(env!("CARGO_BIN_EXE_ps30"))
+            .args(args)
+            .current_dir(d)
+            .stdin(Stdio::null())
+            .stdout(Stdio::piped())
+            .stderr(Stdio::null())
+            .spawn()
+            .unwrap();
+        // The reader goes away before anything is written (`| head -0`).
+        drop(child.stdout.take());
+        let status = child.wait().unwrap();
+        assert_eq!(
+            status.code(),
+            Some(1),
+            "{args:?}: the over-budget verdict was lost"
+        );
+    }
+}
+
+#[test]
+fn an_interrupted_render_removes_the_folder_it_created() {
+    let d = tempfile::tempdir().unwrap();
+    let d = d.path();
+    // Hundreds of mip reductions of a large target: seconds of work.
+    let steps = vec![r#"{"mips": "t"}"#; 400].join(", ");
+    let list = format!(
+        r#"{{"targets": [{{"name": "t", "size": "2048x2048", "format": "A32B32G32R32F"}}], "steps": [{steps}]}}"#
+    );
+    write(d, "list.json", &list);
+    let mut child = Command::new(env!("CARGO_BIN_EXE_ps30"))
+        .args([
+            "render",
+            "list.json",
+            "-o",
+            "new",
+            "--max-steps",
+            "1000",
+            "--max-list-pixels",
+            "10000000000",
+        ])
+        .current_dir(d)
+        .stdin(Stdio::null())
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    // Wait until the run has made its output folder, then interrupt it.
+    let start = Instant::now();
+    while !d.join("new").exists() && start.elapsed() < DEADLINE {
+        std::thread::sleep(Duration::from_millis(5));
+    }
+    assert!(
+        d.join("new").exists(),
+        "render never created its output folder"
+    );
+    // SAFETY: sending a signal to our own child.
+    unsafe { libc::kill(child.id() as libc::pid_t, libc::SIGINT) };
+    let status = child.wait().unwrap();
+    assert_eq!(status.code(), Some(130));
+    assert_eq!(
+        names(d),
+        ["list.json"],
+        "the interrupted run left its folder"
+    );
+}
+
+#[test]
+fn a_repeated_comment_block_is_bounded_by_its_tokens() {
+    let d = tempfile::tempdir().unwrap();
+    let d = d.path();
+    // One kept comment block of 32,767 tokens (a token a word, 8 hex digits),
+    // repeated 10,000 times: 1.3 GB of bytecode if it were expanded.
+    let words: Vec<String> = (0..32_767u32)
+        .map(|i| format!("{:08x}", 0x4000_0000 + i))
+        .collect();
+    let lines: Vec<String> = words.chunks(16).map(|c| c.join(" ")).collect();
+    let text = format!(
+        "ps_3_0\nBEGIN_REPEAT_BLOCK(10000)\n//#comment {}\n//#+ {}\nEND_REPEAT_BLOCK\nmov oC0, c0\n",
+        lines[0],
+        lines[1..].join("\n//#+ ")
+    );
+    write(d, "bomb.psh", &text);
+    for cmd in ["asm", "check", "expand"] {
+        let mut args = vec![cmd, "bomb.psh", "--max-input-bytes", "1000000"];
+        if cmd == "asm" {
+            args.extend(["-o", "bomb.fxo"]);
+        }
+        expand_refused(d, &args);
+    }
+    assert!(!d.join("bomb.fxo").exists());
+}
+
+#[track_caller]
+fn expand_refused(d: &Path, args: &[&str]) {
+    expect(d, args, 2, "counts one per 6 tokens");
+}
+
+/// A constant table with one float4 constant `name` at c`index`, `count`
+/// registers, as `//#comment` lines.
+fn table_lines(name: &'static str, index: u16, count: u16) -> String {
+    use crate::common::ctab::{comment_lines, table, Const, Ty};
+    let body = table(
+        "t",
+        "ps_3_0",
+        0xffff_0300,
+        &[Const {
+            name,
+            set: 2,
+            index,
+            count,
+            ty: Ty::numeric(1, 3, 1, 4, count),
+            default: None,
+        }],
+    );
+    comment_lines(&body)
+}
+
+#[test]
+fn constant_tables_are_checked_against_the_register_files() {
+    let d = tempfile::tempdir().unwrap();
+    let d = d.path();
+    // c220 … c227: four registers that do not exist.
+    write(
+        d,
+        "past.psh",
+        &format!("ps_3_0\n{}mov oC0, c0\n", table_lines("k", 220, 8)),
+    );
+    for cmd in ["check", "asm"] {
+        let mut args = vec![cmd, "past.psh"];
+        if cmd == "asm" {
+            args.extend(["-o", "past.fxo"]);
+        }
+        expect(d, &args, 2, "past the last float4 register, c223");
+    }
+    // A second table that does not decode is refused as the bytecode reader
+    // would refuse what asm wrote; a table in a block repeated zero times is
+    // not written, so not listed either.
+    let broken = table_lines("k", 0, 1).replacen(" 0000001c", " 0000ffff", 1);
+    write(
+        d,
+        "two.psh",
+        &format!("ps_3_0\n{}{broken}mov oC0, c0\n", table_lines("k", 0, 1)),
+    );
+    expect(
+        d,
+        &["asm", "two.psh", "-o", "two.fxo"],
+        2,
+        "the constant table does not decode",
+    );
+    assert!(!d.join("two.fxo").exists());
+    write(
+        d,
+        "zero.psh",
+        &format!(
+            "ps_3_0\nBEGIN_REPEAT_BLOCK(0)\n{}END_REPEAT_BLOCK\nmov oC0, c0\n",
+            table_lines("g_hidden", 0, 1)
+        ),
+    );
+    let r = expect(d, &["check", "zero.psh"], 0, "");
+    assert!(!r.stdout.contains("g_hidden"), "{}", r.stdout);
+}
+
+#[test]
+fn names_from_a_file_are_escaped_in_messages() {
+    let d = tempfile::tempdir().unwrap();
+    let d = d.path();
+    write(
+        d,
+        "named.psh",
+        &format!(
+            "ps_3_0\n{}mov oC0, c0\n",
+            table_lines("k\u{1b}]0;owned\u{7}\nfake: line", 0, 1)
+        ),
+    );
+    let r = expect(
+        d,
+        &["check", "named.psh", "--const", "nosuch=1"],
+        2,
+        "has no `nosuch`",
+    );
+    assert!(
+        !r.stderr.contains('\u{1b}')
+            && !r.stderr.contains('\u{7}')
+            && !r.stderr.contains("\nfake: line"),
+        "{:?}",
+        r.stderr
+    );
+}
+
+#[test]
+fn translating_a_long_shader_takes_time_linear_in_its_length() {
+    let d = tempfile::tempdir().unwrap();
+    let d = d.path();
+    // 40,000 instructions in one straight run (600 KB): naga's MSL writer
+    // removed each block's value names one by one from an ordered map,
+    // quadratic in a block's length (18 s in a release build); the
+    // translation now cuts long runs into nested blocks. Under the child's
+    // 20 s CPU limit the quadratic version does not finish.
+    write(
+        d,
+        "long.psh",
+        &format!(
+            "ps_3_0\ndef c0, 1, 2, 3, 4\nmov r0, c0\n{}mov oC0, r0\n",
+            "add r0, r0, c0\n".repeat(40_000)
+        ),
+    );
+    for to in ["msl", "wgsl"] {
+        let out = format!("long.{to}");
+        expect(
+            d,
+            &[
+                "translate",
+                "long.psh",
+                "--to",
+                to,
+                "--max-expanded",
+                "100000",
+                "-o",
+                &out,
+            ],
+            0,
+            "wrote",
+        );
+    }
+}
+
+#[test]
+fn a_whole_draw_list_is_held_to_a_budget() {
+    let d = tempfile::tempdir().unwrap();
+    let d = d.path();
+    // 300 reductions of a 2048 × 2048 target: refused before any step runs.
+    let mips = vec![r#"{"mips": "t"}"#; 300].join(", ");
+    write(
+        d,
+        "mips.json",
+        &format!(
+            r#"{{"targets": [{{"name": "t", "size": "2048x2048", "format": "A32B32G32R32F"}}], "steps": [{mips}]}}"#
+        ),
+    );
+    expect(d, &["render", "mips.json"], 2, "--max-list-pixels");
+    // Every step written after it: an upper bound on the staged bytes, checked
+    // before any step runs, and nothing left behind.
+    let clears = vec![r#"{"clear": "t", "color": [1, 1, 1, 1]}"#; 100].join(", ");
+    write(
+        d,
+        "clears.json",
+        &format!(
+            r#"{{"targets": [{{"name": "t", "size": "2048x2048", "format": "A32B32G32R32F"}}], "steps": [{clears}]}}"#
+        ),
+    );
+    expect(
+        d,
+        &[
+            "render",
+            "clears.json",
+            "-o",
+            "out",
+            "--every-step",
+            "--max-list-pixels",
+            "1000000000",
+        ],
+        2,
+        "--max-staged-bytes",
+    );
+    assert!(!d.join("out").exists());
+    // The instruction slots of all draws together: stopped at the draw that
+    // passes the budget (each draw here executes 3 slots in each of 64 pixels).
+    let draw = r#"{"draw": "t", "shader": "s.psh"}"#;
+    write(
+        d,
+        "s.psh",
+        "ps_3_0\ndef c0, 1, 2, 3, 4\nmov r0, c0\nadd r0, r0, c0\nmov oC0, r0\n",
+    );
+    write(
+        d,
+        "draws.json",
+        &draw_list("t", &vec![draw; 20].join(", ")).replace("R32F", "A32B32G32R32F"),
+    );
+    expect(d, &["render", "draws.json"], 0, "20 steps");
+    let r = expect(
+        d,
+        &["render", "draws.json", "--max-list-executed", "1000"],
+        2,
+        "--max-list-executed",
+    );
+    // 1,000 slots allow five draws of 192; the sixth passes the budget.
+    assert!(r.stderr.contains("steps[5]"), "{}", r.stderr);
+}

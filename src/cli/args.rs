@@ -9,10 +9,11 @@
 use super::BadInput;
 use clap::Args;
 use ps30::core::audit::Given;
-use ps30::core::bytecode::ctab::{ConstantTable, RegisterSet};
+use ps30::core::bytecode::ctab::{escape, ConstantTable, RegisterSet};
 use ps30::core::cost::{Environment, Profile};
 use ps30::core::emu::{self, Address, Constants, Filter, MipFilter, SamplerState};
 use ps30::core::image::TargetFormat;
+use ps30::core::input::DEFAULT_MAX_INPUT_BYTES;
 use ps30::core::load::Options;
 
 /// `WxH` with both sides 1..=65536.
@@ -175,7 +176,9 @@ pub fn resolve<T: Copy + Default, const N: usize>(
                     )));
                 };
                 let Some(c) = t.constants.iter().find(|c| &c.name == name) else {
-                    let names: Vec<&str> = t.constants.iter().map(|c| c.name.as_str()).collect();
+                    // Names come from the file: escaped, so that none can
+                    // drive the terminal or fake a line of output.
+                    let names: Vec<String> = t.constants.iter().map(|c| escape(&c.name)).collect();
                     return Err(BadInput(format!(
                         "{flag} {name}: the shader's constant table has no `{name}` (it has {})",
                         names.join(", ")
@@ -280,14 +283,10 @@ impl SourceArgs {
     }
 }
 
-/// Default cap on a shader file's size: 1 MiB holds a listing of more than
-/// 100,000 lines, far past the 32,768 slots of any ps_3_0 part.
-pub const DEFAULT_MAX_INPUT_BYTES: u64 = 1 << 20;
-
 /// The cap on shader files read from disk.
 #[derive(Args, Debug)]
 pub struct InputArgs {
-    /// Refuse shader files larger than this many bytes.
+    /// Refuse shader files and draw lists larger than this many bytes.
     #[arg(long, value_name = "N", default_value_t = DEFAULT_MAX_INPUT_BYTES, value_parser = clap::value_parser!(u64).range(1..))]
     pub max_input_bytes: u64,
 }

@@ -70,6 +70,15 @@ pub struct Args {
     /// Border colour R,G,B,A for --address border.
     #[arg(long, value_parser = parse_float4, default_value = "0,0,0,0")]
     border: [f32; 4],
+    /// Stop the emulator's pixel that executes more instruction slots than
+    /// this (one draw). Raise it to compare a shader whose loops run longer
+    /// than the default allows: the GPU draws it regardless, and shows what
+    /// its driver does with such loops.
+    #[arg(long, value_name = "N", default_value_t = ps30::core::emu::EmuLimits::MAX_EXECUTED_PER_PIXEL, value_parser = clap::value_parser!(u64).range(1..))]
+    max_executed_per_pixel: u64,
+    /// Stop the emulator's draw that executes more instruction slots than this, all pixels together (one draw).
+    #[arg(long, value_name = "N", default_value_t = ps30::core::emu::EmuLimits::MAX_EXECUTED_TOTAL, value_parser = clap::value_parser!(u64).range(1..))]
+    max_executed_total: u64,
     /// The draw's target: f32 (D3DFMT_R32F), f16 (D3DFMT_A16B16G16R16F); without it, unrounded f32.
     #[arg(long, value_enum)]
     target_format: Option<FormatArg>,
@@ -150,6 +159,8 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
     let program = loaded.shader.program();
     let mut draw = Draw::new(tw, th);
     draw.float_rules = args.float_rules.into();
+    draw.limits.max_executed_per_pixel = args.max_executed_per_pixel;
+    draw.limits.max_executed_total = args.max_executed_total;
     if program
         .inputs
         .iter()

@@ -9,26 +9,39 @@ use super::ui::Ui;
 use super::BadInput;
 use ps30::core::audit::{self, Finding, Given, Kind};
 use ps30::core::diag::{Diagnostics, SourceFile};
+use ps30::core::input;
 use ps30::core::load::{self, Loaded, Options};
 use ps30::jobs::bundled::{self, Named};
 use ps30::jobs::luminance::ShaderSource;
-use std::io::{Read, Write};
+use std::io::Write;
 use std::path::Path;
+use std::sync::atomic::{AtomicBool, Ordering};
+
+/// Set once stdout's reader has gone away: later output is dropped.
+static STDOUT_GONE: AtomicBool = AtomicBool::new(false);
 
 /// Writes to stdout. A reader that went away (`ps30 … | head`) is not an
-/// error: there is nobody left to tell anything, so the command ends with
-/// success, as a Unix filter does (every file it writes was written
-/// atomically before it printed).
+/// error: there is nobody left to read the rest, so the rest is dropped and
+/// the command goes on to the exit code its work earns — `ps30 check
+/// OVER.psh | head -1` still exits 1 (a verdict is never lost to a closed
+/// pipe; `$?` of a pipeline is the last command's, so `set -o pipefail`
+/// shows it).
 pub fn print(out: &str) -> std::io::Result<()> {
     print_bytes(out.as_bytes())
 }
 
-/// Writes bytes (bytecode) to stdout, a closed pipe being success as in
+/// Writes bytes (bytecode) to stdout, a closed pipe dropping them as in
 /// [`print`].
 pub fn print_bytes(out: &[u8]) -> std::io::Result<()> {
+    if STDOUT_GONE.load(Ordering::Relaxed) {
+        return Ok(());
+    }
     let mut stdout = std::io::stdout().lock();
     match stdout.write_all(out).and_then(|()| stdout.flush()) {
-        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => std::process::exit(0),
+        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => {
+            STDOUT_GONE.store(true, Ordering::Relaxed);
+            Ok(())
+        }
         other => other,
     }
 }
@@ -71,21 +84,13 @@ pub const STDIN_NAME: &str = "<stdin>";
 /// cap.
 pub fn read_input(spec: &str, max_bytes: u64) -> Result<(String, Vec<u8>), BadInput> {
     let name = if spec == "-" { STDIN_NAME } else { spec };
-    let failed = |e: std::io::Error| BadInput(format!("{name}: {e}"));
-    let mut bytes = Vec::new();
-    let cap = max_bytes.saturating_add(1);
-    if spec == "-" {
-        std::io::stdin().lock().take(cap).read_to_end(&mut bytes)
+    let bytes = if spec == "-" {
+        input::read_capped(std::io::stdin().lock(), "shader", max_bytes)
+            .map_err(|e| format!("{name}: {e}"))
     } else {
-        std::fs::File::open(spec).and_then(|f| f.take(cap).read_to_end(&mut bytes))
+        input::read_file(Path::new(spec), "shader", max_bytes)
     }
-    .map_err(failed)?;
-    if bytes.len() as u64 > max_bytes {
-        return Err(BadInput(format!(
-            "{name}: larger than the cap of {} bytes for a shader (raise it with --max-input-bytes)",
-            ps30::core::numbers::thousands(max_bytes)
-        )));
-    }
+    .map_err(BadInput)?;
     Ok((name.to_string(), bytes))
 }
 

@@ -1,7 +1,7 @@
 //! `ps30 render`: runs a draw list a user wrote (JSON) — clears, draws with
 //! blending and write masks, mip-chain reductions — and writes its targets.
 
-use super::args::ExecArgs;
+use super::args::{ExecArgs, InputArgs};
 use super::io::{check_output_dir, eprint, print_json, say};
 use super::ui::Ui;
 use super::{BadInput, Outcome};
@@ -27,8 +27,23 @@ pub struct Args {
     /// Refuse a list with more steps than this.
     #[arg(long, value_name = "N", default_value_t = 10_000, value_parser = clap::value_parser!(u64).range(1..=1_000_000))]
     max_steps: u64,
+    /// Refuse a list whose steps touch more pixels than this in all (a clear
+    /// or draw its target, a mip reduction its levels; each step at least
+    /// 4,096), before any step runs.
+    #[arg(long, value_name = "N", default_value_t = render::ListBudget::MAX_PIXELS, value_parser = clap::value_parser!(u64).range(1..))]
+    max_list_pixels: u64,
+    /// Stop the list at the draw that makes all draws together execute more
+    /// instruction slots than this.
+    #[arg(long, value_name = "N", default_value_t = render::ListBudget::MAX_EXECUTED, value_parser = clap::value_parser!(u64).range(1..))]
+    max_list_executed: u64,
+    /// With --every-step: refuse a list whose written files could stage more
+    /// bytes than this (an upper bound computed before any step runs).
+    #[arg(long, value_name = "BYTES", default_value_t = 1 << 30, value_parser = clap::value_parser!(u64).range(1..))]
+    max_staged_bytes: u64,
     #[command(flatten)]
     exec: ExecArgs,
+    #[command(flatten)]
+    input: InputArgs,
 }
 
 /// The files of `-o DIR`, staged together and renamed all at once at the
@@ -65,6 +80,7 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
     let limits = file::FileLimits {
         max_pixels: args.exec.max_pixels,
         max_steps: args.max_steps as usize,
+        max_input_bytes: args.input.max_input_bytes,
     };
     let loaded = file::read(&args.list, &limits)?;
     let list = &loaded.list;
@@ -101,7 +117,21 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
     let settings = render::Settings {
         threads: args.exec.threads(),
         limits: args.exec.limits(),
+        budget: render::ListBudget {
+            max_pixels: args.max_list_pixels,
+            max_executed: args.max_list_executed,
+        },
     };
+    if args.every_step {
+        let staged = render::staged_bytes_every_step(list);
+        if staged > args.max_staged_bytes {
+            return Err(BadInput(format!(
+                "{name}: writing every target after every step could stage {} bytes, over the cap of {} (raise it with --max-staged-bytes {staged}, or drop --every-step)",
+                ps30::core::numbers::thousands(staged),
+                ps30::core::numbers::thousands(args.max_staged_bytes)
+            )));
+        }
+    }
     let mut failure: Option<BadInput> = None;
     let bar = std::cell::RefCell::new(ui.bar("steps", list.steps.len() as u64));
     let mut observe = |r: &StepReport, states: &[TargetState]| {

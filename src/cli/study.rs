@@ -76,6 +76,7 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
     let settings = render::Settings {
         threads: args.threads.map(|t| t as usize),
         limits: Default::default(),
+        budget: Default::default(),
     };
     let bar = std::cell::RefCell::new(ui.bar("study", 1));
     let progress = |done: u64, total: u64| bar.borrow_mut().set(None, done, total);

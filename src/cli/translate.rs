@@ -106,15 +106,7 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
     } else if args.output.is_none() {
         match written {
             Written::Text(t) => print(&t)?,
-            Written::Binary(b) => {
-                use std::io::Write;
-                let mut out = std::io::stdout().lock();
-                if let Err(e) = out.write_all(&b).and_then(|()| out.flush()) {
-                    if e.kind() != std::io::ErrorKind::BrokenPipe {
-                        return Err(e.into());
-                    }
-                }
-            }
+            Written::Binary(b) => super::io::print_bytes(&b)?,
         }
     }
     Ok(Outcome::Ok)

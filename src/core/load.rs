@@ -206,13 +206,13 @@ fn stages(file: SourceFile, options: &Options) -> Result<Stages, SourceError> {
         }
         return fail(file, diags);
     }
-    let constants = match constant_table(&stmts) {
-        Ok(t) => t,
-        Err(d) => return fail(file, only(d)),
-    };
     let expanded = match repeat::expand(&stmts, &options.defines, options.max_expanded) {
         Ok(e) => e,
         Err(d) => return fail(file, d),
+    };
+    let constants = match constant_table(expanded.iter().map(|e| &stmts[e.stmt])) {
+        Ok(t) => t,
+        Err(d) => return fail(file, only(d)),
     };
     match crate::core::valid::validate(&stmts, &expanded, &file) {
         Ok((shader, mut warnings)) => {
@@ -261,27 +261,37 @@ fn other_version(stmts: &[ast::Stmt]) -> Option<Diagnostic> {
 /// The constant table of a source, when it carries one that decodes: for
 /// looking names up before a job loads the shader (a table that does not
 /// decode is an error when the shader is loaded).
-pub fn constant_table_of(file: &SourceFile) -> Option<ctab::ConstantTable> {
+pub fn constant_table_of(file: &SourceFile, options: &Options) -> Option<ctab::ConstantTable> {
     let (stmts, _) = parse::parse(&file.text);
-    constant_table(&stmts).ok().flatten()
+    let expanded = repeat::expand(&stmts, &options.defines, options.max_expanded).ok()?;
+    constant_table(expanded.iter().map(|e| &stmts[e.stmt]))
+        .ok()
+        .flatten()
 }
 
-/// The first `CTAB` comment block, decoded.
-fn constant_table(stmts: &[ast::Stmt]) -> Result<Option<ctab::ConstantTable>, Diagnostic> {
-    let found = stmts.iter().find_map(|s| match s {
-        ast::Stmt::Comment { tokens, span } if tokens.first() == Some(&bytecode::CTAB) => {
-            Some((tokens, *span))
+/// The first `CTAB` comment block of the program as it will be written (the
+/// expanded statements: a block inside `BEGIN_REPEAT_BLOCK(0)` is not
+/// written, so it is no table), decoded. Every other `CTAB` block must
+/// decode too, as the bytecode reader requires of what `asm` writes.
+fn constant_table<'a>(
+    stmts: impl Iterator<Item = &'a ast::Stmt>,
+) -> Result<Option<ctab::ConstantTable>, Diagnostic> {
+    let mut first = None;
+    for stmt in stmts {
+        let ast::Stmt::Comment { tokens, span } = stmt else {
+            continue;
+        };
+        if tokens.first() != Some(&bytecode::CTAB) {
+            continue;
         }
-        _ => None,
-    });
-    let Some((tokens, span)) = found else {
-        return Ok(None);
-    };
-    ctab::decode(&tokens[1..]).map(Some).map_err(|e| {
-        Diagnostic::error(
-            span,
-            format!("the constant table does not decode: {}", e.message),
-        )
-        .with_label(format!("at byte {} of the table", e.offset))
-    })
+        let table = ctab::decode(&tokens[1..]).map_err(|e| {
+            Diagnostic::error(
+                *span,
+                format!("the constant table does not decode: {}", e.message),
+            )
+            .with_label(format!("at byte {} of the table", e.offset))
+        })?;
+        first.get_or_insert(table);
+    }
+    Ok(first)
 }

@@ -27,6 +27,7 @@ pub mod float_rules;
 pub mod front;
 pub mod gpu;
 pub mod image;
+pub mod input;
 pub mod ir;
 pub mod isa;
 pub mod load;

@@ -27,6 +27,7 @@
 //! `kill -9` cannot be caught, and leaves at most those `.NAME.PID.N.tmp`
 //! files, named after the process that left them.
 
+use crate::core::bytecode::ctab::escape;
 use std::error::Error;
 use std::fs::{self, File, OpenOptions};
 use std::io::{self, BufWriter, Write};
@@ -291,6 +292,27 @@ fn stage(
     Ok(staged.finish()?.0)
 }
 
+/// Whether `name` may be a file name that ps30 derives from data a user
+/// wrote (a draw-list target's name becomes `NAME.exr`): one plain path
+/// component — not empty, not `.` or `..`, no `/` or `\\`, no control
+/// characters, at most 200 bytes. Errors say which rule it breaks.
+pub fn plain_name(name: &str) -> Result<(), String> {
+    let why = if name.is_empty() {
+        "it is empty"
+    } else if name == "." || name == ".." {
+        "it names a directory"
+    } else if name.contains(['/', '\\']) {
+        "it contains a path separator"
+    } else if name.chars().any(char::is_control) {
+        "it contains a control character"
+    } else if name.len() > 200 {
+        "it is longer than 200 bytes"
+    } else {
+        return Ok(());
+    };
+    Err(format!("`{}` cannot be a file name: {why}", escape(name)))
+}
+
 /// Several files written all or nothing: each is staged as a temporary file
 /// beside its destination, and [`Batch::commit`] renames them all once every
 /// one is complete. Dropped before that (an error, a panic), the batch
@@ -300,6 +322,9 @@ pub struct Batch {
     staged: Vec<(Temporary, PathBuf)>,
     /// Directories this batch created, outermost first.
     created: Vec<PathBuf>,
+    /// The directories it writes into ([`Batch::new`], [`Batch::directory`]):
+    /// a file anywhere else is refused.
+    dirs: Vec<PathBuf>,
 }
 
 impl Batch {
@@ -314,16 +339,34 @@ impl Batch {
     /// the batch is dropped uncommitted and it created it.
     pub fn directory(&mut self, dir: &Path) -> Result<(), String> {
         check_directory(dir)?;
+        self.dirs.push(dir.to_path_buf());
         if !dir.is_dir() {
             fs::create_dir(dir).map_err(|e| format!("{}: cannot create it: {e}", dir.display()))?;
             self.created.push(dir.to_path_buf());
+            live_dirs().push(dir.to_path_buf());
         }
         Ok(())
     }
 
-    /// Stages `bytes` for `path`.
+    /// Stages `bytes` for `path`, which must name a plain file ([`plain_name`])
+    /// directly in one of the batch's directories: a name made from user data
+    /// (`../x`, `/etc/x`) can never reach outside the folder asked for.
     pub fn write_bytes(&mut self, path: &Path, bytes: &[u8]) -> Result<(), String> {
         let failed = |e: Failure| format!("{}: {e}", path.display());
+        let name = path.file_name().and_then(|n| n.to_str()).unwrap_or("");
+        let inside = path
+            .parent()
+            .is_some_and(|p| self.dirs.iter().any(|d| d == p));
+        if !inside || plain_name(name).is_err() {
+            return Err(format!(
+                "{}: outside the output folder{} (a file name made from a name in the input must be a plain name)",
+                escape(&path.display().to_string()),
+                match self.dirs.first() {
+                    Some(d) => format!(" {}", d.display()),
+                    None => String::new(),
+                }
+            ));
+        }
         let real = destination(path)?;
         if self.staged.iter().any(|(_, p)| *p == real) {
             return Err(format!("{}: written twice in one batch", path.display()));
@@ -348,8 +391,15 @@ impl Batch {
                 ));
             }
         }
-        self.created.clear();
+        self.forget_created();
         Ok(())
+    }
+
+    /// The directories it created stay: they are no longer the batch's to
+    /// remove, on an error or an interruption.
+    fn forget_created(&mut self) {
+        let created = std::mem::take(&mut self.created);
+        live_dirs().retain(|d| !created.contains(d));
     }
 }
 
@@ -359,6 +409,7 @@ impl Drop for Batch {
         for dir in self.created.iter().rev() {
             let _ = fs::remove_dir(dir);
         }
+        self.forget_created();
     }
 }
 
@@ -369,11 +420,22 @@ fn live() -> std::sync::MutexGuard<'static, Vec<PathBuf>> {
     LIVE.lock().unwrap_or_else(|e| e.into_inner())
 }
 
-/// Removes every temporary file this process has open; the binary calls it
-/// when interrupted, before it exits.
+/// Directories that uncommitted batches created, for [`remove_temporaries`].
+static LIVE_DIRS: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
+
+fn live_dirs() -> std::sync::MutexGuard<'static, Vec<PathBuf>> {
+    LIVE_DIRS.lock().unwrap_or_else(|e| e.into_inner())
+}
+
+/// Removes every temporary file this process has open, then the directories
+/// uncommitted batches created (innermost first; only empty ones: nothing
+/// else is removed); the binary calls it when interrupted, before it exits.
 pub fn remove_temporaries() {
     for path in live().drain(..) {
         let _ = fs::remove_file(path);
+    }
+    for dir in live_dirs().drain(..).rev() {
+        let _ = fs::remove_dir(dir);
     }
 }
 

@@ -3,7 +3,7 @@
 //! that the luminance pipeline, `run`, tone mapping and `compare` draw the
 //! same [`Draw`] the same way on either.
 
-use crate::core::cost::Range;
+use crate::core::cost::{self, Environment, Profile, Range};
 use crate::core::diag::SourceFile;
 use crate::core::emu::{self, findings::Finding, Draw};
 use crate::core::gpu::{self, Gpu, GpuError, TargetKind};
@@ -76,6 +76,15 @@ pub enum DrawError {
     Emu(emu::EmuError),
     /// The translation, the device or the read-back failed.
     Gpu(GpuError),
+    /// A pixel may execute more slots than the per-pixel cap: a GPU cannot
+    /// stop a pixel part way (and drivers cut long loops short without a
+    /// word), so the draw is refused there.
+    OverCapOnGpu {
+        /// The cost model's longest path, per pixel.
+        executed: u64,
+        /// `--max-executed-per-pixel`.
+        cap: u64,
+    },
 }
 
 impl fmt::Display for DrawError {
@@ -83,11 +92,51 @@ impl fmt::Display for DrawError {
         match self {
             DrawError::Emu(e) => write!(f, "emulator: {e}"),
             DrawError::Gpu(e) => write!(f, "{e}"),
+            DrawError::OverCapOnGpu { executed, cap } => write!(
+                f,
+                "a pixel may execute up to {} instruction slots (the cost model's longest path for these constants), over the cap of {} (--max-executed-per-pixel): a GPU cannot stop a pixel part way and drivers cut long loops short without a word, so ps30 does not draw it there (the emulator stops the first pixel that passes the cap)",
+                crate::core::numbers::thousands(*executed),
+                crate::core::numbers::thousands(*cap)
+            ),
         }
     }
 }
 
 impl std::error::Error for DrawError {}
+
+/// The cost model's environment for a draw: every integer and boolean
+/// constant as the draw sets it (0 / false where it sets none).
+pub fn environment(c: &emu::Constants) -> Environment {
+    let mut env = Environment::default();
+    for i in 0..16usize {
+        env.ints
+            .insert(i as u32, c.int.get(i).copied().unwrap_or([0; 4]));
+        env.bools
+            .insert(i as u32, c.bool.get(i).copied().unwrap_or(false));
+    }
+    env
+}
+
+/// Holds a GPU draw to the emulator's per-pixel cap, by the cost model's
+/// longest path (an upper bound on every pixel's count).
+fn gpu_cap(shader: &Shader, file: &SourceFile, draw: &Draw) -> Result<(), DrawError> {
+    let cap = draw.limits.max_executed_per_pixel;
+    let a = cost::analyse(
+        shader,
+        file,
+        &environment(&draw.constants),
+        &Profile::ps_3_0(),
+    );
+    // A count the model cannot bound is no reason to refuse: the draw's own
+    // checks (`emu::check`) still apply.
+    match a {
+        Ok(a) if a.executed.max > cap => Err(DrawError::OverCapOnGpu {
+            executed: a.executed.max,
+            cap,
+        }),
+        _ => Ok(()),
+    }
+}
 
 /// Draws `draw` of `shader` on `backend`. On a GPU, `target` is the format
 /// the device stores `oC0` in; the emulator's values are unrounded (the
@@ -122,6 +171,7 @@ pub fn draw(
             })
         }
         Backend::Gpu(g) => {
+            gpu_cap(shader, file, draw)?;
             let out = gpu::run(g, shader, draw, target).map_err(DrawError::Gpu)?;
             Ok(Drawn {
                 width: out.width,

@@ -23,6 +23,7 @@
 //! (names, types, defaults, shared or not) may not add up to more than
 //! [`WORK_FACTOR`] times the table.
 
+use crate::core::isa::RegFile;
 use serde::Serialize;
 
 /// Longest name or creator string accepted, in bytes.
@@ -318,13 +319,39 @@ impl Decoder<'_> {
                 return err(
                     at + 4,
                     format!(
-                        "constant `{name}` has register set {s}, which does not exist (0 to 3)"
+                        "constant `{}` has register set {s}, which does not exist (0 to 3)",
+                        escape(&name)
                     ),
                 )
             }
         };
         let index = self.word(at + 6, "a constant")?;
         let count = self.word(at + 8, "a constant")?;
+        // The registers it names must exist in ps_3_0's register file of
+        // that set (the table is hostile input: `--const NAME=` and `run`
+        // would otherwise address registers that are not there).
+        let file = match set {
+            RegisterSet::Bool => RegFile::ConstBool,
+            RegisterSet::Int4 => RegFile::ConstInt,
+            RegisterSet::Float4 => RegFile::Const,
+            RegisterSet::Sampler => RegFile::Sampler,
+        };
+        let available = file.info().count;
+        if u32::from(index) + u32::from(count) > available {
+            return err(
+                at + 6,
+                format!(
+                    "constant `{}` takes {}{index} to {}{} ({count} registers), past the last {} register, {}{}",
+                    escape(&name),
+                    set.prefix(),
+                    set.prefix(),
+                    (u32::from(index) + u32::from(count)).saturating_sub(1),
+                    set.name(),
+                    set.prefix(),
+                    available - 1
+                ),
+            );
+        }
         let ty = self.ty(at + 12, 0)?;
         let default = self.default(at + 16, &ty, set, &name)?;
         Ok(Constant {
@@ -424,7 +451,8 @@ impl Decoder<'_> {
             return err(
                 from,
                 format!(
-                    "the default value of `{name}` ({words} words at offset {at}) runs past the end of the table ({} bytes)",
+                    "the default value of `{}` ({words} words at offset {at}) runs past the end of the table ({} bytes)",
+                    escape(name),
                     self.bytes.len()
                 ),
             );

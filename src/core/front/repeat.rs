@@ -14,7 +14,16 @@ use std::sync::Arc;
 /// Default cap on the statements an expansion may produce, and on the
 /// repetitions it may make. ps_3_0 programs have at most 32,768 slots, so a
 /// legitimate expansion is far below this; raise it with `--max-expanded`.
+/// A kept comment block (a constant table: up to 32,767 tokens in one
+/// statement) counts as many statements as instructions of its size would
+/// ([`COMMENT_TOKENS_PER_STATEMENT`]), so that the cap bounds the bytes an
+/// expansion writes, not only its lines.
 pub const DEFAULT_MAX_EXPANDED: u64 = 100_000;
+
+/// Tokens of a kept comment block that weigh one statement: a ps_3_0
+/// instruction takes at most six (`texldd`: its token, a destination and
+/// four sources).
+pub const COMMENT_TOKENS_PER_STATEMENT: u64 = 6;
 
 /// Deepest REPEAT_BLOCK nesting accepted (the article nests two).
 pub const MAX_DEPTH: usize = 64;
@@ -29,8 +38,8 @@ pub struct Expanded {
     pub origin: Origin,
 }
 
-/// What expanding a part of the source costs: statements produced and
-/// repetitions made. A block whose body produces nothing costs nothing and
+/// What expanding a part of the source costs: statements produced (a
+/// comment block weighing its tokens) and repetitions made. A block whose body produces nothing costs nothing and
 /// is skipped, however large its count.
 #[derive(Clone, Copy, Default)]
 struct Size {
@@ -48,7 +57,8 @@ impl Size {
 }
 
 enum Node {
-    Leaf(usize),
+    /// A statement's index and its weight (1, or a comment block's tokens).
+    Leaf(usize, u64),
     Repeat {
         span: Span,
         count: u32,
@@ -61,8 +71,8 @@ enum Node {
 impl Node {
     fn size(&self) -> Size {
         match self {
-            Node::Leaf(_) => Size {
-                statements: 1,
+            Node::Leaf(_, weight) => Size {
+                statements: *weight,
                 repetitions: 0,
             },
             Node::Repeat { size, .. } => *size,
@@ -154,10 +164,18 @@ fn block_tree(stmts: &[Stmt], defines: &BTreeMap<String, u64>) -> Result<Vec<Nod
                     .with_help("remove this line or add BEGIN_REPEAT_BLOCK(n) before the block"),
                 ),
             },
-            _ => match stack.last_mut() {
-                Some(parent) => parent.2.push(Node::Leaf(i)),
-                None => top.push(Node::Leaf(i)),
-            },
+            _ => {
+                let weight = match stmt {
+                    Stmt::Comment { tokens, .. } => (tokens.len() as u64)
+                        .div_ceil(COMMENT_TOKENS_PER_STATEMENT)
+                        .max(1),
+                    _ => 1,
+                };
+                match stack.last_mut() {
+                    Some(parent) => parent.2.push(Node::Leaf(i, weight)),
+                    None => top.push(Node::Leaf(i, weight)),
+                }
+            }
         }
     }
     // Report the outermost unclosed block first; a deep pile of unclosed
@@ -206,10 +224,15 @@ fn over_cap(top: &[Node], stmts: &[Stmt], total: Size, cap: u64) -> Option<Diagn
     };
     let has_macro = top.iter().any(|n| matches!(n, Node::Repeat { .. }));
     if total.statements > cap && !has_macro {
+        // The statement at which the running weight passes the cap.
+        let mut weight = 0u64;
         let span = top
-            .get(cap as usize)
-            .and_then(|n| match n {
-                Node::Leaf(i) => Some(stmt_span(&stmts[*i])),
+            .iter()
+            .find_map(|n| match n {
+                Node::Leaf(i, w) => {
+                    weight = weight.saturating_add(*w);
+                    (weight > cap).then(|| stmt_span(&stmts[*i]))
+                }
                 Node::Repeat { .. } => None,
             })
             .unwrap_or_default();
@@ -217,8 +240,8 @@ fn over_cap(top: &[Node], stmts: &[Stmt], total: Size, cap: u64) -> Option<Diagn
             Diagnostic::error(
                 span,
                 format!(
-                    "the file has {} statements, over the cap of {cap}",
-                    total.statements
+                    "the file has {} statements, over the cap of {cap}{}",
+                    total.statements, COMMENT_NOTE
                 ),
             )
             .with_label("the first statement past the cap")
@@ -229,7 +252,7 @@ fn over_cap(top: &[Node], stmts: &[Stmt], total: Size, cap: u64) -> Option<Diagn
         top.iter()
             .filter_map(|n| match n {
                 Node::Repeat { span, size, .. } => Some((key(*size), *span)),
-                Node::Leaf(_) => None,
+                Node::Leaf(..) => None,
             })
             .max_by_key(|(s, _)| *s)
             .map(|(_, span)| span)
@@ -241,7 +264,7 @@ fn over_cap(top: &[Node], stmts: &[Stmt], total: Size, cap: u64) -> Option<Diagn
             Diagnostic::error(
                 culprit(|s| s.statements),
                 format!(
-                    "REPEAT_BLOCK expansion would produce {n} statements, over the cap of {cap}"
+                    "REPEAT_BLOCK expansion would produce {n} statements, over the cap of {cap}{COMMENT_NOTE}"
                 ),
             )
             .with_label("this block expands too far")
@@ -261,6 +284,9 @@ fn over_cap(top: &[Node], stmts: &[Stmt], total: Size, cap: u64) -> Option<Diagn
     }
     None
 }
+
+/// How the cap's messages say that comment blocks weigh their tokens.
+const COMMENT_NOTE: &str = " (a kept comment block counts one per 6 tokens)";
 
 fn resolve(count: &Count, defines: &BTreeMap<String, u64>) -> Result<u32, Diagnostic> {
     let (value, span) = match count {
@@ -301,7 +327,7 @@ fn stmt_span(stmt: &Stmt) -> Span {
 fn emit(nodes: &[Node], stmts: &[Stmt], outer: &Option<Arc<RepeatLink>>, out: &mut Vec<Expanded>) {
     for node in nodes {
         match node {
-            Node::Leaf(i) => out.push(Expanded {
+            Node::Leaf(i, _) => out.push(Expanded {
                 stmt: *i,
                 origin: Origin {
                     span: stmt_span(&stmts[*i]),

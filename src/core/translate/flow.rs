@@ -16,12 +16,78 @@
 //! else the application's value in the constant block. A count of 0 or
 //! less runs no iteration.
 
+use super::builder::Fb;
 use super::lower::Lower;
 use super::TranslateError;
 use crate::core::ir::{Instruction, Src, SrcMod};
 use crate::core::isa::{Opcode, RegFile};
 use naga::{BinaryOperator as B, Expression, Handle, Statement};
 use std::collections::BTreeMap;
+
+/// A straight run of plain instructions, cut into nested blocks of
+/// [`Run::CHUNK`] after its first [`Run::CHUNK`]: a writer that keeps the
+/// names of a block's values in one ordered map and removes them one by one
+/// at the block's end (naga's MSL writer) then does work linear in the
+/// shader's length instead of quadratic (40,000 instructions: 18 s before).
+/// Each instruction loads its registers afresh, so no value crosses a cut;
+/// shaders with shorter runs are lowered exactly as before.
+#[derive(Default)]
+struct Run {
+    /// Plain instructions lowered in this run so far.
+    count: usize,
+    /// Whether a nested block is open for the current chunk.
+    open: bool,
+}
+
+impl Run {
+    const CHUNK: usize = 256;
+
+    /// Whether `op` is lowered by `instruction` (not flow control).
+    fn is_plain(op: Opcode) -> bool {
+        !matches!(
+            op,
+            Opcode::If
+                | Opcode::Ifc
+                | Opcode::Rep
+                | Opcode::Loop
+                | Opcode::Break
+                | Opcode::BreakC
+                | Opcode::BreakP
+                | Opcode::Call
+                | Opcode::CallNz
+                | Opcode::Ret
+                | Opcode::Label
+                | Opcode::Else
+                | Opcode::EndIf
+                | Opcode::EndRep
+                | Opcode::EndLoop
+        )
+    }
+
+    /// Before the run's next instruction: opens a new chunk where one starts.
+    fn next(&mut self, fb: &mut Fb) {
+        if self.count >= Self::CHUNK && self.count % Self::CHUNK == 0 {
+            self.close(fb);
+            fb.open();
+            self.open = true;
+        }
+        self.count += 1;
+    }
+
+    fn close(&mut self, fb: &mut Fb) {
+        if self.open {
+            let block = fb.close();
+            fb.push(Statement::Block(block));
+            self.open = false;
+        }
+    }
+
+    /// Ends the run (flow control, or the end of the range).
+    fn end(&mut self, fb: &mut Fb) {
+        self.close(fb);
+        self.count = 0;
+    }
+}
 
 /// Functions lowered so far, by label.
 pub(super) type Functions = BTreeMap<u32, Handle<naga::Function>>;
@@ -37,8 +103,16 @@ impl Lower<'_> {
         end: usize,
     ) -> Result<(), TranslateError> {
         let mut i = start;
+        let mut run = Run::default();
         while i < end {
             let x = &ins[i];
+            if Run::is_plain(x.op) {
+                run.next(&mut self.fb);
+                self.instruction(x)?;
+                i += 1;
+                continue;
+            }
+            run.end(&mut self.fb);
             let next = |i: usize| -> Result<usize, TranslateError> {
                 matching
                     .get(i)
@@ -109,10 +183,11 @@ impl Lower<'_> {
                 Opcode::Else | Opcode::EndIf | Opcode::EndRep | Opcode::EndLoop => {
                     return Err(TranslateError::Internal("a block end outside its block"))
                 }
-                _ => self.instruction(x)?,
+                _ => unreachable!("plain instructions are lowered above"),
             }
             i += 1;
         }
+        run.end(&mut self.fb);
         Ok(())
     }
 

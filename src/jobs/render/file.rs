@@ -60,6 +60,9 @@ pub struct FileLimits {
     pub max_pixels: u64,
     /// Steps in the list.
     pub max_steps: usize,
+    /// Bytes of the list itself and of every shader file it names
+    /// (`--max-input-bytes`, the cap every shader file is read under).
+    pub max_input_bytes: u64,
 }
 
 impl Default for FileLimits {
@@ -69,6 +72,7 @@ impl Default for FileLimits {
         FileLimits {
             max_pixels: ImageLimits::MAX_PIXELS,
             max_steps: 10_000,
+            max_input_bytes: crate::core::input::DEFAULT_MAX_INPUT_BYTES,
         }
     }
 }
@@ -213,7 +217,15 @@ pub fn read(path: &Path, limits: &FileLimits) -> Result<Loaded, FileError> {
         at: at.to_string(),
         message,
     };
-    let bytes = std::fs::read(path).map_err(|e| fail("", e.to_string()))?;
+    let mut bytes = std::fs::File::open(path)
+        .map_err(|e| e.to_string())
+        .and_then(|f| crate::core::input::read_capped(f, "draw list", limits.max_input_bytes))
+        .map_err(|e| fail("", e))?;
+    // A UTF-8 byte-order mark (editors on Windows write one) is not JSON,
+    // but it says nothing the text does not: it is dropped.
+    if bytes.starts_with(b"\xEF\xBB\xBF") {
+        bytes.drain(..3);
+    }
     let text = String::from_utf8(bytes).map_err(|e| {
         fail(
             "",
@@ -375,12 +387,16 @@ impl Resolver {
     }
 
     fn name_free(&self, at: &str, name: &str) -> Result<(), FileError> {
+        // A target's name becomes the file names `-o DIR` writes (NAME.exr,
+        // NNN-NAME.png), so every name obeys the one rule for file names
+        // made from user data; textures share the namespace, and the rule.
+        crate::core::output::plain_name(name).map_err(|m| self.err(at, m))?;
         let taken = self.list.targets.iter().any(|t| t.name == name)
             || self.list.textures.iter().any(|t| t.name == name);
-        if taken || name.is_empty() {
+        if taken {
             return Err(self.err(
                 at,
-                format!("the name `{name}` is empty or already used by a target or texture"),
+                format!("the name `{name}` is already used by a target or texture"),
             ));
         }
         Ok(())
@@ -820,11 +836,12 @@ impl Resolver {
             }
             crate::jobs::bundled::Named::File(_) => {
                 let file = self.dir.join(spec);
-                let bytes = std::fs::read(&file).map_err(|e| {
+                let cap = self.limits.max_input_bytes;
+                let bytes = crate::core::input::read_file(&file, "shader", cap).map_err(|e| {
                     let hint = crate::jobs::bundled::suggest(spec)
                         .map(|n| format!("; did you mean the bundled `{n}`?"))
                         .unwrap_or_default();
-                    self.err(field, format!("{}: {e}{hint}", file.display()))
+                    self.err(field, format!("{e}{hint}"))
                 })?;
                 self.sources.push(file.clone());
                 load::source_file(&file.display().to_string(), bytes, &options)

@@ -20,7 +20,7 @@
 
 pub mod file;
 
-use crate::core::cost::{self, Environment, Profile, Range};
+use crate::core::cost::{self, Profile, Range};
 use crate::core::emu::{
     self, findings::Finding, Compiled, Constants, Draw, EmuError, LinearInput, SamplerState,
     TextureLevels,
@@ -131,8 +131,91 @@ pub struct DrawList {
 pub struct Settings {
     /// Emulator threads (`None`: all cores).
     pub threads: Option<usize>,
-    /// The emulator's bounds (executed slots per pixel, target size).
+    /// The emulator's bounds (executed slots per pixel, target size), for
+    /// each draw.
     pub limits: emu::EmuLimits,
+    /// The bounds of the whole list.
+    pub budget: ListBudget,
+}
+
+/// Bounds on a whole draw list's work, on top of each draw's
+/// ([`emu::EmuLimits`]): a list of many steps, each within its own bounds,
+/// can still ask for hours of work.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ListBudget {
+    /// Pixels that all steps together touch: a clear or a draw its target's
+    /// pixels, a mip reduction every level it writes, each step at least
+    /// [`ListBudget::STEP_PIXELS`] for its fixed cost. Computed from the
+    /// list before any step runs; a list over it is refused whole.
+    pub max_pixels: u64,
+    /// Instruction slots that all draws together execute. Not known before
+    /// the draws run (it depends on the data): each draw runs under what is
+    /// left of it, and the list stops at the draw that exceeds it.
+    pub max_executed: u64,
+}
+
+impl ListBudget {
+    /// Default [`ListBudget::max_pixels`]: 32 Mi pixels, e.g. thirty-two
+    /// full-screen draws into a 1024 × 1024 target (on two cores, a draw
+    /// of a short shader costs about a microsecond a pixel: tens of seconds).
+    pub const MAX_PIXELS: u64 = 1 << 25;
+    /// Default [`ListBudget::max_executed`]: four draws at the per-draw
+    /// default of [`emu::EmuLimits::MAX_EXECUTED_TOTAL`].
+    pub const MAX_EXECUTED: u64 = 4 * emu::EmuLimits::MAX_EXECUTED_TOTAL;
+    /// The least a step counts in [`ListBudget::max_pixels`]: a step's fixed
+    /// cost (setting up a draw, its cost analysis, a report) is that of
+    /// shading about this many pixels.
+    pub const STEP_PIXELS: u64 = 4096;
+}
+
+impl Default for ListBudget {
+    fn default() -> ListBudget {
+        ListBudget {
+            max_pixels: ListBudget::MAX_PIXELS,
+            max_executed: ListBudget::MAX_EXECUTED,
+        }
+    }
+}
+
+/// The pixels a list's steps touch together ([`ListBudget::max_pixels`]),
+/// saturating.
+pub fn pixel_work(list: &DrawList) -> u64 {
+    list.steps.iter().fold(0u64, |total, step| {
+        let target = match step {
+            Step::Clear { target, .. } | Step::Mips { target, .. } => *target,
+            Step::Draw(d) => d.target,
+        };
+        let t = &list.targets[target];
+        let mut pixels = u64::from(t.width) * u64::from(t.height);
+        if let Step::Mips { .. } = step {
+            // Every level below the first, each side halved (rounded up).
+            let (mut w, mut h) = (u64::from(t.width), u64::from(t.height));
+            pixels = 0;
+            while w > 1 || h > 1 {
+                w = w.div_ceil(2);
+                h = h.div_ceil(2);
+                pixels += w * h;
+            }
+        }
+        total.saturating_add(pixels.max(ListBudget::STEP_PIXELS))
+    })
+}
+
+/// An upper bound on the bytes that writing every target after every step
+/// stages (`ps30 render --every-step`): its stored values as 32-bit floats
+/// (the EXR, uncompressed) and an 8-bit RGB preview (the PNG), plus 4 KiB of
+/// headers each.
+pub fn staged_bytes_every_step(list: &DrawList) -> u64 {
+    list.steps.iter().fold(0u64, |total, step| {
+        let target = match step {
+            Step::Clear { target, .. } | Step::Mips { target, .. } => *target,
+            Step::Draw(d) => d.target,
+        };
+        let t = &list.targets[target];
+        let pixels = u64::from(t.width) * u64::from(t.height);
+        let channels = t.format.channels() as u64;
+        total.saturating_add(pixels * (4 * channels + 3) + 2 * 4096)
+    })
 }
 
 /// What one step did.
@@ -215,6 +298,9 @@ pub enum RenderError {
         /// The emulator's error.
         error: EmuError,
     },
+    /// The whole list is over its [`ListBudget`]: what, and which flag
+    /// raises it.
+    Budget(String),
     /// A shader the emulator cannot compile.
     Compile {
         /// The shader's name.
@@ -230,6 +316,7 @@ impl std::fmt::Display for RenderError {
             RenderError::Step { index, message } => write!(f, "steps[{index}]: {message}"),
             RenderError::Emu { index, error } => write!(f, "steps[{index}]: emulator: {error}"),
             RenderError::Compile { shader, error } => write!(f, "{shader}: emulator: {error}"),
+            RenderError::Budget(message) => f.write_str(message),
         }
     }
 }
@@ -244,6 +331,15 @@ pub fn run(
     settings: &Settings,
     observe: &mut dyn FnMut(&StepReport, &[TargetState]),
 ) -> Result<(Vec<StepReport>, Vec<TargetState>), RenderError> {
+    let pixels = pixel_work(list);
+    if pixels > settings.budget.max_pixels {
+        return Err(RenderError::Budget(format!(
+            "the list's steps touch {} pixels in all, over the budget of {} (raise it with --max-list-pixels {pixels})",
+            crate::core::numbers::thousands(pixels),
+            crate::core::numbers::thousands(settings.budget.max_pixels)
+        )));
+    }
+    let mut executed_left = settings.budget.max_executed;
     let mut states: Vec<TargetState> = list
         .targets
         .iter()
@@ -290,8 +386,21 @@ pub fn run(
                 report(index, "mips", list, *target, detail)
             }
             Step::Draw(d) => {
-                let detail = draw(list, &compiled[d.shader], d, &mut states, settings)
-                    .map_err(|e| e.at(index))?;
+                let mut limits = settings.limits;
+                let list_bound = limits.max_executed_total > executed_left;
+                limits.max_executed_total = limits.max_executed_total.min(executed_left);
+                let (detail, executed) =
+                    draw(list, &compiled[d.shader], d, &mut states, settings.threads, limits)
+                        .map_err(|e| match e {
+                            DrawFailure::Emu(EmuError::TotalExecutedLimit { .. }) if list_bound => {
+                                RenderError::Budget(format!(
+                                    "steps[{index}]: the list's draws execute more than {} instruction slots in all (raise it with --max-list-executed)",
+                                    crate::core::numbers::thousands(settings.budget.max_executed)
+                                ))
+                            }
+                            e => e.at(index),
+                        })?;
+                executed_left = executed_left.saturating_sub(executed);
                 report(index, "draw", list, d.target, detail)
             }
         };
@@ -331,18 +440,20 @@ impl DrawFailure {
     }
 }
 
-/// Runs one draw and merges its colours into its target.
+/// Runs one draw and merges its colours into its target; returns its report
+/// and the instruction slots it executed, all pixels together.
 fn draw(
     list: &DrawList,
     compiled: &Compiled,
     d: &DrawStep,
     states: &mut [TargetState],
-    settings: &Settings,
-) -> Result<StepDetail, DrawFailure> {
+    threads: Option<usize>,
+    limits: emu::EmuLimits,
+) -> Result<(StepDetail, u64), DrawFailure> {
     let spec = &list.targets[d.target];
     let shader = &list.shaders[d.shader];
     let mut emu_draw = Draw::new(spec.width, spec.height);
-    emu_draw.limits = settings.limits;
+    emu_draw.limits = limits;
     emu_draw.record_lod = true;
     emu_draw.inputs = d.inputs.clone();
     emu_draw.constants = d.constants.clone();
@@ -370,7 +481,7 @@ fn draw(
         };
         emu_draw.samplers.push((s, levels, state));
     }
-    let out = match settings.threads {
+    let out = match threads {
         Some(t) => emu::run_with_threads(compiled, &emu_draw, t),
         None => emu::run(compiled, &emu_draw),
     }
@@ -380,6 +491,7 @@ fn draw(
         min: out.executed.iter().copied().min().unwrap_or(0),
         max: out.executed.iter().copied().max().unwrap_or(0),
     };
+    let executed_total = out.executed.iter().fold(0u64, |a, &e| a.saturating_add(e));
     let executed_static = static_count(shader, &d.constants)?;
     drop(emu_draw);
     let state = &mut states[d.target];
@@ -393,30 +505,23 @@ fn draw(
         },
     };
     state.mips = None;
-    Ok(StepDetail::Draw {
+    let detail = StepDetail::Draw {
         shader: shader.name.clone(),
         counts_agree: executed_static.min <= executed.min && executed.max <= executed_static.max,
         executed_static,
         executed,
         merged,
         findings,
-    })
+    };
+    Ok((detail, executed_total))
 }
 
-/// The cost model's executed range for a draw: every integer and boolean
-/// constant as the draw sets it (0 / false where it sets none).
+/// The cost model's executed range for a draw, under its constants.
 fn static_count(shader: &ShaderSpec, c: &Constants) -> Result<Range, DrawFailure> {
-    let mut env = Environment::default();
-    for i in 0..16usize {
-        env.ints
-            .insert(i as u32, c.int.get(i).copied().unwrap_or([0; 4]));
-        env.bools
-            .insert(i as u32, c.bool.get(i).copied().unwrap_or(false));
-    }
     let a = cost::analyse(
         &shader.loaded.shader,
         &shader.loaded.file,
-        &env,
+        &crate::jobs::backend::environment(c),
         &Profile::ps_3_0(),
     )
     .map_err(|e| DrawFailure::Message(format!("{}: {e}", shader.name)))?;
