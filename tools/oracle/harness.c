@@ -25,7 +25,8 @@
  *
  * Exit status: 0 when every input was read and every answer written; 1 when some input could
  * not be read, a first line asked for something unknown or an output could not be written
- * (each said on stderr, the other inputs still done); 2 usage; 3 no DLL or a missing export.
+ * (each said on stderr, the other inputs still done); 2 usage; 3 Microsoft's DLL is not beside
+ * the harness, does not load, or lacks an export (Wine's own builtin DLL is never used).
  * The last line on stderr is `harness: N of M inputs answered`. */
 #include <windows.h>
 #include <stdio.h>
@@ -265,10 +266,25 @@ int main(int argc, char **argv) {
         fprintf(stderr, "usage: harness asm|hlsl|dis LIST OUTDIR\n");
         return 2;
     }
-    HMODULE dll = LoadLibraryA("d3dcompiler_47.dll");
-    if (!dll) {
-        fprintf(stderr, "harness: d3dcompiler_47.dll does not load (error %lu); run tools/oracle/setup.sh\n",
-                (unsigned long)GetLastError());
+    /* Microsoft's DLL from the harness's own folder, by full path: Wine has a builtin
+       d3dcompiler_47 of its own, which must never answer in Microsoft's place. */
+    char dll_path[MAX_PATH + 32];
+    DWORD n = GetModuleFileNameA(NULL, dll_path, MAX_PATH);
+    char *slash = n ? strrchr(dll_path, '\\') : NULL;
+    if (!slash) {
+        fprintf(stderr, "harness: cannot tell its own folder\n");
+        return 3;
+    }
+    strcpy(slash + 1, "d3dcompiler_47.dll");
+    if (GetFileAttributesA(dll_path) == INVALID_FILE_ATTRIBUTES) {
+        fprintf(stderr, "harness: %s is missing; run tools/oracle/setup.sh\n", dll_path);
+        return 3;
+    }
+    HMODULE dll = LoadLibraryA(dll_path);
+    char loaded[MAX_PATH];
+    if (!dll || !GetModuleFileNameA(dll, loaded, sizeof loaded) || _stricmp(loaded, dll_path)) {
+        fprintf(stderr, "harness: %s does not load as itself (error %lu); run tools/oracle/setup.sh\n",
+                dll_path, (unsigned long)GetLastError());
         return 3;
     }
     assemble = (assemble_fn)GetProcAddress(dll, "D3DAssemble");
