@@ -76,8 +76,7 @@ fn ps30_assemble(name: &str, bytes: Vec<u8>) -> Result<Vec<u32>, String> {
         Err(e) => Err(e
             .diagnostics
             .items
-            .iter()
-            .next()
+            .first()
             .map_or("refused without a message".into(), |d| {
                 format!("refused: {}", d.message)
             })),
@@ -209,6 +208,31 @@ fn microsofts_listing_assembles_to_its_tokens_in_microsofts_assembler() {
         all.len(),
         problems,
     );
+}
+
+#[test]
+fn fixtures_hold_one_answer_each() {
+    // What the harness writes: bytecode, listing and round trip for an
+    // accepted file; an error with its X#### code and nothing else for a
+    // refused one. Anything else is a fixture not written by the harness.
+    let all = all();
+    let mut problems = Vec::new();
+    for f in &all {
+        let complete = f.fxo.is_some() && f.dis.is_some() && f.redis.is_some();
+        if f.accepted() && !complete {
+            problems.push(format!(
+                "{}: accepted, but .fxo, .dis or .dis.rc is missing",
+                f.name()
+            ));
+        }
+        if !f.accepted() && (f.fxo.is_some() || f.error_code().is_none()) {
+            problems.push(format!(
+                "{}: refused, but with bytecode or without an X#### error",
+                f.name()
+            ));
+        }
+    }
+    report("the fixtures' shape", all.len(), problems);
 }
 
 #[test]
