@@ -264,6 +264,39 @@ fn every_instruction_costs_its_slots_under_both_tables() {
 }
 
 #[test]
+fn the_articles_instructions_cost_the_same_in_both_tables() {
+    // So every figure of the article (slots and executed counts) is the same
+    // under either table, and `ps30 verify` holds under both.
+    for (name, text) in [
+        ("loop", include_str!("../asm/article/lum_pass1_loop.psh")),
+        (
+            "unrolled",
+            include_str!("../asm/article/lum_pass1_unrolled.psh"),
+        ),
+        ("pass2", include_str!("../asm/article/lum_pass2.psh")),
+    ] {
+        let mut options = Options::default();
+        options.defines.insert("xsize".into(), 11);
+        options.defines.insert("ysize".into(), 8);
+        let l = load_with(name, text, &options);
+        let info = l.shader.info();
+        for (i, ins) in l.shader.instructions().iter().enumerate() {
+            assert_eq!(
+                info.slots(i, SlotTable::Fxc),
+                info.slots(i, SlotTable::Documented),
+                "{name}: {}",
+                ins.op
+            );
+        }
+        let mut env = Environment::default();
+        env.ints.insert(1, [128, 0, 0, 0]);
+        env.ints.insert(2, [56, 0, 0, 0]);
+        let [a, b] = SlotTable::ALL.map(|t| analyse_under(&l, &env, t));
+        assert_eq!((a.slots, a.executed), (b.slots, b.executed), "{name}");
+    }
+}
+
+#[test]
 fn declarations_and_definitions_cost_nothing() {
     let l = load(
         "decls.psh",

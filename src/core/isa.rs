@@ -809,10 +809,12 @@ pub const MAX_DYNAMIC_NESTING: u32 = 24;
 /// rep/loop iteration count range, i#.x in [0, 255].
 pub const MAX_REP_COUNT: i32 = 255;
 
-/// The instruction table as Markdown (the README embeds it; a test keeps the
-/// two identical).
+/// The instruction table as Markdown, with both slot columns (the README
+/// embeds it; a test keeps the two identical).
 pub fn markdown_table() -> String {
-    let mut s = String::from("| mnemonic | slots | class | meaning |\n|---|---|---|---|\n");
+    let mut s = String::from(
+        "| mnemonic | slots (Microsoft's count) | slots (documented) | class | meaning |\n|---|---|---|---|---|\n",
+    );
     for r in TABLE {
         let name = if r.comparison {
             format!("{}_comp", r.mnemonic)
@@ -830,8 +832,8 @@ pub fn markdown_table() -> String {
             Class::Declaration => "declaration",
         };
         s.push_str(&format!(
-            "| `{name}` | {slots} | {class} | {} |\n",
-            r.summary
+            "| `{name}` | {} | {slots} | {class} | {} |\n",
+            r.fxc_slots, r.summary
         ));
     }
     s

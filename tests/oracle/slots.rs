@@ -79,7 +79,7 @@ fn the_microsoft_count_is_the_listings_slot_line() {
     let mut mismatches = Vec::new();
     let mut compared = 0;
     for f in all() {
-        let (Some(dis), Some(fxo)) = (&f.dis, &f.fxo) else {
+        let (true, Some(dis), Some(fxo)) = (f.accepted(), &f.dis, &f.fxo) else {
             continue;
         };
         let Some(want) = listing_count(dis) else {
