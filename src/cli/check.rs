@@ -3,7 +3,7 @@
 use super::args::{ConstantArgs, InputArgs, LimitArgs, SlotsArg, SourceArgs};
 use super::io::{audit, load_shader, print_json, say};
 use super::ui::Ui;
-use super::{BadInput, Outcome};
+use super::Outcome;
 use ps30::core::bytecode::{self, write::to_bytes};
 use ps30::core::cost::{self, Profile, Verdict};
 use ps30::core::load::{self, Loaded};
@@ -48,8 +48,8 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
     let a = cost::analyse(&loaded.shader, &loaded.file, &env, &profile)?;
     let name = &loaded.file.name;
     if args.json {
-        let crc = crc32_of(&loaded, &args.source)?;
-        let mut json = check_json(&loaded, &a, &found, Some(crc));
+        let crc = crc32_of(&loaded, &args.source);
+        let mut json = check_json(&loaded, &a, &found, crc);
         json["constant_table"] = loaded.constants.as_ref().map_or(Value::Null, table_json);
         print_json(&json)?;
     } else if ui.quiet {
@@ -72,12 +72,12 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
 
 /// The CRC-32 `check --json` names the shader by: of a compiled input's
 /// bytes as given, or of the bytecode ps30 assembles from text (what
-/// `ps30 asm` writes).
-fn crc32_of(loaded: &Loaded, source: &SourceArgs) -> Result<u32, BadInput> {
+/// `ps30 asm` writes; none if the writer refuses what validated, which
+/// `ps30 asm` would then report).
+fn crc32_of(loaded: &Loaded, source: &SourceArgs) -> Option<u32> {
     if let Some(crc) = loaded.file.bytecode_crc32() {
-        return Ok(crc);
+        return Some(crc);
     }
-    let (_, tokens) = load::assemble(loaded.file.clone(), &source.options())
-        .map_err(|e| BadInput(format!("{}: {e}", loaded.file.name)))?;
-    Ok(bytecode::crc32(&to_bytes(&tokens)))
+    let (_, tokens) = load::assemble(loaded.file.clone(), &source.options()).ok()?;
+    Some(bytecode::crc32(&to_bytes(&tokens)))
 }
