@@ -858,6 +858,62 @@ mod tests {
     }
 
     #[test]
+    fn the_slot_line_is_worded_as_d3ddisassemble_words_it() {
+        // Lines of D3DDisassemble's listings: an empty shader, one `mov`,
+        // one `texld` writing oC0, and a compiled blur.
+        let line = |texture, arithmetic| {
+            SlotCount {
+                texture,
+                arithmetic,
+            }
+            .listing_line()
+        };
+        assert_eq!(line(0, 0), "// approximately 0 instruction slots used");
+        assert_eq!(line(0, 1), "// approximately 1 instruction slot used");
+        assert_eq!(
+            line(1, 0),
+            "// approximately 1 instruction slot used (1 texture, 0 arithmetic)"
+        );
+        assert_eq!(
+            line(18, 52),
+            "// approximately 70 instruction slots used (18 texture, 52 arithmetic)"
+        );
+    }
+
+    #[test]
+    fn the_tables_differ_on_seven_rows_and_the_documented_one_is_never_lower() {
+        let mut differ = Vec::new();
+        for r in TABLE {
+            for (cube, predicated) in [(false, false), (true, false), (false, true), (true, true)] {
+                let fxc = r.count(SlotTable::Fxc, cube, predicated).total();
+                let doc = r.count(SlotTable::Documented, cube, predicated).total();
+                assert!(doc >= fxc, "{}", r.mnemonic);
+                if doc != fxc && !predicated {
+                    differ.push(format!("{}{}", r.mnemonic, if cube { " cube" } else { "" }));
+                }
+            }
+        }
+        differ.dedup();
+        assert_eq!(
+            differ,
+            [
+                "nop",
+                "nop cube",
+                "lrp",
+                "lrp cube",
+                "texkill",
+                "texkill cube",
+                "texld cube",
+                "texldp",
+                "texldp cube",
+                "texldb",
+                "texldb cube",
+                "texldl cube"
+            ]
+        );
+    }
+
+    #[test]
     fn mnemonics_resolve() {
         assert_eq!(Opcode::from_mnemonic("IF", true), Some(Opcode::Ifc));
         assert_eq!(Opcode::from_mnemonic("if", false), Some(Opcode::If));
