@@ -66,6 +66,48 @@ fn check_json_has_the_documented_fields() {
     assert_eq!(loops[0]["cost_per_iteration"], exact(506));
     assert_eq!(loops[0]["total"], exact(128 * 506));
     assert_eq!(loops[0]["line"], 32);
+    // The article's figures are the same under both slot tables.
+    assert_eq!(v["documented_slots"], 511);
+    assert_eq!(
+        v["fxc_slots"],
+        serde_json::json!({"total": 511, "texture": 125, "arithmetic": 386})
+    );
+}
+
+#[test]
+fn crc32_is_zlibs_of_the_bytecode() {
+    // Independent values: python3 -c "import zlib; print('%08x' %
+    // zlib.crc32(open(PATH, 'rb').read()))" on the committed file, and on the
+    // bytecode `ps30 asm` writes for the article's loop shader (which is
+    // D3DAssemble's, token for token).
+    let o = ps30(
+        &["check", "fuzz/seeds/bytecode/everything.fxo", "--json"],
+        repo(),
+    );
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(v["crc32"], "31d289ce");
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("loop.fxo");
+    let out = out.to_str().unwrap();
+    let o = ps30(
+        &[
+            "asm",
+            "asm/article/lum_pass1_loop.psh",
+            "-o",
+            out,
+            "--crc32",
+            "-q",
+        ],
+        repo(),
+    );
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert_eq!(String::from_utf8_lossy(&o.stdout), "0a92b37c\n");
+    let o = ps30(
+        &["check", "asm/article/lum_pass1_loop.psh", "--json"],
+        repo(),
+    );
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(v["crc32"], "0a92b37c");
 }
 
 #[test]

@@ -173,6 +173,44 @@ fn every_command_matches_the_schema() {
 
     let v = check("check", &["check", "article:loop", "--json"], repo, &[1]);
     assert_eq!(v["limits"]["slots"], 512);
+    assert_eq!(v["slot_table"], "fxc");
+    assert_eq!(v["slots"], v["fxc_slots"]["total"]);
+    // Every instruction of the article's shaders costs the same in both tables.
+    assert_eq!(v["documented_slots"], v["slots"]);
+    assert_eq!(v["slot_differences"], serde_json::json!([]));
+    // A shader the tables count differently says which instructions differ.
+    let two = t("two.psh");
+    std::fs::write(
+        &two,
+        "ps_3_0\ndcl_texcoord0 v0\ndcl_cube s0\ntexldb r0, v0, s0\nlrp r1, v0, r0, c0\nlrp r2, v0, r1, c0\nmov oC0, r2\n",
+    )
+    .unwrap();
+    let v = check(
+        "check",
+        &["check", &two, "--json", "--slots", "documented"],
+        repo,
+        &[0],
+    );
+    assert_eq!(v["slot_table"], "documented");
+    assert_eq!(
+        v["fxc_slots"],
+        serde_json::json!({"total": 4, "texture": 1, "arithmetic": 3})
+    );
+    assert_eq!(
+        (&v["slots"], &v["documented_slots"]),
+        (&serde_json::json!(11), &serde_json::json!(11))
+    );
+    assert_eq!(
+        v["slot_differences"],
+        serde_json::json!([
+            {"instruction": "texldb", "count": 1, "each": 5},
+            {"instruction": "lrp", "count": 2, "each": 1}
+        ])
+    );
+    assert_eq!(v["crc32"].as_str().map(str::len), Some(8));
+    let out = t("two.fxo");
+    let a = check("asm", &["asm", &two, "-o", &out, "--json"], repo, &[0]);
+    assert_eq!(a["crc32"], v["crc32"]);
     check(
         "check",
         &["check", "article:unrolled", "--int", "i2=128", "--json"],

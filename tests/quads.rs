@@ -466,8 +466,9 @@ mov oC0, r0",
     assert_eq!(c0[0], [0.0; 4], "a discarded pixel reports zeros");
     // The killed lane kept running: its neighbour's dsx still sees it.
     assert_eq!(c0[1], [1.0, 0.0, 1.0, 1.0]);
-    // Pixel costs: mov 1, if 3, texkill 2, endif 1, then 4 × 1 and dsx 2.
-    let killed = 1 + 3 + 2 + 1 + 1 + 2 + 1 + 1;
+    // Pixel costs (Microsoft's count): mov 1, if 3, texkill 1, endif 1,
+    // then 4 × 1 and dsx 2.
+    let killed = 1 + 3 + 1 + 1 + 1 + 2 + 1 + 1;
     let skipped = 1 + 3 + 1 + 1 + 2 + 1 + 1;
     assert_eq!(
         out.executed,

@@ -14,6 +14,7 @@ use ps30::core::cost::{Environment, Profile};
 use ps30::core::emu::{self, Address, Constants, Filter, MipFilter, SamplerState};
 use ps30::core::image::TargetFormat;
 use ps30::core::input::DEFAULT_MAX_INPUT_BYTES;
+use ps30::core::isa::SlotTable;
 use ps30::core::load::Options;
 
 /// `WxH` with both sides 1..=65536.
@@ -420,9 +421,10 @@ pub struct ProfileArgs {
 }
 
 impl ProfileArgs {
-    /// The profile these flags describe (named "custom" unless it is ps_3_0's).
+    /// The profile these flags describe (named "custom" unless it is ps_3_0's),
+    /// counting with the generator's slot table (`gen::FIT_TABLE`).
     pub fn profile(&self) -> Profile {
-        let base = Profile::ps_3_0();
+        let base = ps30::jobs::gen::fitting_profile();
         let p = Profile {
             max_slots: self.max_slots,
             max_executed: self.max_executed,
@@ -510,6 +512,25 @@ impl SamplerArgs {
             address_v: address,
             border: self.border,
             ..SamplerState::filtered(self.filter.into())
+        }
+    }
+}
+
+/// Which slot table `--slots` chooses for a verdict.
+#[derive(Clone, Copy, Debug, Default, clap::ValueEnum)]
+pub enum SlotsArg {
+    /// Microsoft's count, as D3DDisassemble and fxc print it.
+    #[default]
+    Fxc,
+    /// The per-instruction table of Microsoft's ps_3_0 documentation.
+    Documented,
+}
+
+impl From<SlotsArg> for SlotTable {
+    fn from(s: SlotsArg) -> Self {
+        match s {
+            SlotsArg::Fxc => SlotTable::Fxc,
+            SlotsArg::Documented => SlotTable::Documented,
         }
     }
 }

@@ -8,7 +8,8 @@ use super::io::{
 };
 use super::ui::Ui;
 use super::{BadInput, Outcome};
-use ps30::core::bytecode::write::to_bytes;
+use ps30::core::bytecode::{self, write::to_bytes};
+use ps30::core::isa::SlotTable;
 use ps30::core::load;
 use ps30::core::numbers::thousands;
 use std::io::IsTerminal;
@@ -25,9 +26,13 @@ pub struct Args {
     /// Where to write the bytecode (atomically); `-` writes it to standard output.
     #[arg(short, long, value_name = "FILE")]
     output: String,
-    /// Print JSON (source, output, tokens, bytes, slots, instructions) instead of text.
+    /// Print JSON (source, output, tokens, bytes, slots, instructions, crc32) instead of text.
     #[arg(long)]
     json: bool,
+    /// Also print the CRC-32 of the bytecode written (eight hex digits, the
+    /// name shader-replacement tools give a dumped shader); JSON always has it.
+    #[arg(long)]
+    crc32: bool,
 }
 
 pub fn run(args: Args, ui: &Ui) -> super::Result {
@@ -56,7 +61,8 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         ps30::core::output::write_bytes(Path::new(&args.output), &bytes)
             .map_err(|e| BadInput(format!("{}: {e}", args.output)))?;
     }
-    let slots = loaded.shader.info().total_slots;
+    let slots = loaded.shader.info().total(SlotTable::Fxc).total();
+    let crc = bytecode::crc32_hex(bytecode::crc32(&bytes));
     if args.json {
         print_json(&serde_json::json!({
             "source": loaded.file.name,
@@ -65,10 +71,16 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
             "bytes": bytes.len(),
             "slots": slots,
             "instructions": loaded.shader.instructions().len(),
+            "crc32": crc,
         }))?;
     } else if !ui.quiet {
+        let crc_text = if args.crc32 {
+            format!(", CRC32 {crc}")
+        } else {
+            String::new()
+        };
         let line = format!(
-            "wrote {}: {} tokens ({} bytes), {} instruction slots",
+            "wrote {}: {} tokens ({} bytes), {} instruction slots{crc_text}",
             if to_stdout {
                 "standard output"
             } else {
@@ -82,6 +94,13 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
             eprint(&format!("{line}\n"));
         } else {
             print(&format!("{line}\n"))?;
+        }
+    } else if args.crc32 {
+        // --quiet --crc32: the CRC alone, for scripts that name files by it.
+        if to_stdout {
+            eprint(&format!("{crc}\n"));
+        } else {
+            print(&format!("{crc}\n"))?;
         }
     }
     Ok(Outcome::Ok)

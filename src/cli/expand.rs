@@ -37,9 +37,13 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
     };
     let found = audit(ui, &loaded, &given, false)?;
     let text = format!(
-        "// expanded from {} by ps30 expand: {} instruction slots\n{}",
+        "// expanded from {} by ps30 expand: {} instruction slots (Microsoft's count)\n{}",
         loaded.file.name,
-        loaded.shader.info().total_slots,
+        loaded
+            .shader
+            .info()
+            .total(ps30::core::isa::SlotTable::Fxc)
+            .total(),
         write_program(loaded.shader.program())
     );
     if let Some(path) = &args.output {

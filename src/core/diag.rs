@@ -53,6 +53,8 @@ pub struct SourceFile {
     /// For a compiled shader (`text` is its listing): `(text offset, token
     /// index)` at each line and operand, in text order.
     tokens: Option<Vec<(u32, u32)>>,
+    /// For a compiled shader: the CRC-32 of the bytes it was read from.
+    bytecode_crc32: Option<u32>,
 }
 
 impl SourceFile {
@@ -71,6 +73,7 @@ impl SourceFile {
             text,
             line_starts,
             tokens: None,
+            bytecode_crc32: None,
         }
     }
 
@@ -85,6 +88,21 @@ impl SourceFile {
             tokens: Some(anchors),
             ..SourceFile::new(name, listing)
         }
+    }
+
+    /// This compiled shader, remembering the CRC-32 of the bytes it was read
+    /// from ([`SourceFile::bytecode_crc32`]).
+    pub fn with_bytecode_crc32(self, crc: u32) -> SourceFile {
+        SourceFile {
+            bytecode_crc32: Some(crc),
+            ..self
+        }
+    }
+
+    /// For a compiled shader: the CRC-32 of its bytes as given (see
+    /// [`crate::core::bytecode::crc32`]); `None` for text.
+    pub fn bytecode_crc32(&self) -> Option<u32> {
+        self.bytecode_crc32
     }
 
     /// Whether this is a compiled shader's listing.

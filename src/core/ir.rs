@@ -14,7 +14,7 @@
 //!   [`crate::core::valid::validate`], so holding one proves the program follows the
 //!   ps_3_0 rules ps30 checks and that its blocks are balanced.
 
-use crate::core::isa::{Compare, Opcode, RegFile, SamplerType};
+use crate::core::isa::{Compare, Opcode, RegFile, SamplerType, SlotCount, SlotTable};
 use std::collections::BTreeMap;
 use std::fmt;
 use std::sync::Arc;
@@ -406,6 +406,42 @@ impl Program {
             .find(|d| d.index == index)
             .map(|d| d.ty)
     }
+
+    /// The slots of one of this program's instructions under both tables:
+    /// [`crate::core::isa::OpInfo::count`] with its sampler's declared type
+    /// and its predicate.
+    pub fn slots_of(&self, ins: &Instruction) -> Slots {
+        let cube = ins
+            .src
+            .iter()
+            .find(|s| s.reg.file == RegFile::Sampler)
+            .is_some_and(|s| self.sampler_type(s.reg.index) == Some(SamplerType::Cube));
+        let row = ins.op.info();
+        let predicated = ins.predicate.is_some();
+        Slots {
+            fxc: row.count(SlotTable::Fxc, cube, predicated),
+            documented: row.count(SlotTable::Documented, cube, predicated),
+        }
+    }
+}
+
+/// One instruction's static slots under each table.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Slots {
+    /// Microsoft's count.
+    pub fxc: SlotCount,
+    /// The documented table's.
+    pub documented: SlotCount,
+}
+
+impl Slots {
+    /// The count under `table`.
+    pub fn under(self, table: SlotTable) -> SlotCount {
+        match table {
+            SlotTable::Fxc => self.fxc,
+            SlotTable::Documented => self.documented,
+        }
+    }
 }
 
 /// Facts the validator established about a program's structure.
@@ -421,11 +457,22 @@ pub struct Info {
     /// Index one past the last instruction of the main program (the first
     /// `label`, or the end).
     pub main_end: u32,
-    /// Static slots of each instruction (cube samplers and predication
-    /// included).
-    pub slots: Vec<u32>,
-    /// Sum of [`Info::slots`].
-    pub total_slots: u32,
+    /// Static slots of each instruction under both tables (cube samplers and
+    /// predication included).
+    pub slots: Vec<Slots>,
+}
+
+impl Info {
+    /// Instruction `i`'s static slots under `table`.
+    pub fn slots(&self, i: usize, table: SlotTable) -> u32 {
+        self.slots[i].under(table).total()
+    }
+
+    /// The program's static slots under `table`, split as Microsoft's
+    /// listing splits them; [`SlotCount::total`] is the count.
+    pub fn total(&self, table: SlotTable) -> SlotCount {
+        self.slots.iter().map(|s| s.under(table)).sum()
+    }
 }
 
 /// A program that passed validation, with its structural facts.

@@ -125,7 +125,8 @@ pub fn source_file(
             }
         })?;
         let l = bytecode::listing::listing(&module);
-        return Ok(SourceFile::compiled(name, l.text, l.anchors));
+        let crc = bytecode::crc32(&bytes);
+        return Ok(SourceFile::compiled(name, l.text, l.anchors).with_bytecode_crc32(crc));
     }
     if bytes.starts_with(b"DXBC") {
         return Err(NotASource::Dxbc { name: name.into() });

@@ -2,14 +2,16 @@
 //! analysis and the JSON forms of both.
 
 use crate::core::audit;
-use crate::core::cost::{Analysis, Verdict};
+use crate::core::cost::{table_differences, Analysis, TableDifference, Verdict};
+use crate::core::ir::Shader;
+use crate::core::isa::{SlotCount, SlotTable};
 use crate::core::load::Loaded;
 use crate::core::numbers::thousands;
 use crate::present::json;
 use serde_json::{json, Value};
 
 /// The text breakdown of `ps30 check`.
-pub fn check_text(name: &str, a: &Analysis) -> String {
+pub fn check_text(name: &str, shader: &Shader, a: &Analysis) -> String {
     let mut out = String::new();
     let p = &a.profile;
     out.push_str(&format!(
@@ -62,11 +64,15 @@ pub fn check_text(name: &str, a: &Analysis) -> String {
     out.push('\n');
     let slot_ok = a.slots <= p.max_slots;
     out.push_str(&format!(
-        "slots     {:>11} / {:<8} {}\n",
+        "slots     {:>11} / {:<8} {}, {}\n",
         thousands(a.slots),
         thousands(p.max_slots),
-        budget_text(a.slots, a.slots, p.max_slots)
+        budget_text(a.slots, a.slots, p.max_slots),
+        table_text(p.slot_table, a.split)
     ));
+    if let Some(line) = other_table_line(shader, p.slot_table) {
+        out.push_str(&format!("  {line}\n"));
+    }
     out.push_str(&format!(
         "executed  {:>11} / {:<8} {}\n",
         a.executed.text(),
@@ -82,6 +88,67 @@ pub fn check_text(name: &str, a: &Analysis) -> String {
         (Verdict::Exceeds, _) => "verdict: EXCEEDS the limits\n",
     });
     out
+}
+
+/// How the slot line names the table it counted with: Microsoft's count
+/// with its split as the listing prints it, or the documented table.
+fn table_text(table: SlotTable, split: SlotCount) -> String {
+    match table {
+        SlotTable::Fxc => format!(
+            "Microsoft's count ({} texture, {} arithmetic)",
+            split.texture, split.arithmetic
+        ),
+        SlotTable::Documented => "documented table".to_string(),
+    }
+}
+
+/// The other table's count, when it differs for this shader, with the
+/// instructions that make the difference:
+/// `documented table: 37 slots (+4: 2 lrp +1 each, 1 texldb +5 …)`.
+fn other_table_line(shader: &Shader, used: SlotTable) -> Option<String> {
+    let diffs = table_differences(shader);
+    if diffs.is_empty() {
+        return None;
+    }
+    let other = match used {
+        SlotTable::Fxc => SlotTable::Documented,
+        SlotTable::Documented => SlotTable::Fxc,
+    };
+    // Differences are documented minus Microsoft's: flip them for the
+    // other direction.
+    let sign = if other == SlotTable::Documented {
+        1
+    } else {
+        -1
+    };
+    let total: i64 = diffs.iter().map(|d| i64::from(d.count) * d.each).sum();
+    let count = shader.info().total(other);
+    let split = match other {
+        SlotTable::Fxc => format!(
+            "{} texture, {} arithmetic; ",
+            count.texture, count.arithmetic
+        ),
+        SlotTable::Documented => String::new(),
+    };
+    let parts: Vec<String> = diffs.iter().map(|d| difference_text(d, sign)).collect();
+    Some(format!(
+        "{}: {} slots ({split}{:+}: {})",
+        other.title(),
+        thousands(u64::from(count.total())),
+        sign * total,
+        parts.join(", ")
+    ))
+}
+
+/// One kind of difference: `1 texldb +5`, `2 lrp +1 each`.
+fn difference_text(d: &TableDifference, sign: i64) -> String {
+    let each = if d.count > 1 { " each" } else { "" };
+    format!(
+        "{} {} {:+}{each}",
+        thousands(u64::from(d.count)),
+        d.instruction,
+        sign * d.each
+    )
 }
 
 fn budget_text(min: u64, max: u64, limit: u64) -> String {
@@ -105,13 +172,18 @@ fn budget_text(min: u64, max: u64, limit: u64) -> String {
     }
 }
 
-/// The short form `ps30 check --quiet` prints: the budgets and the verdict.
-pub fn check_text_short(name: &str, a: &Analysis) -> String {
-    let full = check_text(name, a);
+/// The short form `ps30 check --quiet` prints: the budgets (the other
+/// slot table's count too, where it differs) and the verdict.
+pub fn check_text_short(name: &str, shader: &Shader, a: &Analysis) -> String {
+    let full = check_text(name, shader, a);
+    let other = [SlotTable::Fxc, SlotTable::Documented].map(|t| format!("  {}:", t.title()));
     let tail: Vec<&str> = full
         .lines()
         .filter(|l| {
-            l.starts_with("slots ") || l.starts_with("executed ") || l.starts_with("verdict")
+            l.starts_with("slots ")
+                || l.starts_with("executed ")
+                || l.starts_with("verdict")
+                || other.iter().any(|o| l.starts_with(o.as_str()))
         })
         .collect();
     tail.join("\n") + "\n"
@@ -128,12 +200,29 @@ pub fn diagnostics_json(loaded: &Loaded, found: &[audit::Finding]) -> Vec<Value>
     out
 }
 
-/// The JSON form of `ps30 check`.
-pub fn check_json(loaded: &Loaded, a: &Analysis, found: &[audit::Finding]) -> Value {
+/// The JSON form of `ps30 check`. `crc32` is the CRC-32 of the shader's
+/// bytecode, when the caller has it (see the command's docs for which bytes).
+pub fn check_json(
+    loaded: &Loaded,
+    a: &Analysis,
+    found: &[audit::Finding],
+    crc32: Option<u32>,
+) -> Value {
+    let info = loaded.shader.info();
+    let fxc = info.total(SlotTable::Fxc);
     json!({
         "shader": loaded.file.name,
+        "crc32": crc32.map(crate::core::bytecode::crc32_hex),
         "limits": json::limits(&a.profile),
         "slots": a.slots,
+        "slot_table": a.profile.slot_table,
+        "fxc_slots": {
+            "total": fxc.total(),
+            "texture": fxc.texture,
+            "arithmetic": fxc.arithmetic,
+        },
+        "documented_slots": info.total(SlotTable::Documented).total(),
+        "slot_differences": table_differences(&loaded.shader),
         "executed": json::range(a.executed),
         // u64::MAX is "at least this many": the count saturated.
         "executed_saturated": a.executed.max == u64::MAX,
@@ -170,7 +259,7 @@ pub fn expand_json(
 ) -> Value {
     json!({
         "shader": loaded.file.name,
-        "slots": loaded.shader.info().total_slots,
+        "slots": loaded.shader.info().total(SlotTable::Fxc).total(),
         "instructions": loaded.shader.instructions().len(),
         "output": output.map(|p| p.display().to_string()),
         "assembly": assembly,

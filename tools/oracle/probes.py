@@ -255,11 +255,17 @@ def op_probes(op):
         for fname, reg, needs in DEST_FILES:
             dst = (reg, op.dst[1])
             add(f"dst-{fname}", op.body(op.line(dst=dst)), op.needs_of() | needs)
-    if op.srcs and op.srcs[0][0].startswith("r"):
+    # Source modifiers on every temporary source: the first keeps the name
+    # `srcmod-M`, the others are `srcKmod-M` (`sub` turns its second source's
+    # negation around, so each position matters).
+    for k, src in enumerate(op.srcs):
+        if not src[0].startswith("r"):
+            continue
         for mname, form in SOURCE_MODIFIERS:
             srcs = list(op.srcs)
-            srcs[0] = (form.format(srcs[0][0]),) + srcs[0][1:]
-            add(f"srcmod-{mname}", op.body(op.line(srcs=srcs)), op.needs_of())
+            srcs[k] = (form.format(srcs[k][0]),) + srcs[k][1:]
+            prefix = "srcmod" if k == 0 else f"src{k}mod"
+            add(f"{prefix}-{mname}", op.body(op.line(srcs=srcs)), op.needs_of())
     if op.mods:
         for m in DEST_MODIFIERS:
             add(f"dstmod{m.replace('_', '-')}", op.body(op.line(mnemonic=op.name + m)),
@@ -529,7 +535,7 @@ probed one only declare, define or write what it reads. docs/oracle.md describes
 
 | folder | what varies |
 |---|---|
-| `<instruction>/` | `base`: the baseline; `srcK-F`: source K from register file F; `dst-F`: the destination's file; `srcmod-M`: source modifier M on the first source; `dstmod-M`: instruction modifier M; `pred-P`: predicate P |
+| `<instruction>/` | `base`: the baseline; `srcK-F`: source K from register file F; `dst-F`: the destination's file; `srcmod-M`: source modifier M on the first source, `srcKmod-M` on source K; `dstmod-M`: instruction modifier M; `pred-P`: predicate P |
 | `swizzle/` | every source swizzle of 1 to 4 letters on `mov`, rgba spellings, the swizzles of scalar sources |
 | `mask/` | every write mask on `mov` and on the instructions that restrict theirs |
 | `sampler/` | the texld family on 2D, cube and volume samplers, and sampler declarations |

@@ -74,6 +74,19 @@ pub const COMMENT: u32 = 0xFFFE;
 /// `CTAB` as the first token of a comment body (little-endian FourCC).
 pub const CTAB: u32 = u32::from_le_bytes(*b"CTAB");
 
+/// The CRC-32 of bytecode: the standard CRC-32 (IEEE 802.3, as zlib's
+/// `crc32` computes it) of the bytes, the identifier shader-replacement
+/// tools name a dumped shader by (eight hex digits, [`crc32_hex`]).
+pub fn crc32(bytes: &[u8]) -> u32 {
+    crc32fast::hash(bytes)
+}
+
+/// A CRC-32 as those tools write it in file names: eight lower-case hex
+/// digits.
+pub fn crc32_hex(crc: u32) -> String {
+    format!("{crc:08x}")
+}
+
 /// Result-modifier bits of a destination token.
 pub const SAT: u8 = 1;
 /// `_pp`: partial precision (ps30 computes in full precision anyway).

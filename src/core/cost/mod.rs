@@ -8,8 +8,11 @@
 //! counted. ps30 uses the rule that reproduces every figure of the article
 //! (9 cycles per x pixel, 6 per y line, 64,853 for a 128×56 block):
 //!
-//! * every executed instruction is charged its static slots (predication
-//!   adds one, cube samplers cost more — see [`crate::core::isa`]);
+//! * every executed instruction is charged its static slots under the
+//!   profile's [`SlotTable`] (Microsoft's count by default, or the documented
+//!   table; predication adds one, and in the documented table cube samplers
+//!   cost more — see [`crate::core::isa`]). Static slots and executed counts
+//!   always use the same table (`Ctx::slots` is the one place it is read);
 //! * `rep`/`loop` and `endrep`/`endloop` are charged **once per iteration**
 //!   (3 + 2 slots), not once per entry; a loop that runs 0 times is charged
 //!   its `rep`/`loop` slots once;
@@ -31,7 +34,7 @@
 
 use crate::core::diag::SourceFile;
 use crate::core::ir::{Shader, SrcMod};
-use crate::core::isa::{Opcode, RegFile};
+use crate::core::isa::{Opcode, RegFile, SlotCount, SlotTable};
 use serde::Serialize;
 use std::collections::{BTreeMap, BTreeSet};
 
@@ -54,6 +57,11 @@ pub struct Profile {
     /// rep/loop nesting depth.
     #[serde(rename = "loop_nesting")]
     pub max_loop_nesting: u32,
+    /// The per-instruction slot table counts use (static slots, executed
+    /// counts, the verdict). Not part of the `limits` object: commands that
+    /// report it name it beside.
+    #[serde(skip)]
+    pub slot_table: SlotTable,
 }
 
 impl Profile {
@@ -67,6 +75,15 @@ impl Profile {
             max_executed: 65_535,
             max_rep_count: crate::core::isa::MAX_REP_COUNT as u32,
             max_loop_nesting: crate::core::isa::MAX_LOOP_NESTING,
+            slot_table: SlotTable::default(),
+        }
+    }
+
+    /// This profile, counting with `table`.
+    pub fn counting(self, table: SlotTable) -> Profile {
+        Profile {
+            slot_table: table,
+            ..self
         }
     }
 }
@@ -343,8 +360,11 @@ pub enum Verdict {
 /// The full analysis of a shader under a profile.
 #[derive(Clone, Debug, Serialize)]
 pub struct Analysis {
-    /// Static instruction slots.
+    /// Static instruction slots under the profile's table.
     pub slots: u64,
+    /// The same static slots split into texture and arithmetic, as
+    /// Microsoft's listing splits them.
+    pub split: SlotCount,
     /// Executed instruction slots per pixel, shortest and longest path.
     pub executed: Range,
     /// Whether the executed count depends on data (then `reasons` say why).
@@ -378,6 +398,7 @@ impl std::error::Error for CostError {}
 
 struct Ctx<'a> {
     shader: &'a Shader,
+    table: SlotTable,
     env: &'a Environment,
     reasons: Vec<String>,
     loops: Vec<LoopCost>,
@@ -405,8 +426,10 @@ impl Ctx<'_> {
         }
     }
 
+    /// Instruction `i`'s slots under the profile's table: the only place
+    /// the analysis reads a slot cost.
     fn slots(&self, i: usize) -> u64 {
-        self.shader.info().slots[i] as u64
+        self.shader.info().slots(i, self.table) as u64
     }
 
     /// Iterations of the rep/loop at `head`.
@@ -920,6 +943,7 @@ pub fn analyse(
     }
     let mut ctx = Ctx {
         shader,
+        table: profile.slot_table,
         env,
         reasons: Vec::new(),
         loops: Vec::new(),
@@ -941,7 +965,7 @@ pub fn analyse(
     for (i, ins) in shader.instructions().iter().enumerate() {
         let line = file.line_of(ins.origin.span.start);
         let e = ctx.executions[i];
-        let s = info.slots[i] as u64;
+        let s = ctx.slots(i);
         let entry = lines.entry(line).or_insert_with(|| LineCost {
             line,
             text: file.text[ins.origin.span.range()].to_string(),
@@ -953,7 +977,8 @@ pub fn analyse(
         entry.executions = entry.executions.add(e);
         entry.executed = entry.executed.add(e.mul(Range::exact(s)));
     }
-    let slots = info.total_slots as u64;
+    let split = info.total(profile.slot_table);
+    let slots = u64::from(split.total());
     let verdict = if slots > profile.max_slots || executed.min > profile.max_executed {
         Verdict::Exceeds
     } else if executed.max > profile.max_executed {
@@ -963,6 +988,7 @@ pub fn analyse(
     };
     Ok(Analysis {
         slots,
+        split,
         executed,
         data_dependent: !executed.is_exact(),
         reasons: ctx.reasons,
@@ -972,4 +998,52 @@ pub fn analyse(
         verdict,
         executions: ctx.executions,
     })
+}
+
+/// Instructions of one kind that the two slot tables count differently in a
+/// shader: what `check` prints beside the count its verdict used.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct TableDifference {
+    /// The instruction as the output names it: its mnemonic, with
+    /// " on a cube sampler" where the sampler type is what differs.
+    pub instruction: String,
+    /// How many of the shader's instructions are of this kind.
+    pub count: u32,
+    /// The documented table's slots minus Microsoft's, for each one.
+    pub each: i64,
+}
+
+/// Where the documented table and Microsoft's count differ for a shader,
+/// kind by kind in order of first appearance; empty when they agree. The
+/// totals differ by the sum of `count × each`.
+pub fn table_differences(shader: &Shader) -> Vec<TableDifference> {
+    let info = shader.info();
+    let mut out: Vec<TableDifference> = Vec::new();
+    for (i, ins) in shader.instructions().iter().enumerate() {
+        let s = info.slots[i];
+        let each = i64::from(s.documented.total()) - i64::from(s.fxc.total());
+        if each == 0 {
+            continue;
+        }
+        let row = ins.op.info();
+        let on_cube = row.cube_slots.is_some()
+            && s.documented.total() != row.slots_of(false, ins.predicate.is_some());
+        let instruction = if on_cube {
+            format!("{} on a cube sampler", row.mnemonic)
+        } else {
+            row.mnemonic.to_string()
+        };
+        match out
+            .iter_mut()
+            .find(|d| d.instruction == instruction && d.each == each)
+        {
+            Some(d) => d.count += 1,
+            None => out.push(TableDifference {
+                instruction,
+                count: 1,
+                each,
+            }),
+        }
+    }
+    out
 }

@@ -21,7 +21,7 @@
 
 use super::{EmuError, GradientSite};
 use crate::core::ir::{Dst, Info, Instruction, Program, Shader, Span, Src, SrcMod, Swizzle};
-use crate::core::isa::{Compare, Opcode, RegFile, SamplerType};
+use crate::core::isa::{Compare, Opcode, RegFile, SamplerType, SlotTable};
 use std::collections::{BTreeSet, HashMap};
 
 /// A source operand: a row base, a packed swizzle and modifier bits.
@@ -1093,8 +1093,15 @@ fn declared_inputs(program: &Program) -> u16 {
 /// The IR has been validated, so errors here mean the IR and its [`Info`] do
 /// not agree (or use something the emulator cannot represent); they are
 /// reported as [`EmuError::Malformed`] / [`EmuError::MissingSamplerDecl`],
-/// never as panics.
+/// never as panics. Each micro-op charges its instruction's slots under
+/// Microsoft's table (the default [`SlotTable`]), the table the cost model's
+/// executed counts use unless told otherwise; [`compile_under`] takes the other.
 pub fn compile(shader: &Shader) -> Result<Compiled, EmuError> {
+    compile_under(shader, SlotTable::default())
+}
+
+/// [`compile`], each micro-op charging its instruction's slots under `table`.
+pub fn compile_under(shader: &Shader, table: SlotTable) -> Result<Compiled, EmuError> {
     let program = shader.program();
     let info = shader.info();
     let ins = shader.instructions();
@@ -1131,8 +1138,9 @@ pub fn compile(shader: &Shader) -> Result<Compiled, EmuError> {
     // Pass 2: ops, then the end sentinel.
     let mut ops = Vec::with_capacity(n + 1);
     for (i, x) in ins.iter().enumerate() {
-        let slots = u8::try_from(info.slots[i])
-            .map_err(|_| malformed(i, format!("slot cost {} too large", info.slots[i])))?;
+        let cost = info.slots(i, table);
+        let slots =
+            u8::try_from(cost).map_err(|_| malformed(i, format!("slot cost {cost} too large")))?;
         let op = b.op(i, x)?;
         ops.push(MicroOp { op, slots });
     }

@@ -88,7 +88,7 @@ mod testasm;
 mod tests;
 mod texop;
 
-pub use compile::{compile, Compiled, MicroOp};
+pub use compile::{compile, compile_under, Compiled, MicroOp};
 
 use crate::core::isa::SamplerType;
 use exec::{BatchOut, Worker};

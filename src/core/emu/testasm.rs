@@ -41,31 +41,18 @@ pub fn build_info(program: &Program) -> Info {
             }
             _ => {}
         }
-        let info = x.op.info();
-        let cube = x
-            .src
-            .iter()
-            .find(|s| s.reg.file == RegFile::Sampler)
-            .and_then(|s| program.sampler_type(s.reg.index))
-            == Some(SamplerType::Cube);
-        let base = match (cube, info.cube_slots) {
-            (true, Some(c)) => c,
-            _ => info.slots,
-        };
-        slots.push(base + x.predicate.is_some() as u32);
+        slots.push(program.slots_of(x));
     }
     assert!(stack.is_empty(), "unclosed block");
     let main_end = ins
         .iter()
         .position(|x| x.op == Opcode::Label)
         .unwrap_or(ins.len()) as u32;
-    let total_slots = slots.iter().sum();
     Info {
         matching,
         labels,
         main_end,
         slots,
-        total_slots,
     }
 }
 

@@ -245,7 +245,7 @@ fn check_program(p: &Program, diags: &mut Diagnostics, file: &SourceFile) -> Inf
     let mut c = Checker::new(p, diags, file);
     for (idx, ins) in p.instructions.iter().enumerate() {
         c.owner[idx] = c.current;
-        c.info.slots[idx] = slot_cost(p, ins);
+        c.info.slots[idx] = p.slots_of(ins);
         c.check_declared(ins);
         c.check_read_ports(ins);
         c.check_relative(ins);
@@ -254,23 +254,6 @@ fn check_program(p: &Program, diags: &mut Diagnostics, file: &SourceFile) -> Inf
         c.structure(idx, ins);
     }
     c.finish()
-}
-
-/// An instruction's slots: the table, cube samplers, predication.
-fn slot_cost(p: &Program, ins: &Instruction) -> u32 {
-    let info_row = ins.op.info();
-    let mut slots = info_row.slots;
-    if let Some(cube) = info_row.cube_slots {
-        if let Some(s) = ins.src.iter().find(|s| s.reg.file == RegFile::Sampler) {
-            if p.sampler_type(s.reg.index) == Some(isa::SamplerType::Cube) {
-                slots = cube;
-            }
-        }
-    }
-    if ins.predicate.is_some() {
-        slots += 1;
-    }
-    slots
 }
 
 /// The program-level pass's state as it walks the instructions in order:
@@ -302,7 +285,7 @@ impl<'p, 'd> Checker<'p, 'd> {
             info: Info {
                 matching: vec![None; n],
                 main_end: n as u32,
-                slots: vec![0; n],
+                slots: vec![Default::default(); n],
                 ..Info::default()
             },
             declared_inputs: p.inputs.iter().map(|d| (d.reg.file, d.reg.index)).collect(),
@@ -780,7 +763,6 @@ impl<'p, 'd> Checker<'p, 'd> {
             self.diags,
             self.file,
         );
-        self.info.total_slots = self.info.slots.iter().sum();
         self.info
     }
 }

@@ -41,8 +41,21 @@ pub mod set;
 
 pub use asm::{Pass1Form, Pass2Form};
 
+/// The slot table the generator fits under: the documented one, which counts
+/// every instruction at least as high as Microsoft's tools do, so a shader
+/// that fits it fits either count. The generated listings use only
+/// instructions the two tables cost alike (`texld` on 2D samplers, `mov`,
+/// `add`, `mad`, `rep`, `endrep`, …), so their figures are the same under
+/// both.
+pub const FIT_TABLE: SlotTable = SlotTable::Documented;
+
+/// The ps_3_0 profile the generator fits under ([`FIT_TABLE`]).
+pub fn fitting_profile() -> Profile {
+    Profile::ps_3_0().counting(FIT_TABLE)
+}
+
 use crate::core::cost::{self, Environment, Profile, Verdict};
-use crate::core::isa::Opcode;
+use crate::core::isa::{Opcode, SlotTable};
 use crate::core::load::{self, Options};
 use crate::core::numbers::thousands;
 

@@ -855,7 +855,7 @@ pub const DEFAULT_DELTA: f64 = crate::jobs::luminance::reference::DEFAULT_DELTA;
 /// the plan's recommended configuration when it differs, under the ps_3_0
 /// profile.
 pub fn frame_set(frame: (u32, u32)) -> Result<(Bundle, plan::Plan), GenError> {
-    let profile = Profile::ps_3_0();
+    let profile = super::fitting_profile();
     let p = plan::plan(frame, &profile, DEFAULT_DELTA)?;
     let mut picks = vec![
         (Pass1Form::Unrolled, BlockChoice::Fit),

@@ -88,7 +88,9 @@ pub fn largest_fitting_repeat(
         t.push_str(&n.to_string());
         t.push_str(&text[span.end as usize..]);
         let loaded = load::load_str(name, &t, &Options::default()).map_err(|e| e.to_string())?;
-        Ok(loaded.shader.info().total_slots as u64)
+        Ok(u64::from(
+            loaded.shader.info().total(profile.slot_table).total(),
+        ))
     };
     let (mut lo, mut hi) = (0u64, 1u64);
     while slots_with(hi)? <= profile.max_slots {
@@ -240,7 +242,9 @@ fn per_sample(loaded: &load::Loaded, a: &Analysis) -> (u64, u64, u64) {
         .collect();
     let macro_executed: u64 = in_macro
         .iter()
-        .map(|&i| a.executions[i].max * loaded.shader.info().slots[i] as u64)
+        .map(|&i| {
+            a.executions[i].max * u64::from(loaded.shader.info().slots(i, a.profile.slot_table))
+        })
         .sum();
     let samples: u64 = in_macro
         .iter()
