@@ -34,6 +34,18 @@ fn normalised(p: &Program) -> (Program, Vec<(u32, [u32; 4])>) {
     let clear = Origin::default;
     for i in &mut p.instructions {
         i.origin = clear();
+        // The assembler writes `sub a, b, c` as Microsoft's does, `add a, b,
+        // -c`: the same program, spelled the one way.
+        if i.op == Opcode::Sub {
+            i.op = Opcode::Add;
+            i.src[1].modifier = match i.src[1].modifier {
+                SrcMod::None => SrcMod::Neg,
+                SrcMod::Neg => SrcMod::None,
+                SrcMod::Abs => SrcMod::NegAbs,
+                SrcMod::NegAbs => SrcMod::Abs,
+                other => other,
+            };
+        }
     }
     for d in &mut p.float_defs {
         d.origin = clear();

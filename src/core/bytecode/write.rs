@@ -247,7 +247,27 @@ fn operation(ast: &InstrAst) -> R<Instr> {
             ),
         ));
     }
+    if op == Opcode::Sub {
+        sub_as_add(&mut instr);
+    }
     Ok(instr)
+}
+
+/// Microsoft's assembler writes no `sub`: `sub a, b, c` becomes `add a, b,
+/// -c`, the second source's negation turned around (`-c` gives `c`, `c_abs`
+/// gives `-c_abs`), and ps30 writes the tokens it writes. (The reader still
+/// reads D3DSIO_SUB from other tools.)
+pub fn sub_as_add(instr: &mut Instr) {
+    instr.op = Opcode::Add;
+    if let Some(s) = instr.src.get_mut(1) {
+        s.modifier = match s.modifier {
+            SrcMod::None => SrcMod::Neg,
+            SrcMod::Neg => SrcMod::None,
+            SrcMod::Abs => SrcMod::NegAbs,
+            SrcMod::NegAbs => SrcMod::Abs,
+            other => other,
+        };
+    }
 }
 
 /// `dcl_<usage><n>`, `dcl_2d`, `dcl` with their register.
