@@ -62,7 +62,7 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         }
         if loaded.file.is_compiled() {
             text.push_str(&format!(
-                "(a compiled shader: lines are those of `ps30 disasm {name}`)\n"
+                "(a compiled shader: lines are those of `ps30 disasm --annotated {name}`)\n"
             ));
         }
         say(ui, &text)?;

@@ -1,11 +1,13 @@
-//! `ps30 disasm`: a compiled shader as an assembly listing in the style of
-//! fxc's, which `ps30 asm` turns back into the same tokens.
+//! `ps30 disasm`: a compiled shader as the listing Microsoft's
+//! `D3DDisassemble` writes for it, byte for byte (`ps30 asm` reads it
+//! back), or with `--annotated` as ps30's own listing, which keeps every
+//! comment block and turns back into the same tokens, comments included.
 
 use super::args::{InputArgs, SourceArgs};
 use super::io::{exists, print, print_json, read_input, source_error};
 use super::ui::Ui;
 use super::{BadInput, Outcome};
-use ps30::core::bytecode::{self, listing::listing, read::read, write::to_bytes};
+use ps30::core::bytecode::{self, listing::listing, microsoft, read::read, write::to_bytes};
 use ps30::core::load;
 use ps30::present::disasm::disasm_json;
 
@@ -17,9 +19,13 @@ pub struct Args {
     source: SourceArgs,
     #[command(flatten)]
     input: InputArgs,
-    /// Print JSON (constant table, comment blocks, instructions with their offsets, listing).
+    /// Print JSON (constant table, comment blocks, instructions with their offsets, both listings).
     #[arg(long)]
     json: bool,
+    /// Print ps30's annotated listing instead of Microsoft's: comment blocks kept as
+    /// `//#comment` token lines, constants spelled to parse back to the same bits.
+    #[arg(long)]
+    annotated: bool,
 }
 
 pub fn run(args: Args, ui: &Ui) -> super::Result {
@@ -46,11 +52,12 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
             .to_string(),
         )
     })?;
-    let l = listing(&module);
     if args.json {
-        print_json(&disasm_json(&name, &module, bytes.len(), &l))?;
+        print_json(&disasm_json(&name, &module, bytes.len()))?;
+    } else if args.annotated {
+        print(&listing(&module).text)?;
     } else {
-        print(&l.text)?;
+        print(&microsoft::listing(&module))?;
     }
     Ok(Outcome::Ok)
 }

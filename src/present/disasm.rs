@@ -1,15 +1,18 @@
 //! What `ps30 disasm --json` prints: the decoded stream — constant table,
 //! comment blocks, instructions with their token and byte offsets — next
-//! to the listing.
+//! to both listings (Microsoft's text and ps30's annotated one).
 
-use crate::core::bytecode::listing::{instruction_text, slots, Listing};
-use crate::core::bytecode::{ctab, ItemKind, Module, CTAB};
+use crate::core::bytecode::listing::{self, instruction_text};
+use crate::core::bytecode::{ctab, microsoft, ItemKind, Module, CTAB};
 use crate::present::constants::table_json;
 use serde_json::{json, Value};
 
-/// The JSON form of a disassembly of `bytes` bytes.
-pub fn disasm_json(name: &str, module: &Module, bytes: usize, listing: &Listing) -> Value {
-    let (texture, arithmetic) = slots(module);
+/// The JSON form of a disassembly of `bytes` bytes. `slots` is the count
+/// of Microsoft's listing (its last line), `slots_documented` the count by
+/// the per-instruction table of Microsoft's documentation.
+pub fn disasm_json(name: &str, module: &Module, bytes: usize) -> Value {
+    let (texture, arithmetic) = microsoft::slots(module);
+    let (doc_texture, doc_arithmetic) = listing::slots(module);
     let table = module.items.iter().find_map(|i| match &i.kind {
         ItemKind::Comment(body) if body.first() == Some(&CTAB) => ctab::decode(&body[1..]).ok(),
         _ => None,
@@ -31,7 +34,8 @@ pub fn disasm_json(name: &str, module: &Module, bytes: usize, listing: &Listing)
                 "length": ins.operand_tokens(),
                 "opcode": ins.op.info().mnemonic,
                 "code": ins.op.info().code,
-                "text": instruction_text(ins),
+                "text": microsoft::instruction(ins),
+                "annotated": instruction_text(ins),
             })),
         }
     }
@@ -41,9 +45,11 @@ pub fn disasm_json(name: &str, module: &Module, bytes: usize, listing: &Listing)
         "tokens": bytes / 4,
         "bytes": bytes,
         "slots": {"total": texture + arithmetic, "texture": texture, "arithmetic": arithmetic},
+        "slots_documented": {"total": doc_texture + doc_arithmetic, "texture": doc_texture, "arithmetic": doc_arithmetic},
         "constant_table": table.as_ref().map(table_json),
         "comments": comments,
         "instructions": instructions,
-        "listing": listing.text,
+        "listing": microsoft::listing(module),
+        "annotated": listing::listing(module).text,
     })
 }

@@ -44,14 +44,15 @@ pub fn listing(module: &Module) -> Listing {
         },
     };
     let table = module.items.iter().find_map(|i| match &i.kind {
-        ItemKind::Comment(body) if body.first() == Some(&CTAB) => ctab::decode(&body[1..]).ok(),
+        ItemKind::Comment(body) if body.first() == Some(&CTAB) => {
+            ctab::decode(&body[1..]).ok().map(|_| &body[1..])
+        }
         _ => None,
     });
-    if let Some(t) = &table {
-        for line in ctab::describe(t) {
-            l.line(0, &format!("//{line}"));
+    if let Some(body) = table {
+        for line in ctab::listing_header(body, true).lines() {
+            l.line(0, line);
         }
-        l.line(0, "");
     }
     l.line(0, "    ps_3_0");
     let mut depth = 0usize;
@@ -308,10 +309,31 @@ fn literal_texts(extra: &Extra) -> Vec<String> {
 /// The shortest decimal that the front end reads back to the same float
 /// (it parses a double and rounds it to single precision), or the exact
 /// value when the shortest one would round twice to a neighbour.
+/// Infinities and the NaNs text can write are spelled as Microsoft's
+/// assembler reads them ([`special_float_text`]).
 pub fn float_text(x: f32) -> String {
+    if let Some(special) = special_float_text(x.to_bits()) {
+        return special.to_string();
+    }
     let short = x.to_string();
     match short.parse::<f64>() {
         Ok(v) if (v as f32).to_bits() == x.to_bits() => short,
         _ => (x as f64).to_string(),
     }
+}
+
+/// How the front end (like Microsoft's assembler) writes the floats that
+/// are not numbers: `1.#INF` and `-1.#INF`, and the four NaNs its spellings
+/// give (`1.#QNAN` 0x7FE00000, `-1.#QNAN` 0xFFE00000, `1.#IND` 0xFFC00000,
+/// `-1.#IND` 0x7FC00000); `None` for finite values and every other NaN.
+pub fn special_float_text(bits: u32) -> Option<&'static str> {
+    Some(match bits {
+        0x7F80_0000 => "1.#INF",
+        0xFF80_0000 => "-1.#INF",
+        0x7FE0_0000 => "1.#QNAN",
+        0xFFE0_0000 => "-1.#QNAN",
+        0xFFC0_0000 => "1.#IND",
+        0x7FC0_0000 => "-1.#IND",
+        _ => return None,
+    })
 }

@@ -58,6 +58,7 @@
 
 pub mod ctab;
 pub mod listing;
+pub mod microsoft;
 pub mod read;
 pub mod write;
 

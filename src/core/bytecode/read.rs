@@ -413,15 +413,15 @@ fn literals(kind: Operand, ops: &mut Operands) -> Result<Extra, ReadError> {
     let mut v = [0u32; 4];
     for slot in &mut v {
         let (t, byte) = ops.take()?;
-        if kind == Operand::FloatLits && !f32::from_bits(t).is_finite() {
+        if kind == Operand::FloatLits
+            && !f32::from_bits(t).is_finite()
+            && super::listing::special_float_text(t).is_none()
+        {
             return Err(ReadError::at(
                 byte,
-                format!(
-                    "`def` value {t:#010x} is {}, which assembly text cannot write",
-                    f32::from_bits(t)
-                ),
+                format!("`def` value {t:#010x} is a NaN that assembly text cannot write"),
             )
-            .with_help("ps30 reads constants that are finite numbers"));
+            .with_help("ps30 reads finite constants, infinities (1.#INF) and the NaNs written 1.#QNAN, -1.#QNAN, 1.#IND and -1.#IND (0x7FE00000, 0xFFE00000, 0xFFC00000, 0x7FC00000)"));
         }
         *slot = t;
     }

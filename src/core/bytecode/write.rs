@@ -386,6 +386,7 @@ fn number(operand: &OperandAst, integer: bool) -> R<u32> {
     let OperandAst::Number {
         value,
         integer: written_int,
+        special,
         span,
     } = *operand
     else {
@@ -397,8 +398,8 @@ fn number(operand: &OperandAst, integer: bool) -> R<u32> {
         }
         return Ok(value as i32 as u32);
     }
-    let f = value as f32;
-    if !f.is_finite() {
+    let f = crate::core::front::ast::single(value);
+    if !special && !f.is_finite() {
         return Err(cannot(span, "the number does not fit in a 32-bit float"));
     }
     Ok(f.to_bits())

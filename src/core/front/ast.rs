@@ -91,6 +91,9 @@ pub enum OperandAst {
         value: f64,
         /// Whether it was written without a fraction or exponent.
         integer: bool,
+        /// Whether it was written as an infinity or NaN (`1.#INF`,
+        /// `-1.#IND`): only these may be outside a float's range.
+        special: bool,
         /// Where it is.
         span: Span,
     },
@@ -147,4 +150,18 @@ pub struct RelAst {
     pub offset: i64,
     /// The whole `[…]`.
     pub span: Span,
+}
+
+/// A literal rounded to single precision, NaNs included bit for bit: the
+/// sign and the top 22 bits of a NaN's payload are kept and the result is
+/// a quiet NaN, as x86's conversion does (Rust's `as` leaves a NaN's
+/// payload unspecified).
+pub fn single(value: f64) -> f32 {
+    if value.is_nan() {
+        let bits = value.to_bits();
+        let sign = ((bits >> 63) as u32) << 31;
+        let payload = ((bits >> 29) as u32) & 0x007F_FFFF;
+        return f32::from_bits(sign | 0x7FC0_0000 | payload);
+    }
+    value as f32
 }

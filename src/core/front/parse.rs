@@ -566,6 +566,14 @@ impl<'a> Cursor<'a> {
             r.starts_with(|c: char| c.is_ascii_digit()) || r.starts_with('.')
         };
         if looks_numeric {
+            if let Some(value) = self.special_float() {
+                return Ok(OperandAst::Number {
+                    value,
+                    integer: false,
+                    special: true,
+                    span: self.span_from(start),
+                });
+            }
             let Some(text) = self.eat(recognize_float::<&str, NomError>) else {
                 return Err(self.error_here(format!("malformed number, {}", self.found())));
             };
@@ -591,6 +599,7 @@ impl<'a> Cursor<'a> {
             return Ok(OperandAst::Number {
                 value,
                 integer,
+                special: false,
                 span,
             });
         }
@@ -604,6 +613,38 @@ impl<'a> Cursor<'a> {
             self.rest = &self.text[start - self.base..];
         }
         self.register().map(OperandAst::Reg)
+    }
+
+    /// The spellings of infinities and NaNs that Microsoft's C runtime
+    /// prints and Microsoft's assembler reads back: `1.#INF`, `1.#QNAN`,
+    /// `1.#SNAN`, `1.#IND` (exactly so, upper case), with an optional sign
+    /// that flips the sign bit. The NaNs are the ones the assembler writes
+    /// (`1.#QNAN` and `1.#SNAN` 0x7FE00000, `1.#IND` 0xFFC00000, as
+    /// doubles whose conversion to single precision gives those bits; see
+    /// [`super::ast::single`]).
+    fn special_float(&mut self) -> Option<f64> {
+        let (negative, rest) = match self.rest.as_bytes().first() {
+            Some(b'-') => (true, &self.rest[1..]),
+            Some(b'+') => (false, &self.rest[1..]),
+            _ => (false, self.rest),
+        };
+        let rest = rest.strip_prefix("1.#")?;
+        let (bits, len): (u64, usize) = [
+            ("INF", 0x7FF0_0000_0000_0000),
+            ("QNAN", 0x7FFC_0000_0000_0000),
+            ("SNAN", 0x7FFC_0000_0000_0000),
+            ("IND", 0xFFF8_0000_0000_0000),
+        ]
+        .iter()
+        .find(|(word, _)| rest.starts_with(word))
+        .map(|&(word, bits)| (bits, word.len()))?;
+        if rest[len..].starts_with(|c: char| is_ident_char(c) || c == '.' || c == '#') {
+            return None;
+        }
+        let used = self.rest.len() - rest.len() + len;
+        self.rest = &self.rest[used..];
+        let sign = if negative { 1u64 << 63 } else { 0 };
+        Some(f64::from_bits(bits ^ sign))
     }
 
     /// `[-|!]name[index][\[aL + n\]][_abs][.components][_abs]`

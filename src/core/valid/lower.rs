@@ -1219,6 +1219,7 @@ fn lower_def(ast: &InstrAst) -> R<Lowered> {
                     OperandAst::Number {
                         value,
                         integer,
+                        special,
                         span,
                     } => {
                         if file == RegFile::ConstInt && !integer {
@@ -1234,7 +1235,9 @@ fn lower_def(ast: &InstrAst) -> R<Lowered> {
                             )
                             .with_label("out of range"));
                         }
-                        if file == RegFile::Const && (*value as f32).is_infinite() {
+                        // An infinity written as such (`1.#INF`) is one;
+                        // a number too large for a float is not.
+                        if file == RegFile::Const && !special && (*value as f32).is_infinite() {
                             return Err(Diagnostic::error(
                                 *span,
                                 "number does not fit in a 32-bit float",
@@ -1252,7 +1255,7 @@ fn lower_def(ast: &InstrAst) -> R<Lowered> {
             Ok(if file == RegFile::Const {
                 Lowered::Float(FloatDef {
                     index: reg.index,
-                    value: nums.map(|v| v as f32),
+                    value: nums.map(crate::core::front::ast::single),
                     origin: Origin::default(),
                 })
             } else {

@@ -1,0 +1,3 @@
+float4 abcdefghijkl;
+float4 abcdefghijklm;
+float4 main() : COLOR { return abcdefghijkl + abcdefghijklm; }

@@ -1,0 +1,32 @@
+struct Light { float3 pos; float4 col; float r; };
+struct Inner { float2 a; float b; };
+struct Outer { Inner in1; float4 m; Inner arr[2]; };
+Light g_Lights[3];
+Outer g_O;
+float4x4 g_M = {1,2,3,4,5,6,7,8,9,10,11,12,13,14,15,16};
+row_major float3x4 g_R34;
+float2x2 g_M22;
+float1 g_f1;
+float2 g_f2 : register(c40);
+float4 g_h4;
+int4 g_i4;
+bool4 g_b4;
+bool g_bb[2];
+float g_arr[5];
+float4x4 g_mats[2];
+texture g_Tex;
+sampler2D g_Samp = sampler_state { Texture = <g_Tex>; };
+sampler g_plain;
+float4 main(float2 uv : TEXCOORD0) : COLOR {
+  float4 r = g_Lights[0].col * g_Lights[1].r + g_Lights[2].pos.xyzx;
+  r += g_O.in1.a.xyxy + g_O.m + g_O.arr[1].b;
+  r += mul(float4(uv, 0, 1), g_M) + mul(float4(uv,1,1), (float4x4)0) ;
+  r.xyz += mul(g_R34, float4(uv, 1, 1));
+  r.xy += mul(uv, g_M22);
+  r += g_f1.x + g_f2.xyxy + g_h4 + g_i4;
+  if (g_b4.y) r += 1;
+  if (g_bb[1]) r *= 2;
+  r += g_arr[3] + g_arr[0] + mul(float4(uv,1,1), g_mats[1]);
+  r += tex2D(g_Samp, uv) + tex2D(g_plain, uv);
+  return r;
+}
