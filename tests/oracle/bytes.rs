@@ -2,9 +2,10 @@
 //!
 //! For every file Microsoft accepted: ps30 assembles an assembly probe to
 //! exactly Microsoft's bytes; ps30's bytecode reader reads Microsoft's
-//! bytecode; ps30 assembles Microsoft's listing of it back to the same
-//! instruction tokens; and Microsoft's own assembler does too (its answer for
-//! the listing, `REL.dis.fxo`, is a fixture). Comment blocks are left out of
+//! bytecode; ps30 assembles Microsoft's listing of it to the instruction
+//! tokens Microsoft's own assembler makes of that listing (its answer,
+//! `REL.dis.fxo`, is a fixture); and those are the original's, but for the
+//! payloads of NaN `def` values, which no listing spells. Comment blocks are left out of
 //! the round trips: a listing carries the constant table of a compiled shader
 //! as `//` text, which assembles to no comment.
 //!
@@ -48,6 +49,38 @@ fn instruction_tokens(stream: &[u32]) -> Vec<u32> {
         at = next;
     }
     out
+}
+
+/// The positions of `def` literals in a stream of instruction tokens (as
+/// [`instruction_tokens`] returns it).
+fn def_literals(stream: &[u32]) -> Vec<usize> {
+    let mut out = Vec::new();
+    let mut at = 1;
+    while let Some(&t) = stream.get(at) {
+        if t == bytecode::END {
+            break;
+        }
+        if t & 0xFFFF == 0x51 {
+            out.extend((at + 2..at + 6).filter(|&i| i < stream.len()));
+        }
+        at += 1 + ((t >> 24) & 0xF) as usize;
+    }
+    out
+}
+
+/// Whether two instruction streams differ only in the payloads of NaN `def`
+/// values: a listing spells every NaN as `1.#QNAN` or `-1.#IND`, so the
+/// payload of the original cannot come back through it (Microsoft's own
+/// assembler makes 0x7FE00000 and 0xFFC00000 of them).
+fn only_nan_payloads_differ(a: &[u32], b: &[u32]) -> bool {
+    let literals = def_literals(a);
+    a.len() == b.len()
+        && a.iter().zip(b).enumerate().all(|(i, (x, y))| {
+            x == y
+                || (literals.contains(&i)
+                    && f32::from_bits(*x).is_nan()
+                    && f32::from_bits(*y).is_nan())
+        })
 }
 
 /// Where two token streams first differ, if they do.
@@ -167,9 +200,15 @@ fn microsofts_listing_assembles_to_its_tokens_in_ps30() {
             continue;
         };
         let name = format!("{}.dis", f.rel);
+        // The same listing in both assemblers gives the same tokens (and,
+        // the test below shows, the original's, NaN payloads aside).
+        let back = match &f.redis {
+            Some((_, Some(back))) => back,
+            _ => fxo,
+        };
         match ps30_assemble(&name, listing_bytes(dis)) {
             Ok(ours) => {
-                let theirs = instruction_tokens(&tokens(fxo));
+                let theirs = instruction_tokens(&tokens(back));
                 if let Some(d) = first_difference(&instruction_tokens(&ours), &theirs) {
                     problems.push(format!("{}: {d}", f.name()));
                 }
@@ -189,8 +228,11 @@ fn microsofts_listing_assembles_to_its_tokens_in_microsofts_assembler() {
         match &f.redis {
             Some((_, Some(back))) => {
                 let theirs = instruction_tokens(&tokens(fxo));
-                if let Some(d) = first_difference(&instruction_tokens(&tokens(back)), &theirs) {
-                    problems.push(format!("{}: {d}", f.name()));
+                let ours = instruction_tokens(&tokens(back));
+                if let Some(d) = first_difference(&ours, &theirs) {
+                    if !only_nan_payloads_differ(&ours, &theirs) {
+                        problems.push(format!("{}: {d}", f.name()));
+                    }
                 }
             }
             Some((_, None)) => problems.push(format!("{}: no .dis.fxo fixture", f.name())),
