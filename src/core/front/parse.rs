@@ -63,6 +63,16 @@ pub fn parse(text: &str) -> (Vec<Stmt>, Diagnostics) {
         in_block = false;
         let code = strip_comment(raw);
         let code = code.trim();
+        // `#line N "file"` only renames places for Microsoft's
+        // preprocessor, which reads it: nothing to assemble.
+        let code = if code
+            .strip_prefix("#line")
+            .is_some_and(|r| r.starts_with([' ', '\t']))
+        {
+            ""
+        } else {
+            code
+        };
         if let Some((at, c)) = code.char_indices().find(|&(_, c)| odd_char(c)) {
             let at = line_start + lead + at;
             diags.push(odd_char_error(c, Span::new(at, at + c.len_utf8()), at == 0));
@@ -617,8 +627,18 @@ impl<'a> Cursor<'a> {
         let before_space = self.rest.len();
         self.skip_space();
         let expected = operand_count(&base, !suffixes.is_empty());
+        // Another statement follows when this one has its operands and the
+        // next word is a mnemonic.
         let next_statement = |c: &Self, n: usize| {
-            expected == Some(n) && c.rest.starts_with(|c: char| c.is_ascii_alphabetic())
+            let word = c
+                .rest
+                .split(|ch: char| !is_ident_char(ch))
+                .next()
+                .unwrap_or("");
+            let base = word.split('_').next().unwrap_or("");
+            expected == Some(n)
+                && c.rest.starts_with(|ch: char| ch.is_ascii_alphabetic())
+                && operand_count(base, word.len() > base.len()).is_some()
         };
         if !self.rest.is_empty() && !next_statement(self, 0) {
             if self.rest.len() == before_space {
