@@ -749,9 +749,9 @@ endif
 mov oC0, r1",
     );
     let text = l.warnings.render(&l.file);
-    assert!(
-        text.contains("warning: `texld` with a temporary coordinate under dynamic flow control")
-    );
+    assert!(text.contains(
+        "warning[X6077]: `texld` with a temporary coordinate under dynamic flow control"
+    ));
     assert!(text.contains("t.psh:7:3"), "{text}");
     assert!(text.contains("the pixels of a quad can go different ways here"));
     assert!(text.contains("texldl"));
