@@ -87,6 +87,7 @@ fn microsoft_compiled_shaders_load_as_bytecode_and_as_listings() {
             }
         }
     }
+    assert!(seen > 0, "no compiled shader among the hlsl fixtures");
     assert!(
         wrong.is_empty(),
         "{} of {seen} compiled shaders do not load:\n{}",

@@ -117,8 +117,12 @@ fn loop_exits(ins: &[Instruction], ranges: &[Function]) -> Vec<Option<usize>> {
                 Opcode::EndIf | Opcode::EndRep | Opcode::EndLoop => {
                     stack.pop();
                 }
+                // Microsoft's validator counts every loop with a break of
+                // any kind (X6077: "loop/rep with break*"), a plain `break`
+                // included, though only a conditional one lets the pixels
+                // of a quad leave at different iterations.
                 Opcode::Break | Opcode::BreakC | Opcode::BreakP => {
-                    let mut dynamic = op != Opcode::Break;
+                    let mut dynamic = true;
                     for &(o, at, d) in stack.iter().rev() {
                         if matches!(o, Opcode::Rep | Opcode::Loop) {
                             if dynamic && loop_exit[at].is_none() {
