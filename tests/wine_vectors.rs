@@ -81,8 +81,8 @@ const PS30_INVALID: &[Rejected] = &[
     },
     Rejected {
         vector: ("ps_3_0 shader 4", "ps_3_0\nmov r0, v[ aL + 12 ]\n", &[0xffff0300, 0x03000001, 0x800f0000, 0x90e4200c, 0xf0e40800, 0x0000ffff]),
-        reason: "v12 does not exist (v0..v9), and aL is read outside a loop",
-        message: "base register v12 is out of range",
+        reason: "aL is read outside a loop (v12 as a base is Microsoft's `v12[aL]`)",
+        message: "v[aL + n] used outside a loop",
         repaired: None,
     },
     Rejected {

@@ -28,10 +28,12 @@ const BODY_LINES: &[&str] = &[
     "add r0, r0, c0",
     "mad r1, r0, c1, r2",
     "nop",
-    "texld r2, r0, s0",
+    // Gradients from an input: from a temporary, Microsoft's assembler
+    // refuses them in a loop with any break (X6077).
+    "texld r2, v0, s0",
     "texldl r3, r0, s1",
-    "texldp r3, r0, s1",
-    "texldb r4, r0, s0",
+    "texldp r3, v0, s1",
+    "texldb r4, v0, s0",
     "(p0.x) mul r4, r0, r1",
     // texldl: a predicated texld with a temporary coordinate is refused
     // by Microsoft's assembler (X6077, undefined gradients).
@@ -40,7 +42,7 @@ const BODY_LINES: &[&str] = &[
     "nrm r6, r0",
     "lrp r7, r0, r1, r2",
     "setp_gt p0, r0, c0",
-    "dsx r8, r0",
+    "dsx r8, v0",
     "texkill r0",
     "m4x4 r9, r0, c4",
     "pow r10, r0.x, r1.y",

@@ -29,6 +29,10 @@ pub enum Lowered {
 
 type R<T> = Result<T, Diagnostic>;
 
+/// One past the highest base register of `v[aL + n]`: the 11 bits of a
+/// token's register number.
+const MAX_RELATIVE_BASE: i64 = 2048;
+
 /// Mnemonics of other shader models, with what to say about them.
 const NOT_PS30: &[(&str, &str)] = &[
     ("lit", "lit is a vertex-shader instruction"),
@@ -950,14 +954,18 @@ fn float_source(r: &RegAst) -> R<Src> {
                 )
                 .with_label("remove the swizzle"));
             }
+            // Microsoft's assembler takes a base past v9 (`v[aL + 10]` is
+            // `v10[aL]`: what aL adds may bring it back, and a read that
+            // lands outside v0 … v9 is undefined, 0 in the emulator), up to
+            // what the token's register number holds.
             let total = (reg.index as i64).saturating_add(rel.offset);
-            if total >= RegFile::Input.info().count as i64 {
+            if total >= MAX_RELATIVE_BASE {
                 return Err(Diagnostic::coded(
                     codes::REGISTER,
                     rel.span,
                     format!("base register v{total} is out of range"),
                 )
-                .with_label("v0 … v9"));
+                .with_label(format!("v0 … v{}", MAX_RELATIVE_BASE - 1)));
             }
             true
         }
