@@ -106,6 +106,17 @@ fn every_shader_in_asm_round_trips_through_bytecode() {
     // The pass-2 listings take their frame from -D.
     options.defines.insert("xsize".into(), 11);
     options.defines.insert("ysize".into(), 8);
+    // lights/select_texld.psh is the bundled example of texld under dynamic
+    // flow control: Microsoft's assembler refuses it (X6077), so ps30 asm
+    // writes no bytecode for it.
+    let (refused, files): (Vec<_>, Vec<_>) = files
+        .into_iter()
+        .partition(|f| f.ends_with("lights/select_texld.psh"));
+    assert_eq!(refused.len(), 1);
+    let text = std::fs::read(&refused[0]).unwrap();
+    let file = load::source_file("select_texld.psh", text, &options).unwrap();
+    let e = load::assemble(file, &options).expect_err("X6077");
+    assert_eq!(e.diagnostics.errors().next().unwrap().code, Some("X6077"));
     let problems: Vec<String> = files
         .iter()
         .filter_map(|f| {

@@ -149,7 +149,8 @@ fn minimal(op: Opcode) -> (&'static str, Vec<&'static str>) {
         Loop => ("", vec!["loop aL, i0", "endloop"]),
         Ret => plain("ret"),
         EndLoop => ("", vec!["endloop", "loop aL, i0"]),
-        Label => ("", vec!["label l0", "ret", "ret"]),
+        // Called, as Microsoft's validator requires of every label (X5887).
+        Label => ("", vec!["label l0", "call l0", "ret", "ret"]),
         Rep => ("", vec!["rep i0", "endrep"]),
         EndRep => ("", vec!["endrep", "rep i0"]),
         If => ("", vec!["if b0", "endif"]),
@@ -172,7 +173,7 @@ fn minimal_source(op: Opcode, decls: &str, lines: &[&str]) -> String {
         EndLoop | EndRep | EndIf => vec![lines[1], lines[0]],
         Else => vec![lines[1], lines[0], lines[2]],
         Break | BreakC | BreakP => vec![lines[1], lines[0], lines[2]],
-        Label => vec![lines[1], lines[0], lines[2]],
+        Label => vec![lines[1], lines[2], lines[0], lines[3]],
         _ => lines.to_vec(),
     };
     format!(
@@ -948,10 +949,11 @@ mov oC0, r0
 }
 
 #[test]
-fn counts_saturate_instead_of_overflowing() {
-    // rep 255 four deep in main and in each of four nested subroutines:
-    // 255^20 runs of the innermost nop, far beyond u64. The counts must
-    // saturate, neither panic (debug builds check overflow) nor wrap.
+fn the_deepest_nesting_counts_exactly_and_deeper_is_refused() {
+    // rep 255 four deep in main and in each of four nested subroutines
+    // would run the innermost nop 255^20 times, far beyond u64; Microsoft's
+    // validator counts the loops around a call toward the subroutine's
+    // nesting (X5827), so such a shader is refused and counts stay exact.
     let mut src = String::from("ps_3_0\ndefi i0, 255, 0, 0, 0\n");
     for _ in 0..4 {
         src.push_str("rep i0\n");
@@ -976,10 +978,14 @@ fn counts_saturate_instead_of_overflowing() {
         }
         src.push_str("ret\n");
     }
-    let l = load("huge.psh", &src);
-    let a = analyse(&l);
-    // 255^20 iterations of the innermost nop: far beyond u64.
-    assert_eq!(a.executed.max, u64::MAX);
+    let e = ps30::core::load::load_str("huge.psh", &src, &Options::default())
+        .expect_err("loops nested 20 deep through calls");
+    assert_eq!(e.diagnostics.errors().next().unwrap().code, Some("X5827"));
+    // The deepest allowed: four loops of 255 around a chain of calls.
+    let src = "ps_3_0\ndefi i0, 255, 0, 0, 0\nrep i0\nrep i0\nrep i0\nrep i0\ncall l0\nendrep\nendrep\nendrep\nendrep\nret\nlabel l0\ncall l1\nret\nlabel l1\nnop\nret\n";
+    let a = analyse(&load("deep.psh", src));
+    assert!(a.executed.max > u64::from(u32::MAX), "{:?}", a.executed);
+    assert_eq!(a.executed.min, a.executed.max);
     assert_eq!(a.verdict, Verdict::Exceeds);
 }
 

@@ -192,11 +192,11 @@ def c1, -0.0, 0, 1, 2
 def c2, 1.0f, .25, -7, 1e-45
 def c3, 0.1, 16777217, -3.4028234e38, 1.17549435e-38
 defi i0, 3, 0, 1, 0
-defi i1, -2147483648, 2147483647, -1, 0
+defi i1, 255, 255, -128, 0
 defb b0, true
 defb b1, false
 dcl_texcoord0 v0.xy
-dcl_texcoord0_centroid v0.zw
+dcl_texcoord5_centroid v0.zw
 dcl_texcoord1_centroid_pp v1
 dcl_color0_pp v2.xyz
 dcl_normal v3
@@ -211,7 +211,7 @@ nop
 mov r0, c0
 mov_sat r1.xyz, -c1.wzyx
 mov_pp r2.xw, v0.xyxx
-MOV R3, C0.RGBA
+mov r3, c0.rgba
 mov r3.rg, c0.bbba
 mov r1.w, c1.x
 mov r2.yz, c1
@@ -249,7 +249,7 @@ texkill v0.xyz
 texld r24, v0, s0
 texld_pp r24.xy, r0.wzyx, s1
 texldp r25, v1, s2
-texldb_centroid r25, r0, s0
+texldb r25, r0, s0
 texldl r26, r0, s1.xyzw
 texldd r27, v0, s2, r0, r1
 setp_gt p0, r0, c0
@@ -332,6 +332,7 @@ endif
 if !p0.w
 endif
 callnz l3, b0
+call l2047
 mov oC0, r4
 ret
 label l1
@@ -414,7 +415,7 @@ fn hand_written_shaders_mean_what_they_say() {
     assert_eq!(mad.src[0].swizzle, Swizzle([0, 0, 1, 1]));
     assert_eq!(mad.src[1].swizzle, Swizzle([3, 2, 1, 0]));
     assert_eq!(mad.src[2].modifier, SrcMod::NegAbs);
-    let mov = find(Opcode::Mov, 3); // MOV R3, C0.RGBA
+    let mov = find(Opcode::Mov, 3); // mov r3, c0.rgba
     assert_eq!(
         mov.dst.unwrap().reg,
         Reg {
@@ -442,10 +443,10 @@ fn hand_written_shaders_mean_what_they_say() {
         })
     );
     let texldb = find(Opcode::TexLdB, 0);
-    assert!(texldb.centroid);
+    assert!(!texldb.centroid);
     assert_eq!(p.float_def(1).unwrap()[0].to_bits(), (-0.0f32).to_bits());
     assert_eq!(p.float_def(2).unwrap()[3].to_bits(), 1); // 1e-45: the smallest subnormal
-    assert_eq!(p.int_def(1), Some([i32::MIN, i32::MAX, -1, 0]));
+    assert_eq!(p.int_def(1), Some([255, 255, -128, 0]));
     let v0 = p
         .inputs
         .iter()
@@ -580,6 +581,13 @@ fn source_strategy(
                 (true, false) => SrcMod::Neg,
                 (false, true) => SrcMod::Abs,
                 (true, true) => SrcMod::NegAbs,
+            };
+            // vPos has only x and y (Microsoft's validator refuses reading
+            // z or w, X6063).
+            let swizzle = if reg.file == RegFile::Position {
+                Swizzle(swizzle.0.map(|c| c & 1))
+            } else {
+                swizzle
             };
             Src {
                 reg,
@@ -728,6 +736,13 @@ fn instruction_strategy(decls: Decls) -> BoxedStrategy<Instruction> {
                         dst = dst.or(d);
                         src.extend(s);
                     }
+                    // The texld family's sources take no modifier
+                    // (Microsoft's validator, X5561).
+                    if info.class == Class::Texture {
+                        for s in &mut src {
+                            s.modifier = SrcMod::None;
+                        }
+                    }
                     // Outputs are not written under predication.
                     let writes_output = matches!(
                         dst,
@@ -744,9 +759,26 @@ fn instruction_strategy(decls: Decls) -> BoxedStrategy<Instruction> {
                         sat: info.allows_sat && bit(0),
                         // `_pp` needs a destination to act on (nop has none).
                         pp: dst.is_some() && bit(1),
-                        centroid: info.class == Class::Texture && bit(2),
+                        // `_centroid` goes on declarations only: Microsoft's
+                        // assembler reads no `texld_centroid`.
+                        centroid: false,
                         compare: info.comparison.then_some(compare),
-                        predicate: if writes_output { None } else { predicate },
+                        // Outputs, and gradients (Microsoft's assembler
+                        // refuses a predicated texld, texldb, texldp, dsx or
+                        // dsy: X6077), are not predicated.
+                        predicate: if writes_output
+                            || matches!(
+                                info.op,
+                                Opcode::TexLd
+                                    | Opcode::TexLdB
+                                    | Opcode::TexLdP
+                                    | Opcode::Dsx
+                                    | Opcode::Dsy
+                            ) {
+                            None
+                        } else {
+                            predicate
+                        },
                         dst,
                         src,
                         origin: Origin::default(),
@@ -794,7 +826,13 @@ fn program_strategy() -> impl Strategy<Value = Program> {
     );
     let float_defs =
         prop::collection::btree_map(0u32..224, prop::array::uniform4(float_strategy()), 0..4);
-    let int_defs = prop::collection::btree_map(0u32..16, prop::array::uniform4(any::<i32>()), 0..3);
+    // Valid loop constants: Microsoft's validator checks every `defi` where
+    // it is defined (count 0..=255, start 0..=255, step -128..=127, w 0).
+    let int_defs = prop::collection::btree_map(
+        0u32..16,
+        (0i32..=255, 0i32..=255, -128i32..=127).prop_map(|(x, y, z)| [x, y, z, 0]),
+        0..3,
+    );
     let bool_defs = prop::collection::btree_map(0u32..16, any::<bool>(), 0..3);
     (
         inputs,
@@ -813,21 +851,26 @@ fn program_strategy() -> impl Strategy<Value = Program> {
                     const_abs,
                 };
                 let mut program = Program::default();
-                for (&index, &(usage, usage_index, mask, centroid, pp)) in &inputs {
+                for (&index, &(usage, _usage_index, mask, centroid, pp)) in &inputs {
                     program.inputs.push(InputDecl {
                         reg: Reg {
                             file: RegFile::Input,
                             index,
                         },
                         usage: USAGES[usage].to_string(),
-                        // position0 is not a pixel shader input (Windows'
-                        // runtime refuses it; ps30 too).
+                        // One usage and index per input (Microsoft's
+                        // validator, X5304): the register's number, past 0
+                        // for position (position0 is not a pixel shader
+                        // input: Windows' runtime refuses it; ps30 too).
                         usage_index: if USAGES[usage] == "position" {
-                            usage_index.max(1)
+                            index + 1
                         } else {
-                            usage_index
+                            index
                         },
-                        mask,
+                        // Every component declared: an instruction may read
+                        // any (Microsoft's validator refuses reads of
+                        // undeclared ones, X5984).
+                        mask: WriteMask(mask.0 | 0b1111),
                         centroid,
                         pp,
                         origin: Origin::default(),
@@ -860,13 +903,13 @@ fn program_strategy() -> impl Strategy<Value = Program> {
                     });
                 }
                 for (&index, &ty) in &samplers {
-                    // `_centroid` and `_pp` on some of them, by register
-                    // number, so that every combination comes up.
+                    // No `_centroid` or `_pp`: Microsoft's assembler refuses
+                    // them on samplers (X5969).
                     program.samplers.push(SamplerDecl {
                         index,
                         ty,
-                        centroid: index % 4 >= 2,
-                        pp: index % 2 == 1,
+                        centroid: false,
+                        pp: false,
                         origin: Origin::default(),
                     });
                 }

@@ -15,21 +15,31 @@
 //!   register table), so every register the loop's aL reaches is checked;
 //! * `vFace` is the operand of `setp_comp`, `if_comp` and `break_comp`
 //!   (same table), a scalar that needs no replicate swizzle;
-//! * `dcl_2d_centroid s0`, `dcl_2d_pp s0`: Microsoft's assembler encodes
-//!   both (Wine's vectors ps_3_0 #13 and #14), so `ps30 expand` keeps them.
+//! * `dcl_2d_centroid s0`, `dcl_2d_pp s0`: Microsoft's assembler refuses
+//!   both (X5969), though Wine's vectors ps_3_0 #13 and #14 hold their
+//!   tokens;
+//! * the documented rules Microsoft's assembler does not enforce (reads of
+//!   unwritten temporaries, undeclared inputs read through aL, oC# written
+//!   in branches, mixed `_abs` constant reads) are warnings that `--strict`
+//!   makes errors.
 
 use crate::common::bin;
 
-use ps30::core::front::print::write_program;
 use ps30::core::load::{self, Options};
 
 fn loads(src: &str) -> Result<load::Loaded, String> {
     load::load_str("v.psh", src, &Options::default()).map_err(|e| e.diagnostics.render(&e.file))
 }
 
-/// The first error: its message, and its line and column.
+/// The first error under `--strict` (which also refuses the documented
+/// rules Microsoft's assembler lets through): its message, and its line
+/// and column.
 fn refusal(src: &str) -> (String, (usize, usize)) {
-    let e = load::load_str("v.psh", src, &Options::default()).expect_err(src);
+    let strict = Options {
+        strict: true,
+        ..Options::default()
+    };
+    let e = load::load_str("v.psh", src, &strict).expect_err(src);
     let d = e.diagnostics.errors().next().expect("an error");
     (d.message.clone(), e.file.line_col(d.span.start))
 }
@@ -73,14 +83,19 @@ fn temporaries_are_written_before_they_are_read() {
         ),
         // texkill tests xyz of its operand.
         ("ps_3_0\nmov r0.xy, c0\ntexkill r0\n", "r0.z is read", 3),
-        // A subroutine that is never called writes nothing.
+        // A subroutine called only after the read writes nothing before it.
         (
-            "ps_3_0\nmov oC0, r0\nret\nlabel l0\nmov r0, c0\nret\n",
+            "ps_3_0\nmov oC0, r0\ncall l0\nret\nlabel l0\nmov r0, c0\nret\n",
             "r0 is read, but no earlier instruction writes it",
             2,
         ),
     ];
     for (src, message, line) in refused {
+        // Microsoft's assembler accepts each: by default a warning that
+        // --strict makes an error.
+        let loaded = loads(src).unwrap_or_else(|e| panic!("{src}: {e}"));
+        let w = loaded.warnings.warnings().next().expect("a warning");
+        assert!(w.strict && w.message.contains(message), "{src}: {w:?}");
         let (got, at) = refusal(src);
         assert!(
             got.contains(message),
@@ -114,6 +129,10 @@ fn inputs_read_relative_to_al_are_declared() {
     // i0 = 3 iterations from aL = 1, step 2: v[aL] reads v1, v3, v5.
     let head = "ps_3_0\ndefi i0, 3, 1, 2, 0\ndcl_texcoord1 v1\ndcl_texcoord3 v3\n";
     let body = "mov r0, c0\nloop aL, i0\n  add r0, r0, v[aL]\nendloop\nmov oC0, r0\n";
+    // Microsoft's assembler does not check reads through aL: a warning,
+    // an error under --strict.
+    let loaded = loads(&format!("{head}{body}")).expect("a warning only");
+    assert!(loaded.warnings.warnings().any(|w| w.strict));
     let (message, at) = refusal(&format!("{head}{body}"));
     assert_eq!(message, "input v5 is used but never declared");
     assert_eq!(at, (7, 3));
@@ -158,28 +177,80 @@ fn vface_is_a_comparison_operand_without_a_swizzle() {
 }
 
 #[test]
-fn sampler_declarations_keep_centroid_and_pp() {
-    let src = "ps_3_0\ndcl_2d_centroid s0\ndcl_cube_pp s1\ndcl_volume_centroid_pp s2\ndcl_2d s3\n\
-               mov oC0, c0\n";
-    let printed = write_program(loads(src).expect("loads").shader.program());
-    for line in [
-        "dcl_2d_centroid s0",
-        "dcl_cube_pp s1",
-        "dcl_volume_centroid_pp s2",
-        "dcl_2d s3",
+fn sampler_declarations_take_no_centroid_or_pp() {
+    // Microsoft's assembler refuses both (X5969, "dcl for s register does
+    // not support any modifiers"), though the token has room for them.
+    for src in [
+        "ps_3_0\ndcl_2d_centroid s0\nmov oC0, c0\n",
+        "ps_3_0\ndcl_cube_pp s1\nmov oC0, c0\n",
     ] {
-        assert!(
-            printed.lines().any(|l| l == line),
-            "{line} missing:\n{printed}"
-        );
+        let e = load::load_str("v.psh", src, &Options::default()).expect_err(src);
+        let d = e.diagnostics.errors().next().unwrap();
+        assert_eq!(d.code, Some("X5969"), "{src}: {d:?}");
     }
-    // And through the command.
+    // And through the command: exit 2, the code beside the message.
     let dir = tempfile::tempdir().unwrap();
     let f = dir.path().join("s.psh");
-    std::fs::write(&f, src).unwrap();
+    std::fs::write(&f, "ps_3_0\ndcl_2d_centroid s0\nmov oC0, c0\n").unwrap();
     let out = bin::ps30(&["expand", f.to_str().unwrap()], dir.path());
-    assert_eq!(out.status.code(), Some(0));
-    let text = String::from_utf8(out.stdout).unwrap();
-    assert!(text.contains("dcl_2d_centroid s0\n"), "{text}");
-    assert!(text.contains("dcl_volume_centroid_pp s2\n"), "{text}");
+    assert_eq!(out.status.code(), Some(2));
+    let text = String::from_utf8(out.stderr).unwrap();
+    assert!(text.contains("error[X5969]"), "{text}");
+}
+
+#[test]
+fn strict_turns_the_documented_rules_into_errors() {
+    // oC0 written in an if, mixed _abs reads, an unwritten temporary:
+    // Microsoft's assembler accepts each, so ps30 warns; --strict refuses.
+    let src = "ps_3_0\nif_gt c0.x, c0.y\n  mov oC0, c0_abs\nendif\nmov r1, c1\nmov oC1, r2\n";
+    let loaded = loads(src).expect("warnings only");
+    let strict: Vec<_> = loaded.warnings.warnings().filter(|w| w.strict).collect();
+    assert_eq!(strict.len(), 3, "{:?}", loaded.warnings);
+    let e = load::load_str(
+        "v.psh",
+        src,
+        &Options {
+            strict: true,
+            ..Options::default()
+        },
+    )
+    .expect_err("strict");
+    assert_eq!(e.diagnostics.errors().count(), 3);
+    // Through the command line, on every command that loads a shader.
+    let dir = tempfile::tempdir().unwrap();
+    let f = dir.path().join("w.psh");
+    std::fs::write(&f, src).unwrap();
+    let path = f.to_str().unwrap();
+    let out = dir.path().join("w.bin");
+    for args in [
+        vec!["asm", path, "-o", out.to_str().unwrap()],
+        vec!["check", path],
+        vec!["expand", path],
+    ] {
+        let plain = bin::ps30(&args, dir.path());
+        assert_eq!(plain.status.code(), Some(0), "{args:?}");
+        let mut with = args.clone();
+        with.push("--strict");
+        let strict = bin::ps30(&with, dir.path());
+        assert_eq!(strict.status.code(), Some(2), "{with:?}");
+        let text = String::from_utf8(strict.stderr).unwrap();
+        assert!(text.contains("an error under --strict"), "{text}");
+    }
+}
+
+#[test]
+fn the_gradient_rule_is_a_warning_when_measured_and_an_error_when_assembled() {
+    // Microsoft's assembler refuses texld with a temporary coordinate in a
+    // dynamic if (X6077): ps30 asm too; check and run may still load it.
+    let src = "ps_3_0\ndcl_2d s0\ndcl_texcoord0 v0\nmov r0, c0\nif_gt v0.x, c0.x\n  add r1, v0, c0\n  texld r0, r1, s0\nendif\nmov oC0, r0\n";
+    let loaded = loads(src).expect("a warning when measured");
+    assert!(loaded.warnings.warnings().any(|w| w.code == Some("X6077")));
+    let e = load::assemble(
+        load::load_str("v.psh", src, &Options::default())
+            .unwrap()
+            .file,
+        &Options::default(),
+    )
+    .expect_err("refused when assembled");
+    assert_eq!(e.diagnostics.errors().next().unwrap().code, Some("X6077"));
 }

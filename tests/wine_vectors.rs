@@ -35,8 +35,6 @@ const PS30_VALID: &[Vector] = &[
     ("ps_3_0 shader 0", "ps_3_0\nmov r0, c0\n", &[0xffff0300, 0x02000001, 0x800f0000, 0xa0e40000, 0x0000ffff]),
     ("ps_3_0 shader 1", "ps_3_0\ndcl_normal5 v0\n", &[0xffff0300, 0x0200001f, 0x80050003, 0x900f0000, 0x0000ffff]),
     ("ps_3_0 shader 12", "ps_3_0\ndcl_texcoord0_centroid v0\n", &[0xffff0300, 0x0200001f, 0x80000005, 0x904f0000, 0x0000ffff]),
-    ("ps_3_0 shader 13", "ps_3_0\ndcl_2d_centroid s0\n", &[0xffff0300, 0x0200001f, 0x90000000, 0xa04f0800, 0x0000ffff]),
-    ("ps_3_0 shader 14", "ps.3.0\ndcl_2d_pp s0\n", &[0xffff0300, 0x0200001f, 0x90000000, 0xa02f0800, 0x0000ffff]),
 ];
 
 /// A vector that is not a valid program, why, and (when only a declaration
@@ -51,22 +49,40 @@ struct Rejected {
 
 #[rustfmt::skip]
 const PS30_INVALID: &[Rejected] = &[
+    // Wine's vectors hold these tokens, but d3dcompiler_47's D3DAssemble
+    // refuses both (X5969, "dcl for s register does not support any
+    // modifiers"), and the tools win.
+    Rejected {
+        vector: ("ps_3_0 shader 13", "ps_3_0\ndcl_2d_centroid s0\n", &[0xffff0300, 0x0200001f, 0x90000000, 0xa04f0800, 0x0000ffff]),
+        reason: "Microsoft's assembler refuses modifiers on sampler declarations (X5969)",
+        message: "a sampler declaration takes no modifier",
+        repaired: None,
+    },
+    Rejected {
+        vector: ("ps_3_0 shader 14", "ps.3.0\ndcl_2d_pp s0\n", &[0xffff0300, 0x0200001f, 0x90000000, 0xa02f0800, 0x0000ffff]),
+        reason: "Microsoft's assembler refuses modifiers on sampler declarations (X5969)",
+        message: "a sampler declaration takes no modifier",
+        repaired: None,
+    },
     Rejected {
         vector: ("ps_3_0 shader 2", "ps_3_0\nmov r0, vPos\n", &[0xffff0300, 0x02000001, 0x800f0000, 0x90e41000, 0x0000ffff]),
         reason: "vPos must be declared before use (Microsoft's ps_3_0 register page)",
         message: "input vPos is used but never declared",
-        repaired: Some("ps_3_0\ndcl vPos.xy\nmov r0, vPos\n"),
+        // Declared, the read of .zw is still refused (X6063): no repair
+        // keeps Wine's instruction.
+        repaired: None,
     },
     Rejected {
         vector: ("ps_3_0 shader 3", "ps_3_0\nmov r0, vFace\n", &[0xffff0300, 0x02000001, 0x800f0000, 0x90e41001, 0x0000ffff]),
         reason: "vFace is used without a declaration",
         message: "input vFace is used but never declared",
-        repaired: Some("ps_3_0\ndcl vFace\nmov r0, vFace\n"),
+        // Declared, vFace read as a value is still refused (X5692).
+        repaired: None,
     },
     Rejected {
         vector: ("ps_3_0 shader 4", "ps_3_0\nmov r0, v[ aL + 12 ]\n", &[0xffff0300, 0x03000001, 0x800f0000, 0x90e4200c, 0xf0e40800, 0x0000ffff]),
-        reason: "v12 does not exist (v0..v9), and aL is read outside a loop",
-        message: "base register v12 is out of range",
+        reason: "aL is read outside a loop (v12 as a base is Microsoft's `v12[aL]`)",
+        message: "v[aL + n] used outside a loop",
         repaired: None,
     },
     Rejected {
@@ -130,7 +146,7 @@ const OLDER: &[(Vector, Option<&str>)] = &[
     (("ps_2_0 shader 10", "ps.2.0\ndcl_2d s2\ntexldb r0, t1, s2\n", &[0xffff0200, 0x0200001f, 0x90000000, 0xa00f0802, 0x03020042, 0x800f0000, 0xb0e40001, 0xa0e40802, 0x0000ffff]), Some("unknown register `t1`")),
     (("ps_2_x shader 0", "ps_2_x\ndefb b0, true\ndefb b1, false\n", &[0xffff0201, 0x0200002f, 0xe00f0800, 0x00000001, 0x0200002f, 0xe00f0801, 0x00000000, 0x0000ffff]), None),
     // i0.x = -1 would be out of range for rep/loop, but nothing uses i0.
-    (("ps_2_x shader 1", "ps_2_x\ndefi i0, -1, 1, 10, 0\ndefi i1, 0, 40, 30, 10\n", &[0xffff0201, 0x05000030, 0xf00f0000, 0xffffffff, 0x00000001, 0x0000000a, 0x00000000, 0x05000030, 0xf00f0001, 0x00000000, 0x00000028, 0x0000001e, 0x0000000a, 0x0000ffff]), None),
+    (("ps_2_x shader 1", "ps_2_x\ndefi i0, -1, 1, 10, 0\ndefi i1, 0, 40, 30, 10\n", &[0xffff0201, 0x05000030, 0xf00f0000, 0xffffffff, 0x00000001, 0x0000000a, 0x00000000, 0x05000030, 0xf00f0001, 0x00000000, 0x00000028, 0x0000001e, 0x0000000a, 0x0000ffff]), Some("the iteration count (.x = -1) must be in 0..=255")),
     // Reads of temporaries nothing has written fail validation too.
     (("ps_2_x shader 2", "ps_2_x\ndsx r0, r0\n", &[0xffff0201, 0x0200005b, 0x800f0000, 0x80e40000, 0x0000ffff]), Some("r0 is read, but no earlier instruction writes it")),
     (("ps_2_x shader 3", "ps_2_x\ndsy r0, r0\n", &[0xffff0201, 0x0200005c, 0x800f0000, 0x80e40000, 0x0000ffff]), Some("r0 is read, but no earlier instruction writes it")),
@@ -249,10 +265,20 @@ fn hex(tokens: &[u32]) -> String {
 }
 
 /// The first error of loading bytes through the path every command takes.
+/// `--strict`: the documented rules Microsoft's assembler lets through
+/// (reads of unwritten temporaries, undeclared inputs read through aL) are
+/// errors, as the vectors' reasons expect.
+fn strict() -> Options {
+    Options {
+        strict: true,
+        ..Options::default()
+    }
+}
+
 fn load_bytes(name: &str, tokens: &[u32]) -> Result<load::Loaded, String> {
-    let file = load::source_file(name, write::to_bytes(tokens), &Options::default())
-        .map_err(|e| e.to_string())?;
-    load::load(file, &Options::default()).map_err(|e| {
+    let file =
+        load::source_file(name, write::to_bytes(tokens), &strict()).map_err(|e| e.to_string())?;
+    load::load(file, &strict()).map_err(|e| {
         let d = e.diagnostics.errors().next().expect("an error");
         format!("{}\n{}", d.message, d.render(&e.file))
     })
@@ -317,7 +343,7 @@ fn invalid_vectors_are_refused_for_their_reason_as_text_and_as_tokens() {
     let mut problems = Vec::new();
     for r in PS30_INVALID {
         let (name, text, tokens) = r.vector;
-        let from_text = load::load_str(name, text, &Options::default())
+        let from_text = load::load_str(name, text, &strict())
             .map(|_| ())
             .map_err(|e| {
                 e.diagnostics
@@ -366,26 +392,24 @@ fn invalid_vectors_are_refused_for_their_reason_as_text_and_as_tokens() {
 }
 
 #[test]
-fn vface_as_a_value_loads_with_a_warning() {
-    // Microsoft's register page documents vFace only as the condition of
-    // setp_comp, if_comp and break_comp; Windows' runtime accepts it as a
-    // value (Wine's visual.c vface_register_test reads it with `cmp`), so
-    // ps30 warns instead of refusing.
-    let loaded = load::load_str(
+fn vface_is_read_only_as_a_condition() {
+    // Microsoft's assembler refuses vFace read as a value (X5692) and
+    // accepts it as the operand of setp_comp, if_comp, break_comp and as
+    // cmp's condition (what Wine's visual.c vface_register_test draws).
+    let e = load::load_str(
         "v.psh",
         "ps_3_0\ndcl vFace\nmov r0, vFace\n",
         &Options::default(),
     )
-    .expect("vFace as a value loads");
-    let warning = loaded.warnings.warnings().next().expect("a warning");
-    assert!(warning.message.contains("only as a comparison operand"));
-    let compared = load::load_str(
-        "v.psh",
+    .expect_err("vFace as a value");
+    assert_eq!(e.diagnostics.errors().next().unwrap().code, Some("X5692"));
+    for src in [
         "ps_3_0\ndcl vFace\nsetp_lt p0.x, vFace, c0.x\n",
-        &Options::default(),
-    )
-    .expect("loads");
-    assert_eq!(compared.warnings.warnings().count(), 0);
+        "ps_3_0\ndcl vFace\nmov r1, c1\ncmp oC0, vFace, c0, r1\n",
+    ] {
+        let loaded = load::load_str("v.psh", src, &Options::default()).expect(src);
+        assert_eq!(loaded.warnings.warnings().count(), 0, "{src}");
+    }
 }
 
 #[test]
@@ -431,10 +455,7 @@ fn older_vectors_are_refused_by_name_and_their_bodies_encode_the_same_as_ps_3_0(
             )),
         }
         // And validation's verdict on it as a ps_3_0 program.
-        match (
-            load::load_str(name, &as_ps30, &Options::default()),
-            not_ps30,
-        ) {
+        match (load::load_str(name, &as_ps30, &strict()), not_ps30) {
             (Ok(_), None) => {}
             (Ok(_), Some(why)) => {
                 problems.push(format!("{name} as ps_3_0 accepted; expected `{why}`"))

@@ -272,6 +272,11 @@ pub struct SourceArgs {
     /// Cap on the statements REPEAT_BLOCK expansion may produce.
     #[arg(long, value_name = "N", default_value_t = ps30::core::front::repeat::DEFAULT_MAX_EXPANDED)]
     pub max_expanded: u64,
+    /// Refuse what Microsoft's documentation forbids but its assembler
+    /// accepts (reads of unwritten temporaries, oC# written in branches,
+    /// mixed _abs constant reads…): those warnings become errors.
+    #[arg(long)]
+    pub strict: bool,
 }
 
 impl SourceArgs {
@@ -280,6 +285,7 @@ impl SourceArgs {
         Options {
             defines: self.define.iter().cloned().collect(),
             max_expanded: self.max_expanded,
+            strict: self.strict,
         }
     }
 }

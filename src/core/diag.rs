@@ -17,6 +17,8 @@
 //! [`MAX_SHOWN`] diagnostics are rendered (a last line says how many more
 //! there were), and a line longer than [`MAX_LINE_SHOWN`] is not echoed.
 
+pub mod codes;
+
 use crate::core::ir::{Origin, Span};
 use codespan_reporting::diagnostic::{Diagnostic as CsDiagnostic, Label};
 use codespan_reporting::files::{self, Files};
@@ -47,7 +49,7 @@ pub fn excerpt(text: &str) -> String {
 pub struct SourceFile {
     /// The name shown in diagnostics (a path, or a bundled shader's path).
     pub name: String,
-    /// The text, as read (a byte-order mark dropped).
+    /// The text, as read up to its first NUL byte.
     pub text: String,
     line_starts: Vec<usize>,
     /// For a compiled shader (`text` is its listing): `(text offset, token
@@ -58,13 +60,14 @@ pub struct SourceFile {
 }
 
 impl SourceFile {
-    /// A source named `name`. A UTF-8 byte-order mark at the start (which
-    /// editors on Windows often write) is not part of the text and is
-    /// dropped, so spans count from the first real character.
+    /// A source named `name`: its text up to the first NUL byte, as
+    /// Microsoft's assembler reads it (the tools that dump shaders from
+    /// running games end each file with one). A byte-order mark is kept: the
+    /// parser refuses it where it stands, as Microsoft's assembler does.
     pub fn new(name: impl Into<String>, text: impl Into<String>) -> SourceFile {
         let mut text = text.into();
-        if text.starts_with('\u{feff}') {
-            text.drain(..'\u{feff}'.len_utf8());
+        if let Some(nul) = text.find('\0') {
+            text.truncate(nul);
         }
         let mut line_starts = vec![0];
         line_starts.extend(text.match_indices('\n').map(|(i, _)| i + 1));
@@ -244,6 +247,12 @@ pub struct Diagnostic {
     /// folded into this one by [`Diagnostics::grouped`]: one report, with
     /// the count and the lines, instead of one per unrolled copy.
     pub also: Vec<Span>,
+    /// Microsoft's `X####` code for the same refusal (what `D3DAssemble`
+    /// answers for the input), from the one table of [`codes`].
+    pub code: Option<codes::Code>,
+    /// A warning for a rule Microsoft's documentation states but its
+    /// assembler does not enforce: `--strict` makes it an error.
+    pub strict: bool,
 }
 
 impl Diagnostic {
@@ -258,6 +267,36 @@ impl Diagnostic {
             help: None,
             notes: Vec::new(),
             also: Vec::new(),
+            code: None,
+            strict: false,
+        }
+    }
+
+    /// An error at `span` that Microsoft refuses with `code`.
+    pub fn coded(code: codes::Code, span: Span, message: impl Into<String>) -> Diagnostic {
+        Diagnostic::error(span, message).with_code(code)
+    }
+
+    /// With Microsoft's code for the same refusal.
+    pub fn with_code(mut self, code: codes::Code) -> Diagnostic {
+        self.code = Some(code);
+        self
+    }
+
+    /// With Microsoft's code unless one is already set (the code of a
+    /// stage, for diagnostics its checks did not name more precisely).
+    pub fn or_code(mut self, code: codes::Code) -> Diagnostic {
+        self.code.get_or_insert(code);
+        self
+    }
+
+    /// A warning for a documented rule that Microsoft's assembler does not
+    /// enforce: what can go wrong at run time is in its notes, and
+    /// `--strict` turns it into an error ([`Diagnostics::make_strict`]).
+    pub fn documented_rule(span: Span, message: impl Into<String>) -> Diagnostic {
+        Diagnostic {
+            strict: true,
+            ..Diagnostic::warning(span, message)
         }
     }
 
@@ -321,6 +360,10 @@ impl Diagnostic {
         if let Some(help) = &self.help {
             notes.push(format!("help: {help}"));
         }
+        let base = match self.code {
+            Some(code) => base.with_code(code),
+            None => base,
+        };
         base.with_message(self.message.clone())
             .with_labels(labels)
             .with_notes(notes)
@@ -457,7 +500,10 @@ impl fmt::Display for Diagnostic {
             Severity::Error => "error",
             Severity::Warning => "warning",
         };
-        write!(f, "{sev}: {}", self.message)
+        match self.code {
+            Some(code) => write!(f, "{sev}[{code}]: {}", self.message),
+            None => write!(f, "{sev}: {}", self.message),
+        }
     }
 }
 
@@ -512,6 +558,36 @@ impl Diagnostics {
         self.items
             .iter()
             .filter(|d| d.severity == Severity::Warning)
+    }
+
+    /// `--strict`: every warning for a documented rule that Microsoft's
+    /// assembler does not enforce becomes an error, and so does every
+    /// warning Microsoft's assembler refuses ([`Diagnostics::make_refusals`]).
+    pub fn make_strict(&mut self) {
+        self.make_refusals();
+        for d in &mut self.items {
+            if d.strict && d.severity == Severity::Warning {
+                d.severity = Severity::Error;
+                d.notes
+                    .push("an error under --strict: Microsoft's assembler accepts it".into());
+            }
+        }
+    }
+
+    /// Writing bytecode: a warning that carries Microsoft's code (one
+    /// Microsoft's assembler refuses, which ps30 lets a shader be measured
+    /// and run with) becomes an error.
+    pub fn make_refusals(&mut self) {
+        for d in &mut self.items {
+            if d.code.is_some() && d.severity == Severity::Warning {
+                d.severity = Severity::Error;
+            }
+        }
+    }
+
+    /// Whether any warning would be an error under `--strict`.
+    pub fn has_strict(&self) -> bool {
+        self.warnings().any(|d| d.strict || d.code.is_some())
     }
 
     /// Sorts by position so output reads top to bottom.

@@ -519,18 +519,15 @@ impl Opcode {
     /// Looks up a base mnemonic (no suffixes), with whether a comparison
     /// suffix was given (it selects `ifc` and `breakc`).
     pub fn from_mnemonic(base: &str, has_comparison: bool) -> Option<Opcode> {
-        if has_comparison && base.eq_ignore_ascii_case("if") {
+        if has_comparison && base == "if" {
             return Some(Opcode::Ifc);
         }
-        if has_comparison && base.eq_ignore_ascii_case("break") {
+        if has_comparison && base == "break" {
             return Some(Opcode::BreakC);
         }
         TABLE
             .iter()
-            .find(|r| {
-                r.mnemonic.eq_ignore_ascii_case(base)
-                    && !matches!(r.op, Opcode::Ifc | Opcode::BreakC)
-            })
+            .find(|r| r.mnemonic == base && !matches!(r.op, Opcode::Ifc | Opcode::BreakC))
             .map(|r| r.op)
     }
 
@@ -622,11 +619,10 @@ impl Compare {
         Compare::ALL.into_iter().find(|c| c.code() == code)
     }
 
-    /// The comparison of a suffix (`gt`, any case), if it is one.
+    /// The comparison of a suffix (`gt`, lower case as Microsoft's
+    /// assembler reads it), if it is one.
     pub fn from_suffix(s: &str) -> Option<Compare> {
-        Compare::ALL
-            .into_iter()
-            .find(|c| c.suffix().eq_ignore_ascii_case(s))
+        Compare::ALL.into_iter().find(|c| c.suffix() == s)
     }
 
     /// Evaluates the comparison on two floats (IEEE semantics: NaN compares
@@ -737,12 +733,10 @@ impl RegFile {
     }
 
     /// Parses a register name (prefix and number already split). Names are
-    /// case-insensitive, as in Microsoft's assembler.
+    /// spelled as Microsoft's assembler reads them, case included (`oC`,
+    /// `vPos`, `aL`: `C0` and `oc0` are invalid registers there).
     pub fn lookup(prefix: &str) -> Option<RegFile> {
-        REG_FILES
-            .iter()
-            .find(|f| f.name.eq_ignore_ascii_case(prefix))
-            .map(|f| f.file)
+        REG_FILES.iter().find(|f| f.name == prefix).map(|f| f.file)
     }
 }
 
@@ -915,11 +909,14 @@ mod tests {
 
     #[test]
     fn mnemonics_resolve() {
-        assert_eq!(Opcode::from_mnemonic("IF", true), Some(Opcode::Ifc));
+        assert_eq!(Opcode::from_mnemonic("if", true), Some(Opcode::Ifc));
+        // Lower case only, as Microsoft's assembler reads them.
+        assert_eq!(Opcode::from_mnemonic("IF", true), None);
         assert_eq!(Opcode::from_mnemonic("if", false), Some(Opcode::If));
         assert_eq!(Opcode::from_mnemonic("break", true), Some(Opcode::BreakC));
         assert_eq!(Opcode::from_mnemonic("break", false), Some(Opcode::Break));
-        assert_eq!(Opcode::from_mnemonic("TexLdL", false), Some(Opcode::TexLdL));
+        assert_eq!(Opcode::from_mnemonic("texldl", false), Some(Opcode::TexLdL));
+        assert_eq!(Opcode::from_mnemonic("TexLdL", false), None);
         assert_eq!(Opcode::from_mnemonic("lit", false), None);
     }
 }

@@ -12,7 +12,7 @@
 //! this point sees one kind of source.
 
 use crate::core::bytecode::{self, ctab, ReadError};
-use crate::core::diag::{Diagnostic, Diagnostics, SourceError, SourceFile};
+use crate::core::diag::{codes, Diagnostic, Diagnostics, SourceError, SourceFile};
 use crate::core::front::{ast, parse, repeat};
 use crate::core::ir::Shader;
 use std::collections::{BTreeMap, BTreeSet};
@@ -25,6 +25,9 @@ pub struct Options {
     pub defines: BTreeMap<String, u64>,
     /// Cap on expanded statements (and on the items of a compiled shader).
     pub max_expanded: u64,
+    /// `--strict`: the documented rules Microsoft's assembler does not
+    /// enforce (warnings by default) are errors.
+    pub strict: bool,
 }
 
 impl Default for Options {
@@ -32,6 +35,7 @@ impl Default for Options {
         Options {
             defines: BTreeMap::new(),
             max_expanded: repeat::DEFAULT_MAX_EXPANDED,
+            strict: false,
         }
     }
 }
@@ -72,15 +76,10 @@ fn count_names(stmts: &[ast::Stmt]) -> BTreeSet<String> {
 pub enum NotASource {
     /// A compiled shader that does not read.
     Bytecode { name: String, error: ReadError },
-    /// Neither a compiled shader nor UTF-8 text: where the first bad byte
-    /// is (its offset, and its line and column counted in the valid text
-    /// before it) and what it is.
-    NotText {
+    /// Text in UTF-16 or UTF-32, told by its byte-order mark.
+    Wide {
         name: String,
-        offset: usize,
-        line: usize,
-        column: usize,
-        byte: u8,
+        encoding: &'static str,
     },
     /// A Direct3D 10+ shader container.
     Dxbc { name: String },
@@ -90,15 +89,10 @@ impl fmt::Display for NotASource {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             NotASource::Bytecode { name, error } => write!(f, "{name}: {error}"),
-            NotASource::NotText {
-                name,
-                offset,
-                line,
-                column,
-                byte,
-            } => write!(
+            NotASource::Wide { name, encoding } => write!(
                 f,
-                "{name}:{line}:{column}: not UTF-8 text (byte 0x{byte:02X} at offset {offset} starts no UTF-8 character) and not ps_3_0 bytecode; save the file as UTF-8"
+                "{name}: a {encoding} byte-order mark: the text is {encoding}, which Microsoft's assembler does not read ({}: shader version expected); save the file as ASCII or UTF-8 without a byte-order mark",
+                codes::VERSION
             ),
             NotASource::Dxbc { name } => write!(
                 f,
@@ -110,11 +104,37 @@ impl fmt::Display for NotASource {
 
 impl std::error::Error for NotASource {}
 
+impl NotASource {
+    /// Microsoft's code for the same input, where `D3DAssemble` refuses it
+    /// too (a compiled shader or a DXBC container is not its input).
+    pub fn code(&self) -> Option<codes::Code> {
+        match self {
+            NotASource::Wide { .. } => Some(codes::VERSION),
+            _ => None,
+        }
+    }
+}
+
+/// The byte-order marks of UTF-32 and UTF-16 (UTF-32 LE first: it starts
+/// with UTF-16 LE's).
+const WIDE_MARKS: [(&[u8], &str); 4] = [
+    (&[0xff, 0xfe, 0, 0], "UTF-32"),
+    (&[0, 0, 0xfe, 0xff], "UTF-32"),
+    (&[0xff, 0xfe], "UTF-16"),
+    (&[0xfe, 0xff], "UTF-16"),
+];
+
 /// A shader's source from its bytes: a compiled shader (its first token is
-/// a version token) becomes its listing; anything else must be UTF-8 text.
+/// a version token) becomes its listing; anything else is text, read as
+/// Microsoft's assembler reads it: up to the first NUL byte (what follows
+/// is ignored), UTF-8, or one byte a character where it is not UTF-8
+/// (comments in a Windows code page; any such character outside a comment
+/// is refused by the parser). UTF-16 and UTF-32 text is refused by its
+/// byte-order mark; a UTF-8 byte-order mark is kept for the parser to
+/// refuse where it stands.
 pub fn source_file(
     name: &str,
-    bytes: Vec<u8>,
+    mut bytes: Vec<u8>,
     options: &Options,
 ) -> Result<SourceFile, NotASource> {
     if bytecode::is_bytecode(&bytes) {
@@ -131,20 +151,18 @@ pub fn source_file(
     if bytes.starts_with(b"DXBC") {
         return Err(NotASource::Dxbc { name: name.into() });
     }
-    String::from_utf8(bytes)
-        .map(|text| SourceFile::new(name, text))
-        .map_err(|e| {
-            let offset = e.utf8_error().valid_up_to();
-            let bytes = e.as_bytes();
-            let before = std::str::from_utf8(&bytes[..offset]).unwrap_or_default();
-            NotASource::NotText {
-                name: name.to_string(),
-                offset,
-                line: before.matches('\n').count() + 1,
-                column: before.rsplit('\n').next().unwrap_or("").chars().count() + 1,
-                byte: bytes[offset],
-            }
-        })
+    if let Some(&(_, encoding)) = WIDE_MARKS.iter().find(|(m, _)| bytes.starts_with(m)) {
+        return Err(NotASource::Wide {
+            name: name.into(),
+            encoding,
+        });
+    }
+    if let Some(nul) = bytes.iter().position(|&b| b == 0) {
+        bytes.truncate(nul);
+    }
+    let text = String::from_utf8(bytes)
+        .unwrap_or_else(|e| e.into_bytes().into_iter().map(char::from).collect());
+    Ok(SourceFile::new(name, text))
 }
 
 /// What the stages produced on the way to a shader.
@@ -169,6 +187,15 @@ pub fn load_str(name: &str, text: &str, options: &Options) -> Result<Loaded, Sou
 /// written where they stand.
 pub fn assemble(file: SourceFile, options: &Options) -> Result<(Loaded, Vec<u32>), SourceError> {
     let s = stages(file, options)?;
+    if s.loaded.warnings.warnings().any(|d| d.code.is_some()) {
+        // What Microsoft's assembler refuses is not written.
+        let mut diagnostics = s.loaded.warnings;
+        diagnostics.make_refusals();
+        return Err(SourceError {
+            file: s.loaded.file,
+            diagnostics,
+        });
+    }
     match bytecode::write::assemble(&s.stmts, &s.expanded) {
         Ok(module) => Ok((s.loaded, bytecode::write::encode(&module))),
         Err(diagnostics) => Err(SourceError {
@@ -216,6 +243,10 @@ fn stages(file: SourceFile, options: &Options) -> Result<Stages, SourceError> {
         Err(d) => return fail(file, only(d)),
     };
     match crate::core::valid::validate(&stmts, &expanded, &file) {
+        Ok((_, mut warnings)) if options.strict && warnings.has_strict() => {
+            warnings.make_strict();
+            fail(file, warnings)
+        }
         Ok((shader, mut warnings)) => {
             warnings.sort();
             let defines_used = count_names(&stmts);
@@ -251,7 +282,7 @@ fn other_version(stmts: &[ast::Stmt]) -> Option<Diagnostic> {
             minor,
             span,
         } if !(text.to_ascii_lowercase().starts_with("ps") && *major == 3 && *minor == 0) => Some(
-            Diagnostic::error(*span, format!("this is a {text} shader; ps30 reads ps_3_0 only"))
+            Diagnostic::coded(codes::VERSION, *span, format!("this is a {text} shader; ps30 reads ps_3_0 only"))
                 .with_label("not ps_3_0")
                 .with_help("ps30 checks, runs and writes pixel shader 3.0 only; the first line of one is `ps_3_0`"),
         ),

@@ -15,7 +15,10 @@
 //!   `rep_count` and `loop_nesting`), never `max_slots` beside a count.
 //! * Problems are `diagnostics`: objects with `severity`, `message`, where
 //!   (`file`, `line`, `column`) and `count` — identical problems at several
-//!   places are one object with their count and line range.
+//!   places are one object with their count and line range. An error
+//!   carries `code`, Microsoft's `X####` for the same refusal; `strict` marks
+//!   a warning for a documented rule Microsoft's assembler does not
+//!   enforce, an error under `--strict`.
 
 use crate::core::cost::{Profile, Range};
 use crate::core::diag::{Diagnostic, SourceFile};
@@ -78,6 +81,8 @@ pub fn diagnostic(kind: &str, file: Option<&SourceFile>, d: &Diagnostic) -> Valu
         },
         "kind": kind,
         "message": d.message,
+        "code": d.code,
+        "strict": d.strict,
         "label": d.label,
         "help": d.help,
         "notes": d.notes,
@@ -100,6 +105,8 @@ pub fn findings(shader: &str, found: &[crate::core::emu::findings::Finding]) -> 
                 "severity": "warning",
                 "kind": f.kind,
                 "message": f.message,
+                "code": null,
+                "strict": false,
                 "label": f.label,
                 "help": f.help,
                 "notes": [],

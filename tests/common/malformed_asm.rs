@@ -1,6 +1,11 @@
 //! Malformed assembly sources shared by tests/malformed.rs (library level)
 //! and tests/corpus.rs (through the binary): (source, expected message,
 //! line, column of the first error).
+//!
+//! Each is refused by Microsoft's assembler too (`tests/oracle/corpus/asm/
+//! rules/malformed/` holds them, with its verdict and code in the fixtures);
+//! the documented rules it accepts are warnings, tested with `--strict` in
+//! tests/validation.rs.
 
 #[rustfmt::skip]
 pub const CASES: &[(&str, &str, usize, usize)] = &[
@@ -55,7 +60,6 @@ pub const CASES: &[(&str, &str, usize, usize)] = &[
     // --- swizzles and write masks -------------------------------------------
     ("ps_3_0\nmov r0, r1.xyzq", "`q` is not a component", 2, 15),
     ("ps_3_0\nmov r0.q, r1", "`q` is not a component", 2, 8),
-    ("ps_3_0\nmov r0, r1.xgba", "mixes xyzw and rgba", 2, 12),
     ("ps_3_0\nmov r0, r1.xyzwx", "more than four components", 2, 12),
     ("ps_3_0\nmov r0, r1.", "expected swizzle or write-mask letters", 2, 12),
     ("ps_3_0\nmov r0.yx, r1", "write mask `.yx` is not in x, y, z, w order", 2, 8),
@@ -76,7 +80,7 @@ pub const CASES: &[(&str, &str, usize, usize)] = &[
     ("ps_3_0\nmul_x2 r0, r1, r2", "shift modifier `_x2` does not exist", 2, 4),
     ("ps_3_0\nmov_d8 r0, r1", "shift modifier `_d8` does not exist", 2, 4),
     ("ps_3_0\nmov_foo r0, r1", "unknown instruction modifier `_foo`", 2, 4),
-    ("ps_3_0\nadd_centroid r0, r1, r2", "`_centroid` is only allowed on texture instructions", 2, 4),
+    ("ps_3_0\nadd_centroid r0, r1, r2", "`_centroid` is only allowed on input declarations", 2, 4),
     ("ps_3_0\nmov_gt r0, r1", "`mov` takes no comparison suffix", 2, 4),
     ("ps_3_0\nsetp p0, r0, r1", "`setp` needs a comparison suffix", 2, 1),
     ("ps_3_0\nif_xx r0.x, r1.x\nendif", "unknown instruction modifier `_xx`", 2, 3),
@@ -90,7 +94,6 @@ pub const CASES: &[(&str, &str, usize, usize)] = &[
     // --- read ports (the instruction is pointed at as a whole) ---------------
     ("ps_3_0\nadd r0, c0, c1", "reads 2 different c registers; ps_3_0 allows 1", 2, 1),
     ("ps_3_0\ndcl_texcoord0 v0\ndcl_texcoord1 v1\nmad r0, v0, r1, v1", "reads 2 different v registers", 4, 1),
-    ("ps_3_0\ndcl_texcoord0 v0\nmov r0, c0_abs\nmov r1, c1", "constants are read both with and without _abs", 4, 1),
     // --- aL and relative addressing -------------------------------------------
     ("ps_3_0\nloop aL, i0\nmov r0, aL\nendloop", "aL can only be used as an index", 3, 9),
     ("ps_3_0\ndcl_texcoord0 v0\nmov r0, v[aL]", "v[aL + n] used outside a loop", 3, 1),
@@ -98,7 +101,6 @@ pub const CASES: &[(&str, &str, usize, usize)] = &[
     ("ps_3_0\nloop aL, i0\nmov r0, v[a0 + 1]\nendloop", "`a0` cannot index registers", 3, 10),
     ("ps_3_0\nloop aL, i0\nmov r0, v[aL.x]\nendloop", "aL is a scalar register: no swizzle", 3, 13),
     ("ps_3_0\nloop aL, i0\nmov r0, v[aL - 1]\nendloop", "negative offsets are not allowed", 3, 14),
-    ("ps_3_0\nloop aL, i0\nmov r0, v[aL + 10]\nendloop", "base register v10 is out of range", 3, 10),
     // An offset that does not fit in 64 bits once added must not overflow.
     ("ps_3_0\nloop aL, i0\nmov r0, v9[aL + 9223372036854775807]\nendloop", "is out of range", 3, 11),
     ("ps_3_0\nloop aL, i0\nmov r0, v[aL + 99999999999999999999]\nendloop", "is out of range", 3, 10),
@@ -132,7 +134,6 @@ pub const CASES: &[(&str, &str, usize, usize)] = &[
     ("ps_3_0\ndcl_color0 oC0", "ps_3_0 cannot declare output registers", 2, 12),
     ("ps_3_0\ndefi i0, 1.5, 0, 0, 0", "defi takes integers", 2, 10),
     ("ps_3_0\ndefi i0, 4294967296, 0, 0, 0", "integer does not fit in 32 bits", 2, 10),
-    ("ps_3_0\ndef c0, 1e39, 0, 0, 0", "number does not fit in a 32-bit float", 2, 9),
     ("ps_3_0\ndef c0.xy, 1, 0, 0, 0", "definitions write the whole register", 2, 5),
     ("ps_3_0\ndefi c0, 1, 0, 0, 0", "`defi` defines i registers", 2, 6),
     // --- blocks -------------------------------------------------------------
@@ -144,16 +145,14 @@ pub const CASES: &[(&str, &str, usize, usize)] = &[
     ("ps_3_0\nendif", "`endif` without a matching `if`", 2, 1),
     ("ps_3_0\nelse\nendif", "`else` without a matching `if`", 2, 1),
     ("ps_3_0\nif b0\nelse\nelse\nendif", "second `else` for the same `if`", 4, 1),
-    ("ps_3_0\nrep i0\nendloop", "`rep` is never closed", 2, 1),
+    ("ps_3_0\nrep i0\nendloop", "`endloop` without a matching `loop`", 3, 1),
     ("ps_3_0\nrep i0\nrep i0\nrep i0\nrep i0\nrep i0\nendrep\nendrep\nendrep\nendrep\nendrep", "rep/loop nested more than 4 deep", 6, 1),
     ("ps_3_0\nrep i0\nloop aL, i1\nrep i0\nloop aL, i1\nloop aL, i1\nendloop\nendloop\nendrep\nendloop\nendrep", "rep/loop nested more than 4 deep", 6, 1),
     ("ps_3_0\nbreak", "break outside rep or loop", 2, 1),
     ("ps_3_0\nbreak_gt r0.x, r1.x", "break outside rep or loop", 2, 1),
     ("ps_3_0\n(p0.x) rep i0\nendrep", "`rep` cannot be predicated", 2, 2),
-    ("ps_3_0\nif_gt c0.x, c0.y\nmov oC0, c0\nendif", "oC0 is written inside dynamic flow control or predication", 3, 1),
-    ("ps_3_0\n(p0) mov oC0, r0", "oC0 is written inside dynamic flow control or predication", 2, 1),
-    ("ps_3_0\ndefi i0, 300, 0, 0, 0\nrep i0\nendrep", "the iteration count (.x = 300) must be in 0..=255", 3, 1),
-    ("ps_3_0\ndefi i0, 1, 0, 200, 0\nloop aL, i0\nendloop", "the loop step (.z = 200) must be in -128..=127", 3, 1),
+    ("ps_3_0\ndefi i0, 300, 0, 0, 0\nrep i0\nendrep", "the iteration count (.x = 300) must be in 0..=255", 2, 1),
+    ("ps_3_0\ndefi i0, 1, 0, 200, 0\nloop aL, i0\nendloop", "the loop step (.z = 200) must be in -128..=127", 2, 1),
     // --- subroutines ----------------------------------------------------------
     ("ps_3_0\nif b0\nret\nendif", "ret inside an open block", 3, 1),
     ("ps_3_0\nmov r0, c0\nlabel l0\nret", "label must immediately follow a ret", 3, 1),
@@ -186,7 +185,7 @@ pub const CASES: &[(&str, &str, usize, usize)] = &[
     // --- lexical ----------------------------------------------------------------
     ("ps_3_0\ndef c0, 1.2.3, 0, 0, 0", "malformed number `1.2.3`", 2, 12),
     ("ps_3_0\ndef c0, 1.0x, 0, 0, 0", "malformed number `1.0x`", 2, 12),
-    ("ps_3_0\nmov r0, 0x10", "malformed number `0x10`", 2, 10),
+    ("ps_3_0\nmov r0, 0x10", "operand 2 of `mov` must be a register", 2, 9),
     ("ps_3_0\nadd r0, r1,", "expected an operand after `,`", 2, 12),
     ("ps_3_0\nmov r0 , c0 ,", "expected an operand after `,`", 2, 14),
     ("ps_3_0\nadd r0 r1, r2", "expected `,` or the end of the line, found `r1`", 2, 8),

@@ -28,17 +28,21 @@ const BODY_LINES: &[&str] = &[
     "add r0, r0, c0",
     "mad r1, r0, c1, r2",
     "nop",
-    "texld r2, r0, s0",
+    // Gradients from an input: from a temporary, Microsoft's assembler
+    // refuses them in a loop with any break (X6077).
+    "texld r2, v0, s0",
     "texldl r3, r0, s1",
-    "texldp r3, r0, s1",
-    "texldb r4, r0, s0",
+    "texldp r3, v0, s1",
+    "texldb r4, v0, s0",
     "(p0.x) mul r4, r0, r1",
-    "(!p0) texld r5, r0, s1",
+    // texldl: a predicated texld with a temporary coordinate is refused
+    // by Microsoft's assembler (X6077, undefined gradients).
+    "(!p0) texldl r5, r0, s1",
     "sincos r5.xy, r0.x",
     "nrm r6, r0",
     "lrp r7, r0, r1, r2",
     "setp_gt p0, r0, c0",
-    "dsx r8, r0",
+    "dsx r8, v0",
     "texkill r0",
     "m4x4 r9, r0, c4",
     "pow r10, r0.x, r1.y",
@@ -133,7 +137,10 @@ impl Gen<'_, '_> {
                 self.line("END_REPEAT_BLOCK");
             }
             4 if ctx.loops > 0 => self.line("break"),
-            5 if ctx.first_callable < self.subs => {
+            // Calls outside loops only: a subroutine's loops count toward
+            // the nesting of the loops around its call (Microsoft's
+            // validator, X5827).
+            5 if ctx.first_callable < self.subs && ctx.loops == 0 => {
                 let label = ctx.first_callable + self.c.below(self.subs - ctx.first_callable);
                 if self.c.chance(50) {
                     self.line(format!("call l{label}"));
@@ -193,6 +200,11 @@ pub fn random_program(bytes: &[u8]) -> String {
         gen.line(format!("mov r{r}, c0"));
     }
     gen.block(main, 6);
+    // Every subroutine is called (Microsoft's validator refuses a label
+    // never called, X5887).
+    for label in 0..subs {
+        gen.line(format!("call l{label}"));
+    }
     gen.line("mov oC0, r0");
     if subs > 0 || gen.c.chance(50) {
         gen.line("ret");

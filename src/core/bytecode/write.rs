@@ -16,7 +16,7 @@ use super::{
     dest_token, loop_counter_token, source_token, Dest, Extra, Instr, Item, ItemKind, Module,
     Source, CENTROID, COMMENT, END, PP, SAT, VERSION_PS_3_0,
 };
-use crate::core::diag::{Diagnostic, Diagnostics};
+use crate::core::diag::{codes, Diagnostic, Diagnostics};
 use crate::core::front::ast::{InstrAst, OperandAst, RegAst, Stmt};
 use crate::core::front::repeat::Expanded;
 use crate::core::ir::{Reg, Span, SrcMod};
@@ -155,7 +155,7 @@ fn version_error(text: &str, span: Span, first: bool) -> Diagnostic {
 }
 
 fn cannot(span: Span, message: impl Into<String>) -> Diagnostic {
-    Diagnostic::error(span, message).with_label("no encoding in ps_3_0 bytecode")
+    Diagnostic::coded(codes::SYNTAX, span, message).with_label("no encoding in ps_3_0 bytecode")
 }
 
 /// One statement's instruction.
@@ -386,7 +386,7 @@ fn number(operand: &OperandAst, integer: bool) -> R<u32> {
     let OperandAst::Number {
         value,
         integer: written_int,
-        special,
+        special: _,
         span,
     } = *operand
     else {
@@ -398,11 +398,9 @@ fn number(operand: &OperandAst, integer: bool) -> R<u32> {
         }
         return Ok(value as i32 as u32);
     }
-    let f = crate::core::front::ast::single(value);
-    if !special && !f.is_finite() {
-        return Err(cannot(span, "the number does not fit in a 32-bit float"));
-    }
-    Ok(f.to_bits())
+    // Out of range is infinity, as Microsoft's assembler writes it (`def
+    // c0, 1e39` is `1.#INF` in its listing); a spelled NaN keeps its bits.
+    Ok(crate::core::front::ast::single(value).to_bits())
 }
 
 /// A register in destination format.

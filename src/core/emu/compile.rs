@@ -590,7 +590,9 @@ impl Builder<'_> {
         let row = match s.reg.file {
             RegFile::Temp if idx < TEMPS => self.temp_row[idx as usize],
             RegFile::Const if idx < CONSTS => self.const_row[idx as usize],
-            RegFile::Input if idx < INPUTS => {
+            // A relative base may lie past v9: the read lands inside v0 … v9
+            // or reads 0 (Worker::row).
+            RegFile::Input if idx < INPUTS || s.relative => {
                 if !s.relative {
                     self.inputs |= 1 << idx;
                 }

@@ -11,10 +11,10 @@
 //! and all errors are returned together.
 
 use super::ast::{CompactString, Count, InstrAst, OperandAst, RegAst, RelAst, Stmt};
-use crate::core::diag::{excerpt, Diagnostic, Diagnostics};
+use crate::core::diag::{codes, excerpt, Diagnostic, Diagnostics};
 use crate::core::ir::Span;
 use nom::branch::alt;
-use nom::bytes::complete::{take_while, take_while1};
+use nom::bytes::complete::{tag, take_while, take_while1};
 use nom::character::complete::{char, digit1, space0};
 use nom::combinator::recognize;
 use nom::number::complete::recognize_float;
@@ -23,25 +23,20 @@ use nom::{IResult, Parser};
 
 type NomError<'a> = nom::error::Error<&'a str>;
 
-/// `s` lower-cased, kept inline when short (as mnemonics and swizzles are).
-fn lower(s: &str) -> CompactString {
-    let mut s = CompactString::from(s);
-    s.make_ascii_lowercase();
-    s
-}
-
 /// The most statements [`parse`] reserves room for before it reads them.
 const MAX_RESERVED_STATEMENTS: usize = 1 << 12;
 
 /// Parses a whole source. Returns the statements of every line that parsed
 /// and the diagnostics of every line that did not.
 pub fn parse(text: &str) -> (Vec<Stmt>, Diagnostics) {
+    let mut diags = Diagnostics::default();
+    let blanked = blank(text, &mut diags);
+    let text: &str = &blanked;
     // At most one statement per line: room for them at once rather than
     // copying the list as it grows (capped, so a file of empty lines does
     // not reserve room it will not use).
     let lines = text.bytes().filter(|&b| b == b'\n').count() + 1;
     let mut stmts = Vec::with_capacity(lines.min(MAX_RESERVED_STATEMENTS));
-    let mut diags = Diagnostics::default();
     let mut line_start = 0;
     // Whether the previous line was a comment-block line that `//#+` continues.
     let mut in_block = false;
@@ -68,6 +63,16 @@ pub fn parse(text: &str) -> (Vec<Stmt>, Diagnostics) {
         in_block = false;
         let code = strip_comment(raw);
         let code = code.trim();
+        // `#line N "file"` only renames places for Microsoft's
+        // preprocessor, which reads it: nothing to assemble.
+        let code = if code
+            .strip_prefix("#line")
+            .is_some_and(|r| r.starts_with([' ', '\t']))
+        {
+            ""
+        } else {
+            code
+        };
         if let Some((at, c)) = code.char_indices().find(|&(_, c)| odd_char(c)) {
             let at = line_start + lead + at;
             diags.push(odd_char_error(c, Span::new(at, at + c.len_utf8()), at == 0));
@@ -82,22 +87,97 @@ pub fn parse(text: &str) -> (Vec<Stmt>, Diagnostics) {
                 rest: code,
                 base: start,
             };
-            match cursor.statement() {
-                Ok(stmt) => stmts.push(stmt),
-                Err(d) => {
-                    // A bad REPEAT_BLOCK line still opens or closes its block,
-                    // so its partner line is not reported as unmatched too.
-                    stmts.extend(macro_placeholder(
-                        code,
-                        Span::new(start, start + code.len()),
-                    ));
-                    diags.push(d)
+            // Statements follow each other on a line as Microsoft's
+            // assembler reads them (`ps_3_0 mov oC0, c0`): one ends where
+            // its operands do.
+            loop {
+                match cursor.statement() {
+                    Ok(stmt) => stmts.push(stmt),
+                    Err(d) => {
+                        // A bad REPEAT_BLOCK line still opens or closes its
+                        // block, so its partner line is not reported as
+                        // unmatched too.
+                        stmts.extend(macro_placeholder(
+                            code,
+                            Span::new(start, start + code.len()),
+                        ));
+                        diags.push(d);
+                        break;
+                    }
                 }
+                cursor.skip_space();
+                if cursor.rest.is_empty() {
+                    break;
+                }
+                let at = cursor.pos();
+                cursor.text = cursor.rest;
+                cursor.base = at;
             }
         }
         line_start += line.len();
     }
+    // Whatever a line alone gets wrong, Microsoft's grammar refuses as a
+    // syntax error unless the check named its code.
+    for d in &mut diags.items {
+        d.code.get_or_insert(codes::SYNTAX);
+    }
     (stmts, diags)
+}
+
+/// The text as Microsoft's assembler reads it, byte for byte the same
+/// length so that spans still index the source: `/* … */` comments (which
+/// its preprocessor removes) blanked, vertical tabs and form feeds read as
+/// spaces, and a carriage return that ends no CR LF pair read as a line end
+/// (it accepts files with old Macintosh line ends). A `/*` never closed is
+/// an error, as there.
+fn blank<'t>(text: &'t str, diags: &mut Diagnostics) -> std::borrow::Cow<'t, str> {
+    let needs = text.contains("/*")
+        || text.bytes().enumerate().any(|(i, b)| {
+            matches!(b, 0x0b | 0x0c) || (b == b'\r' && text.as_bytes().get(i + 1) != Some(&b'\n'))
+        });
+    if !needs {
+        return std::borrow::Cow::Borrowed(text);
+    }
+    let mut out = text.as_bytes().to_vec();
+    let mut i = 0;
+    let mut line_comment = false;
+    while i < out.len() {
+        match out[i] {
+            b'\n' => line_comment = false,
+            b'\r' if out.get(i + 1) != Some(&b'\n') => {
+                out[i] = b'\n';
+                line_comment = false;
+            }
+            0x0b | 0x0c => out[i] = b' ',
+            b'/' if !line_comment && out.get(i + 1) == Some(&b'/') => line_comment = true,
+            b'/' if !line_comment && out.get(i + 1) == Some(&b'*') => {
+                let end = text[i + 2..].find("*/").map(|e| i + 2 + e + 2);
+                if end.is_none() {
+                    diags.push(
+                        Diagnostic::coded(
+                            codes::UNCLOSED_COMMENT,
+                            Span::new(i, i + 2),
+                            "comment continues past the end of the file",
+                        )
+                        .with_label("this `/*` is never closed")
+                        .with_help("close it with `*/`"),
+                    );
+                }
+                for b in &mut out[i..end.unwrap_or(text.len())] {
+                    if *b != b'\n' && *b != b'\r' {
+                        *b = b' ';
+                    }
+                }
+                i = end.unwrap_or(text.len());
+                continue;
+            }
+            _ => {}
+        }
+        i += 1;
+    }
+    // Only ASCII bytes were replaced, by ASCII, and every byte of a comment
+    // (whole characters) by spaces: still UTF-8.
+    std::borrow::Cow::Owned(String::from_utf8(out).expect("blanking keeps UTF-8"))
 }
 
 /// The line that opens a kept comment block of a compiled shader, and the
@@ -217,8 +297,8 @@ fn odd_char_error(c: char, span: Span, file_start: bool) -> Diagnostic {
     let code = format!("U+{:04X}", c as u32);
     let (what, help) = match c {
         '\u{feff}' if file_start => (
-            "a UTF-8 byte-order mark starts the file".to_string(),
-            "save the file as UTF-8 without a byte-order mark (BOM)",
+            "a UTF-8 byte-order mark starts the file, and Microsoft's assembler refuses it (X2001: shader version expected)".to_string(),
+            "save the file as UTF-8 without a byte-order mark (BOM), or as plain ASCII",
         ),
         '\r' => (
             "a carriage return (CR) that does not end a line: the file uses lone-CR line endings".to_string(),
@@ -249,7 +329,14 @@ fn odd_char_error(c: char, span: Span, file_start: bool) -> Diagnostic {
             "ps_3_0 assembly is ASCII outside comments",
         ),
     };
-    Diagnostic::error(span, format!("unexpected {code}: {what}"))
+    // A byte-order mark is where Microsoft's assembler looks for the
+    // version: "shader version expected".
+    let x = if c == '\u{feff}' && file_start {
+        codes::VERSION
+    } else {
+        codes::SYNTAX
+    };
+    Diagnostic::coded(x, span, format!("unexpected {code}: {what}"))
         .with_label(format!("{code} here"))
         .with_help(help)
 }
@@ -318,7 +405,10 @@ fn repeat_keyword<'a>(
 /// refused by name)
 fn version(i: &str) -> IResult<&str, (u32, u32)> {
     let sep = |i| alt((char('_'), char('.'))).parse(i);
-    let (i, _) = alt((ascii_tag("ps"), ascii_tag("vs"))).parse(i)?;
+    // Microsoft's assembler reads the language in lower case only (`PS_3_0`
+    // is "shader version expected", `MOV` a syntax error): only REPEAT_BLOCK,
+    // ps30's own, is read in any case.
+    let (i, _) = alt((tag("ps"), tag("vs"))).parse(i)?;
     let (i, _) = sep(i)?;
     let (i, major) = digit1(i)?;
     let (i, _) = sep(i)?;
@@ -393,9 +483,10 @@ impl<'a> Cursor<'a> {
     fn statement(&mut self) -> Result<Stmt, Diagnostic> {
         let start = self.pos();
         if let Some((major, minor)) = self.eat(version) {
-            if self.rest.trim().is_empty() {
+            if self.rest.trim().is_empty() || self.rest.starts_with([' ', '\t']) {
+                let text = &self.text[..self.text.len() - self.rest.len()];
                 return Ok(Stmt::Version {
-                    text: self.text.to_string(),
+                    text: text.to_string(),
                     major,
                     minor,
                     span: self.span_from(start),
@@ -503,24 +594,53 @@ impl<'a> Cursor<'a> {
             take_while1(|c: char| c.is_ascii_alphabetic()),
             take_while(is_ident_char),
         ))) else {
+            if self.rest.starts_with('+') {
+                return Err(self
+                    .error_here("co-issue (`+`) does not exist in ps_3_0")
+                    .with_code(codes::COISSUE)
+                    .with_help("remove the `+`: ps_3_0 instructions are issued one at a time"));
+            }
+            if self.rest.starts_with('#') {
+                return Err(self
+                    .error_here("preprocessor directives are not supported")
+                    .with_code(codes::PREPROCESSOR)
+                    .with_help("ps30 reads assembly without a preprocessor: expand #define and #include first, and write comments with // or ;"));
+            }
             return Err(self
                 .error_here(format!("expected an instruction, {}", self.found()))
                 .with_label("not an instruction mnemonic"));
         };
         let mut parts = mnemonic.split('_');
-        let base = lower(parts.next().unwrap_or_default());
+        let base = CompactString::from(parts.next().unwrap_or_default());
         let base_span = Span::new(mstart, mstart + base.len());
         let mut suffixes = Vec::new();
         let mut off = mstart + base.len();
         for part in parts {
             off += 1;
-            suffixes.push((lower(part), Span::new(off - 1, off + part.len())));
+            suffixes.push((
+                CompactString::from(part),
+                Span::new(off - 1, off + part.len()),
+            ));
             off += part.len();
         }
         let mut operands = Vec::new();
         let before_space = self.rest.len();
         self.skip_space();
-        if !self.rest.is_empty() {
+        let expected = operand_count(&base, !suffixes.is_empty());
+        // Another statement follows when this one has its operands and the
+        // next word is a mnemonic.
+        let next_statement = |c: &Self, n: usize| {
+            let word = c
+                .rest
+                .split(|ch: char| !is_ident_char(ch))
+                .next()
+                .unwrap_or("");
+            let base = word.split('_').next().unwrap_or("");
+            expected == Some(n)
+                && c.rest.starts_with(|ch: char| ch.is_ascii_alphabetic())
+                && operand_count(base, word.len() > base.len()).is_some()
+        };
+        if !self.rest.is_empty() && !next_statement(self, 0) {
             if self.rest.len() == before_space {
                 return Err(self
                     .error_here(format!("unexpected character after `{mnemonic}`"))
@@ -530,6 +650,9 @@ impl<'a> Cursor<'a> {
                 operands.push(self.operand()?);
                 self.skip_space();
                 if self.rest.is_empty() {
+                    break;
+                }
+                if next_statement(self, operands.len()) {
                     break;
                 }
                 if self.eat(char(',')).is_none() {
@@ -558,6 +681,43 @@ impl<'a> Cursor<'a> {
         })
     }
 
+    /// After the digits `text` (started at `start`), a hexadecimal integer
+    /// (`0x10`), which Microsoft's assembler reads besides decimal numbers
+    /// (the infinities and NaNs of its listings are [`Self::special_float`]).
+    fn special_number(
+        &mut self,
+        text: &str,
+        start: usize,
+    ) -> Option<Result<OperandAst, Diagnostic>> {
+        let negative = text.starts_with('-');
+        let hex =
+            matches!(text.trim_start_matches(['-', '+']), "0") && self.rest.starts_with(['x', 'X']);
+        let (value, integer) = if hex {
+            let digits = self.rest[1..]
+                .find(|c: char| !c.is_ascii_hexdigit())
+                .map_or(&self.rest[1..], |end| &self.rest[1..1 + end]);
+            let value = u64::from_str_radix(digits, 16).ok()? as f64;
+            self.rest = &self.rest[1 + digits.len()..];
+            (if negative { -value } else { value }, true)
+        } else {
+            return None;
+        };
+        if self
+            .rest
+            .starts_with(|c: char| is_ident_char(c) || c == '.')
+        {
+            return Some(Err(self
+                .error_here(format!("malformed number, {}", self.found()))
+                .with_label("unexpected characters after the number")));
+        }
+        Some(Ok(OperandAst::Number {
+            value,
+            integer,
+            special: false,
+            span: self.span_from(start),
+        }))
+    }
+
     fn operand(&mut self) -> Result<OperandAst, Diagnostic> {
         let start = self.pos();
         // A number: optional sign, digits or a leading '.', optional f suffix.
@@ -577,8 +737,17 @@ impl<'a> Cursor<'a> {
             let Some(text) = self.eat(recognize_float::<&str, NomError>) else {
                 return Err(self.error_here(format!("malformed number, {}", self.found())));
             };
+            if let Some(n) = self.special_number(text, start) {
+                return n;
+            }
             self.eat(alt((char('f'), char('F'))));
             let span = self.span_from(start);
+            if self.rest.trim_start().starts_with('-') {
+                return Err(self
+                    .error_here("`1-r#` (complement) does not exist in ps_3_0")
+                    .with_code(codes::COMPLEMENT)
+                    .with_help("compute 1 - x with add r#, c#, -r# and a constant of 1"));
+            }
             if self
                 .rest
                 .starts_with(|c: char| is_ident_char(c) || c == '.')
@@ -603,10 +772,10 @@ impl<'a> Cursor<'a> {
                 span,
             });
         }
-        if let Some(word) = self.eat(alt((ascii_tag("true"), ascii_tag("false")))) {
+        if let Some(word) = self.eat(alt((tag("true"), tag("false")))) {
             if !self.rest.starts_with(is_ident_char) {
                 return Ok(OperandAst::Bool {
-                    value: word.eq_ignore_ascii_case("true"),
+                    value: word == "true",
                     span: self.span_from(start),
                 });
             }
@@ -672,7 +841,11 @@ impl<'a> Cursor<'a> {
         let name_span = self.span_from(nstart);
         let index = match digits {
             Some(d) => Some(d.parse::<u64>().map_err(|_| {
-                Diagnostic::error(name_span, format!("register number `{d}` is too large"))
+                Diagnostic::coded(
+                    codes::NUMBER_TOO_LONG,
+                    name_span,
+                    format!("register number `{d}` is too large"),
+                )
             })?),
             None => None,
         };
@@ -692,7 +865,7 @@ impl<'a> Cursor<'a> {
                     ))
                     .with_label("expected letters from xyzw or rgba"));
             };
-            Some((lower(letters), self.span_from(cstart)))
+            Some((CompactString::from(letters), self.span_from(cstart)))
         } else {
             None
         };
@@ -727,10 +900,11 @@ impl<'a> Cursor<'a> {
         let Some(word) = self.eat(recognize(pair(char('_'), take_while(is_ident_char)))) else {
             return Ok(false);
         };
-        if word.eq_ignore_ascii_case("_abs") {
+        if word == "_abs" {
             return Ok(true);
         }
-        Err(Diagnostic::error(
+        Err(Diagnostic::coded(
+            codes::REGISTER,
             self.span_from(sstart),
             format!("source modifier `{word}` does not exist in ps_3_0"),
         )
@@ -794,6 +968,22 @@ impl<'a> Cursor<'a> {
     }
 }
 
+/// How many operands a mnemonic takes (`suffixed`: written with a suffix,
+/// which may be a comparison), when the instruction table knows it: where a
+/// statement ends when another follows it on the line.
+fn operand_count(base: &str, suffixed: bool) -> Option<usize> {
+    match base {
+        "dcl" => Some(1),
+        "def" | "defi" => Some(5),
+        "defb" => Some(2),
+        _ => {
+            let op = crate::core::isa::Opcode::from_mnemonic(base, suffixed)
+                .or_else(|| crate::core::isa::Opcode::from_mnemonic(base, false))?;
+            Some(op.info().operands.len())
+        }
+    }
+}
+
 /// Parses only the tag used by other modules to recognise a version string.
 pub fn is_version_line(s: &str) -> bool {
     matches!(version(s.trim()), Ok((rest, _)) if rest.is_empty())
@@ -805,6 +995,11 @@ pub fn is_version_line(s: &str) -> bool {
 /// line of it would bury the one thing to fix. `None` when the first
 /// statement is a version line (of any shader model; validation judges it).
 pub fn missing_version(text: &str) -> Option<Diagnostic> {
+    missing_version_of(&blank(text, &mut Diagnostics::default()))
+        .map(|d| d.with_code(codes::VERSION))
+}
+
+fn missing_version_of(text: &str) -> Option<Diagnostic> {
     let mut line_start = 0;
     for line in text.split_inclusive('\n') {
         let code = strip_comment(line.trim_end_matches(['\n', '\r']));
@@ -813,7 +1008,8 @@ pub fn missing_version(text: &str) -> Option<Diagnostic> {
         if !code.is_empty() {
             // A version line, or a line with a character assembly cannot
             // hold (the parser names it where it stands).
-            if is_version_line(code) || code.chars().any(odd_char) {
+            let version_first = matches!(version(code), Ok((rest, _)) if rest.is_empty() || rest.starts_with([' ', '\t']));
+            if version_first || code.chars().any(odd_char) {
                 return None;
             }
             let start = line_start + lead;

@@ -26,13 +26,16 @@
 //!
 //! `if b#`, `callnz l#, b#` and rep/loop counts are uniform over a draw.
 //!
-//! **Warning, not error.** Microsoft's validator rejects such a shader;
-//! ps30 reports a warning with the place and the reason instead, so the
-//! shader can still be measured with `ps30 check` and run with `ps30 profile`,
+//! **Warning when measured, error when assembled.** Microsoft's assembler
+//! refuses such a shader (X6077), and so does `ps30 asm` (a warning that
+//! carries Microsoft's code is an error when bytecode is written, and under
+//! `--strict`); elsewhere ps30 reports a warning with the place and the
+//! reason, so the shader can still be measured with `ps30 check` and run
+//! with `ps30 profile`,
 //! whose quads show what the undefined gradients actually do (see
 //! `crate::core::emu` and the README).
 
-use crate::core::diag::{Diagnostic, SourceFile};
+use crate::core::diag::{codes, Diagnostic, SourceFile};
 use crate::core::ir::{Info, Instruction, Program};
 use crate::core::isa::{Opcode, RegFile};
 use std::ops::Range;
@@ -114,8 +117,12 @@ fn loop_exits(ins: &[Instruction], ranges: &[Function]) -> Vec<Option<usize>> {
                 Opcode::EndIf | Opcode::EndRep | Opcode::EndLoop => {
                     stack.pop();
                 }
+                // Microsoft's validator counts every loop with a break of
+                // any kind (X6077: "loop/rep with break*"), a plain `break`
+                // included, though only a conditional one lets the pixels
+                // of a quad leave at different iterations.
                 Opcode::Break | Opcode::BreakC | Opcode::BreakP => {
-                    let mut dynamic = op != Opcode::Break;
+                    let mut dynamic = true;
                     for &(o, at, d) in stack.iter().rev() {
                         if matches!(o, Opcode::Rep | Opcode::Loop) {
                             if dynamic && loop_exit[at].is_none() {
@@ -251,9 +258,10 @@ pub fn warnings(p: &Program, info: &Info, file: &SourceFile) -> Vec<Diagnostic> 
         };
         let span = x.origin.span;
         let mut d = Diagnostic::warning(span, what)
+            .with_code(codes::GRADIENT_IN_FLOW)
             .with_label("gradients need all four pixels of the 2×2 quad here")
             .with_help(help)
-            .with_note("Direct3D's validator rejects this; ps30 warns so the shader can still be measured and run (ps30 profile counts the quads that hit it)");
+            .with_note("Microsoft's assembler refuses this, and so does ps30 asm; ps30 warns elsewhere so the shader can still be measured and run (ps30 profile counts the quads that hit it)");
         let at = |k: usize| p.instructions[k].origin.span;
         d = match why {
             Dynamic::Predicated => {

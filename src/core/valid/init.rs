@@ -8,7 +8,9 @@
 //! predicated or not — and a `call` counts as running its subroutine, so
 //! what the subroutine (and what it calls) writes is defined after the call.
 //! An accumulator read in a loop before the loop writes it is therefore
-//! refused, as a `mov r0, c0` before the loop fixes it.
+//! reported, as a `mov r0, c0` before the loop fixes it. Microsoft's
+//! assembler enforces none of this, so each read is a warning (an error
+//! under `--strict`).
 //!
 //! Which components an instruction reads follows its operation: per
 //! component for the arithmetic ones (the source components the write mask
@@ -62,10 +64,11 @@ fn uninitialised(ins: &Instruction, reg: u32, missing: u8, defined: u8) -> Diagn
             dotted(defined)
         )
     };
-    Diagnostic::error(ins.origin.span, what)
+    Diagnostic::documented_rule(ins.origin.span, what)
         .with_label(format!("r{reg}{} undefined here", dotted(missing)))
+        .with_note("undefined behaviour: the value read is whatever the register holds, which differs between GPUs and drivers; Microsoft's documentation forbids the read, its assembler accepts it")
         .with_help(format!(
-            "write it first (e.g. `mov r{reg}, c0`): Microsoft's validator refuses reads of components no earlier code defines"
+            "write it first (e.g. `mov r{reg}, c0`)"
         ))
 }
 
@@ -157,18 +160,27 @@ fn dimension(p: &Program, ins: &Instruction) -> usize {
 
 /// Which temporaries an instruction reads, and which components of each.
 fn reads(p: &Program, ins: &Instruction) -> Vec<(u32, u8)> {
+    let mut out = reads_of(p, ins, RegFile::Temp);
+    out.retain(|&(r, _)| (r as usize) < TEMPS);
+    out
+}
+
+/// Which registers of `file` an instruction reads (not relatively
+/// addressed), and which components of each: what a declaration must
+/// cover for an input, what earlier code must write for a temporary.
+pub fn reads_of(p: &Program, ins: &Instruction, file: RegFile) -> Vec<(u32, u8)> {
     let mut out = Vec::new();
     let mask = ins.dst.map_or(WriteMask::ALL, |d| d.mask);
     let per_component = (0..4).filter(|&c| mask.has(c));
     if ins.op == Opcode::TexKill {
-        if let Some(d) = ins.dst.filter(|d| d.reg.file == RegFile::Temp) {
+        if let Some(d) = ins.dst.filter(|d| d.reg.file == file) {
             out.push((d.reg.index, d.mask.0 & 0b0111));
         }
         return out;
     }
     let dims = dimension(p, ins);
     for (k, s) in ins.src.iter().enumerate() {
-        if s.reg.file != RegFile::Temp {
+        if s.reg.file != file || s.relative {
             continue;
         }
         let need = match ins.op {
@@ -203,7 +215,6 @@ fn reads(p: &Program, ins: &Instruction) -> Vec<(u32, u8)> {
         };
         out.push((s.reg.index, need));
     }
-    out.retain(|&(r, _)| (r as usize) < TEMPS);
     out
 }
 

@@ -2,7 +2,7 @@
 //! everything that can be checked from the statement alone (mnemonic,
 //! modifiers, operand count and kinds, register ranges, swizzles, masks).
 
-use crate::core::diag::Diagnostic;
+use crate::core::diag::{codes, Diagnostic};
 use crate::core::front::ast::{InstrAst, OperandAst, RegAst};
 use crate::core::ir::{
     BoolDef, Dst, FloatDef, InputDecl, Instruction, IntDef, Origin, Predicate, Reg, SamplerDecl,
@@ -29,6 +29,10 @@ pub enum Lowered {
 
 type R<T> = Result<T, Diagnostic>;
 
+/// One past the highest base register of `v[aL + n]`: the 11 bits of a
+/// token's register number.
+const MAX_RELATIVE_BASE: i64 = 2048;
+
 /// Mnemonics of other shader models, with what to say about them.
 const NOT_PS30: &[(&str, &str)] = &[
     ("lit", "lit is a vertex-shader instruction"),
@@ -50,11 +54,14 @@ const NOT_PS30: &[(&str, &str)] = &[
 /// wrong. The lowering's origin is left empty: a statement repeated by
 /// REPEAT_BLOCK is lowered once, and the validator gives each copy its own.
 pub fn lower(ast: &InstrAst) -> R<Lowered> {
-    match ast.base.as_str() {
+    let lowered = match ast.base.as_str() {
         "dcl" => lower_dcl(ast),
         "def" | "defi" | "defb" => lower_def(ast),
         _ => lower_instruction(ast).map(Lowered::Instr),
-    }
+    };
+    // What a statement alone can get wrong is, unless a check names a
+    // validator rule, what Microsoft's grammar refuses: a syntax error.
+    lowered.map_err(|d| d.or_code(codes::SYNTAX))
 }
 
 fn unknown_mnemonic(ast: &InstrAst) -> Diagnostic {
@@ -132,6 +139,7 @@ fn lower_instruction(ast: &InstrAst) -> R<Instruction> {
     let predicate = instruction_predicate(ast, info)?;
     check_operand_count(ast, info)?;
     let (dst, src) = operands(ast, info)?;
+    texture_sources(op, &src, ast)?;
     operand_rules(op, dst.as_ref(), &src, ast)?;
     Ok(Instruction {
         op,
@@ -224,18 +232,30 @@ fn check_modifiers(ast: &InstrAst, info: &OpInfo, m: &Suffixes) -> R<()> {
             .unwrap_or(ast.base_span)
     };
     if m.sat && !info.allows_sat {
-        return Err(Diagnostic::error(
+        let code = match info.class {
+            Class::Texture => codes::SAT_TEXTURE,
+            _ if info.mnemonic == "frc" => codes::SAT_FRC,
+            _ if info.mnemonic == "sincos" => codes::SAT_SINCOS,
+            _ => codes::SYNTAX,
+        };
+        return Err(Diagnostic::coded(
+            code,
             suffix_span("sat"),
             format!("`_sat` is not allowed on `{}`", info.mnemonic),
         )
         .with_label("not allowed here"));
     }
-    if m.centroid && info.class != Class::Texture {
-        return Err(Diagnostic::error(
+    // Microsoft's assembler reads `_centroid` on declarations only:
+    // `texld_centroid` is a syntax error there (X2000), though the token
+    // has the bit.
+    if m.centroid {
+        return Err(Diagnostic::coded(
+            codes::SYNTAX,
             suffix_span("centroid"),
-            "`_centroid` is only allowed on texture instructions and input declarations",
+            "`_centroid` is only allowed on input declarations",
         )
-        .with_label("not allowed here"));
+        .with_label("not allowed here")
+        .with_help("declare the input with _centroid instead, e.g. dcl_texcoord0_centroid v0"));
     }
     // Instruction modifiers act on the result written to the destination
     // (Microsoft's "Modifiers for ps_2_0 and above"), and the token that
@@ -264,11 +284,13 @@ fn instruction_predicate(ast: &InstrAst, info: &OpInfo) -> R<Option<Predicate>> 
         return Ok(None);
     };
     if !info.predicable {
-        return Err(
-            Diagnostic::error(p.span, format!("`{}` cannot be predicated", info.mnemonic))
-                .with_label("flow-control instructions take no predicate")
-                .with_help("use if / breakp / callnz with p0 instead"),
-        );
+        return Err(Diagnostic::coded(
+            codes::PREDICATED_FLOW,
+            p.span,
+            format!("`{}` cannot be predicated", info.mnemonic),
+        )
+        .with_label("flow-control instructions take no predicate")
+        .with_help("use if / breakp / callnz with p0 instead"));
     }
     let src = predicate_operand(p, false)?;
     Ok(Some(Predicate {
@@ -329,13 +351,24 @@ fn operands(ast: &InstrAst, info: &OpInfo) -> R<(Option<Dst>, Vec<Src>)> {
             Operand::Dst | Operand::KillSrc => dst = Some(destination(reg, *kind)?),
             Operand::PredDst => dst = Some(predicate_destination(reg)?),
             Operand::Src | Operand::ScalarSrc => {
-                let s = float_source(reg)?;
+                // The texld family's coordinate has its own code.
+                let texture = info.class == Class::Texture && pos == 1;
+                let s = float_source(reg).map_err(|d| match d.code {
+                    Some(codes::SOURCE_REGISTER) if texture => d.with_code(codes::TEXLD_COORDINATE),
+                    _ => d,
+                })?;
                 // vFace is a scalar register (dimension 1 in Microsoft's
                 // ps_3_0 register table, and the operand of if_comp and
                 // break_comp its page names): it needs no swizzle to be one.
                 let scalar = s.swizzle.is_replicate() || s.reg.file == RegFile::Face;
                 if *kind == Operand::ScalarSrc && !scalar {
-                    return Err(Diagnostic::error(
+                    let code = if info.mnemonic == "dp2add" {
+                        codes::DP2ADD_REPLICATE
+                    } else {
+                        codes::REPLICATE
+                    };
+                    return Err(Diagnostic::coded(
+                        code,
                         reg.span,
                         format!(
                             "`{}` needs a replicate swizzle on this source",
@@ -348,14 +381,15 @@ fn operands(ast: &InstrAst, info: &OpInfo) -> R<(Option<Dst>, Vec<Src>)> {
                 src.push(s);
             }
             Operand::Sampler => src.push(sampler_operand(reg, pos, info.mnemonic)?),
-            Operand::IntReg => {
-                src.push(plain_of(reg, RegFile::ConstInt, "an integer constant i#")?)
-            }
+            Operand::IntReg => src.push(
+                plain_of(reg, RegFile::ConstInt, "an integer constant i#")
+                    .map_err(|d| d.or_code(codes::REP_OPERAND))?,
+            ),
             Operand::LoopCounter => {
                 src.push(plain_of(reg, RegFile::LoopCounter, "the loop counter aL")?)
             }
             Operand::Label => src.push(plain_of(reg, RegFile::Label, "a label l#")?),
-            Operand::Condition => src.push(condition(reg)?),
+            Operand::Condition => src.push(condition(reg).map_err(|d| condition_code(d, info))?),
             Operand::FloatLits | Operand::IntLits | Operand::BoolLit => {
                 unreachable!("only def rows use literal shapes")
             }
@@ -364,14 +398,29 @@ fn operands(ast: &InstrAst, info: &OpInfo) -> R<(Option<Dst>, Vec<Src>)> {
     Ok((dst, src))
 }
 
+/// Microsoft's code for a bad condition depends on the instruction: a
+/// predicate without a replicate swizzle is X5949 for `if`, X5793 for
+/// `breakp`, X5946 for `callnz`; a modifier on it is X5690 for `if`.
+fn condition_code(d: Diagnostic, info: &OpInfo) -> Diagnostic {
+    let code = match (d.code, info.mnemonic) {
+        (Some(codes::PREDICATE_REPLICATE), "breakp") => codes::REPLICATE,
+        (Some(codes::PREDICATE_REPLICATE), "callnz") => codes::CALLNZ_REPLICATE,
+        (Some(codes::PREDICATE_MODIFIER), "if") => codes::IF_MODIFIER,
+        _ => return d,
+    };
+    d.with_code(code)
+}
+
 /// setp's destination: p0 with a write mask.
 fn predicate_destination(reg: &RegAst) -> R<Dst> {
     let r = resolve_reg(reg)?;
     if r.file != RegFile::Predicate {
-        return Err(
-            Diagnostic::error(reg.span, "setp writes the predicate register p0")
-                .with_label("expected p0"),
-        );
+        return Err(Diagnostic::coded(
+            codes::SETP_DESTINATION,
+            reg.span,
+            "setp writes the predicate register p0",
+        )
+        .with_label("expected p0"));
     }
     no_modifiers(reg, "the predicate destination")?;
     Ok(Dst {
@@ -384,17 +433,20 @@ fn predicate_destination(reg: &RegAst) -> R<Dst> {
 fn sampler_operand(reg: &RegAst, pos: usize, mnemonic: &str) -> R<Src> {
     let r = resolve_reg(reg)?;
     if r.file != RegFile::Sampler {
-        return Err(Diagnostic::error(
+        return Err(Diagnostic::coded(
+            codes::TEXLD_SAMPLER,
             reg.span,
             format!("operand {} of `{}` must be a sampler s#", pos + 1, mnemonic),
         )
         .with_label("expected s0 … s15"));
     }
     if reg.negate || reg.abs || reg.not {
-        return Err(
-            Diagnostic::error(reg.span, "a sampler operand takes no modifier")
-                .with_label("remove the modifier"),
-        );
+        return Err(Diagnostic::coded(
+            codes::SAMPLER_SOURCE_MODIFIER,
+            reg.span,
+            "a sampler operand takes no modifier",
+        )
+        .with_label("remove the modifier"));
     }
     Ok(Src {
         reg: r,
@@ -402,6 +454,31 @@ fn sampler_operand(reg: &RegAst, pos: usize, mnemonic: &str) -> R<Src> {
         swizzle: swizzle(reg)?,
         modifier: SrcMod::None,
     })
+}
+
+/// The texld family's coordinate and gradients take no `-` or `_abs`
+/// (Microsoft's validator: "Negate or abs modifiers not permitted on source
+/// parameters to texld*").
+fn texture_sources(op: Opcode, src: &[Src], ast: &InstrAst) -> R<()> {
+    if !matches!(
+        op,
+        Opcode::TexLd | Opcode::TexLdP | Opcode::TexLdB | Opcode::TexLdL | Opcode::TexLdD
+    ) {
+        return Ok(());
+    }
+    let bad = src
+        .iter()
+        .position(|s| s.reg.file != RegFile::Sampler && s.modifier != SrcMod::None);
+    match bad {
+        Some(k) => Err(Diagnostic::coded(
+            codes::TEXLD_SOURCE_MODIFIER,
+            ast.operands.get(k + 1).map_or(ast.span, |o| o.span()),
+            format!("`{}` sources take no `-` or `_abs`", op.info().mnemonic),
+        )
+        .with_label("modifier not allowed here")
+        .with_help("apply the modifier with mov into a temporary first")),
+        None => Ok(()),
+    }
 }
 
 /// Per-instruction operand rules of Microsoft's instruction pages (crs,
@@ -430,11 +507,9 @@ fn operand_rules(op: Opcode, dst: Option<&Dst>, src: &[Src], ast: &InstrAst) -> 
             rules.matrix(rows)?;
         }
         Opcode::Nrm => {
-            rules.need_temp()?;
             rules.not_aliased(&[0], "its source")?;
         }
         Opcode::Pow => {
-            rules.need_temp()?;
             rules.not_aliased(&[1], "its exponent source")?;
         }
         _ => {}
@@ -458,7 +533,13 @@ impl Rules<'_> {
 
     fn need_temp(&self) -> R<()> {
         if self.d.reg.file != RegFile::Temp {
-            return Err(Diagnostic::error(
+            let code = if self.mnemonic == "sincos" {
+                codes::SINCOS_DESTINATION
+            } else {
+                codes::DESTINATION
+            };
+            return Err(Diagnostic::coded(
+                code,
                 self.span(0),
                 format!("`{}` writes a temporary register r#", self.mnemonic),
             )
@@ -471,7 +552,14 @@ impl Rules<'_> {
     fn not_aliased(&self, sources: &[usize], what: &str) -> R<()> {
         for &i in sources {
             if self.src.get(i).is_some_and(|s| s.reg == self.d.reg) {
-                return Err(Diagnostic::error(
+                let code = match self.mnemonic {
+                    "crs" => codes::CRS_ALIAS,
+                    "nrm" => codes::NRM_ALIAS,
+                    "pow" => codes::POW_ALIAS,
+                    _ => codes::MATRIX_ALIAS,
+                };
+                return Err(Diagnostic::coded(
+                    code,
                     self.span(0),
                     format!("the destination of `{}` may not be {what}", self.mnemonic),
                 )
@@ -486,7 +574,13 @@ impl Rules<'_> {
     fn mask_must_be(&self, allowed: &[u8], text: &str) -> R<()> {
         let d = self.d;
         if !allowed.contains(&d.mask.0) {
-            return Err(Diagnostic::error(
+            let code = match self.mnemonic {
+                "sincos" => codes::SINCOS_MASK,
+                "crs" => codes::CRS_MASK,
+                _ => codes::MATRIX_MASK,
+            };
+            return Err(Diagnostic::coded(
+                code,
                 self.span(0),
                 format!("`{}` needs the write mask {text}", self.mnemonic),
             )
@@ -512,10 +606,12 @@ impl Rules<'_> {
         )?;
         for (i, s) in self.src.iter().enumerate() {
             if s.swizzle != Swizzle::IDENTITY {
-                return Err(
-                    Diagnostic::error(self.span(i + 1), "`crs` sources take no swizzle")
-                        .with_label("remove the swizzle"),
-                );
+                return Err(Diagnostic::coded(
+                    codes::CRS_SWIZZLE,
+                    self.span(i + 1),
+                    "`crs` sources take no swizzle",
+                )
+                .with_label("remove the swizzle"));
             }
         }
         self.not_aliased(&[0, 1], "one of its sources")
@@ -533,7 +629,8 @@ impl Rules<'_> {
         self.mask_must_be(&[mask], text)?;
         let m = &self.src[1];
         if m.swizzle != Swizzle::IDENTITY || m.modifier != SrcMod::None {
-            return Err(Diagnostic::error(
+            return Err(Diagnostic::coded(
+                codes::MATRIX_MODIFIER,
                 self.span(2),
                 format!("the matrix operand of `{mnemonic}` takes no swizzle or modifier"),
             )
@@ -541,7 +638,8 @@ impl Rules<'_> {
         }
         self.not_aliased(&[0], "its vector source")?;
         if d.reg.file == m.reg.file && (m.reg.index..m.reg.index + rows).contains(&d.reg.index) {
-            return Err(Diagnostic::error(
+            return Err(Diagnostic::coded(
+                codes::MATRIX_ROWS_ALIAS,
                 self.span(0),
                 format!(
                     "the destination of `{mnemonic}` may not be one of the matrix rows {}…",
@@ -551,7 +649,8 @@ impl Rules<'_> {
             .with_label("overlaps the matrix"));
         }
         if m.reg.index + rows > m.reg.file.info().count {
-            return Err(Diagnostic::error(
+            return Err(Diagnostic::coded(
+                codes::MATRIX_RANGE,
                 self.span(2),
                 format!(
                     "the matrix {}…+{} runs past the last register",
@@ -604,7 +703,8 @@ fn foreign_register(name: &str) -> Option<&'static str> {
 /// The register an operand names (file and number), or a diagnostic.
 pub fn resolve_reg(r: &RegAst) -> R<Reg> {
     let Some(file) = RegFile::lookup(&r.name) else {
-        let d = Diagnostic::error(
+        let d = Diagnostic::coded(
+            codes::REGISTER,
             r.name_span,
             format!(
                 "unknown register `{}{}`",
@@ -623,22 +723,26 @@ pub fn resolve_reg(r: &RegAst) -> R<Reg> {
         (true, Some(i), _) => i,
         (true, None, Some(_)) => 0,
         (true, None, None) => {
-            return Err(Diagnostic::error(
+            return Err(Diagnostic::coded(
+                codes::REGISTER,
                 r.name_span,
                 format!("register `{}` needs a number", r.name),
             )
             .with_label(format!("e.g. {}0", info.name)))
         }
         (false, Some(_), _) => {
-            return Err(
-                Diagnostic::error(r.name_span, format!("`{}` takes no number", info.name))
-                    .with_label("remove the number"),
+            return Err(Diagnostic::coded(
+                codes::REGISTER,
+                r.name_span,
+                format!("`{}` takes no number", info.name),
             )
+            .with_label("remove the number"))
         }
         (false, None, _) => 0,
     };
     if index >= info.count as u64 {
-        return Err(Diagnostic::error(
+        return Err(Diagnostic::coded(
+            codes::REGISTER,
             r.name_span,
             format!("register `{}{}` is out of range", info.name, index),
         )
@@ -667,7 +771,8 @@ fn component_index(c: char) -> Option<u8> {
 }
 
 /// Checks letters are all from one set (xyzw or rgba) and returns indices.
-fn components(letters: &str, span: Span) -> R<Vec<u8>> {
+/// `code`: Microsoft's code for a bad swizzle or a bad mask.
+fn components(letters: &str, span: Span, code: codes::Code) -> R<Vec<u8>> {
     let mut out = Vec::new();
     for (i, c) in letters.chars().enumerate() {
         let Some(idx) = component_index(c) else {
@@ -675,20 +780,18 @@ fn components(letters: &str, span: Span) -> R<Vec<u8>> {
                 span.start as usize + i,
                 span.start as usize + i + c.len_utf8(),
             );
-            return Err(Diagnostic::error(at, format!("`{c}` is not a component"))
-                .with_label("expected x, y, z, w (or r, g, b, a)"));
+            return Err(
+                Diagnostic::coded(code, at, format!("`{c}` is not a component"))
+                    .with_label("expected x, y, z, w (or r, g, b, a)"),
+            );
         };
         out.push(idx);
     }
-    let xyzw = letters.chars().all(|c| "xyzw".contains(c));
-    let rgba = letters.chars().all(|c| "rgba".contains(c));
-    if !xyzw && !rgba {
-        return Err(
-            Diagnostic::error(span, "mixes xyzw and rgba letters").with_label("use one set")
-        );
-    }
+    // Microsoft's assembler reads each letter alone: `.xgba` is `.xyzw`.
     if out.len() > 4 {
-        return Err(Diagnostic::error(span, "more than four components").with_label("at most four"));
+        return Err(
+            Diagnostic::coded(code, span, "more than four components").with_label("at most four")
+        );
     }
     Ok(out)
 }
@@ -698,7 +801,7 @@ pub fn swizzle(r: &RegAst) -> R<Swizzle> {
     let Some((letters, span)) = &r.components else {
         return Ok(Swizzle::IDENTITY);
     };
-    let c = components(letters, *span)?;
+    let c = components(letters, *span, codes::SWIZZLE)?;
     let last = *c.last().unwrap_or(&3);
     let mut s = [last; 4];
     s[..c.len()].copy_from_slice(&c);
@@ -710,12 +813,12 @@ pub fn write_mask(r: &RegAst) -> R<WriteMask> {
     let Some((letters, span)) = &r.components else {
         return Ok(WriteMask::ALL);
     };
-    let c = components(letters, *span)?;
+    let c = components(letters, *span, codes::MASK)?;
     let mut mask = 0u8;
     let mut last: i16 = -1;
     for &i in &c {
         if i as i16 <= last {
-            return Err(Diagnostic::error(*span, format!("write mask `.{letters}` is not in x, y, z, w order"))
+            return Err(Diagnostic::coded(codes::MASK, *span, format!("write mask `.{letters}` is not in x, y, z, w order"))
                 .with_label("components must appear in order, each once")
                 .with_help("a write mask lists components in xyzw order without repeats; to reorder, swizzle the source"));
         }
@@ -733,10 +836,12 @@ fn no_modifiers(r: &RegAst, what: &str) -> R<()> {
         );
     }
     if let Some(rel) = &r.relative {
-        return Err(
-            Diagnostic::error(rel.span, format!("{what} cannot be relatively addressed"))
-                .with_label("only sources v[aL + n] may be indexed"),
-        );
+        return Err(Diagnostic::coded(
+            codes::REGISTER,
+            rel.span,
+            format!("{what} cannot be relatively addressed"),
+        )
+        .with_label("only sources v[aL + n] may be indexed"));
     }
     Ok(())
 }
@@ -745,23 +850,28 @@ fn destination(r: &RegAst, kind: Operand) -> R<Dst> {
     let reg = resolve_reg(r)?;
     if kind == Operand::KillSrc {
         if !matches!(reg.file, RegFile::Temp | RegFile::Input) {
-            return Err(
-                Diagnostic::error(r.span, "texkill takes a temporary r# or an input v#")
-                    .with_label("expected r# or v#"),
-            );
+            return Err(Diagnostic::coded(
+                codes::DESTINATION,
+                r.span,
+                "texkill takes a temporary r# or an input v#",
+            )
+            .with_label("expected r# or v#"));
         }
     } else if !reg.file.info().writable || reg.file == RegFile::Predicate {
-        return Err(
-            Diagnostic::error(r.name_span, format!("`{reg}` cannot be written"))
-                .with_label("not a destination")
-                .with_help("destinations are r#, oC# and oDepth (and p0 for setp)"),
-        );
+        return Err(Diagnostic::coded(
+            codes::DESTINATION,
+            r.name_span,
+            format!("`{reg}` cannot be written"),
+        )
+        .with_label("not a destination")
+        .with_help("destinations are r#, oC# and oDepth (and p0 for setp)"));
     }
     no_modifiers(r, "a destination")?;
     let mask = write_mask(r)?;
     if reg.file == RegFile::DepthOut && r.components.is_some() {
         return Err(
-            Diagnostic::error(r.span, "oDepth takes no write mask").with_label("remove the mask")
+            Diagnostic::coded(codes::SCALAR, r.span, "oDepth takes no write mask")
+                .with_label("remove the mask"),
         );
     }
     Ok(Dst { reg, mask })
@@ -782,29 +892,38 @@ fn float_source(r: &RegAst) -> R<Src> {
     match reg.file {
         RegFile::Temp | RegFile::Input | RegFile::Const | RegFile::Position | RegFile::Face => {}
         RegFile::LoopCounter => {
-            return Err(Diagnostic::error(r.span, "aL can only be used as an index")
-                .with_label("not a float source")
-                .with_help("read inputs relative to the loop counter with v[aL + n]"))
+            return Err(Diagnostic::coded(
+                codes::SOURCE_REGISTER,
+                r.span,
+                "aL can only be used as an index",
+            )
+            .with_label("not a float source")
+            .with_help("read inputs relative to the loop counter with v[aL + n]"))
         }
         _ => {
-            return Err(
-                Diagnostic::error(r.name_span, format!("`{reg}` cannot be read here"))
-                    .with_label("not a float source")
-                    .with_help("float sources are r#, v#, c#, vPos and vFace"),
+            return Err(Diagnostic::coded(
+                codes::SOURCE_REGISTER,
+                r.name_span,
+                format!("`{reg}` cannot be read here"),
             )
+            .with_label("not a float source")
+            .with_help("float sources are r#, v#, c#, vPos and vFace"))
         }
     }
     if r.not {
-        return Err(
-            Diagnostic::error(r.span, "`!` only applies to b# and p0 conditions")
-                .with_label("use `-` to negate"),
-        );
+        return Err(Diagnostic::coded(
+            codes::SOURCE_MODIFIER,
+            r.span,
+            "`!` only applies to b# and p0 conditions",
+        )
+        .with_label("use `-` to negate"));
     }
     let relative = match &r.relative {
         None => false,
         Some(rel) => {
             if reg.file != RegFile::Input {
-                return Err(Diagnostic::error(
+                return Err(Diagnostic::coded(
+                    codes::REGISTER,
                     rel.span,
                     format!(
                         "`{}` registers cannot be relatively addressed in ps_3_0",
@@ -813,8 +932,9 @@ fn float_source(r: &RegAst) -> R<Src> {
                 )
                 .with_label("only v[aL + n] is indexable"));
             }
-            if !rel.index_reg.eq_ignore_ascii_case("aL") {
-                let d = Diagnostic::error(
+            if rel.index_reg != "aL" {
+                let d = Diagnostic::coded(
+                    codes::REGISTER,
                     rel.span,
                     format!("`{}` cannot index registers in ps_3_0", rel.index_reg),
                 )
@@ -827,18 +947,25 @@ fn float_source(r: &RegAst) -> R<Src> {
                 );
             }
             if let Some(span) = rel.index_swizzle {
-                return Err(
-                    Diagnostic::error(span, "aL is a scalar register: no swizzle")
-                        .with_label("remove the swizzle"),
-                );
+                return Err(Diagnostic::coded(
+                    codes::SCALAR,
+                    span,
+                    "aL is a scalar register: no swizzle",
+                )
+                .with_label("remove the swizzle"));
             }
+            // Microsoft's assembler takes a base past v9 (`v[aL + 10]` is
+            // `v10[aL]`: what aL adds may bring it back, and a read that
+            // lands outside v0 … v9 is undefined, 0 in the emulator), up to
+            // what the token's register number holds.
             let total = (reg.index as i64).saturating_add(rel.offset);
-            if total >= RegFile::Input.info().count as i64 {
-                return Err(Diagnostic::error(
+            if total >= MAX_RELATIVE_BASE {
+                return Err(Diagnostic::coded(
+                    codes::REGISTER,
                     rel.span,
                     format!("base register v{total} is out of range"),
                 )
-                .with_label("v0 … v9"));
+                .with_label(format!("v0 … v{}", MAX_RELATIVE_BASE - 1)));
             }
             true
         }
@@ -868,7 +995,7 @@ fn plain_of(r: &RegAst, file: RegFile, what: &str) -> R<Src> {
     no_modifiers(r, &format!("`{reg}`"))?;
     if r.components.is_some() {
         return Err(
-            Diagnostic::error(r.span, format!("`{reg}` takes no swizzle"))
+            Diagnostic::coded(codes::SCALAR, r.span, format!("`{reg}` takes no swizzle"))
                 .with_label("remove the swizzle"),
         );
     }
@@ -879,20 +1006,26 @@ fn predicate_operand(r: &RegAst, allow_full: bool) -> R<Src> {
     let reg = resolve_reg(r)?;
     if reg.file != RegFile::Predicate {
         return Err(
-            Diagnostic::error(r.span, "expected the predicate register p0")
+            Diagnostic::coded(codes::SYNTAX, r.span, "expected the predicate register p0")
                 .with_label("expected p0 or !p0.c"),
         );
     }
     if r.negate || r.abs {
-        return Err(Diagnostic::error(r.span, "a predicate takes only `!`")
-            .with_label("remove `-` or `_abs`"));
+        return Err(Diagnostic::coded(
+            codes::PREDICATE_MODIFIER,
+            r.span,
+            "a predicate takes only `!`",
+        )
+        .with_label("remove `-` or `_abs`"));
     }
     let s = swizzle(r)?;
     if !(s.is_replicate() || allow_full || s == Swizzle::IDENTITY) {
-        return Err(
-            Diagnostic::error(r.span, "a predicate needs one component or none")
-                .with_label("e.g. p0.x"),
-        );
+        return Err(Diagnostic::coded(
+            codes::PREDICATE_SWIZZLE,
+            r.span,
+            "a predicate needs one component or none",
+        )
+        .with_label("e.g. p0.x"));
     }
     Ok(Src {
         reg,
@@ -922,7 +1055,8 @@ fn condition(r: &RegAst) -> R<Src> {
         RegFile::Predicate => {
             let s = predicate_operand(r, false)?;
             if !s.swizzle.is_replicate() {
-                return Err(Diagnostic::error(
+                return Err(Diagnostic::coded(
+                    codes::PREDICATE_REPLICATE,
                     r.span,
                     "a predicate condition selects one component",
                 )
@@ -930,10 +1064,12 @@ fn condition(r: &RegAst) -> R<Src> {
             }
             Ok(s)
         }
-        _ => Err(
-            Diagnostic::error(r.span, "expected a condition: b#, !b#, p0.c or !p0.c")
-                .with_label("not a condition"),
-        ),
+        _ => Err(Diagnostic::coded(
+            codes::CALLNZ_CONDITION,
+            r.span,
+            "expected a condition: b#, !b#, p0.c or !p0.c",
+        )
+        .with_label("not a condition")),
     }
 }
 
@@ -952,14 +1088,16 @@ fn lower_dcl(ast: &InstrAst) -> R<Lowered> {
     let m = dcl_suffixes(ast)?;
     match (reg.file, m.kind) {
         (RegFile::Sampler, Some((k, span))) => sampler_decl(r, reg, (k, span), &m),
-        (RegFile::Sampler, None) => Err(Diagnostic::error(
+        (RegFile::Sampler, None) => Err(Diagnostic::coded(
+            codes::SAMPLER_TYPE,
             ast.base_span,
             "a sampler declaration needs a type",
         )
         .with_label("e.g. dcl_2d s0")
         .with_help("write dcl_2d, dcl_cube or dcl_volume")),
         (RegFile::Input, Some((k, span))) => input_decl(r, reg, (k, span), &m),
-        (RegFile::Input, None) => Err(Diagnostic::error(
+        (RegFile::Input, None) => Err(Diagnostic::coded(
+            codes::DCL_USAGE,
             ast.base_span,
             "ps_3_0 input declarations need a usage",
         )
@@ -971,15 +1109,18 @@ fn lower_dcl(ast: &InstrAst) -> R<Lowered> {
             "vPos and vFace are declared with plain `dcl`",
         )
         .with_label("remove the usage")),
-        (RegFile::ColorOut | RegFile::DepthOut, _) => Err(Diagnostic::error(
+        (RegFile::ColorOut | RegFile::DepthOut, _) => Err(Diagnostic::coded(
+            codes::DCL_REGISTER,
             r.span,
             "ps_3_0 cannot declare output registers",
         )
         .with_label("outputs need no declaration")),
-        _ => Err(
-            Diagnostic::error(r.span, format!("`{reg}` cannot be declared"))
-                .with_label("declare v#, s#, vPos or vFace"),
-        ),
+        _ => Err(Diagnostic::coded(
+            codes::DCL_REGISTER,
+            r.span,
+            format!("`{reg}` cannot be declared"),
+        )
+        .with_label("declare v#, s#, vPos or vFace")),
     }
 }
 
@@ -1002,7 +1143,8 @@ fn declared_operand(ast: &InstrAst) -> R<&RegAst> {
         ));
     };
     if let Some(p) = &ast.predicate {
-        return Err(Diagnostic::error(
+        return Err(Diagnostic::coded(
+            codes::DCL_TOKENS,
             p.span,
             "declarations cannot be predicated",
         ));
@@ -1041,6 +1183,15 @@ fn dcl_suffixes(ast: &InstrAst) -> R<DclSuffixes<'_>> {
 /// `dcl_2d` / `dcl_cube` / `dcl_volume s#` (type `k` at `span`), with its
 /// `_centroid` / `_pp`.
 fn sampler_decl(r: &RegAst, reg: Reg, (k, span): (&str, Span), m: &DclSuffixes) -> R<Lowered> {
+    if m.centroid || m.pp {
+        return Err(Diagnostic::coded(
+            codes::SAMPLER_MODIFIER,
+            span,
+            "a sampler declaration takes no modifier",
+        )
+        .with_label("remove _centroid / _pp")
+        .with_help("Microsoft's assembler refuses dcl_2d_centroid and dcl_2d_pp"));
+    }
     let ty = match k {
         "2d" => SamplerType::Tex2d,
         "cube" => SamplerType::Cube,
@@ -1060,7 +1211,8 @@ fn sampler_decl(r: &RegAst, reg: Reg, (k, span): (&str, Span), m: &DclSuffixes) 
         }
     };
     if r.components.is_some() {
-        return Err(Diagnostic::error(
+        return Err(Diagnostic::coded(
+            codes::SAMPLER_MASK,
             r.span,
             "sampler declarations take no write mask",
         ));
@@ -1126,13 +1278,16 @@ fn input_decl(r: &RegAst, reg: Reg, (k, span): (&str, Span), m: &DclSuffixes) ->
 fn pos_face_decl(r: &RegAst, reg: Reg, m: &DclSuffixes) -> R<Lowered> {
     let mask = write_mask(r)?;
     if reg.file == RegFile::Position && !matches!(mask.0, 1..=3) {
-        return Err(
-            Diagnostic::error(r.span, "vPos is declared with .x, .y or .xy")
-                .with_label("z and w are undefined"),
-        );
+        return Err(Diagnostic::coded(
+            codes::VPOS_MASK,
+            r.span,
+            "vPos is declared with .x, .y or .xy",
+        )
+        .with_label("z and w are undefined"));
     }
     if reg.file == RegFile::Face && mask != WriteMask::ALL {
-        return Err(Diagnostic::error(
+        return Err(Diagnostic::coded(
+            codes::SCALAR,
             r.span,
             "vFace is declared without a mask",
         ));
@@ -1156,7 +1311,8 @@ fn lower_def(ast: &InstrAst) -> R<Lowered> {
         ));
     }
     if let Some(p) = &ast.predicate {
-        return Err(Diagnostic::error(
+        return Err(Diagnostic::coded(
+            codes::DWORD_COUNT,
             p.span,
             "definitions cannot be predicated",
         ));
@@ -1187,7 +1343,13 @@ fn lower_def(ast: &InstrAst) -> R<Lowered> {
     };
     let reg = resolve_reg(r)?;
     if reg.file != file {
-        return Err(Diagnostic::error(
+        let code = match file {
+            RegFile::Const => codes::DEF_DESTINATION,
+            RegFile::ConstInt => codes::DEFI_DESTINATION,
+            _ => codes::SYNTAX,
+        };
+        return Err(Diagnostic::coded(
+            code,
             r.span,
             format!("`{}` defines {} registers", ast.base, file.info().name),
         )
@@ -1196,10 +1358,12 @@ fn lower_def(ast: &InstrAst) -> R<Lowered> {
     }
     no_modifiers(r, "a defined register")?;
     if r.components.is_some() {
-        return Err(
-            Diagnostic::error(r.span, "definitions write the whole register: no mask")
-                .with_label("remove the mask"),
-        );
+        return Err(Diagnostic::coded(
+            codes::DEF_DESTINATION,
+            r.span,
+            "definitions write the whole register: no mask",
+        )
+        .with_label("remove the mask"));
     }
     let values = &ast.operands[1..];
     match file {
@@ -1219,7 +1383,7 @@ fn lower_def(ast: &InstrAst) -> R<Lowered> {
                     OperandAst::Number {
                         value,
                         integer,
-                        special,
+                        special: _,
                         span,
                     } => {
                         if file == RegFile::ConstInt && !integer {
@@ -1232,15 +1396,6 @@ fn lower_def(ast: &InstrAst) -> R<Lowered> {
                             return Err(Diagnostic::error(
                                 *span,
                                 "integer does not fit in 32 bits",
-                            )
-                            .with_label("out of range"));
-                        }
-                        // An infinity written as such (`1.#INF`) is one;
-                        // a number too large for a float is not.
-                        if file == RegFile::Const && !special && (*value as f32).is_infinite() {
-                            return Err(Diagnostic::error(
-                                *span,
-                                "number does not fit in a 32-bit float",
                             )
                             .with_label("out of range"));
                         }

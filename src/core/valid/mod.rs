@@ -16,10 +16,10 @@ pub mod gradient;
 pub mod init;
 pub mod lower;
 
-use crate::core::diag::{Diagnostic, Diagnostics, SourceFile};
+use crate::core::diag::{codes, Diagnostic, Diagnostics, SourceFile};
 use crate::core::front::ast::Stmt;
 use crate::core::front::repeat::Expanded;
-use crate::core::ir::{Info, Instruction, Program, Shader, Span, Src, SrcMod};
+use crate::core::ir::{Info, Instruction, Program, Reg, Shader, Span, Src, SrcMod};
 use crate::core::isa::{self, Class, Opcode, RegFile};
 use lower::Lowered;
 use std::collections::{BTreeMap, BTreeSet};
@@ -65,7 +65,7 @@ fn check_version<'e>(
         }
         Some(Stmt::Version { text, span, .. }) => {
             diags.push(
-                Diagnostic::error(*span, format!("`{text}` is not supported"))
+                Diagnostic::coded(codes::VERSION, *span, format!("`{text}` is not supported"))
                     .with_label("ps30 checks ps_3_0 only")
                     .with_help("the first line of a ps_3_0 shader is `ps_3_0`"),
             );
@@ -74,7 +74,8 @@ fn check_version<'e>(
         Some(_) | None => {
             let span = expanded.first().map(|e| e.origin.span).unwrap_or_default();
             diags.push(
-                Diagnostic::error(
+                Diagnostic::coded(
+                    codes::VERSION,
                     Span::new(span.start as usize, span.start as usize),
                     "missing version line",
                 )
@@ -124,8 +125,12 @@ fn collect(
             }
             Stmt::Version { span, .. } => {
                 diags.push(
-                    Diagnostic::error(*span, "the version line may appear only once, first")
-                        .with_label("remove this line"),
+                    Diagnostic::coded(
+                        codes::SYNTAX,
+                        *span,
+                        "the version line may appear only once, first",
+                    )
+                    .with_label("remove this line"),
                 );
                 None
             }
@@ -135,12 +140,15 @@ fn collect(
         let is_decl = !matches!(lowered, Lowered::Instr(_));
         if is_decl {
             if let Some(first) = first_instr {
-                let what = match lowered {
-                    Lowered::Input(_) | Lowered::Sampler(_) => "declarations",
-                    _ => "constant definitions",
+                let (what, code) = match lowered {
+                    Lowered::Input(_) | Lowered::Sampler(_) => {
+                        ("declarations", codes::DCL_TOO_LATE)
+                    }
+                    _ => ("constant definitions", codes::DEF_TOO_LATE),
                 };
                 diags.push(
-                    Diagnostic::error(
+                    Diagnostic::coded(
+                        code,
                         e.origin.span,
                         format!("{what} must come before the first instruction"),
                     )
@@ -190,14 +198,111 @@ fn file_lowered(program: &mut Program, lowered: Lowered, e: &Expanded) {
     }
 }
 
+/// Definitions: each register defined once, and every `defi` a valid loop
+/// constant — Microsoft's validator checks the four values where they are
+/// defined, whether a `rep` or `loop` uses them or not.
+fn check_definitions(p: &Program, diags: &mut Diagnostics) {
+    let spans = p
+        .float_defs
+        .iter()
+        .map(|d| (RegFile::Const, d.index, d.origin.span))
+        .chain(
+            p.int_defs
+                .iter()
+                .map(|d| (RegFile::ConstInt, d.index, d.origin.span)),
+        )
+        .chain(
+            p.bool_defs
+                .iter()
+                .map(|d| (RegFile::ConstBool, d.index, d.origin.span)),
+        );
+    let mut seen: BTreeMap<(RegFile, u32), Span> = BTreeMap::new();
+    for (f, index, span) in spans {
+        let Some(&first) = seen.get(&(f, index)) else {
+            seen.insert((f, index), span);
+            continue;
+        };
+        let code = match f {
+            RegFile::Const => codes::DEF_TWICE,
+            RegFile::ConstInt => codes::DEFI_TWICE,
+            _ => codes::DEFB_TWICE,
+        };
+        diags.push(
+            Diagnostic::coded(
+                code,
+                span,
+                format!("{}{index} is defined twice", f.info().name),
+            )
+            .with_secondary(first, "first defined here")
+            .with_help("define each constant once"),
+        );
+    }
+    for d in &p.int_defs {
+        let [x, y, z, w] = d.value;
+        let max = isa::MAX_REP_COUNT;
+        let problem = if x < 0 {
+            Some((
+                codes::COUNT_NEGATIVE,
+                format!("the iteration count (.x = {x}) must be in 0..={max}"),
+            ))
+        } else if x > max {
+            Some((
+                codes::COUNT_TOO_LARGE,
+                format!("the iteration count (.x = {x}) must be in 0..={max}"),
+            ))
+        } else if !(0..=255).contains(&y) {
+            Some((
+                codes::LOOP_START,
+                format!("the loop start (.y = {y}) must be in 0..=255"),
+            ))
+        } else if !(-128..=127).contains(&z) {
+            Some((
+                codes::LOOP_STEP,
+                format!("the loop step (.z = {z}) must be in -128..=127"),
+            ))
+        } else if w != 0 {
+            Some((codes::LOOP_W, format!("the unused .w (= {w}) must be 0")))
+        } else {
+            None
+        };
+        if let Some((code, msg)) = problem {
+            diags.push(
+                Diagnostic::coded(code, d.origin.span, format!("i{} = {:?}: {msg}", d.index, d.value))
+                    .with_label("out of range")
+                    .with_note("an integer constant is a loop's count, start and step, checked where it is defined"),
+            );
+        }
+    }
+}
+
 /// Duplicate or conflicting declarations.
 fn check_declarations(p: &Program, diags: &mut Diagnostics, file: &SourceFile) {
+    check_definitions(p, diags);
+    let mut usages: BTreeMap<(&str, u32), Span> = BTreeMap::new();
+    for d in p.inputs.iter().filter(|d| d.reg.file == RegFile::Input) {
+        let key = (d.usage.as_str(), d.usage_index);
+        match usages.get(&key) {
+            Some(&first) if first != d.origin.span => diags.push(
+                Diagnostic::coded(
+                    codes::DCL_USAGE_TWICE,
+                    d.origin.span,
+                    format!("{}{} is declared for two inputs", d.usage, d.usage_index),
+                )
+                .with_secondary(first, "first declared here")
+                .with_help("each usage and index names one input"),
+            ),
+            _ => {
+                usages.insert(key, d.origin.span);
+            }
+        }
+    }
     let mut samplers: BTreeMap<u32, Span> = BTreeMap::new();
     for d in &p.samplers {
         if let Some(prev) = samplers.insert(d.index, d.origin.span) {
             if prev != d.origin.span {
                 diags.push(
-                    Diagnostic::error(
+                    Diagnostic::coded(
+                        codes::SAMPLER_TWICE,
                         d.origin.span,
                         format!("sampler s{} is declared twice", d.index),
                     )
@@ -213,7 +318,12 @@ fn check_declarations(p: &Program, diags: &mut Diagnostics, file: &SourceFile) {
         let entry = inputs.entry(key).or_insert((0, d.origin.span));
         if entry.0 & d.mask.0 != 0 && entry.1 != d.origin.span {
             diags.push(
-                Diagnostic::error(
+                Diagnostic::coded(
+                    if d.reg.file == RegFile::Input {
+                        codes::DCL_OVERLAP
+                    } else {
+                        codes::VPOS_TWICE
+                    },
                     d.origin.span,
                     format!("components of {} are declared twice", d.reg),
                 )
@@ -247,8 +357,9 @@ fn check_program(p: &Program, diags: &mut Diagnostics, file: &SourceFile) -> Inf
         c.owner[idx] = c.current;
         c.info.slots[idx] = p.slots_of(ins);
         c.check_declared(ins);
+        c.check_components_declared(ins);
         c.check_read_ports(ins);
-        c.check_relative(ins);
+        c.check_relative(idx, ins);
         c.check_output(ins);
         c.check_reachable(ins);
         c.structure(idx, ins);
@@ -268,6 +379,16 @@ struct Checker<'p, 'd> {
     stack: Vec<Open>,
     in_main: bool,
     calls: Vec<(usize, u32)>,
+    /// The rep/loop depth at each call of `calls`.
+    call_loops: Vec<u32>,
+    /// The deepest rep/loop nesting inside each routine (None: main).
+    own_loops: BTreeMap<Option<u32>, u32>,
+    /// A block closed by the wrong instruction: Microsoft's validator stops
+    /// there, so blocks left open by it are not reported as well.
+    mismatched: bool,
+    /// Instructions of subroutines that read through aL: allowed when
+    /// every call to the subroutine runs inside a loop.
+    sub_relative: Vec<usize>,
     /// Which subroutine (label number, or None for main) each index belongs to.
     owner: Vec<Option<u32>>,
     current: Option<u32>,
@@ -292,6 +413,10 @@ impl<'p, 'd> Checker<'p, 'd> {
             stack: Vec::new(),
             in_main: true,
             calls: Vec::new(),
+            call_loops: Vec::new(),
+            own_loops: BTreeMap::new(),
+            mismatched: false,
+            sub_relative: Vec::new(),
             owner: vec![None; n],
             current: None,
             abs_consts: (None, None),
@@ -311,7 +436,8 @@ impl<'p, 'd> Checker<'p, 'd> {
             match s.reg.file {
                 RegFile::Sampler if self.p.sampler_type(s.reg.index).is_none() => self.err(
                     ins,
-                    Diagnostic::error(
+                    Diagnostic::coded(
+                        codes::UNDECLARED_SAMPLER,
                         span,
                         format!("sampler s{} is used but never declared", s.reg.index),
                     )
@@ -325,9 +451,15 @@ impl<'p, 'd> Checker<'p, 'd> {
                     if !s.relative
                         && !self.declared_inputs.contains(&(s.reg.file, s.reg.index)) =>
                 {
+                    let code = match s.reg.file {
+                        RegFile::Position => codes::UNDECLARED_VPOS,
+                        RegFile::Face => codes::UNDECLARED_VFACE,
+                        _ => codes::UNDECLARED_INPUT,
+                    };
                     self.err(
                         ins,
-                        Diagnostic::error(
+                        Diagnostic::coded(
+                            code,
                             span,
                             format!("input {} is used but never declared", s.reg),
                         )
@@ -343,25 +475,25 @@ impl<'p, 'd> Checker<'p, 'd> {
                 }
                 _ => {}
             }
-            // Microsoft's ps_3_0 register page allows vFace only as the
-            // condition of setp_comp, if_comp and break_comp, but Windows'
-            // runtime creates shaders that read it elsewhere (Wine's
-            // dlls/d3d9/tests/visual.c, vface_register_test: `cmp r0,
-            // vFace, c0, r1`, created and drawn on Windows drivers). So a
-            // warning, not an error: only the sign is defined either way.
+            // vFace is read only as the operand of setp_comp, if_comp and
+            // break_comp (Microsoft's ps_3_0 register page) or as cmp's
+            // condition, which Microsoft's validator allows too (and Wine's
+            // dlls/d3d9/tests/visual.c, vface_register_test, draws `cmp r0,
+            // vFace, c0, r1` on Windows drivers); anything else it refuses.
+            let cmp_condition = ins.op == Opcode::Cmp && std::ptr::eq(s, &ins.src[0]);
             if s.reg.file == RegFile::Face
+                && !cmp_condition
                 && !matches!(ins.op, Opcode::Setp | Opcode::Ifc | Opcode::BreakC)
             {
                 self.err(
                     ins,
-                    Diagnostic::warning(
+                    Diagnostic::coded(
+                        codes::VFACE_USE,
                         span,
-                        "vFace is documented only as a comparison operand (setp, if_comp, break_comp)",
+                        "vFace is read only by setp_comp, if_comp, break_comp or as cmp's condition",
                     )
                     .with_label("vFace used as a value")
-                    .with_note(
-                        "Windows' runtime accepts it; only its sign is defined (negative: back face)",
-                    ),
+                    .with_help("select with it instead: cmp r0, vFace, c_front, c_back (only its sign is defined: negative is a back face)"),
                 );
             }
             if s.reg.file == RegFile::Const {
@@ -380,12 +512,64 @@ impl<'p, 'd> Checker<'p, 'd> {
                 {
                     self.err(
                         ins,
-                        Diagnostic::error(
+                        Diagnostic::coded(
+                            codes::UNDECLARED_INPUT,
                             span,
                             format!("input {} is used but never declared", d.reg),
                         ),
                     );
                 }
+            }
+        }
+    }
+
+    /// The components an instruction reads of v# and vPos must be declared
+    /// (an undeclared register is [`Checker::check_declared`]'s): `dcl_texcoord0
+    /// v0.xy` then `mov r0, v0` reads z and w, which nothing declares.
+    fn check_components_declared(&mut self, ins: &Instruction) {
+        for file in [RegFile::Input, RegFile::Position] {
+            for (index, mut need) in init::reads_of(self.p, ins, file) {
+                if ins.op == Opcode::Nrm {
+                    // Microsoft's validator counts nrm as reading .xyz
+                    // (Wine's test_nrm_instruction: dcl_texcoord0 v1.xyz,
+                    // nrm r0, v1).
+                    need &= 0b0111;
+                }
+                let declared = self
+                    .p
+                    .inputs
+                    .iter()
+                    .filter(|d| d.reg.file == file && d.reg.index == index)
+                    .fold(0u8, |m, d| m | d.mask.0);
+                let missing = need & !declared;
+                if declared == 0 || missing == 0 {
+                    continue;
+                }
+                let name = Reg { file, index };
+                let code = match file {
+                    RegFile::Position if missing & 0b1100 != 0 => codes::VPOS_ZW,
+                    RegFile::Position => codes::UNDECLARED_VPOS,
+                    _ => codes::UNDECLARED_INPUT,
+                };
+                let letters: String = "xyzw"
+                    .chars()
+                    .enumerate()
+                    .filter(|&(i, _)| missing & 1 << i != 0)
+                    .map(|(_, c)| c)
+                    .collect();
+                self.err(
+                    ins,
+                    Diagnostic::coded(
+                        code,
+                        ins.origin.span,
+                        format!("{name}.{letters} is read, but its declaration does not include it"),
+                    )
+                    .with_label("undeclared components")
+                    .with_help(match file {
+                        RegFile::Position => "vPos has only .x and .y; read them with a swizzle such as vPos.xyxy".to_string(),
+                        _ => format!("declare the components read, or swizzle the read to the declared ones (e.g. {name}.xyxy)"),
+                    }),
+                );
             }
         }
     }
@@ -397,6 +581,25 @@ impl<'p, 'd> Checker<'p, 'd> {
         // without a set: an instruction has a few sources, and this runs
         // for every instruction.
         let key = |s: &Src| (s.reg.file, s.reg.index, s.relative);
+        let abs = |s: &Src| matches!(s.modifier, SrcMod::Abs | SrcMod::NegAbs);
+        let mixed = ins.src.iter().enumerate().any(|(i, s)| {
+            s.reg.file == RegFile::Const
+                && ins.src[..i]
+                    .iter()
+                    .any(|e| key(e) == key(s) && abs(e) != abs(s))
+        });
+        if mixed {
+            self.err(
+                ins,
+                Diagnostic::coded(
+                    codes::ABS_MIXED_IN_INSTRUCTION,
+                    ins.origin.span,
+                    "one constant is read both with and without _abs in one instruction",
+                )
+                .with_label("_abs on some reads of the register only")
+                .with_help("read it the same way in all of the instruction's sources, or copy it into r# first"),
+            );
+        }
         for f in &[RegFile::Temp, RegFile::Input, RegFile::Const] {
             let distinct = ins
                 .src
@@ -408,9 +611,14 @@ impl<'p, 'd> Checker<'p, 'd> {
                 .count();
             let ports = f.info().read_ports;
             if distinct as u32 > ports {
+                let code = match f {
+                    RegFile::Input => codes::INPUT_PORTS,
+                    _ => codes::CONST_PORTS,
+                };
                 self.err(
                     ins,
-                    Diagnostic::error(
+                    Diagnostic::coded(
+                        code,
                         ins.origin.span,
                         format!(
                             "reads {} different {} registers; ps_3_0 allows {}",
@@ -430,14 +638,23 @@ impl<'p, 'd> Checker<'p, 'd> {
     }
 
     /// aL and relative addressing only inside loop.
-    fn check_relative(&mut self, ins: &Instruction) {
+    fn check_relative(&mut self, idx: usize, ins: &Instruction) {
         let Some(innermost) = self.stack.iter().rev().find(|o| o.block == Block::Loop) else {
-            if ins.src.iter().any(|s| s.relative) {
+            // A subroutine may use aL when every call to it runs inside a
+            // loop (judged once the calls are known).
+            if ins.src.iter().any(|s| s.relative) && self.current.is_some() {
+                self.sub_relative.push(idx);
+            }
+            if self.current.is_none() && ins.src.iter().any(|s| s.relative) {
                 self.err(
                     ins,
-                    Diagnostic::error(ins.origin.span, "v[aL + n] used outside a loop")
-                        .with_label("aL is only defined inside loop … endloop")
-                        .with_help("wrap it in `loop aL, i#` … `endloop` (rep does not set aL)"),
+                    Diagnostic::coded(
+                        codes::AL_OUTSIDE_LOOP,
+                        ins.origin.span,
+                        "v[aL + n] used outside a loop",
+                    )
+                    .with_label("aL is only defined inside loop … endloop")
+                    .with_help("wrap it in `loop aL, i#` … `endloop` (rep does not set aL)"),
                 );
             }
             return;
@@ -477,9 +694,10 @@ impl<'p, 'd> Checker<'p, 'd> {
             let undeclared = (0..count).contains(&r)
                 && !self.declared_inputs.contains(&(RegFile::Input, r as u32));
             undeclared.then(|| {
-                Diagnostic::error(span, format!("input v{r} is used but never declared"))
+                Diagnostic::documented_rule(span, format!("input v{r} is used but never declared"))
                     .with_label("undeclared input")
                     .with_note(format!("read as {what}"))
+                    .with_note("Microsoft's documentation requires the declaration, its assembler does not check reads through aL; an undeclared input's value is undefined")
                     .with_help(format!(
                         "declare every input the loop reads, e.g. `dcl_texcoord{r} v{r}`"
                     ))
@@ -493,8 +711,9 @@ impl<'p, 'd> Checker<'p, 'd> {
             if d.reg.file == RegFile::ColorOut && ins.op.class() != Class::Flow {
                 let dynamic = self.stack.iter().any(|o| o.block == Block::IfDynamic);
                 if dynamic || ins.predicate.is_some() {
-                    self.err(ins, Diagnostic::error(ins.origin.span, format!("{} is written inside dynamic flow control or predication", d.reg))
-                        .with_label("not allowed in ps_3_0")
+                    self.err(ins, Diagnostic::documented_rule(ins.origin.span, format!("{} is written inside dynamic flow control or predication", d.reg))
+                        .with_label("documented as not allowed in ps_3_0")
+                        .with_note("Microsoft's assembler accepts it, its HLSL compiler emits it for an `if` that returns, and Direct3D 9 drivers run it; a pixel whose path writes no oC# gets an undefined colour")
                         .with_help("compute the value into r# inside the branch and write oC# once, outside it"));
                 }
             }
@@ -506,7 +725,8 @@ impl<'p, 'd> Checker<'p, 'd> {
         if !self.in_main && self.current.is_none() && ins.op != Opcode::Label {
             self.err(
                 ins,
-                Diagnostic::error(
+                Diagnostic::coded(
+                    codes::AFTER_RET,
                     ins.origin.span,
                     "instruction after the end of main and outside any subroutine",
                 )
@@ -539,6 +759,7 @@ impl<'p, 'd> Checker<'p, 'd> {
                 }
                 other => {
                     let d = mismatch(span, "endif", "if", other);
+                    self.mismatched = true;
                     self.err(ins, d)
                 }
             },
@@ -548,11 +769,15 @@ impl<'p, 'd> Checker<'p, 'd> {
             {
                 self.err(
                     ins,
-                    Diagnostic::error(span, "break outside rep or loop")
+                    Diagnostic::coded(codes::BREAK_OUTSIDE, span, "break outside rep or loop")
                         .with_label("nothing to break out of"),
                 );
             }
-            Opcode::Call | Opcode::CallNz => self.calls.push((idx, ins.src[0].reg.index)),
+            Opcode::Call | Opcode::CallNz => {
+                self.calls.push((idx, ins.src[0].reg.index));
+                let depth = self.depth(&[Block::Rep, Block::Loop]);
+                self.call_loops.push(depth);
+            }
             Opcode::Ret => self.ret(idx, ins),
             Opcode::Label => self.label(idx, ins),
             _ => {}
@@ -565,7 +790,8 @@ impl<'p, 'd> Checker<'p, 'd> {
         if self.depth(&[Block::Rep, Block::Loop]) >= isa::MAX_LOOP_NESTING {
             self.err(
                 ins,
-                Diagnostic::error(
+                Diagnostic::coded(
+                    codes::LOOP_DEPTH,
                     span,
                     format!("rep/loop nested more than {} deep", isa::MAX_LOOP_NESTING),
                 )
@@ -583,7 +809,9 @@ impl<'p, 'd> Checker<'p, 'd> {
             span,
             seen_else: false,
         });
-        check_int_operand(self.p, ins, self.diags, self.file);
+        let depth = self.depth(&[Block::Rep, Block::Loop]);
+        let own = self.own_loops.entry(self.current).or_default();
+        *own = (*own).max(depth);
     }
 
     /// `if` / `if_comp`: static (`if b#`) or dynamic, each with its nesting
@@ -603,8 +831,18 @@ impl<'p, 'd> Checker<'p, 'd> {
         if self.depth(&[block]) >= max {
             self.err(
                 ins,
-                Diagnostic::error(span, format!("{kind} if nested more than {max} deep"))
-                    .with_label("too deep"),
+                Diagnostic::coded(
+                    if block == Block::IfStatic {
+                        codes::STATIC_IF_DEPTH
+                    } else if ins.src[0].reg.file == RegFile::Predicate {
+                        codes::PREDICATE_IF_DEPTH
+                    } else {
+                        codes::DYNAMIC_IF_DEPTH
+                    },
+                    span,
+                    format!("{kind} if nested more than {max} deep"),
+                )
+                .with_label("too deep"),
             );
         }
         self.stack.push(Open {
@@ -626,11 +864,12 @@ impl<'p, 'd> Checker<'p, 'd> {
                 return;
             }
             Some(o) if matches!(o.block, Block::IfStatic | Block::IfDynamic) => {
-                Diagnostic::error(span, "second `else` for the same `if`")
+                Diagnostic::coded(codes::ELSE_TWICE, span, "second `else` for the same `if`")
                     .with_secondary(o.span, "this if")
             }
             other => mismatch(span, "else", "if", other.map(|o| &*o)),
         };
+        self.mismatched = true;
         self.err(ins, d);
     }
 
@@ -649,6 +888,7 @@ impl<'p, 'd> Checker<'p, 'd> {
             }
             other => {
                 let d = mismatch(ins.origin.span, name, opener, other);
+                self.mismatched = true;
                 self.err(ins, d)
             }
         }
@@ -657,9 +897,13 @@ impl<'p, 'd> Checker<'p, 'd> {
     /// `ret`: no block open; the first one ends main.
     fn ret(&mut self, idx: usize, ins: &Instruction) {
         if let Some(o) = self.stack.last() {
-            let d = Diagnostic::error(ins.origin.span, "ret inside an open block")
-                .with_secondary(o.span, "block opened here")
-                .with_help("close the block before ret");
+            let d = Diagnostic::coded(
+                codes::RET_IN_BLOCK,
+                ins.origin.span,
+                "ret inside an open block",
+            )
+            .with_secondary(o.span, "block opened here")
+            .with_help("close the block before ret");
             self.err(ins, d);
         }
         if self.in_main {
@@ -678,15 +922,24 @@ impl<'p, 'd> Checker<'p, 'd> {
         if !after_ret {
             self.err(
                 ins,
-                Diagnostic::error(span, "label must immediately follow a ret")
-                    .with_label("subroutines start after the end of main")
-                    .with_help("end main (or the previous subroutine) with ret"),
+                Diagnostic::coded(
+                    codes::LABEL_PLACE,
+                    span,
+                    "label must immediately follow a ret",
+                )
+                .with_label("subroutines start after the end of main")
+                .with_help("end main (or the previous subroutine) with ret"),
             );
         }
         if let Some(prev) = self.info.labels.insert(label, idx as u32) {
             self.err(
                 ins,
-                Diagnostic::error(span, format!("label l{label} is defined twice")).with_secondary(
+                Diagnostic::coded(
+                    codes::LABEL_TWICE,
+                    span,
+                    format!("label l{label} is defined twice"),
+                )
+                .with_secondary(
                     self.p.instructions[prev as usize].origin.span,
                     "first defined here",
                 ),
@@ -716,7 +969,7 @@ impl<'p, 'd> Checker<'p, 'd> {
                     .map(|&i| &p.instructions[i as usize]);
                 if let Some(at) = at {
                     self.diags.push(
-                        Diagnostic::error(
+                        Diagnostic::coded(codes::SUBROUTINE_WITHOUT_RET,
                             at.origin.span,
                             format!("subroutine l{label} does not end with ret"),
                         )
@@ -734,14 +987,19 @@ impl<'p, 'd> Checker<'p, 'd> {
     /// total slot count.
     fn finish(mut self) -> Info {
         let p = self.p;
-        for o in self.stack.iter().rev() {
-            let (what, close) = match o.block {
-                Block::Rep => ("rep", "endrep"),
-                Block::Loop => ("loop", "endloop"),
-                _ => ("if", "endif"),
+        let unclosed = if self.mismatched {
+            &[][..]
+        } else {
+            &self.stack[..]
+        };
+        for o in unclosed.iter().rev() {
+            let (what, close, code) = match o.block {
+                Block::Rep => ("rep", "endrep", codes::LOOP_UNCLOSED),
+                Block::Loop => ("loop", "endloop", codes::LOOP_UNCLOSED),
+                _ => ("if", "endif", codes::IF_UNCLOSED),
             };
             self.diags.push(
-                Diagnostic::error(o.span, format!("`{what}` is never closed"))
+                Diagnostic::coded(code, o.span, format!("`{what}` is never closed"))
                     .with_label("opened here")
                     .with_help(format!("add `{close}` at the end of the block"))
                     .in_origin(&p.instructions[o.index].origin, self.file),
@@ -750,8 +1008,9 @@ impl<'p, 'd> Checker<'p, 'd> {
         self.check_final_ret();
         if let (Some(a), Some(b)) = self.abs_consts {
             self.diags.push(
-                Diagnostic::error(a.max(b), "constants are read both with and without _abs")
+                Diagnostic::documented_rule(a.max(b), "constants are read both with and without _abs")
                     .with_secondary(a.min(b), "the other kind")
+                    .with_note("Microsoft's documentation asks for one kind in a shader; its assembler and real hardware accept both (its HLSL compiler emits such shaders), and only one instruction reading the same c# both ways is refused")
                     .with_help("in ps_3_0 either every c# read uses _abs or none does"),
             );
         }
@@ -763,37 +1022,141 @@ impl<'p, 'd> Checker<'p, 'd> {
             self.diags,
             self.file,
         );
+        self.check_call_order();
         self.info
     }
 }
 
+impl Checker<'_, '_> {
+    /// What Microsoft's validator adds to the call graph: a call goes
+    /// forward (to a label defined after it), every label is called, and
+    /// the loops a call runs inside count toward the loop-nesting limit of
+    /// the subroutine it calls.
+    fn check_call_order(&mut self) {
+        let p = self.p;
+        let at = |i: usize| &p.instructions[i];
+        let mut found: Vec<(usize, Diagnostic)> = Vec::new();
+        let mut called = BTreeSet::new();
+        for &(idx, label) in &self.calls {
+            called.insert(label);
+            if let Some(&def) = self.info.labels.get(&label) {
+                if (def as usize) < idx {
+                    let d = Diagnostic::coded(
+                        codes::CALL_BACKWARD,
+                        at(idx).origin.span,
+                        format!("call to l{label}, which is defined before the call"),
+                    )
+                    .with_secondary(at(def as usize).origin.span, "defined here")
+                    .with_help("a subroutine may call only subroutines defined after it");
+                    found.push((idx, d));
+                }
+            }
+        }
+        for (&label, &def) in &self.info.labels {
+            if !called.contains(&label) {
+                let d = Diagnostic::coded(
+                    codes::UNREFERENCED_LABEL,
+                    at(def as usize).origin.span,
+                    format!("subroutine l{label} is never called"),
+                )
+                .with_help("remove it, or call it");
+                found.push((def as usize, d));
+            }
+        }
+        // The deepest loop nesting a routine reaches, its calls included;
+        // callees are defined later, so walking labels from the last one
+        // knows each callee before its callers.
+        let mut reach: BTreeMap<Option<u32>, u32> = BTreeMap::new();
+        let mut routines: Vec<(u32, Option<u32>)> = self
+            .info
+            .labels
+            .iter()
+            .map(|(&l, &i)| (i, Some(l)))
+            .collect();
+        routines.sort();
+        routines.insert(0, (0, None));
+        for &(_, routine) in routines.iter().rev() {
+            let mut deepest = self.own_loops.get(&routine).copied().unwrap_or(0);
+            for (k, &(idx, label)) in self.calls.iter().enumerate() {
+                if self.owner[idx] != routine {
+                    continue;
+                }
+                let total = self.call_loops[k] + reach.get(&Some(label)).copied().unwrap_or(0);
+                if total > isa::MAX_LOOP_NESTING {
+                    let d = Diagnostic::coded(
+                        codes::LOOP_DEPTH,
+                        at(idx).origin.span,
+                        format!(
+                            "rep/loop nested {total} deep through this call; ps_3_0 allows {}",
+                            isa::MAX_LOOP_NESTING
+                        ),
+                    )
+                    .with_label("the subroutine's loops run inside this call's")
+                    .with_help("loops in a subroutine count toward the nesting of every loop that calls it");
+                    found.push((idx, d));
+                }
+                deepest = deepest.max(total);
+            }
+            reach.insert(routine, deepest);
+        }
+        // A subroutine runs inside a loop when every call to it does: from
+        // inside a loop, or from a subroutine that does (callers are
+        // defined before their callees).
+        let mut in_loop: BTreeMap<u32, bool> = BTreeMap::new();
+        for &(_, routine) in &routines {
+            let Some(label) = routine else { continue };
+            let mut sites = self
+                .calls
+                .iter()
+                .enumerate()
+                .filter(|(_, &(_, l))| l == label)
+                .peekable();
+            let called = sites.peek().is_some();
+            let all = sites.all(|(k, &(idx, _))| {
+                self.call_loops[k] > 0
+                    || self.owner[idx].is_some_and(|o| in_loop.get(&o).copied().unwrap_or(false))
+            });
+            in_loop.insert(label, called && all);
+        }
+        for &idx in &self.sub_relative {
+            let inside = self.owner[idx].is_some_and(|o| in_loop.get(&o).copied().unwrap_or(false));
+            if !inside {
+                found.push((
+                    idx,
+                    Diagnostic::coded(
+                        codes::AL_OUTSIDE_LOOP,
+                        at(idx).origin.span,
+                        "v[aL + n] in a subroutine that is not always called from inside a loop",
+                    )
+                    .with_label("aL is only defined inside loop … endloop")
+                    .with_help("call the subroutine only from inside `loop aL, i#` … `endloop`"),
+                ));
+            }
+        }
+        for (i, d) in found {
+            self.err(at(i), d);
+        }
+    }
+}
+
 fn mismatch(span: Span, closer: &str, opener: &str, open: Option<&Open>) -> Diagnostic {
-    let d = Diagnostic::error(span, format!("`{closer}` without a matching `{opener}`"))
-        .with_label("nothing to close");
+    let code = match closer {
+        "endif" => codes::ENDIF_MISMATCH,
+        "else" => codes::ELSE_MISMATCH,
+        "endrep" => codes::ENDREP_MISMATCH,
+        _ => codes::ENDLOOP_MISMATCH,
+    };
+    let d = Diagnostic::coded(
+        code,
+        span,
+        format!("`{closer}` without a matching `{opener}`"),
+    )
+    .with_label("nothing to close");
     match open {
         Some(o) => d
             .with_secondary(o.span, "the innermost open block is this one")
             .with_help("blocks must nest: close the inner block first"),
         None => d,
-    }
-}
-
-/// Loop-count operands defined with defi must be in range.
-fn check_int_operand(p: &Program, ins: &Instruction, diags: &mut Diagnostics, file: &SourceFile) {
-    let reg = ins.src.iter().find(|s| s.reg.file == RegFile::ConstInt);
-    let Some(reg) = reg else { return };
-    let Some(v) = p.int_def(reg.reg.index) else {
-        return;
-    };
-    if let Some(msg) = crate::core::cost::int_constant_problem(ins.op, v) {
-        diags.push(
-            Diagnostic::error(
-                ins.origin.span,
-                format!("i{} = {:?}: {msg}", reg.reg.index, v),
-            )
-            .with_label("out of range")
-            .in_origin(&ins.origin, file),
-        );
     }
 }
 
@@ -855,12 +1218,16 @@ fn check_calls(
         let ins = &p.instructions[idx];
         if !info.labels.contains_key(&label) {
             diags.push(
-                Diagnostic::error(ins.origin.span, format!("call to undefined label l{label}"))
-                    .with_label("no such label")
-                    .with_help(format!(
-                        "define the subroutine after main with `label l{label}` … `ret`"
-                    ))
-                    .in_origin(&ins.origin, file),
+                Diagnostic::coded(
+                    codes::UNDEFINED_LABEL,
+                    ins.origin.span,
+                    format!("call to undefined label l{label}"),
+                )
+                .with_label("no such label")
+                .with_help(format!(
+                    "define the subroutine after main with `label l{label}` … `ret`"
+                ))
+                .in_origin(&ins.origin, file),
             );
         }
         graph.entry(owner[idx]).or_default().insert(label);
@@ -879,13 +1246,18 @@ fn check_calls(
                 .find(|&&(i, l)| l == callee && owner[i] == Some(caller))
                 .map_or(span, |&(i, _)| p.instructions[i].origin.span);
             diags.push(
-                Diagnostic::error(span, format!("recursive calls: {}", names.join(" → ")))
-                    .with_label("ps_3_0 has no recursion"),
+                Diagnostic::coded(
+                    codes::CALL_BACKWARD,
+                    span,
+                    format!("recursive calls: {}", names.join(" → ")),
+                )
+                .with_label("ps_3_0 has no recursion"),
             );
         }
         Ok(d) if d > isa::MAX_CALL_NESTING => {
             diags.push(
-                Diagnostic::error(
+                Diagnostic::coded(
+                    codes::CALL_DEPTH,
                     span,
                     format!(
                         "calls nest {d} deep; ps_3_0 allows {}",

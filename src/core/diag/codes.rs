@@ -1,0 +1,245 @@
+//! Microsoft's error codes: for each kind of refusal, the `X####` code that
+//! `D3DAssemble` (d3dcompiler_47.dll) gives for the same input, so that a
+//! ps30 error can be looked up with the code a user already met in fxc's
+//! output or a game's log.
+//!
+//! This is the one table of them: every check that refuses a shader names
+//! the constant for its rule here, never a literal code. Each code was read
+//! from Microsoft's answer to the probes of `tests/oracle/corpus/asm/`
+//! (`tests/oracle/accept.rs` checks every refusal against those answers);
+//! the comment beside it is Microsoft's own message, shortened.
+
+/// A Microsoft `X####` code.
+pub type Code = &'static str;
+
+// --- the preprocessor and the lexer --------------------------------------
+/// "comment continues past end of file" (a `/*` never closed).
+pub const UNCLOSED_COMMENT: Code = "X1001";
+/// "decimal value truncated to 64 bits".
+pub const NUMBER_TOO_LONG: Code = "X1004";
+/// "invalid preprocessor command".
+pub const PREPROCESSOR: Code = "X1504";
+
+// --- the assembler's grammar ------------------------------------------------
+/// "syntax error : unexpected token": an unknown mnemonic or modifier, a
+/// wrong operand count, a literal where a register goes, stray text.
+pub const SYNTAX: Code = "X2000";
+/// "shader version expected": no `ps_3_0` first (a byte-order mark, text in
+/// another encoding, an unknown version).
+pub const VERSION: Code = "X2001";
+/// "invalid mask".
+pub const MASK: Code = "X2003";
+/// "invalid swizzle".
+pub const SWIZZLE: Code = "X2004";
+/// "invalid register": an unknown name, a number out of range, a register
+/// that cannot be indexed, an unknown source modifier.
+pub const REGISTER: Code = "X2005";
+/// "scalar registers cannot be masked / swizzled" (oDepth, vFace, aL).
+pub const SCALAR: Code = "X2022";
+/// "instruction coissue is not supported in this shader version".
+pub const COISSUE: Code = "X2027";
+/// "complement is not supported in this shader version" (`1-r0`).
+pub const COMPLEMENT: Code = "X2029";
+
+// --- the validator: declarations and definitions ---------------------------
+/// "dcl instruction should have exactly 2 parameter tokens" (a predicate
+/// on a declaration).
+pub const DCL_TOKENS: Code = "X5002";
+/// "Unexpected DWORD count for instruction" (a predicate on a definition).
+pub const DWORD_COUNT: Code = "X5005";
+/// "def and dcl instructions must appear before other instructions" (dcl).
+pub const DCL_TOO_LATE: Code = "X5297";
+/// "Invalid register type for dcl".
+pub const DCL_REGISTER: Code = "X5299";
+/// "Declaration for register v# overlaps previous declaration".
+pub const DCL_OVERLAP: Code = "X5301";
+/// "dcl usage+index … has already been specified for an input register".
+pub const DCL_USAGE_TWICE: Code = "X5304";
+/// "dcl s# must be one of the following types".
+pub const SAMPLER_TYPE: Code = "X5585";
+/// "Destination for def instruction must be of the form c#".
+pub const DEF_DESTINATION: Code = "X5587";
+/// "c# already def'd in the shader".
+pub const DEF_TWICE: Code = "X5594";
+/// "i# already def'd in the shader".
+pub const DEFI_TWICE: Code = "X5595";
+/// "b# already def'd in the shader".
+pub const DEFB_TWICE: Code = "X5596";
+/// "vPos register already declared" (and "vFace register already
+/// declared").
+pub const VPOS_TWICE: Code = "X5630";
+/// "z or w components of vPos … cannot be dcl'd".
+pub const VPOS_MASK: Code = "X5631";
+/// "def or dcl instructions must appear before other instructions" (def).
+pub const DEF_TOO_LATE: Code = "X5729";
+/// "Destination for defi instruction must be i# register".
+pub const DEFI_DESTINATION: Code = "X5732";
+/// "Sampler s# already declared".
+pub const SAMPLER_TWICE: Code = "X5769";
+/// "dcl s# must not specify a writemask".
+pub const SAMPLER_MASK: Code = "X5770";
+/// "dcl for s register does not support any modifiers".
+pub const SAMPLER_MODIFIER: Code = "X5969";
+/// "dcl for input v# register must specify usage+index".
+pub const DCL_USAGE: Code = "X5971";
+/// "Components of register v# being read, but not declared".
+pub const UNDECLARED_INPUT: Code = "X5984";
+/// "Component(s) of register vPos being read, but not declared".
+pub const UNDECLARED_VPOS: Code = "X5985";
+/// "vFace being read, but not declared".
+pub const UNDECLARED_VFACE: Code = "X5986";
+/// "vPos does not have .z or .w channels in this shader model".
+pub const VPOS_ZW: Code = "X6063";
+/// "Sampler register s# has not been declared".
+pub const UNDECLARED_SAMPLER: Code = "X5576";
+
+// --- the validator: integer constants --------------------------------------
+/// "i#.x (which represents loop or rep iteration count) cannot be negative".
+pub const COUNT_NEGATIVE: Code = "X5990";
+/// "i#.x … cannot be greater than 255".
+pub const COUNT_TOO_LARGE: Code = "X5995";
+/// "i#.y (which represents loop initial value) must be in the range [0, 255]".
+pub const LOOP_START: Code = "X5558";
+/// "i#.z (which represents loop step value) must be in the range [-128, 127]".
+pub const LOOP_STEP: Code = "X5560";
+/// "i#.w has no meaning; it must simply be 0".
+pub const LOOP_W: Code = "X5996";
+
+// --- the validator: operands -------------------------------------------------
+/// "Invalid src mod for first source param" (`!` on a float source).
+pub const SOURCE_MODIFIER: Code = "X5364";
+/// "aL can only be referenced … inside a loop/endloop block, or … in a
+/// subroutine".
+pub const AL_OUTSIDE_LOOP: Code = "X5370";
+/// "First source parameter for texld* must be temp (r#), input (v#) or
+/// constant (c#) register".
+pub const TEXLD_COORDINATE: Code = "X5525";
+/// "Second source parameter for texld* must be sampler stage (s#)".
+pub const TEXLD_SAMPLER: Code = "X5528";
+/// "Source modifier not allowed on sampler (s#) parameter to texld*".
+pub const SAMPLER_SOURCE_MODIFIER: Code = "X5559";
+/// "Negate or abs modifiers not permitted on source parameters to texld*".
+pub const TEXLD_SOURCE_MODIFIER: Code = "X5561";
+/// "Invalid register type for destination param".
+pub const DESTINATION: Code = "X5578";
+/// "Dest writemask for SINCOS must be .xy, .x or .y".
+pub const SINCOS_MASK: Code = "X5580";
+/// "N different input registers (v*#) read by instruction".
+pub const INPUT_PORTS: Code = "X5583";
+/// "N different constant registers (c#) read by instruction".
+pub const CONST_PORTS: Code = "X5584";
+/// "Src and dest registers for NRM cannot be the same".
+pub const NRM_ALIAS: Code = "X5604";
+/// "rep instruction cannot be predicated" (and other flow control).
+pub const PREDICATED_FLOW: Code = "X5665";
+/// "Invalid reg type for first source param".
+pub const SOURCE_REGISTER: Code = "X5679";
+/// "Reg num … on matrix instruction causes attempt to access out of range
+/// register".
+pub const MATRIX_RANGE: Code = "X5684";
+/// "Cannot use negate or abs on second source parameter to vector*matrix".
+pub const MATRIX_MODIFIER: Code = "X5689";
+/// "The setp instruction must write to the predicate register".
+pub const SETP_DESTINATION: Code = "X5714";
+/// "Dest register for CRS cannot be the same as a source register".
+pub const CRS_ALIAS: Code = "X5761";
+/// "Swizzle not permitted on source paramters to CRS".
+pub const CRS_SWIZZLE: Code = "X5762";
+/// "Write mask for CRS must be one of …".
+pub const CRS_MASK: Code = "X5763";
+/// "Dest register for POW cannot be the same as second source register".
+pub const POW_ALIAS: Code = "X5764";
+/// "… requires replicate swizzle for source parameter(s)".
+pub const REPLICATE: Code = "X5793";
+/// "Predicate register (p0) parameter to if instruction must specify
+/// replicate swizzle".
+pub const PREDICATE_REPLICATE: Code = "X5949";
+/// "When predicate register is used as the condition for a callnz
+/// instruction, a replicate swizzle must be specified".
+pub const CALLNZ_REPLICATE: Code = "X5946";
+/// "source modifiers are not allowed on predicates".
+pub const PREDICATE_MODIFIER: Code = "X2019";
+/// "Cannot use negate or abs on source parameter(s) to if instruction".
+pub const IF_MODIFIER: Code = "X5690";
+/// "Source predicate p0 must use one of the following swizzles: .x | .y |
+/// .z | .w | .xyzw".
+pub const PREDICATE_SWIZZLE: Code = "X5667";
+/// "vFace register can only be used as one of the sources to if_(cond),
+/// break_(cond), setp_(cond), or the condition in a cmp".
+pub const VFACE_USE: Code = "X5692";
+/// "Third source parameter for dp2add must use a replicate swizzle".
+pub const DP2ADD_REPLICATE: Code = "X5961";
+/// "_sat not permitted on tex* instructions".
+pub const SAT_TEXTURE: Code = "X5911";
+/// "_sat not permitted with frc instruction".
+pub const SAT_FRC: Code = "X5912";
+/// "_sat not permitted with SINCOS instruction".
+pub const SAT_SINCOS: Code = "X6061";
+/// "callnz requires second source parameter … to be … b#, or predicate".
+pub const CALLNZ_CONDITION: Code = "X5916";
+/// "rep requires first parameter to be integer constant register (i#)".
+pub const REP_OPERAND: Code = "X5932";
+/// "M#x# instruction must use destination writemask".
+pub const MATRIX_MASK: Code = "X6014";
+/// "Dest register cannot be the same as first source register for m*x*".
+pub const MATRIX_ALIAS: Code = "X6015";
+/// "Dest register for m*x* … cannot be the same as one of the additional
+/// registers implied by the matrix".
+pub const MATRIX_ROWS_ALIAS: Code = "X6016";
+/// "When constant registers are read multiple times in a single
+/// instruction, the _abs modifier must either be on all or none".
+pub const ABS_MIXED_IN_INSTRUCTION: Code = "X6045";
+/// "texld/texldb/texldp/dsx/dsy instructions with r# as source cannot be
+/// used inside dynamic conditional 'if' blocks, dynamic conditional
+/// subroutine calls, or loop/rep with break*". ps30 reports it as a warning
+/// while measuring and running a shader, and as this error when it writes
+/// bytecode or under `--strict`.
+pub const GRADIENT_IN_FLOW: Code = "X6077";
+/// "Dest for SINCOS must be a temp (r#) register".
+pub const SINCOS_DESTINATION: Code = "X6075";
+
+// --- the validator: structure --------------------------------------------------
+/// "'endloop' instruction does not match up to an 'loop'".
+pub const ENDLOOP_MISMATCH: Code = "X5494";
+/// "'label' is only permitted directly after a 'ret' instruction".
+pub const LABEL_PLACE: Code = "X5813";
+/// "Subroutine label number: # already defined earlier".
+pub const LABEL_TWICE: Code = "X5821";
+/// "Cannot call subroutine label defined earlier in shader" (what a
+/// recursive call is refused with: calls must go forward).
+pub const CALL_BACKWARD: Code = "X5824";
+/// "Depth of loop nesting exceeds limit of 4".
+pub const LOOP_DEPTH: Code = "X5827";
+/// "'ret' instruction not permitted from inside any flow control block".
+pub const RET_IN_BLOCK: Code = "X5833";
+/// "'endrep' instruction does not match up to a 'rep'".
+pub const ENDREP_MISMATCH: Code = "X5837";
+/// "'endif' instruction does not match up to an 'if' or 'else'".
+pub const ENDIF_MISMATCH: Code = "X5840";
+/// "Depth of subroutine call nesting exceeds limit of 4".
+pub const CALL_DEPTH: Code = "X5851";
+/// "Depth of static 'if' nesting exceeds limit of 24".
+pub const STATIC_IF_DEPTH: Code = "X5856";
+/// "Depth of dynamic 'if' nesting exceeds limit of 24" for `if p0.c`.
+pub const PREDICATE_IF_DEPTH: Code = "X5854";
+/// "Depth of dynamic 'if' nesting exceeds limit of 24".
+pub const DYNAMIC_IF_DEPTH: Code = "X5858";
+/// "A 'ret' instruction must be followed by either (1) the end of the
+/// shader or (2) a 'label' instruction".
+pub const AFTER_RET: Code = "X5881";
+/// "Subroutine with label #N called, but never defined".
+pub const UNDEFINED_LABEL: Code = "X5884";
+/// "Subroutine label #N never referenced".
+pub const UNREFERENCED_LABEL: Code = "X5887";
+/// "End of shader reached without 'ret' to terminate subroutine".
+pub const SUBROUTINE_WITHOUT_RET: Code = "X5890";
+/// "'else' instruction does not match up to an 'if'".
+pub const ELSE_MISMATCH: Code = "X5895";
+/// "'else' already used for current 'if' construct".
+pub const ELSE_TWICE: Code = "X5896";
+/// "'break' instruction not within a local loop/rep construct".
+pub const BREAK_OUTSIDE: Code = "X5897";
+/// "End of shader reached and 'loop'/'rep' construct was not completed".
+pub const LOOP_UNCLOSED: Code = "X5905";
+/// "End of shader reached and 'if' construct was not completed".
+pub const IF_UNCLOSED: Code = "X5906";
