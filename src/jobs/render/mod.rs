@@ -177,15 +177,21 @@ impl Default for ListBudget {
     }
 }
 
+impl Step {
+    /// The index of the target the step clears, reduces or draws into.
+    pub fn target(&self) -> usize {
+        match self {
+            Step::Clear { target, .. } | Step::Mips { target, .. } => *target,
+            Step::Draw(d) => d.target,
+        }
+    }
+}
+
 /// The pixels a list's steps touch together ([`ListBudget::max_pixels`]),
 /// saturating.
 pub fn pixel_work(list: &DrawList) -> u64 {
     list.steps.iter().fold(0u64, |total, step| {
-        let target = match step {
-            Step::Clear { target, .. } | Step::Mips { target, .. } => *target,
-            Step::Draw(d) => d.target,
-        };
-        let t = &list.targets[target];
+        let t = &list.targets[step.target()];
         let mut pixels = u64::from(t.width) * u64::from(t.height);
         if let Step::Mips { .. } = step {
             // Every level below the first, each side halved (rounded up).
@@ -207,11 +213,7 @@ pub fn pixel_work(list: &DrawList) -> u64 {
 /// headers each.
 pub fn staged_bytes_every_step(list: &DrawList) -> u64 {
     list.steps.iter().fold(0u64, |total, step| {
-        let target = match step {
-            Step::Clear { target, .. } | Step::Mips { target, .. } => *target,
-            Step::Draw(d) => d.target,
-        };
-        let t = &list.targets[target];
+        let t = &list.targets[step.target()];
         let pixels = u64::from(t.width) * u64::from(t.height);
         let channels = t.format.channels() as u64;
         total.saturating_add(pixels * (4 * channels + 3) + 2 * 4096)
