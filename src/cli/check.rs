@@ -50,7 +50,10 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
     if args.json {
         let crc = crc32_of(&loaded, &args.source);
         let mut json = check_json(&loaded, &a, &found, crc);
-        json["constant_table"] = loaded.constants.as_ref().map_or(Value::Null, table_json);
+        json.insert(
+            "constant_table",
+            loaded.constants.as_ref().map_or(Value::Null, table_json),
+        );
         print_json(&json)?;
     } else if ui.quiet {
         say(ui, &check_text_short(name, &loaded.shader, &a))?;

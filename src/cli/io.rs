@@ -63,10 +63,25 @@ pub fn say(ui: &Ui, out: &str) -> std::io::Result<()> {
     print(&ui.highlight(out))
 }
 
-/// Prints a value as pretty JSON and a newline.
+/// Prints a value as pretty JSON and a newline, streamed: the text is
+/// written as it is made, never held whole (`check --json` of a long shader
+/// is tens of megabytes). A closed pipe drops the rest as [`print`] does.
 pub fn print_json(v: &impl serde::Serialize) -> Result<(), BadInput> {
-    print(&(serde_json::to_string_pretty(v)? + "\n"))?;
-    Ok(())
+    if STDOUT_GONE.load(Ordering::Relaxed) {
+        return Ok(());
+    }
+    let mut out = std::io::BufWriter::new(std::io::stdout().lock());
+    let written = serde_json::to_writer_pretty(&mut out, v)
+        .map_err(std::io::Error::from)
+        .and_then(|()| out.write_all(b"\n"))
+        .and_then(|()| out.flush());
+    match written {
+        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => {
+            STDOUT_GONE.store(true, Ordering::Relaxed);
+            Ok(())
+        }
+        other => Ok(other?),
+    }
 }
 
 /// Diagnostics to stderr, compiler-style, coloured as `ui` says: identical

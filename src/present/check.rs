@@ -2,12 +2,13 @@
 //! analysis and the JSON forms of both.
 
 use crate::core::audit;
-use crate::core::cost::{table_differences, Analysis, TableDifference, Verdict};
+use crate::core::cost::{table_differences, Analysis, LineCost, Range, TableDifference, Verdict};
 use crate::core::ir::Shader;
 use crate::core::isa::{SlotCount, SlotTable};
 use crate::core::load::Loaded;
 use crate::core::numbers::thousands;
 use crate::present::json;
+use serde::Serialize;
 use serde_json::{json, Value};
 
 /// The text breakdown of `ps30 check`.
@@ -202,15 +203,15 @@ pub fn diagnostics_json(loaded: &Loaded, found: &[audit::Finding]) -> Vec<Value>
 
 /// The JSON form of `ps30 check`. `crc32` is the CRC-32 of the shader's
 /// bytecode, when the caller has it (see the command's docs for which bytes).
-pub fn check_json(
+pub fn check_json<'a>(
     loaded: &Loaded,
-    a: &Analysis,
+    a: &'a Analysis,
     found: &[audit::Finding],
     crc32: Option<u32>,
-) -> Value {
+) -> CheckJson<'a> {
     let info = loaded.shader.info();
     let fxc = info.total(SlotTable::Fxc);
-    json!({
+    let head = json!({
         "shader": loaded.file.name,
         "crc32": crc32.map(crate::core::bytecode::crc32_hex),
         "limits": json::limits(&a.profile),
@@ -239,15 +240,54 @@ pub fn check_json(
             "own_cost_per_iteration": json::range(l.own_cost_per_iteration),
             "total": json::range(l.total),
         })).collect::<Vec<_>>(),
-        "lines": a.lines.iter().map(|l| json!({
-            "line": l.line,
-            "source": l.text,
-            "slots": l.slots,
-            "executions": json::range(l.executions),
-            "executed": json::range(l.executed),
-        })).collect::<Vec<_>>(),
         "diagnostics": diagnostics_json(loaded, found),
-    })
+    });
+    CheckJson {
+        head,
+        lines: Lines(&a.lines),
+    }
+}
+
+/// `check --json`: the analysis as one map, and beside it the per-line costs
+/// (one entry per source line: most of the output for a long shader),
+/// serialised straight from the analysis as they are written rather than
+/// built as a tree of values first.
+#[derive(Serialize)]
+pub struct CheckJson<'a> {
+    #[serde(flatten)]
+    head: Value,
+    lines: Lines<'a>,
+}
+
+impl CheckJson<'_> {
+    /// Adds a field beside the analysis (`constant_table`).
+    pub fn insert(&mut self, key: &str, value: Value) {
+        self.head[key] = value;
+    }
+}
+
+/// The per-line costs of `check --json`, each as
+/// `{line, source, slots, executions, executed}`.
+struct Lines<'a>(&'a [LineCost]);
+
+impl Serialize for Lines<'_> {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        #[derive(Serialize)]
+        struct Line<'a> {
+            line: usize,
+            source: &'a str,
+            slots: u64,
+            executions: Range,
+            executed: Range,
+        }
+        s.collect_seq(self.0.iter().map(|l| Line {
+            line: l.line,
+            source: &l.text,
+            slots: l.slots,
+            executions: l.executions,
+            executed: l.executed,
+        }))
+    }
 }
 
 /// The JSON form of `ps30 expand`.
