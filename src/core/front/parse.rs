@@ -68,6 +68,10 @@ pub fn parse(text: &str) -> (Vec<Stmt>, Diagnostics) {
         in_block = false;
         let code = strip_comment(raw);
         let code = code.trim();
+        if is_line_directive(raw.trim()) || is_line_directive(code) {
+            line_start += line.len();
+            continue;
+        }
         if let Some((at, c)) = code.char_indices().find(|&(_, c)| odd_char(c)) {
             let at = line_start + lead + at;
             diags.push(odd_char_error(c, Span::new(at, at + c.len_utf8()), at == 0));
@@ -267,6 +271,31 @@ fn macro_placeholder(code: &str, span: Span) -> Option<Stmt> {
     } else {
         None
     }
+}
+
+/// Whether a (trimmed) line is `#line N` or `#line N "FILE"`: Microsoft's
+/// listings of shaders compiled with debug information hold such lines, and
+/// its assembler's preprocessor takes them as a source position, which
+/// assembles to nothing.
+fn is_line_directive(line: &str) -> bool {
+    let Some(rest) = line.strip_prefix("#line") else {
+        return false;
+    };
+    let number = rest.trim_start();
+    if number.len() == rest.len() {
+        return false;
+    }
+    let digits = number.len()
+        - number
+            .trim_start_matches(|c: char| c.is_ascii_digit())
+            .len();
+    let file = number[digits..].trim();
+    digits > 0
+        && (file.is_empty()
+            || (file.len() >= 2
+                && file.starts_with('"')
+                && file.ends_with('"')
+                && !file[1..file.len() - 1].contains('"')))
 }
 
 /// The code part of a line: everything before `//` or `;`.
@@ -847,6 +876,16 @@ mod tests {
         assert!(!diags.has_errors(), "{:?}", diags);
         assert_eq!(stmts.len(), 1);
         stmts.into_iter().next().unwrap()
+    }
+
+    #[test]
+    fn line_directives_assemble_to_nothing() {
+        let (stmts, diags) = parse("ps_3_0\n\n#line 17 \"C:\\a b;c.hlsl\"\n#line 3\nnop\n");
+        assert!(!diags.has_errors(), "{diags:?}");
+        assert_eq!(stmts.len(), 2);
+        for bad in ["#line", "#line x", "#line 3 \"a", "#line3", "#line 3 a"] {
+            assert!(!is_line_directive(bad), "{bad}");
+        }
     }
 
     #[test]
