@@ -187,7 +187,7 @@ pub struct CtabError {
 
 type R<T> = Result<T, CtabError>;
 
-fn err<T>(offset: usize, message: impl Into<String>) -> R<T> {
+pub(super) fn err<T>(offset: usize, message: impl Into<String>) -> R<T> {
     Err(CtabError {
         offset,
         message: message.into(),
@@ -197,11 +197,7 @@ fn err<T>(offset: usize, message: impl Into<String>) -> R<T> {
 /// Decodes a table: the comment body after its `CTAB` token.
 pub fn decode(table: &[u32]) -> R<ConstantTable> {
     let bytes: Vec<u8> = table.iter().flat_map(|t| t.to_le_bytes()).collect();
-    let mut d = Decoder {
-        bytes: &bytes,
-        work: 0,
-        budget: WORK_FACTOR * bytes.len(),
-    };
+    let mut d = Decoder::new(&bytes);
     let size = d.dword(0, "the header")?;
     if size != 28 {
         return err(0, format!("the header says it is {size} bytes; it is 28"));
@@ -231,15 +227,26 @@ pub fn decode(table: &[u32]) -> R<ConstantTable> {
     })
 }
 
-struct Decoder<'a> {
-    bytes: &'a [u8],
+/// Bounds-checked reads from a table of bytes, with a budget on the bytes
+/// decoded in all; shared with the debug-information decoder.
+pub(super) struct Decoder<'a> {
+    pub(super) bytes: &'a [u8],
     /// Bytes decoded so far, against `budget`.
     work: usize,
     budget: usize,
 }
 
-impl Decoder<'_> {
-    fn spend(&mut self, n: usize, at: usize) -> R<()> {
+impl<'a> Decoder<'a> {
+    /// A decoder over `bytes`, allowed [`WORK_FACTOR`] times their length.
+    pub(super) fn new(bytes: &'a [u8]) -> Decoder<'a> {
+        Decoder {
+            bytes,
+            work: 0,
+            budget: WORK_FACTOR * bytes.len(),
+        }
+    }
+
+    pub(super) fn spend(&mut self, n: usize, at: usize) -> R<()> {
         self.work = self.work.saturating_add(n);
         if self.work > self.budget {
             return err(
@@ -253,7 +260,7 @@ impl Decoder<'_> {
         Ok(())
     }
 
-    fn dword(&self, at: usize, what: &str) -> R<u32> {
+    pub(super) fn dword(&self, at: usize, what: &str) -> R<u32> {
         match self.bytes.get(at..at.saturating_add(4)) {
             Some(b) => Ok(u32::from_le_bytes([b[0], b[1], b[2], b[3]])),
             None => err(
@@ -266,7 +273,7 @@ impl Decoder<'_> {
         }
     }
 
-    fn word(&self, at: usize, what: &str) -> R<u16> {
+    pub(super) fn word(&self, at: usize, what: &str) -> R<u16> {
         match self.bytes.get(at..at.saturating_add(2)) {
             Some(b) => Ok(u16::from_le_bytes([b[0], b[1]])),
             None => err(
@@ -280,7 +287,7 @@ impl Decoder<'_> {
     }
 
     /// The string whose offset is the dword at `at`.
-    fn string_at(&mut self, at: usize, what: &str) -> R<String> {
+    pub(super) fn string_at(&mut self, at: usize, what: &str) -> R<String> {
         let offset = self.dword(at, what)? as usize;
         if offset == 0 {
             // D3DX reads offset 0 as no string.

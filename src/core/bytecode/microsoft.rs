@@ -9,6 +9,12 @@
 //! * the constant table, if the shader has one, as
 //!   [`ctab::listing_header`] writes it; every other comment block is left
 //!   out;
+//! * with a debug-information block ([`dbug`], shaders compiled with
+//!   `D3DCOMPILE_DEBUG`), a blank line and `#line N "FILE"` before an
+//!   instruction whose source file differs from the previous one's,
+//!   `#line N` alone where the line moves by more than 2, and
+//!   `  // name<i,j>` after an instruction (or `dcl`) that writes a
+//!   variable: the variable components its destination's x, y, z, w hold;
 //! * `    ps_3_0`, then one instruction per line, indented 4 spaces plus 2
 //!   per open `if`/`rep`/`loop`/`else` (`else`, `endif`, `endrep` and
 //!   `endloop` close one first; `label` and `ret` change nothing);
@@ -33,11 +39,13 @@
 //! returns holds one more byte, a NUL terminating the C string, which is
 //! not part of the listing and is not printed.
 
+use super::dbug::{self, SourceLine};
 use super::{
     ctab, modifier_code, Dest, Extra, Instr, ItemKind, Module, Source, CENTROID, CTAB, PP, SAT,
 };
 use crate::core::ir::{SrcMod, Swizzle, WriteMask};
 use crate::core::isa::{Opcode, RegFile, USAGES};
+use std::collections::HashMap;
 use std::fmt::Write;
 
 /// Microsoft's listing of a module.
@@ -53,19 +61,23 @@ pub fn listing(module: &Module) -> String {
         })
         .unwrap_or_default();
     out.push_str("    ps_3_0\n");
+    let mut debug = Debug::of(module);
     let mut depth = 0usize;
-    for item in &module.items {
-        let ItemKind::Instr(ins) = &item.kind else {
-            continue;
-        };
+    let instrs = module.items.iter().filter_map(|i| match &i.kind {
+        ItemKind::Instr(ins) => Some((i.token, ins)),
+        ItemKind::Comment(_) => None,
+    });
+    for (index, (token, ins)) in instrs.enumerate() {
         if matches!(
             ins.op,
             Opcode::EndRep | Opcode::EndLoop | Opcode::EndIf | Opcode::Else
         ) {
             depth = depth.saturating_sub(1);
         }
+        debug.line_directive(&mut out, token.wrapping_mul(4));
         out.push_str(&" ".repeat(4 + 2 * depth));
         out.push_str(&instruction(ins));
+        out.push_str(debug.note(index));
         out.push('\n');
         if ins.op.opens_block() || ins.op == Opcode::Else {
             depth += 1;
@@ -83,6 +95,67 @@ pub fn listing(module: &Module) -> String {
     }
     out.push('\n');
     out
+}
+
+/// What the listing takes from a debug-information block ([`dbug`]): the
+/// source line of each instruction, the variable notes, and the last
+/// `#line` position written.
+#[derive(Default)]
+struct Debug {
+    lines: HashMap<u32, SourceLine>,
+    notes: HashMap<u32, String>,
+    names: Vec<String>,
+    file: Option<u16>,
+    line: u16,
+}
+
+impl Debug {
+    /// The first `DBUG` block's contents; nothing if there is none or it
+    /// does not decode (Microsoft's disassembler would follow its bad
+    /// offsets; ps30 writes the listing without it).
+    fn of(module: &Module) -> Debug {
+        let info = module.items.iter().find_map(|i| match &i.kind {
+            ItemKind::Comment(body) if body.first() == Some(&dbug::DBUG) => Some(body),
+            _ => None,
+        });
+        match info.and_then(|body| dbug::decode(&body[1..]).ok()) {
+            Some(info) => Debug {
+                lines: info.lines_by_offset(),
+                notes: info.notes(),
+                names: info.files,
+                file: None,
+                line: 0,
+            },
+            None => Debug::default(),
+        }
+    }
+
+    /// Writes `#line` before the instruction at byte `offset`, after a
+    /// blank line, as `D3DDisassemble` does: with the file's name when the
+    /// file changes (nothing for a file the table does not name), with the number alone when the line moves by more than
+    /// 2 from the previous instruction's that had one.
+    fn line_directive(&mut self, out: &mut String, offset: u32) {
+        let Some(at) = self.lines.get(&offset) else {
+            return;
+        };
+        if self.file != Some(at.file) {
+            if let Some(name) = self.names.get(usize::from(at.file)) {
+                let _ = writeln!(out, "\n#line {} \"{name}\"", at.line);
+            }
+        } else if at.line.abs_diff(self.line) > 2 {
+            let _ = writeln!(out, "\n#line {}", at.line);
+        }
+        self.file = Some(at.file);
+        self.line = at.line;
+    }
+
+    /// The notes after instruction number `index`, or nothing.
+    fn note(&self, index: usize) -> &str {
+        u32::try_from(index)
+            .ok()
+            .and_then(|i| self.notes.get(&i))
+            .map_or("", String::as_str)
+    }
 }
 
 /// The listing's slot count as (texture, arithmetic).

@@ -57,6 +57,7 @@
 //! * **end**: `0x0000FFFF`, last.
 
 pub mod ctab;
+pub mod dbug;
 pub mod listing;
 pub mod microsoft;
 pub mod read;

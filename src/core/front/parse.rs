@@ -64,11 +64,9 @@ pub fn parse(text: &str) -> (Vec<Stmt>, Diagnostics) {
         let code = strip_comment(raw);
         let code = code.trim();
         // `#line N "file"` only renames places for Microsoft's
-        // preprocessor, which reads it: nothing to assemble.
-        let code = if code
-            .strip_prefix("#line")
-            .is_some_and(|r| r.starts_with([' ', '\t']))
-        {
+        // preprocessor, which reads it: nothing to assemble (the file name
+        // may hold `;`, a comment elsewhere, so the raw line is read too).
+        let code = if is_line_directive(raw.trim()) || is_line_directive(code) {
             ""
         } else {
             code
@@ -354,6 +352,31 @@ fn macro_placeholder(code: &str, span: Span) -> Option<Stmt> {
     } else {
         None
     }
+}
+
+/// Whether a (trimmed) line is `#line N` or `#line N "FILE"`: Microsoft's
+/// listings of shaders compiled with debug information hold such lines, and
+/// its assembler's preprocessor takes them as a source position, which
+/// assembles to nothing.
+fn is_line_directive(line: &str) -> bool {
+    let Some(rest) = line.strip_prefix("#line") else {
+        return false;
+    };
+    let number = rest.trim_start();
+    if number.len() == rest.len() {
+        return false;
+    }
+    let digits = number.len()
+        - number
+            .trim_start_matches(|c: char| c.is_ascii_digit())
+            .len();
+    let file = number[digits..].trim();
+    digits > 0
+        && (file.is_empty()
+            || (file.len() >= 2
+                && file.starts_with('"')
+                && file.ends_with('"')
+                && !file[1..file.len() - 1].contains('"')))
 }
 
 /// The code part of a line: everything before `//` or `;`.
@@ -1043,6 +1066,16 @@ mod tests {
         assert!(!diags.has_errors(), "{:?}", diags);
         assert_eq!(stmts.len(), 1);
         stmts.into_iter().next().unwrap()
+    }
+
+    #[test]
+    fn line_directives_assemble_to_nothing() {
+        let (stmts, diags) = parse("ps_3_0\n\n#line 17 \"C:\\a b;c.hlsl\"\n#line 3\nnop\n");
+        assert!(!diags.has_errors(), "{diags:?}");
+        assert_eq!(stmts.len(), 2);
+        for bad in ["#line", "#line x", "#line 3 \"a", "#line3", "#line 3 a"] {
+            assert!(!is_line_directive(bad), "{bad}");
+        }
     }
 
     #[test]
