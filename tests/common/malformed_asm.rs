@@ -64,7 +64,7 @@ pub const CASES: &[(&str, &str, usize, usize)] = &[
     ("ps_3_0\nmov r0, r1.", "expected swizzle or write-mask letters", 2, 12),
     ("ps_3_0\nmov r0.yx, r1", "write mask `.yx` is not in x, y, z, w order", 2, 8),
     ("ps_3_0\nmov r0.xx, r1", "write mask `.xx` is not in x, y, z, w order", 2, 8),
-    ("ps_3_0\nmov oDepth.x, r0.x", "oDepth takes no write mask", 2, 5),
+    ("ps_3_0\nmov oDepth.x, r0.x", "`oDepth` is a scalar register: it takes no write mask", 2, 12),
     // --- replicate swizzles ----------------------------------------------------
     ("ps_3_0\nrcp r0, r1.xy", "`rcp` needs a replicate swizzle", 2, 9),
     ("ps_3_0\nlog r0, r1", "`log` needs a replicate swizzle", 2, 9),

@@ -34,10 +34,14 @@ pub const SWIZZLE: Code = "X2004";
 /// "invalid register": an unknown name, a number out of range, a register
 /// that cannot be indexed, an unknown source modifier.
 pub const REGISTER: Code = "X2005";
-/// "scalar registers cannot be masked / swizzled" (oDepth, vFace, aL).
+/// "scalar registers cannot be masked / swizzled" (oDepth, vFace, aL, b#),
+/// found by the grammar before any rule about where a register may go.
 pub const SCALAR: Code = "X2022";
 /// "instruction coissue is not supported in this shader version".
 pub const COISSUE: Code = "X2027";
+/// "source modifiers incompatible with SUB instruction" (`!` on the
+/// source that sub negates).
+pub const SUB_MODIFIER: Code = "X2013";
 /// "complement is not supported in this shader version" (`1-r0`).
 pub const COMPLEMENT: Code = "X2029";
 
@@ -122,6 +126,21 @@ pub const SAMPLER_SOURCE_MODIFIER: Code = "X5559";
 pub const TEXLD_SOURCE_MODIFIER: Code = "X5561";
 /// "Invalid register type for destination param".
 pub const DESTINATION: Code = "X5578";
+/// "The only instruction allowed to write to the predicate register is
+/// setp".
+pub const PREDICATE_WRITE: Code = "X5373";
+/// "oDepth may not be written by the texkill instruction".
+pub const TEXKILL_DEPTH: Code = "X5758";
+/// "Third and fourth parameters to texldd must be temp (r#), input (v#) or
+/// constant (c#) register".
+pub const TEXLDD_GRADIENT: Code = "X5526";
+/// "loop requires first parameter to be loop counter (aL)".
+pub const LOOP_COUNTER: Code = "X5514";
+/// "if requires parameter (the branch condition) to be boolean constant
+/// register (b#), or predicate register (p0)".
+pub const IF_CONDITION: Code = "X5917";
+/// "breakp requires parameter to be predicate register (p0)".
+pub const BREAKP_CONDITION: Code = "X5930";
 /// "Dest writemask for SINCOS must be .xy, .x or .y".
 pub const SINCOS_MASK: Code = "X5580";
 /// "N different input registers (v*#) read by instruction".

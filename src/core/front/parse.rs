@@ -854,7 +854,7 @@ impl<'a> Cursor<'a> {
         } else {
             None
         };
-        let mut abs = self.eat_abs()?;
+        let mut abs = self.eat_abs(codes::REGISTER)?;
         let components = if self.eat(char('.')).is_some() {
             let cstart = self.pos();
             let Some(letters) = self.eat(take_while1(|c: char| c.is_ascii_alphabetic())) else {
@@ -870,7 +870,12 @@ impl<'a> Cursor<'a> {
             None
         };
         if !abs {
-            abs = self.eat_abs()?;
+            let code = if components.is_some() {
+                codes::SWIZZLE
+            } else {
+                codes::REGISTER
+            };
+            abs = self.eat_abs(code)?;
         }
         if self.rest.starts_with(|c: char| c.is_ascii_alphanumeric()) {
             return Err(self.error_here(format!(
@@ -891,8 +896,12 @@ impl<'a> Cursor<'a> {
         })
     }
 
-    /// An optional `_abs`; any other `_suffix` on a source is an error.
-    fn eat_abs(&mut self) -> Result<bool, Diagnostic> {
+    /// An optional `_abs`; any other `_suffix` on a source is an error:
+    /// Microsoft's assembler reads a suffix written after the components as
+    /// part of the swizzle (`r0.x_bias` is the swizzle `x_bias`, `code` is
+    /// then [`codes::SWIZZLE`]) and one written before them as part of the
+    /// register name ([`codes::REGISTER`]).
+    fn eat_abs(&mut self, code: codes::Code) -> Result<bool, Diagnostic> {
         if !self.rest.starts_with('_') {
             return Ok(false);
         }
@@ -904,7 +913,7 @@ impl<'a> Cursor<'a> {
             return Ok(true);
         }
         Err(Diagnostic::coded(
-            codes::REGISTER,
+            code,
             self.span_from(sstart),
             format!("source modifier `{word}` does not exist in ps_3_0"),
         )

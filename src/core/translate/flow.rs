@@ -66,7 +66,7 @@ impl Run {
 
     /// Before the run's next instruction: opens a new chunk where one starts.
     fn next(&mut self, fb: &mut Fb) {
-        if self.count >= Self::CHUNK && self.count % Self::CHUNK == 0 {
+        if self.count >= Self::CHUNK && self.count.is_multiple_of(Self::CHUNK) {
             self.close(fb);
             fb.open();
             self.open = true;

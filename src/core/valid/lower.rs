@@ -138,6 +138,7 @@ fn lower_instruction(ast: &InstrAst) -> R<Instruction> {
     check_modifiers(ast, info, &m)?;
     let predicate = instruction_predicate(ast, info)?;
     check_operand_count(ast, info)?;
+    grammar_of_operands(ast, info)?;
     let (dst, src) = operands(ast, info)?;
     texture_sources(op, &src, ast)?;
     operand_rules(op, dst.as_ref(), &src, ast)?;
@@ -326,6 +327,45 @@ fn check_operand_count(ast: &InstrAst, info: &OpInfo) -> R<()> {
     Ok(())
 }
 
+/// What Microsoft's assembler refuses while it reads the operands, before
+/// its validator asks where each register may go: an unknown register, and
+/// components on a scalar register (aL, b#, oDepth, vFace; a write mask on
+/// a destination, a swizzle on a source or on the index aL).
+fn grammar_of_operands(ast: &InstrAst, info: &OpInfo) -> R<()> {
+    for (kind, operand) in info.operands.iter().zip(&ast.operands) {
+        let OperandAst::Reg(r) = operand else {
+            continue;
+        };
+        let reg = resolve_reg(r)?;
+        let scalar = matches!(
+            reg.file,
+            RegFile::LoopCounter | RegFile::ConstBool | RegFile::DepthOut | RegFile::Face
+        );
+        if let (true, Some((_, span))) = (scalar, &r.components) {
+            let what = match kind {
+                Operand::Dst | Operand::KillSrc | Operand::PredDst => "write mask",
+                _ => "swizzle",
+            };
+            return Err(Diagnostic::coded(
+                codes::SCALAR,
+                *span,
+                format!("`{reg}` is a scalar register: it takes no {what}"),
+            )
+            .with_label(format!("remove the {what}")));
+        }
+        let index = r.relative.as_ref().filter(|rel| rel.index_reg == "aL");
+        if let Some(span) = index.and_then(|rel| rel.index_swizzle) {
+            return Err(Diagnostic::coded(
+                codes::SCALAR,
+                span,
+                "aL is a scalar register: no swizzle",
+            )
+            .with_label("remove the swizzle"));
+        }
+    }
+    Ok(())
+}
+
 /// Each operand resolved as its place in the shape requires: the
 /// destination (if any) and the sources in order.
 fn operands(ast: &InstrAst, info: &OpInfo) -> R<(Option<Dst>, Vec<Src>)> {
@@ -351,12 +391,8 @@ fn operands(ast: &InstrAst, info: &OpInfo) -> R<(Option<Dst>, Vec<Src>)> {
             Operand::Dst | Operand::KillSrc => dst = Some(destination(reg, *kind)?),
             Operand::PredDst => dst = Some(predicate_destination(reg)?),
             Operand::Src | Operand::ScalarSrc => {
-                // The texld family's coordinate has its own code.
-                let texture = info.class == Class::Texture && pos == 1;
-                let s = float_source(reg).map_err(|d| match d.code {
-                    Some(codes::SOURCE_REGISTER) if texture => d.with_code(codes::TEXLD_COORDINATE),
-                    _ => d,
-                })?;
+                texture_operand(reg, pos, info)?;
+                let s = float_source(reg).map_err(|d| source_code(d, pos, info))?;
                 // vFace is a scalar register (dimension 1 in Microsoft's
                 // ps_3_0 register table, and the operand of if_comp and
                 // break_comp its page names): it needs no swizzle to be one.
@@ -385,9 +421,10 @@ fn operands(ast: &InstrAst, info: &OpInfo) -> R<(Option<Dst>, Vec<Src>)> {
                 plain_of(reg, RegFile::ConstInt, "an integer constant i#")
                     .map_err(|d| d.or_code(codes::REP_OPERAND))?,
             ),
-            Operand::LoopCounter => {
-                src.push(plain_of(reg, RegFile::LoopCounter, "the loop counter aL")?)
-            }
+            Operand::LoopCounter => src.push(
+                plain_of(reg, RegFile::LoopCounter, "the loop counter aL")
+                    .map_err(|d| d.or_code(codes::LOOP_COUNTER))?,
+            ),
             Operand::Label => src.push(plain_of(reg, RegFile::Label, "a label l#")?),
             Operand::Condition => src.push(condition(reg).map_err(|d| condition_code(d, info))?),
             Operand::FloatLits | Operand::IntLits | Operand::BoolLit => {
@@ -398,6 +435,40 @@ fn operands(ast: &InstrAst, info: &OpInfo) -> R<(Option<Dst>, Vec<Src>)> {
     Ok((dst, src))
 }
 
+/// The texld family reads its coordinate (operand 1) and texldd its
+/// gradients (operands 3 and 4) from r#, v# or c# only; Microsoft checks
+/// that before any other rule on them (vPos and vFace included).
+fn texture_operand(reg: &RegAst, pos: usize, info: &OpInfo) -> R<()> {
+    let code = match (info.class, pos, info.mnemonic) {
+        (Class::Texture, 1, _) => codes::TEXLD_COORDINATE,
+        (Class::Texture, 3 | 4, "texldd") => codes::TEXLDD_GRADIENT,
+        _ => return Ok(()),
+    };
+    let r = resolve_reg(reg)?;
+    if matches!(r.file, RegFile::Temp | RegFile::Input | RegFile::Const) {
+        return Ok(());
+    }
+    Err(Diagnostic::coded(
+        code,
+        reg.name_span,
+        format!("`{}` cannot read `{r}` here", info.mnemonic),
+    )
+    .with_label("expected r#, v# or c#"))
+}
+
+/// Microsoft's code for a bad float source of some instructions: `!` on a
+/// texld source is its texld rule, `!` on the source that sub negates is
+/// refused by the assembler itself.
+fn source_code(d: Diagnostic, pos: usize, info: &OpInfo) -> Diagnostic {
+    match (d.code, info.class, info.mnemonic, pos) {
+        (Some(codes::SOURCE_MODIFIER), Class::Texture, ..) => {
+            d.with_code(codes::TEXLD_SOURCE_MODIFIER)
+        }
+        (Some(codes::SOURCE_MODIFIER), _, "sub", 2) => d.with_code(codes::SUB_MODIFIER),
+        _ => d,
+    }
+}
+
 /// Microsoft's code for a bad condition depends on the instruction: a
 /// predicate without a replicate swizzle is X5949 for `if`, X5793 for
 /// `breakp`, X5946 for `callnz`; a modifier on it is X5690 for `if`.
@@ -406,6 +477,8 @@ fn condition_code(d: Diagnostic, info: &OpInfo) -> Diagnostic {
         (Some(codes::PREDICATE_REPLICATE), "breakp") => codes::REPLICATE,
         (Some(codes::PREDICATE_REPLICATE), "callnz") => codes::CALLNZ_REPLICATE,
         (Some(codes::PREDICATE_MODIFIER), "if") => codes::IF_MODIFIER,
+        (Some(codes::CALLNZ_CONDITION), "if") => codes::IF_CONDITION,
+        (Some(codes::CALLNZ_CONDITION), "breakp") => codes::BREAKP_CONDITION,
         _ => return d,
     };
     d.with_code(code)
@@ -849,6 +922,14 @@ fn no_modifiers(r: &RegAst, what: &str) -> R<()> {
 fn destination(r: &RegAst, kind: Operand) -> R<Dst> {
     let reg = resolve_reg(r)?;
     if kind == Operand::KillSrc {
+        if reg.file == RegFile::DepthOut {
+            return Err(Diagnostic::coded(
+                codes::TEXKILL_DEPTH,
+                r.span,
+                "texkill takes a temporary r# or an input v#, not oDepth",
+            )
+            .with_label("expected r# or v#"));
+        }
         if !matches!(reg.file, RegFile::Temp | RegFile::Input) {
             return Err(Diagnostic::coded(
                 codes::DESTINATION,
@@ -857,7 +938,14 @@ fn destination(r: &RegAst, kind: Operand) -> R<Dst> {
             )
             .with_label("expected r# or v#"));
         }
-    } else if !reg.file.info().writable || reg.file == RegFile::Predicate {
+    } else if reg.file == RegFile::Predicate {
+        return Err(Diagnostic::coded(
+            codes::PREDICATE_WRITE,
+            r.name_span,
+            "only setp writes the predicate register p0",
+        )
+        .with_label("not a destination here"));
+    } else if !reg.file.info().writable {
         return Err(Diagnostic::coded(
             codes::DESTINATION,
             r.name_span,
@@ -867,14 +955,10 @@ fn destination(r: &RegAst, kind: Operand) -> R<Dst> {
         .with_help("destinations are r#, oC# and oDepth (and p0 for setp)"));
     }
     no_modifiers(r, "a destination")?;
-    let mask = write_mask(r)?;
-    if reg.file == RegFile::DepthOut && r.components.is_some() {
-        return Err(
-            Diagnostic::coded(codes::SCALAR, r.span, "oDepth takes no write mask")
-                .with_label("remove the mask"),
-        );
-    }
-    Ok(Dst { reg, mask })
+    Ok(Dst {
+        reg,
+        mask: write_mask(r)?,
+    })
 }
 
 fn source_modifier(r: &RegAst) -> SrcMod {
