@@ -37,6 +37,11 @@ pub const REGISTER: Code = "X2005";
 /// "scalar registers cannot be masked / swizzled" (oDepth, vFace, aL, b#),
 /// found by the grammar before any rule about where a register may go.
 pub const SCALAR: Code = "X2022";
+/// "relative addressing of destination parameters is not supported in
+/// this shader version".
+pub const DESTINATION_RELATIVE: Code = "X2008";
+/// "source modifiers are not allowed on destination parameters".
+pub const DESTINATION_MODIFIER: Code = "X2014";
 /// "instruction coissue is not supported in this shader version".
 pub const COISSUE: Code = "X2027";
 /// "source modifiers incompatible with SUB instruction" (`!` on the
@@ -78,6 +83,9 @@ pub const VPOS_MASK: Code = "X5631";
 pub const DEF_TOO_LATE: Code = "X5729";
 /// "Destination for defi instruction must be i# register".
 pub const DEFI_DESTINATION: Code = "X5732";
+/// "Destination for defb instruction must be b# register … there may be no
+/// mask".
+pub const DEFB_DESTINATION: Code = "X6011";
 /// "Sampler s# already declared".
 pub const SAMPLER_TWICE: Code = "X5769";
 /// "dcl s# must not specify a writemask".
@@ -192,6 +200,8 @@ pub const DP2ADD_REPLICATE: Code = "X5961";
 pub const SAT_TEXTURE: Code = "X5911";
 /// "_sat not permitted with frc instruction".
 pub const SAT_FRC: Code = "X5912";
+/// "_sat not permitted with setp instruction".
+pub const SAT_SETP: Code = "X6066";
 /// "_sat not permitted with SINCOS instruction".
 pub const SAT_SINCOS: Code = "X6061";
 /// "callnz requires second source parameter … to be … b#, or predicate".

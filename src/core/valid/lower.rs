@@ -237,6 +237,7 @@ fn check_modifiers(ast: &InstrAst, info: &OpInfo, m: &Suffixes) -> R<()> {
             Class::Texture => codes::SAT_TEXTURE,
             _ if info.mnemonic == "frc" => codes::SAT_FRC,
             _ if info.mnemonic == "sincos" => codes::SAT_SINCOS,
+            _ if info.mnemonic == "setp" => codes::SAT_SETP,
             _ => codes::SYNTAX,
         };
         return Err(Diagnostic::coded(
@@ -328,15 +329,36 @@ fn check_operand_count(ast: &InstrAst, info: &OpInfo) -> R<()> {
 }
 
 /// What Microsoft's assembler refuses while it reads the operands, before
-/// its validator asks where each register may go: an unknown register, and
-/// components on a scalar register (aL, b#, oDepth, vFace; a write mask on
-/// a destination, a swizzle on a source or on the index aL).
+/// its validator asks where each register may go: an unknown register, an
+/// index on a register other than v# (`c[aL]` is the invalid register
+/// `c[...]`), and components on a scalar register (aL, b#, oDepth, vFace; a
+/// write mask on a destination, a swizzle on a source or on the index aL).
 fn grammar_of_operands(ast: &InstrAst, info: &OpInfo) -> R<()> {
     for (kind, operand) in info.operands.iter().zip(&ast.operands) {
         let OperandAst::Reg(r) = operand else {
             continue;
         };
         let reg = resolve_reg(r)?;
+        let index = r.relative.as_ref().filter(|rel| rel.index_reg == "aL");
+        if let Some(span) = index.and_then(|rel| rel.index_swizzle) {
+            return Err(Diagnostic::coded(
+                codes::SCALAR,
+                span,
+                "aL is a scalar register: no swizzle",
+            )
+            .with_label("remove the swizzle"));
+        }
+        if let (Some(rel), false) = (&r.relative, reg.file == RegFile::Input) {
+            return Err(Diagnostic::coded(
+                codes::REGISTER,
+                rel.span,
+                format!(
+                    "`{}` registers cannot be relatively addressed in ps_3_0",
+                    reg.file.info().name
+                ),
+            )
+            .with_label("only v[aL + n] is indexable"));
+        }
         let scalar = matches!(
             reg.file,
             RegFile::LoopCounter | RegFile::ConstBool | RegFile::DepthOut | RegFile::Face
@@ -352,15 +374,6 @@ fn grammar_of_operands(ast: &InstrAst, info: &OpInfo) -> R<()> {
                 format!("`{reg}` is a scalar register: it takes no {what}"),
             )
             .with_label(format!("remove the {what}")));
-        }
-        let index = r.relative.as_ref().filter(|rel| rel.index_reg == "aL");
-        if let Some(span) = index.and_then(|rel| rel.index_swizzle) {
-            return Err(Diagnostic::coded(
-                codes::SCALAR,
-                span,
-                "aL is a scalar register: no swizzle",
-            )
-            .with_label("remove the swizzle"));
         }
     }
     Ok(())
@@ -921,6 +934,14 @@ fn no_modifiers(r: &RegAst, what: &str) -> R<()> {
 
 fn destination(r: &RegAst, kind: Operand) -> R<Dst> {
     let reg = resolve_reg(r)?;
+    if reg.file == RegFile::Predicate {
+        return Err(Diagnostic::coded(
+            codes::PREDICATE_WRITE,
+            r.name_span,
+            "only setp writes the predicate register p0",
+        )
+        .with_label("not a destination here"));
+    }
     if kind == Operand::KillSrc {
         if reg.file == RegFile::DepthOut {
             return Err(Diagnostic::coded(
@@ -938,13 +959,6 @@ fn destination(r: &RegAst, kind: Operand) -> R<Dst> {
             )
             .with_label("expected r# or v#"));
         }
-    } else if reg.file == RegFile::Predicate {
-        return Err(Diagnostic::coded(
-            codes::PREDICATE_WRITE,
-            r.name_span,
-            "only setp writes the predicate register p0",
-        )
-        .with_label("not a destination here"));
     } else if !reg.file.info().writable {
         return Err(Diagnostic::coded(
             codes::DESTINATION,
@@ -954,7 +968,29 @@ fn destination(r: &RegAst, kind: Operand) -> R<Dst> {
         .with_label("not a destination")
         .with_help("destinations are r#, oC# and oDepth (and p0 for setp)"));
     }
-    no_modifiers(r, "a destination")?;
+    // Microsoft's assembler refuses these itself (texkill's operand is a
+    // destination in the token stream): `-` or `!` before it as a syntax
+    // error, `_abs` after it with its own code.
+    if r.negate || r.not {
+        return Err(Diagnostic::error(r.span, "a destination takes no modifier")
+            .with_label("remove the modifier"));
+    }
+    if r.abs {
+        return Err(Diagnostic::coded(
+            codes::DESTINATION_MODIFIER,
+            r.span,
+            "a destination takes no modifier",
+        )
+        .with_label("remove the modifier"));
+    }
+    if let Some(rel) = &r.relative {
+        return Err(Diagnostic::coded(
+            codes::DESTINATION_RELATIVE,
+            rel.span,
+            "a destination cannot be relatively addressed",
+        )
+        .with_label("only sources v[aL + n] may be indexed"));
+    }
     Ok(Dst {
         reg,
         mask: write_mask(r)?,
@@ -1005,17 +1041,6 @@ fn float_source(r: &RegAst) -> R<Src> {
     let relative = match &r.relative {
         None => false,
         Some(rel) => {
-            if reg.file != RegFile::Input {
-                return Err(Diagnostic::coded(
-                    codes::REGISTER,
-                    rel.span,
-                    format!(
-                        "`{}` registers cannot be relatively addressed in ps_3_0",
-                        reg.file.info().name
-                    ),
-                )
-                .with_label("only v[aL + n] is indexable"));
-            }
             if rel.index_reg != "aL" {
                 let d = Diagnostic::coded(
                     codes::REGISTER,
@@ -1426,12 +1451,12 @@ fn lower_def(ast: &InstrAst) -> R<Lowered> {
         ));
     };
     let reg = resolve_reg(r)?;
+    let code = match file {
+        RegFile::Const => codes::DEF_DESTINATION,
+        RegFile::ConstInt => codes::DEFI_DESTINATION,
+        _ => codes::DEFB_DESTINATION,
+    };
     if reg.file != file {
-        let code = match file {
-            RegFile::Const => codes::DEF_DESTINATION,
-            RegFile::ConstInt => codes::DEFI_DESTINATION,
-            _ => codes::SYNTAX,
-        };
         return Err(Diagnostic::coded(
             code,
             r.span,
@@ -1443,7 +1468,7 @@ fn lower_def(ast: &InstrAst) -> R<Lowered> {
     no_modifiers(r, "a defined register")?;
     if r.components.is_some() {
         return Err(Diagnostic::coded(
-            codes::DEF_DESTINATION,
+            code,
             r.span,
             "definitions write the whole register: no mask",
         )
@@ -1474,8 +1499,10 @@ fn lower_def(ast: &InstrAst) -> R<Lowered> {
                             return Err(Diagnostic::error(*span, "defi takes integers")
                                 .with_label("not an integer"));
                         }
+                        // Microsoft's assembler keeps the low 32 bits of a
+                        // number up to 2^32 - 1: 4294967295 is -1.
                         if file == RegFile::ConstInt
-                            && (*value < i32::MIN as f64 || *value > i32::MAX as f64)
+                            && (*value < i32::MIN as f64 || *value > u32::MAX as f64)
                         {
                             return Err(Diagnostic::error(
                                 *span,
@@ -1500,7 +1527,7 @@ fn lower_def(ast: &InstrAst) -> R<Lowered> {
             } else {
                 Lowered::Int(IntDef {
                     index: reg.index,
-                    value: nums.map(|v| v as i32),
+                    value: nums.map(|v| v as i64 as i32),
                     origin: Origin::default(),
                 })
             })
