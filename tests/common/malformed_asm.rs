@@ -102,8 +102,8 @@ pub const CASES: &[(&str, &str, usize, usize)] = &[
     ("ps_3_0\nloop aL, i0\nmov r0, v[aL.x]\nendloop", "aL is a scalar register: no swizzle", 3, 13),
     ("ps_3_0\nloop aL, i0\nmov r0, v[aL - 1]\nendloop", "negative offsets are not allowed", 3, 14),
     // An offset that does not fit in 64 bits once added must not overflow.
-    ("ps_3_0\nloop aL, i0\nmov r0, v9[aL + 9223372036854775807]\nendloop", "is out of range", 3, 11),
-    ("ps_3_0\nloop aL, i0\nmov r0, v[aL + 99999999999999999999]\nendloop", "is out of range", 3, 10),
+    ("ps_3_0\nloop aL, i0\nmov r0, v9[aL + 9223372036854775807]\nendloop", "does not fit in 32 bits", 3, 17),
+    ("ps_3_0\nloop aL, i0\nmov r0, v[aL + 99999999999999999999]\nendloop", "does not fit in 64 bits", 3, 16),
     ("ps_3_0\nnop_pp", "`_pp` is not allowed on `nop`: it has no destination", 2, 4),
     ("ps_3_0\nrep_pp i0\nendrep", "`_pp` is not allowed on `rep`", 2, 4),
     // --- version line ----------------------------------------------------------

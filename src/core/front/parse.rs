@@ -961,12 +961,30 @@ impl<'a> Cursor<'a> {
                     .with_label("expected `+ n` or `]`"));
             }
             self.skip_space();
+            let dstart = self.pos();
             let Some(d) = self.eat(digit1) else {
                 return Err(self
                     .error_here(format!("expected an integer offset, {}", self.found()))
                     .with_label("offsets are non-negative integers"));
             };
-            offset = offset.saturating_add(d.parse::<i64>().unwrap_or(i64::MAX));
+            // Microsoft's lexer refuses a number past 64 bits (X1004) and
+            // its grammar one past 32 bits (a syntax error).
+            let Ok(n) = d.parse::<u64>() else {
+                return Err(Diagnostic::coded(
+                    codes::NUMBER_TOO_LONG,
+                    self.span_from(dstart),
+                    format!("offset `{d}` does not fit in 64 bits"),
+                ));
+            };
+            if n > u64::from(u32::MAX) {
+                return Err(Diagnostic::coded(
+                    codes::SYNTAX,
+                    self.span_from(dstart),
+                    format!("offset `{d}` does not fit in 32 bits"),
+                )
+                .with_label("too large"));
+            }
+            offset = offset.saturating_add(n as i64);
         }
         Ok(RelAst {
             index_reg: index_reg.into(),

@@ -943,6 +943,16 @@ fn destination(r: &RegAst, kind: Operand) -> R<Dst> {
         .with_label("not a destination here"));
     }
     if kind == Operand::KillSrc {
+        // texkill reads x, y and z: Microsoft's validator finds vPos's
+        // missing z before it asks what texkill may name.
+        if reg.file == RegFile::Position {
+            return Err(Diagnostic::coded(
+                codes::VPOS_ZW,
+                r.span,
+                "texkill reads .xyz, and vPos has no .z",
+            )
+            .with_label("vPos has only .x and .y"));
+        }
         if reg.file == RegFile::DepthOut {
             return Err(Diagnostic::coded(
                 codes::TEXKILL_DEPTH,
