@@ -646,8 +646,15 @@ impl<'a> Cursor<'a> {
                     .error_here(format!("unexpected character after `{mnemonic}`"))
                     .with_label("expected a space before the operands"));
             }
+            let writes = writes_destination(&base, !suffixes.is_empty());
             loop {
-                operands.push(self.operand()?);
+                // A number where the destination goes (`texkill 1-r0`) is
+                // a syntax error to Microsoft's grammar, not a complement.
+                let at_destination = writes && operands.is_empty();
+                operands.push(self.operand().map_err(|d| match d.code {
+                    Some(codes::COMPLEMENT) if at_destination => d.with_code(codes::SYNTAX),
+                    _ => d,
+                })?);
                 self.skip_space();
                 if self.rest.is_empty() {
                     break;
@@ -1009,6 +1016,20 @@ fn operand_count(base: &str, suffixed: bool) -> Option<usize> {
             Some(op.info().operands.len())
         }
     }
+}
+
+/// Whether a mnemonic's first operand is a destination (texkill's included:
+/// its token is one), when the instruction table knows the mnemonic.
+fn writes_destination(base: &str, suffixed: bool) -> bool {
+    use crate::core::isa::{Opcode, Operand};
+    Opcode::from_mnemonic(base, suffixed)
+        .or_else(|| Opcode::from_mnemonic(base, false))
+        .is_some_and(|op| {
+            matches!(
+                op.info().operands.first(),
+                Some(Operand::Dst | Operand::PredDst | Operand::KillSrc)
+            )
+        })
 }
 
 /// Parses only the tag used by other modules to recognise a version string.
