@@ -301,7 +301,7 @@ loop aL, i0
         break_ge r0.x, c0.y
         breakp !p0.x
         breakp p0.y
-        if_lt vFace.x, c0.x
+        if_lt vFace, c0.x
             break
         endif
     endrep
@@ -369,7 +369,7 @@ dcl_2d s15
 def c223, 1, 1, 1, 1
 defi i15, 255, 255, 127, 0
 defb b15, true
-texld r31, vPos.xyyy, s15
+texld r31, v9.xyyy, s15
 add oC0, r31, c223_abs
 mul r0, v9, -c223_abs.x
 mov r1, v0.x
@@ -737,10 +737,18 @@ fn instruction_strategy(decls: Decls) -> BoxedStrategy<Instruction> {
                         src.extend(s);
                     }
                     // The texld family's sources take no modifier
-                    // (Microsoft's validator, X5561).
+                    // (Microsoft's validator, X5561), and its coordinate
+                    // and gradients come from r#, v# or c#, not vPos
+                    // (X5525, X5526).
                     if info.class == Class::Texture {
                         for s in &mut src {
                             s.modifier = SrcMod::None;
+                            if s.reg.file == RegFile::Position {
+                                s.reg = Reg {
+                                    file: RegFile::Temp,
+                                    index: 0,
+                                };
+                            }
                         }
                     }
                     // Outputs are not written under predication.

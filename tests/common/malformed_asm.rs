@@ -64,7 +64,7 @@ pub const CASES: &[(&str, &str, usize, usize)] = &[
     ("ps_3_0\nmov r0, r1.", "expected swizzle or write-mask letters", 2, 12),
     ("ps_3_0\nmov r0.yx, r1", "write mask `.yx` is not in x, y, z, w order", 2, 8),
     ("ps_3_0\nmov r0.xx, r1", "write mask `.xx` is not in x, y, z, w order", 2, 8),
-    ("ps_3_0\nmov oDepth.x, r0.x", "oDepth takes no write mask", 2, 5),
+    ("ps_3_0\nmov oDepth.x, r0.x", "`oDepth` is a scalar register: it takes no write mask", 2, 12),
     // --- replicate swizzles ----------------------------------------------------
     ("ps_3_0\nrcp r0, r1.xy", "`rcp` needs a replicate swizzle", 2, 9),
     ("ps_3_0\nlog r0, r1", "`log` needs a replicate swizzle", 2, 9),
@@ -102,8 +102,8 @@ pub const CASES: &[(&str, &str, usize, usize)] = &[
     ("ps_3_0\nloop aL, i0\nmov r0, v[aL.x]\nendloop", "aL is a scalar register: no swizzle", 3, 13),
     ("ps_3_0\nloop aL, i0\nmov r0, v[aL - 1]\nendloop", "negative offsets are not allowed", 3, 14),
     // An offset that does not fit in 64 bits once added must not overflow.
-    ("ps_3_0\nloop aL, i0\nmov r0, v9[aL + 9223372036854775807]\nendloop", "is out of range", 3, 11),
-    ("ps_3_0\nloop aL, i0\nmov r0, v[aL + 99999999999999999999]\nendloop", "is out of range", 3, 10),
+    ("ps_3_0\nloop aL, i0\nmov r0, v9[aL + 9223372036854775807]\nendloop", "does not fit in 32 bits", 3, 17),
+    ("ps_3_0\nloop aL, i0\nmov r0, v[aL + 99999999999999999999]\nendloop", "does not fit in 64 bits", 3, 16),
     ("ps_3_0\nnop_pp", "`_pp` is not allowed on `nop`: it has no destination", 2, 4),
     ("ps_3_0\nrep_pp i0\nendrep", "`_pp` is not allowed on `rep`", 2, 4),
     // --- version line ----------------------------------------------------------

@@ -34,10 +34,19 @@ pub const SWIZZLE: Code = "X2004";
 /// "invalid register": an unknown name, a number out of range, a register
 /// that cannot be indexed, an unknown source modifier.
 pub const REGISTER: Code = "X2005";
-/// "scalar registers cannot be masked / swizzled" (oDepth, vFace, aL).
+/// "scalar registers cannot be masked / swizzled" (oDepth, vFace, aL, b#),
+/// found by the grammar before any rule about where a register may go.
 pub const SCALAR: Code = "X2022";
+/// "relative addressing of destination parameters is not supported in
+/// this shader version".
+pub const DESTINATION_RELATIVE: Code = "X2008";
+/// "source modifiers are not allowed on destination parameters".
+pub const DESTINATION_MODIFIER: Code = "X2014";
 /// "instruction coissue is not supported in this shader version".
 pub const COISSUE: Code = "X2027";
+/// "source modifiers incompatible with SUB instruction" (`!` on the
+/// source that sub negates).
+pub const SUB_MODIFIER: Code = "X2013";
 /// "complement is not supported in this shader version" (`1-r0`).
 pub const COMPLEMENT: Code = "X2029";
 
@@ -74,6 +83,9 @@ pub const VPOS_MASK: Code = "X5631";
 pub const DEF_TOO_LATE: Code = "X5729";
 /// "Destination for defi instruction must be i# register".
 pub const DEFI_DESTINATION: Code = "X5732";
+/// "Destination for defb instruction must be b# register … there may be no
+/// mask".
+pub const DEFB_DESTINATION: Code = "X6011";
 /// "Sampler s# already declared".
 pub const SAMPLER_TWICE: Code = "X5769";
 /// "dcl s# must not specify a writemask".
@@ -122,6 +134,21 @@ pub const SAMPLER_SOURCE_MODIFIER: Code = "X5559";
 pub const TEXLD_SOURCE_MODIFIER: Code = "X5561";
 /// "Invalid register type for destination param".
 pub const DESTINATION: Code = "X5578";
+/// "The only instruction allowed to write to the predicate register is
+/// setp".
+pub const PREDICATE_WRITE: Code = "X5373";
+/// "oDepth may not be written by the texkill instruction".
+pub const TEXKILL_DEPTH: Code = "X5758";
+/// "Third and fourth parameters to texldd must be temp (r#), input (v#) or
+/// constant (c#) register".
+pub const TEXLDD_GRADIENT: Code = "X5526";
+/// "loop requires first parameter to be loop counter (aL)".
+pub const LOOP_COUNTER: Code = "X5514";
+/// "if requires parameter (the branch condition) to be boolean constant
+/// register (b#), or predicate register (p0)".
+pub const IF_CONDITION: Code = "X5917";
+/// "breakp requires parameter to be predicate register (p0)".
+pub const BREAKP_CONDITION: Code = "X5930";
 /// "Dest writemask for SINCOS must be .xy, .x or .y".
 pub const SINCOS_MASK: Code = "X5580";
 /// "N different input registers (v*#) read by instruction".
@@ -173,6 +200,8 @@ pub const DP2ADD_REPLICATE: Code = "X5961";
 pub const SAT_TEXTURE: Code = "X5911";
 /// "_sat not permitted with frc instruction".
 pub const SAT_FRC: Code = "X5912";
+/// "_sat not permitted with setp instruction".
+pub const SAT_SETP: Code = "X6066";
 /// "_sat not permitted with SINCOS instruction".
 pub const SAT_SINCOS: Code = "X6061";
 /// "callnz requires second source parameter … to be … b#, or predicate".

@@ -669,8 +669,15 @@ impl<'a> Cursor<'a> {
                     .error_here(format!("unexpected character after `{mnemonic}`"))
                     .with_label("expected a space before the operands"));
             }
+            let writes = writes_destination(&base, !suffixes.is_empty());
             loop {
-                operands.push(self.operand()?);
+                // A number where the destination goes (`texkill 1-r0`) is
+                // a syntax error to Microsoft's grammar, not a complement.
+                let at_destination = writes && operands.is_empty();
+                operands.push(self.operand().map_err(|d| match d.code {
+                    Some(codes::COMPLEMENT) if at_destination => d.with_code(codes::SYNTAX),
+                    _ => d,
+                })?);
                 self.skip_space();
                 if self.rest.is_empty() {
                     break;
@@ -877,7 +884,7 @@ impl<'a> Cursor<'a> {
         } else {
             None
         };
-        let mut abs = self.eat_abs()?;
+        let mut abs = self.eat_abs(codes::REGISTER)?;
         let components = if self.eat(char('.')).is_some() {
             let cstart = self.pos();
             let Some(letters) = self.eat(take_while1(|c: char| c.is_ascii_alphabetic())) else {
@@ -893,7 +900,12 @@ impl<'a> Cursor<'a> {
             None
         };
         if !abs {
-            abs = self.eat_abs()?;
+            let code = if components.is_some() {
+                codes::SWIZZLE
+            } else {
+                codes::REGISTER
+            };
+            abs = self.eat_abs(code)?;
         }
         if self.rest.starts_with(|c: char| c.is_ascii_alphanumeric()) {
             return Err(self.error_here(format!(
@@ -914,8 +926,12 @@ impl<'a> Cursor<'a> {
         })
     }
 
-    /// An optional `_abs`; any other `_suffix` on a source is an error.
-    fn eat_abs(&mut self) -> Result<bool, Diagnostic> {
+    /// An optional `_abs`; any other `_suffix` on a source is an error:
+    /// Microsoft's assembler reads a suffix written after the components as
+    /// part of the swizzle (`r0.x_bias` is the swizzle `x_bias`, `code` is
+    /// then [`codes::SWIZZLE`]) and one written before them as part of the
+    /// register name ([`codes::REGISTER`]).
+    fn eat_abs(&mut self, code: codes::Code) -> Result<bool, Diagnostic> {
         if !self.rest.starts_with('_') {
             return Ok(false);
         }
@@ -927,7 +943,7 @@ impl<'a> Cursor<'a> {
             return Ok(true);
         }
         Err(Diagnostic::coded(
-            codes::REGISTER,
+            code,
             self.span_from(sstart),
             format!("source modifier `{word}` does not exist in ps_3_0"),
         )
@@ -975,12 +991,30 @@ impl<'a> Cursor<'a> {
                     .with_label("expected `+ n` or `]`"));
             }
             self.skip_space();
+            let dstart = self.pos();
             let Some(d) = self.eat(digit1) else {
                 return Err(self
                     .error_here(format!("expected an integer offset, {}", self.found()))
                     .with_label("offsets are non-negative integers"));
             };
-            offset = offset.saturating_add(d.parse::<i64>().unwrap_or(i64::MAX));
+            // Microsoft's lexer refuses a number past 64 bits (X1004) and
+            // its grammar one past 32 bits (a syntax error).
+            let Ok(n) = d.parse::<u64>() else {
+                return Err(Diagnostic::coded(
+                    codes::NUMBER_TOO_LONG,
+                    self.span_from(dstart),
+                    format!("offset `{d}` does not fit in 64 bits"),
+                ));
+            };
+            if n > u64::from(u32::MAX) {
+                return Err(Diagnostic::coded(
+                    codes::SYNTAX,
+                    self.span_from(dstart),
+                    format!("offset `{d}` does not fit in 32 bits"),
+                )
+                .with_label("too large"));
+            }
+            offset = offset.saturating_add(n as i64);
         }
         Ok(RelAst {
             index_reg: index_reg.into(),
@@ -1005,6 +1039,20 @@ fn operand_count(base: &str, suffixed: bool) -> Option<usize> {
             Some(op.info().operands.len())
         }
     }
+}
+
+/// Whether a mnemonic's first operand is a destination (texkill's included:
+/// its token is one), when the instruction table knows the mnemonic.
+fn writes_destination(base: &str, suffixed: bool) -> bool {
+    use crate::core::isa::{Opcode, Operand};
+    Opcode::from_mnemonic(base, suffixed)
+        .or_else(|| Opcode::from_mnemonic(base, false))
+        .is_some_and(|op| {
+            matches!(
+                op.info().operands.first(),
+                Some(Operand::Dst | Operand::PredDst | Operand::KillSrc)
+            )
+        })
 }
 
 /// Parses only the tag used by other modules to recognise a version string.

@@ -138,6 +138,7 @@ fn lower_instruction(ast: &InstrAst) -> R<Instruction> {
     check_modifiers(ast, info, &m)?;
     let predicate = instruction_predicate(ast, info)?;
     check_operand_count(ast, info)?;
+    grammar_of_operands(ast, info)?;
     let (dst, src) = operands(ast, info)?;
     texture_sources(op, &src, ast)?;
     operand_rules(op, dst.as_ref(), &src, ast)?;
@@ -236,6 +237,7 @@ fn check_modifiers(ast: &InstrAst, info: &OpInfo, m: &Suffixes) -> R<()> {
             Class::Texture => codes::SAT_TEXTURE,
             _ if info.mnemonic == "frc" => codes::SAT_FRC,
             _ if info.mnemonic == "sincos" => codes::SAT_SINCOS,
+            _ if info.mnemonic == "setp" => codes::SAT_SETP,
             _ => codes::SYNTAX,
         };
         return Err(Diagnostic::coded(
@@ -326,6 +328,57 @@ fn check_operand_count(ast: &InstrAst, info: &OpInfo) -> R<()> {
     Ok(())
 }
 
+/// What Microsoft's assembler refuses while it reads the operands, before
+/// its validator asks where each register may go: an unknown register, an
+/// index on a register other than v# (`c[aL]` is the invalid register
+/// `c[...]`), and components on a scalar register (aL, b#, oDepth, vFace; a
+/// write mask on a destination, a swizzle on a source or on the index aL).
+fn grammar_of_operands(ast: &InstrAst, info: &OpInfo) -> R<()> {
+    for (kind, operand) in info.operands.iter().zip(&ast.operands) {
+        let OperandAst::Reg(r) = operand else {
+            continue;
+        };
+        let reg = resolve_reg(r)?;
+        let index = r.relative.as_ref().filter(|rel| rel.index_reg == "aL");
+        if let Some(span) = index.and_then(|rel| rel.index_swizzle) {
+            return Err(Diagnostic::coded(
+                codes::SCALAR,
+                span,
+                "aL is a scalar register: no swizzle",
+            )
+            .with_label("remove the swizzle"));
+        }
+        if let (Some(rel), false) = (&r.relative, reg.file == RegFile::Input) {
+            return Err(Diagnostic::coded(
+                codes::REGISTER,
+                rel.span,
+                format!(
+                    "`{}` registers cannot be relatively addressed in ps_3_0",
+                    reg.file.info().name
+                ),
+            )
+            .with_label("only v[aL + n] is indexable"));
+        }
+        let scalar = matches!(
+            reg.file,
+            RegFile::LoopCounter | RegFile::ConstBool | RegFile::DepthOut | RegFile::Face
+        );
+        if let (true, Some((_, span))) = (scalar, &r.components) {
+            let what = match kind {
+                Operand::Dst | Operand::KillSrc | Operand::PredDst => "write mask",
+                _ => "swizzle",
+            };
+            return Err(Diagnostic::coded(
+                codes::SCALAR,
+                *span,
+                format!("`{reg}` is a scalar register: it takes no {what}"),
+            )
+            .with_label(format!("remove the {what}")));
+        }
+    }
+    Ok(())
+}
+
 /// Each operand resolved as its place in the shape requires: the
 /// destination (if any) and the sources in order.
 fn operands(ast: &InstrAst, info: &OpInfo) -> R<(Option<Dst>, Vec<Src>)> {
@@ -351,12 +404,8 @@ fn operands(ast: &InstrAst, info: &OpInfo) -> R<(Option<Dst>, Vec<Src>)> {
             Operand::Dst | Operand::KillSrc => dst = Some(destination(reg, *kind)?),
             Operand::PredDst => dst = Some(predicate_destination(reg)?),
             Operand::Src | Operand::ScalarSrc => {
-                // The texld family's coordinate has its own code.
-                let texture = info.class == Class::Texture && pos == 1;
-                let s = float_source(reg).map_err(|d| match d.code {
-                    Some(codes::SOURCE_REGISTER) if texture => d.with_code(codes::TEXLD_COORDINATE),
-                    _ => d,
-                })?;
+                texture_operand(reg, pos, info)?;
+                let s = float_source(reg).map_err(|d| source_code(d, pos, info))?;
                 // vFace is a scalar register (dimension 1 in Microsoft's
                 // ps_3_0 register table, and the operand of if_comp and
                 // break_comp its page names): it needs no swizzle to be one.
@@ -385,9 +434,10 @@ fn operands(ast: &InstrAst, info: &OpInfo) -> R<(Option<Dst>, Vec<Src>)> {
                 plain_of(reg, RegFile::ConstInt, "an integer constant i#")
                     .map_err(|d| d.or_code(codes::REP_OPERAND))?,
             ),
-            Operand::LoopCounter => {
-                src.push(plain_of(reg, RegFile::LoopCounter, "the loop counter aL")?)
-            }
+            Operand::LoopCounter => src.push(
+                plain_of(reg, RegFile::LoopCounter, "the loop counter aL")
+                    .map_err(|d| d.or_code(codes::LOOP_COUNTER))?,
+            ),
             Operand::Label => src.push(plain_of(reg, RegFile::Label, "a label l#")?),
             Operand::Condition => src.push(condition(reg).map_err(|d| condition_code(d, info))?),
             Operand::FloatLits | Operand::IntLits | Operand::BoolLit => {
@@ -398,6 +448,40 @@ fn operands(ast: &InstrAst, info: &OpInfo) -> R<(Option<Dst>, Vec<Src>)> {
     Ok((dst, src))
 }
 
+/// The texld family reads its coordinate (operand 1) and texldd its
+/// gradients (operands 3 and 4) from r#, v# or c# only; Microsoft checks
+/// that before any other rule on them (vPos and vFace included).
+fn texture_operand(reg: &RegAst, pos: usize, info: &OpInfo) -> R<()> {
+    let code = match (info.class, pos, info.mnemonic) {
+        (Class::Texture, 1, _) => codes::TEXLD_COORDINATE,
+        (Class::Texture, 3 | 4, "texldd") => codes::TEXLDD_GRADIENT,
+        _ => return Ok(()),
+    };
+    let r = resolve_reg(reg)?;
+    if matches!(r.file, RegFile::Temp | RegFile::Input | RegFile::Const) {
+        return Ok(());
+    }
+    Err(Diagnostic::coded(
+        code,
+        reg.name_span,
+        format!("`{}` cannot read `{r}` here", info.mnemonic),
+    )
+    .with_label("expected r#, v# or c#"))
+}
+
+/// Microsoft's code for a bad float source of some instructions: `!` on a
+/// texld source is its texld rule, `!` on the source that sub negates is
+/// refused by the assembler itself.
+fn source_code(d: Diagnostic, pos: usize, info: &OpInfo) -> Diagnostic {
+    match (d.code, info.class, info.mnemonic, pos) {
+        (Some(codes::SOURCE_MODIFIER), Class::Texture, ..) => {
+            d.with_code(codes::TEXLD_SOURCE_MODIFIER)
+        }
+        (Some(codes::SOURCE_MODIFIER), _, "sub", 2) => d.with_code(codes::SUB_MODIFIER),
+        _ => d,
+    }
+}
+
 /// Microsoft's code for a bad condition depends on the instruction: a
 /// predicate without a replicate swizzle is X5949 for `if`, X5793 for
 /// `breakp`, X5946 for `callnz`; a modifier on it is X5690 for `if`.
@@ -406,6 +490,8 @@ fn condition_code(d: Diagnostic, info: &OpInfo) -> Diagnostic {
         (Some(codes::PREDICATE_REPLICATE), "breakp") => codes::REPLICATE,
         (Some(codes::PREDICATE_REPLICATE), "callnz") => codes::CALLNZ_REPLICATE,
         (Some(codes::PREDICATE_MODIFIER), "if") => codes::IF_MODIFIER,
+        (Some(codes::CALLNZ_CONDITION), "if") => codes::IF_CONDITION,
+        (Some(codes::CALLNZ_CONDITION), "breakp") => codes::BREAKP_CONDITION,
         _ => return d,
     };
     d.with_code(code)
@@ -848,7 +934,33 @@ fn no_modifiers(r: &RegAst, what: &str) -> R<()> {
 
 fn destination(r: &RegAst, kind: Operand) -> R<Dst> {
     let reg = resolve_reg(r)?;
+    if reg.file == RegFile::Predicate {
+        return Err(Diagnostic::coded(
+            codes::PREDICATE_WRITE,
+            r.name_span,
+            "only setp writes the predicate register p0",
+        )
+        .with_label("not a destination here"));
+    }
     if kind == Operand::KillSrc {
+        // texkill reads x, y and z: Microsoft's validator finds vPos's
+        // missing z before it asks what texkill may name.
+        if reg.file == RegFile::Position {
+            return Err(Diagnostic::coded(
+                codes::VPOS_ZW,
+                r.span,
+                "texkill reads .xyz, and vPos has no .z",
+            )
+            .with_label("vPos has only .x and .y"));
+        }
+        if reg.file == RegFile::DepthOut {
+            return Err(Diagnostic::coded(
+                codes::TEXKILL_DEPTH,
+                r.span,
+                "texkill takes a temporary r# or an input v#, not oDepth",
+            )
+            .with_label("expected r# or v#"));
+        }
         if !matches!(reg.file, RegFile::Temp | RegFile::Input) {
             return Err(Diagnostic::coded(
                 codes::DESTINATION,
@@ -857,7 +969,7 @@ fn destination(r: &RegAst, kind: Operand) -> R<Dst> {
             )
             .with_label("expected r# or v#"));
         }
-    } else if !reg.file.info().writable || reg.file == RegFile::Predicate {
+    } else if !reg.file.info().writable {
         return Err(Diagnostic::coded(
             codes::DESTINATION,
             r.name_span,
@@ -866,15 +978,33 @@ fn destination(r: &RegAst, kind: Operand) -> R<Dst> {
         .with_label("not a destination")
         .with_help("destinations are r#, oC# and oDepth (and p0 for setp)"));
     }
-    no_modifiers(r, "a destination")?;
-    let mask = write_mask(r)?;
-    if reg.file == RegFile::DepthOut && r.components.is_some() {
-        return Err(
-            Diagnostic::coded(codes::SCALAR, r.span, "oDepth takes no write mask")
-                .with_label("remove the mask"),
-        );
+    // Microsoft's assembler refuses these itself (texkill's operand is a
+    // destination in the token stream): `-` or `!` before it as a syntax
+    // error, `_abs` after it with its own code.
+    if r.negate || r.not {
+        return Err(Diagnostic::error(r.span, "a destination takes no modifier")
+            .with_label("remove the modifier"));
     }
-    Ok(Dst { reg, mask })
+    if r.abs {
+        return Err(Diagnostic::coded(
+            codes::DESTINATION_MODIFIER,
+            r.span,
+            "a destination takes no modifier",
+        )
+        .with_label("remove the modifier"));
+    }
+    if let Some(rel) = &r.relative {
+        return Err(Diagnostic::coded(
+            codes::DESTINATION_RELATIVE,
+            rel.span,
+            "a destination cannot be relatively addressed",
+        )
+        .with_label("only sources v[aL + n] may be indexed"));
+    }
+    Ok(Dst {
+        reg,
+        mask: write_mask(r)?,
+    })
 }
 
 fn source_modifier(r: &RegAst) -> SrcMod {
@@ -921,17 +1051,6 @@ fn float_source(r: &RegAst) -> R<Src> {
     let relative = match &r.relative {
         None => false,
         Some(rel) => {
-            if reg.file != RegFile::Input {
-                return Err(Diagnostic::coded(
-                    codes::REGISTER,
-                    rel.span,
-                    format!(
-                        "`{}` registers cannot be relatively addressed in ps_3_0",
-                        reg.file.info().name
-                    ),
-                )
-                .with_label("only v[aL + n] is indexable"));
-            }
             if rel.index_reg != "aL" {
                 let d = Diagnostic::coded(
                     codes::REGISTER,
@@ -1342,12 +1461,12 @@ fn lower_def(ast: &InstrAst) -> R<Lowered> {
         ));
     };
     let reg = resolve_reg(r)?;
+    let code = match file {
+        RegFile::Const => codes::DEF_DESTINATION,
+        RegFile::ConstInt => codes::DEFI_DESTINATION,
+        _ => codes::DEFB_DESTINATION,
+    };
     if reg.file != file {
-        let code = match file {
-            RegFile::Const => codes::DEF_DESTINATION,
-            RegFile::ConstInt => codes::DEFI_DESTINATION,
-            _ => codes::SYNTAX,
-        };
         return Err(Diagnostic::coded(
             code,
             r.span,
@@ -1359,7 +1478,7 @@ fn lower_def(ast: &InstrAst) -> R<Lowered> {
     no_modifiers(r, "a defined register")?;
     if r.components.is_some() {
         return Err(Diagnostic::coded(
-            codes::DEF_DESTINATION,
+            code,
             r.span,
             "definitions write the whole register: no mask",
         )
@@ -1390,8 +1509,10 @@ fn lower_def(ast: &InstrAst) -> R<Lowered> {
                             return Err(Diagnostic::error(*span, "defi takes integers")
                                 .with_label("not an integer"));
                         }
+                        // Microsoft's assembler keeps the low 32 bits of a
+                        // number up to 2^32 - 1: 4294967295 is -1.
                         if file == RegFile::ConstInt
-                            && (*value < i32::MIN as f64 || *value > i32::MAX as f64)
+                            && (*value < i32::MIN as f64 || *value > u32::MAX as f64)
                         {
                             return Err(Diagnostic::error(
                                 *span,
@@ -1416,7 +1537,7 @@ fn lower_def(ast: &InstrAst) -> R<Lowered> {
             } else {
                 Lowered::Int(IntDef {
                     index: reg.index,
-                    value: nums.map(|v| v as i32),
+                    value: nums.map(|v| v as i64 as i32),
                     origin: Origin::default(),
                 })
             })
