@@ -393,10 +393,11 @@ fn number(operand: &OperandAst, integer: bool) -> R<u32> {
         return Err(cannot(operand.span(), "a number is expected here"));
     };
     if integer {
-        if !written_int || value < i32::MIN as f64 || value > i32::MAX as f64 {
+        // Up to 4294967295, whose 32 bits are -1, as Microsoft takes it.
+        if !written_int || value < i32::MIN as f64 || value > u32::MAX as f64 {
             return Err(cannot(span, "`defi` takes 32-bit integers"));
         }
-        return Ok(value as i32 as u32);
+        return Ok(value as i64 as u32);
     }
     // Out of range is infinity, as Microsoft's assembler writes it (`def
     // c0, 1e39` is `1.#INF` in its listing); a spelled NaN keeps its bits.
