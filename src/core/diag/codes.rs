@@ -202,6 +202,8 @@ pub const SAT_FRC: Code = "X5912";
 pub const SAT_SINCOS: Code = "X6061";
 /// "callnz requires second source parameter … to be … b#, or predicate".
 pub const CALLNZ_CONDITION: Code = "X5916";
+/// "breakp requires parameter to be predicate register (p0)".
+pub const BREAKP_CONDITION: Code = "X5930";
 /// "rep requires first parameter to be integer constant register (i#)".
 pub const REP_OPERAND: Code = "X5932";
 /// "M#x# instruction must use destination writemask".

@@ -409,7 +409,18 @@ fn operands(ast: &InstrAst, info: &OpInfo) -> R<(Option<Dst>, Vec<Src>)> {
                 src.push(plain_of(reg, RegFile::LoopCounter, "the loop counter aL")?)
             }
             Operand::Label => src.push(plain_of(reg, RegFile::Label, "a label l#")?),
-            Operand::Condition => src.push(condition(reg).map_err(|d| condition_code(d, info))?),
+            Operand::Condition => {
+                if info.mnemonic == "breakp" && resolve_reg(reg)?.file != RegFile::Predicate {
+                    return Err(Diagnostic::coded(
+                        codes::BREAKP_CONDITION,
+                        reg.span,
+                        "`breakp` tests the predicate register: p0.c or !p0.c",
+                    )
+                    .with_label("not p0")
+                    .with_help("for a boolean b#, use if b# / break / endif"));
+                }
+                src.push(condition(reg).map_err(|d| condition_code(d, info))?)
+            }
             Operand::FloatLits | Operand::IntLits | Operand::BoolLit => {
                 unreachable!("only def rows use literal shapes")
             }
@@ -1367,10 +1378,21 @@ fn input_decl(r: &RegAst, reg: Reg, (k, span): (&str, Span), m: &DclSuffixes) ->
                 ),
         );
     }
+    let usage_index: u32 = if digits.is_empty() {
+        0
+    } else {
+        digits.parse().unwrap_or(99)
+    };
+    if usage_index > 15 {
+        return Err(
+            Diagnostic::error(span, format!("usage index {usage_index} is out of range"))
+                .with_label("0 … 15"),
+        );
+    }
     // Microsoft refuses these usages in a pixel shader: positiont and psize
     // at index 0 only (positiont15 and psize15 it takes), sample and
     // tessfactor at every index.
-    let first = digits.is_empty() || digits.bytes().all(|b| b == b'0');
+    let first = usage_index == 0;
     let refused = match name {
         "positiont" if first => Some(codes::DCL_POSITIONT),
         "psize" if first => Some(codes::DCL_PSIZE),
@@ -1386,17 +1408,6 @@ fn input_decl(r: &RegAst, reg: Reg, (k, span): (&str, Span), m: &DclSuffixes) ->
         )
         .with_label("not a pixel shader input")
         .with_help("declare the value as a texcoord# input instead"));
-    }
-    let usage_index: u32 = if digits.is_empty() {
-        0
-    } else {
-        digits.parse().unwrap_or(99)
-    };
-    if usage_index > 15 {
-        return Err(
-            Diagnostic::error(span, format!("usage index {usage_index} is out of range"))
-                .with_label("0 … 15"),
-        );
     }
     // Not in Microsoft's dcl_usage page, but Windows' runtime
     // refuses it: Wine's dlls/d3d9/tests/visual.c,
