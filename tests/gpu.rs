@@ -599,7 +599,7 @@ fn vface_is_negative_on_a_back_facing_draw() {
     let Some(g) = gpu("vface_is_negative_on_a_back_facing_draw") else {
         return;
     };
-    let s = shader("ps_3_0\ndcl vFace\ndef c0, 1, 0, 0, 1\ndef c1, 0, 1, 0, 1\nif_lt vFace.x, c0.y\nmov r0, c1\nelse\nmov r0, c0\nendif\nmov oC0, r0\n");
+    let s = shader("ps_3_0\ndcl vFace\ndef c0, 1, 0, 0, 1\ndef c1, 0, 1, 0, 1\nif_lt vFace, c0.y\nmov r0, c1\nelse\nmov r0, c0\nendif\nmov oC0, r0\n");
     for face in [Face::Front, Face::Back] {
         let mut d = Draw::new(3, 2);
         d.face = face;
