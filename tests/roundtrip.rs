@@ -262,7 +262,7 @@ setp_ge p0, r0, r1
 (!p0.y) mul_sat r0.xy, r1, -c0.x
 (p0.w) texld r3, v0, s0
 (!p0.x) texkill r3
-(p0.z) nop
+nop
 mov oC0, r0
 mov oC1.xy, r1
 mov_sat oC2, r2
@@ -358,13 +358,13 @@ dcl_texcoord v0.x
 dcl_texcoord15 v9
 dcl_blendweight v1
 dcl_blendindices v2
-dcl_psize v3
+dcl_psize1 v3
 dcl_tangent v4
 dcl_binormal v5
-dcl_tessfactor v6
-dcl_positiont v7
+dcl_fog7 v6
+dcl_positiont1 v7
 dcl_depth v8.x
-dcl_sample v8.y
+dcl_normal7 v8.y
 dcl_2d s15
 def c223, 1, 1, 1, 1
 defi i15, 255, 255, 127, 0
@@ -737,16 +737,21 @@ fn instruction_strategy(decls: Decls) -> BoxedStrategy<Instruction> {
                         src.extend(s);
                     }
                     // The texld family's sources take no modifier
-                    // (Microsoft's validator, X5561), and its coordinate
-                    // and gradients come from r#, v# or c#, not vPos
-                    // (X5525, X5526).
-                    if info.class == Class::Texture {
+                    // (Microsoft's validator, X5561), nor do dsx and dsy's
+                    // (X5690); the texld coordinate and texldd's gradients
+                    // are r#, v# or c#, not vPos (X5525, X5526).
+                    if info.class == Class::Texture || matches!(info.op, Opcode::Dsx | Opcode::Dsy)
+                    {
                         for s in &mut src {
                             s.modifier = SrcMod::None;
+                        }
+                    }
+                    if info.class == Class::Texture {
+                        for s in &mut src {
                             if s.reg.file == RegFile::Position {
                                 s.reg = Reg {
-                                    file: RegFile::Temp,
-                                    index: 0,
+                                    file: RegFile::Const,
+                                    index: constant,
                                 };
                             }
                         }
@@ -771,10 +776,12 @@ fn instruction_strategy(decls: Decls) -> BoxedStrategy<Instruction> {
                         // assembler reads no `texld_centroid`.
                         centroid: false,
                         compare: info.comparison.then_some(compare),
-                        // Outputs, and gradients (Microsoft's assembler
+                        // Outputs, rows Microsoft does not predicate (nop,
+                        // setp), and gradients (Microsoft's assembler
                         // refuses a predicated texld, texldb, texldp, dsx or
                         // dsy: X6077), are not predicated.
                         predicate: if writes_output
+                            || !info.predicable
                             || matches!(
                                 info.op,
                                 Opcode::TexLd
@@ -865,12 +872,21 @@ fn program_strategy() -> impl Strategy<Value = Program> {
                             file: RegFile::Input,
                             index,
                         },
-                        usage: USAGES[usage].to_string(),
+                        // sample and tessfactor are refused in a pixel
+                        // shader (Microsoft's validator, X5974, X5973).
+                        usage: match USAGES[usage] {
+                            "sample" | "tessfactor" => "texcoord",
+                            u => u,
+                        }
+                        .to_string(),
                         // One usage and index per input (Microsoft's
                         // validator, X5304): the register's number, past 0
-                        // for position (position0 is not a pixel shader
-                        // input: Windows' runtime refuses it; ps30 too).
-                        usage_index: if USAGES[usage] == "position" {
+                        // for position, positiont and psize (position0 is not
+                        // a pixel shader input: Windows' runtime refuses it;
+                        // Microsoft's validator refuses positiont0 and
+                        // psize0, X5972, X5537).
+                        usage_index: if matches!(USAGES[usage], "position" | "positiont" | "psize")
+                        {
                             index + 1
                         } else {
                             index

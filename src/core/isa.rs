@@ -437,7 +437,7 @@ macro_rules! row {
 /// here), slots, cube slots, class, operands, modifiers, summary.
 #[rustfmt::skip]
 pub const TABLE: &[OpInfo] = &[
-    row!(Nop, "nop", 0x00/0, 1, None, fxc = 0, Arithmetic, NONE, sat = false, cmp = false, pred = true, "no operation"),
+    row!(Nop, "nop", 0x00/0, 1, None, fxc = 0, Arithmetic, NONE, sat = false, cmp = false, pred = false, "no operation"),
     row!(Mov, "mov", 0x01/0, 1, None, fxc = 1, Arithmetic, DS, sat = true, cmp = false, pred = true, "copy"),
     row!(Add, "add", 0x02/0, 1, None, fxc = 1, Arithmetic, DSS, sat = true, cmp = false, pred = true, "a + b"),
     row!(Sub, "sub", 0x03/0, 1, None, fxc = 1, Arithmetic, DSS, sat = true, cmp = false, pred = true, "a - b"),
@@ -473,7 +473,7 @@ pub const TABLE: &[OpInfo] = &[
     row!(TexLdB, "texldb", 0x42/2, 6, None, fxc = 1, Texture, TEX, sat = false, cmp = false, pred = true, "sample with LOD bias w"),
     row!(TexLdL, "texldl", 0x5F/0, 2, Some(5), fxc = 2, Texture, TEX, sat = false, cmp = false, pred = true, "sample at explicit LOD w"),
     row!(TexLdD, "texldd", 0x5D/0, 3, None, fxc = 3, Texture, &[O::Dst, O::Src, O::Sampler, O::Src, O::Src], sat = false, cmp = false, pred = true, "sample with explicit gradients"),
-    row!(Setp, "setp", 0x5E/0, 1, None, fxc = 1, Arithmetic, &[O::PredDst, O::Src, O::Src], sat = false, cmp = true, pred = true, "p0.c = a.c <op> b.c"),
+    row!(Setp, "setp", 0x5E/0, 1, None, fxc = 1, Arithmetic, &[O::PredDst, O::Src, O::Src], sat = false, cmp = true, pred = false, "p0.c = a.c <op> b.c"),
     row!(Call, "call", 0x19/0, 2, None, fxc = 2, Flow, &[O::Label], sat = false, cmp = false, pred = false, "call a subroutine"),
     row!(CallNz, "callnz", 0x1A/0, 3, None, fxc = 3, Flow, &[O::Label, O::Condition], sat = false, cmp = false, pred = false, "call if the condition holds"),
     row!(Loop, "loop", 0x1B/0, 3, None, fxc = 3, Flow, &[O::LoopCounter, O::IntReg], sat = false, cmp = false, pred = false, "loop i.x times, aL from i.y by i.z"),

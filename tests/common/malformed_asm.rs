@@ -166,7 +166,7 @@ pub const CASES: &[(&str, &str, usize, usize)] = &[
     ("ps_3_0\ncall l0\nret\nlabel l0\ncall l1\nret\nlabel l1\ncall l2\nret\nlabel l2\ncall l3\nret\nlabel l3\ncall l4\nret\nlabel l4\nret", "calls nest 5 deep; ps_3_0 allows 4", 2, 1),
     ("ps_3_0\ncallnz l0, c0\nret\nlabel l0\nret", "expected a condition", 2, 12),
     // --- texkill, setp ---------------------------------------------------------
-    ("ps_3_0\ntexkill c0", "texkill takes a temporary r# or an input v#", 2, 9),
+    ("ps_3_0\ntexkill c0", "texkill takes a temporary r#, an input v# or a colour output oC#", 2, 9),
     ("ps_3_0\nsetp_gt r0, r1, r2", "setp writes the predicate register p0", 2, 9),
     ("ps_3_0\nbreakp p0\n", "a predicate condition selects one component", 2, 8),
     // --- REPEAT_BLOCK ---------------------------------------------------------

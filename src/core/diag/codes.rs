@@ -92,6 +92,16 @@ pub const SAMPLER_TWICE: Code = "X5769";
 pub const SAMPLER_MASK: Code = "X5770";
 /// "dcl for s register does not support any modifiers".
 pub const SAMPLER_MODIFIER: Code = "X5969";
+/// "dcl for vPos register does not support any modifiers".
+pub const VPOS_MODIFIER: Code = "X5969";
+/// "dcl usage+index positiont# cannot be used in a pixel shader".
+pub const DCL_POSITIONT: Code = "X5972";
+/// "dcl usage 'tessfactor' is not avaliable to the pixel shader".
+pub const DCL_TESSFACTOR: Code = "X5973";
+/// "dcl usage 'sample' is not avaliable to the pixel shader".
+pub const DCL_SAMPLE: Code = "X5974";
+/// "dcl usage+index psize# cannot be used in a pixel shader".
+pub const DCL_PSIZE: Code = "X5537";
 /// "dcl for input v# register must specify usage+index".
 pub const DCL_USAGE: Code = "X5971";
 /// "Components of register v# being read, but not declared".
@@ -168,6 +178,18 @@ pub const MATRIX_RANGE: Code = "X5684";
 pub const MATRIX_MODIFIER: Code = "X5689";
 /// "The setp instruction must write to the predicate register".
 pub const SETP_DESTINATION: Code = "X5714";
+/// "Dest writemask for NRM must be .xyzw (default) or .xyz".
+pub const NRM_MASK: Code = "X5530";
+/// "Cannot use negate or abs on source parameter(s) to dsx instruction"
+/// (and dsy).
+pub const GRADIENT_MODIFIER: Code = "X5690";
+/// "oDepth may not be written by the … instruction".
+pub const DEPTH_WRITER: Code = "X5758";
+/// "When writing to oDepth, … instruction must use replicate swizzle on
+/// source parameter(s)".
+pub const DEPTH_REPLICATE: Code = "X6062";
+/// "Invalid parameter count" (a predicate on `nop`).
+pub const PARAMETER_COUNT: Code = "X5521";
 /// "Dest register for CRS cannot be the same as a source register".
 pub const CRS_ALIAS: Code = "X5761";
 /// "Swizzle not permitted on source paramters to CRS".

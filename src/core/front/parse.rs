@@ -750,7 +750,7 @@ impl<'a> Cursor<'a> {
 
     fn operand(&mut self) -> Result<OperandAst, Diagnostic> {
         let start = self.pos();
-        // A number: optional sign, digits or a leading '.', optional f suffix.
+        // A number: optional sign, digits or a leading '.', optional f/h suffix.
         let looks_numeric = {
             let r = self.rest.strip_prefix(['-', '+']).unwrap_or(self.rest);
             r.starts_with(|c: char| c.is_ascii_digit()) || r.starts_with('.')
@@ -770,7 +770,13 @@ impl<'a> Cursor<'a> {
             if let Some(n) = self.special_number(text, start) {
                 return n;
             }
-            self.eat(alt((char('f'), char('F'))));
+            // Microsoft's lexer reads C float literals: a number with a
+            // point or an exponent may end in f or h (float, half); a
+            // plain integer may not (`1f` is refused, `1.5h` is taken).
+            let integer = !text.contains(['.', 'e', 'E']);
+            if !integer {
+                self.eat(alt((char('f'), char('F'), char('h'), char('H'))));
+            }
             let span = self.span_from(start);
             if self.rest.trim_start().starts_with('-') {
                 return Err(self
@@ -794,7 +800,6 @@ impl<'a> Cursor<'a> {
                 Diagnostic::error(span, format!("malformed number `{text}`"))
                     .with_label("not a number")
             })?;
-            let integer = !text.contains(['.', 'e', 'E']);
             return Ok(OperandAst::Number {
                 value,
                 integer,
@@ -846,7 +851,7 @@ impl<'a> Cursor<'a> {
         Some(f64::from_bits(bits ^ sign))
     }
 
-    /// `[-|!]name[index][\[aL + n\]][_abs][.components][_abs]`
+    /// `[-|!]name[index][\[aL + n\]][_abs][.components]`
     fn register(&mut self) -> Result<RegAst, Diagnostic> {
         let start = self.pos();
         let mut negate = false;
@@ -884,7 +889,7 @@ impl<'a> Cursor<'a> {
         } else {
             None
         };
-        let mut abs = self.eat_abs(codes::REGISTER)?;
+        let abs = self.eat_abs(codes::REGISTER)?;
         let components = if self.eat(char('.')).is_some() {
             let cstart = self.pos();
             let Some(letters) = self.eat(take_while1(|c: char| c.is_ascii_alphabetic())) else {
@@ -899,13 +904,26 @@ impl<'a> Cursor<'a> {
         } else {
             None
         };
-        if !abs {
-            let code = if components.is_some() {
-                codes::SWIZZLE
-            } else {
-                codes::REGISTER
-            };
-            abs = self.eat_abs(code)?;
+        if let Some((letters, cspan)) = &components {
+            // Microsoft's lexer reads `.x_abs` as one swizzle word and
+            // refuses it: `_abs` goes before the swizzle (`r1_abs.x`).
+            if self.rest.starts_with('_') {
+                let at = self.pos();
+                let tail = self.eat(recognize(pair(char('_'), take_while(is_ident_char))));
+                let tail = tail.unwrap_or_default();
+                return Err(Diagnostic::coded(
+                    codes::SWIZZLE,
+                    Span {
+                        start: cspan.start,
+                        end: self.span_from(at).end,
+                    },
+                    format!("`{letters}{tail}` is not a swizzle: a modifier after the swizzle"),
+                )
+                .with_label("modifier written after the components")
+                .with_help(format!(
+                    "write `{tail}` before the `.`, e.g. r1{tail}.{letters}"
+                )));
+            }
         }
         if self.rest.starts_with(|c: char| c.is_ascii_alphanumeric()) {
             return Err(self.error_here(format!(

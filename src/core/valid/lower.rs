@@ -142,6 +142,7 @@ fn lower_instruction(ast: &InstrAst) -> R<Instruction> {
     let (dst, src) = operands(ast, info)?;
     texture_sources(op, &src, ast)?;
     operand_rules(op, dst.as_ref(), &src, ast)?;
+    depth_rules(op, dst.as_ref(), &src, ast)?;
     Ok(Instruction {
         op,
         sat: m.sat,
@@ -285,6 +286,25 @@ fn instruction_predicate(ast: &InstrAst, info: &OpInfo) -> R<Option<Predicate>> 
     let Some(p) = &ast.predicate else {
         return Ok(None);
     };
+    // Microsoft refuses a predicate on setp (the predicate's own writer,
+    // X5665) and on nop (which has no parameter to carry it, X5521).
+    if info.mnemonic == "setp" {
+        return Err(Diagnostic::coded(
+            codes::PREDICATED_FLOW,
+            p.span,
+            "`setp` cannot be predicated",
+        )
+        .with_label("setp writes the predicate; it takes none")
+        .with_help("mask what setp writes with its write mask instead"));
+    }
+    if info.mnemonic == "nop" {
+        return Err(Diagnostic::coded(
+            codes::PARAMETER_COUNT,
+            p.span,
+            "`nop` cannot be predicated",
+        )
+        .with_label("nothing to predicate"));
+    }
     if !info.predicable {
         return Err(Diagnostic::coded(
             codes::PREDICATED_FLOW,
@@ -439,7 +459,18 @@ fn operands(ast: &InstrAst, info: &OpInfo) -> R<(Option<Dst>, Vec<Src>)> {
                     .map_err(|d| d.or_code(codes::LOOP_COUNTER))?,
             ),
             Operand::Label => src.push(plain_of(reg, RegFile::Label, "a label l#")?),
-            Operand::Condition => src.push(condition(reg).map_err(|d| condition_code(d, info))?),
+            Operand::Condition => {
+                if info.mnemonic == "breakp" && resolve_reg(reg)?.file != RegFile::Predicate {
+                    return Err(Diagnostic::coded(
+                        codes::BREAKP_CONDITION,
+                        reg.span,
+                        "`breakp` tests the predicate register: p0.c or !p0.c",
+                    )
+                    .with_label("not p0")
+                    .with_help("for a boolean b#, use if b# / break / endif"));
+                }
+                src.push(condition(reg).map_err(|d| condition_code(d, info))?)
+            }
             Operand::FloatLits | Operand::IntLits | Operand::BoolLit => {
                 unreachable!("only def rows use literal shapes")
             }
@@ -552,6 +583,30 @@ fn texture_sources(op: Opcode, src: &[Src], ast: &InstrAst) -> R<()> {
     ) {
         return Ok(());
     }
+    // The coordinate and texldd's gradients are r#, v# or c# (X5525,
+    // X5526): vPos and vFace are refused.
+    let plain = |s: &Src| matches!(s.reg.file, RegFile::Temp | RegFile::Input | RegFile::Const);
+    for (k, s) in src.iter().enumerate() {
+        let code = match k {
+            0 => codes::TEXLD_COORDINATE,
+            2 | 3 => codes::TEXLDD_GRADIENT,
+            _ => continue,
+        };
+        if !plain(s) {
+            return Err(Diagnostic::coded(
+                code,
+                ast.operands.get(k + 1).map_or(ast.span, |o| o.span()),
+                format!(
+                    "`{}` reads its {} from r#, v# or c#, not `{}`",
+                    op.info().mnemonic,
+                    if k == 0 { "coordinate" } else { "gradients" },
+                    s.reg
+                ),
+            )
+            .with_label("not r#, v# or c#")
+            .with_help("copy it into a temporary with mov first"));
+        }
+    }
     let bad = src
         .iter()
         .position(|s| s.reg.file != RegFile::Sampler && s.modifier != SrcMod::None);
@@ -564,6 +619,56 @@ fn texture_sources(op: Opcode, src: &[Src], ast: &InstrAst) -> R<()> {
         .with_label("modifier not allowed here")
         .with_help("apply the modifier with mov into a temporary first")),
         None => Ok(()),
+    }
+}
+
+/// Writes to oDepth, as Microsoft's validator takes them: the texture
+/// loads, `rsq` and the four-row matrix products may not write it (X5758),
+/// and the component-wise instructions must select one component of every
+/// source with a replicate swizzle (X6062), since oDepth holds one value.
+fn depth_rules(op: Opcode, dst: Option<&Dst>, src: &[Src], ast: &InstrAst) -> R<()> {
+    if dst.is_none_or(|d| d.reg.file != RegFile::DepthOut) {
+        return Ok(());
+    }
+    let mnemonic = op.info().mnemonic;
+    let span = ast.operands.first().map_or(ast.span, |o| o.span());
+    match op {
+        Opcode::Rsq
+        | Opcode::M3x4
+        | Opcode::M4x4
+        | Opcode::TexLd
+        | Opcode::TexLdP
+        | Opcode::TexLdB
+        | Opcode::TexLdL
+        | Opcode::TexLdD => Err(Diagnostic::coded(
+            codes::DEPTH_WRITER,
+            span,
+            format!("`{mnemonic}` may not write oDepth"),
+        )
+        .with_label("oDepth written here")
+        .with_help("compute into r# and copy one component with mov oDepth, r#.x")),
+        Opcode::Abs
+        | Opcode::Add
+        | Opcode::Cmp
+        | Opcode::Dsx
+        | Opcode::Dsy
+        | Opcode::Frc
+        | Opcode::Lrp
+        | Opcode::Mad
+        | Opcode::Max
+        | Opcode::Min
+        | Opcode::Mov
+        | Opcode::Mul
+        | Opcode::Sub => match src.iter().position(|s| !s.swizzle.is_replicate()) {
+            Some(k) => Err(Diagnostic::coded(
+                codes::DEPTH_REPLICATE,
+                ast.operands.get(k + 1).map_or(ast.span, |o| o.span()),
+                format!("`{mnemonic}` writing oDepth must select one component of each source"),
+            )
+            .with_label("needs a replicate swizzle (.x, .y, .z or .w)")),
+            None => Ok(()),
+        },
+        _ => Ok(()),
     }
 }
 
@@ -593,8 +698,10 @@ fn operand_rules(op: Opcode, dst: Option<&Dst>, src: &[Src], ast: &InstrAst) -> 
             rules.matrix(rows)?;
         }
         Opcode::Nrm => {
+            rules.mask_must_be(&[0b0111, 0b1111], ".xyz or .xyzw")?;
             rules.not_aliased(&[0], "its source")?;
         }
+        Opcode::Dsx | Opcode::Dsy => rules.no_source_modifier()?,
         Opcode::Pow => {
             rules.not_aliased(&[1], "its exponent source")?;
         }
@@ -663,6 +770,7 @@ impl Rules<'_> {
             let code = match self.mnemonic {
                 "sincos" => codes::SINCOS_MASK,
                 "crs" => codes::CRS_MASK,
+                "nrm" => codes::NRM_MASK,
                 _ => codes::MATRIX_MASK,
             };
             return Err(Diagnostic::coded(
@@ -682,10 +790,28 @@ impl Rules<'_> {
         Ok(())
     }
 
-    /// `crs`: a temporary within .xyz, unswizzled sources, neither of them
+    /// `dsx` / `dsy`: the rate of change of a source as written, without
+    /// `-` or `_abs` (Microsoft refuses them, X5690).
+    fn no_source_modifier(&self) -> R<()> {
+        match self.src.iter().position(|s| s.modifier != SrcMod::None) {
+            Some(i) => Err(Diagnostic::coded(
+                codes::GRADIENT_MODIFIER,
+                self.span(i + 1),
+                format!("`{}` takes no `-` or `_abs` on its source", self.mnemonic),
+            )
+            .with_label("modifier not allowed here")
+            .with_help("apply the modifier to the result instead")),
+            None => Ok(()),
+        }
+    }
+
+    /// `crs`: a temporary (or oC#) within .xyz, unswizzled sources, neither of them
     /// the destination.
     fn crs(&self) -> R<()> {
-        self.need_temp()?;
+        // Microsoft's validator also lets crs write a colour output.
+        if self.d.reg.file != RegFile::ColorOut {
+            self.need_temp()?;
+        }
         self.mask_must_be(
             &[0b0001, 0b0010, 0b0100, 0b0011, 0b0101, 0b0110, 0b0111],
             "within .xyz",
@@ -957,17 +1083,17 @@ fn destination(r: &RegAst, kind: Operand) -> R<Dst> {
             return Err(Diagnostic::coded(
                 codes::TEXKILL_DEPTH,
                 r.span,
-                "texkill takes a temporary r# or an input v#, not oDepth",
+                "texkill takes a temporary r#, an input v# or a colour output oC#, not oDepth",
             )
-            .with_label("expected r# or v#"));
+            .with_label("expected r#, v# or oC#"));
         }
-        if !matches!(reg.file, RegFile::Temp | RegFile::Input) {
+        if !matches!(reg.file, RegFile::Temp | RegFile::Input | RegFile::ColorOut) {
             return Err(Diagnostic::coded(
                 codes::DESTINATION,
                 r.span,
-                "texkill takes a temporary r# or an input v#",
+                "texkill takes a temporary r#, an input v# or a colour output oC#",
             )
-            .with_label("expected r# or v#"));
+            .with_label("expected r#, v# or oC#"));
         }
     } else if !reg.file.info().writable {
         return Err(Diagnostic::coded(
@@ -1039,6 +1165,14 @@ fn float_source(r: &RegAst) -> R<Src> {
             .with_label("not a float source")
             .with_help("float sources are r#, v#, c#, vPos and vFace"))
         }
+    }
+    if let (RegFile::Face, Some((_, span))) = (reg.file, &r.components) {
+        return Err(Diagnostic::coded(
+            codes::SCALAR,
+            *span,
+            "vFace is a scalar register: no swizzle",
+        )
+        .with_label("remove the swizzle"));
     }
     if r.not {
         return Err(Diagnostic::coded(
@@ -1223,6 +1357,11 @@ fn lower_dcl(ast: &InstrAst) -> R<Lowered> {
         .with_label("e.g. dcl_texcoord0 v0.xy")
         .with_help("write dcl_<usage><index> v#, such as dcl_texcoord0 v0 or dcl_color0 v1")),
         (RegFile::Position | RegFile::Face, None) => pos_face_decl(r, reg, &m),
+        // Microsoft's assembler takes a usage on vPos (`dcl_texcoord0
+        // vPos.xy`) and declares vPos; `dcl_position0 vPos` it refuses.
+        (RegFile::Position, Some((k, _))) if !k.starts_with("position") => {
+            pos_face_decl(r, reg, &m)
+        }
         (RegFile::Position | RegFile::Face, Some((_, span))) => Err(Diagnostic::error(
             span,
             "vPos and vFace are declared with plain `dcl`",
@@ -1369,6 +1508,26 @@ fn input_decl(r: &RegAst, reg: Reg, (k, span): (&str, Span), m: &DclSuffixes) ->
                 .with_label("0 … 15"),
         );
     }
+    // Microsoft refuses these usages in a pixel shader: positiont and psize
+    // at index 0 only (positiont15 and psize15 it takes), sample and
+    // tessfactor at every index.
+    let first = usage_index == 0;
+    let refused = match name {
+        "positiont" if first => Some(codes::DCL_POSITIONT),
+        "psize" if first => Some(codes::DCL_PSIZE),
+        "tessfactor" => Some(codes::DCL_TESSFACTOR),
+        "sample" => Some(codes::DCL_SAMPLE),
+        _ => None,
+    };
+    if let Some(code) = refused {
+        return Err(Diagnostic::coded(
+            code,
+            span,
+            format!("`{k}` is a vertex-pipeline usage: a pixel shader cannot declare it"),
+        )
+        .with_label("not a pixel shader input")
+        .with_help("declare the value as a texcoord# input instead"));
+    }
     // Not in Microsoft's dcl_usage page, but Windows' runtime
     // refuses it: Wine's dlls/d3d9/tests/visual.c,
     // test_position_index, expects D3DERR_INVALIDCALL from
@@ -1396,6 +1555,14 @@ fn input_decl(r: &RegAst, reg: Reg, (k, span): (&str, Span), m: &DclSuffixes) ->
 /// `dcl vPos.xy` / `dcl vFace`.
 fn pos_face_decl(r: &RegAst, reg: Reg, m: &DclSuffixes) -> R<Lowered> {
     let mask = write_mask(r)?;
+    if reg.file == RegFile::Position && (m.centroid || m.pp) {
+        return Err(Diagnostic::coded(
+            codes::VPOS_MODIFIER,
+            r.span,
+            "vPos is declared without `_centroid` or `_pp`",
+        )
+        .with_label("the pixel position takes no modifier"));
+    }
     if reg.file == RegFile::Position && !matches!(mask.0, 1..=3) {
         return Err(Diagnostic::coded(
             codes::VPOS_MASK,

@@ -542,7 +542,13 @@ impl<'p, 'd> Checker<'p, 'd> {
                     .filter(|d| d.reg.file == file && d.reg.index == index)
                     .fold(0u8, |m, d| m | d.mask.0);
                 let missing = need & !declared;
-                if declared == 0 || missing == 0 {
+                // A register named as an operand and never declared is
+                // reported by check_declared; the other rows a matrix
+                // instruction reads (m3x3 r0.xyz, r1, v0 reads v0 … v2)
+                // are reported here.
+                let named = ins.src.iter().any(|s| s.reg == Reg { file, index })
+                    || ins.dst.is_some_and(|d| d.reg == Reg { file, index });
+                if missing == 0 || (declared == 0 && named) {
                     continue;
                 }
                 let name = Reg { file, index };
