@@ -952,7 +952,10 @@ pub fn resolve_reg(r: &RegAst) -> R<Reg> {
         }
         (false, None, _) => 0,
     };
-    if index >= info.count as u64 {
+    // A relative input's number is a base (`v10[aL]`, as Microsoft's
+    // listing writes `v[aL + 10]`), checked where the offset is added.
+    let relative_base = r.relative.is_some() && file == RegFile::Input;
+    if index >= info.count as u64 && !relative_base {
         return Err(Diagnostic::coded(
             codes::REGISTER,
             r.name_span,
