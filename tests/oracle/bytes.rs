@@ -152,6 +152,8 @@ fn asm_bytecode_is_microsofts() {
                     problems.push(format!("{}: {d}", f.name()));
                 }
             }
+            // A known gap is refused (tests/oracle.rs says why).
+            Err(_) if known_gap(&f.name()) => {}
             Err(e) => problems.push(format!("{}: {e}", f.name())),
         }
     }

@@ -94,7 +94,8 @@ fn the_microsoft_count_is_the_listings_slot_line() {
             &want,
             &mut mismatches,
         );
-        if f.set == "asm" {
+        // A known gap's source is refused by ps30 (tests/oracle.rs says why).
+        if f.set == "asm" && !known_gap(&name) {
             compare(
                 &format!("{name} (source)"),
                 ps30_count(&name, &f.source),
