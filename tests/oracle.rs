@@ -74,10 +74,6 @@ pub const KNOWN_GAPS: &[(&str, &str)] = &[
         "`#define`: Microsoft's assembler runs a C preprocessor before it reads a line; ps30 has none",
     ),
     (
-        "asm/ops/m3x2/src1-vPos.psh",
-        "two faults in one instruction: Microsoft names vPos's missing .z first (X6063), ps30 the matrix rows past the register file (X5684)",
-    ),
-    (
         "asm/ops/regs/index/space-index.psh",
         "`c 1`: Microsoft's lexer calls `c` an invalid register (X2005), ps30's parser the line a syntax error (X2000)",
     ),

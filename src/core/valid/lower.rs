@@ -860,6 +860,18 @@ impl Rules<'_> {
             )
             .with_label("overlaps the matrix"));
         }
+        // Every row is read as .xyz or .xyzw, and vPos has only .x and .y.
+        // Microsoft's validator sees vPos and vFace as the two registers of
+        // one file (misc 0 and 1 in the token): rows past those two are out
+        // of range first (m3x3 vPos), two rows fail on vPos's .z (m3x2).
+        if m.reg.file == RegFile::Position && rows <= 2 {
+            return Err(Diagnostic::coded(
+                codes::VPOS_ZW,
+                self.span(2),
+                format!("`{mnemonic}` reads .z of every matrix row, and vPos has no .z"),
+            )
+            .with_label("vPos has only .x and .y"));
+        }
         if m.reg.index + rows > m.reg.file.info().count {
             return Err(Diagnostic::coded(
                 codes::MATRIX_RANGE,
