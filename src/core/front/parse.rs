@@ -884,6 +884,29 @@ impl<'a> Cursor<'a> {
             })?),
             None => None,
         };
+        // `c 1`: Microsoft's lexer reads the letters alone as a register
+        // name, and refuses it as one (X2005), before any syntax error.
+        let spaced_number = self
+            .rest
+            .trim_start_matches([' ', '\t'])
+            .starts_with(|c: char| c.is_ascii_digit());
+        let numbered = crate::core::isa::RegFile::lookup(name).is_some_and(|f| f.info().numbered);
+        if digits.is_none() && numbered && spaced_number && self.rest.starts_with([' ', '\t']) {
+            return Err(Diagnostic::coded(
+                codes::REGISTER,
+                name_span,
+                format!("`{name}` is no register: its number goes right after the letters"),
+            )
+            .with_label("a space between the letters and the number")
+            .with_help(format!(
+                "write {name}{}",
+                self.rest
+                    .trim_start()
+                    .chars()
+                    .take_while(char::is_ascii_digit)
+                    .collect::<String>()
+            )));
+        }
         let relative = if self.rest.starts_with('[') {
             Some(self.relative()?)
         } else {
