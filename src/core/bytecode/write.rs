@@ -21,7 +21,7 @@ use crate::core::front::ast::{InstrAst, OperandAst, RegAst, Stmt};
 use crate::core::front::repeat::Expanded;
 use crate::core::ir::{Reg, Span, SrcMod};
 use crate::core::isa::{Class, Compare, Opcode, Operand, USAGES};
-use crate::core::valid::lower::{resolve_reg, swizzle, write_mask};
+use crate::core::valid::register::{resolve_reg, swizzle, write_mask};
 use std::collections::HashMap;
 
 type R<T> = Result<T, Diagnostic>;

@@ -15,6 +15,7 @@
 pub mod gradient;
 pub mod init;
 pub mod lower;
+pub mod register;
 
 use crate::core::diag::{codes, Diagnostic, Diagnostics, SourceFile};
 use crate::core::front::ast::Stmt;
