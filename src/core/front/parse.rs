@@ -891,7 +891,7 @@ impl<'a> Cursor<'a> {
             .trim_start_matches([' ', '\t'])
             .starts_with(|c: char| c.is_ascii_digit());
         let numbered = crate::core::isa::RegFile::lookup(name).is_some_and(|f| f.info().numbered);
-        if digits.is_none() && numbered && spaced_number && self.rest.starts_with([' ', '\t']) {
+        if digits.is_none() && numbered && spaced_number {
             return Err(Diagnostic::coded(
                 codes::REGISTER,
                 name_span,

@@ -241,7 +241,8 @@ fn over_cap(top: &[Node], stmts: &[Stmt], total: Size, cap: u64) -> Option<Diagn
                 span,
                 format!(
                     "the file has {} statements, over the cap of {cap}{}",
-                    total.statements, COMMENT_NOTE
+                    total.statements,
+                    comment_note()
                 ),
             )
             .with_label("the first statement past the cap")
@@ -264,7 +265,8 @@ fn over_cap(top: &[Node], stmts: &[Stmt], total: Size, cap: u64) -> Option<Diagn
             Diagnostic::error(
                 culprit(|s| s.statements),
                 format!(
-                    "REPEAT_BLOCK expansion would produce {n} statements, over the cap of {cap}{COMMENT_NOTE}"
+                    "REPEAT_BLOCK expansion would produce {n} statements, over the cap of {cap}{}",
+                    comment_note()
                 ),
             )
             .with_label("this block expands too far")
@@ -286,7 +288,9 @@ fn over_cap(top: &[Node], stmts: &[Stmt], total: Size, cap: u64) -> Option<Diagn
 }
 
 /// How the cap's messages say that comment blocks weigh their tokens.
-const COMMENT_NOTE: &str = " (a kept comment block counts one per 6 tokens)";
+fn comment_note() -> String {
+    format!(" (a kept comment block counts one per {COMMENT_TOKENS_PER_STATEMENT} tokens)")
+}
 
 fn resolve(count: &Count, defines: &BTreeMap<String, u64>) -> Result<u32, Diagnostic> {
     let (value, span) = match count {
