@@ -68,10 +68,7 @@ impl Fixture {
 /// The corpus files on which ps30 still disagrees with Microsoft, each with
 /// the reason: the tests hold everything else to Microsoft's answer, and
 /// each of these to still disagreeing (a fix removes its line here).
-pub const KNOWN_GAPS: &[(&str, &str)] = &[(
-    "asm/rules/syntax/ok_preprocessor_define.psh",
-    "`#define`: Microsoft's assembler runs a C preprocessor before it reads a line; ps30 has none",
-)];
+pub const KNOWN_GAPS: &[(&str, &str)] = &[];
 
 /// Whether `SET/REL` is one of [`KNOWN_GAPS`].
 pub fn known_gap(name: &str) -> bool {

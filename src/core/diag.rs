@@ -277,6 +277,18 @@ impl Diagnostic {
         Diagnostic::error(span, message).with_code(code)
     }
 
+    /// Every span of the diagnostic replaced by `f` of it (the
+    /// preprocessor's map from the text it wrote back to the source).
+    pub fn map_spans(&mut self, f: &dyn Fn(Span) -> Span) {
+        self.span = f(self.span);
+        for (span, _) in &mut self.secondary {
+            *span = f(*span);
+        }
+        for span in &mut self.also {
+            *span = f(*span);
+        }
+    }
+
     /// With Microsoft's code for the same refusal.
     pub fn with_code(mut self, code: codes::Code) -> Diagnostic {
         self.code = Some(code);

@@ -17,8 +17,37 @@ pub type Code = &'static str;
 pub const UNCLOSED_COMMENT: Code = "X1001";
 /// "decimal value truncated to 64 bits".
 pub const NUMBER_TOO_LONG: Code = "X1004";
+/// "syntax error" in a preprocessor directive or `#if` expression.
+pub const PREPROCESSOR_SYNTAX: Code = "X1500";
+/// "unexpected end of file" (an `#if` never closed).
+pub const PREPROCESSOR_EOF: Code = "X1502";
+/// "division by zero in preprocessor expression".
+pub const PREPROCESSOR_DIVIDE_BY_ZERO: Code = "X1503";
 /// "invalid preprocessor command".
 pub const PREPROCESSOR: Code = "X1504";
+/// "No include handler specified, can't perform a #include".
+pub const INCLUDE: Code = "X1505";
+/// "unexpected #elif" (no `#if` open).
+pub const UNEXPECTED_ELIF: Code = "X1508";
+/// "unexpected #else" (no `#if` open).
+pub const UNEXPECTED_ELSE: Code = "X1509";
+/// "unexpected #endif" (no `#if` open).
+pub const UNEXPECTED_ENDIF: Code = "X1510";
+/// "duplicate macro parameter".
+pub const MACRO_PARAMETER_TWICE: Code = "X1511";
+/// "unexpected #elif following #else".
+pub const ELIF_AFTER_ELSE: Code = "X1513";
+/// "unexpected #else following #else".
+pub const ELSE_AFTER_ELSE: Code = "X1514";
+/// "unexpected end of file in macro expansion" (a call's `(` never closed).
+pub const MACRO_CALL_UNCLOSED: Code = "X1515";
+/// "not enough actual parameters for macro" (Microsoft says so for too
+/// many as well).
+pub const MACRO_ARGUMENTS: Code = "X1516";
+/// "macro redefinition" (a warning).
+pub const MACRO_REDEFINED: Code = "X1519";
+/// "unknown pragma ignored" (a warning).
+pub const UNKNOWN_PRAGMA: Code = "X3568";
 
 // --- the assembler's grammar ------------------------------------------------
 /// "syntax error : unexpected token": an unknown mnemonic or modifier, a

@@ -44,6 +44,42 @@ pub enum Stmt {
     },
 }
 
+impl Stmt {
+    /// Every span of the statement replaced by `f` of it (the
+    /// preprocessor's map from the text it wrote back to the source).
+    pub fn map_spans(&mut self, f: &dyn Fn(Span) -> Span) {
+        match self {
+            Stmt::Version { span, .. } | Stmt::RepeatEnd { span } | Stmt::Comment { span, .. } => {
+                *span = f(*span)
+            }
+            Stmt::RepeatBegin { count, span } => {
+                *span = f(*span);
+                match count {
+                    Count::Literal { span, .. } | Count::Name { span, .. } => *span = f(*span),
+                }
+            }
+            Stmt::Instr(i) => {
+                i.base_span = f(i.base_span);
+                i.span = f(i.span);
+                for (_, span) in &mut i.suffixes {
+                    *span = f(*span);
+                }
+                if let Some(p) = &mut i.predicate {
+                    p.map_spans(f);
+                }
+                for op in &mut i.operands {
+                    match op {
+                        OperandAst::Reg(r) => r.map_spans(f),
+                        OperandAst::Number { span, .. } | OperandAst::Bool { span, .. } => {
+                            *span = f(*span)
+                        }
+                    }
+                }
+            }
+        }
+    }
+}
+
 /// A REPEAT_BLOCK count: a literal or a name bound with `-D name=value`.
 #[derive(Clone, Debug, PartialEq)]
 #[allow(missing_docs)] // value, name, span: as written, and where
@@ -137,6 +173,22 @@ pub struct RegAst {
     pub components: Option<(CompactString, Span)>,
     /// The whole operand.
     pub span: Span,
+}
+
+impl RegAst {
+    fn map_spans(&mut self, f: &dyn Fn(Span) -> Span) {
+        self.name_span = f(self.name_span);
+        self.span = f(self.span);
+        if let Some((_, span)) = &mut self.components {
+            *span = f(*span);
+        }
+        if let Some(rel) = &mut self.relative {
+            rel.span = f(rel.span);
+            if let Some(s) = &mut rel.index_swizzle {
+                *s = f(*s);
+            }
+        }
+    }
 }
 
 /// `[aL + n + m]` after a register name.

@@ -11,6 +11,7 @@
 //! and all errors are returned together.
 
 use super::ast::{CompactString, Count, InstrAst, OperandAst, RegAst, RelAst, Stmt};
+use super::preprocess;
 use crate::core::diag::{codes, excerpt, Diagnostic, Diagnostics};
 use crate::core::ir::Span;
 use nom::branch::alt;
@@ -31,7 +32,31 @@ const MAX_RESERVED_STATEMENTS: usize = 1 << 12;
 pub fn parse(text: &str) -> (Vec<Stmt>, Diagnostics) {
     let mut diags = Diagnostics::default();
     let blanked = blank(text, &mut diags);
-    let text: &str = &blanked;
+    if !preprocess::needed(&blanked) {
+        let (stmts, more) = parse_lines(&blanked);
+        diags.extend(more);
+        return (stmts, diags);
+    }
+    // Microsoft's assembler reads what its preprocessor writes; ps30 reads
+    // the same text, and puts every place back where the source has it.
+    let (pre, pre_diags) = preprocess::preprocess(&blanked);
+    let (mut stmts, more) = parse_lines(&pre.text);
+    let to_source = |span: Span| pre.span(span);
+    for stmt in &mut stmts {
+        stmt.map_spans(&to_source);
+    }
+    diags.extend(pre_diags);
+    for mut d in more.items {
+        d.map_spans(&to_source);
+        diags.push(d);
+    }
+    (stmts, diags)
+}
+
+/// The statements of text that needs no preprocessing (comments blanked),
+/// and the diagnostics of every line that did not parse.
+fn parse_lines(text: &str) -> (Vec<Stmt>, Diagnostics) {
+    let mut diags = Diagnostics::default();
     // At most one statement per line: room for them at once rather than
     // copying the list as it grows (capped, so a file of empty lines does
     // not reserve room it will not use).
@@ -625,9 +650,9 @@ impl<'a> Cursor<'a> {
             }
             if self.rest.starts_with('#') {
                 return Err(self
-                    .error_here("preprocessor directives are not supported")
+                    .error_here("a `#` where an instruction goes")
                     .with_code(codes::PREPROCESSOR)
-                    .with_help("ps30 reads assembly without a preprocessor: expand #define and #include first, and write comments with // or ;"));
+                    .with_help("a directive (#define, #if, …) stands at the start of its own line; write comments with // or ;"));
             }
             return Err(self
                 .error_here(format!("expected an instruction, {}", self.found()))
@@ -884,6 +909,24 @@ impl<'a> Cursor<'a> {
             })?),
             None => None,
         };
+        // `c0S`: Microsoft's lexer reads a whole word as the register's
+        // name, and refuses it as one (X2005).
+        if digits.is_some() && self.rest.starts_with(|c: char| c.is_ascii_alphanumeric()) {
+            let tail = self
+                .eat(take_while(|c: char| c.is_ascii_alphanumeric()))
+                .unwrap_or_default();
+            let span = self.span_from(nstart);
+            return Err(Diagnostic::coded(
+                codes::REGISTER,
+                span,
+                format!(
+                    "`{name}{}{tail}` is no register",
+                    digits.unwrap_or_default()
+                ),
+            )
+            .with_label("letters after the register's number")
+            .with_help("a swizzle or write mask goes after a `.`, e.g. r0.xy"));
+        }
         // `c 1`: Microsoft's lexer reads the letters alone as a register
         // name, and refuses it as one (X2005), before any syntax error.
         let spaced_number = self
@@ -1107,8 +1150,18 @@ pub fn is_version_line(s: &str) -> bool {
 /// line of it would bury the one thing to fix. `None` when the first
 /// statement is a version line (of any shader model; validation judges it).
 pub fn missing_version(text: &str) -> Option<Diagnostic> {
-    missing_version_of(&blank(text, &mut Diagnostics::default()))
-        .map(|d| d.with_code(codes::VERSION))
+    let blanked = blank(text, &mut Diagnostics::default());
+    let missing = if preprocess::needed(&blanked) {
+        // The version line may come from a macro, or sit below directives.
+        let (pre, _) = preprocess::preprocess(&blanked);
+        missing_version_of(&pre.text).map(|mut d| {
+            d.map_spans(&|span| pre.span(span));
+            d
+        })
+    } else {
+        missing_version_of(&blanked)
+    };
+    missing.map(|d| d.with_code(codes::VERSION))
 }
 
 fn missing_version_of(text: &str) -> Option<Diagnostic> {
