@@ -149,7 +149,7 @@ impl Tok {
 }
 
 /// Splits `text` (a piece of the source at byte `base`) into tokens; a
-/// `;` or `//` comment is one token to the end.
+/// `;` or `//` comment is one token to the end of its line.
 fn lex(text: &str, base: usize, out: &mut Vec<Tok>) {
     let bytes = text.as_bytes();
     let mut i = 0;
@@ -157,7 +157,7 @@ fn lex(text: &str, base: usize, out: &mut Vec<Tok>) {
         let c = bytes[i];
         let rest = &text[i..];
         let (kind, len) = if c == b';' || rest.starts_with("//") {
-            (Kind::Comment, rest.len())
+            (Kind::Comment, rest.find('\n').unwrap_or(rest.len()))
         } else if c == b'\n' {
             (Kind::Newline, 1)
         } else if matches!(c, b' ' | b'\t' | b'\r') {
@@ -835,5 +835,28 @@ mod tests {
     fn stringize_and_paste() {
         let (pre, _) = run("#define S(a) #a\n#define P(a, b) a ## b\nS( x   y )\nP(r, 1)\n");
         assert_eq!(pre.text, "\n\n\"x y\"\nr1\n");
+    }
+
+    proptest::proptest! {
+        /// Any text of directives, macro calls and punctuation: no panic,
+        /// the source's line count kept, every mapped place inside the
+        /// source.
+        #[test]
+        fn any_text_keeps_lines_and_maps_inside(parts in proptest::collection::vec(proptest::sample::select(vec![
+            "#define A B\n", "#define B(x) x##x A\n", "#define C(a,b) #a b\n", "#if A\n", "#if 1/0\n",
+            "#ifdef B\n", "#elif 1\n", "#else\n", "#endif\n", "#undef A\n", "#error e\n", "#\n",
+            "#include x\n", "A", "B(", "C(", ")", ",", "(", " ", "\\\n", "\n", "; c\n", "mov r0, c0",
+            "__LINE__", "##", "#", "'a'", "\"s\"", "é",
+        ]), 0..60)) {
+            let src: String = parts.concat();
+            let (pre, _) = preprocess(&src);
+            proptest::prop_assert_eq!(pre.text.matches('\n').count(), src.matches('\n').count());
+            for i in 0..=pre.text.len() {
+                for j in [i, (i + 3).min(pre.text.len())] {
+                    let s = pre.span(Span::new(i, j));
+                    proptest::prop_assert!(s.start <= s.end && s.end as usize <= src.len() + 1, "{:?}", s);
+                }
+            }
+        }
     }
 }
