@@ -1113,8 +1113,13 @@ fn texkill_discards_pixels_that_keep_running() {
 }
 
 #[test]
-fn texkill_ignores_w_and_kills_everything() {
+fn texkill_tests_w_and_kills_everything() {
+    // ps_2_0 and later kill on any of x, y, z, w below zero: w alone kills.
     let c = compiled("def c0, 1, 1, 1, -1\nmov r0, c0\ntexkill r0\nmov oC0, r0");
+    let out = run(&c, &Draw::new(1, 1)).unwrap();
+    assert_eq!(out.killed, vec![true]);
+    // ... unless the operand's mask leaves w out.
+    let c = compiled("def c0, 1, 1, 1, -1\nmov r0, c0\ntexkill r0.xyz\nmov oC0, r0");
     let out = run(&c, &Draw::new(1, 1)).unwrap();
     assert_eq!(out.killed, vec![false]);
     let c = compiled("def c0, 1, -1, 1, 1\nmov r0, c0\ntexkill r0\nmov oC0, r0");

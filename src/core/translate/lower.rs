@@ -664,8 +664,8 @@ impl Lower<'_> {
         Ok(())
     }
 
-    /// `texkill`: the pixel is marked killed if any of the masked x, y, z
-    /// is below zero; it keeps running (D3D9 only flags it, and the
+    /// `texkill`: the pixel is marked killed if any of the masked x, y, z,
+    /// w is below zero (ps_2_0 and later test all four, as `emu/arith.rs`); it keeps running (D3D9 only flags it, and the
     /// emulator keeps it as a neighbour for gradients) and is discarded at
     /// the end.
     fn texkill(&mut self, ins: &Instruction) -> Result<(), TranslateError> {
@@ -675,7 +675,7 @@ impl Lower<'_> {
         let v = self.reg(d.reg, false)?;
         let zero = self.fb.f32(0.0);
         let mut any: Option<Expr> = None;
-        for c in 0..3 {
+        for c in 0..4 {
             if !d.mask.has(c) {
                 continue;
             }
