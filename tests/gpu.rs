@@ -522,6 +522,51 @@ fn texkill_several_outputs_and_depth() {
     assert_eq!(e.depth, o.depth);
 }
 
+/// Non-finite constants from a `def` (rebuilt from their bits by the
+/// translation) and from the application, and `texkill` on `.w` alone, on
+/// both backends. Expected by hand: rcp(+inf) = +0 and rcp(+0) = +inf
+/// (`rcp` page: 1/0 = +inf), rcp(-inf) = -0 and rcp(-0) = -inf; a NaN
+/// moved through survives as a NaN; w = -1 kills every pixel of the second
+/// draw.
+#[test]
+fn non_finite_constants_and_texkill_on_w() {
+    let Some(g) = gpu("non_finite_constants_and_texkill_on_w") else {
+        return;
+    };
+    let s = shader(
+        "ps_3_0
+def c1, 1.#INF, -1.#INF, -1.#IND, 1
+rcp r0.x, c0.x
+rcp r0.y, r0.x
+rcp r0.z, c1.y
+rcp r0.w, r0.z
+mov oC0, r0
+mov oC1, c1
+mov oC2, c0
+",
+    );
+    let mut d = Draw::new(2, 2);
+    d.constants.float = vec![[f32::INFINITY, f32::NAN, f32::from_bits(0x7f80_0001), -0.0]];
+    let (e, o) = both(&g, &s, &d, TargetKind::Raw);
+    let want0 = [0.0, f32::INFINITY, -0.0, f32::NEG_INFINITY];
+    for out in [&e.color, &o.color] {
+        for px in out[0].as_ref().unwrap() {
+            for c in 0..4 {
+                assert_eq!(px[c].to_bits(), want0[c].to_bits(), "oC0.{c}: {px:?}");
+            }
+        }
+        let c1 = out[1].as_ref().unwrap()[0];
+        assert_eq!((c1[0], c1[1], c1[3]), (f32::INFINITY, f32::NEG_INFINITY, 1.0));
+        assert!(c1[2].is_nan());
+        let c0 = out[2].as_ref().unwrap()[0];
+        assert!(c0[0] == f32::INFINITY && c0[1].is_nan() && c0[2].is_nan());
+    }
+    let s = shader("ps_3_0\ndef c0, 1, 1, 1, -1\nmov r0, c0\ntexkill r0\nmov oC0, r0\n");
+    let (e, o) = both(&g, &s, &Draw::new(2, 2), TargetKind::Raw);
+    assert_eq!(e.killed, vec![true; 4]);
+    assert_eq!(o.killed, vec![true; 4]);
+}
+
 /// A draw prepared once (pipeline compiled, targets allocated) and drawn
 /// three times gives `run`'s output every time: killed pixels, both
 /// colours bit for bit, depth.

@@ -127,7 +127,7 @@ fn const_values<T>(
 
 /// `cN=X[,Y,Z,W]` or `NAME=X,…`.
 pub fn parse_float_const(s: &str) -> Result<(ConstRef, Vec<f32>), String> {
-    const_values(s, 'c', 224, 4, parse_finite)
+    const_values(s, 'c', 224, 4, ps30::core::numbers::parse_constant)
 }
 
 /// `iN=X[,Y,Z,W]` or `NAME=X,…`.
@@ -302,7 +302,8 @@ pub struct InputArgs {
 #[derive(Args)]
 pub struct ConstantArgs {
     /// Float constant set by the application, by register or by its name in the
-    /// shader's constant table, e.g. --const c3=0.27,0.67,0.06,0.01.
+    /// shader's constant table, e.g. --const c3=0.27,0.67,0.06,0.01. Any 32-bit
+    /// pattern, as Direct3D 9 takes it: inf, -inf, nan or bits (0x7f800000).
     #[arg(long = "const", value_name = "cN|NAME=X[,Y,Z,W]", value_parser = parse_float_const)]
     pub floats: Vec<(ConstRef, Vec<f32>)>,
     /// Integer constant set by the application, by register or by its name in the

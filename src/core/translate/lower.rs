@@ -114,6 +114,17 @@ impl Lower<'_> {
             }
             RegFile::Const => match cx.float_defs.get(&reg.index) {
                 Some(&c) => fb.add(Expression::Constant(c)),
+                None if cx.float_def_bits.contains_key(&reg.index) => {
+                    let bits = cx.float_def_bits[&reg.index];
+                    let components = bits.map(|b| fb.u32(b)).to_vec();
+                    let ty = cx.t.uvec4;
+                    let u = fb.add(Expression::Compose { ty, components });
+                    fb.add(Expression::As {
+                        expr: u,
+                        kind: naga::ScalarKind::Float,
+                        convert: None,
+                    })
+                }
                 None => {
                     let c = cx.block(fb, 0);
                     let p = fb.index(c, reg.index);

@@ -32,7 +32,8 @@
 //!   * `{"draw": TARGET, "shader": …, …}` — `shader` is a bundled name or a
 //!     file; `defines` (REPEAT_BLOCK counts), `inputs` (`"v0": "texcoord"` for
 //!     pixel centres in [0, 1], or `{"base": […], "ddx": […], "ddy": […]}`),
-//!     `constants` (`"c5": [x, y, z, w]`), `ints`, `bools`, `samplers`
+//!     `constants` (`"c5": [x, y, z, w]`, a component a number or a string
+//!     for any bit pattern: `"inf"`, `"-inf"`, `"nan"`, `"0x7f800000"`), `ints`, `bools`, `samplers`
 //!     (`"s0": {"texture": NAME, "filter": "point"|"linear", "mip":
 //!     "none"|"point"|"linear", "address": "wrap"|"mirror"|"clamp"|"border"|
 //!     "mirroronce", "border": [r, g, b, a], "lod_bias": B, "max_mip_level":
@@ -138,7 +139,7 @@ struct FileStep {
     shader: Option<String>,
     defines: Option<BTreeMap<String, u64>>,
     inputs: Option<BTreeMap<String, FileInput>>,
-    constants: Option<BTreeMap<String, Vec<f64>>>,
+    constants: Option<BTreeMap<String, Vec<super::floats::FileFloat>>>,
     ints: Option<BTreeMap<String, Vec<i32>>>,
     bools: Option<BTreeMap<String, bool>>,
     samplers: Option<BTreeMap<String, FileSampler>>,
@@ -695,7 +696,7 @@ impl Resolver {
         for (name, v) in s.constants.iter().flatten() {
             let field = format!("{at}.constants.{name}");
             let reg = register(name, 'c', 224).map_err(|m| self.err(&field, m))?;
-            let value = vec4(v).map_err(|m| self.err(&field, m))?;
+            let value = super::floats::constant4(v).map_err(|m| self.err(&field, m))?;
             set(&mut c.float, [0.0; 4], reg, value);
         }
         for (name, v) in s.ints.iter().flatten() {

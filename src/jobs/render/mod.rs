@@ -19,6 +19,7 @@
 //! intermediate target without the runner keeping copies.
 
 pub mod file;
+mod floats;
 
 use crate::core::cost::{self, Profile, Range};
 use crate::core::emu::{
