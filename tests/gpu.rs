@@ -273,8 +273,8 @@ mov oC2, r3
         }
         let e1 = e.color[1].as_ref().unwrap();
         let mul_inf_zero = e1[2][3];
-        if rules == FloatRules::D3d9ZeroMul {
-            assert_eq!(mul_inf_zero, 0.0, "0 × ∞ under d3d9-zero-mul");
+        if rules.zero_mul() {
+            assert_eq!(mul_inf_zero, 0.0, "0 × ∞ under {rules}");
         } else {
             assert!(mul_inf_zero.is_nan(), "{rules}: 0 × ∞ is NaN");
         }
@@ -556,7 +556,10 @@ mov oC2, c0
             }
         }
         let c1 = out[1].as_ref().unwrap()[0];
-        assert_eq!((c1[0], c1[1], c1[3]), (f32::INFINITY, f32::NEG_INFINITY, 1.0));
+        assert_eq!(
+            (c1[0], c1[1], c1[3]),
+            (f32::INFINITY, f32::NEG_INFINITY, 1.0)
+        );
         assert!(c1[2].is_nan());
         let c0 = out[2].as_ref().unwrap()[0];
         assert!(c0[0] == f32::INFINITY && c0[1].is_nan() && c0[2].is_nan());
@@ -565,6 +568,39 @@ mov oC2, c0
     let (e, o) = both(&g, &s, &Draw::new(2, 2), TargetKind::Raw);
     assert_eq!(e.killed, vec![true; 4]);
     assert_eq!(o.killed, vec![true; 4]);
+}
+
+/// The `hardware` rules on both backends, expected by hand: a denormal
+/// constant (2^-149) reads as 0, 2^-126 × 0.5 = 2^-127 is written as 0,
+/// 0 × inf = 0 (the constants come from the application, so no compiler
+/// can fold them).
+#[test]
+fn hardware_rules_flush_denormals_on_both_backends() {
+    let Some(g) = gpu("hardware_rules_flush_denormals_on_both_backends") else {
+        return;
+    };
+    let s = shader(
+        "ps_3_0
+mov r0.x, c0.x
+mov r1, c1
+mul r0.y, c0.y, r1.x
+mul r0.z, c0.z, c0.w
+mov r0.w, c1.x
+mov oC0, r0
+",
+    );
+    let mut d = Draw::new(2, 2);
+    d.float_rules = FloatRules::Hardware;
+    d.constants.float = vec![
+        [f32::from_bits(1), f32::MIN_POSITIVE, f32::INFINITY, 0.0],
+        [0.5, 0.0, 0.0, 0.0],
+    ];
+    let (e, o) = both(&g, &s, &d, TargetKind::Raw);
+    for out in [&e.color, &o.color] {
+        for px in out[0].as_ref().unwrap() {
+            assert_eq!(px.map(f32::to_bits), [0, 0, 0, 0.5f32.to_bits()]);
+        }
+    }
 }
 
 /// A draw prepared once (pipeline compiled, targets allocated) and drawn

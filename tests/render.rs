@@ -34,6 +34,7 @@ fn each_draw_alone(list: &DrawList) -> Vec<Vec<[f32; 4]>> {
                 steps: vec![Step::Draw(DrawStep {
                     target: 0,
                     output: OutputState::default(),
+                    pixel: Default::default(),
                     ..d.clone()
                 })],
                 ..list.clone()
@@ -428,4 +429,45 @@ fn render_outputs_are_all_or_nothing_and_never_an_input() {
     assert!(stderr(&o).contains("frame.exr"), "{}", stderr(&o));
     assert_eq!(std::fs::read(&image).unwrap(), before);
     assert!(!dir.path().join("frame.png").exists());
+}
+
+/// `float_rules` and `alpha_test` in a draw list. By hand: v0 is the pixel
+/// centre's texture coordinate, (x + ½)/4 for x = 0..3: 0.125, 0.375, 0.625,
+/// 0.875, whose 8-bit codes are 32, 96, 159, 223 (floor(255·a + ½)); with
+/// GREATEREQUAL 128 the two left columns are discarded. c0 = (0, inf): the
+/// `hardware` rules make 0 × inf = 0 where `d3d9` gives NaN.
+#[test]
+fn alpha_test_and_float_rules_from_a_draw_list() {
+    let dir = std::env::temp_dir().join(format!("ps30-pixel-state-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::write(
+        dir.join("a.psh"),
+        "ps_3_0\ndcl_texcoord0 v0\nmul r0.x, c0.x, c0.y\nmov r0.yzw, v0.x\nmov oC0, r0\n",
+    )
+    .unwrap();
+    let list = |rules: &str| {
+        format!(
+            r#"{{"targets": [{{"name": "t", "size": "4x1", "format": "A32B32G32R32F"}}],
+               "steps": [{{"clear": "t", "color": [255, 255, 255, 255]}},
+                         {{"draw": "t", "shader": "a.psh", "inputs": {{"v0": "texcoord"}},
+                           "constants": {{"c0": [0, "inf"]}}, "float_rules": "{rules}",
+                           "alpha_test": {{"func": "GREATEREQUAL", "ref": 128}}}}]}}"#
+        )
+    };
+    for (rules, nan) in [("hardware", false), ("d3d9", true)] {
+        let path = dir.join(format!("{rules}.json"));
+        std::fs::write(&path, list(rules)).unwrap();
+        let loaded = file::read(&path, &Default::default()).unwrap();
+        let (_, states) = render::run(&loaded.list, &Default::default(), &mut |_, _| {}).unwrap();
+        let px: Vec<[f32; 4]> = (0..4).map(|x| states[0].target.texel(x, 0)).collect();
+        assert_eq!(
+            px[0], [1.0; 4],
+            "{rules}: alpha 0.125 fails, the clear stays"
+        );
+        assert_eq!(px[1], [1.0; 4], "{rules}: alpha 0.375 fails");
+        for p in &px[2..] {
+            assert_eq!(p[0].is_nan(), nan, "{rules}: 0 × inf");
+            assert!(p[3] >= 0.5);
+        }
+    }
 }

@@ -637,6 +637,8 @@ pub enum FloatRulesArg {
     Ieee,
     /// d3d9, and a product with a zero factor is 0 (0 × inf = 0).
     D3d9ZeroMul,
+    /// What Direct3D 9 hardware computes: d3d9-zero-mul, and denormals flushed to zero in and out.
+    Hardware,
 }
 
 impl From<FloatRulesArg> for ps30::core::float_rules::FloatRules {
@@ -646,6 +648,7 @@ impl From<FloatRulesArg> for ps30::core::float_rules::FloatRules {
             FloatRulesArg::D3d9 => FloatRules::D3d9,
             FloatRulesArg::Ieee => FloatRules::Ieee,
             FloatRulesArg::D3d9ZeroMul => FloatRules::D3d9ZeroMul,
+            FloatRulesArg::Hardware => FloatRules::Hardware,
         }
     }
 }
@@ -666,7 +669,7 @@ pub struct BackendArgs {
     /// Draw on the emulator (default) or on a GPU through Vulkan, with the translated shader.
     #[arg(long, value_enum, default_value = "emulator")]
     pub backend: BackendArg,
-    /// Special values: d3d9 (Microsoft's pages, the default), ieee, or d3d9-zero-mul.
+    /// Special values: d3d9 (Microsoft's pages, the default), ieee, d3d9-zero-mul, or hardware.
     #[arg(long, value_enum, default_value = "d3d9")]
     pub float_rules: FloatRulesArg,
 }

@@ -135,18 +135,22 @@ pub fn parse_constant(s: &str) -> Result<f32, String> {
     let lower = t.to_ascii_lowercase();
     if let Some(hex) = lower.strip_prefix("0x") {
         if hex.is_empty() || hex.len() > 8 || !hex.bytes().all(|b| b.is_ascii_hexdigit()) {
-            return Err(format!("`{s}`: hex bits are 0x and one to eight hex digits"));
+            return Err(format!(
+                "`{s}`: hex bits are 0x and one to eight hex digits"
+            ));
         }
         return u32::from_str_radix(hex, 16)
             .map(f32::from_bits)
             .map_err(|_| format!("`{s}` is not 32 hex bits"));
     }
     let word = lower.trim_start_matches(['+', '-']);
-    let v: f32 = t
-        .parse()
-        .map_err(|_| format!("`{s}` is not a number (write a decimal, inf, -inf, nan or 0x… bits)"))?;
+    let v: f32 = t.parse().map_err(|_| {
+        format!("`{s}` is not a number (write a decimal, inf, -inf, nan or 0x… bits)")
+    })?;
     if !v.is_finite() && !matches!(word, "inf" | "infinity" | "nan") {
-        return Err(format!("`{s}` is beyond f32's range (write inf or -inf for an infinity)"));
+        return Err(format!(
+            "`{s}` is beyond f32's range (write inf or -inf for an infinity)"
+        ));
     }
     Ok(v)
 }

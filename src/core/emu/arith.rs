@@ -59,6 +59,14 @@ impl Worker<'_, '_> {
     #[inline(always)]
     pub(super) fn store<const SCALAR: bool>(&mut self, d: DstOp, mask: u8) {
         let n = self.span();
+        if self.ctx.rules.flush_denormals() {
+            // `hardware`: a denormal result is written as a zero.
+            for c in 0..if SCALAR { 1 } else { 4 } {
+                for v in &mut self.tmp[c][..n] {
+                    *v = crate::core::float_rules::flush(*v);
+                }
+            }
+        }
         let full = self.exec == self.live && !d.predicated();
         let sat = d.sat();
         let base = d.row as usize;

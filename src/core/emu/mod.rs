@@ -639,6 +639,12 @@ impl<'c, 'a> RunCtx<'c, 'a> {
         for &(i, v) in &compiled.float_defs {
             floats[i as usize] = v;
         }
+        if draw.float_rules.flush_denormals() {
+            // `hardware`: a denormal constant reads as a zero.
+            for v in floats.iter_mut().flatten() {
+                *v = crate::core::float_rules::flush(*v);
+            }
+        }
         let ints = int_constants(compiled, c)?;
         let mut bools = 0u16;
         for (i, &b) in c.bool.iter().enumerate() {

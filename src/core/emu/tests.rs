@@ -1979,3 +1979,31 @@ fn texld_into_outputs_and_inside_divergent_branches() {
     let c0 = out.color[0].as_ref().unwrap();
     assert_eq!(c0, &vec![tex[0], tex[0], [9.0; 4], [9.0; 4]]);
 }
+
+#[test]
+fn hardware_rules_flush_denormals_and_zero_products() {
+    use crate::core::float_rules::FloatRules;
+    // c0.x is the smallest denormal (2^-149), c0.y = 2^-126 (the smallest
+    // normal), c0.z = +inf, c0.w = 0. By hand: under `hardware` the denormal
+    // constant reads as 0; 2^-126 × 0.5 = 2^-127 is a denormal result,
+    // written as 0; 0 × inf = 0. Under `d3d9` all three keep IEEE values.
+    let text = "mov r0.x, c0.x
+                mov r1, c1
+mul r0.y, c0.y, r1.x
+                mul r0.z, c0.z, c0.w
+                mov r0.w, c1.x
+                mov oC0, r0";
+    let mut d = Draw::new(1, 1);
+    d.constants.float = vec![
+        [f32::from_bits(1), f32::MIN_POSITIVE, f32::INFINITY, 0.0],
+        [0.5, 0.0, 0.0, 0.0],
+    ];
+    d.float_rules = FloatRules::Hardware;
+    let hw = run_text(text, &d).color[0].as_ref().unwrap()[0];
+    assert_eq!(hw.map(f32::to_bits), [0, 0, 0, 0.5f32.to_bits()]);
+    d.float_rules = FloatRules::D3d9;
+    let ms = run_text(text, &d).color[0].as_ref().unwrap()[0];
+    assert_eq!(ms[0].to_bits(), 1);
+    assert_eq!(ms[1].to_bits(), 1 << 22, "2^-127 as a denormal");
+    assert!(ms[2].is_nan());
+}

@@ -94,8 +94,32 @@ impl Lower<'_> {
 
     // ----- sources ------------------------------------------------------------
 
-    /// A register's value as a vec4 (no swizzle, no modifier).
+    /// A register's value as a vec4 (no swizzle, no modifier); under the
+    /// `hardware` rules a constant's or an input's denormals read as zeros
+    /// (temporaries and outputs were flushed when written).
     pub fn reg(&mut self, reg: Reg, relative: bool) -> Result<Expr, TranslateError> {
+        let v = self.reg_raw(reg, relative)?;
+        if self.rules.flush_denormals() && matches!(reg.file, RegFile::Const | RegFile::Input) {
+            return Ok(self.flush(v, Some(VectorSize::Quad)));
+        }
+        Ok(v)
+    }
+
+    /// `v` with denormals replaced by zeros of their sign (`hardware`).
+    fn flush(&mut self, v: Expr, size: Option<VectorSize>) -> Expr {
+        let tiny = self.fb.f32(f32::MIN_POSITIVE);
+        let zero = self.fb.f32(0.0);
+        let (tiny, zero) = match size {
+            Some(size) => (self.fb.splat(tiny, size), self.fb.splat(zero, size)),
+            None => (tiny, zero),
+        };
+        let a = self.fb.math(M::Abs, &[v]);
+        let small = self.fb.binary(B::Less, a, tiny);
+        let signed_zero = self.fb.binary(B::Multiply, v, zero);
+        self.fb.select(small, signed_zero, v)
+    }
+
+    fn reg_raw(&mut self, reg: Reg, relative: bool) -> Result<Expr, TranslateError> {
         let cx = self.cx;
         let fb = &mut self.fb;
         Ok(match reg.file {
@@ -283,6 +307,11 @@ impl Lower<'_> {
             (false, v) => v,
             (true, Value::Vector(v)) => Value::Vector(self.fb.math(M::Saturate, &[v])),
             (true, Value::Scalar(v)) => Value::Scalar(self.fb.math(M::Saturate, &[v])),
+        };
+        let value = match value {
+            _ if !self.rules.flush_denormals() => value,
+            Value::Vector(v) => Value::Vector(self.flush(v, Some(VectorSize::Quad))),
+            Value::Scalar(v) => Value::Scalar(self.flush(v, None)),
         };
         let mask = d.mask.0 & allowed;
         let ptr = cx.var(&mut self.fb, g);

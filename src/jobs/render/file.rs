@@ -41,7 +41,9 @@
 //!     Direct3D 9's defaults: point, no mips, wrap), `blend` (`src`, `dest`,
 //!     `op`, optional `alpha` with its own `src`, `dest`, `op` for
 //!     SEPARATEALPHABLENDENABLE, optional `factor` bytes; absent: blending
-//!     off) and `write` (COLORWRITEENABLE letters, default `rgba`);
+//!     off), `write` (COLORWRITEENABLE letters, default `rgba`), and the
+//!     pixel state of `pixel_state.rs`: `float_rules` and `alpha_test`
+//!     (`{"func": "GREATEREQUAL", "ref": 128}`);
 //!   * `{"mips": TARGET, "odd": "fold"|"bilinear"}` — reduce the target
 //!     through its mip chain (default `fold`).
 
@@ -145,6 +147,8 @@ struct FileStep {
     samplers: Option<BTreeMap<String, FileSampler>>,
     blend: Option<FileBlend>,
     write: Option<String>,
+    float_rules: Option<String>,
+    alpha_test: Option<super::pixel_state::FileAlphaTest>,
     mips: Option<String>,
     odd: Option<String>,
 }
@@ -509,7 +513,9 @@ impl Resolver {
             || s.bools.is_some()
             || s.samplers.is_some()
             || s.blend.is_some()
-            || s.write.is_some();
+            || s.write.is_some()
+            || s.float_rules.is_some()
+            || s.alpha_test.is_some();
         let target = |name: &str, field: &str| {
             self.list.target(name).ok_or_else(|| {
                 self.err(
@@ -642,7 +648,10 @@ impl Resolver {
             })?,
         };
         self.audit(at, shader, s)?;
+        let pixel = super::pixel_state::read(s.float_rules.as_deref(), s.alpha_test.as_ref())
+            .map_err(|(field, m)| self.err(&format!("{at}.{field}"), m))?;
         Ok(DrawStep {
+            pixel,
             target,
             shader,
             inputs,

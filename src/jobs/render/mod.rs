@@ -20,6 +20,7 @@
 
 pub mod file;
 mod floats;
+pub mod pixel_state;
 
 use crate::core::cost::{self, Profile, Range};
 use crate::core::emu::{
@@ -90,6 +91,8 @@ pub struct DrawStep {
     pub samplers: Vec<(u32, Source, SamplerState)>,
     /// Blend state and write mask of the output merger.
     pub output: OutputState,
+    /// Float rules and alpha test ([`pixel_state`]).
+    pub pixel: pixel_state::PixelState,
 }
 
 /// One step of a draw list.
@@ -137,6 +140,8 @@ pub struct Settings {
     pub limits: emu::EmuLimits,
     /// The bounds of the whole list.
     pub budget: ListBudget,
+    /// The float rules of draws that do not name their own.
+    pub float_rules: crate::core::float_rules::FloatRules,
 }
 
 /// Bounds on a whole draw list's work, on top of each draw's
@@ -393,7 +398,7 @@ pub fn run(
                 let list_bound = limits.max_executed_total > executed_left;
                 limits.max_executed_total = limits.max_executed_total.min(executed_left);
                 let (detail, executed) =
-                    draw(list, &compiled[d.shader], d, &mut states, settings.threads, limits)
+                    draw(list, &compiled[d.shader], d, &mut states, settings, limits)
                         .map_err(|e| match e {
                             DrawFailure::Emu(EmuError::TotalExecutedLimit { .. }) if list_bound => {
                                 RenderError::Budget(format!(
@@ -450,9 +455,10 @@ fn draw(
     compiled: &Compiled,
     d: &DrawStep,
     states: &mut [TargetState],
-    threads: Option<usize>,
+    settings: &Settings,
     limits: emu::EmuLimits,
 ) -> Result<(StepDetail, u64), DrawFailure> {
+    let threads = settings.threads;
     let spec = &list.targets[d.target];
     let shader = &list.shaders[d.shader];
     let mut emu_draw = Draw::new(spec.width, spec.height);
@@ -460,6 +466,7 @@ fn draw(
     emu_draw.record_lod = true;
     emu_draw.inputs = d.inputs.clone();
     emu_draw.constants = d.constants.clone();
+    emu_draw.float_rules = d.pixel.float_rules.unwrap_or(settings.float_rules);
     for &(s, source, state) in &d.samplers {
         let levels: TextureLevels<'_> = match source {
             Source::Texture(t) => {
@@ -484,11 +491,15 @@ fn draw(
         };
         emu_draw.samplers.push((s, levels, state));
     }
-    let out = match threads {
+    let mut out = match threads {
         Some(t) => emu::run_with_threads(compiled, &emu_draw, t),
         None => emu::run(compiled, &emu_draw),
     }
     .map_err(DrawFailure::Emu)?;
+    let oc0 = out.color.first().and_then(|c| c.as_deref());
+    let mut killed = out.killed.clone();
+    d.pixel.apply(oc0, &mut killed);
+    out.killed = killed;
     let findings = emu::findings::findings(&out, &emu_draw, &shader.loaded.file);
     let executed = Range {
         min: out.executed.iter().copied().min().unwrap_or(0),

@@ -1,0 +1,197 @@
+//! The per-draw state of a draw list that acts on pixels besides the
+//! shader and the blend: the float rules the draw computes by, and
+//! Direct3D 9's alpha test (D3DRS_ALPHATESTENABLE, D3DRS_ALPHAFUNC,
+//! D3DRS_ALPHAREF). Kept apart from `file.rs` so the fields' parsing and
+//! their meaning sit in one place; `docs/pixel-rules.md` describes them
+//! for users.
+//!
+//! ```json
+//! { "draw": "t", "shader": "a.psh",
+//!   "float_rules": "hardware",
+//!   "alpha_test": { "func": "GREATEREQUAL", "ref": 128 } }
+//! ```
+//!
+//! The alpha test compares oC0's alpha, converted to an 8-bit code as an
+//! 8-bit target stores it (NaN → 0, clamp, ×255, round half up:
+//! `image::unorm8`), with ALPHAREF (0–255) by D3DCMPFUNC, and discards the
+//! pixel when the comparison fails, before blending. Comparing codes
+//! rather than floats is what fixed-point alpha-test hardware does; Wine's
+//! wined3d compares the float alpha with ALPHAREF/255 instead, which
+//! differs only for an alpha strictly between two codes' midpoint and the
+//! code itself.
+
+use crate::core::float_rules::FloatRules;
+use crate::core::image::unorm8;
+use serde::Deserialize;
+
+/// Per-draw pixel state; the default is the command's float rules and no
+/// alpha test.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct PixelState {
+    /// The draw's float rules (`None`: the list's, `ps30 render --float-rules`).
+    pub float_rules: Option<FloatRules>,
+    /// D3DRS_ALPHATESTENABLE with its function and reference (`None`: off).
+    pub alpha_test: Option<AlphaTest>,
+}
+
+/// D3DCMPFUNC, the alpha test's comparison of the pixel's alpha code with
+/// the reference.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CmpFunc {
+    /// D3DCMP_NEVER: every pixel fails.
+    Never,
+    /// D3DCMP_LESS.
+    Less,
+    /// D3DCMP_EQUAL.
+    Equal,
+    /// D3DCMP_LESSEQUAL.
+    LessEqual,
+    /// D3DCMP_GREATER.
+    Greater,
+    /// D3DCMP_NOTEQUAL.
+    NotEqual,
+    /// D3DCMP_GREATEREQUAL.
+    GreaterEqual,
+    /// D3DCMP_ALWAYS: every pixel passes (the default function).
+    Always,
+}
+
+impl CmpFunc {
+    const NAMES: [(&'static str, CmpFunc); 8] = [
+        ("NEVER", CmpFunc::Never),
+        ("LESS", CmpFunc::Less),
+        ("EQUAL", CmpFunc::Equal),
+        ("LESSEQUAL", CmpFunc::LessEqual),
+        ("GREATER", CmpFunc::Greater),
+        ("NOTEQUAL", CmpFunc::NotEqual),
+        ("GREATEREQUAL", CmpFunc::GreaterEqual),
+        ("ALWAYS", CmpFunc::Always),
+    ];
+
+    /// The function a D3DCMPFUNC name stands for, with or without `D3DCMP_`.
+    pub fn from_name(name: &str) -> Option<CmpFunc> {
+        let n = name.strip_prefix("D3DCMP_").unwrap_or(name);
+        Self::NAMES.iter().find(|(k, _)| *k == n).map(|&(_, f)| f)
+    }
+
+    /// Whether `a FUNC b` holds.
+    pub fn passes(self, a: u8, b: u8) -> bool {
+        match self {
+            CmpFunc::Never => false,
+            CmpFunc::Less => a < b,
+            CmpFunc::Equal => a == b,
+            CmpFunc::LessEqual => a <= b,
+            CmpFunc::Greater => a > b,
+            CmpFunc::NotEqual => a != b,
+            CmpFunc::GreaterEqual => a >= b,
+            CmpFunc::Always => true,
+        }
+    }
+}
+
+/// The alpha test of a draw.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct AlphaTest {
+    /// D3DRS_ALPHAFUNC.
+    pub func: CmpFunc,
+    /// D3DRS_ALPHAREF, 0–255.
+    pub reference: u8,
+}
+
+impl AlphaTest {
+    /// Whether a pixel whose oC0 alpha is `alpha` survives the test.
+    pub fn passes(self, alpha: f32) -> bool {
+        self.func.passes(unorm8(alpha), self.reference)
+    }
+}
+
+impl PixelState {
+    /// Marks in `killed` the pixels whose oC0 fails the alpha test (pixels
+    /// without an oC0 are left alone: nothing of theirs is written).
+    pub fn apply(&self, oc0: Option<&[[f32; 4]]>, killed: &mut [bool]) {
+        let (Some(test), Some(colors)) = (self.alpha_test, oc0) else {
+            return;
+        };
+        for (k, c) in killed.iter_mut().zip(colors) {
+            *k |= !test.passes(c[3]);
+        }
+    }
+}
+
+/// `alpha_test` as the file gives it.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct FileAlphaTest {
+    func: String,
+    #[serde(rename = "ref")]
+    reference: u8,
+}
+
+/// The step's pixel state from its `float_rules` and `alpha_test` fields;
+/// an error names the field (relative to the step) and the problem.
+pub(crate) fn read(
+    float_rules: Option<&str>,
+    alpha_test: Option<&FileAlphaTest>,
+) -> Result<PixelState, (&'static str, String)> {
+    let float_rules = match float_rules {
+        None => None,
+        Some(n) => Some(FloatRules::from_name(n).ok_or_else(|| {
+            let names: Vec<&str> = FloatRules::ALL.iter().map(|r| r.name()).collect();
+            (
+                "float_rules",
+                format!("`{n}` is not one of {}", names.join(", ")),
+            )
+        })?),
+    };
+    let alpha_test = match alpha_test {
+        None => None,
+        Some(a) => Some(AlphaTest {
+            func: CmpFunc::from_name(&a.func).ok_or_else(|| {
+                (
+                    "alpha_test.func",
+                    format!("`{}` is not a D3DCMPFUNC (NEVER, LESS, EQUAL, LESSEQUAL, GREATER, NOTEQUAL, GREATEREQUAL, ALWAYS)", a.func),
+                )
+            })?,
+            reference: a.reference,
+        }),
+    };
+    Ok(PixelState {
+        float_rules,
+        alpha_test,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn alpha_test_at_the_reference_boundary() {
+        // 128/255 = 0.50196…: the code of 0.5 is floor(127.5 + 0.5) = 128.
+        let t = AlphaTest {
+            func: CmpFunc::GreaterEqual,
+            reference: 128,
+        };
+        assert!(t.passes(0.5));
+        assert!(t.passes(128.0 / 255.0));
+        // 127.49/255 rounds to code 127: fails.
+        assert!(!t.passes(127.49 / 255.0));
+        let eq = AlphaTest {
+            func: CmpFunc::Equal,
+            reference: 0,
+        };
+        assert!(eq.passes(f32::NAN), "NaN converts to code 0");
+        assert!(eq.passes(-1.0));
+        assert_eq!(CmpFunc::from_name("D3DCMP_LESS"), Some(CmpFunc::Less));
+        let mut killed = vec![false, false];
+        PixelState {
+            float_rules: None,
+            alpha_test: Some(t),
+        }
+        .apply(
+            Some(&[[0.0, 0.0, 0.0, 1.0], [0.0, 0.0, 0.0, 0.25]]),
+            &mut killed,
+        );
+        assert_eq!(killed, vec![false, true]);
+    }
+}
