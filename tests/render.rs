@@ -471,3 +471,57 @@ fn alpha_test_and_float_rules_from_a_draw_list() {
         }
     }
 }
+
+/// Multiple render targets through a draw list. By hand: oC0 = (1, 0, 0,
+/// a) with a = v0.x (0.125, 0.375, 0.625, 0.875 over four pixels), oC1 =
+/// (0.25, 0.5, 0.75, 1) through the write mask `rg` onto a target cleared
+/// to white, oC2 = v0 into an R32F target (red only is stored). The alpha
+/// test (GREATEREQUAL 128) discards the two left pixels in every target.
+#[test]
+fn multiple_render_targets_with_their_own_masks_and_formats() {
+    let dir = std::env::temp_dir().join(format!("ps30-mrt-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::write(
+        dir.join("mrt.psh"),
+        "ps_3_0\ndcl_texcoord0 v0\ndef c0, 1, 0, 0.25, 0.5\ndef c1, 0.75, 1, 0, 0\n\
+         mov r0, c0.xyyy\nmov r0.w, v0.x\nmov oC0, r0\n\
+         mov r1.xy, c0.zw\nmov r1.zw, c1.xy\nmov oC1, r1\nmov oC2, v0\n",
+    )
+    .unwrap();
+    let list = r#"{"targets": [{"name": "a", "size": "4x1", "format": "A8R8G8B8"},
+                               {"name": "b", "size": "4x1", "format": "A16B16G16R16F"},
+                               {"name": "c", "size": "4x1", "format": "R32F"},
+                               {"name": "small", "size": "2x1", "format": "R32F"}],
+       "steps": [{"clear": "b", "color": [255, 255, 255, 255]},
+                 {"draw": "a", "shader": "mrt.psh", "inputs": {"v0": "texcoord"},
+                  "alpha_test": {"func": "GREATEREQUAL", "ref": 128},
+                  "outputs": {"oC1": {"target": "b", "write": "rg"}, "oC2": "c"}}]}"#;
+    let path = dir.join("mrt.json");
+    std::fs::write(&path, list).unwrap();
+    let loaded = file::read(&path, &Default::default()).unwrap();
+    let (_, states) = render::run(&loaded.list, &Default::default(), &mut |_, _| {}).unwrap();
+    let px = |t: usize, x: u32| states[t].target.texel(x, 0);
+    for x in 0..2 {
+        assert_eq!(px(0, x), [0.0; 4], "pixel {x} discarded: a keeps its clear");
+        assert_eq!(px(1, x), [1.0; 4], "pixel {x} discarded: b keeps white");
+        assert_eq!(px(2, x)[0], 0.0);
+    }
+    for x in 2..4 {
+        let a = (x as f32 + 0.5) / 4.0;
+        // 8-bit alpha: the code floor(255a + 1/2) read back as code/255.
+        let code = (255.0 * a + 0.5).floor() / 255.0;
+        assert_eq!(px(0, x), [1.0, 0.0, 0.0, code]);
+        // 0.25 and 0.5 are exact in half; b and a stay white (the mask).
+        assert_eq!(px(1, x), [0.25, 0.5, 1.0, 1.0]);
+        assert_eq!(px(2, x)[0], a, "R32F stores v0.x exactly");
+    }
+    // A target of another size is refused, naming the field.
+    std::fs::write(&path, list.replace(r#""oC2": "c""#, r#""oC2": "small""#)).unwrap();
+    let e = file::read(&path, &Default::default())
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.contains("steps[1].outputs.oC2") && e.contains("one size"),
+        "{e}"
+    );
+}

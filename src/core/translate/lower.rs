@@ -105,17 +105,29 @@ impl Lower<'_> {
         Ok(v)
     }
 
-    /// `v` with denormals replaced by zeros of their sign (`hardware`).
+    /// `v` with denormals replaced by zeros of their sign (`hardware`): the
+    /// sign bit alone, taken through the bits (a device need not keep the
+    /// sign of a zero it computes, so `v * 0` would not do).
     fn flush(&mut self, v: Expr, size: Option<VectorSize>) -> Expr {
         let tiny = self.fb.f32(f32::MIN_POSITIVE);
-        let zero = self.fb.f32(0.0);
-        let (tiny, zero) = match size {
-            Some(size) => (self.fb.splat(tiny, size), self.fb.splat(zero, size)),
-            None => (tiny, zero),
+        let sign = self.fb.u32(0x8000_0000);
+        let (tiny, sign) = match size {
+            Some(size) => (self.fb.splat(tiny, size), self.fb.splat(sign, size)),
+            None => (tiny, sign),
         };
         let a = self.fb.math(M::Abs, &[v]);
         let small = self.fb.binary(B::Less, a, tiny);
-        let signed_zero = self.fb.binary(B::Multiply, v, zero);
+        let bits = self.fb.add(Expression::As {
+            expr: v,
+            kind: naga::ScalarKind::Uint,
+            convert: None,
+        });
+        let sign_bits = self.fb.binary(B::And, bits, sign);
+        let signed_zero = self.fb.add(Expression::As {
+            expr: sign_bits,
+            kind: naga::ScalarKind::Float,
+            convert: None,
+        });
         self.fb.select(small, signed_zero, v)
     }
 

@@ -42,8 +42,9 @@
 //!     `op`, optional `alpha` with its own `src`, `dest`, `op` for
 //!     SEPARATEALPHABLENDENABLE, optional `factor` bytes; absent: blending
 //!     off), `write` (COLORWRITEENABLE letters, default `rgba`), and the
-//!     pixel state of `pixel_state.rs`: `float_rules` and `alpha_test`
-//!     (`{"func": "GREATEREQUAL", "ref": 128}`);
+//!     pixel state of `pixel_state.rs`: `float_rules`, `alpha_test`
+//!     (`{"func": "GREATEREQUAL", "ref": 128}`) and `outputs` (`{"oC1":
+//!     TARGET, "oC2": {"target": TARGET, "write": "rg"}}`);
 //!   * `{"mips": TARGET, "odd": "fold"|"bilinear"}` — reduce the target
 //!     through its mip chain (default `fold`).
 
@@ -149,6 +150,7 @@ struct FileStep {
     write: Option<String>,
     float_rules: Option<String>,
     alpha_test: Option<super::pixel_state::FileAlphaTest>,
+    outputs: Option<BTreeMap<String, super::pixel_state::FileOutput>>,
     mips: Option<String>,
     odd: Option<String>,
 }
@@ -515,7 +517,8 @@ impl Resolver {
             || s.blend.is_some()
             || s.write.is_some()
             || s.float_rules.is_some()
-            || s.alpha_test.is_some();
+            || s.alpha_test.is_some()
+            || s.outputs.is_some();
         let target = |name: &str, field: &str| {
             self.list.target(name).ok_or_else(|| {
                 self.err(
@@ -648,7 +651,24 @@ impl Resolver {
             })?,
         };
         self.audit(at, shader, s)?;
-        let pixel = super::pixel_state::read(s.float_rules.as_deref(), s.alpha_test.as_ref())
+        let fields = super::pixel_state::FileFields {
+            float_rules: s.float_rules.as_deref(),
+            alpha_test: s.alpha_test.as_ref(),
+            outputs: s.outputs.as_ref(),
+        };
+        let targets = &self.list.targets;
+        let target_of = |name: &str| {
+            let i = targets.iter().position(|t| t.name == name)?;
+            Some((i, targets[i].width, targets[i].height))
+        };
+        let sampled: Vec<usize> = samplers
+            .iter()
+            .filter_map(|&(_, src, _)| match src {
+                Source::Target(t) => Some(t),
+                Source::Texture(_) => None,
+            })
+            .collect();
+        let pixel = super::pixel_state::read(&fields, &target_of, (target, w, h), &sampled)
             .map_err(|(field, m)| self.err(&format!("{at}.{field}"), m))?;
         Ok(DrawStep {
             pixel,

@@ -519,6 +519,22 @@ fn draw(
         },
     };
     state.mips = None;
+    // oC1–oC3 into their own targets: one blend state, each its own mask.
+    for (k, bound) in d.pixel.outputs.iter().enumerate() {
+        let (Some((t, write)), Some(colors)) =
+            (bound, out.color.get(k + 1).and_then(|c| c.as_ref()))
+        else {
+            continue;
+        };
+        let state = &mut states[*t];
+        let output = OutputState {
+            blend: d.output.blend,
+            write: *write,
+        };
+        merge::merge(&mut state.target, colors, &out.killed, &output)
+            .map_err(|e| DrawFailure::Message(format!("oC{}: {e}", k + 1)))?;
+        state.mips = None;
+    }
     let detail = StepDetail::Draw {
         shader: shader.name.clone(),
         counts_agree: executed_static.min <= executed.min && executed.max <= executed_static.max,

@@ -1,15 +1,24 @@
 //! The per-draw state of a draw list that acts on pixels besides the
-//! shader and the blend: the float rules the draw computes by, and
-//! Direct3D 9's alpha test (D3DRS_ALPHATESTENABLE, D3DRS_ALPHAFUNC,
-//! D3DRS_ALPHAREF). Kept apart from `file.rs` so the fields' parsing and
+//! shader and the blend: the float rules the draw computes by, Direct3D 9's
+//! alpha test (D3DRS_ALPHATESTENABLE, D3DRS_ALPHAFUNC, D3DRS_ALPHAREF) and
+//! multiple render targets (oC1–oC3 bound to further targets, each with its
+//! own D3DRS_COLORWRITEENABLE1–3 mask; one blend state for all, as
+//! Direct3D 9 has it). Kept apart from `file.rs` so the fields' parsing and
 //! their meaning sit in one place; `docs/pixel-rules.md` describes them
 //! for users.
 //!
 //! ```json
 //! { "draw": "t", "shader": "a.psh",
 //!   "float_rules": "hardware",
-//!   "alpha_test": { "func": "GREATEREQUAL", "ref": 128 } }
+//!   "alpha_test": { "func": "GREATEREQUAL", "ref": 128 },
+//!   "outputs": { "oC1": "normals", "oC2": { "target": "depth", "write": "r" } } }
 //! ```
+//!
+//! Every target of a draw has the draw target's size (Direct3D 9 requires
+//! it of simultaneous render targets); each may have its own format
+//! (D3DPMISCCAPS_MRTINDEPENDENTBITDEPTHS). The alpha test reads oC0's
+//! alpha and discards the pixel in every target. An output the shader does
+//! not write leaves its target unchanged.
 //!
 //! The alpha test compares oC0's alpha, converted to an 8-bit code as an
 //! 8-bit target stores it (NaN → 0, clamp, ×255, round half up:
@@ -22,16 +31,21 @@
 
 use crate::core::float_rules::FloatRules;
 use crate::core::image::unorm8;
+use crate::core::merge::ColorWrite;
 use serde::Deserialize;
+use std::collections::BTreeMap;
 
 /// Per-draw pixel state; the default is the command's float rules and no
 /// alpha test.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct PixelState {
     /// The draw's float rules (`None`: the list's, `ps30 render --float-rules`).
     pub float_rules: Option<FloatRules>,
     /// D3DRS_ALPHATESTENABLE with its function and reference (`None`: off).
     pub alpha_test: Option<AlphaTest>,
+    /// Targets of oC1, oC2, oC3 (index into the list's targets) with their
+    /// write masks; `None` where nothing is bound.
+    pub outputs: [Option<(usize, ColorWrite)>; 3],
 }
 
 /// D3DCMPFUNC, the alpha test's comparison of the pixel's alpha code with
@@ -127,18 +141,112 @@ pub(crate) struct FileAlphaTest {
     reference: u8,
 }
 
-/// The step's pixel state from its `float_rules` and `alpha_test` fields;
-/// an error names the field (relative to the step) and the problem.
+/// One entry of `outputs`: a target's name, or the name with a write mask.
+#[derive(Debug, Deserialize)]
+#[serde(untagged)]
+pub(crate) enum FileOutput {
+    /// The target, written in full.
+    Name(String),
+    /// The target and its COLORWRITEENABLE letters.
+    Masked {
+        /// The target's name.
+        target: String,
+        /// Letters of r, g, b, a (default all).
+        write: Option<String>,
+    },
+}
+
+/// The fields of a draw step this module reads.
+pub(crate) struct FileFields<'a> {
+    /// `float_rules`.
+    pub float_rules: Option<&'a str>,
+    /// `alpha_test`.
+    pub alpha_test: Option<&'a FileAlphaTest>,
+    /// `outputs`: `oC1`–`oC3` to targets.
+    pub outputs: Option<&'a BTreeMap<String, FileOutput>>,
+}
+
+/// The targets of `outputs` checked against the list: `target_of` finds a
+/// target by name as (index, width, height); `draw` is the draw's own
+/// target (index, width, height) and `sampled` the targets its samplers
+/// read.
+fn outputs(
+    given: &BTreeMap<String, FileOutput>,
+    target_of: &dyn Fn(&str) -> Option<(usize, u32, u32)>,
+    draw: (usize, u32, u32),
+    sampled: &[usize],
+) -> Result<[Option<(usize, ColorWrite)>; 3], (String, String)> {
+    let (main, w, h) = draw;
+    let mut out = [None; 3];
+    for (name, o) in given {
+        let field = format!("outputs.{name}");
+        let k = match name.as_str() {
+            "oC1" => 0,
+            "oC2" => 1,
+            "oC3" => 2,
+            _ => {
+                return Err((
+                    field,
+                    "the outputs are oC1, oC2 and oC3 (oC0 goes to the draw's own target)".into(),
+                ))
+            }
+        };
+        let (target, write) = match o {
+            FileOutput::Name(t) => (t.as_str(), None),
+            FileOutput::Masked { target, write } => (target.as_str(), write.as_deref()),
+        };
+        let (t, tw, th) = target_of(target)
+            .ok_or_else(|| (field.clone(), format!("no target named `{target}`")))?;
+        if (tw, th) != (w, h) {
+            return Err((field, format!("`{target}` is {tw}×{th} and the draw's target {w}×{h}: Direct3D 9's simultaneous render targets share one size")));
+        }
+        if t == main || out.iter().flatten().any(|&(u, _)| u == t) {
+            return Err((
+                field,
+                format!("`{target}` is already a target of this draw"),
+            ));
+        }
+        if sampled.contains(&t) {
+            return Err((
+                field,
+                format!("`{target}` is sampled by this draw (Direct3D 9 does not allow it)"),
+            ));
+        }
+        let write = match write {
+            None => ColorWrite::ALL,
+            Some(l) => ColorWrite::from_letters(l).ok_or_else(|| {
+                (
+                    format!("{field}.write"),
+                    format!("`{l}` is not a set of the letters r, g, b, a"),
+                )
+            })?,
+        };
+        out[k] = Some((t, write));
+    }
+    Ok(out)
+}
+
+/// The step's pixel state from its `float_rules`, `alpha_test` and
+/// `outputs` fields; an error names the field (relative to the step) and
+/// the problem. `target_of` finds a target by name as (index, width,
+/// height); `draw` is the draw's own target as the same triple.
 pub(crate) fn read(
-    float_rules: Option<&str>,
-    alpha_test: Option<&FileAlphaTest>,
-) -> Result<PixelState, (&'static str, String)> {
+    f: &FileFields<'_>,
+    target_of: &dyn Fn(&str) -> Option<(usize, u32, u32)>,
+    draw: (usize, u32, u32),
+    sampled: &[usize],
+) -> Result<PixelState, (String, String)> {
+    let (float_rules, alpha_test) = (f.float_rules, f.alpha_test);
+    let outputs = match f.outputs {
+        None => [None; 3],
+        Some(o) => outputs(o, target_of, draw, sampled)?,
+    };
     let float_rules = match float_rules {
         None => None,
         Some(n) => Some(FloatRules::from_name(n).ok_or_else(|| {
             let names: Vec<&str> = FloatRules::ALL.iter().map(|r| r.name()).collect();
             (
-                "float_rules",
+                "float_rules".to_string(),
                 format!("`{n}` is not one of {}", names.join(", ")),
             )
         })?),
@@ -148,7 +256,7 @@ pub(crate) fn read(
         Some(a) => Some(AlphaTest {
             func: CmpFunc::from_name(&a.func).ok_or_else(|| {
                 (
-                    "alpha_test.func",
+                    "alpha_test.func".to_string(),
                     format!("`{}` is not a D3DCMPFUNC (NEVER, LESS, EQUAL, LESSEQUAL, GREATER, NOTEQUAL, GREATEREQUAL, ALWAYS)", a.func),
                 )
             })?,
@@ -158,6 +266,7 @@ pub(crate) fn read(
     Ok(PixelState {
         float_rules,
         alpha_test,
+        outputs,
     })
 }
 
@@ -185,8 +294,8 @@ mod tests {
         assert_eq!(CmpFunc::from_name("D3DCMP_LESS"), Some(CmpFunc::Less));
         let mut killed = vec![false, false];
         PixelState {
-            float_rules: None,
             alpha_test: Some(t),
+            ..Default::default()
         }
         .apply(
             Some(&[[0.0, 0.0, 0.0, 1.0], [0.0, 0.0, 0.0, 0.25]]),
