@@ -525,3 +525,35 @@ fn multiple_render_targets_with_their_own_masks_and_formats() {
         "{e}"
     );
 }
+
+/// Flat shading and a user clip plane from a draw list. By hand: v0 (a
+/// colour) is 0.5 + 0.25·x at pixel x; flat, it holds its value at the
+/// quad's first vertex, the corner half a pixel left of pixel 0's centre:
+/// 0.5 − 0.125 = 0.375 everywhere. The plane 1.5 − x is 1.5, 0.5, −0.5,
+/// −1.5: pixels 2 and 3 are clipped and keep the clear (0).
+#[test]
+fn flat_shading_and_clip_planes_from_a_draw_list() {
+    let dir = std::env::temp_dir().join(format!("ps30-flat-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::write(dir.join("c.psh"), "ps_3_0\ndcl_color0 v0\nmov oC0, v0\n").unwrap();
+    let list = |extra: &str| {
+        format!(
+            r#"{{"targets": [{{"name": "t", "size": "4x1", "format": "R32F"}}],
+               "steps": [{{"draw": "t", "shader": "c.psh",
+                 "inputs": {{"v0": {{"base": [0.5], "ddx": [0.25]}}}}{extra}}}]}}"#
+        )
+    };
+    let red = |extra: &str| -> Vec<f32> {
+        let path = dir.join("c.json");
+        std::fs::write(&path, list(extra)).unwrap();
+        let loaded = file::read(&path, &Default::default()).unwrap();
+        let (_, states) = render::run(&loaded.list, &Default::default(), &mut |_, _| {}).unwrap();
+        (0..4).map(|x| states[0].target.texel(x, 0)[0]).collect()
+    };
+    assert_eq!(red(""), vec![0.5, 0.75, 1.0, 1.25]);
+    assert_eq!(red(r#", "shade": "flat""#), vec![0.375; 4]);
+    assert_eq!(
+        red(r#", "clip_planes": [{"base": 1.5, "ddx": -1}]"#),
+        vec![0.5, 0.75, 0.0, 0.0]
+    );
+}

@@ -43,8 +43,9 @@
 //!     SEPARATEALPHABLENDENABLE, optional `factor` bytes; absent: blending
 //!     off), `write` (COLORWRITEENABLE letters, default `rgba`), and the
 //!     pixel state of `pixel_state.rs`: `float_rules`, `alpha_test`
-//!     (`{"func": "GREATEREQUAL", "ref": 128}`) and `outputs` (`{"oC1":
-//!     TARGET, "oC2": {"target": TARGET, "write": "rg"}}`);
+//!     (`{"func": "GREATEREQUAL", "ref": 128}`), `outputs` (`{"oC1":
+//!     TARGET, "oC2": {"target": TARGET, "write": "rg"}}`), `clip_planes`
+//!     (`[{"base": B, "ddx": X, "ddy": Y}]`) and `shade` (`"flat"`);
 //!   * `{"mips": TARGET, "odd": "fold"|"bilinear"}` — reduce the target
 //!     through its mip chain (default `fold`).
 
@@ -151,6 +152,8 @@ struct FileStep {
     float_rules: Option<String>,
     alpha_test: Option<super::pixel_state::FileAlphaTest>,
     outputs: Option<BTreeMap<String, super::pixel_state::FileOutput>>,
+    clip_planes: Option<Vec<super::pixel_state::FileClipPlane>>,
+    shade: Option<String>,
     mips: Option<String>,
     odd: Option<String>,
 }
@@ -518,7 +521,9 @@ impl Resolver {
             || s.write.is_some()
             || s.float_rules.is_some()
             || s.alpha_test.is_some()
-            || s.outputs.is_some();
+            || s.outputs.is_some()
+            || s.clip_planes.is_some()
+            || s.shade.is_some();
         let target = |name: &str, field: &str| {
             self.list.target(name).ok_or_else(|| {
                 self.err(
@@ -655,6 +660,8 @@ impl Resolver {
             float_rules: s.float_rules.as_deref(),
             alpha_test: s.alpha_test.as_ref(),
             outputs: s.outputs.as_ref(),
+            clip_planes: s.clip_planes.as_deref(),
+            shade: s.shade.as_deref(),
         };
         let targets = &self.list.targets;
         let target_of = |name: &str| {

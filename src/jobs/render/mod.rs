@@ -465,6 +465,9 @@ fn draw(
     emu_draw.limits = limits;
     emu_draw.record_lod = true;
     emu_draw.inputs = d.inputs.clone();
+    if d.pixel.flat {
+        pixel_state::flatten_inputs(shader.loaded.shader.program(), &mut emu_draw.inputs);
+    }
     emu_draw.constants = d.constants.clone();
     emu_draw.float_rules = d.pixel.float_rules.unwrap_or(settings.float_rules);
     for &(s, source, state) in &d.samplers {
@@ -498,7 +501,7 @@ fn draw(
     .map_err(DrawFailure::Emu)?;
     let oc0 = out.color.first().and_then(|c| c.as_deref());
     let mut killed = out.killed.clone();
-    d.pixel.apply(oc0, &mut killed);
+    d.pixel.apply(oc0, &mut killed, spec.width);
     out.killed = killed;
     let findings = emu::findings::findings(&out, &emu_draw, &shader.loaded.file);
     let executed = Range {

@@ -3,7 +3,25 @@
 //! alpha test (D3DRS_ALPHATESTENABLE, D3DRS_ALPHAFUNC, D3DRS_ALPHAREF) and
 //! multiple render targets (oC1–oC3 bound to further targets, each with its
 //! own D3DRS_COLORWRITEENABLE1–3 mask; one blend state for all, as
-//! Direct3D 9 has it). Kept apart from `file.rs` so the fields' parsing and
+//! Direct3D 9 has it), user clip planes and flat shading.
+//!
+//! **Clip planes.** Direct3D 9 clips a triangle against each enabled plane
+//! (D3DRS_CLIPPLANEENABLE): the plane's distance is computed per vertex and
+//! interpolated linearly, and what lies where it is negative is not drawn.
+//! A draw list's draw is a full-screen quad whose inputs are linear
+//! functions of the pixel, so a clip plane is given the same way as an
+//! input: the distance at pixel (x, y) is `base + x·ddx + y·ddy` (x, y the
+//! pixel's column and row, as for `inputs`), and a pixel whose distance at
+//! its centre is below 0 is discarded before blending, in every target. At
+//! most 6 planes (the MaxUserClipPlanes of Direct3D 9 hardware).
+//!
+//! **Flat shading** (`"shade": "flat"`, D3DSHADE_FLAT): inputs declared
+//! `dcl_color` take the first vertex's value instead of being interpolated
+//! — all of color0, the rgb of color1 (specular alpha stays interpolated),
+//! as Direct3D 9's fixed-function pipe and Wine's tests have it. The first
+//! vertex of a draw list's quad is the target's top-left corner, half a
+//! pixel up and left of pixel (0, 0)'s centre, so such a component holds
+//! `base − ½·ddx − ½·ddy` over the whole target. Kept apart from `file.rs` so the fields' parsing and
 //! their meaning sit in one place; `docs/pixel-rules.md` describes them
 //! for users.
 //!
@@ -29,15 +47,18 @@
 //! differs only for an alpha strictly between two codes' midpoint and the
 //! code itself.
 
+use crate::core::emu::LinearInput;
 use crate::core::float_rules::FloatRules;
 use crate::core::image::unorm8;
+use crate::core::ir::Program;
+use crate::core::isa::RegFile;
 use crate::core::merge::ColorWrite;
 use serde::Deserialize;
 use std::collections::BTreeMap;
 
 /// Per-draw pixel state; the default is the command's float rules and no
 /// alpha test.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Debug, Default, PartialEq)]
 pub struct PixelState {
     /// The draw's float rules (`None`: the list's, `ps30 render --float-rules`).
     pub float_rules: Option<FloatRules>,
@@ -46,6 +67,40 @@ pub struct PixelState {
     /// Targets of oC1, oC2, oC3 (index into the list's targets) with their
     /// write masks; `None` where nothing is bound.
     pub outputs: [Option<(usize, ColorWrite)>; 3],
+    /// User clip planes as (base, ddx, ddy) of the distance per pixel.
+    pub clip_planes: Vec<[f32; 3]>,
+    /// D3DSHADE_FLAT: colour inputs hold the first vertex's value.
+    pub flat: bool,
+}
+
+/// The components of input `v<reg>` that flat shading holds constant:
+/// colour semantics — all of color0, the rgb of color1 (its alpha, the
+/// specular alpha, stays interpolated).
+pub fn flat_components(program: &Program, reg: u32) -> [bool; 4] {
+    let mut flat = [false; 4];
+    for d in program
+        .inputs
+        .iter()
+        .filter(|d| d.reg.file == RegFile::Input && d.reg.index == reg && d.usage == "color")
+    {
+        for (c, f) in flat.iter_mut().enumerate() {
+            *f |= d.mask.has(c) && !(d.usage_index == 1 && c == 3);
+        }
+    }
+    flat
+}
+
+/// `inputs` as flat shading hands them to the shader: each flat component
+/// holds its value at the quad's first vertex (the top-left corner).
+pub fn flatten_inputs(program: &Program, inputs: &mut [(u32, LinearInput)]) {
+    for (reg, input) in inputs.iter_mut() {
+        let flat = flat_components(program, *reg);
+        for c in (0..4).filter(|&c| flat[c]) {
+            input.base[c] -= 0.5 * (input.ddx[c] + input.ddy[c]);
+            input.ddx[c] = 0.0;
+            input.ddy[c] = 0.0;
+        }
+    }
 }
 
 /// D3DCMPFUNC, the alpha test's comparison of the pixel's alpha code with
@@ -120,9 +175,22 @@ impl AlphaTest {
 }
 
 impl PixelState {
-    /// Marks in `killed` the pixels whose oC0 fails the alpha test (pixels
-    /// without an oC0 are left alone: nothing of theirs is written).
-    pub fn apply(&self, oc0: Option<&[[f32; 4]]>, killed: &mut [bool]) {
+    /// Marks in `killed` (row-major over a target `width` wide) the pixels
+    /// that a clip plane removes or whose oC0 fails the alpha test (the
+    /// alpha test leaves pixels without an oC0 alone: nothing of theirs is
+    /// written).
+    pub fn apply(&self, oc0: Option<&[[f32; 4]]>, killed: &mut [bool], width: u32) {
+        for (i, k) in killed.iter_mut().enumerate() {
+            let (x, y) = (
+                (i as u32 % width.max(1)) as f32,
+                (i as u32 / width.max(1)) as f32,
+            );
+            // The distance as the emulator evaluates inputs: base + x·ddx + y·ddy.
+            *k |= self
+                .clip_planes
+                .iter()
+                .any(|p| p[0] + x * p[1] + y * p[2] < 0.0);
+        }
         let (Some(test), Some(colors)) = (self.alpha_test, oc0) else {
             return;
         };
@@ -156,8 +224,24 @@ pub(crate) enum FileOutput {
     },
 }
 
+/// One clip plane as the file gives it: its distance's value at pixel
+/// (0, 0) and its steps per pixel to the right and down.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct FileClipPlane {
+    base: f64,
+    #[serde(default)]
+    ddx: f64,
+    #[serde(default)]
+    ddy: f64,
+}
+
 /// The fields of a draw step this module reads.
 pub(crate) struct FileFields<'a> {
+    /// `clip_planes`.
+    pub clip_planes: Option<&'a [FileClipPlane]>,
+    /// `shade`: `"flat"` or `"gouraud"`.
+    pub shade: Option<&'a str>,
     /// `float_rules`.
     pub float_rules: Option<&'a str>,
     /// `alpha_test`.
@@ -263,10 +347,40 @@ pub(crate) fn read(
             reference: a.reference,
         }),
     };
+    let flat = match f.shade {
+        None | Some("gouraud") => false,
+        Some("flat") => true,
+        Some(other) => {
+            return Err((
+                "shade".into(),
+                format!("`{other}` is not \"flat\" or \"gouraud\""),
+            ))
+        }
+    };
+    let planes = f.clip_planes.unwrap_or_default();
+    if planes.len() > 6 {
+        return Err((
+            "clip_planes".into(),
+            format!("{} planes; Direct3D 9 hardware has at most 6", planes.len()),
+        ));
+    }
+    let mut clip_planes = Vec::with_capacity(planes.len());
+    for (i, p) in planes.iter().enumerate() {
+        let v = [p.base, p.ddx, p.ddy].map(|x| x as f32);
+        if v.iter().any(|x| !x.is_finite()) {
+            return Err((
+                format!("clip_planes[{i}]"),
+                "base, ddx and ddy must be finite f32s".into(),
+            ));
+        }
+        clip_planes.push(v);
+    }
     Ok(PixelState {
         float_rules,
         alpha_test,
         outputs,
+        clip_planes,
+        flat,
     })
 }
 
