@@ -678,7 +678,7 @@ impl Resolver {
         let pixel = super::pixel_state::read(&fields, &target_of, (target, w, h), &sampled)
             .map_err(|(field, m)| self.err(&format!("{at}.{field}"), m))?;
         Ok(DrawStep {
-            pixel,
+            pixel: Box::new(pixel),
             target,
             shader,
             inputs,

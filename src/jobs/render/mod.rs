@@ -91,8 +91,9 @@ pub struct DrawStep {
     pub samplers: Vec<(u32, Source, SamplerState)>,
     /// Blend state and write mask of the output merger.
     pub output: OutputState,
-    /// Float rules and alpha test ([`pixel_state`]).
-    pub pixel: pixel_state::PixelState,
+    /// Float rules, alpha test, further targets, clip planes, flat
+    /// shading ([`pixel_state`]); boxed, as most draws leave it default.
+    pub pixel: Box<pixel_state::PixelState>,
 }
 
 /// One step of a draw list.

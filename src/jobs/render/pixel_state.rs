@@ -66,12 +66,18 @@ pub struct PixelState {
     pub alpha_test: Option<AlphaTest>,
     /// Targets of oC1, oC2, oC3 (index into the list's targets) with their
     /// write masks; `None` where nothing is bound.
-    pub outputs: [Option<(usize, ColorWrite)>; 3],
+    pub outputs: Outputs,
     /// User clip planes as (base, ddx, ddy) of the distance per pixel.
     pub clip_planes: Vec<[f32; 3]>,
     /// D3DSHADE_FLAT: colour inputs hold the first vertex's value.
     pub flat: bool,
 }
+
+/// Targets of oC1, oC2, oC3 with their write masks (`None`: unbound).
+pub type Outputs = [Option<(usize, ColorWrite)>; 3];
+
+/// Finds a target by name as (index, width, height).
+pub(crate) type TargetOf<'a> = &'a dyn Fn(&str) -> Option<(usize, u32, u32)>;
 
 /// The components of input `v<reg>` that flat shading holds constant:
 /// colour semantics — all of color0, the rgb of color1 (its alpha, the
@@ -256,10 +262,10 @@ pub(crate) struct FileFields<'a> {
 /// read.
 fn outputs(
     given: &BTreeMap<String, FileOutput>,
-    target_of: &dyn Fn(&str) -> Option<(usize, u32, u32)>,
+    target_of: TargetOf<'_>,
     draw: (usize, u32, u32),
     sampled: &[usize],
-) -> Result<[Option<(usize, ColorWrite)>; 3], (String, String)> {
+) -> Result<Outputs, (String, String)> {
     let (main, w, h) = draw;
     let mut out = [None; 3];
     for (name, o) in given {
@@ -316,7 +322,7 @@ fn outputs(
 /// height); `draw` is the draw's own target as the same triple.
 pub(crate) fn read(
     f: &FileFields<'_>,
-    target_of: &dyn Fn(&str) -> Option<(usize, u32, u32)>,
+    target_of: TargetOf<'_>,
     draw: (usize, u32, u32),
     sampled: &[usize],
 ) -> Result<PixelState, (String, String)> {
@@ -414,6 +420,7 @@ mod tests {
         .apply(
             Some(&[[0.0, 0.0, 0.0, 1.0], [0.0, 0.0, 0.0, 0.25]]),
             &mut killed,
+            2,
         );
         assert_eq!(killed, vec![false, true]);
     }
