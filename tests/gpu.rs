@@ -273,8 +273,8 @@ mov oC2, r3
         }
         let e1 = e.color[1].as_ref().unwrap();
         let mul_inf_zero = e1[2][3];
-        if rules == FloatRules::D3d9ZeroMul {
-            assert_eq!(mul_inf_zero, 0.0, "0 × ∞ under d3d9-zero-mul");
+        if rules.zero_mul() {
+            assert_eq!(mul_inf_zero, 0.0, "0 × ∞ under {rules}");
         } else {
             assert!(mul_inf_zero.is_nan(), "{rules}: 0 × ∞ is NaN");
         }
@@ -520,6 +520,87 @@ fn texkill_several_outputs_and_depth() {
     }
     // Depth in [0, 1] is stored exactly by a Depth32Float target.
     assert_eq!(e.depth, o.depth);
+}
+
+/// Non-finite constants from a `def` (rebuilt from their bits by the
+/// translation) and from the application, and `texkill` on `.w` alone, on
+/// both backends. Expected by hand: rcp(+inf) = +0 and rcp(+0) = +inf
+/// (`rcp` page: 1/0 = +inf), rcp(-inf) = -0 and rcp(-0) = -inf; a NaN
+/// moved through survives as a NaN; w = -1 kills every pixel of the second
+/// draw.
+#[test]
+fn non_finite_constants_and_texkill_on_w() {
+    let Some(g) = gpu("non_finite_constants_and_texkill_on_w") else {
+        return;
+    };
+    let s = shader(
+        "ps_3_0
+def c1, 1.#INF, -1.#INF, -1.#IND, 1
+rcp r0.x, c0.x
+rcp r0.y, r0.x
+rcp r0.z, c1.y
+rcp r0.w, r0.z
+mov oC0, r0
+mov oC1, c1
+mov oC2, c0
+",
+    );
+    let mut d = Draw::new(2, 2);
+    d.constants.float = vec![[f32::INFINITY, f32::NAN, f32::from_bits(0x7f80_0001), -0.0]];
+    let (e, o) = both(&g, &s, &d, TargetKind::Raw);
+    let want0 = [0.0, f32::INFINITY, -0.0, f32::NEG_INFINITY];
+    for out in [&e.color, &o.color] {
+        for px in out[0].as_ref().unwrap() {
+            for c in 0..4 {
+                assert_eq!(px[c].to_bits(), want0[c].to_bits(), "oC0.{c}: {px:?}");
+            }
+        }
+        let c1 = out[1].as_ref().unwrap()[0];
+        assert_eq!(
+            (c1[0], c1[1], c1[3]),
+            (f32::INFINITY, f32::NEG_INFINITY, 1.0)
+        );
+        assert!(c1[2].is_nan());
+        let c0 = out[2].as_ref().unwrap()[0];
+        assert!(c0[0] == f32::INFINITY && c0[1].is_nan() && c0[2].is_nan());
+    }
+    let s = shader("ps_3_0\ndef c0, 1, 1, 1, -1\nmov r0, c0\ntexkill r0\nmov oC0, r0\n");
+    let (e, o) = both(&g, &s, &Draw::new(2, 2), TargetKind::Raw);
+    assert_eq!(e.killed, vec![true; 4]);
+    assert_eq!(o.killed, vec![true; 4]);
+}
+
+/// The `hardware` rules on both backends, expected by hand: a denormal
+/// constant (2^-149) reads as 0, 2^-126 × 0.5 = 2^-127 is written as 0,
+/// 0 × inf = 0 (the constants come from the application, so no compiler
+/// can fold them).
+#[test]
+fn hardware_rules_flush_denormals_on_both_backends() {
+    let Some(g) = gpu("hardware_rules_flush_denormals_on_both_backends") else {
+        return;
+    };
+    let s = shader(
+        "ps_3_0
+mov r0.x, c0.x
+mov r1, c1
+mul r0.y, c0.y, r1.x
+mul r0.z, c0.z, c0.w
+mov r0.w, c1.x
+mov oC0, r0
+",
+    );
+    let mut d = Draw::new(2, 2);
+    d.float_rules = FloatRules::Hardware;
+    d.constants.float = vec![
+        [f32::from_bits(1), f32::MIN_POSITIVE, f32::INFINITY, 0.0],
+        [0.5, 0.0, 0.0, 0.0],
+    ];
+    let (e, o) = both(&g, &s, &d, TargetKind::Raw);
+    for out in [&e.color, &o.color] {
+        for px in out[0].as_ref().unwrap() {
+            assert_eq!(px.map(f32::to_bits), [0, 0, 0, 0.5f32.to_bits()]);
+        }
+    }
 }
 
 /// A draw prepared once (pipeline compiled, targets allocated) and drawn

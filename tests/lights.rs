@@ -161,6 +161,7 @@ fn profile_reports_costs_and_findings() {
         bins: 12,
         threads: Some(1),
         limits: Default::default(),
+        float_rules: Default::default(),
     };
     // The tiny map is not what --gbuffer draws; check the synthetic one.
     let r = profile::profile(

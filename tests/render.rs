@@ -34,6 +34,7 @@ fn each_draw_alone(list: &DrawList) -> Vec<Vec<[f32; 4]>> {
                 steps: vec![Step::Draw(DrawStep {
                     target: 0,
                     output: OutputState::default(),
+                    pixel: Default::default(),
                     ..d.clone()
                 })],
                 ..list.clone()
@@ -428,4 +429,131 @@ fn render_outputs_are_all_or_nothing_and_never_an_input() {
     assert!(stderr(&o).contains("frame.exr"), "{}", stderr(&o));
     assert_eq!(std::fs::read(&image).unwrap(), before);
     assert!(!dir.path().join("frame.png").exists());
+}
+
+/// `float_rules` and `alpha_test` in a draw list. By hand: v0 is the pixel
+/// centre's texture coordinate, (x + ½)/4 for x = 0..3: 0.125, 0.375, 0.625,
+/// 0.875, whose 8-bit codes are 32, 96, 159, 223 (floor(255·a + ½)); with
+/// GREATEREQUAL 128 the two left columns are discarded. c0 = (0, inf): the
+/// `hardware` rules make 0 × inf = 0 where `d3d9` gives NaN.
+#[test]
+fn alpha_test_and_float_rules_from_a_draw_list() {
+    let dir = std::env::temp_dir().join(format!("ps30-pixel-state-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::write(
+        dir.join("a.psh"),
+        "ps_3_0\ndcl_texcoord0 v0\nmul r0.x, c0.x, c0.y\nmov r0.yzw, v0.x\nmov oC0, r0\n",
+    )
+    .unwrap();
+    let list = |rules: &str| {
+        format!(
+            r#"{{"targets": [{{"name": "t", "size": "4x1", "format": "A32B32G32R32F"}}],
+               "steps": [{{"clear": "t", "color": [255, 255, 255, 255]}},
+                         {{"draw": "t", "shader": "a.psh", "inputs": {{"v0": "texcoord"}},
+                           "constants": {{"c0": [0, "inf"]}}, "float_rules": "{rules}",
+                           "alpha_test": {{"func": "GREATEREQUAL", "ref": 128}}}}]}}"#
+        )
+    };
+    for (rules, nan) in [("hardware", false), ("d3d9", true)] {
+        let path = dir.join(format!("{rules}.json"));
+        std::fs::write(&path, list(rules)).unwrap();
+        let loaded = file::read(&path, &Default::default()).unwrap();
+        let (_, states) = render::run(&loaded.list, &Default::default(), &mut |_, _| {}).unwrap();
+        let px: Vec<[f32; 4]> = (0..4).map(|x| states[0].target.texel(x, 0)).collect();
+        assert_eq!(
+            px[0], [1.0; 4],
+            "{rules}: alpha 0.125 fails, the clear stays"
+        );
+        assert_eq!(px[1], [1.0; 4], "{rules}: alpha 0.375 fails");
+        for p in &px[2..] {
+            assert_eq!(p[0].is_nan(), nan, "{rules}: 0 × inf");
+            assert!(p[3] >= 0.5);
+        }
+    }
+}
+
+/// Multiple render targets through a draw list. By hand: oC0 = (1, 0, 0,
+/// a) with a = v0.x (0.125, 0.375, 0.625, 0.875 over four pixels), oC1 =
+/// (0.25, 0.5, 0.75, 1) through the write mask `rg` onto a target cleared
+/// to white, oC2 = v0 into an R32F target (red only is stored). The alpha
+/// test (GREATEREQUAL 128) discards the two left pixels in every target.
+#[test]
+fn multiple_render_targets_with_their_own_masks_and_formats() {
+    let dir = std::env::temp_dir().join(format!("ps30-mrt-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::write(
+        dir.join("mrt.psh"),
+        "ps_3_0\ndcl_texcoord0 v0\ndef c0, 1, 0, 0.25, 0.5\ndef c1, 0.75, 1, 0, 0\n\
+         mov r0, c0.xyyy\nmov r0.w, v0.x\nmov oC0, r0\n\
+         mov r1.xy, c0.zw\nmov r1.zw, c1.xy\nmov oC1, r1\nmov oC2, v0\n",
+    )
+    .unwrap();
+    let list = r#"{"targets": [{"name": "a", "size": "4x1", "format": "A8R8G8B8"},
+                               {"name": "b", "size": "4x1", "format": "A16B16G16R16F"},
+                               {"name": "c", "size": "4x1", "format": "R32F"},
+                               {"name": "small", "size": "2x1", "format": "R32F"}],
+       "steps": [{"clear": "b", "color": [255, 255, 255, 255]},
+                 {"draw": "a", "shader": "mrt.psh", "inputs": {"v0": "texcoord"},
+                  "alpha_test": {"func": "GREATEREQUAL", "ref": 128},
+                  "outputs": {"oC1": {"target": "b", "write": "rg"}, "oC2": "c"}}]}"#;
+    let path = dir.join("mrt.json");
+    std::fs::write(&path, list).unwrap();
+    let loaded = file::read(&path, &Default::default()).unwrap();
+    let (_, states) = render::run(&loaded.list, &Default::default(), &mut |_, _| {}).unwrap();
+    let px = |t: usize, x: u32| states[t].target.texel(x, 0);
+    for x in 0..2 {
+        assert_eq!(px(0, x), [0.0; 4], "pixel {x} discarded: a keeps its clear");
+        assert_eq!(px(1, x), [1.0; 4], "pixel {x} discarded: b keeps white");
+        assert_eq!(px(2, x)[0], 0.0);
+    }
+    for x in 2..4 {
+        let a = (x as f32 + 0.5) / 4.0;
+        // 8-bit alpha: the code floor(255a + 1/2) read back as code/255.
+        let code = (255.0 * a + 0.5).floor() / 255.0;
+        assert_eq!(px(0, x), [1.0, 0.0, 0.0, code]);
+        // 0.25 and 0.5 are exact in half; b and a stay white (the mask).
+        assert_eq!(px(1, x), [0.25, 0.5, 1.0, 1.0]);
+        assert_eq!(px(2, x)[0], a, "R32F stores v0.x exactly");
+    }
+    // A target of another size is refused, naming the field.
+    std::fs::write(&path, list.replace(r#""oC2": "c""#, r#""oC2": "small""#)).unwrap();
+    let e = file::read(&path, &Default::default())
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.contains("steps[1].outputs.oC2") && e.contains("one size"),
+        "{e}"
+    );
+}
+
+/// Flat shading and a user clip plane from a draw list. By hand: v0 (a
+/// colour) is 0.5 + 0.25·x at pixel x; flat, it holds its value at the
+/// quad's first vertex, the corner half a pixel left of pixel 0's centre:
+/// 0.5 − 0.125 = 0.375 everywhere. The plane 1.5 − x is 1.5, 0.5, −0.5,
+/// −1.5: pixels 2 and 3 are clipped and keep the clear (0).
+#[test]
+fn flat_shading_and_clip_planes_from_a_draw_list() {
+    let dir = std::env::temp_dir().join(format!("ps30-flat-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::write(dir.join("c.psh"), "ps_3_0\ndcl_color0 v0\nmov oC0, v0\n").unwrap();
+    let list = |extra: &str| {
+        format!(
+            r#"{{"targets": [{{"name": "t", "size": "4x1", "format": "R32F"}}],
+               "steps": [{{"draw": "t", "shader": "c.psh",
+                 "inputs": {{"v0": {{"base": [0.5], "ddx": [0.25]}}}}{extra}}}]}}"#
+        )
+    };
+    let red = |extra: &str| -> Vec<f32> {
+        let path = dir.join("c.json");
+        std::fs::write(&path, list(extra)).unwrap();
+        let loaded = file::read(&path, &Default::default()).unwrap();
+        let (_, states) = render::run(&loaded.list, &Default::default(), &mut |_, _| {}).unwrap();
+        (0..4).map(|x| states[0].target.texel(x, 0)[0]).collect()
+    };
+    assert_eq!(red(""), vec![0.5, 0.75, 1.0, 1.25]);
+    assert_eq!(red(r#", "shade": "flat""#), vec![0.375; 4]);
+    assert_eq!(
+        red(r#", "clip_planes": [{"base": 1.5, "ddx": -1}]"#),
+        vec![0.5, 0.75, 0.0, 0.0]
+    );
 }

@@ -127,7 +127,7 @@ fn const_values<T>(
 
 /// `cN=X[,Y,Z,W]` or `NAME=X,…`.
 pub fn parse_float_const(s: &str) -> Result<(ConstRef, Vec<f32>), String> {
-    const_values(s, 'c', 224, 4, parse_finite)
+    const_values(s, 'c', 224, 4, ps30::core::numbers::parse_constant)
 }
 
 /// `iN=X[,Y,Z,W]` or `NAME=X,…`.
@@ -302,7 +302,8 @@ pub struct InputArgs {
 #[derive(Args)]
 pub struct ConstantArgs {
     /// Float constant set by the application, by register or by its name in the
-    /// shader's constant table, e.g. --const c3=0.27,0.67,0.06,0.01.
+    /// shader's constant table, e.g. --const c3=0.27,0.67,0.06,0.01. Any 32-bit
+    /// pattern, as Direct3D 9 takes it: inf, -inf, nan or bits (0x7f800000).
     #[arg(long = "const", value_name = "cN|NAME=X[,Y,Z,W]", value_parser = parse_float_const)]
     pub floats: Vec<(ConstRef, Vec<f32>)>,
     /// Integer constant set by the application, by register or by its name in the
@@ -636,6 +637,8 @@ pub enum FloatRulesArg {
     Ieee,
     /// d3d9, and a product with a zero factor is 0 (0 × inf = 0).
     D3d9ZeroMul,
+    /// What Direct3D 9 hardware computes: d3d9-zero-mul, and denormals flushed to zero in and out.
+    Hardware,
 }
 
 impl From<FloatRulesArg> for ps30::core::float_rules::FloatRules {
@@ -645,6 +648,7 @@ impl From<FloatRulesArg> for ps30::core::float_rules::FloatRules {
             FloatRulesArg::D3d9 => FloatRules::D3d9,
             FloatRulesArg::Ieee => FloatRules::Ieee,
             FloatRulesArg::D3d9ZeroMul => FloatRules::D3d9ZeroMul,
+            FloatRulesArg::Hardware => FloatRules::Hardware,
         }
     }
 }
@@ -665,7 +669,7 @@ pub struct BackendArgs {
     /// Draw on the emulator (default) or on a GPU through Vulkan, with the translated shader.
     #[arg(long, value_enum, default_value = "emulator")]
     pub backend: BackendArg,
-    /// Special values: d3d9 (Microsoft's pages, the default), ieee, or d3d9-zero-mul.
+    /// Special values: d3d9 (Microsoft's pages, the default), ieee, d3d9-zero-mul, or hardware.
     #[arg(long, value_enum, default_value = "d3d9")]
     pub float_rules: FloatRulesArg,
 }

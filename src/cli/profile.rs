@@ -45,6 +45,9 @@ pub struct Args {
     /// s0's MIPMAPLODBIAS, added to every level of detail.
     #[arg(long, value_name = "B", default_value_t = 0.0, allow_negative_numbers = true, value_parser = parse_finite)]
     lod_bias: f32,
+    /// Special values: d3d9 (the default), ieee, d3d9-zero-mul, or hardware.
+    #[arg(long, value_enum, default_value = "d3d9")]
+    float_rules: super::args::FloatRulesArg,
     /// s0's MAXMIPLEVEL (the most detailed level allowed).
     #[arg(long, value_name = "N", default_value_t = 0)]
     max_mip_level: u32,
@@ -103,6 +106,7 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         bins: args.bins as usize,
         threads: args.exec.threads(),
         limits: args.exec.limits(),
+        float_rules: args.float_rules.into(),
     };
     let r = {
         let _spinner = ui.spinner("running the shader");

@@ -40,6 +40,9 @@ pub struct Args {
     /// bytes than this (an upper bound computed before any step runs).
     #[arg(long, value_name = "BYTES", default_value_t = 1 << 30, value_parser = clap::value_parser!(u64).range(1..))]
     max_staged_bytes: u64,
+    /// Float rules of the draws that name none: d3d9 (the default), ieee, d3d9-zero-mul, or hardware.
+    #[arg(long, value_enum, default_value = "d3d9")]
+    float_rules: super::args::FloatRulesArg,
     #[command(flatten)]
     exec: ExecArgs,
     #[command(flatten)]
@@ -121,6 +124,7 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
             max_pixels: args.max_list_pixels,
             max_executed: args.max_list_executed,
         },
+        float_rules: args.float_rules.into(),
     };
     if args.every_step {
         let staged = render::staged_bytes_every_step(list);

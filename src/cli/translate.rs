@@ -19,7 +19,7 @@ pub struct Args {
     /// Write to this file (atomically) instead of stdout.
     #[arg(short, long)]
     output: Option<PathBuf>,
-    /// Special values: d3d9 (Microsoft's pages, the default), ieee, or d3d9-zero-mul.
+    /// Special values: d3d9 (Microsoft's pages, the default), ieee, d3d9-zero-mul, or hardware.
     #[arg(long, value_enum, default_value = "d3d9")]
     float_rules: FloatRulesArg,
     #[command(flatten)]

@@ -27,11 +27,21 @@ pub enum FloatRules {
     /// 0 × NaN = 0) in `mul`, `mad`, `lrp`, `dp2add`, `dp3`, `dp4`, the
     /// matrix instructions and `nrm`.
     D3d9ZeroMul,
+    /// What native Direct3D 9 hardware computes: `D3d9ZeroMul`, and every
+    /// denormal flushed to zero (of the same sign) where it enters the
+    /// shader (constants, inputs, texture samples) and where an instruction
+    /// writes it. See `docs/float-rules.md` for the evidence of each rule.
+    Hardware,
 }
 
 impl FloatRules {
     /// Every set, the default first: the order `--float-rules` lists them in.
-    pub const ALL: [FloatRules; 3] = [FloatRules::D3d9, FloatRules::Ieee, FloatRules::D3d9ZeroMul];
+    pub const ALL: [FloatRules; 4] = [
+        FloatRules::D3d9,
+        FloatRules::Ieee,
+        FloatRules::D3d9ZeroMul,
+        FloatRules::Hardware,
+    ];
 
     /// The name used on the command line and in reports.
     pub fn name(self) -> &'static str {
@@ -39,6 +49,7 @@ impl FloatRules {
             FloatRules::D3d9 => "d3d9",
             FloatRules::Ieee => "ieee",
             FloatRules::D3d9ZeroMul => "d3d9-zero-mul",
+            FloatRules::Hardware => "hardware",
         }
     }
 
@@ -55,7 +66,13 @@ impl FloatRules {
 
     /// Whether a zero factor makes a product zero.
     pub fn zero_mul(self) -> bool {
-        self == FloatRules::D3d9ZeroMul
+        matches!(self, FloatRules::D3d9ZeroMul | FloatRules::Hardware)
+    }
+
+    /// Whether denormals are flushed to zero on the way in and out of every
+    /// instruction (`hardware`).
+    pub fn flush_denormals(self) -> bool {
+        self == FloatRules::Hardware
     }
 }
 
@@ -126,6 +143,17 @@ pub const RULES: &[Rule] = &[
 /// f32's largest finite value (D3D9's FLT_MAX).
 pub const FLT_MAX: f32 = f32::MAX;
 
+/// `x` with a denormal flushed to a zero of its sign (the `hardware`
+/// rules' treatment of every value an instruction reads or writes).
+#[inline(always)]
+pub fn flush(x: f32) -> f32 {
+    if x.is_subnormal() {
+        0.0f32.copysign(x)
+    } else {
+        x
+    }
+}
+
 /// A product's operand under the zero-multiply rule: `a`, or 0 when the
 /// other factor `b` is zero (so that `a · b` is 0 whatever `a` is).
 #[inline(always)]
@@ -158,5 +186,16 @@ mod tests {
         let p = zero_mul_operand(f32::NAN, 0.0) * zero_mul_operand(0.0, f32::NAN);
         assert_eq!(p, 0.0);
         assert_eq!(zero_mul_operand(2.0, 3.0) * zero_mul_operand(3.0, 2.0), 6.0);
+    }
+
+    #[test]
+    fn flush_keeps_sign_and_normals() {
+        let tiny = f32::from_bits(1);
+        assert_eq!(flush(tiny).to_bits(), 0);
+        assert_eq!(flush(-tiny).to_bits(), 0x8000_0000);
+        assert_eq!(flush(f32::MIN_POSITIVE), f32::MIN_POSITIVE);
+        assert!(flush(f32::NAN).is_nan());
+        assert_eq!(flush(f32::INFINITY), f32::INFINITY);
+        assert!(FloatRules::Hardware.zero_mul() && FloatRules::Hardware.d3d9_specials());
     }
 }

@@ -123,9 +123,57 @@ pub fn serialize_f32_shortest<S: serde::Serializer>(v: &f32, s: S) -> Result<S::
     }
 }
 
+/// A float constant as a user writes it: a decimal number, `inf`, `-inf`,
+/// `nan`, `-nan` (any case, `infinity` too), or its 32 bits in hex
+/// (`0x7f800000`, `0xffc00000`, `0x00000001` for the smallest denormal).
+/// Direct3D 9 passes any 32-bit pattern through `SetPixelShaderConstantF`,
+/// so every pattern can be spelled; `nan` is 0x7FC00000 and `-nan`
+/// 0xFFC00000. A decimal too large for f32 is refused rather than turned
+/// into ∞ unasked.
+pub fn parse_constant(s: &str) -> Result<f32, String> {
+    let t = s.trim();
+    let lower = t.to_ascii_lowercase();
+    if let Some(hex) = lower.strip_prefix("0x") {
+        if hex.is_empty() || hex.len() > 8 || !hex.bytes().all(|b| b.is_ascii_hexdigit()) {
+            return Err(format!(
+                "`{s}`: hex bits are 0x and one to eight hex digits"
+            ));
+        }
+        return u32::from_str_radix(hex, 16)
+            .map(f32::from_bits)
+            .map_err(|_| format!("`{s}` is not 32 hex bits"));
+    }
+    let word = lower.trim_start_matches(['+', '-']);
+    let v: f32 = t.parse().map_err(|_| {
+        format!("`{s}` is not a number (write a decimal, inf, -inf, nan or 0x… bits)")
+    })?;
+    if !v.is_finite() && !matches!(word, "inf" | "infinity" | "nan") {
+        return Err(format!(
+            "`{s}` is beyond f32's range (write inf or -inf for an infinity)"
+        ));
+    }
+    Ok(v)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn constants_take_every_bit_pattern() {
+        let bits = |s: &str| parse_constant(s).map(f32::to_bits);
+        assert_eq!(bits("inf"), Ok(0x7f80_0000));
+        assert_eq!(bits("-INF"), Ok(0xff80_0000));
+        assert_eq!(bits("nan"), Ok(0x7fc0_0000));
+        assert_eq!(bits("-nan"), Ok(0xffc0_0000));
+        assert_eq!(bits("0x7F800001"), Ok(0x7f80_0001));
+        assert_eq!(bits("0x1"), Ok(1));
+        assert_eq!(bits(" 0.5 "), Ok(0x3f00_0000));
+        assert!(bits("1e39").is_err());
+        assert!(bits("0x").is_err());
+        assert!(bits("0x123456789").is_err());
+        assert!(bits("nanx").is_err());
+    }
 
     #[test]
     fn numbers_are_short_and_spell_infinity() {

@@ -59,6 +59,14 @@ impl Worker<'_, '_> {
     #[inline(always)]
     pub(super) fn store<const SCALAR: bool>(&mut self, d: DstOp, mask: u8) {
         let n = self.span();
+        if self.ctx.rules.flush_denormals() {
+            // `hardware`: a denormal result is written as a zero.
+            for c in 0..if SCALAR { 1 } else { 4 } {
+                for v in &mut self.tmp[c][..n] {
+                    *v = crate::core::float_rules::flush(*v);
+                }
+            }
+        }
         let full = self.exec == self.live && !d.predicated();
         let sat = d.sat();
         let base = d.row as usize;
@@ -489,13 +497,15 @@ impl Worker<'_, '_> {
         }
     }
 
-    /// `texkill`: lanes to kill — any of the operand's x, y, z (those in its
-    /// mask) below zero (MS `texkill---ps`); predication applies per
-    /// component.
+    /// `texkill`: lanes to kill — any of the operand's x, y, z, w (those in
+    /// its mask) below zero. ps_2_0 and later test all four components
+    /// (Wine's wined3d: "2.0 shaders compare all 4 components in texkill";
+    /// only ps_1_x's texture-coordinate form stops at .xyz); predication
+    /// applies per component.
     pub(super) fn texkill(&self, d: DstOp) -> u64 {
         let n = self.span();
         let mut kill = 0u64;
-        for c in 0..3 {
+        for c in 0..4 {
             if d.mask() & (1 << c) == 0 {
                 continue;
             }

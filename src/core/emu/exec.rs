@@ -236,6 +236,11 @@ impl<'c, 'a> Worker<'c, 'a> {
                     for l in 0..n {
                         row[l] = input.base[c] + xs[l] * input.ddx[c] + ys[l] * input.ddy[c];
                     }
+                    if ctx.rules.flush_denormals() {
+                        for v in &mut row[..n] {
+                            *v = crate::core::float_rules::flush(*v);
+                        }
+                    }
                 }
             }
         }

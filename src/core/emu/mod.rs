@@ -64,7 +64,8 @@
 //!   bottom-left − top-left), reading whatever the neighbour lane holds (its
 //!   last value if it is masked off or killed).
 //! * The sampler swizzle of texld (`s0.yzxw`) reorders the sampled result.
-//! * `texkill` tests the x, y, z components that its operand's mask selects.
+//! * `texkill` tests the x, y, z and w components that its operand's mask
+//!   selects (ps_2_0 and later test w too; ps_1_x stopped at xyz).
 //! * `_pp` is ignored (computed in full f32 precision, which MS-MOD allows).
 //! * rep/loop integer constants outside Microsoft's ranges (count and loop
 //!   start 0..=255, step −128..=127) are refused with
@@ -637,6 +638,12 @@ impl<'c, 'a> RunCtx<'c, 'a> {
         floats[..c.float.len()].copy_from_slice(&c.float);
         for &(i, v) in &compiled.float_defs {
             floats[i as usize] = v;
+        }
+        if draw.float_rules.flush_denormals() {
+            // `hardware`: a denormal constant reads as a zero.
+            for v in floats.iter_mut().flatten() {
+                *v = crate::core::float_rules::flush(*v);
+            }
         }
         let ints = int_constants(compiled, c)?;
         let mut bools = 0u16;

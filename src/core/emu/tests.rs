@@ -1113,8 +1113,13 @@ fn texkill_discards_pixels_that_keep_running() {
 }
 
 #[test]
-fn texkill_ignores_w_and_kills_everything() {
+fn texkill_tests_w_and_kills_everything() {
+    // ps_2_0 and later kill on any of x, y, z, w below zero: w alone kills.
     let c = compiled("def c0, 1, 1, 1, -1\nmov r0, c0\ntexkill r0\nmov oC0, r0");
+    let out = run(&c, &Draw::new(1, 1)).unwrap();
+    assert_eq!(out.killed, vec![true]);
+    // ... unless the operand's mask leaves w out.
+    let c = compiled("def c0, 1, 1, 1, -1\nmov r0, c0\ntexkill r0.xyz\nmov oC0, r0");
     let out = run(&c, &Draw::new(1, 1)).unwrap();
     assert_eq!(out.killed, vec![false]);
     let c = compiled("def c0, 1, -1, 1, 1\nmov r0, c0\ntexkill r0\nmov oC0, r0");
@@ -1973,4 +1978,32 @@ fn texld_into_outputs_and_inside_divergent_branches() {
     assert_eq!(c2, &vec![tex[0], tex[0], tex[1], tex[1]]);
     let c0 = out.color[0].as_ref().unwrap();
     assert_eq!(c0, &vec![tex[0], tex[0], [9.0; 4], [9.0; 4]]);
+}
+
+#[test]
+fn hardware_rules_flush_denormals_and_zero_products() {
+    use crate::core::float_rules::FloatRules;
+    // c0.x is the smallest denormal (2^-149), c0.y = 2^-126 (the smallest
+    // normal), c0.z = +inf, c0.w = 0. By hand: under `hardware` the denormal
+    // constant reads as 0; 2^-126 × 0.5 = 2^-127 is a denormal result,
+    // written as 0; 0 × inf = 0. Under `d3d9` all three keep IEEE values.
+    let text = "mov r0.x, c0.x
+                mov r1, c1
+mul r0.y, c0.y, r1.x
+                mul r0.z, c0.z, c0.w
+                mov r0.w, c1.x
+                mov oC0, r0";
+    let mut d = Draw::new(1, 1);
+    d.constants.float = vec![
+        [f32::from_bits(1), f32::MIN_POSITIVE, f32::INFINITY, 0.0],
+        [0.5, 0.0, 0.0, 0.0],
+    ];
+    d.float_rules = FloatRules::Hardware;
+    let hw = run_text(text, &d).color[0].as_ref().unwrap()[0];
+    assert_eq!(hw.map(f32::to_bits), [0, 0, 0, 0.5f32.to_bits()]);
+    d.float_rules = FloatRules::D3d9;
+    let ms = run_text(text, &d).color[0].as_ref().unwrap()[0];
+    assert_eq!(ms[0].to_bits(), 1);
+    assert_eq!(ms[1].to_bits(), 1 << 22, "2^-127 as a denormal");
+    assert!(ms[2].is_nan());
 }

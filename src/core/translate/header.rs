@@ -53,6 +53,9 @@ pub fn lines(source: &str, t: &Translation, target: Target) -> Vec<String> {
                 .into(),
         );
     }
+    if t.rules.flush_denormals() {
+        l.push("  denormals read from constants and inputs, and written by any instruction, are zeros of their sign".into());
+    }
     l.push(format!("entry point: fragment `{}`", t.entry_name()));
     l.push(String::new());
     l.push(format!(

@@ -94,8 +94,44 @@ impl Lower<'_> {
 
     // ----- sources ------------------------------------------------------------
 
-    /// A register's value as a vec4 (no swizzle, no modifier).
+    /// A register's value as a vec4 (no swizzle, no modifier); under the
+    /// `hardware` rules a constant's or an input's denormals read as zeros
+    /// (temporaries and outputs were flushed when written).
     pub fn reg(&mut self, reg: Reg, relative: bool) -> Result<Expr, TranslateError> {
+        let v = self.reg_raw(reg, relative)?;
+        if self.rules.flush_denormals() && matches!(reg.file, RegFile::Const | RegFile::Input) {
+            return Ok(self.flush(v, Some(VectorSize::Quad)));
+        }
+        Ok(v)
+    }
+
+    /// `v` with denormals replaced by zeros of their sign (`hardware`): the
+    /// sign bit alone, taken through the bits (a device need not keep the
+    /// sign of a zero it computes, so `v * 0` would not do).
+    fn flush(&mut self, v: Expr, size: Option<VectorSize>) -> Expr {
+        let tiny = self.fb.f32(f32::MIN_POSITIVE);
+        let sign = self.fb.u32(0x8000_0000);
+        let (tiny, sign) = match size {
+            Some(size) => (self.fb.splat(tiny, size), self.fb.splat(sign, size)),
+            None => (tiny, sign),
+        };
+        let a = self.fb.math(M::Abs, &[v]);
+        let small = self.fb.binary(B::Less, a, tiny);
+        let bits = self.fb.add(Expression::As {
+            expr: v,
+            kind: naga::ScalarKind::Uint,
+            convert: None,
+        });
+        let sign_bits = self.fb.binary(B::And, bits, sign);
+        let signed_zero = self.fb.add(Expression::As {
+            expr: sign_bits,
+            kind: naga::ScalarKind::Float,
+            convert: None,
+        });
+        self.fb.select(small, signed_zero, v)
+    }
+
+    fn reg_raw(&mut self, reg: Reg, relative: bool) -> Result<Expr, TranslateError> {
         let cx = self.cx;
         let fb = &mut self.fb;
         Ok(match reg.file {
@@ -114,6 +150,17 @@ impl Lower<'_> {
             }
             RegFile::Const => match cx.float_defs.get(&reg.index) {
                 Some(&c) => fb.add(Expression::Constant(c)),
+                None if cx.float_def_bits.contains_key(&reg.index) => {
+                    let bits = cx.float_def_bits[&reg.index];
+                    let components = bits.map(|b| fb.u32(b)).to_vec();
+                    let ty = cx.t.uvec4;
+                    let u = fb.add(Expression::Compose { ty, components });
+                    fb.add(Expression::As {
+                        expr: u,
+                        kind: naga::ScalarKind::Float,
+                        convert: None,
+                    })
+                }
                 None => {
                     let c = cx.block(fb, 0);
                     let p = fb.index(c, reg.index);
@@ -272,6 +319,11 @@ impl Lower<'_> {
             (false, v) => v,
             (true, Value::Vector(v)) => Value::Vector(self.fb.math(M::Saturate, &[v])),
             (true, Value::Scalar(v)) => Value::Scalar(self.fb.math(M::Saturate, &[v])),
+        };
+        let value = match value {
+            _ if !self.rules.flush_denormals() => value,
+            Value::Vector(v) => Value::Vector(self.flush(v, Some(VectorSize::Quad))),
+            Value::Scalar(v) => Value::Scalar(self.flush(v, None)),
         };
         let mask = d.mask.0 & allowed;
         let ptr = cx.var(&mut self.fb, g);
@@ -664,8 +716,8 @@ impl Lower<'_> {
         Ok(())
     }
 
-    /// `texkill`: the pixel is marked killed if any of the masked x, y, z
-    /// is below zero; it keeps running (D3D9 only flags it, and the
+    /// `texkill`: the pixel is marked killed if any of the masked x, y, z,
+    /// w is below zero (ps_2_0 and later test all four, as `emu/arith.rs`); it keeps running (D3D9 only flags it, and the
     /// emulator keeps it as a neighbour for gradients) and is discarded at
     /// the end.
     fn texkill(&mut self, ins: &Instruction) -> Result<(), TranslateError> {
@@ -675,7 +727,7 @@ impl Lower<'_> {
         let v = self.reg(d.reg, false)?;
         let zero = self.fb.f32(0.0);
         let mut any: Option<Expr> = None;
-        for c in 0..3 {
+        for c in 0..4 {
             if !d.mask.has(c) {
                 continue;
             }

@@ -113,13 +113,6 @@ impl Target {
 pub enum TranslateError {
     /// Something the lowering does not express (named).
     Unsupported(String),
-    /// A constant naga cannot hold as a literal.
-    NonFinite {
-        /// The definition that holds it (`def c3`).
-        what: String,
-        /// The value (±∞ or NaN).
-        value: f32,
-    },
     /// naga's validator rejected the module: a bug in the lowering.
     Invalid(String),
     /// A naga writer failed.
@@ -137,10 +130,6 @@ impl fmt::Display for TranslateError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             TranslateError::Unsupported(what) => write!(f, "cannot translate {what}"),
-            TranslateError::NonFinite { what, value } => write!(
-                f,
-                "cannot translate `{what}`: {value} is not finite, and shading languages have no literal for it"
-            ),
             TranslateError::Invalid(e) => {
                 write!(f, "the translated module fails naga's validation: {e}")
             }

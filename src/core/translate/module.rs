@@ -56,6 +56,8 @@ pub(super) struct Ctx {
     /// `ps30_border`, when a 2D or volume sampler may need it.
     pub border: Option<Handle<naga::Function>>,
     pub float_defs: BTreeMap<u32, Handle<Constant>>,
+    /// Definitions holding ±∞ or NaN, as bits: read as a bitcast.
+    pub float_def_bits: BTreeMap<u32, [u32; 4]>,
     pub int_defs: BTreeMap<u32, Handle<Constant>>,
     pub bool_defs: BTreeMap<u32, bool>,
 }
@@ -291,12 +293,14 @@ impl Ctx {
         let killed = global(m, "killed", AddressSpace::Private, None, t.bool);
 
         let mut float_defs = BTreeMap::new();
+        let mut float_def_bits = BTreeMap::new();
         for d in &p.float_defs {
-            if let Some(bad) = d.value.iter().find(|v| !v.is_finite()) {
-                return Err(TranslateError::NonFinite {
-                    what: format!("def c{}", d.index),
-                    value: *bad,
-                });
+            // ±∞ and NaN have no literal in the shading languages (naga
+            // refuses them): such a definition is rebuilt from its bits
+            // where it is read (`lower.rs`), so every pattern survives.
+            if d.value.iter().any(|v| !v.is_finite()) {
+                float_def_bits.insert(d.index, d.value.map(f32::to_bits));
+                continue;
             }
             let lits = d.value.map(Literal::F32);
             let c = constant(m, format!("c{}", d.index), t.vec4, &lits);
@@ -325,6 +329,7 @@ impl Ctx {
             // Added by `core::translate` with `texture::add_border_function`.
             border: None,
             float_defs,
+            float_def_bits,
             int_defs,
             bool_defs,
         })

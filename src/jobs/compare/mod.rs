@@ -75,7 +75,7 @@ pub struct DrawComparison {
     pub height: u32,
     /// What the targets store: a D3D9 format, or `f32` (unrounded).
     pub target: String,
-    /// The float rules both backends ran under (`d3d9`, `ieee`, `d3d9-zero-mul`).
+    /// The float rules both backends ran under (`d3d9`, `ieee`, `d3d9-zero-mul`, `hardware`).
     pub float_rules: String,
     /// One entry per written channel (`oC0.r` … `oDepth`).
     pub channels: Vec<ChannelStats>,

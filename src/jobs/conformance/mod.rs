@@ -468,24 +468,13 @@ fn register_value(
     out.ok_or_else(|| format!("v{reg} is not declared"))
 }
 
-/// The components of `v<reg>` that D3DSHADE_FLAT holds constant: colour
-/// semantics — all of color0, the rgb of color1 (its alpha, the specular
-/// alpha, is interpolated).
+/// The components of `v<reg>` that D3DSHADE_FLAT holds constant (the
+/// draw lists' rule: [`crate::jobs::render::pixel_state::flat_components`]).
 fn flat_components(program: &crate::core::ir::Program, reg: u32, shade: Shade) -> [bool; 4] {
-    let mut flat = [false; 4];
     if shade == Shade::Gouraud {
-        return flat;
+        return [false; 4];
     }
-    for d in program
-        .inputs
-        .iter()
-        .filter(|d| d.reg.file == RegFile::Input && d.reg.index == reg && d.usage == "color")
-    {
-        for (c, f) in flat.iter_mut().enumerate() {
-            *f |= d.mask.has(c) && !(d.usage_index == 1 && c == 3);
-        }
-    }
-    flat
+    crate::jobs::render::pixel_state::flat_components(program, reg)
 }
 
 /// The application's constants, by register name.

@@ -212,6 +212,9 @@ pub struct Setup {
     pub threads: Option<usize>,
     /// The emulator's bounds (executed slots per pixel, target size).
     pub limits: emu::EmuLimits,
+    /// The float rules the draw computes by (`--float-rules`): costs follow
+    /// the values where a branch reads a special one.
+    pub float_rules: crate::core::float_rules::FloatRules,
 }
 
 /// The float constants the input sets itself: the G-buffer scene sets c4
@@ -403,6 +406,7 @@ fn gbuffer_draw<'s>(
     let mut draw = scene.draw();
     draw.record_lod = true;
     draw.limits = setup.limits;
+    draw.float_rules = setup.float_rules;
     // The command line's constants, except c4, which the scene sets.
     let mut floats = setup.constants.float.clone();
     floats.resize(floats.len().max(5), [0.0; 4]);
@@ -446,6 +450,7 @@ fn image_draw<'i>(
     draw.constants = setup.constants.clone();
     draw.record_lod = true;
     draw.limits = setup.limits;
+    draw.float_rules = setup.float_rules;
     if loaded.shader.program().sampler_type(0).is_some() {
         let tex: TextureLevels = match chain {
             Some(c) => c.into(),

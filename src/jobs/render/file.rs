@@ -32,7 +32,8 @@
 //!   * `{"draw": TARGET, "shader": …, …}` — `shader` is a bundled name or a
 //!     file; `defines` (REPEAT_BLOCK counts), `inputs` (`"v0": "texcoord"` for
 //!     pixel centres in [0, 1], or `{"base": […], "ddx": […], "ddy": […]}`),
-//!     `constants` (`"c5": [x, y, z, w]`), `ints`, `bools`, `samplers`
+//!     `constants` (`"c5": [x, y, z, w]`, a component a number or a string
+//!     for any bit pattern: `"inf"`, `"-inf"`, `"nan"`, `"0x7f800000"`), `ints`, `bools`, `samplers`
 //!     (`"s0": {"texture": NAME, "filter": "point"|"linear", "mip":
 //!     "none"|"point"|"linear", "address": "wrap"|"mirror"|"clamp"|"border"|
 //!     "mirroronce", "border": [r, g, b, a], "lod_bias": B, "max_mip_level":
@@ -40,7 +41,11 @@
 //!     Direct3D 9's defaults: point, no mips, wrap), `blend` (`src`, `dest`,
 //!     `op`, optional `alpha` with its own `src`, `dest`, `op` for
 //!     SEPARATEALPHABLENDENABLE, optional `factor` bytes; absent: blending
-//!     off) and `write` (COLORWRITEENABLE letters, default `rgba`);
+//!     off), `write` (COLORWRITEENABLE letters, default `rgba`), and the
+//!     pixel state of `pixel_state.rs`: `float_rules`, `alpha_test`
+//!     (`{"func": "GREATEREQUAL", "ref": 128}`), `outputs` (`{"oC1":
+//!     TARGET, "oC2": {"target": TARGET, "write": "rg"}}`), `clip_planes`
+//!     (`[{"base": B, "ddx": X, "ddy": Y}]`) and `shade` (`"flat"`);
 //!   * `{"mips": TARGET, "odd": "fold"|"bilinear"}` — reduce the target
 //!     through its mip chain (default `fold`).
 
@@ -138,12 +143,17 @@ struct FileStep {
     shader: Option<String>,
     defines: Option<BTreeMap<String, u64>>,
     inputs: Option<BTreeMap<String, FileInput>>,
-    constants: Option<BTreeMap<String, Vec<f64>>>,
+    constants: Option<BTreeMap<String, Vec<super::floats::FileFloat>>>,
     ints: Option<BTreeMap<String, Vec<i32>>>,
     bools: Option<BTreeMap<String, bool>>,
     samplers: Option<BTreeMap<String, FileSampler>>,
     blend: Option<FileBlend>,
     write: Option<String>,
+    float_rules: Option<String>,
+    alpha_test: Option<super::pixel_state::FileAlphaTest>,
+    outputs: Option<BTreeMap<String, super::pixel_state::FileOutput>>,
+    clip_planes: Option<Vec<super::pixel_state::FileClipPlane>>,
+    shade: Option<String>,
     mips: Option<String>,
     odd: Option<String>,
 }
@@ -508,7 +518,12 @@ impl Resolver {
             || s.bools.is_some()
             || s.samplers.is_some()
             || s.blend.is_some()
-            || s.write.is_some();
+            || s.write.is_some()
+            || s.float_rules.is_some()
+            || s.alpha_test.is_some()
+            || s.outputs.is_some()
+            || s.clip_planes.is_some()
+            || s.shade.is_some();
         let target = |name: &str, field: &str| {
             self.list.target(name).ok_or_else(|| {
                 self.err(
@@ -641,7 +656,29 @@ impl Resolver {
             })?,
         };
         self.audit(at, shader, s)?;
+        let fields = super::pixel_state::FileFields {
+            float_rules: s.float_rules.as_deref(),
+            alpha_test: s.alpha_test.as_ref(),
+            outputs: s.outputs.as_ref(),
+            clip_planes: s.clip_planes.as_deref(),
+            shade: s.shade.as_deref(),
+        };
+        let targets = &self.list.targets;
+        let target_of = |name: &str| {
+            let i = targets.iter().position(|t| t.name == name)?;
+            Some((i, targets[i].width, targets[i].height))
+        };
+        let sampled: Vec<usize> = samplers
+            .iter()
+            .filter_map(|&(_, src, _)| match src {
+                Source::Target(t) => Some(t),
+                Source::Texture(_) => None,
+            })
+            .collect();
+        let pixel = super::pixel_state::read(&fields, &target_of, (target, w, h), &sampled)
+            .map_err(|(field, m)| self.err(&format!("{at}.{field}"), m))?;
         Ok(DrawStep {
+            pixel: Box::new(pixel),
             target,
             shader,
             inputs,
@@ -695,7 +732,7 @@ impl Resolver {
         for (name, v) in s.constants.iter().flatten() {
             let field = format!("{at}.constants.{name}");
             let reg = register(name, 'c', 224).map_err(|m| self.err(&field, m))?;
-            let value = vec4(v).map_err(|m| self.err(&field, m))?;
+            let value = super::floats::constant4(v).map_err(|m| self.err(&field, m))?;
             set(&mut c.float, [0.0; 4], reg, value);
         }
         for (name, v) in s.ints.iter().flatten() {

@@ -19,6 +19,8 @@
 //! intermediate target without the runner keeping copies.
 
 pub mod file;
+mod floats;
+pub mod pixel_state;
 
 use crate::core::cost::{self, Profile, Range};
 use crate::core::emu::{
@@ -89,6 +91,9 @@ pub struct DrawStep {
     pub samplers: Vec<(u32, Source, SamplerState)>,
     /// Blend state and write mask of the output merger.
     pub output: OutputState,
+    /// Float rules, alpha test, further targets, clip planes, flat
+    /// shading ([`pixel_state`]); boxed, as most draws leave it default.
+    pub pixel: Box<pixel_state::PixelState>,
 }
 
 /// One step of a draw list.
@@ -136,6 +141,8 @@ pub struct Settings {
     pub limits: emu::EmuLimits,
     /// The bounds of the whole list.
     pub budget: ListBudget,
+    /// The float rules of draws that do not name their own.
+    pub float_rules: crate::core::float_rules::FloatRules,
 }
 
 /// Bounds on a whole draw list's work, on top of each draw's
@@ -392,7 +399,7 @@ pub fn run(
                 let list_bound = limits.max_executed_total > executed_left;
                 limits.max_executed_total = limits.max_executed_total.min(executed_left);
                 let (detail, executed) =
-                    draw(list, &compiled[d.shader], d, &mut states, settings.threads, limits)
+                    draw(list, &compiled[d.shader], d, &mut states, settings, limits)
                         .map_err(|e| match e {
                             DrawFailure::Emu(EmuError::TotalExecutedLimit { .. }) if list_bound => {
                                 RenderError::Budget(format!(
@@ -449,16 +456,21 @@ fn draw(
     compiled: &Compiled,
     d: &DrawStep,
     states: &mut [TargetState],
-    threads: Option<usize>,
+    settings: &Settings,
     limits: emu::EmuLimits,
 ) -> Result<(StepDetail, u64), DrawFailure> {
+    let threads = settings.threads;
     let spec = &list.targets[d.target];
     let shader = &list.shaders[d.shader];
     let mut emu_draw = Draw::new(spec.width, spec.height);
     emu_draw.limits = limits;
     emu_draw.record_lod = true;
     emu_draw.inputs = d.inputs.clone();
+    if d.pixel.flat {
+        pixel_state::flatten_inputs(shader.loaded.shader.program(), &mut emu_draw.inputs);
+    }
     emu_draw.constants = d.constants.clone();
+    emu_draw.float_rules = d.pixel.float_rules.unwrap_or(settings.float_rules);
     for &(s, source, state) in &d.samplers {
         let levels: TextureLevels<'_> = match source {
             Source::Texture(t) => {
@@ -483,11 +495,15 @@ fn draw(
         };
         emu_draw.samplers.push((s, levels, state));
     }
-    let out = match threads {
+    let mut out = match threads {
         Some(t) => emu::run_with_threads(compiled, &emu_draw, t),
         None => emu::run(compiled, &emu_draw),
     }
     .map_err(DrawFailure::Emu)?;
+    let oc0 = out.color.first().and_then(|c| c.as_deref());
+    let mut killed = out.killed.clone();
+    d.pixel.apply(oc0, &mut killed, spec.width);
+    out.killed = killed;
     let findings = emu::findings::findings(&out, &emu_draw, &shader.loaded.file);
     let executed = Range {
         min: out.executed.iter().copied().min().unwrap_or(0),
@@ -507,6 +523,22 @@ fn draw(
         },
     };
     state.mips = None;
+    // oC1–oC3 into their own targets: one blend state, each its own mask.
+    for (k, bound) in d.pixel.outputs.iter().enumerate() {
+        let (Some((t, write)), Some(colors)) =
+            (bound, out.color.get(k + 1).and_then(|c| c.as_ref()))
+        else {
+            continue;
+        };
+        let state = &mut states[*t];
+        let output = OutputState {
+            blend: d.output.blend,
+            write: *write,
+        };
+        merge::merge(&mut state.target, colors, &out.killed, &output)
+            .map_err(|e| DrawFailure::Message(format!("oC{}: {e}", k + 1)))?;
+        state.mips = None;
+    }
     let detail = StepDetail::Draw {
         shader: shader.name.clone(),
         counts_agree: executed_static.min <= executed.min && executed.max <= executed_static.max,

@@ -101,6 +101,7 @@ pub fn draw_list(scene: &Scene, lights: &[Light]) -> Result<DrawList, String> {
                 blend: BlendState::with(Equation::ADDITIVE),
                 write: ColorWrite(ColorWrite::RED | ColorWrite::GREEN | ColorWrite::BLUE),
             },
+            pixel: Default::default(),
         }));
     }
     Ok(DrawList {

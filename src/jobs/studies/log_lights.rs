@@ -165,6 +165,7 @@ fn light_draw(target: usize, shader: usize, brightness: f32, output: OutputState
         },
         samplers: Vec::new(),
         output,
+        pixel: Default::default(),
     })
 }
 
@@ -240,6 +241,7 @@ pub fn draw_list(method: Method, lights: u32, brightness: f32) -> Result<DrawLis
                 },
             )],
             output: OutputState::default(),
+            pixel: Default::default(),
         }));
     }
     Ok(list)

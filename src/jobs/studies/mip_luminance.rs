@@ -129,6 +129,7 @@ pub fn draw_list(
                     write: ColorWrite(ColorWrite::ALPHA),
                     ..OutputState::default()
                 },
+                pixel: Default::default(),
             }),
             Step::Mips { target: 0, odd },
         ],

@@ -1,0 +1,427 @@
+//! The per-draw state of a draw list that acts on pixels besides the
+//! shader and the blend: the float rules the draw computes by, Direct3D 9's
+//! alpha test (D3DRS_ALPHATESTENABLE, D3DRS_ALPHAFUNC, D3DRS_ALPHAREF) and
+//! multiple render targets (oC1–oC3 bound to further targets, each with its
+//! own D3DRS_COLORWRITEENABLE1–3 mask; one blend state for all, as
+//! Direct3D 9 has it), user clip planes and flat shading.
+//!
+//! **Clip planes.** Direct3D 9 clips a triangle against each enabled plane
+//! (D3DRS_CLIPPLANEENABLE): the plane's distance is computed per vertex and
+//! interpolated linearly, and what lies where it is negative is not drawn.
+//! A draw list's draw is a full-screen quad whose inputs are linear
+//! functions of the pixel, so a clip plane is given the same way as an
+//! input: the distance at pixel (x, y) is `base + x·ddx + y·ddy` (x, y the
+//! pixel's column and row, as for `inputs`), and a pixel whose distance at
+//! its centre is below 0 is discarded before blending, in every target. At
+//! most 6 planes (the MaxUserClipPlanes of Direct3D 9 hardware).
+//!
+//! **Flat shading** (`"shade": "flat"`, D3DSHADE_FLAT): inputs declared
+//! `dcl_color` take the first vertex's value instead of being interpolated
+//! — all of color0, the rgb of color1 (specular alpha stays interpolated),
+//! as Direct3D 9's fixed-function pipe and Wine's tests have it. The first
+//! vertex of a draw list's quad is the target's top-left corner, half a
+//! pixel up and left of pixel (0, 0)'s centre, so such a component holds
+//! `base − ½·ddx − ½·ddy` over the whole target. Kept apart from `file.rs` so the fields' parsing and
+//! their meaning sit in one place; `docs/pixel-rules.md` describes them
+//! for users.
+//!
+//! ```json
+//! { "draw": "t", "shader": "a.psh",
+//!   "float_rules": "hardware",
+//!   "alpha_test": { "func": "GREATEREQUAL", "ref": 128 },
+//!   "outputs": { "oC1": "normals", "oC2": { "target": "depth", "write": "r" } } }
+//! ```
+//!
+//! Every target of a draw has the draw target's size (Direct3D 9 requires
+//! it of simultaneous render targets); each may have its own format
+//! (D3DPMISCCAPS_MRTINDEPENDENTBITDEPTHS). The alpha test reads oC0's
+//! alpha and discards the pixel in every target. An output the shader does
+//! not write leaves its target unchanged.
+//!
+//! The alpha test compares oC0's alpha, converted to an 8-bit code as an
+//! 8-bit target stores it (NaN → 0, clamp, ×255, round half up:
+//! `image::unorm8`), with ALPHAREF (0–255) by D3DCMPFUNC, and discards the
+//! pixel when the comparison fails, before blending. Comparing codes
+//! rather than floats is what fixed-point alpha-test hardware does; Wine's
+//! wined3d compares the float alpha with ALPHAREF/255 instead, which
+//! differs only for an alpha strictly between two codes' midpoint and the
+//! code itself.
+
+use crate::core::emu::LinearInput;
+use crate::core::float_rules::FloatRules;
+use crate::core::image::unorm8;
+use crate::core::ir::Program;
+use crate::core::isa::RegFile;
+use crate::core::merge::ColorWrite;
+use serde::Deserialize;
+use std::collections::BTreeMap;
+
+/// Per-draw pixel state; the default is the command's float rules and no
+/// alpha test.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct PixelState {
+    /// The draw's float rules (`None`: the list's, `ps30 render --float-rules`).
+    pub float_rules: Option<FloatRules>,
+    /// D3DRS_ALPHATESTENABLE with its function and reference (`None`: off).
+    pub alpha_test: Option<AlphaTest>,
+    /// Targets of oC1, oC2, oC3 (index into the list's targets) with their
+    /// write masks; `None` where nothing is bound.
+    pub outputs: Outputs,
+    /// User clip planes as (base, ddx, ddy) of the distance per pixel.
+    pub clip_planes: Vec<[f32; 3]>,
+    /// D3DSHADE_FLAT: colour inputs hold the first vertex's value.
+    pub flat: bool,
+}
+
+/// Targets of oC1, oC2, oC3 with their write masks (`None`: unbound).
+pub type Outputs = [Option<(usize, ColorWrite)>; 3];
+
+/// Finds a target by name as (index, width, height).
+pub(crate) type TargetOf<'a> = &'a dyn Fn(&str) -> Option<(usize, u32, u32)>;
+
+/// The components of input `v<reg>` that flat shading holds constant:
+/// colour semantics — all of color0, the rgb of color1 (its alpha, the
+/// specular alpha, stays interpolated).
+pub fn flat_components(program: &Program, reg: u32) -> [bool; 4] {
+    let mut flat = [false; 4];
+    for d in program
+        .inputs
+        .iter()
+        .filter(|d| d.reg.file == RegFile::Input && d.reg.index == reg && d.usage == "color")
+    {
+        for (c, f) in flat.iter_mut().enumerate() {
+            *f |= d.mask.has(c) && !(d.usage_index == 1 && c == 3);
+        }
+    }
+    flat
+}
+
+/// `inputs` as flat shading hands them to the shader: each flat component
+/// holds its value at the quad's first vertex (the top-left corner).
+pub fn flatten_inputs(program: &Program, inputs: &mut [(u32, LinearInput)]) {
+    for (reg, input) in inputs.iter_mut() {
+        let flat = flat_components(program, *reg);
+        for c in (0..4).filter(|&c| flat[c]) {
+            input.base[c] -= 0.5 * (input.ddx[c] + input.ddy[c]);
+            input.ddx[c] = 0.0;
+            input.ddy[c] = 0.0;
+        }
+    }
+}
+
+/// D3DCMPFUNC, the alpha test's comparison of the pixel's alpha code with
+/// the reference.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CmpFunc {
+    /// D3DCMP_NEVER: every pixel fails.
+    Never,
+    /// D3DCMP_LESS.
+    Less,
+    /// D3DCMP_EQUAL.
+    Equal,
+    /// D3DCMP_LESSEQUAL.
+    LessEqual,
+    /// D3DCMP_GREATER.
+    Greater,
+    /// D3DCMP_NOTEQUAL.
+    NotEqual,
+    /// D3DCMP_GREATEREQUAL.
+    GreaterEqual,
+    /// D3DCMP_ALWAYS: every pixel passes (the default function).
+    Always,
+}
+
+impl CmpFunc {
+    const NAMES: [(&'static str, CmpFunc); 8] = [
+        ("NEVER", CmpFunc::Never),
+        ("LESS", CmpFunc::Less),
+        ("EQUAL", CmpFunc::Equal),
+        ("LESSEQUAL", CmpFunc::LessEqual),
+        ("GREATER", CmpFunc::Greater),
+        ("NOTEQUAL", CmpFunc::NotEqual),
+        ("GREATEREQUAL", CmpFunc::GreaterEqual),
+        ("ALWAYS", CmpFunc::Always),
+    ];
+
+    /// The function a D3DCMPFUNC name stands for, with or without `D3DCMP_`.
+    pub fn from_name(name: &str) -> Option<CmpFunc> {
+        let n = name.strip_prefix("D3DCMP_").unwrap_or(name);
+        Self::NAMES.iter().find(|(k, _)| *k == n).map(|&(_, f)| f)
+    }
+
+    /// Whether `a FUNC b` holds.
+    pub fn passes(self, a: u8, b: u8) -> bool {
+        match self {
+            CmpFunc::Never => false,
+            CmpFunc::Less => a < b,
+            CmpFunc::Equal => a == b,
+            CmpFunc::LessEqual => a <= b,
+            CmpFunc::Greater => a > b,
+            CmpFunc::NotEqual => a != b,
+            CmpFunc::GreaterEqual => a >= b,
+            CmpFunc::Always => true,
+        }
+    }
+}
+
+/// The alpha test of a draw.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct AlphaTest {
+    /// D3DRS_ALPHAFUNC.
+    pub func: CmpFunc,
+    /// D3DRS_ALPHAREF, 0–255.
+    pub reference: u8,
+}
+
+impl AlphaTest {
+    /// Whether a pixel whose oC0 alpha is `alpha` survives the test.
+    pub fn passes(self, alpha: f32) -> bool {
+        self.func.passes(unorm8(alpha), self.reference)
+    }
+}
+
+impl PixelState {
+    /// Marks in `killed` (row-major over a target `width` wide) the pixels
+    /// that a clip plane removes or whose oC0 fails the alpha test (the
+    /// alpha test leaves pixels without an oC0 alone: nothing of theirs is
+    /// written).
+    pub fn apply(&self, oc0: Option<&[[f32; 4]]>, killed: &mut [bool], width: u32) {
+        for (i, k) in killed.iter_mut().enumerate() {
+            let (x, y) = (
+                (i as u32 % width.max(1)) as f32,
+                (i as u32 / width.max(1)) as f32,
+            );
+            // The distance as the emulator evaluates inputs: base + x·ddx + y·ddy.
+            *k |= self
+                .clip_planes
+                .iter()
+                .any(|p| p[0] + x * p[1] + y * p[2] < 0.0);
+        }
+        let (Some(test), Some(colors)) = (self.alpha_test, oc0) else {
+            return;
+        };
+        for (k, c) in killed.iter_mut().zip(colors) {
+            *k |= !test.passes(c[3]);
+        }
+    }
+}
+
+/// `alpha_test` as the file gives it.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct FileAlphaTest {
+    func: String,
+    #[serde(rename = "ref")]
+    reference: u8,
+}
+
+/// One entry of `outputs`: a target's name, or the name with a write mask.
+#[derive(Debug, Deserialize)]
+#[serde(untagged)]
+pub(crate) enum FileOutput {
+    /// The target, written in full.
+    Name(String),
+    /// The target and its COLORWRITEENABLE letters.
+    Masked {
+        /// The target's name.
+        target: String,
+        /// Letters of r, g, b, a (default all).
+        write: Option<String>,
+    },
+}
+
+/// One clip plane as the file gives it: its distance's value at pixel
+/// (0, 0) and its steps per pixel to the right and down.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct FileClipPlane {
+    base: f64,
+    #[serde(default)]
+    ddx: f64,
+    #[serde(default)]
+    ddy: f64,
+}
+
+/// The fields of a draw step this module reads.
+pub(crate) struct FileFields<'a> {
+    /// `clip_planes`.
+    pub clip_planes: Option<&'a [FileClipPlane]>,
+    /// `shade`: `"flat"` or `"gouraud"`.
+    pub shade: Option<&'a str>,
+    /// `float_rules`.
+    pub float_rules: Option<&'a str>,
+    /// `alpha_test`.
+    pub alpha_test: Option<&'a FileAlphaTest>,
+    /// `outputs`: `oC1`–`oC3` to targets.
+    pub outputs: Option<&'a BTreeMap<String, FileOutput>>,
+}
+
+/// The targets of `outputs` checked against the list: `target_of` finds a
+/// target by name as (index, width, height); `draw` is the draw's own
+/// target (index, width, height) and `sampled` the targets its samplers
+/// read.
+fn outputs(
+    given: &BTreeMap<String, FileOutput>,
+    target_of: TargetOf<'_>,
+    draw: (usize, u32, u32),
+    sampled: &[usize],
+) -> Result<Outputs, (String, String)> {
+    let (main, w, h) = draw;
+    let mut out = [None; 3];
+    for (name, o) in given {
+        let field = format!("outputs.{name}");
+        let k = match name.as_str() {
+            "oC1" => 0,
+            "oC2" => 1,
+            "oC3" => 2,
+            _ => {
+                return Err((
+                    field,
+                    "the outputs are oC1, oC2 and oC3 (oC0 goes to the draw's own target)".into(),
+                ))
+            }
+        };
+        let (target, write) = match o {
+            FileOutput::Name(t) => (t.as_str(), None),
+            FileOutput::Masked { target, write } => (target.as_str(), write.as_deref()),
+        };
+        let (t, tw, th) = target_of(target)
+            .ok_or_else(|| (field.clone(), format!("no target named `{target}`")))?;
+        if (tw, th) != (w, h) {
+            return Err((field, format!("`{target}` is {tw}×{th} and the draw's target {w}×{h}: Direct3D 9's simultaneous render targets share one size")));
+        }
+        if t == main || out.iter().flatten().any(|&(u, _)| u == t) {
+            return Err((
+                field,
+                format!("`{target}` is already a target of this draw"),
+            ));
+        }
+        if sampled.contains(&t) {
+            return Err((
+                field,
+                format!("`{target}` is sampled by this draw (Direct3D 9 does not allow it)"),
+            ));
+        }
+        let write = match write {
+            None => ColorWrite::ALL,
+            Some(l) => ColorWrite::from_letters(l).ok_or_else(|| {
+                (
+                    format!("{field}.write"),
+                    format!("`{l}` is not a set of the letters r, g, b, a"),
+                )
+            })?,
+        };
+        out[k] = Some((t, write));
+    }
+    Ok(out)
+}
+
+/// The step's pixel state from its `float_rules`, `alpha_test` and
+/// `outputs` fields; an error names the field (relative to the step) and
+/// the problem. `target_of` finds a target by name as (index, width,
+/// height); `draw` is the draw's own target as the same triple.
+pub(crate) fn read(
+    f: &FileFields<'_>,
+    target_of: TargetOf<'_>,
+    draw: (usize, u32, u32),
+    sampled: &[usize],
+) -> Result<PixelState, (String, String)> {
+    let (float_rules, alpha_test) = (f.float_rules, f.alpha_test);
+    let outputs = match f.outputs {
+        None => [None; 3],
+        Some(o) => outputs(o, target_of, draw, sampled)?,
+    };
+    let float_rules = match float_rules {
+        None => None,
+        Some(n) => Some(FloatRules::from_name(n).ok_or_else(|| {
+            let names: Vec<&str> = FloatRules::ALL.iter().map(|r| r.name()).collect();
+            (
+                "float_rules".to_string(),
+                format!("`{n}` is not one of {}", names.join(", ")),
+            )
+        })?),
+    };
+    let alpha_test = match alpha_test {
+        None => None,
+        Some(a) => Some(AlphaTest {
+            func: CmpFunc::from_name(&a.func).ok_or_else(|| {
+                (
+                    "alpha_test.func".to_string(),
+                    format!("`{}` is not a D3DCMPFUNC (NEVER, LESS, EQUAL, LESSEQUAL, GREATER, NOTEQUAL, GREATEREQUAL, ALWAYS)", a.func),
+                )
+            })?,
+            reference: a.reference,
+        }),
+    };
+    let flat = match f.shade {
+        None | Some("gouraud") => false,
+        Some("flat") => true,
+        Some(other) => {
+            return Err((
+                "shade".into(),
+                format!("`{other}` is not \"flat\" or \"gouraud\""),
+            ))
+        }
+    };
+    let planes = f.clip_planes.unwrap_or_default();
+    if planes.len() > 6 {
+        return Err((
+            "clip_planes".into(),
+            format!("{} planes; Direct3D 9 hardware has at most 6", planes.len()),
+        ));
+    }
+    let mut clip_planes = Vec::with_capacity(planes.len());
+    for (i, p) in planes.iter().enumerate() {
+        let v = [p.base, p.ddx, p.ddy].map(|x| x as f32);
+        if v.iter().any(|x| !x.is_finite()) {
+            return Err((
+                format!("clip_planes[{i}]"),
+                "base, ddx and ddy must be finite f32s".into(),
+            ));
+        }
+        clip_planes.push(v);
+    }
+    Ok(PixelState {
+        float_rules,
+        alpha_test,
+        outputs,
+        clip_planes,
+        flat,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn alpha_test_at_the_reference_boundary() {
+        // 128/255 = 0.50196…: the code of 0.5 is floor(127.5 + 0.5) = 128.
+        let t = AlphaTest {
+            func: CmpFunc::GreaterEqual,
+            reference: 128,
+        };
+        assert!(t.passes(0.5));
+        assert!(t.passes(128.0 / 255.0));
+        // 127.49/255 rounds to code 127: fails.
+        assert!(!t.passes(127.49 / 255.0));
+        let eq = AlphaTest {
+            func: CmpFunc::Equal,
+            reference: 0,
+        };
+        assert!(eq.passes(f32::NAN), "NaN converts to code 0");
+        assert!(eq.passes(-1.0));
+        assert_eq!(CmpFunc::from_name("D3DCMP_LESS"), Some(CmpFunc::Less));
+        let mut killed = vec![false, false];
+        PixelState {
+            alpha_test: Some(t),
+            ..Default::default()
+        }
+        .apply(
+            Some(&[[0.0, 0.0, 0.0, 1.0], [0.0, 0.0, 0.0, 0.25]]),
+            &mut killed,
+            2,
+        );
+        assert_eq!(killed, vec![false, true]);
+    }
+}
