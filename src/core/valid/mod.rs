@@ -65,11 +65,8 @@ fn check_version<'e>(
             &expanded[1..]
         }
         Some(Stmt::Version { text, span, .. }) => {
-            diags.push(
-                Diagnostic::coded(codes::VERSION, *span, format!("`{text}` is not supported"))
-                    .with_label("ps30 checks ps_3_0 only")
-                    .with_help("the first line of a ps_3_0 shader is `ps_3_0`"),
-            );
+            let profile = crate::core::profile::Profile::from_version_line(text);
+            diags.push(crate::core::load::other_profile(text, profile, *span));
             &expanded[1..]
         }
         Some(_) | None => {
