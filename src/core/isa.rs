@@ -509,8 +509,11 @@ impl Opcode {
     /// instruction and profile under `tests/oracle/corpus/asm/profiles/`,
     /// which `tests/oracle/profiles.rs` holds this column to); `ps_2_a` and
     /// `vs_2_a` follow their `ps_2_x`/`vs_2_x` capabilities, `ps_2_b` has
-    /// ps_2_0's instructions (Microsoft's documentation), and ps_1_x, whose
-    /// instruction set is another, has none of these rows yet.
+    /// ps_2_0's instructions and `texldd` (what Microsoft's HLSL compiler
+    /// writes for those targets: `tests/oracle/corpus/hlsl/gen_profiles/`),
+    /// and ps_1_x, whose instruction set is another, has none of these rows
+    /// yet. The compiler writes no flow control at all for ps_2_a and ps_2_b
+    /// (X3528), although their capabilities allow it in assembly.
     ///
     /// Across every profile that has an instruction, Microsoft's count of
     /// its slots is the same (measured: the `fxc_slots` column holds for
@@ -532,7 +535,9 @@ impl Opcode {
         match self {
             Opcode::TexKill | Opcode::TexLd | Opcode::TexLdP | Opcode::TexLdB => PS2,
             Opcode::Cmp | Opcode::Dp2Add => PS2,
-            Opcode::Dsx | Opcode::Dsy | Opcode::TexLdD => PS2X,
+            Opcode::Dsx | Opcode::Dsy => PS2X,
+            // Microsoft's compiler writes texldd for ps_2_b (tex2Dgrad), not dsx.
+            Opcode::TexLdD => PS2X.or(S::of(&[Ps2B])),
             Opcode::TexLdL => S::of(&[Ps3_0, Vs3_0]),
             Opcode::Loop | Opcode::EndLoop => S::of(&[Ps3_0, Vs2_0, Vs2A, Vs2X, Vs3_0]),
             Opcode::Call

@@ -203,14 +203,18 @@ impl Ps2xCaps {
         ..Ps2xCaps::ASSEMBLER
     };
 
-    /// The `ps_2_b` target: ps_2_0's instructions with 32 temporaries, 512
-    /// slots and no dependent-read or texture limit (Microsoft's
-    /// documentation of ps_2_x).
+    /// The `ps_2_b` target: ps_2_0's instructions and `texldd`, with 32
+    /// temporaries, 512 slots and no texture limit. Microsoft's
+    /// documentation also lifts the dependent-read limit, but its compiler
+    /// keeps it (measured: five levels refused for ps_2_b, X4018, accepted
+    /// for ps_2_a), and it writes `texldd` for `tex2Dgrad` although `ddx`
+    /// is refused (X4532), so `gradients` stays off and the instruction
+    /// table lists `texldd` for ps_2_b alone.
     pub const PS_2_B: Ps2xCaps = Ps2xCaps {
         predication: false,
         gradients: false,
         arbitrary_swizzle: false,
-        no_dependent_read_limit: true,
+        no_dependent_read_limit: false,
         no_texture_instruction_limit: true,
         temps: 32,
         slots: 512,

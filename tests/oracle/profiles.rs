@@ -275,3 +275,101 @@ fn slot_limits_are_microsofts() {
     assert!(seen >= 20, "only {seen} limit probes");
     assert!(wrong.is_empty(), "{}", wrong.join("\n"));
 }
+
+/// The instructions of a `D3DDisassemble` listing: each line's mnemonic
+/// without its modifiers and comparison (`if_gt` is `ifc`), declarations
+/// and definitions left out, with the line for messages.
+fn listed_instructions(dis: &str) -> Vec<(String, Option<Opcode>)> {
+    let mut out = Vec::new();
+    let trim = |l: &str| {
+        l.trim_matches(|c: char| c.is_whitespace() || c == '\0')
+            .to_string()
+    };
+    for line in dis
+        .lines()
+        .map(trim)
+        .skip_while(|l| l.starts_with("//") || l.is_empty())
+        .skip(1)
+    {
+        if line.is_empty() || line.starts_with("//") {
+            continue;
+        }
+        let line = line
+            .strip_prefix("(p0) ")
+            .or_else(|| line.strip_prefix("(!p0) "))
+            .unwrap_or(&line);
+        let word = line.split_whitespace().next().unwrap_or_default();
+        let mut parts = word.split('_');
+        let base = parts.next().unwrap_or_default();
+        if matches!(base, "dcl" | "def" | "defi" | "defb") {
+            continue;
+        }
+        let compare = parts.any(|p| matches!(p, "gt" | "lt" | "ge" | "le" | "eq" | "ne"));
+        out.push((base.to_string(), Opcode::from_mnemonic(base, compare)));
+    }
+    out
+}
+
+#[test]
+fn shaders_compiled_for_each_target_use_its_instructions_and_version() {
+    let mut wrong = Vec::new();
+    let mut compiled = 0;
+    let all = target_fixtures();
+    for (target, f) in &all {
+        let profile = Profile::from_name(target).unwrap_or_else(|| panic!("{}: target", f.name()));
+        let (Some(fxo), Some(dis)) = (&f.fxo, &f.dis) else {
+            continue;
+        };
+        compiled += 1;
+        let token = u32::from_le_bytes([fxo[0], fxo[1], fxo[2], fxo[3]]);
+        if token != profile.version_token() {
+            wrong.push(format!("{}: version token {token:#010x}", f.name()));
+        }
+        for (name, op) in listed_instructions(dis) {
+            let known = match op {
+                Some(op) => op.profiles().has(profile),
+                None => profile.stage() == Stage::Vertex && VERTEX_ONLY.contains(&name.as_str()),
+            };
+            if !known {
+                wrong.push(format!(
+                    "{}: `{name}` is not a {profile} instruction in the table",
+                    f.name()
+                ));
+            }
+        }
+    }
+    assert!(compiled >= 30, "only {compiled} of {} compiled", all.len());
+    assert!(wrong.is_empty(), "{}", wrong.join("\n"));
+}
+
+#[test]
+fn the_hlsl_compiler_refuses_ps_2_0_code_past_its_limits() {
+    // X5608: "Compiled shader code uses too many arithmetic instruction
+    // slots (325). Max. allowed by the target (ps_2_0) is 64."; five levels
+    // of dependent reads are X5426 for ps_2_0 and X4018 for ps_2_b.
+    let want = [
+        ("long", "ps_2_0", "X5608"),
+        ("dependent5", "ps_2_0", "X5426"),
+        ("dependent5", "ps_2_b", "X4018"),
+    ];
+    let all = target_fixtures();
+    for (name, target, code) in want {
+        let rel = format!("gen_profiles/{name}__{target}.hlsl");
+        let (_, f) = all
+            .iter()
+            .find(|(_, f)| f.rel == rel)
+            .unwrap_or_else(|| panic!("{rel}"));
+        assert_eq!(f.error_code().as_deref(), Some(code), "{rel}");
+    }
+    let p = Profile::Ps2_0.limits();
+    assert_eq!(p.arithmetic, Some(64));
+    assert_eq!(Profile::Ps2B.limits().dependent_reads, Some(4));
+    assert_eq!(Profile::Ps2A.limits().dependent_reads, None);
+    let a = all
+        .iter()
+        .find(|(_, f)| f.rel == "gen_profiles/dependent5__ps_2_a.hlsl");
+    assert!(
+        a.is_some_and(|(_, f)| f.accepted()),
+        "ps_2_a reads five levels deep"
+    );
+}
