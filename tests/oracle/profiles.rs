@@ -59,7 +59,7 @@ fn expected(profile: Profile, body: &[&str]) -> Option<(bool, SlotCount)> {
         ok &= op.profiles().has(profile);
         // p0 exists only where predication does; sincos has three sources
         // before the 3_0 profiles and one in them.
-        ok &= !(line.contains("p0") && !regs.predicate);
+        ok &= !line.contains("p0") || regs.predicate;
         if op == Opcode::SinCos {
             let three = line.matches(',').count() == 3;
             let is3 = matches!(profile, Profile::Ps3_0 | Profile::Vs3_0);
