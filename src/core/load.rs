@@ -14,8 +14,7 @@
 use crate::core::bytecode::{self, ctab, ReadError};
 use crate::core::diag::{codes, Diagnostic, Diagnostics, SourceError, SourceFile};
 use crate::core::front::{ast, parse, repeat};
-use crate::core::ir::{Shader, Span};
-use crate::core::profile::Profile;
+use crate::core::ir::Shader;
 use std::collections::{BTreeMap, BTreeSet};
 use std::fmt;
 
@@ -283,29 +282,10 @@ fn other_version(stmts: &[ast::Stmt]) -> Option<Diagnostic> {
             minor,
             span,
         } if !(text.to_ascii_lowercase().starts_with("ps") && *major == 3 && *minor == 0) => {
-            Some(other_profile(text, Profile::from_version_line(text), *span))
+            Some(crate::core::valid::version_refusal(text, *span))
         }
         _ => None,
     }
-}
-
-/// The refusal of a version line naming a profile ps30 does not check (or
-/// no profile at all).
-pub(crate) fn other_profile(text: &str, profile: Option<Profile>, span: Span) -> Diagnostic {
-    let message = format!("this is a {text} shader; ps30 reads ps_3_0 only");
-    let help = match profile {
-        Some(p) if !p.assembles() => format!(
-            "`{p}` is the name of an HLSL compile target, not a version line (Microsoft's assembler refuses it too, X2001); its shaders carry the {} version",
-            Profile::from_token(p.version_token()).map_or("?", Profile::name)
-        ),
-        Some(p) => format!(
-            "ps30 knows {p}'s instructions, registers and limits (docs/profiles.md) but does not check, count or assemble {p} shaders yet; the first line of a ps_3_0 shader is `ps_3_0`"
-        ),
-        None => "no Direct3D 9 profile has this version; the first line of a ps_3_0 shader is `ps_3_0`".to_string(),
-    };
-    Diagnostic::coded(codes::VERSION, span, message)
-        .with_label("not ps_3_0")
-        .with_help(help)
 }
 
 /// The constant table of a source, when it carries one that decodes: for
