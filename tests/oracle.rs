@@ -13,11 +13,13 @@
 //! `REL.dis.rc` / `REL.dis.fxo`: `D3DAssemble` of that listing.
 //!
 //! Each aspect is a module: acceptance and error codes (`accept`), bytecode
-//! and round trips (`bytes`), listing text (`listing`), slot counts (`slots`).
+//! and round trips (`bytes`), listing text (`listing`), slot counts (`slots`),
+//! and the shader profiles besides ps_3_0 (`profiles`).
 
 mod accept;
 mod bytes;
 mod listing;
+mod profiles;
 mod slots;
 
 use std::path::{Path, PathBuf};
@@ -106,9 +108,43 @@ fn walk(dir: &Path, out: &mut Vec<PathBuf>) {
     }
 }
 
-/// Every fixture of one set (`asm` or `hlsl`), sorted by path. Panics if a
-/// corpus file has no `.rc` fixture: the fixtures are out of date.
+/// Every fixture of one set (`asm` or `hlsl`) that ps30 reads today, sorted by
+/// path: the files of other profiles (`asm/profiles/<profile>/` and
+/// `hlsl/gen_profiles/NAME__<target>.hlsl`, all but ps_3_0's) are
+/// [`profile_fixtures`]'s and [`target_fixtures`]'. Panics if a corpus file
+/// has no `.rc` fixture: the fixtures are out of date.
 pub fn fixtures(set: &'static str) -> Vec<Fixture> {
+    let mut all = every_fixture(set);
+    all.retain(|f| {
+        let other_asm = f.rel.starts_with("profiles/") && !f.rel.starts_with("profiles/ps_3_0/");
+        let other_hlsl = f.rel.starts_with("gen_profiles/") && !f.rel.ends_with("__ps_3_0.hlsl");
+        !(other_asm || other_hlsl)
+    });
+    all
+}
+
+/// The HLSL shaders compiled for other targets than ps_3_0
+/// (`hlsl/gen_profiles/NAME__<target>.hlsl`), each with its target's name.
+pub fn target_fixtures() -> Vec<(String, Fixture)> {
+    every_fixture("hlsl")
+        .into_iter()
+        .filter_map(|f| {
+            let name = f.rel.strip_prefix("gen_profiles/")?.strip_suffix(".hlsl")?;
+            let target = name.rsplit_once("__")?.1.to_string();
+            (target != "ps_3_0").then_some((target, f))
+        })
+        .collect()
+}
+
+/// The per-profile probes of one profile (`asm/profiles/<profile>/`).
+pub fn profile_fixtures(profile: &str) -> Vec<Fixture> {
+    let prefix = format!("profiles/{profile}/");
+    let mut all = every_fixture("asm");
+    all.retain(|f| f.rel.starts_with(&prefix));
+    all
+}
+
+fn every_fixture(set: &'static str) -> Vec<Fixture> {
     let corpus = root().join("corpus").join(set);
     let fixtures = root().join("fixtures").join(set);
     let mut files = Vec::new();

@@ -44,6 +44,7 @@
 //! [`SlotCount`] adds them up and splits them into texture and arithmetic
 //! slots as the listing does (see [`OpInfo::count`]).
 
+use crate::core::profile::{Profile, ProfileSet};
 use std::fmt;
 
 /// Every ps_3_0 operation ps30 knows. Declarations and constant definitions
@@ -500,6 +501,59 @@ impl Opcode {
     pub fn info(self) -> &'static OpInfo {
         // The table is ordered like the enum; the test below keeps it so.
         &TABLE[self as usize]
+    }
+
+    /// The profiles this instruction exists in: the table's availability
+    /// column, grouped by the profile that brought each instruction in.
+    /// Measured for the profiles Microsoft's assembler reads (one probe per
+    /// instruction and profile under `tests/oracle/corpus/asm/profiles/`,
+    /// which `tests/oracle/profiles.rs` holds this column to); `ps_2_a` and
+    /// `vs_2_a` follow their `ps_2_x`/`vs_2_x` capabilities, `ps_2_b` has
+    /// ps_2_0's instructions and `texldd` (what Microsoft's HLSL compiler
+    /// writes for those targets: `tests/oracle/corpus/hlsl/gen_profiles/`),
+    /// and ps_1_x, whose instruction set is another, has none of these rows
+    /// yet. The compiler writes no flow control at all for ps_2_a and ps_2_b
+    /// (X3528), although their capabilities allow it in assembly.
+    ///
+    /// Across every profile that has an instruction, Microsoft's count of
+    /// its slots is the same (measured: the `fxc_slots` column holds for
+    /// each probe), except that `sincos` takes three sources (two constant
+    /// registers) in ps_2_0, ps_2_x, vs_2_0 and vs_2_x and one in the 3_0
+    /// profiles.
+    pub fn profiles(self) -> ProfileSet {
+        use Profile::*;
+        use ProfileSet as S;
+        // ps_2_0's arithmetic, which every vertex profile also has.
+        const SHARED: S = S::of(&[Ps2_0, Ps2A, Ps2B, Ps2X, Ps3_0, Vs2_0, Vs2A, Vs2X, Vs3_0]);
+        const PS2: S = S::of(&[Ps2_0, Ps2A, Ps2B, Ps2X, Ps3_0]);
+        // What ps_2_x's capabilities add (flow control, predication, gradients).
+        const PS2X: S = S::of(&[Ps2A, Ps2X, Ps3_0]);
+        // Static flow control: every vertex profile from vs_2_0.
+        const STATIC: S = PS2X.or(S::of(&[Vs2_0, Vs2A, Vs2X, Vs3_0]));
+        // Predication and dynamic flow control: vs_2_x's capabilities.
+        const DYNAMIC: S = PS2X.or(S::of(&[Vs2A, Vs2X, Vs3_0]));
+        match self {
+            Opcode::TexKill | Opcode::TexLd | Opcode::TexLdP | Opcode::TexLdB => PS2,
+            Opcode::Cmp | Opcode::Dp2Add => PS2,
+            Opcode::Dsx | Opcode::Dsy => PS2X,
+            // Microsoft's compiler writes texldd for ps_2_b (tex2Dgrad), not dsx.
+            Opcode::TexLdD => PS2X.or(S::of(&[Ps2B])),
+            Opcode::TexLdL => S::of(&[Ps3_0, Vs3_0]),
+            Opcode::Loop | Opcode::EndLoop => S::of(&[Ps3_0, Vs2_0, Vs2A, Vs2X, Vs3_0]),
+            Opcode::Call
+            | Opcode::CallNz
+            | Opcode::Ret
+            | Opcode::Label
+            | Opcode::Rep
+            | Opcode::EndRep
+            | Opcode::If
+            | Opcode::Else
+            | Opcode::EndIf
+            | Opcode::DefI
+            | Opcode::DefB => STATIC,
+            Opcode::Ifc | Opcode::Break | Opcode::BreakC | Opcode::BreakP | Opcode::Setp => DYNAMIC,
+            _ => SHARED,
+        }
     }
 
     /// For the matrix instructions (m4x4 … m3x2): how many consecutive

@@ -281,11 +281,9 @@ fn other_version(stmts: &[ast::Stmt]) -> Option<Diagnostic> {
             major,
             minor,
             span,
-        } if !(text.to_ascii_lowercase().starts_with("ps") && *major == 3 && *minor == 0) => Some(
-            Diagnostic::coded(codes::VERSION, *span, format!("this is a {text} shader; ps30 reads ps_3_0 only"))
-                .with_label("not ps_3_0")
-                .with_help("ps30 checks, runs and writes pixel shader 3.0 only; the first line of one is `ps_3_0`"),
-        ),
+        } if !(text.to_ascii_lowercase().starts_with("ps") && *major == 3 && *minor == 0) => {
+            Some(crate::core::valid::version_refusal(text, *span))
+        }
         _ => None,
     }
 }

@@ -34,5 +34,6 @@ pub mod load;
 pub mod merge;
 pub mod numbers;
 pub mod output;
+pub mod profile;
 pub mod translate;
 pub mod valid;

@@ -14,7 +14,7 @@ use ps30::core::isa::{SlotCount, SlotTable};
 use ps30::core::load::{self, Options};
 
 /// The slot line of a `D3DDisassemble` listing and the count it states.
-fn listing_count(dis: &str) -> Option<(String, SlotCount)> {
+pub(super) fn listing_count(dis: &str) -> Option<(String, SlotCount)> {
     let line = dis
         .lines()
         .map(str::trim_end)

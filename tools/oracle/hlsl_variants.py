@@ -9,6 +9,9 @@ the grid around them that nobody would write by hand:
   gen_flow/        every loop and branch attribute on every loop and branch shape
   flags/gen_*      chosen hand-written shaders again, compiled with other D3DCOMPILE flags
                    (the first line `// oracle: flags=NAME|NAME` names them)
+  gen_profiles/    shaders compiled for every pixel target (ps_2_0, ps_2_a, ps_2_b, ps_3_0) or
+                   vertex target (vs_2_0, vs_2_a, vs_3_0), `NAME__TARGET.hlsl`, the first line
+                   `// oracle: target=TARGET`: what each target's compiler writes and refuses
 
 Run it from anywhere: `python3 tools/oracle/hlsl_variants.py` rewrites those files (and removes
 generated files it no longer writes); `--check` writes nothing and exits 1 if the committed files
@@ -334,11 +337,138 @@ def flag_files():
     return out
 
 
+# ---------------------------------------------------------------- profiles
+
+PIXEL_TARGETS = ["ps_2_0", "ps_2_a", "ps_2_b", "ps_3_0"]
+VERTEX_TARGETS = ["vs_2_0", "vs_2_a", "vs_3_0"]
+
+# name -> (what it tries, source). Each tries one thing the targets differ on.
+PIXEL_SHADERS = {
+    "texture": ("one texture read", """sampler2D s;
+float4 main(float2 uv : TEXCOORD0) : COLOR { return tex2D(s, uv); }
+"""),
+    "arith_mix": ("the arithmetic every ps_2_0 device has", """float4 k;
+float4 main(float4 a : TEXCOORD0, float3 n : TEXCOORD1, float4 c : COLOR0) : COLOR {
+    float3 l = normalize(n);
+    float d = saturate(dot(l, k.xyz));
+    float s = pow(d, k.w) + frac(a.x) + exp2(a.y) + log2(abs(a.z) + 1);
+    float2 sc; sincos(a.w, sc.x, sc.y);
+    return lerp(c, float4(cross(l, k.xyz), s), d) + float4(sc, rsqrt(d + 1), max(a.x, a.y));
+}
+"""),
+    "projected": ("tex2Dproj, tex2Dbias and clip", """sampler2D s;
+float4 main(float4 uv : TEXCOORD0) : COLOR {
+    clip(uv.z);
+    return tex2Dproj(s, uv) + tex2Dbias(s, uv);
+}
+"""),
+    "dependent5": ("five levels of dependent reads (ps_2_0 allows four)", """sampler2D s;
+float4 main(float2 uv : TEXCOORD0) : COLOR {
+    float4 a = tex2D(s, uv);
+    a = tex2D(s, a.xy);
+    a = tex2D(s, a.xy);
+    a = tex2D(s, a.xy);
+    return tex2D(s, a.xy);
+}
+"""),
+    "long": ("about 100 arithmetic slots (ps_2_0 allows 64)", """float4 k[4];
+float4 main(float4 a : TEXCOORD0) : COLOR {
+    float4 r = a;
+    for (int i = 0; i < 24; i++) { r = r * k[i % 4] + sin(r.yzwx); }
+    return r;
+}
+"""),
+    "gradient": ("ddx and ddy (ps_2_a's gradient instructions)", """float4 main(float2 uv : TEXCOORD0) : COLOR {
+    return float4(ddx(uv), ddy(uv));
+}
+"""),
+    "tex2dgrad": ("tex2Dgrad (texldd)", """sampler2D s;
+float4 main(float2 uv : TEXCOORD0, float4 g : TEXCOORD1) : COLOR {
+    return tex2Dgrad(s, uv, g.xy, g.zw);
+}
+"""),
+    "dynamic_branch": ("a branch on a computed value", """sampler2D s;
+float4 main(float2 uv : TEXCOORD0) : COLOR {
+    float4 r = 0;
+    [branch] if (uv.x > 0.5) { r = tex2Dlod(s, float4(uv, 0, 0)); } else { r = uv.yxyx; }
+    return r;
+}
+"""),
+    "static_loop": ("a loop over a uniform count", """int n;
+float4 k;
+float4 main(float4 a : TEXCOORD0) : COLOR {
+    float4 r = a;
+    [loop] for (int i = 0; i < n; i++) { r = r * k + a; }
+    return r;
+}
+"""),
+    "bool_branch": ("a branch on a uniform bool", """bool b;
+float4 k;
+float4 main(float4 a : TEXCOORD0) : COLOR {
+    [branch] if (b) { return a * k; }
+    return a;
+}
+"""),
+    "colour_outputs": ("two render targets and depth", """struct O { float4 c0 : COLOR0; float4 c1 : COLOR1; float d : DEPTH; };
+O main(float4 a : TEXCOORD0, float4 c : COLOR0) { O o; o.c0 = a; o.c1 = c; o.d = a.z; return o; }
+"""),
+}
+
+VERTEX_SHADERS = {
+    "transform": ("a world-view-projection transform", """float4x4 wvp;
+float4 main(float4 p : POSITION) : POSITION { return mul(p, wvp); }
+"""),
+    "lit": ("a lit vertex with texture coordinates and fog", """float4x4 wvp;
+float3 light;
+struct O { float4 p : POSITION; float4 d : COLOR0; float2 t : TEXCOORD0; float f : FOG; };
+O main(float4 p : POSITION, float3 n : NORMAL, float2 t : TEXCOORD0) {
+    O o; o.p = mul(p, wvp); o.d = lit(dot(n, light), 0.5, 8); o.t = t; o.f = o.p.z;
+    return o;
+}
+"""),
+    "skinning": ("an indexed constant read (mova, a0)", """float4x3 bones[20];
+float4x4 vp;
+float4 main(float4 p : POSITION, float4 i : BLENDINDICES) : POSITION {
+    float3 w = mul(p, bones[(int)i.x]);
+    return mul(float4(w, 1), vp);
+}
+"""),
+    "loop": ("a loop over a uniform count", """int n;
+float4 k[8];
+float4 main(float4 p : POSITION) : POSITION {
+    float4 r = p;
+    for (int i = 0; i < n; i++) { r += k[i]; }
+    return r;
+}
+"""),
+    "dynamic_branch": ("a branch on a computed value", """float4 k;
+float4 main(float4 p : POSITION) : POSITION {
+    float4 r = p;
+    [branch] if (p.x > k.x) { r = p * k; }
+    return r;
+}
+"""),
+    "texture": ("a texture read (tex2Dlod: vs_3_0 only)", """sampler2D s;
+float4 main(float4 p : POSITION) : POSITION { return p + tex2Dlod(s, float4(p.xy, 0, 0)); }
+"""),
+}
+
+
+def profile_files():
+    out = {}
+    for shaders, targets in ((PIXEL_SHADERS, PIXEL_TARGETS), (VERTEX_SHADERS, VERTEX_TARGETS)):
+        for name, (what, text) in shaders.items():
+            for target in targets:
+                out[f"gen_profiles/{name}__{target}.hlsl"] = (
+                    f"// oracle: target={target}\n" + BANNER + f"// {what}, for {target}.\n" + text)
+    return out
+
+
 # ---------------------------------------------------------------- driver
 
 def everything():
     files = {}
-    for part in (intrinsic_files(), sampler_files(), flow_files(), flag_files()):
+    for part in (intrinsic_files(), sampler_files(), flow_files(), flag_files(), profile_files()):
         files.update(part)
     return files
 

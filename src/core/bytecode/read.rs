@@ -15,6 +15,7 @@ use super::{
 };
 use crate::core::ir::{Reg, Swizzle, WriteMask};
 use crate::core::isa::{Compare, Opcode, Operand, RegFile, REG_FILES};
+use crate::core::profile::Profile;
 
 /// Reads a ps_3_0 token stream. `max_items` caps the instructions and
 /// comments (the same cap as REPEAT_BLOCK's expanded statements).
@@ -117,7 +118,13 @@ fn version(tokens: &Tokens) -> Result<(), ReadError> {
             format!("not a Direct3D 9 shader: the first token {v:#010x} is not a version token")
         }
     };
-    Err(ReadError::at(0, message).with_help("ps30 reads ps_3_0 only"))
+    let help = match Profile::from_token(v) {
+        Some(p) => format!(
+            "ps30 reads ps_3_0 only; it knows {p}'s instructions, registers and limits (docs/profiles.md) but does not read {p} shaders yet"
+        ),
+        None => "ps30 reads ps_3_0 only".to_string(),
+    };
+    Err(ReadError::at(0, message).with_help(help))
 }
 
 /// A comment token and its body. A `CTAB` body must decode.

@@ -22,6 +22,7 @@ use crate::core::front::ast::Stmt;
 use crate::core::front::repeat::Expanded;
 use crate::core::ir::{Info, Instruction, Program, Reg, Shader, Span, Src, SrcMod};
 use crate::core::isa::{self, Class, Opcode, RegFile};
+use crate::core::profile::Profile;
 use lower::Lowered;
 use std::collections::{BTreeMap, BTreeSet};
 
@@ -65,11 +66,7 @@ fn check_version<'e>(
             &expanded[1..]
         }
         Some(Stmt::Version { text, span, .. }) => {
-            diags.push(
-                Diagnostic::coded(codes::VERSION, *span, format!("`{text}` is not supported"))
-                    .with_label("ps30 checks ps_3_0 only")
-                    .with_help("the first line of a ps_3_0 shader is `ps_3_0`"),
-            );
+            diags.push(version_refusal(text, *span));
             &expanded[1..]
         }
         Some(_) | None => {
@@ -86,6 +83,27 @@ fn check_version<'e>(
             expanded
         }
     }
+}
+
+/// The refusal of a version line `text` naming a profile ps30 does not
+/// check (or no profile at all), with what ps30 knows of it: the one message
+/// the loader and the validator give.
+pub fn version_refusal(text: &str, span: Span) -> Diagnostic {
+    let profile = Profile::from_version_line(text);
+    let message = format!("this is a {text} shader; ps30 reads ps_3_0 only");
+    let help = match profile {
+        Some(p) if !p.assembles() => format!(
+            "`{p}` is the name of an HLSL compile target, not a version line (Microsoft's assembler refuses it too, X2001); its shaders carry the {} version",
+            Profile::from_token(p.version_token()).map_or("?", Profile::name)
+        ),
+        Some(p) => format!(
+            "ps30 knows {p}'s instructions, registers and limits (docs/profiles.md) but does not check, count or assemble {p} shaders yet; the first line of a ps_3_0 shader is `ps_3_0`"
+        ),
+        None => "no Direct3D 9 profile has this version; the first line of a ps_3_0 shader is `ps_3_0`".to_string(),
+    };
+    Diagnostic::coded(codes::VERSION, span, message)
+        .with_label("not ps_3_0")
+        .with_help(help)
 }
 
 /// Lowers each distinct statement once and files the results into a
