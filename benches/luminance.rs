@@ -123,6 +123,7 @@ fn state() -> SamplerState {
     SamplerState {
         address_u: Address::Border,
         address_v: Address::Border,
+        address_w: Address::Border,
         border: [0.0; 4],
         ..SamplerState::filtered(Filter::Point)
     }

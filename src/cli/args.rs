@@ -516,6 +516,7 @@ impl SamplerArgs {
         SamplerState {
             address_u: address,
             address_v: address,
+            address_w: address,
             border: self.border,
             ..SamplerState::filtered(self.filter.into())
         }

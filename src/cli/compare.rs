@@ -187,6 +187,7 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
             SamplerState {
                 address_u: address,
                 address_v: address,
+                address_w: address,
                 border: args.border,
                 ..SamplerState::filtered(args.filter.into())
             },

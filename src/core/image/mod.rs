@@ -14,6 +14,7 @@
 
 mod bands;
 mod error;
+mod layered;
 mod mip;
 mod openexr;
 mod pfm;
@@ -24,6 +25,7 @@ mod target;
 
 pub use bands::RgbBands;
 pub use error::{ForeignError, ImageError};
+pub use layered::{CubeMap, VolumeChain, VolumeLevel};
 pub use mip::{chain_weights, full_chain_levels, side_taps, weight_bound, MipChain, OddSides};
 pub use openexr::{encode_exr, write_exr};
 pub use pfm::write_pfm;

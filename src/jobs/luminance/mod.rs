@@ -595,6 +595,7 @@ fn sampler(texture: Texture<'_>) -> (u32, emu::TextureLevels<'_>, SamplerState) 
         SamplerState {
             address_u: Address::Border,
             address_v: Address::Border,
+            address_w: Address::Border,
             border: [0.0; 4],
             ..SamplerState::filtered(Filter::Point)
         },

@@ -758,6 +758,7 @@ impl Resolver {
             max_mip_level: fs.max_mip_level.unwrap_or(0),
             address_u: address,
             address_v: address,
+            address_w: address,
             border,
         })
     }

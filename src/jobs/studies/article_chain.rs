@@ -67,6 +67,7 @@ pub fn draw_list(scene: &Scene, lights: &[Light]) -> Result<DrawList, String> {
     let gbuffer_state = SamplerState {
         address_u: Address::Clamp,
         address_v: Address::Clamp,
+        address_w: Address::Clamp,
         ..SamplerState::default()
     };
     let mut steps = vec![Step::Clear {

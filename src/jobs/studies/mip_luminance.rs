@@ -122,6 +122,7 @@ pub fn draw_list(
                     SamplerState {
                         address_u: Address::Clamp,
                         address_v: Address::Clamp,
+                        address_w: Address::Clamp,
                         ..SamplerState::default()
                     },
                 )],
