@@ -261,6 +261,17 @@ impl<'a> From<&'a MipChain> for TextureLevels<'a> {
     }
 }
 
+impl<'a> From<&'a crate::core::image::TextureFile> for TextureLevels<'a> {
+    fn from(t: &'a crate::core::image::TextureFile) -> Self {
+        use crate::core::image::TextureFile;
+        match t {
+            TextureFile::Flat(c) => TextureLevels::Chain(c),
+            TextureFile::Cube(c) => TextureLevels::Cube(c),
+            TextureFile::Volume(v) => TextureLevels::Volume(v),
+        }
+    }
+}
+
 impl<'a> TextureLevels<'a> {
     /// Every level, level 0 first (a cube's +X face; a volume's first
     /// slice of each level).
