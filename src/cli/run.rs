@@ -1,13 +1,16 @@
 //! `ps30 run`: one pass of any shader over an image into a render target.
 
 use super::args::{
-    BackendArgs, ConstantArgs, ExecArgs, FormatArg, InputArgs, SamplerArgs, SourceArgs,
+    BackendArgs, ConstantArgs, ExecArgs, FormatArg, InputArgs, Resolved, SamplerArgs, SourceArgs,
 };
 use super::io::{audit, load_shader, print_json, say};
 use super::ui::Ui;
 use super::Outcome;
+use ps30::core::emu::{Constants, SamplerState};
 use ps30::core::image;
+use ps30::core::image::{MipChain, TextureFile};
 use ps30::jobs::luminance::{run_pass, PassSetup};
+use ps30::jobs::render::file::{self, FileLimits};
 use ps30::present::constants::{table_json, table_text};
 use ps30::present::luminance::{pass_json, pass_text};
 use serde_json::Value;
@@ -19,9 +22,13 @@ pub struct Args {
     /// bundled name such as corrected:loop (`ps30 shaders` lists them).
     #[arg(value_name = "SHADER")]
     shader: String,
-    /// The image s0 samples: OpenEXR, Radiance .hdr or PFM.
-    #[arg(long, value_name = "IMAGE")]
-    image: PathBuf,
+    /// The image s0 samples: OpenEXR, Radiance .hdr or PFM (v0 runs over its texel blocks).
+    #[arg(long, value_name = "IMAGE", required_unless_present = "inputs")]
+    image: Option<PathBuf>,
+    /// Constants, textures and sampler states from a file in the draw-list step format:
+    /// {"constants": {"c0": [x, y, z, w]}, "samplers": {"s0": {"texture": "sky.dds", "filter": "linear"}}}.
+    #[arg(long, value_name = "FILE")]
+    inputs: Option<PathBuf>,
     /// Render-target size WxH.
     #[arg(long, value_name = "WxH", value_parser = super::args::parse_size)]
     target: (u32, u32),
@@ -50,16 +57,42 @@ pub struct Args {
 
 pub fn run(args: Args, ui: &Ui) -> super::Result {
     super::bound_threads(args.exec.threads())?;
+    let inputs = match &args.inputs {
+        Some(path) => Some(
+            file::read_inputs(path, &FileLimits::default())
+                .map_err(|e| super::BadInput(e.to_string()))?,
+        ),
+        None => None,
+    };
     if let Some(path) = &args.output {
-        super::io::check_image_output(path, &[&args.image, Path::new(&args.shader)])?;
+        let mut sources: Vec<&Path> = vec![Path::new(&args.shader)];
+        sources.extend(args.image.as_deref());
+        sources.extend(args.inputs.as_deref());
+        sources.extend(
+            inputs
+                .iter()
+                .flat_map(|i| i.sources.iter().map(|p| p.as_path())),
+        );
+        super::io::check_image_output(path, &sources)?;
     }
     let loaded = load_shader(ui, &args.shader, &args.source, &args.input)?;
     let resolved = args.constants.resolve(loaded.constants.as_ref())?;
-    let found = audit(ui, &loaded, &resolved.given(&[], &args.source), true)?;
-    let img = image::load(&args.image, &args.exec.image_limits())?;
+    let mut given = resolved.given(&[], &args.source);
+    if let Some(i) = &inputs {
+        given.floats.extend(&i.given[0]);
+        given.ints.extend(&i.given[1]);
+        given.bools.extend(&i.given[2]);
+    }
+    let found = audit(ui, &loaded, &given, true)?;
+    let img = match &args.image {
+        Some(path) => Some(image::load(path, &args.exec.image_limits())?),
+        None => None,
+    };
+    let (constants, textures) = with_inputs(&resolved, inputs);
     let setup = PassSetup {
         target: args.target,
-        constants: resolved.constants(),
+        constants,
+        textures,
         sampler: args.sampler.state(),
         format: args.target_format.into(),
         threads: args.exec.threads(),
@@ -69,7 +102,7 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
     };
     let out = {
         let _spinner = ui.spinner("running the shader");
-        run_pass(&loaded, &img, &setup)?
+        run_pass(&loaded, img.as_ref(), &setup)?
     };
     let written = match &args.output {
         Some(path) => Some((path.as_path(), image::write_target(path, &out.target)?)),
@@ -81,7 +114,11 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         print_json(&json)?;
     } else {
         let mut text = pass_text(
-            &args.image.display().to_string(),
+            &args
+                .image
+                .as_ref()
+                .or(args.inputs.as_ref())
+                .map_or(String::new(), |p| p.display().to_string()),
             &out,
             written.as_ref().map(|(p, w)| (*p, w)).filter(|_| !ui.quiet),
         );
@@ -93,4 +130,46 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
     Ok(Outcome::from_ok(
         out.cost.within_limits && out.cost.counts_agree,
     ))
+}
+
+/// The inputs file's constants under the command line's (`--const`,
+/// `--int`, `--bool` win where both set a register), and its textures.
+fn with_inputs(
+    flags: &Resolved,
+    inputs: Option<file::Inputs>,
+) -> (Constants, Vec<(u32, TextureFile, SamplerState)>) {
+    let Some(inputs) = inputs else {
+        return (flags.constants(), Vec::new());
+    };
+    let mut c = inputs.constants;
+    fn set<T: Copy + Default>(file: &mut Vec<T>, i: u32, v: T) {
+        let i = i as usize;
+        if file.len() <= i {
+            file.resize(i + 1, T::default());
+        }
+        file[i] = v;
+    }
+    for &(i, v) in &flags.floats {
+        set(&mut c.float, i, v);
+    }
+    for &(i, v) in &flags.ints {
+        set(&mut c.int, i, v);
+    }
+    for &(i, v) in &flags.bools {
+        set(&mut c.bool, i, v);
+    }
+    let textures = inputs
+        .samplers
+        .into_iter()
+        .map(|(s, t, state)| {
+            let file = t.file.unwrap_or_else(|| {
+                TextureFile::Flat(
+                    MipChain::from_levels(vec![(t.width, t.height, t.texels)])
+                        .expect("a loaded image is a valid level"),
+                )
+            });
+            (s, file, state)
+        })
+        .collect();
+    (c, textures)
 }

@@ -19,6 +19,7 @@
 //! intermediate target without the runner keeping copies.
 
 pub mod file;
+pub mod textures;
 
 use crate::core::cost::{self, Profile, Range};
 use crate::core::emu::{
@@ -39,8 +40,13 @@ pub struct TextureData {
     pub width: u32,
     /// Height in texels.
     pub height: u32,
-    /// `width × height` texels, row-major, top row first.
+    /// `width × height` texels, row-major, top row first (empty when
+    /// `file` holds the texture).
     pub texels: Vec<[f32; 4]>,
+    /// A texture file's levels, cube faces or volume slices (a DDS file
+    /// with more than one level-0 image); samplers read it instead of
+    /// `texels`.
+    pub file: Option<crate::core::image::TextureFile>,
 }
 
 /// A render target of a draw list.
@@ -463,12 +469,15 @@ fn draw(
         let levels: TextureLevels<'_> = match source {
             Source::Texture(t) => {
                 let t = &list.textures[t];
-                Texture {
-                    width: t.width,
-                    height: t.height,
-                    texels: &t.texels,
+                match &t.file {
+                    Some(file) => file.into(),
+                    None => Texture {
+                        width: t.width,
+                        height: t.height,
+                        texels: &t.texels,
+                    }
+                    .into(),
                 }
-                .into()
             }
             Source::Target(t) if t == d.target => {
                 return Err(DrawFailure::Message(format!(

@@ -101,6 +101,7 @@ pub fn draw_list(
             width: w,
             height: h,
             texels: image.pixels.clone(),
+            file: None,
         }],
         shaders: vec![ShaderSpec {
             name: b.path.into(),
