@@ -1,16 +1,14 @@
 //! `ps30 run`: one pass of any shader over an image into a render target.
 
 use super::args::{
-    BackendArgs, ConstantArgs, ExecArgs, FormatArg, InputArgs, Resolved, SamplerArgs, SourceArgs,
+    given_with, read_inputs, with_inputs, BackendArgs, ConstantArgs, ExecArgs, FormatArg,
+    InputArgs, SamplerArgs, SourceArgs,
 };
 use super::io::{audit, load_shader, print_json, say};
 use super::ui::Ui;
 use super::Outcome;
-use ps30::core::emu::{Constants, SamplerState};
 use ps30::core::image;
-use ps30::core::image::{MipChain, TextureFile};
 use ps30::jobs::luminance::{run_pass, PassSetup};
-use ps30::jobs::render::file::{self, FileLimits};
 use ps30::present::constants::{table_json, table_text};
 use ps30::present::luminance::{pass_json, pass_text};
 use serde_json::Value;
@@ -57,13 +55,7 @@ pub struct Args {
 
 pub fn run(args: Args, ui: &Ui) -> super::Result {
     super::bound_threads(args.exec.threads())?;
-    let inputs = match &args.inputs {
-        Some(path) => Some(
-            file::read_inputs(path, &FileLimits::default())
-                .map_err(|e| super::BadInput(e.to_string()))?,
-        ),
-        None => None,
-    };
+    let inputs = read_inputs(args.inputs.as_deref())?;
     if let Some(path) = &args.output {
         let mut sources: Vec<&Path> = vec![Path::new(&args.shader)];
         sources.extend(args.image.as_deref());
@@ -77,13 +69,12 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
     }
     let loaded = load_shader(ui, &args.shader, &args.source, &args.input)?;
     let resolved = args.constants.resolve(loaded.constants.as_ref())?;
-    let mut given = resolved.given(&[], &args.source);
-    if let Some(i) = &inputs {
-        given.floats.extend(&i.given[0]);
-        given.ints.extend(&i.given[1]);
-        given.bools.extend(&i.given[2]);
-    }
-    let found = audit(ui, &loaded, &given, true)?;
+    let found = audit(
+        ui,
+        &loaded,
+        &given_with(&resolved, &args.source, &inputs),
+        true,
+    )?;
     let img = match &args.image {
         Some(path) => Some(image::load(path, &args.exec.image_limits())?),
         None => None,
@@ -130,46 +121,4 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
     Ok(Outcome::from_ok(
         out.cost.within_limits && out.cost.counts_agree,
     ))
-}
-
-/// The inputs file's constants under the command line's (`--const`,
-/// `--int`, `--bool` win where both set a register), and its textures.
-fn with_inputs(
-    flags: &Resolved,
-    inputs: Option<file::Inputs>,
-) -> (Constants, Vec<(u32, TextureFile, SamplerState)>) {
-    let Some(inputs) = inputs else {
-        return (flags.constants(), Vec::new());
-    };
-    let mut c = inputs.constants;
-    fn set<T: Copy + Default>(file: &mut Vec<T>, i: u32, v: T) {
-        let i = i as usize;
-        if file.len() <= i {
-            file.resize(i + 1, T::default());
-        }
-        file[i] = v;
-    }
-    for &(i, v) in &flags.floats {
-        set(&mut c.float, i, v);
-    }
-    for &(i, v) in &flags.ints {
-        set(&mut c.int, i, v);
-    }
-    for &(i, v) in &flags.bools {
-        set(&mut c.bool, i, v);
-    }
-    let textures = inputs
-        .samplers
-        .into_iter()
-        .map(|(s, t, state)| {
-            let file = t.file.unwrap_or_else(|| {
-                TextureFile::Flat(
-                    MipChain::from_levels(vec![(t.width, t.height, t.texels)])
-                        .expect("a loaded image is a valid level"),
-                )
-            });
-            (s, file, state)
-        })
-        .collect();
-    (c, textures)
 }
