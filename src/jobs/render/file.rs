@@ -22,8 +22,9 @@
 //!
 //! * **targets**: `name`, `size` (`WxH`), `format` (a D3D9 name, with or
 //!   without `D3DFMT_`). Targets start cleared to 0.
-//! * **textures**: `name` and either `image` (an OpenEXR, Radiance or PFM
-//!   file, relative to the draw-list file) or `synthetic`:
+//! * **textures**: `name` and either `image` (an OpenEXR, Radiance, PFM or
+//!   DDS file — DDS with its cube faces, volume slices and authored mips —
+//!   relative to the draw-list file) or `synthetic`:
 //!   `lights-gbuffer` (with `size`) or `lights-material-0` … `-2`, the inputs
 //!   of `asm/lights/` ([`crate::jobs::scenes::lights`]).
 //! * **steps**, each one of:
@@ -36,7 +37,9 @@
 //!     (`"s0": {"texture": NAME, "filter": "point"|"linear", "mip":
 //!     "none"|"point"|"linear", "address": "wrap"|"mirror"|"clamp"|"border"|
 //!     "mirroronce", "border": [r, g, b, a], "lod_bias": B, "max_mip_level":
-//!     N}`; NAME is a texture or an earlier target; unset states take
+//!     N}`, with `address_u`, `address_v`, `address_w`, `min_filter` and
+//!     `mag_filter` to set one axis or filter apart (`render/textures.rs`);
+//!     NAME is a texture or an earlier target; unset states take
 //!     Direct3D 9's defaults: point, no mips, wrap), `blend` (`src`, `dest`,
 //!     `op`, optional `alpha` with its own `src`, `dest`, `op` for
 //!     SEPARATEALPHABLENDENABLE, optional `factor` bytes; absent: blending
