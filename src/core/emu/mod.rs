@@ -90,6 +90,7 @@ mod tests;
 #[cfg(test)]
 mod tests_layered;
 mod texop;
+mod texop3;
 
 pub use compile::{compile, compile_under, Compiled, MicroOp};
 

@@ -33,12 +33,10 @@
 // clearer than zipped iterators and vectorises the same.
 #![allow(clippy::needless_range_loop)]
 
-use super::layered::{cube_face, Level3};
+use super::layered::{address, cube_face, Level3};
 use super::{Address, Filter, MipFilter, SamplerState, Texture, TextureLevels, LANES};
 
-/// Largest texture side accepted (keeps texel coordinates below 2^23, where
-/// [`floor_index`] is exact).
-pub const MAX_TEXTURE_SIDE: u32 = 1 << 22;
+pub use super::layered::MAX_TEXTURE_SIDE;
 
 /// Texel index meaning "border colour" (textures have fewer texels).
 const BORDER: u32 = u32::MAX;
@@ -103,33 +101,6 @@ enum Shape<'a> {
     Volume(Vec<Level3<'a>>),
 }
 
-/// Applies an address mode to an integer texel index; `None` = border.
-#[inline(always)]
-pub(super) fn address(t: i64, n: i64, mode: Address) -> Option<i64> {
-    match mode {
-        Address::Wrap => Some(t.rem_euclid(n)),
-        Address::Mirror => {
-            // -(t + 1) cannot overflow for negative t.
-            let t = if t < 0 { -(t + 1) } else { t };
-            let flip = (t / n) & 1 == 1;
-            let t = t % n;
-            Some(if flip { n - 1 - t } else { t })
-        }
-        Address::Clamp => Some(t.clamp(0, n - 1)),
-        Address::MirrorOnce => {
-            let t = if t < 0 { -(t + 1) } else { t };
-            Some(t.min(n - 1))
-        }
-        Address::Border => {
-            if (0..n).contains(&t) {
-                Some(t)
-            } else {
-                None
-            }
-        }
-    }
-}
-
 /// floor(t) as an integer for 0 <= t < 2^23, using only float adds and bit
 /// operations so that lane loops vectorise (Rust's saturating `as i32` does
 /// not). Other inputs give unspecified values (callers discard them).
@@ -143,22 +114,6 @@ fn floor_index(t: f32) -> u32 {
 }
 
 impl<'a> Level<'a> {
-    /// Width and height as floats.
-    #[inline(always)]
-    pub(super) fn size(&self) -> (f32, f32) {
-        (self.wf, self.hf)
-    }
-
-    /// ADDRESSU.
-    pub(super) fn address_u(&self) -> Address {
-        self.au
-    }
-
-    /// ADDRESSV.
-    pub(super) fn address_v(&self) -> Address {
-        self.av
-    }
-
     /// Checks the texture's shape and precomputes sizes.
     pub(super) fn new(tex: &Texture<'a>, state: &SamplerState) -> Result<Level<'a>, String> {
         if tex.width == 0 || tex.height == 0 {
