@@ -123,6 +123,7 @@ fn state() -> SamplerState {
     SamplerState {
         address_u: Address::Border,
         address_v: Address::Border,
+        address_w: Address::Border,
         border: [0.0; 4],
         ..SamplerState::filtered(Filter::Point)
     }
@@ -349,8 +350,9 @@ impl Workloads {
             limits: emu::EmuLimits::default(),
             backend: ps30::jobs::backend::Backend::Emulator,
             float_rules: ps30::core::float_rules::FloatRules::D3d9,
+            textures: Vec::new(),
         };
-        run_pass(&self.loop1, &img, &setup)
+        run_pass(&self.loop1, Some(&img), &setup)
             .unwrap()
             .target
             .texel(0, 0)[0]

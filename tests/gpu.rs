@@ -252,6 +252,7 @@ mov oC2, r3
             SamplerState {
                 address_u: Address::Clamp,
                 address_v: Address::Clamp,
+                address_w: Address::Clamp,
                 ..SamplerState::filtered(Filter::Point)
             },
         ));
@@ -370,6 +371,7 @@ fn sampler_address_modes_and_filters_at_the_edges() {
                 SamplerState {
                     address_u: mode,
                     address_v: mode,
+                    address_w: mode,
                     border,
                     ..SamplerState::filtered(filter)
                 },
@@ -449,6 +451,7 @@ fn mip_levels_bias_and_max_mip_level() {
                         mip_lod_bias: bias,
                         address_u: Address::Wrap,
                         address_v: Address::Wrap,
+                        address_w: Address::Wrap,
                         ..SamplerState::filtered(Filter::Point)
                     },
                 ));

@@ -158,6 +158,7 @@ fn profile_reports_costs_and_findings() {
         input: Input::GBuffer(4, 2),
         defines: Vec::new(),
         constants: Default::default(),
+        textures: Vec::new(),
         bins: 12,
         threads: Some(1),
         limits: Default::default(),

@@ -59,6 +59,7 @@ fn mips(mip: MipFilter) -> SamplerState {
         mip_filter: mip,
         address_u: Address::Wrap,
         address_v: Address::Wrap,
+        address_w: Address::Wrap,
         ..SamplerState::filtered(Filter::Point)
     }
 }
@@ -311,6 +312,7 @@ fn magnification_and_minification_filters_follow_the_lod() {
         min_filter: Filter::Point,
         address_u: Address::Clamp,
         address_v: Address::Clamp,
+        address_w: Address::Clamp,
         ..SamplerState::default()
     };
     let at = |texels_per_pixel: f32| -> f32 {

@@ -35,6 +35,7 @@ mod render;
 mod reports;
 mod roundtrip;
 mod studies;
+mod textures;
 mod tonemap;
 mod translate;
 mod ux;

@@ -12,10 +12,11 @@ use ps30::core::audit::Given;
 use ps30::core::bytecode::ctab::{escape, ConstantTable, RegisterSet};
 use ps30::core::cost::{Environment, Profile};
 use ps30::core::emu::{self, Address, Constants, Filter, MipFilter, SamplerState};
-use ps30::core::image::TargetFormat;
+use ps30::core::image::{MipChain, TargetFormat, TextureFile};
 use ps30::core::input::DEFAULT_MAX_INPUT_BYTES;
 use ps30::core::isa::SlotTable;
 use ps30::core::load::Options;
+use ps30::jobs::render::file;
 
 /// `WxH` with both sides 1..=65536.
 pub fn parse_size(s: &str) -> Result<(u32, u32), String> {
@@ -517,6 +518,7 @@ impl SamplerArgs {
         SamplerState {
             address_u: address,
             address_v: address,
+            address_w: address,
             border: self.border,
             ..SamplerState::filtered(self.filter.into())
         }
@@ -688,4 +690,67 @@ impl BackendArgs {
     pub fn rules(&self) -> ps30::core::float_rules::FloatRules {
         self.float_rules.into()
     }
+}
+
+/// Reads `--inputs FILE` (constants, textures and sampler states in the
+/// draw-list step format), if given.
+pub fn read_inputs(path: Option<&std::path::Path>) -> Result<Option<file::Inputs>, BadInput> {
+    path.map(|p| {
+        file::read_inputs(p, &file::FileLimits::default()).map_err(|e| BadInput(e.to_string()))
+    })
+    .transpose()
+}
+
+/// What the application gives, for the audit: the flags' registers and the
+/// inputs file's.
+pub fn given_with(flags: &Resolved, source: &SourceArgs, inputs: &Option<file::Inputs>) -> Given {
+    let mut given = flags.given(&[], source);
+    if let Some(i) = inputs {
+        given.floats.extend(&i.given[0]);
+        given.ints.extend(&i.given[1]);
+        given.bools.extend(&i.given[2]);
+    }
+    given
+}
+
+/// The inputs file's constants under the command line's (`--const`,
+/// `--int`, `--bool` win where both set a register), and its textures.
+pub fn with_inputs(
+    flags: &Resolved,
+    inputs: Option<file::Inputs>,
+) -> (Constants, Vec<(u32, TextureFile, SamplerState)>) {
+    let Some(inputs) = inputs else {
+        return (flags.constants(), Vec::new());
+    };
+    let mut c = inputs.constants;
+    fn set<T: Copy + Default>(file: &mut Vec<T>, i: u32, v: T) {
+        let i = i as usize;
+        if file.len() <= i {
+            file.resize(i + 1, T::default());
+        }
+        file[i] = v;
+    }
+    for &(i, v) in &flags.floats {
+        set(&mut c.float, i, v);
+    }
+    for &(i, v) in &flags.ints {
+        set(&mut c.int, i, v);
+    }
+    for &(i, v) in &flags.bools {
+        set(&mut c.bool, i, v);
+    }
+    let textures = inputs
+        .samplers
+        .into_iter()
+        .map(|(s, t, state)| {
+            let file = t.file.unwrap_or_else(|| {
+                TextureFile::Flat(
+                    MipChain::from_levels(vec![(t.width, t.height, t.texels)])
+                        .expect("a loaded image is a valid level"),
+                )
+            });
+            (s, file, state)
+        })
+        .collect();
+    (c, textures)
 }

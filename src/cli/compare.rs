@@ -3,8 +3,8 @@
 //! `reports/gpu-crosscheck.md`).
 
 use super::args::{
-    parse_delta, parse_float4, parse_size, AddressArg, ConstantArgs, FilterArg, FloatRulesArg,
-    FormatArg, InputArgs, SourceArgs,
+    given_with, parse_delta, parse_float4, parse_size, read_inputs, with_inputs, AddressArg,
+    ConstantArgs, FilterArg, FloatRulesArg, FormatArg, InputArgs, SourceArgs,
 };
 use super::io::{audit, eprint, load_shader, print_json, say, shader_source};
 use super::ui::Ui;
@@ -25,6 +25,10 @@ pub struct Args {
     /// The image the draw samples (s0) or the pipeline runs on.
     #[arg(long)]
     image: Option<PathBuf>,
+    /// Constants, textures and sampler states for the draw from a file in the draw-list step
+    /// format (see `ps30 run --inputs`); --image is optional then.
+    #[arg(long, value_name = "FILE", conflicts_with_all = ["luminance", "tonemap", "all"])]
+    inputs: Option<PathBuf>,
     /// Render-target size WxH of the draw.
     #[arg(long, value_name = "WxH", value_parser = parse_size)]
     target: Option<(u32, u32)>,
@@ -99,15 +103,18 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
     if args.all {
         return run_all(&args, ui);
     }
+    let gpu = Arc::new(Gpu::open()?);
+    if !ui.quiet && !args.json {
+        eprint(&format!("device: {}\n", gpu.info().line()));
+    }
+    if args.inputs.is_some() && args.image.is_none() {
+        return one_draw(&args, ui, &gpu, None);
+    }
     let path = args
         .image
         .clone()
         .ok_or_else(|| BadInput("--image is needed".into()))?;
     let img = image::load(&path, &ImageLimits::default())?;
-    let gpu = Arc::new(Gpu::open()?);
-    if !ui.quiet && !args.json {
-        eprint(&format!("device: {}\n", gpu.info().line()));
-    }
     let name = path.display().to_string();
     if args.luminance {
         let settings = luminance::Settings {
@@ -151,6 +158,12 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
             c.explanation.as_ref().is_some_and(|e| !e.finding),
         ));
     }
+    one_draw(&args, ui, &gpu, Some(&img))
+}
+
+/// One draw of SHADER on both backends, sampling the image on s0 and what
+/// `--inputs` binds.
+fn one_draw(args: &Args, ui: &Ui, gpu: &Arc<Gpu>, img: Option<&image::HdrImage>) -> super::Result {
     let spec = args.shader.as_deref().unwrap_or_default();
     let (tw, th) = args
         .target
@@ -166,39 +179,45 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         .iter()
         .any(|d| d.reg.file == ps30::core::isa::RegFile::Input && d.reg.index == 0)
     {
-        draw.inputs.push((
-            0,
-            block_start(
-                img.width,
-                img.height,
-                img.width.div_ceil(tw),
-                img.height.div_ceil(th),
-            ),
-        ));
+        let (iw, ih) = img.map_or((tw, th), |i| (i.width, i.height));
+        draw.inputs
+            .push((0, block_start(iw, ih, iw.div_ceil(tw), ih.div_ceil(th))));
     }
+    let inputs = read_inputs(args.inputs.as_deref())?;
     let resolved = args.constants.resolve(loaded.constants.as_ref())?;
-    audit(ui, &loaded, &resolved.given(&[], &args.source), true)?;
-    draw.constants = resolved.constants();
+    audit(
+        ui,
+        &loaded,
+        &given_with(&resolved, &args.source, &inputs),
+        true,
+    )?;
+    let (constants, textures) = with_inputs(&resolved, inputs);
+    draw.constants = constants;
     let address = args.address.into();
-    if program.sampler_type(0).is_some() {
+    let given_s0 = textures.iter().any(|(s, _, _)| *s == 0);
+    if let (Some(img), true, false) = (img, program.sampler_type(0).is_some(), given_s0) {
         draw.samplers.push((
             0,
             img.as_texture().into(),
             SamplerState {
                 address_u: address,
                 address_v: address,
+                address_w: address,
                 border: args.border,
                 ..SamplerState::filtered(args.filter.into())
             },
         ));
+    }
+    for (s, file, state) in &textures {
+        draw.samplers.push((*s, file.into(), *state));
     }
     let target = args
         .target_format
         .map_or(TargetKind::Raw, |f| TargetKind::Format(f.into()));
     let c = {
         let _s = ui.spinner("drawing on both backends, and the probes");
-        let mut c = compare::compare_draw(&gpu, &loaded, &draw, target, None)?;
-        c.explanation = Some(explain::draw(&c, &compare::probe::run(&gpu)?));
+        let mut c = compare::compare_draw(gpu, &loaded, &draw, target, None)?;
+        c.explanation = Some(explain::draw(&c, &compare::probe::run(gpu)?));
         c
     };
     if args.json {

@@ -3,8 +3,8 @@
 //! behaviour.
 
 use super::args::{
-    parse_finite, parse_size, ConstantArgs, ExecArgs, InputArgs, MipFilterArg, SamplerArgs,
-    SourceArgs,
+    given_with, parse_finite, parse_size, read_inputs, with_inputs, ConstantArgs, ExecArgs,
+    InputArgs, MipFilterArg, SamplerArgs, SourceArgs,
 };
 use super::io::{audit, load_shader, print_json, say};
 use super::ui::Ui;
@@ -51,6 +51,10 @@ pub struct Args {
     /// s0's MAXMIPLEVEL (the most detailed level allowed).
     #[arg(long, value_name = "N", default_value_t = 0)]
     max_mip_level: u32,
+    /// Constants, textures and sampler states from a file in the draw-list step format (see
+    /// `ps30 run --inputs`); its textures replace what --image binds on the same sampler.
+    #[arg(long, value_name = "FILE")]
+    inputs: Option<std::path::PathBuf>,
     /// Histogram bins.
     #[arg(long, value_name = "N", default_value_t = 12, value_parser = clap::value_parser!(u64).range(1..=1000))]
     bins: u64,
@@ -97,12 +101,16 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
     let loaded = load_shader(ui, &args.shader, &args.source, &args.input)?;
     let input = args.input()?;
     let resolved = args.constants.resolve(loaded.constants.as_ref())?;
-    let given = resolved.given(floats_set_by(&input), &args.source);
+    let inputs = read_inputs(args.inputs.as_deref())?;
+    let mut given = given_with(&resolved, &args.source, &inputs);
+    given.preset_floats.extend(floats_set_by(&input));
     let found = audit(ui, &loaded, &given, true)?;
+    let (constants, textures) = with_inputs(&resolved, inputs);
     let setup = Setup {
         input,
+        textures,
         defines: args.source.define.clone(),
-        constants: resolved.constants(),
+        constants,
         bins: args.bins as usize,
         threads: args.exec.threads(),
         limits: args.exec.limits(),

@@ -1,7 +1,8 @@
 //! `ps30 run`: one pass of any shader over an image into a render target.
 
 use super::args::{
-    BackendArgs, ConstantArgs, ExecArgs, FormatArg, InputArgs, SamplerArgs, SourceArgs,
+    given_with, read_inputs, with_inputs, BackendArgs, ConstantArgs, ExecArgs, FormatArg,
+    InputArgs, SamplerArgs, SourceArgs,
 };
 use super::io::{audit, load_shader, print_json, say};
 use super::ui::Ui;
@@ -19,9 +20,13 @@ pub struct Args {
     /// bundled name such as corrected:loop (`ps30 shaders` lists them).
     #[arg(value_name = "SHADER")]
     shader: String,
-    /// The image s0 samples: OpenEXR, Radiance .hdr or PFM.
-    #[arg(long, value_name = "IMAGE")]
-    image: PathBuf,
+    /// The image s0 samples: OpenEXR, Radiance .hdr or PFM (v0 runs over its texel blocks).
+    #[arg(long, value_name = "IMAGE", required_unless_present = "inputs")]
+    image: Option<PathBuf>,
+    /// Constants, textures and sampler states from a file in the draw-list step format:
+    /// {"constants": {"c0": [x, y, z, w]}, "samplers": {"s0": {"texture": "sky.dds", "filter": "linear"}}}.
+    #[arg(long, value_name = "FILE")]
+    inputs: Option<PathBuf>,
     /// Render-target size WxH.
     #[arg(long, value_name = "WxH", value_parser = super::args::parse_size)]
     target: (u32, u32),
@@ -50,16 +55,35 @@ pub struct Args {
 
 pub fn run(args: Args, ui: &Ui) -> super::Result {
     super::bound_threads(args.exec.threads())?;
+    let inputs = read_inputs(args.inputs.as_deref())?;
     if let Some(path) = &args.output {
-        super::io::check_image_output(path, &[&args.image, Path::new(&args.shader)])?;
+        let mut sources: Vec<&Path> = vec![Path::new(&args.shader)];
+        sources.extend(args.image.as_deref());
+        sources.extend(args.inputs.as_deref());
+        sources.extend(
+            inputs
+                .iter()
+                .flat_map(|i| i.sources.iter().map(|p| p.as_path())),
+        );
+        super::io::check_image_output(path, &sources)?;
     }
     let loaded = load_shader(ui, &args.shader, &args.source, &args.input)?;
     let resolved = args.constants.resolve(loaded.constants.as_ref())?;
-    let found = audit(ui, &loaded, &resolved.given(&[], &args.source), true)?;
-    let img = image::load(&args.image, &args.exec.image_limits())?;
+    let found = audit(
+        ui,
+        &loaded,
+        &given_with(&resolved, &args.source, &inputs),
+        true,
+    )?;
+    let img = match &args.image {
+        Some(path) => Some(image::load(path, &args.exec.image_limits())?),
+        None => None,
+    };
+    let (constants, textures) = with_inputs(&resolved, inputs);
     let setup = PassSetup {
         target: args.target,
-        constants: resolved.constants(),
+        constants,
+        textures,
         sampler: args.sampler.state(),
         format: args.target_format.into(),
         threads: args.exec.threads(),
@@ -69,7 +93,7 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
     };
     let out = {
         let _spinner = ui.spinner("running the shader");
-        run_pass(&loaded, &img, &setup)?
+        run_pass(&loaded, img.as_ref(), &setup)?
     };
     let written = match &args.output {
         Some(path) => Some((path.as_path(), image::write_target(path, &out.target)?)),
@@ -81,7 +105,11 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         print_json(&json)?;
     } else {
         let mut text = pass_text(
-            &args.image.display().to_string(),
+            &args
+                .image
+                .as_ref()
+                .or(args.inputs.as_ref())
+                .map_or(String::new(), |p| p.display().to_string()),
             &out,
             written.as_ref().map(|(p, w)| (*p, w)).filter(|_| !ui.quiet),
         );

@@ -79,6 +79,7 @@ mod arith;
 mod compile;
 mod exec;
 pub mod findings;
+mod layered;
 mod math;
 mod planes;
 mod quad;
@@ -87,7 +88,10 @@ mod sample;
 mod testasm;
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_layered;
 mod texop;
+mod texop3;
 
 pub use compile::{compile, compile_under, Compiled, MicroOp};
 
@@ -207,6 +211,8 @@ pub struct SamplerState {
     pub address_u: Address,
     /// Addressing in v (D3DSAMP_ADDRESSV).
     pub address_v: Address,
+    /// Addressing in w (D3DSAMP_ADDRESSW), read by volume textures only.
+    pub address_w: Address,
     /// The border colour (D3DSAMP_BORDERCOLOR) for BORDER addressing.
     pub border: [f32; 4],
 }
@@ -229,13 +235,20 @@ pub use crate::core::image::Texture;
 /// A texture with its mip levels (see [`crate::core::image::MipChain`]).
 pub use crate::core::image::MipChain;
 
+/// Cube and volume textures (see [`crate::core::image::CubeMap`]).
+pub use crate::core::image::{CubeMap, VolumeChain};
+
 /// What a sampler reads: one level, or a mip chain.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum TextureLevels<'a> {
     /// A texture without mips (D3D9 `Levels = 1`).
     Single(Texture<'a>),
-    /// A texture with its box-filtered mip levels.
+    /// A texture with its mip levels (box-filtered or authored).
     Chain(&'a MipChain),
+    /// A cube texture: six square faces with their mip levels (`dcl_cube`).
+    Cube(&'a CubeMap),
+    /// A volume texture with its 3D mip levels (`dcl_volume`).
+    Volume(&'a VolumeChain),
 }
 
 impl<'a> From<Texture<'a>> for TextureLevels<'a> {
@@ -250,12 +263,26 @@ impl<'a> From<&'a MipChain> for TextureLevels<'a> {
     }
 }
 
+impl<'a> From<&'a crate::core::image::TextureFile> for TextureLevels<'a> {
+    fn from(t: &'a crate::core::image::TextureFile) -> Self {
+        use crate::core::image::TextureFile;
+        match t {
+            TextureFile::Flat(c) => TextureLevels::Chain(c),
+            TextureFile::Cube(c) => TextureLevels::Cube(c),
+            TextureFile::Volume(v) => TextureLevels::Volume(v),
+        }
+    }
+}
+
 impl<'a> TextureLevels<'a> {
-    /// Every level, level 0 first.
+    /// Every level, level 0 first (a cube's +X face; a volume's first
+    /// slice of each level).
     pub fn views(&self) -> Vec<Texture<'a>> {
         match *self {
             TextureLevels::Single(t) => vec![t],
             TextureLevels::Chain(c) => c.views(),
+            TextureLevels::Cube(c) => c.face(0).views(),
+            TextureLevels::Volume(v) => (0..v.len()).filter_map(|i| v.slice(i, 0)).collect(),
         }
     }
 
@@ -264,6 +291,18 @@ impl<'a> TextureLevels<'a> {
         match self {
             TextureLevels::Single(_) => 1,
             TextureLevels::Chain(c) => c.len(),
+            TextureLevels::Cube(c) => c.face(0).len(),
+            TextureLevels::Volume(v) => v.len(),
+        }
+    }
+
+    /// The sampler declaration this texture answers (`dcl_2d`, `dcl_cube`,
+    /// `dcl_volume`).
+    pub fn sampler_type(&self) -> SamplerType {
+        match self {
+            TextureLevels::Single(_) | TextureLevels::Chain(_) => SamplerType::Tex2d,
+            TextureLevels::Cube(_) => SamplerType::Cube,
+            TextureLevels::Volume(_) => SamplerType::Volume,
         }
     }
 
@@ -481,8 +520,13 @@ pub enum EmuError {
     DuplicateBinding { what: &'static str, index: u32 },
     /// A bound texture cannot be sampled (e.g. no texels).
     InvalidTexture { sampler: u32, reason: String },
-    /// Only 2D sampling is emulated; a cube or volume sampler is bound.
-    UnsupportedSampler { sampler: u32, ty: SamplerType },
+    /// The texture bound is not of the declared sampler type (a 2D
+    /// texture on `dcl_cube`, …).
+    SamplerTypeMismatch {
+        sampler: u32,
+        declared: SamplerType,
+        bound: SamplerType,
+    },
     /// More constants given than ps_3_0 has registers.
     TooManyConstants {
         kind: &'static str,
@@ -562,11 +606,20 @@ impl fmt::Display for EmuError {
             EmuError::InvalidTexture { sampler, reason } => {
                 write!(f, "texture bound to s{}: {}", sampler, reason)
             }
-            EmuError::UnsupportedSampler { sampler, ty } => write!(
-                f,
-                "s{} is declared dcl_{}; only 2D textures can be emulated",
+            EmuError::SamplerTypeMismatch {
                 sampler,
-                ty.suffix()
+                declared,
+                bound,
+            } => write!(
+                f,
+                "s{} is declared dcl_{} but the draw binds a {} texture to it",
+                sampler,
+                declared.suffix(),
+                match bound {
+                    SamplerType::Tex2d => "2D",
+                    SamplerType::Cube => "cube",
+                    SamplerType::Volume => "volume",
+                }
             ),
             EmuError::TooManyConstants { kind, given, max } => write!(
                 f,
@@ -769,7 +822,7 @@ fn bind_inputs(compiled: &Compiled, draw: &Draw) -> Result<[Option<LinearInput>;
     Ok(inputs)
 }
 
-/// The draw's textures as samplers: each on a declared 2D `s#`, once.
+/// The draw's textures as samplers: each on an `s#` declared with its type, once.
 fn bind_samplers<'a>(
     compiled: &Compiled,
     draw: &Draw<'a>,
@@ -780,8 +833,12 @@ fn bind_samplers<'a>(
             Some(ty) => ty,
             None => return Err(EmuError::SamplerNotDeclared { sampler: *s }),
         };
-        if ty != SamplerType::Tex2d {
-            return Err(EmuError::UnsupportedSampler { sampler: *s, ty });
+        if ty != tex.sampler_type() {
+            return Err(EmuError::SamplerTypeMismatch {
+                sampler: *s,
+                declared: ty,
+                bound: tex.sampler_type(),
+            });
         }
         let sm = Sampler::new(tex, state).map_err(|reason| EmuError::InvalidTexture {
             sampler: *s,

@@ -33,11 +33,10 @@
 // clearer than zipped iterators and vectorises the same.
 #![allow(clippy::needless_range_loop)]
 
+use super::layered::{address, cube_face, Level3};
 use super::{Address, Filter, MipFilter, SamplerState, Texture, TextureLevels, LANES};
 
-/// Largest texture side accepted (keeps texel coordinates below 2^23, where
-/// [`floor_index`] is exact).
-pub const MAX_TEXTURE_SIDE: u32 = 1 << 22;
+pub use super::layered::MAX_TEXTURE_SIDE;
 
 /// Texel index meaning "border colour" (textures have fewer texels).
 const BORDER: u32 = u32::MAX;
@@ -85,33 +84,21 @@ pub struct Sampler<'a> {
     bias: f32,
     /// Whether the LOD can change a sample (see [`Sampler::lod_matters`]).
     lod_matters: bool,
+    /// What the texture is besides its `levels`.
+    shape: Shape<'a>,
 }
 
-/// Applies an address mode to an integer texel index; `None` = border.
-#[inline(always)]
-fn address(t: i64, n: i64, mode: Address) -> Option<i64> {
-    match mode {
-        Address::Wrap => Some(t.rem_euclid(n)),
-        Address::Mirror => {
-            // -(t + 1) cannot overflow for negative t.
-            let t = if t < 0 { -(t + 1) } else { t };
-            let flip = (t / n) & 1 == 1;
-            let t = t % n;
-            Some(if flip { n - 1 - t } else { t })
-        }
-        Address::Clamp => Some(t.clamp(0, n - 1)),
-        Address::MirrorOnce => {
-            let t = if t < 0 { -(t + 1) } else { t };
-            Some(t.min(n - 1))
-        }
-        Address::Border => {
-            if (0..n).contains(&t) {
-                Some(t)
-            } else {
-                None
-            }
-        }
-    }
+/// The texture type of a [`Sampler`].
+#[derive(Clone, Debug)]
+enum Shape<'a> {
+    /// A 2D texture: `levels` is all of it.
+    Flat,
+    /// A cube: `[face][level]`, addressed with CLAMP on each face (face 0
+    /// is also `levels`).
+    Cube(Vec<Vec<Level<'a>>>),
+    /// A volume: its levels (`levels` holds their first slices, for the
+    /// sizes and the level count).
+    Volume(Vec<Level3<'a>>),
 }
 
 /// floor(t) as an integer for 0 <= t < 2^23, using only float adds and bit
@@ -128,7 +115,7 @@ fn floor_index(t: f32) -> u32 {
 
 impl<'a> Level<'a> {
     /// Checks the texture's shape and precomputes sizes.
-    fn new(tex: &Texture<'a>, state: &SamplerState) -> Result<Level<'a>, String> {
+    pub(super) fn new(tex: &Texture<'a>, state: &SamplerState) -> Result<Level<'a>, String> {
         if tex.width == 0 || tex.height == 0 {
             return Err(format!("size {}x{} is empty", tex.width, tex.height));
         }
@@ -236,7 +223,7 @@ impl<'a> Level<'a> {
 
     /// One sample with `filter`.
     #[inline(always)]
-    fn sample(&self, filter: Filter, u: f32, v: f32) -> [f32; 4] {
+    pub(super) fn sample(&self, filter: Filter, u: f32, v: f32) -> [f32; 4] {
         match filter {
             Filter::Point => self.point(u, v),
             Filter::Linear => self.linear(u, v),
@@ -344,9 +331,8 @@ fn prefetch_ahead(texels: &[[f32; 4]], index: u32) {
 }
 
 impl<'a> Sampler<'a> {
-    /// Checks every level's shape and precomputes sizes.
-    pub fn new(tex: &TextureLevels<'a>, state: &SamplerState) -> Result<Sampler<'a>, String> {
-        let views = tex.views();
+    /// The levels of one 2D chain (a 2D texture, a cube face).
+    fn levels_of(views: &[Texture<'a>], state: &SamplerState) -> Result<Vec<Level<'a>>, String> {
         let mut levels = Vec::with_capacity(views.len());
         for (i, t) in views.iter().enumerate() {
             levels.push(Level::new(t, state).map_err(|e| {
@@ -357,6 +343,38 @@ impl<'a> Sampler<'a> {
                 }
             })?);
         }
+        Ok(levels)
+    }
+
+    /// Checks every level's shape and precomputes sizes.
+    pub fn new(tex: &TextureLevels<'a>, state: &SamplerState) -> Result<Sampler<'a>, String> {
+        let (levels, shape) = match tex {
+            TextureLevels::Cube(c) => {
+                // D3D9 hardware filters within a face: each face is
+                // addressed with CLAMP whatever ADDRESSU/V say.
+                let face_state = SamplerState {
+                    address_u: Address::Clamp,
+                    address_v: Address::Clamp,
+                    ..*state
+                };
+                let faces = (0..6)
+                    .map(|f| {
+                        Self::levels_of(&c.face(f).views(), &face_state)
+                            .map_err(|e| format!("cube face {f}: {e}"))
+                    })
+                    .collect::<Result<Vec<_>, String>>()?;
+                (faces[0].clone(), Shape::Cube(faces))
+            }
+            TextureLevels::Volume(v) => {
+                let mut vol = Vec::with_capacity(v.len());
+                for i in 0..v.len() {
+                    let l = v.level(i).expect("level below len");
+                    vol.push(Level3::new(l, state).map_err(|e| format!("mip level {i}: {e}"))?);
+                }
+                (Self::levels_of(&tex.views(), state)?, Shape::Volume(vol))
+            }
+            _ => (Self::levels_of(&tex.views(), state)?, Shape::Flat),
+        };
         if levels.is_empty() {
             return Err("no texture levels".into());
         }
@@ -374,7 +392,50 @@ impl<'a> Sampler<'a> {
             mip: state.mip_filter,
             bias: state.mip_lod_bias,
             lod_matters,
+            shape,
         })
+    }
+
+    /// Whether this is a cube or volume texture (sampled with three
+    /// coordinates by [`Sampler::sample_3d`]).
+    #[inline(always)]
+    pub fn is_3d(&self) -> bool {
+        !matches!(self.shape, Shape::Flat)
+    }
+
+    /// Whether this is a cube texture.
+    #[inline(always)]
+    pub fn is_cube(&self) -> bool {
+        matches!(self.shape, Shape::Cube(_))
+    }
+
+    /// Depth of level 0 (1 for 2D and cube textures).
+    #[inline(always)]
+    pub fn depth(&self) -> f32 {
+        match &self.shape {
+            Shape::Volume(v) => v[0].depth(),
+            _ => 1.0,
+        }
+    }
+
+    /// One sample of a cube (direction x, y, z) or volume (u, v, w) at LOD
+    /// `lod` (bias already added); a 2D texture reads (x, y).
+    pub fn sample_3d(&self, p: [f32; 3], lod: f32) -> [f32; 4] {
+        let (a, b, t, filter) = self.select(lod);
+        let one = |i: usize| match &self.shape {
+            Shape::Flat => self.levels[i].sample(filter, p[0], p[1]),
+            Shape::Cube(faces) => {
+                let (f, s, tc) = cube_face(p);
+                faces[f][i].sample(filter, s, tc)
+            }
+            Shape::Volume(v) => v[i].sample(filter, p),
+        };
+        let c0 = one(a);
+        if t == 0.0 {
+            return c0;
+        }
+        let c1 = one(b);
+        std::array::from_fn(|c| c0[c] * (1.0 - t) + c1[c] * t)
     }
 
     /// Whether a sample's LOD can change its value: false for one usable

@@ -495,6 +495,7 @@ fn sample_row4(u: f32, filter: Filter, mode: Address) -> f32 {
         SamplerState {
             address_u: mode,
             address_v: mode,
+            address_w: mode,
             border: [10.0, 0.0, 0.0, 0.0],
             ..SamplerState::filtered(filter)
         },
@@ -1193,6 +1194,7 @@ fn busy_draw(texels: &[[f32; 4]], w: u32, h: u32) -> Draw<'_> {
         SamplerState {
             address_u: Address::Wrap,
             address_v: Address::Mirror,
+            address_w: Address::Mirror,
             border: [0.0; 4],
             ..SamplerState::filtered(Filter::Linear)
         },
@@ -1291,6 +1293,7 @@ fn point_border_draw(texels: &[[f32; 4]]) -> Draw<'_> {
         SamplerState {
             address_u: Address::Border,
             address_v: Address::Border,
+            address_w: Address::Border,
             border: [0.25, 0.5, 0.75, 2.0],
             ..SamplerState::filtered(Filter::Point)
         },
@@ -1343,6 +1346,7 @@ fn masked_texld_writes_only_its_components() {
         SamplerState {
             address_u: Address::Border,
             address_v: Address::Border,
+            address_w: Address::Border,
             border: [0.25, 0.5, 0.75, 2.0],
             ..SamplerState::filtered(Filter::Point)
         },
@@ -1659,7 +1663,7 @@ fn draw_errors_are_typed() {
         run(&c, &d).unwrap().color[0].as_ref().unwrap()[0],
         [0.0, 0.0, 0.0, 1.0]
     );
-    // Cube samplers cannot be emulated when bound.
+    // A 2D texture on a cube sampler is refused.
     let cube = compiled("dcl_cube s1\ntexld r0, c0, s1\nmov oC0, r0");
     let mut d = Draw::new(1, 1);
     d.samplers.push((
@@ -1674,7 +1678,7 @@ fn draw_errors_are_typed() {
     ));
     assert!(matches!(
         run(&cube, &d).unwrap_err(),
-        EmuError::UnsupportedSampler { sampler: 1, .. }
+        EmuError::SamplerTypeMismatch { sampler: 1, .. }
     ));
 }
 

@@ -141,9 +141,12 @@ impl Worker<'_, '_> {
         if kind != TexKind::LdL {
             self.note_site(site);
         }
-        self.tex_coords(a, kind == TexKind::LdP);
         let ctx = self.ctx;
         let sampler = ctx.samplers.get(s.index as usize).and_then(|x| x.as_ref());
+        if let Some(sm) = sampler.filter(|sm| sm.is_3d()) {
+            return self.texld_3d(d, a, s, sm, kind, site, None);
+        }
+        self.tex_coords(a, kind == TexKind::LdP);
         let need = sampler.is_some_and(|sm| sm.lod_matters());
         if let Some(sm) = sampler {
             match kind {
@@ -173,9 +176,12 @@ impl Worker<'_, '_> {
     /// `texldd`: λ from the given gradients (src2 = ∂/∂x, src3 = ∂/∂y, .xy).
     pub(super) fn texldd(&mut self, d: DstOp, a: SrcOp, s: SamplerOp, gx: SrcOp, gy: SrcOp) {
         let n = self.span();
-        self.tex_coords(a, false);
         let ctx = self.ctx;
         let sampler = ctx.samplers.get(s.index as usize).and_then(|x| x.as_ref());
+        if let Some(sm) = sampler.filter(|sm| sm.is_3d()) {
+            return self.texld_3d(d, a, s, sm, TexKind::Ld, 0, Some((gx, gy)));
+        }
+        self.tex_coords(a, false);
         let need = sampler.is_some_and(|sm| sm.lod_matters());
         if let (Some(sm), true) = (sampler, need) {
             let (wf, hf) = sm.size();

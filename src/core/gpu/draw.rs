@@ -236,7 +236,7 @@ impl ErrorScopes {
 }
 
 /// Refuses what the emulator refuses ([`emu::check`]), samplers other than
-/// 2D (as the emulator does), and targets larger than the device's.
+/// 2D (not translated for the device yet), and targets larger than the device's.
 fn refuse(gpu: &Gpu, shader: &Shader, draw: &Draw) -> Result<(), GpuError> {
     let compiled = emu::compile(shader).map_err(GpuError::Draw)?;
     emu::check(&compiled, draw).map_err(GpuError::Draw)?;
@@ -246,10 +246,11 @@ fn refuse(gpu: &Gpu, shader: &Shader, draw: &Draw) -> Result<(), GpuError> {
         .iter()
         .find(|d| d.ty != crate::core::isa::SamplerType::Tex2d)
     {
-        return Err(GpuError::Draw(emu::EmuError::UnsupportedSampler {
-            sampler: d.index,
-            ty: d.ty,
-        }));
+        return Err(GpuError::Unsupported(format!(
+            "s{} is declared dcl_{}: the GPU backend draws 2D textures only (the emulator samples cube and volume textures)",
+            d.index,
+            d.ty.suffix()
+        )));
     }
     let (w, h) = (draw.target_width, draw.target_height);
     let max = gpu.limits.max_texture_dimension_2d;
@@ -748,6 +749,7 @@ fn bind_sampler(
             emu::SamplerState {
                 address_u: emu::Address::Clamp,
                 address_v: emu::Address::Clamp,
+                address_w: emu::Address::Clamp,
                 ..Default::default()
             },
         ),

@@ -184,6 +184,7 @@ mod tests {
         let s = SamplerState {
             address_u: Address::Border,
             address_v: Address::MirrorOnce,
+            address_w: Address::MirrorOnce,
             border: [0.25, 0.5, 0.75, 1.0],
             ..SamplerState::filtered(Filter::Linear)
         };

@@ -13,7 +13,9 @@
 //! failed write leaves no partial file behind.
 
 mod bands;
+mod dds;
 mod error;
+mod layered;
 mod mip;
 mod openexr;
 mod pfm;
@@ -23,7 +25,9 @@ mod save;
 mod target;
 
 pub use bands::RgbBands;
+pub use dds::{is_dds, TextureFile};
 pub use error::{ForeignError, ImageError};
+pub use layered::{CubeMap, VolumeChain, VolumeLevel};
 pub use mip::{chain_weights, full_chain_levels, side_taps, weight_bound, MipChain, OddSides};
 pub use openexr::{encode_exr, write_exr};
 pub use pfm::write_pfm;
@@ -218,6 +222,37 @@ impl Format {
 pub fn load(path: &Path, limits: &ImageLimits) -> Result<HdrImage, ImageError> {
     let file = File::open(path).map_err(|e| ImageError::io(path, "open", e))?;
     decode(path, BufReader::new(file), limits)
+}
+
+/// Reads a texture file: DDS (by its magic `DDS `: 2D, cube or volume, with
+/// the levels it stores) or any image [`load`] reads (a 2D texture of one
+/// level). The file is read whole under `max_bytes`; `limits` bounds the
+/// texels of every level, face and slice together.
+pub fn load_texture(
+    path: &Path,
+    limits: &ImageLimits,
+    max_bytes: u64,
+) -> Result<TextureFile, ImageError> {
+    let file = File::open(path).map_err(|e| ImageError::io(path, "open", e))?;
+    let mut bytes = Vec::new();
+    file.take(max_bytes.saturating_add(1))
+        .read_to_end(&mut bytes)
+        .map_err(|e| ImageError::io(path, "read", e))?;
+    if bytes.len() as u64 > max_bytes {
+        return Err(ImageError::bad_header(
+            path,
+            "texture",
+            "file size",
+            format!("is more than {max_bytes} bytes"),
+        ));
+    }
+    if is_dds(&bytes) {
+        return dds::read(path, &bytes, limits);
+    }
+    let img = load_bytes(path, &bytes, limits)?;
+    MipChain::from_levels(vec![(img.width, img.height, img.pixels)])
+        .map(TextureFile::Flat)
+        .map_err(|e| ImageError::bad_header(path, "texture", "size", e))
 }
 
 /// Decodes an HDR image held in memory, as [`load`] reads a file; `name`

@@ -572,6 +572,7 @@ fn run_one(gpu: &Gpu, d: &Def) -> Result<Probe, CompareError> {
         SamplerState {
             address_u: Address::Clamp,
             address_v: Address::Clamp,
+            address_w: Address::Clamp,
             ..SamplerState::filtered(Filter::Point)
         },
     ));

@@ -595,6 +595,7 @@ fn sampler(texture: Texture<'_>) -> (u32, emu::TextureLevels<'_>, SamplerState) 
         SamplerState {
             address_u: Address::Border,
             address_v: Address::Border,
+            address_w: Address::Border,
             border: [0.0; 4],
             ..SamplerState::filtered(Filter::Point)
         },
@@ -1089,6 +1090,9 @@ pub struct PassSetup {
     pub backend: Backend,
     /// The special values of the arithmetic.
     pub float_rules: FloatRules,
+    /// Textures bound to samplers besides the image (`run --inputs`): a
+    /// texture on s0 takes the image's place there.
+    pub textures: Vec<(u32, crate::core::image::TextureFile, SamplerState)>,
 }
 
 /// What one pass produced.
@@ -1109,10 +1113,12 @@ pub struct PassOutput {
 /// its block of `image` (see [`block_start`]) and s0 = `image`.
 pub fn run_pass(
     loaded: &load::Loaded,
-    image: &HdrImage,
+    image: Option<&HdrImage>,
     setup: &PassSetup,
 ) -> Result<PassOutput, PipelineError> {
     let (tw, th) = setup.target;
+    // Without an image, v0 runs over the target's own texel centres.
+    let (iw, ih) = image.map_or((tw, th), |i| (i.width, i.height));
     let mut draw = Draw::new(tw, th);
     draw.limits = setup.limits;
     draw.float_rules = setup.float_rules;
@@ -1125,20 +1131,21 @@ pub fn run_pass(
             .any(|d| d.reg.file == file && d.reg.index == index)
     };
     if declared(crate::core::isa::RegFile::Input, 0) {
-        draw.inputs.push((
-            0,
-            block_start(
-                image.width,
-                image.height,
-                image.width.div_ceil(tw),
-                image.height.div_ceil(th),
-            ),
-        ));
+        draw.inputs
+            .push((0, block_start(iw, ih, iw.div_ceil(tw), ih.div_ceil(th))));
     }
     draw.constants = setup.constants.clone();
-    if loaded.shader.program().sampler_type(0).is_some() {
+    let given_s0 = setup.textures.iter().any(|(s, _, _)| *s == 0);
+    if let (Some(image), false, true) = (
+        image,
+        given_s0,
+        loaded.shader.program().sampler_type(0).is_some(),
+    ) {
         draw.samplers
             .push((0, image.as_texture().into(), setup.sampler));
+    }
+    for (s, file, state) in &setup.textures {
+        draw.samplers.push((*s, file.into(), *state));
     }
     draw.record_lod = true;
     let (target, emulated, findings) =

@@ -197,6 +197,19 @@ pub enum Input {
     },
 }
 
+/// Binds `textures` (`--inputs`) to their samplers, in place of what the
+/// input bound there.
+fn bind_textures<'a>(
+    draw: &mut emu::Draw<'a>,
+    textures: &'a [(u32, crate::core::image::TextureFile, SamplerState)],
+) {
+    draw.samplers
+        .retain(|(s, _, _)| !textures.iter().any(|(t, _, _)| t == s));
+    for (s, file, state) in textures {
+        draw.samplers.push((*s, file.into(), *state));
+    }
+}
+
 /// Everything `ps30 profile` needs besides the shader.
 #[derive(Clone, Debug)]
 pub struct Setup {
@@ -208,6 +221,9 @@ pub struct Setup {
     pub constants: Constants,
     /// Histogram bins asked for (at least 1 is used).
     pub bins: usize,
+    /// Textures bound besides the input's (`--inputs`); one on a sampler
+    /// the input binds takes its place.
+    pub textures: Vec<(u32, crate::core::image::TextureFile, SamplerState)>,
     /// Emulator threads; `None` for every core.
     pub threads: Option<usize>,
     /// The emulator's bounds (executed slots per pixel, target size).
@@ -319,7 +335,8 @@ pub fn profile_loaded(loaded: load::Loaded, setup: &Setup) -> Result<ProfileRun,
             }
             scene =
                 crate::jobs::scenes::lights::Scene::synthetic(*w, *h).map_err(|e| e.to_string())?;
-            let draw = gbuffer_draw(&loaded.file.name, &loaded, setup, &scene)?;
+            let mut draw = gbuffer_draw(&loaded.file.name, &loaded, setup, &scene)?;
+            bind_textures(&mut draw, &setup.textures);
             let out = run(&draw)?;
             let models = crate::jobs::scenes::lights::compare(&scene, &out);
             let counts = scene.pixels_per_model();
@@ -343,7 +360,8 @@ pub fn profile_loaded(loaded: load::Loaded, setup: &Setup) -> Result<ProfileRun,
             } else {
                 None
             };
-            let draw = image_draw(&loaded, setup, image, *target, *sampler, chain.as_ref());
+            let mut draw = image_draw(&loaded, setup, image, *target, *sampler, chain.as_ref());
+            bind_textures(&mut draw, &setup.textures);
             let out = run(&draw)?;
             let levels = chain.as_ref().map_or(1, |c| c.len());
             let (tw, th) = *target;

@@ -22,8 +22,9 @@
 //!
 //! * **targets**: `name`, `size` (`WxH`), `format` (a D3D9 name, with or
 //!   without `D3DFMT_`). Targets start cleared to 0.
-//! * **textures**: `name` and either `image` (an OpenEXR, Radiance or PFM
-//!   file, relative to the draw-list file) or `synthetic`:
+//! * **textures**: `name` and either `image` (an OpenEXR, Radiance, PFM or
+//!   DDS file — DDS with its cube faces, volume slices and authored mips —
+//!   relative to the draw-list file) or `synthetic`:
 //!   `lights-gbuffer` (with `size`) or `lights-material-0` … `-2`, the inputs
 //!   of `asm/lights/` ([`crate::jobs::scenes::lights`]).
 //! * **steps**, each one of:
@@ -37,7 +38,9 @@
 //!     (`"s0": {"texture": NAME, "filter": "point"|"linear", "mip":
 //!     "none"|"point"|"linear", "address": "wrap"|"mirror"|"clamp"|"border"|
 //!     "mirroronce", "border": [r, g, b, a], "lod_bias": B, "max_mip_level":
-//!     N}`; NAME is a texture or an earlier target; unset states take
+//!     N}`, with `address_u`, `address_v`, `address_w`, `min_filter` and
+//!     `mag_filter` to set one axis or filter apart (`render/textures.rs`);
+//!     NAME is a texture or an earlier target; unset states take
 //!     Direct3D 9's defaults: point, no mips, wrap), `blend` (`src`, `dest`,
 //!     `op`, optional `alpha` with its own `src`, `dest`, `op` for
 //!     SEPARATEALPHABLENDENABLE, optional `factor` bytes; absent: blending
@@ -50,8 +53,8 @@
 //!     through its mip chain (default `fold`).
 
 use super::{DrawList, DrawStep, ShaderSpec, Source, Step, TargetSpec, TextureData};
-use crate::core::emu::{Address, Constants, Filter, LinearInput, MipFilter, SamplerState};
-use crate::core::image::{self, ImageLimits, OddSides, TargetFormat};
+use crate::core::emu::{Constants, Filter, LinearInput, MipFilter, SamplerState};
+use crate::core::image::{ImageLimits, OddSides, TargetFormat};
 use crate::core::load::{self, Options};
 use crate::core::merge::{BlendFactor, BlendOp, BlendState, ColorWrite, Equation, OutputState};
 use serde::Deserialize;
@@ -181,6 +184,11 @@ struct FileSampler {
     border: Option<[f64; 4]>,
     lod_bias: Option<f64>,
     max_mip_level: Option<u32>,
+    address_u: Option<String>,
+    address_v: Option<String>,
+    address_w: Option<String>,
+    min_filter: Option<String>,
+    mag_filter: Option<String>,
 }
 
 #[derive(Deserialize)]
@@ -246,6 +254,113 @@ pub fn read(path: &Path, limits: &FileLimits) -> Result<Loaded, FileError> {
         )
     })?;
     parse(&text, path, limits)
+}
+
+/// Constants, textures and sampler states for one draw, read from a file in
+/// the draw-list step format (`ps30 run --inputs FILE`): `constants`,
+/// `ints`, `bools` and `samplers`, where a sampler's `texture` is an image
+/// or DDS file relative to the inputs file.
+#[derive(Clone, Debug)]
+pub struct Inputs {
+    /// The application's `c#`, `i#`, `b#`.
+    pub constants: Constants,
+    /// `(s#, texture, state)`; the texture's name is its file as written.
+    pub samplers: Vec<(u32, TextureData, SamplerState)>,
+    /// The files it read besides itself.
+    pub sources: Vec<PathBuf>,
+    /// The registers it sets: `c#`, `i#`, `b#`.
+    pub given: [Vec<u32>; 3],
+}
+
+/// Reads an inputs file (see [`Inputs`]); errors name the file and field.
+pub fn read_inputs(path: &Path, limits: &FileLimits) -> Result<Inputs, FileError> {
+    let fail = |at: &str, message: String| FileError {
+        path: path.to_path_buf(),
+        at: at.to_string(),
+        message,
+    };
+    let bytes = std::fs::File::open(path)
+        .map_err(|e| e.to_string())
+        .and_then(|f| crate::core::input::read_capped(f, "inputs file", limits.max_input_bytes))
+        .map_err(|e| fail("", e))?;
+    let text =
+        String::from_utf8_lossy(bytes.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(&bytes)).into_owned();
+    let step: FileStep = serde_json::from_str(&text).map_err(|e| {
+        fail(
+            &format!("line {} column {}", e.line(), e.column()),
+            e.to_string()
+                .split(" at line ")
+                .next()
+                .unwrap_or("")
+                .to_string(),
+        )
+    })?;
+    let draw_only = [
+        ("clear", step.clear.is_some()),
+        ("draw", step.draw.is_some()),
+        ("shader", step.shader.is_some()),
+        ("inputs", step.inputs.is_some()),
+        ("blend", step.blend.is_some()),
+        ("mips", step.mips.is_some()),
+        ("defines", step.defines.is_some()),
+    ];
+    if let Some((name, _)) = draw_only.iter().find(|(_, set)| *set) {
+        return Err(fail(
+            name,
+            "an inputs file gives only `constants`, `ints`, `bools` and `samplers`".into(),
+        ));
+    }
+    let mut r = Resolver {
+        path: path.to_path_buf(),
+        dir: path.parent().unwrap_or(Path::new("")).to_path_buf(),
+        limits: *limits,
+        pixels: 0,
+        list: DrawList {
+            targets: Vec::new(),
+            textures: Vec::new(),
+            shaders: Vec::new(),
+            steps: Vec::new(),
+        },
+        shader_keys: Vec::new(),
+        sources: Vec::new(),
+        warnings: Vec::new(),
+    };
+    let constants = r.constants("", &step).map_err(|mut e| {
+        e.at = e.at.trim_start_matches('.').to_string();
+        e
+    })?;
+    let mut samplers = Vec::new();
+    for (name, fs) in step.samplers.iter().flatten() {
+        let field = format!("samplers.{name}");
+        let reg = register(name, 's', 16).map_err(|m| r.err(&field, m))?;
+        let texture = FileTexture {
+            name: format!("s{reg}"),
+            image: Some(fs.texture.clone()),
+            synthetic: None,
+            size: None,
+        };
+        r.texture(samplers.len(), &texture)
+            .map_err(|e| r.err(&format!("{field}.texture"), e.message))?;
+        let mut data = r.list.textures.pop().expect("texture just read");
+        data.name = fs.texture.clone();
+        samplers.push((reg, data, r.sampler_state(&field, fs)?));
+    }
+    fn regs<V>(m: &Option<BTreeMap<String, V>>, letter: char) -> Vec<u32> {
+        m.iter()
+            .flatten()
+            .filter_map(|(name, _)| name.strip_prefix(letter)?.parse().ok())
+            .collect()
+    }
+    Ok(Inputs {
+        constants,
+        samplers,
+        sources: r.sources,
+        given: [
+            regs(&step.constants, 'c'),
+            regs(&step.ints, 'i'),
+            regs(&step.bools, 'b'),
+        ],
+    })
 }
 
 /// [`read`] on text already in memory; `path` names it in errors and is
@@ -440,14 +555,21 @@ impl Resolver {
     fn texture(&mut self, i: usize, t: &FileTexture) -> Result<(), FileError> {
         let at = format!("textures[{i}]");
         self.name_free(&format!("{at}.name"), &t.name)?;
+        let mut file_levels = None;
         let (width, height, texels) = match (&t.image, &t.synthetic) {
             (Some(file), None) => {
                 let budget = self.limits.max_pixels.saturating_sub(self.pixels).max(1);
                 let path = self.dir.join(file);
-                let img = image::load(&path, &ImageLimits { max_pixels: budget })
-                    .map_err(|e| self.err(&format!("{at}.image"), e.to_string()))?;
+                let img = super::textures::load(&path, budget)
+                    .map_err(|e| self.err(&format!("{at}.image"), e))?;
                 self.sources.push(path);
-                (img.width, img.height, img.pixels)
+                if img.file.is_some() {
+                    // Levels, faces and slices count against the budget.
+                    let n = u32::try_from(img.texel_count).unwrap_or(u32::MAX);
+                    self.spend(&at, n, 1)?;
+                    file_levels = img.file;
+                }
+                (img.width, img.height, img.texels)
             }
             (None, Some(kind)) => self.synthetic(&at, kind, t.size.as_deref())?,
             _ => {
@@ -457,12 +579,15 @@ impl Resolver {
                 ))
             }
         };
-        self.spend(&at, width, height)?;
+        if file_levels.is_none() {
+            self.spend(&at, width, height)?;
+        }
         self.list.textures.push(TextureData {
             name: t.name.clone(),
             width,
             height,
             texels,
+            file: file_levels,
         });
         Ok(())
     }
@@ -771,14 +896,8 @@ impl Resolver {
             "linear" => MipFilter::Linear,
             v => return Err(bad("mip", v, "none, point, linear")),
         };
-        let address = match fs.address.as_deref().unwrap_or("wrap") {
-            "wrap" => Address::Wrap,
-            "mirror" => Address::Mirror,
-            "clamp" => Address::Clamp,
-            "border" => Address::Border,
-            "mirroronce" => Address::MirrorOnce,
-            v => return Err(bad("address", v, "wrap, mirror, clamp, border, mirroronce")),
-        };
+        let address = super::textures::address(fs.address.as_deref().unwrap_or("wrap"))
+            .map_err(|m| self.err(&format!("{field}.address"), m))?;
         let border = match fs.border {
             Some(b) => vec4(&b).map_err(|m| self.err(&format!("{field}.border"), m))?,
             None => [0.0; 4],
@@ -787,7 +906,7 @@ impl Resolver {
         if !lod_bias.is_finite() {
             return Err(self.err(&format!("{field}.lod_bias"), "not a finite f32".into()));
         }
-        Ok(SamplerState {
+        let mut state = SamplerState {
             mag_filter: filter,
             min_filter: filter,
             mip_filter,
@@ -795,8 +914,20 @@ impl Resolver {
             max_mip_level: fs.max_mip_level.unwrap_or(0),
             address_u: address,
             address_v: address,
+            address_w: address,
             border,
-        })
+        };
+        super::textures::overrides(
+            &mut state,
+            [
+                fs.address_u.as_deref(),
+                fs.address_v.as_deref(),
+                fs.address_w.as_deref(),
+            ],
+            [fs.min_filter.as_deref(), fs.mag_filter.as_deref()],
+        )
+        .map_err(|(part, m)| self.err(&format!("{field}.{part}"), m))?;
+        Ok(state)
     }
 
     fn equation(

@@ -21,6 +21,7 @@
 pub mod file;
 mod floats;
 pub mod pixel_state;
+pub mod textures;
 
 use crate::core::cost::{self, Profile, Range};
 use crate::core::emu::{
@@ -41,8 +42,13 @@ pub struct TextureData {
     pub width: u32,
     /// Height in texels.
     pub height: u32,
-    /// `width × height` texels, row-major, top row first.
+    /// `width × height` texels, row-major, top row first (empty when
+    /// `file` holds the texture).
     pub texels: Vec<[f32; 4]>,
+    /// A texture file's levels, cube faces or volume slices (a DDS file
+    /// with more than one level-0 image); samplers read it instead of
+    /// `texels`.
+    pub file: Option<crate::core::image::TextureFile>,
 }
 
 /// A render target of a draw list.
@@ -475,12 +481,15 @@ fn draw(
         let levels: TextureLevels<'_> = match source {
             Source::Texture(t) => {
                 let t = &list.textures[t];
-                Texture {
-                    width: t.width,
-                    height: t.height,
-                    texels: &t.texels,
+                match &t.file {
+                    Some(file) => file.into(),
+                    None => Texture {
+                        width: t.width,
+                        height: t.height,
+                        texels: &t.texels,
+                    }
+                    .into(),
                 }
-                .into()
             }
             Source::Target(t) if t == d.target => {
                 return Err(DrawFailure::Message(format!(

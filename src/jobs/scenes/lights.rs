@@ -212,6 +212,7 @@ impl Scene {
             SamplerState {
                 address_u: Address::Clamp,
                 address_v: Address::Clamp,
+                address_w: Address::Clamp,
                 ..SamplerState::filtered(Filter::Point)
             },
         ));
@@ -368,6 +369,7 @@ pub fn material_state() -> SamplerState {
     SamplerState {
         address_u: Address::Wrap,
         address_v: Address::Wrap,
+        address_w: Address::Wrap,
         ..SamplerState::filtered(Filter::Point)
     }
 }

@@ -55,6 +55,7 @@ pub fn draw_list(scene: &Scene, lights: &[Light]) -> Result<DrawList, String> {
         width: w,
         height: h,
         texels: scene.gbuffer.clone(),
+        file: None,
     }];
     for (m, texels) in scene.materials.iter().enumerate() {
         textures.push(TextureData {
@@ -62,11 +63,13 @@ pub fn draw_list(scene: &Scene, lights: &[Light]) -> Result<DrawList, String> {
             width: MATERIAL_SIZE,
             height: MATERIAL_SIZE,
             texels: texels.clone(),
+            file: None,
         });
     }
     let gbuffer_state = SamplerState {
         address_u: Address::Clamp,
         address_v: Address::Clamp,
+        address_w: Address::Clamp,
         ..SamplerState::default()
     };
     let mut steps = vec![Step::Clear {

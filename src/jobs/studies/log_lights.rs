@@ -237,6 +237,7 @@ pub fn draw_list(method: Method, lights: u32, brightness: f32) -> Result<DrawLis
                 crate::core::emu::SamplerState {
                     address_u: crate::core::emu::Address::Clamp,
                     address_v: crate::core::emu::Address::Clamp,
+                    address_w: crate::core::emu::Address::Clamp,
                     ..Default::default()
                 },
             )],

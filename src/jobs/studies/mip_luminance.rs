@@ -101,6 +101,7 @@ pub fn draw_list(
             width: w,
             height: h,
             texels: image.pixels.clone(),
+            file: None,
         }],
         shaders: vec![ShaderSpec {
             name: b.path.into(),
@@ -122,6 +123,7 @@ pub fn draw_list(
                     SamplerState {
                         address_u: Address::Clamp,
                         address_v: Address::Clamp,
+                        address_w: Address::Clamp,
                         ..SamplerState::default()
                     },
                 )],

@@ -916,6 +916,7 @@ pub fn emulate(
     let clamp = SamplerState {
         address_u: Address::Clamp,
         address_v: Address::Clamp,
+        address_w: Address::Clamp,
         border: [0.0; 4],
         ..SamplerState::filtered(Filter::Point)
     };
