@@ -55,6 +55,8 @@ pub(super) struct Ctx {
     pub textures: BTreeMap<u32, Tex>,
     /// `ps30_border`, when a 2D or volume sampler may need it.
     pub border: Option<Handle<naga::Function>>,
+    /// The emulation code each sampler carries (set by `core::translate`).
+    pub spec: super::Specialisation,
     pub float_defs: BTreeMap<u32, Handle<Constant>>,
     pub int_defs: BTreeMap<u32, Handle<Constant>>,
     pub bool_defs: BTreeMap<u32, bool>,
@@ -324,6 +326,7 @@ impl Ctx {
             textures,
             // Added by `core::translate` with `texture::add_border_function`.
             border: None,
+            spec: super::Specialisation::general(),
             float_defs,
             int_defs,
             bool_defs,
