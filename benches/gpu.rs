@@ -261,7 +261,6 @@ fn main() {
     benches();
     Criterion::default().configure_from_args().final_summary();
     let devices = DEVICES.lock().unwrap().clone();
-    let machine = goals::machine(None);
     for (group, rows) in [
         (
             TRANSLATION,
@@ -305,8 +304,8 @@ fn main() {
             .map(|(_, d)| d.as_str())
             .collect();
         println!(
-            "\n`{group}` on {machine}; device {} (criterion's typical times, one run):\n\n| measured | ratio | |\n|---|---|---|",
-            on.first().copied().unwrap_or("none")
+            "\n`{group}` on {} (criterion's typical times, one run):\n\n| measured | ratio | |\n|---|---|---|",
+            goals::machine(on.first().copied())
         );
         for (a, b, bound, met) in rows {
             println!("{}", row(&times, &a, &b, bound, met));
