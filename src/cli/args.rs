@@ -687,6 +687,26 @@ impl BackendArgs {
         })
     }
 
+    /// [`open`](Self::open) on a thread of its own while `work` (decoding
+    /// the image) runs on this one: a GPU driver takes a large part of a
+    /// second to start, which the decoding hides.
+    pub fn open_beside<T>(
+        &self,
+        work: impl FnOnce() -> T,
+    ) -> (Result<ps30::jobs::backend::Backend, super::BadInput>, T) {
+        if matches!(self.backend, BackendArg::Emulator) {
+            return (self.open(), work());
+        }
+        std::thread::scope(|s| {
+            let opening = s.spawn(|| self.open());
+            let done = work();
+            let backend = opening
+                .join()
+                .unwrap_or_else(|panic| std::panic::resume_unwind(panic));
+            (backend, done)
+        })
+    }
+
     pub fn rules(&self) -> ps30::core::float_rules::FloatRules {
         self.float_rules.into()
     }

@@ -119,9 +119,13 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
     super::bound_threads(args.exec.threads())?;
     // The passes need only the image's size: planning them runs beside the
     // decoding.
-    let (img, passes) = image::load_beside(&args.image, &args.exec.image_limits(), |w, h| {
-        args.passes(w, h)
-    })?;
+    // So does opening a GPU.
+    let (backend, loaded) = args.draw.open_beside(|| {
+        image::load_beside(&args.image, &args.exec.image_limits(), |w, h| {
+            args.passes(w, h)
+        })
+    });
+    let (img, passes) = loaded?;
     let passes = passes?;
     let settings = Settings {
         block: passes.block,
@@ -133,7 +137,7 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         },
         threads: args.exec.threads(),
         limits: args.exec.limits(),
-        backend: args.draw.open()?,
+        backend: backend?,
         float_rules: args.draw.rules(),
     };
     let run = {

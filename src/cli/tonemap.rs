@@ -42,7 +42,10 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         check_image_output(out, &[&args.image, Path::new(&args.shader)])?;
     }
     let shader = shader_source(&args.shader, args.input.max_input_bytes)?;
-    let img = image::load(&args.image, &args.exec.image_limits())?;
+    let (backend, img) = args
+        .draw
+        .open_beside(|| image::load(&args.image, &args.exec.image_limits()));
+    let img = img?;
     let settings = Settings {
         key: args.key,
         white: args.white,
@@ -50,7 +53,7 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         band_rows: 0,
         shader,
         limits: args.exec.limits(),
-        backend: args.draw.open()?,
+        backend: backend?,
         float_rules: args.draw.rules(),
     };
     let mut output = args

@@ -44,6 +44,17 @@ impl Backend {
         }
     }
 
+    /// Rows per band for a job that draws a `width`-pixel image in bands:
+    /// `emulator` on the emulator (its batches want small bands), the
+    /// device's [`Gpu::max_rows`] on a GPU (each draw there uploads its
+    /// textures, so fewer draws are faster).
+    pub fn band_rows(&self, width: u32, emulator: u32) -> u32 {
+        match self {
+            Backend::Emulator => emulator,
+            Backend::Gpu(g) => g.max_rows(width),
+        }
+    }
+
     /// The device a GPU backend draws on; `None` for the emulator.
     pub fn device(&self) -> Option<&gpu::DeviceInfo> {
         match self {

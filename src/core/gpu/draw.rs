@@ -7,6 +7,7 @@ use crate::core::emu::{self, Draw};
 use crate::core::image::{unorm8_value, Encoding, TargetFormat};
 use crate::core::ir::Shader;
 use crate::core::translate::{self, interface, Entry};
+use rayon::prelude::*;
 use std::borrow::Cow;
 
 /// What each `oC#` is rendered into.
@@ -135,7 +136,8 @@ pub struct Prepared<'g> {
     depth: Option<wgpu::Texture>,
 }
 
-/// Makes `draw` of `shader` ready on the device (see [`Prepared`]).
+/// Makes `draw` of `shader` ready on the device (see [`Prepared`]): the
+/// translation specialised to the draw's sampler states.
 pub fn prepare<'g>(
     gpu: &'g Gpu,
     shader: &Shader,
@@ -143,15 +145,49 @@ pub fn prepare<'g>(
     targets: TargetKind,
 ) -> Result<Prepared<'g>, GpuError> {
     refuse(gpu, shader, draw)?;
+    let spec = specialisation(gpu, shader, draw)?;
+    let t = translate::translate_specialised(shader, draw.float_rules, Entry::Draw, &spec)
+        .map_err(GpuError::Translate)?;
+    ready(gpu, draw, targets, t.interface, t.module)
+}
+
+/// [`prepare`] with `fragment` drawn in place of the translation of
+/// `shader`, on the same resources: a shader written by hand for the same
+/// computation, measured against the translation (the benchmarks'
+/// reference). `fragment` has the translation's interface — the entry
+/// point `ps30_draw`, the bindings and locations of
+/// [`translate::interface`] for `shader`'s registers.
+pub fn prepare_with<'g>(
+    gpu: &'g Gpu,
+    shader: &Shader,
+    draw: &Draw,
+    targets: TargetKind,
+    fragment: naga::Module,
+) -> Result<Prepared<'g>, GpuError> {
+    refuse(gpu, shader, draw)?;
+    ready(
+        gpu,
+        draw,
+        targets,
+        translate::Interface::of(shader),
+        fragment,
+    )
+}
+
+/// The pipeline of `fragment`, the resources of `draw` and the targets.
+fn ready<'g>(
+    gpu: &'g Gpu,
+    draw: &Draw,
+    targets: TargetKind,
+    iface: translate::Interface,
+    fragment: naga::Module,
+) -> Result<Prepared<'g>, GpuError> {
     let (w, h) = (draw.target_width, draw.target_height);
-    let t =
-        translate::translate(shader, draw.float_rules, Entry::Draw).map_err(GpuError::Translate)?;
-    let iface = t.interface.clone();
     let device = &gpu.device;
     let scopes = ErrorScopes::push(gpu);
     let bindings = Bindings::new(gpu, draw, &iface)?;
     let color_targets = color_targets(&iface, targets);
-    let pipeline = render_pipeline(device, t.module, &bindings, &color_targets, draw, &iface)?;
+    let pipeline = render_pipeline(device, fragment, &bindings, &color_targets, draw, &iface)?;
     let attachments = color_targets
         .iter()
         .map(|c| {
@@ -198,9 +234,19 @@ impl Prepared<'_> {
             h,
         );
         gpu.queue.submit([encoder.finish()]);
-        let data = read_all(gpu, &readbacks)?;
+        read_all(gpu, &readbacks)?;
+        // Decoded straight from the mapped buffers: a 4K target is 132 MB.
+        let views = readbacks
+            .iter()
+            .map(|(_, r)| r.buffer.get_mapped_range(..))
+            .collect::<Result<Vec<_>, _>>()
+            .map_err(|e| GpuError::Failed(e.to_string()))?;
+        let data: Vec<&[u8]> = views.iter().map(|v| &v[..]).collect();
+        let out = assemble(w, h, &self.iface, self.targets, &readbacks, &data);
+        drop(data);
+        drop(views);
         scopes.pop(gpu)?;
-        Ok(assemble(w, h, &self.iface, self.targets, &readbacks, data))
+        Ok(out)
     }
 }
 
@@ -499,8 +545,8 @@ fn copy_out(
     }
 }
 
-/// Maps every read-back buffer and copies its rows out.
-fn read_all(gpu: &Gpu, readbacks: &[(Slot, Readback)]) -> Result<Vec<Vec<u8>>, GpuError> {
+/// Maps every read-back buffer for reading.
+fn read_all(gpu: &Gpu, readbacks: &[(Slot, Readback)]) -> Result<(), GpuError> {
     let (tx, rx) = std::sync::mpsc::channel();
     for (i, (_, r)) in readbacks.iter().enumerate() {
         let tx = tx.clone();
@@ -515,16 +561,7 @@ fn read_all(gpu: &Gpu, readbacks: &[(Slot, Readback)]) -> Result<Vec<Vec<u8>>, G
     for (i, res) in rx.iter() {
         res.map_err(|e| GpuError::Failed(format!("reading target {i} back: {e}")))?;
     }
-    readbacks
-        .iter()
-        .map(|(_, r)| {
-            let view = r
-                .buffer
-                .get_mapped_range(..)
-                .map_err(|e| GpuError::Failed(e.to_string()))?;
-            Ok(view.to_vec())
-        })
-        .collect()
+    Ok(())
 }
 
 /// The read-back bytes as per-pixel values in the emulator's layout.
@@ -534,7 +571,7 @@ fn assemble(
     iface: &translate::Interface,
     targets: TargetKind,
     readbacks: &[(Slot, Readback)],
-    data: Vec<Vec<u8>>,
+    data: &[&[u8]],
 ) -> GpuOutput {
     let n = w as usize * h as usize;
     let mut out = GpuOutput {
@@ -544,47 +581,54 @@ fn assemble(
         depth: None,
         killed: vec![false; n],
     };
-    let texels = |r: &Readback, bytes: &[u8]| -> Vec<Vec<u8>> {
-        let mut v = Vec::with_capacity(n);
-        for y in 0..h as usize {
-            for x in 0..w as usize {
-                let at = y * r.pitch as usize + x * r.texel as usize;
-                v.push(bytes[at..at + r.texel as usize].to_vec());
-            }
-        }
-        v
-    };
-    for ((slot, r), bytes) in readbacks.iter().zip(&data) {
-        let px = texels(r, bytes);
+    for ((slot, r), &bytes) in readbacks.iter().zip(data) {
         match *slot {
             Slot::Color(k) if k < 4 => {
-                out.color[k] = Some(px.iter().map(|b| targets.decode(b)).collect());
+                out.color[k] = Some(texels(w, h, r, bytes, |b| targets.decode(b)));
             }
             Slot::Color(_) => {
-                out.killed = px.iter().map(|b| b.iter().any(|&x| x != 0)).collect();
+                out.killed = texels(w, h, r, bytes, |b| b.iter().any(|&x| x != 0));
             }
             Slot::Depth => {
-                out.depth = Some(
-                    px.iter()
-                        .map(|b| f32::from_le_bytes([b[0], b[1], b[2], b[3]]))
-                        .collect(),
-                );
+                let depth = |b: &[u8]| f32::from_le_bytes([b[0], b[1], b[2], b[3]]);
+                out.depth = Some(texels(w, h, r, bytes, depth));
             }
         }
     }
     if iface.kills {
-        for (i, &k) in out.killed.clone().iter().enumerate() {
-            if k {
-                for c in out.color.iter_mut().flatten() {
-                    c[i] = [0.0; 4];
-                }
-                if let Some(d) = &mut out.depth {
-                    d[i] = 0.0;
-                }
+        let killed = std::mem::take(&mut out.killed);
+        for (i, _) in killed.iter().enumerate().filter(|(_, &k)| k) {
+            for c in out.color.iter_mut().flatten() {
+                c[i] = [0.0; 4];
+            }
+            if let Some(d) = &mut out.depth {
+                d[i] = 0.0;
             }
         }
+        out.killed = killed;
     }
     out
+}
+
+/// Each texel of a read-back target decoded by `decode`, row by row (the
+/// rows in parallel: a 4K target is 8 million texels).
+fn texels<T: Send>(
+    w: u32,
+    h: u32,
+    r: &Readback,
+    bytes: &[u8],
+    decode: impl Fn(&[u8]) -> T + Sync,
+) -> Vec<T> {
+    let (pitch, texel) = (r.pitch as usize, r.texel as usize);
+    let row_bytes = w as usize * texel;
+    (0..h as usize)
+        .into_par_iter()
+        .flat_map_iter(|y| {
+            bytes[y * pitch..y * pitch + row_bytes]
+                .chunks_exact(texel)
+                .map(&decode)
+        })
+        .collect()
 }
 
 /// The bind group: constants, textures with their samplers, inputs.
@@ -730,17 +774,11 @@ fn constant_block(draw: &Draw) -> Vec<u8> {
     block
 }
 
-/// Sampler `register`: its texture uploaded, its D3D9 state mapped to a
-/// wgpu sampler and view, and what the shader applies itself written into
-/// `block`'s record for it.
-fn bind_sampler(
-    gpu: &Gpu,
-    draw: &Draw,
-    register: u32,
-    block: &mut [u8],
-) -> Result<(wgpu::TextureView, wgpu::Sampler), GpuError> {
-    let bound = draw.samplers.iter().find(|b| b.0 == register);
-    let (levels, state) = match bound {
+/// The levels bound to sampler `register` and its state. An unbound
+/// sampler reads (0, 0, 0, 1) (MS texldl---ps): no levels (a 1×1 texture of
+/// that value), clamped.
+fn bound<'d>(draw: &'d Draw, register: u32) -> (Vec<emu::Texture<'d>>, emu::SamplerState) {
+    match draw.samplers.iter().find(|b| b.0 == register) {
         Some((_, tex, state)) => (tex.views(), *state),
         // An unbound sampler reads (0, 0, 0, 1) (MS texldl---ps): a
         // 1×1 texture of that value, clamped.
@@ -753,9 +791,42 @@ fn bind_sampler(
                 ..Default::default()
             },
         ),
-    };
+    }
+}
+
+/// Sampler `register`'s state mapped for the device, for a texture of its
+/// bound levels.
+fn mapped(gpu: &Gpu, draw: &Draw, register: u32) -> Result<sampler::Mapped, GpuError> {
+    let (levels, state) = bound(draw, register);
     let count = levels.len().max(1) as u32;
-    let mapped = sampler::map(&state, count, register, gpu.clamp_to_border())?;
+    sampler::map(&state, count, register, gpu.clamp_to_border())
+}
+
+/// What the translation needs of each declared sampler under the draw's
+/// states (`translate::specialise`): only the emulation they ask for.
+fn specialisation(
+    gpu: &Gpu,
+    shader: &Shader,
+    draw: &Draw,
+) -> Result<translate::Specialisation, GpuError> {
+    let mut spec = translate::Specialisation::general();
+    for d in &shader.program().samplers {
+        spec.set(d.index, mapped(gpu, draw, d.index)?.spec);
+    }
+    Ok(spec)
+}
+
+/// Sampler `register`: its texture uploaded, its D3D9 state mapped to a
+/// wgpu sampler and view, and what the shader applies itself written into
+/// `block`'s record for it.
+fn bind_sampler(
+    gpu: &Gpu,
+    draw: &Draw,
+    register: u32,
+    block: &mut [u8],
+) -> Result<(wgpu::TextureView, wgpu::Sampler), GpuError> {
+    let (levels, _) = bound(draw, register);
+    let mapped = mapped(gpu, draw, register)?;
     if mapped.filtering && !gpu.float32_filterable() {
         return Err(GpuError::Unsupported(format!(
             "s{register} filters linearly and the device cannot filter 32-bit float textures (FLOAT32_FILTERABLE)"
@@ -830,10 +901,8 @@ fn write_texels(
     h: u32,
     texels: &[[f32; 4]],
 ) {
-    let bytes: Vec<u8> = texels
-        .iter()
-        .flat_map(|t| t.iter().flat_map(|c| c.to_le_bytes()))
-        .collect();
+    // The device's Rgba32Float is little-endian f32, as the host's.
+    let bytes: &[u8] = bytemuck::cast_slice(texels);
     gpu.queue.write_texture(
         wgpu::TexelCopyTextureInfo {
             texture,
@@ -845,7 +914,7 @@ fn write_texels(
             },
             aspect: wgpu::TextureAspect::All,
         },
-        &bytes,
+        bytes,
         wgpu::TexelCopyBufferLayout {
             offset: 0,
             bytes_per_row: Some(16 * w),
@@ -884,12 +953,15 @@ fn input_texture(gpu: &Gpu, draw: &Draw, iface: &translate::Interface) -> wgpu::
             .find(|(v, _)| *v == input.register)
             .map(|(_, value)| *value)
             .unwrap_or_default();
-        let mut texels = Vec::with_capacity(w as usize * h as usize);
-        for y in 0..h {
-            for x in 0..w {
-                texels.push(value.at(x as f32, y as f32));
-            }
-        }
+        let mut texels = vec![[0.0f32; 4]; w as usize * h as usize];
+        texels
+            .par_chunks_mut(w.max(1) as usize)
+            .enumerate()
+            .for_each(|(y, row)| {
+                for (x, t) in row.iter_mut().enumerate() {
+                    *t = value.at(x as f32, y as f32);
+                }
+            });
         write_texels(gpu, &texture, 0, layer as u32, w, h, &texels);
     }
     texture

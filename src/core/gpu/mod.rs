@@ -34,7 +34,7 @@
 mod draw;
 mod sampler;
 
-pub use draw::{prepare, run, GpuOutput, Prepared, TargetKind};
+pub use draw::{prepare, prepare_with, run, GpuOutput, Prepared, TargetKind};
 
 use crate::core::emu::EmuError;
 use crate::core::translate::TranslateError;
@@ -191,6 +191,24 @@ impl Gpu {
     /// Whether 32-bit float textures can be filtered linearly.
     pub fn float32_filterable(&self) -> bool {
         self.features.contains(wgpu::Features::FLOAT32_FILTERABLE)
+    }
+
+    /// The most rows of a `width`-pixel target one draw should cover: within
+    /// the device's texture side and read-back buffer size (an
+    /// `Rgba32Float` target, the widest drawn), and at most 2²³ pixels (a
+    /// 3840×2160 frame in one draw), so that a large image drawn in bands
+    /// holds a bounded part of it at a time. Each draw uploads its textures
+    /// and compiles its pipeline, so fewer, larger draws are faster here,
+    /// where the emulator prefers small bands.
+    pub fn max_rows(&self, width: u32) -> u32 {
+        const MAX_PIXELS: u64 = 1 << 23;
+        let width = width.max(1) as u64;
+        let pitch = (width * 16).div_ceil(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT as u64)
+            * wgpu::COPY_BYTES_PER_ROW_ALIGNMENT as u64;
+        let rows = (MAX_PIXELS / width)
+            .min(self.limits.max_buffer_size / pitch)
+            .min(self.limits.max_texture_dimension_2d as u64);
+        rows.clamp(1, u32::MAX as u64) as u32
     }
 
     /// Whether BORDER addressing is available.

@@ -27,6 +27,7 @@
 
 use super::GpuError;
 use crate::core::emu::{Address, Filter, MipFilter, SamplerState};
+use crate::core::translate::SamplerSpec;
 
 /// Everything the draw sets up for one `s#`.
 pub(super) struct Mapped {
@@ -38,6 +39,8 @@ pub(super) struct Mapped {
     pub block: [u8; 64],
     /// Whether the sampler filters linearly (needs a filterable texture).
     pub filtering: bool,
+    /// The emulation code the translation needs for this state.
+    pub spec: SamplerSpec,
 }
 
 fn filter(f: Filter) -> wgpu::FilterMode {
@@ -148,6 +151,12 @@ pub(super) fn map(
         level_count,
         block,
         filtering: linear || state.mip_filter == MipFilter::Linear,
+        // `lod` as [0, 0, 2⁰, 0] is the device's own level of detail.
+        spec: SamplerSpec {
+            mirror_once: mirror_once.contains(&1),
+            border: emulate_border,
+            lod: lod != [0.0, 0.0, 1.0, 0.0],
+        },
     })
 }
 
@@ -177,6 +186,11 @@ mod tests {
         let w = words(&m.block);
         assert_eq!(w[2], 1f32.to_bits());
         assert!(w[4..].iter().all(|&x| x == 0), "{w:?}");
+        assert_eq!(
+            m.spec,
+            SamplerSpec::PLAIN,
+            "nothing for the shader to emulate"
+        );
     }
 
     #[test]
@@ -194,6 +208,12 @@ mod tests {
         assert_eq!(w[4..8], [0.25f32, 0.5, 0.75, 1.0].map(f32::to_bits));
         assert_eq!(w[8..12], [0, 1, 0, 0], "mirror once on v");
         assert_eq!(w[12..16], [1, 0, 0, 2], "border on u, linear");
+        let emulated = SamplerSpec {
+            mirror_once: true,
+            border: true,
+            lod: false,
+        };
+        assert_eq!(m.spec, emulated);
         let refused = map(
             &SamplerState {
                 mip_filter: MipFilter::Linear,
@@ -218,6 +238,7 @@ mod tests {
         let w = words(&m.block);
         assert_eq!(f32::from_bits(w[0]), 2.5);
         assert_eq!(f32::from_bits(w[1]), 0.5);
+        assert!(m.spec.lod, "a bias is read by the shader");
         let with_mips = map(
             &SamplerState {
                 mip_filter: MipFilter::Point,

@@ -45,10 +45,12 @@ pub mod header;
 pub mod interface;
 mod lower;
 mod module;
+pub mod specialise;
 mod texture;
 
 pub use interface::Interface;
 pub use module::Entry;
+pub use specialise::{SamplerSpec, Specialisation};
 
 use crate::core::float_rules::FloatRules;
 use crate::core::ir::Shader;
@@ -171,15 +173,28 @@ impl Translation {
     }
 }
 
-/// Lowers `shader` and validates the module.
+/// Lowers `shader` and validates the module; every sampler reads its state
+/// at run time ([`Specialisation::general`]).
 pub fn translate(
     shader: &Shader,
     rules: FloatRules,
     entry: Entry,
 ) -> Result<Translation, TranslateError> {
+    translate_specialised(shader, rules, entry, &Specialisation::general())
+}
+
+/// [`translate`] for sampler states known in advance: each sampler carries
+/// only the emulation code `spec` names for it.
+pub fn translate_specialised(
+    shader: &Shader,
+    rules: FloatRules,
+    entry: Entry,
+    spec: &Specialisation,
+) -> Result<Translation, TranslateError> {
     let mut module = naga::Module::default();
     let mut cx = Ctx::new(&mut module, shader)?;
-    cx.border = texture::add_border_function(&mut module, shader, &cx.t);
+    cx.spec = spec.clone();
+    cx.border = texture::add_border_function(&mut module, shader, &cx.t, spec);
     let functions = lower_functions(&mut module, &cx, shader, rules)?;
     let main = *functions
         .get(&MAIN)

@@ -55,6 +55,8 @@ pub(super) struct Ctx {
     pub textures: BTreeMap<u32, Tex>,
     /// `ps30_border`, when a 2D or volume sampler may need it.
     pub border: Option<Handle<naga::Function>>,
+    /// The emulation code each sampler carries (set by `core::translate`).
+    pub spec: super::Specialisation,
     pub float_defs: BTreeMap<u32, Handle<Constant>>,
     /// Definitions holding ±∞ or NaN, as bits: read as a bitcast.
     pub float_def_bits: BTreeMap<u32, [u32; 4]>,
@@ -328,6 +330,7 @@ impl Ctx {
             textures,
             // Added by `core::translate` with `texture::add_border_function`.
             border: None,
+            spec: super::Specialisation::general(),
             float_defs,
             float_def_bits,
             int_defs,

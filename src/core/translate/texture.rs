@@ -21,9 +21,15 @@
 //! outside, and `ps30_border` adds `border · (1 − w)`, w the weight of the
 //! taps inside the texture on the marked axes (1 or 0 for point sampling;
 //! the bilinear weights on level 0 for linear).
+//!
+//! Each piece is emitted only where the sampler's [`SamplerSpec`] asks for
+//! it (`specialise.rs`): without `lod` the levels come unbiased (`texld` an
+//! implicit sample, `texldd` its gradients unscaled), without `mirror_once`
+//! or `border` the coordinate and the value go untouched.
 
 use super::builder::Expr;
 use super::lower::Lower;
+use super::specialise::{SamplerSpec, Specialisation};
 use super::TranslateError;
 use crate::core::ir::Instruction;
 use crate::core::isa::{Opcode, SamplerType};
@@ -70,36 +76,11 @@ impl Lower<'_> {
             a
         };
         let mut coord = self.first(coord, dims);
-        if tex.ty != SamplerType::Cube {
+        let spec = self.cx.spec.sampler(k);
+        if tex.ty != SamplerType::Cube && spec.mirror_once {
             coord = self.mirror_once(k, coord, dims);
         }
-        let lod = self.state_member(k, LOD);
-        let level = match ins.op {
-            Opcode::TexLdL => {
-                let (w, bias) = (self.comp(a, 3), self.comp(lod, 1));
-                SampleLevel::Exact(self.fb.binary(B::Add, w, bias))
-            }
-            Opcode::TexLdB => {
-                let (w, bias) = (self.comp(a, 3), self.comp(lod, 0));
-                SampleLevel::Bias(self.fb.binary(B::Add, w, bias))
-            }
-            Opcode::TexLdD => {
-                let scale = self.comp(lod, 2);
-                let (gx, gy) = (self.src(ins, 2)?, self.src(ins, 3)?);
-                let (gx, gy) = (self.first(gx, dims), self.first(gy, dims));
-                let size = if dims == 2 {
-                    VectorSize::Bi
-                } else {
-                    VectorSize::Tri
-                };
-                let scale = self.fb.splat(scale, size);
-                SampleLevel::Gradient {
-                    x: self.fb.binary(B::Multiply, gx, scale),
-                    y: self.fb.binary(B::Multiply, gy, scale),
-                }
-            }
-            _ => SampleLevel::Bias(self.comp(lod, 0)),
-        };
+        let level = self.level(ins, k, a, dims, spec)?;
         let image = self.cx.var(&mut self.fb, tex.image);
         let sampler = self.cx.var(&mut self.fb, tex.sampler);
         let mut value = self.fb.add(Expression::ImageSample {
@@ -113,7 +94,7 @@ impl Lower<'_> {
             depth_ref: None,
             clamp_to_edge: false,
         });
-        if tex.ty != SamplerType::Cube {
+        if tex.ty != SamplerType::Cube && spec.border {
             value = self.border(k, value, coord, dims, image);
         }
         if s.swizzle != crate::core::ir::Swizzle::IDENTITY {
@@ -131,6 +112,61 @@ impl Lower<'_> {
             });
         }
         self.write(ins, value, 0b1111)
+    }
+
+    /// The sample's level of detail: the instruction's, with the sampler's
+    /// bias from its record where `spec.lod` asks for it.
+    fn level(
+        &mut self,
+        ins: &Instruction,
+        k: u32,
+        a: Expr,
+        dims: u32,
+        spec: SamplerSpec,
+    ) -> Result<SampleLevel, TranslateError> {
+        let lod = spec.lod.then(|| self.state_member(k, LOD));
+        // Adds component `c` of the record's `lod` to `v`, where read.
+        let biased = |l: &mut Self, v: Expr, c: u32| match lod {
+            Some(lod) => {
+                let bias = l.comp(lod, c);
+                l.fb.binary(B::Add, v, bias)
+            }
+            None => v,
+        };
+        Ok(match ins.op {
+            Opcode::TexLdL => {
+                let w = self.comp(a, 3);
+                SampleLevel::Exact(biased(self, w, 1))
+            }
+            Opcode::TexLdB => {
+                let w = self.comp(a, 3);
+                SampleLevel::Bias(biased(self, w, 0))
+            }
+            Opcode::TexLdD => {
+                let (gx, gy) = (self.src(ins, 2)?, self.src(ins, 3)?);
+                let (gx, gy) = (self.first(gx, dims), self.first(gy, dims));
+                match lod {
+                    Some(lod) => {
+                        let scale = self.comp(lod, 2);
+                        let size = if dims == 2 {
+                            VectorSize::Bi
+                        } else {
+                            VectorSize::Tri
+                        };
+                        let scale = self.fb.splat(scale, size);
+                        SampleLevel::Gradient {
+                            x: self.fb.binary(B::Multiply, gx, scale),
+                            y: self.fb.binary(B::Multiply, gy, scale),
+                        }
+                    }
+                    None => SampleLevel::Gradient { x: gx, y: gy },
+                }
+            }
+            _ => match lod {
+                Some(lod) => SampleLevel::Bias(self.comp(lod, 0)),
+                None => SampleLevel::Auto,
+            },
+        })
     }
 
     /// MIRRORONCE on the marked axes: |coordinate|.
@@ -191,17 +227,18 @@ impl Lower<'_> {
 }
 
 /// Adds `ps30_border` to the module when a 2D or volume sampler may need
-/// it (a cube map never samples its border).
+/// it (a cube map never samples its border; `spec` may rule it out).
 pub(super) fn add_border_function(
     m: &mut naga::Module,
     shader: &crate::core::ir::Shader,
     t: &super::module::Types,
+    spec: &Specialisation,
 ) -> Option<naga::Handle<naga::Function>> {
     let needed = shader
         .program()
         .samplers
         .iter()
-        .any(|d| d.ty != SamplerType::Cube);
+        .any(|d| d.ty != SamplerType::Cube && spec.sampler(d.index).border);
     needed.then(|| {
         m.functions
             .append(border_function(t), naga::Span::UNDEFINED)

@@ -88,7 +88,8 @@ pub struct Settings {
     pub threads: Option<usize>,
     /// Rows per draw (the image is drawn in bands of this many rows, for
     /// progress and bounded memory; results do not depend on it). 0 picks
-    /// about 256 K pixels per band.
+    /// about 256 K pixels per band on the emulator, the device's
+    /// [`Backend::band_rows`](crate::jobs::backend::Backend::band_rows) on a GPU.
     pub band_rows: u32,
     /// The tone-mapping shader: [`TONEMAP_REINHARD`](crate::jobs::bundled::TONEMAP_REINHARD) by default, or any shader with
     /// the same inputs (v0, s0, s1, c0–c2), which is then checked against
@@ -922,7 +923,9 @@ pub fn emulate(
     };
     let (w, h) = (image.width, image.height);
     let band_rows = match settings.band_rows {
-        0 => ((1u32 << 18) / w.max(1)).max(2),
+        0 => settings
+            .backend
+            .band_rows(w, ((1u32 << 18) / w.max(1)).max(2)),
         n => n,
     };
     let mut executed: Option<Range> = None;
