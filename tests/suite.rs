@@ -17,6 +17,7 @@ mod cli_gpu;
 mod cli_ux;
 mod conformance;
 mod corpus;
+mod corpus_mode;
 mod cost;
 mod damaged_inputs;
 mod gen;
