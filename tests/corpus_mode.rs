@@ -70,6 +70,10 @@ fn json_lines_end_with_the_summary() {
     assert_eq!(values.len(), 5);
     assert_eq!(values[0]["status"], "accepted");
     assert_eq!(values[0]["slots"], 1);
+    assert_eq!(
+        values[0]["executed"],
+        serde_json::json!({"min": 1, "max": 1})
+    );
     assert_eq!(values[2]["code"], "X2005");
     let s = &values[4]["summary"];
     assert_eq!(

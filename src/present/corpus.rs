@@ -17,10 +17,7 @@ pub fn line(r: &FileResult) -> String {
     let mut facts: Vec<String> = r
         .facts
         .iter()
-        .map(|(k, v)| match v {
-            serde_json::Value::String(s) => format!("{k} {s}"),
-            other => format!("{k} {other}"),
-        })
+        .map(|(k, v)| format!("{k} {}", fact(v)))
         .collect();
     if !r.over.is_empty() {
         facts.push(format!("over {}", r.over.join(", ")));
@@ -33,6 +30,23 @@ pub fn line(r: &FileResult) -> String {
         _ => facts.join(", "),
     };
     format!("{status:<7} {}  {detail}\n", r.path)
+}
+
+/// A fact's value as text: a string as it is, a number with thousands
+/// separators, a range `{"min", "max"}` as `n` or `min–max`.
+fn fact(v: &serde_json::Value) -> String {
+    let n = |v: &serde_json::Value| v.as_u64().map(thousands);
+    match v {
+        serde_json::Value::String(s) => s.clone(),
+        serde_json::Value::Object(o) => {
+            match (o.get("min").and_then(n), o.get("max").and_then(n)) {
+                (Some(a), Some(b)) if a == b => a,
+                (Some(a), Some(b)) => format!("{a}–{b}"),
+                _ => v.to_string(),
+            }
+        }
+        other => n(other).unwrap_or_else(|| other.to_string()),
+    }
 }
 
 /// One file as one line of JSON.
