@@ -208,6 +208,13 @@ fn strip_location<'a>(path: &str, message: &'a str) -> &'a str {
     }
 }
 
+/// How many distinct errors the summary counts apart; the rest are counted
+/// as [`OTHERS`].
+pub const MAX_DISTINCT: usize = 10_000;
+
+/// What errors past [`MAX_DISTINCT`] kinds are counted as.
+pub const OTHERS: &str = "(other errors)";
+
 /// How many diagnostics the summary lists.
 pub const TOP_DIAGNOSTICS: usize = 5;
 
@@ -230,8 +237,8 @@ pub struct Summary {
     /// The most frequent errors of refused files, most frequent first
     /// (ties by text), with their counts; filled by [`Summary::finish`].
     pub most_frequent: Vec<(String, u64)>,
-    /// Every error's count, while the run goes on (distinct messages only:
-    /// bounded by the kinds of error, not by the files).
+    /// Every error's count, while the run goes on (distinct messages only,
+    /// at most [`MAX_DISTINCT`] of them: bounded, whatever the files).
     #[serde(skip)]
     counts: HashMap<String, u64>,
 }
@@ -253,7 +260,14 @@ impl Summary {
                 let code = r.code.clone().unwrap_or_else(|| "none".into());
                 *self.refused_by_code.entry(code).or_default() += 1;
                 for e in &r.errors {
-                    *self.counts.entry(e.clone()).or_default() += 1;
+                    // Past MAX_DISTINCT kinds, new ones are counted together,
+                    // so that memory does not grow with the corpus.
+                    let key = if self.counts.len() < MAX_DISTINCT || self.counts.contains_key(e) {
+                        e.clone()
+                    } else {
+                        OTHERS.to_string()
+                    };
+                    *self.counts.entry(key).or_default() += 1;
                 }
             }
         }
