@@ -44,6 +44,7 @@ fn main() -> ExitCode {
     match outcome {
         Ok(Outcome::Ok) => ExitCode::SUCCESS,
         Ok(Outcome::Problem) => ExitCode::from(1),
+        Ok(Outcome::Refused) => ExitCode::from(2),
         Err(BadInput(msg)) => {
             cli::io::eprint(&format!("error: {msg}\n"));
             ExitCode::from(2)

@@ -207,3 +207,41 @@ fn a_gpu_draw_is_held_to_the_per_pixel_cap() {
         assert!(err.contains("--max-executed-per-pixel"), "{backend}: {err}");
     }
 }
+
+/// A passing `--backend gpu` run prints no "error:" line on a machine
+/// without a login session (no XDG_RUNTIME_DIR): the driver's Wayland probe
+/// finds the private runtime directory ps30 sets (`core/gpu/runtime_dir.rs`).
+#[test]
+fn a_gpu_run_without_a_session_prints_no_error() {
+    if gpu_device::gpu("a_gpu_run_without_a_session_prints_no_error").is_none() {
+        return;
+    }
+    let out = Command::new(env!("CARGO_BIN_EXE_ps30"))
+        .args([
+            "run",
+            "corrected:loop",
+            "--image",
+            "assets/hdr/forest.hdr",
+            "--target",
+            "8x10",
+            "--int",
+            "i1=128",
+            "--int",
+            "i2=52",
+            "--const",
+            "c0=0,0,0,0",
+            "--const",
+            "c1=0.0009765625,0.001953125,0,1",
+            "--const",
+            "c3=0.27,0.67,0.06,0.01",
+            "--backend",
+            "gpu",
+        ])
+        .current_dir(repo())
+        .env_remove("XDG_RUNTIME_DIR")
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    assert!(!stderr.contains("error"), "{stderr}");
+}

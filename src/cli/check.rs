@@ -1,12 +1,14 @@
 //! `ps30 check`: slots and executed instructions against the limits.
 
 use super::args::{ConstantArgs, InputArgs, LimitArgs, SlotsArg, SourceArgs};
-use super::io::{audit, load_shader, print_json, say};
+use super::corpus::{self, refused, source_errors, CorpusArgs, Done};
+use super::io::{audit, load_shader, print_json, say, shader_file};
 use super::ui::Ui;
-use super::Outcome;
+use super::{BadInput, Outcome};
 use ps30::core::bytecode::{self, write::to_bytes};
 use ps30::core::cost::{self, Profile, Verdict};
 use ps30::core::load::{self, Loaded};
+use ps30::jobs::corpus::{is_corpus, Entry, FileResult, Status};
 use ps30::present::check::{check_json, check_text, check_text_short};
 use ps30::present::constants::{table_json, table_text};
 use serde_json::Value;
@@ -14,9 +16,13 @@ use serde_json::Value;
 #[derive(clap::Args)]
 pub struct Args {
     /// The shader: a file (assembly or ps_3_0 bytecode), `-` for standard input, or a
-    /// bundled name such as article:loop (`ps30 shaders` lists them).
-    #[arg(value_name = "SHADER")]
-    shader: String,
+    /// bundled name such as article:loop (`ps30 shaders` lists them). Several, or a
+    /// directory (walked recursively for .psh, .asm, .dis, .fxo, .cso and .pso files):
+    /// corpus mode, one line per file and a summary.
+    #[arg(value_name = "SHADER", required = true, num_args = 1..)]
+    shaders: Vec<String>,
+    #[command(flatten)]
+    corpus: CorpusArgs,
     #[command(flatten)]
     source: SourceArgs,
     #[command(flatten)]
@@ -36,15 +42,16 @@ pub struct Args {
 }
 
 pub fn run(args: Args, ui: &Ui) -> super::Result {
-    let loaded = load_shader(ui, &args.shader, &args.source, &args.input)?;
+    if is_corpus(&args.shaders) {
+        return corpus::run(ui, &args.shaders, &args.corpus, args.json, None, |e| {
+            check_one(&args, e)
+        });
+    }
+    let loaded = load_shader(ui, &args.shaders[0], &args.source, &args.input)?;
     let resolved = args.constants.resolve(loaded.constants.as_ref())?;
     let found = audit(ui, &loaded, &resolved.given(&[], &args.source), false)?;
     let env = resolved.environment();
-    let profile = Profile {
-        max_slots: args.limits.max_slots,
-        max_executed: args.limits.max_executed,
-        ..Profile::ps_3_0().counting(args.slots.into())
-    };
+    let profile = profile(&args);
     let a = cost::analyse(&loaded.shader, &loaded.file, &env, &profile)?;
     let name = &loaded.file.name;
     if args.json {
@@ -71,6 +78,59 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         say(ui, &text)?;
     }
     Ok(Outcome::from_ok(a.verdict == Verdict::Within))
+}
+
+/// The limits and slot table of the command line.
+fn profile(args: &Args) -> Profile {
+    Profile {
+        max_slots: args.limits.max_slots,
+        max_executed: args.limits.max_executed,
+        ..Profile::ps_3_0().counting(args.slots.into())
+    }
+}
+
+/// One file of a corpus: loaded, counted, and held against the limits
+/// (nothing printed; the constants given apply to every file).
+fn check_one(args: &Args, entry: &Entry) -> Done {
+    let options = args.source.options();
+    let file = match shader_file(&entry.spec, &options, args.input.max_input_bytes) {
+        Ok(f) => f,
+        Err(BadInput(m)) => return refused(entry, m),
+    };
+    let loaded = match load::load(file, &options) {
+        Ok(l) => l,
+        Err(e) => return (FileResult::refused(&entry.spec, source_errors(&e)), None),
+    };
+    let analysis = args
+        .constants
+        .resolve(loaded.constants.as_ref())
+        .map_err(|BadInput(m)| m)
+        .and_then(|r| {
+            let env = r.environment();
+            cost::analyse(&loaded.shader, &loaded.file, &env, &profile(args))
+                .map_err(|e| e.to_string())
+        });
+    let a = match analysis {
+        Ok(a) => a,
+        Err(m) => return refused(entry, format!("{}: {m}", entry.spec)),
+    };
+    let mut facts = serde_json::Map::new();
+    facts.insert("slots".into(), a.slots.into());
+    facts.insert(
+        "executed".into(),
+        serde_json::json!({"min": a.executed.min, "max": a.executed.max}),
+    );
+    let mut r = FileResult::accepted(&entry.spec, facts);
+    if a.verdict != Verdict::Within {
+        r.status = Status::Over;
+        if a.slots > a.profile.max_slots {
+            r.over.push("slots".into());
+        }
+        if a.executed.max > a.profile.max_executed {
+            r.over.push("executed".into());
+        }
+    }
+    (r, None)
 }
 
 /// The CRC-32 `check --json` names the shader by: of a compiled input's

@@ -232,7 +232,11 @@ fn one_draw(args: &Args, ui: &Ui, gpu: &Arc<Gpu>, img: Option<&image::HdrImage>)
 
 fn run_all(args: &Args, ui: &Ui) -> super::Result {
     let path = args.reports.join("gpu-crosscheck.md");
-    super::io::check_output_path(&path, &[])?;
+    // The folder is created when missing, as every --reports DIR is.
+    super::io::check_output_dir(&args.reports)?;
+    if args.reports.is_dir() {
+        super::io::check_output_path(&path, &[])?;
+    }
     let gpu = Arc::new(Gpu::open()?);
     // The device is printed first, on stdout, so a log of the run says
     // where it ran.
@@ -247,8 +251,9 @@ fn run_all(args: &Args, ui: &Ui) -> super::Result {
         })?
     };
     let page = ps30::present::report::gpu::page(&result);
-    ps30::core::output::write_bytes(&path, page.as_bytes())
-        .map_err(|e| BadInput(format!("{}: {e}", path.display())))?;
+    let mut batch = ps30::core::output::Batch::new(&args.reports)?;
+    batch.write_bytes(&path, page.as_bytes())?;
+    batch.commit()?;
     if args.json {
         print_json(&result)?;
     } else {

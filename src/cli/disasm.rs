@@ -4,17 +4,31 @@
 //! comment block and turns back into the same tokens, comments included.
 
 use super::args::{InputArgs, SourceArgs};
+use super::corpus::{self, refused, source_errors, CorpusArgs, Done, Outputs};
 use super::io::{exists, print, print_json, read_input, source_error};
 use super::ui::Ui;
 use super::{BadInput, Outcome};
 use ps30::core::bytecode::{self, listing::listing, microsoft, read::read, write::to_bytes};
+use ps30::core::bytecode::{ItemKind, Module};
+use ps30::core::diag::SourceError;
 use ps30::core::load;
+use ps30::jobs::corpus::{is_corpus, Entry, FileResult};
 use ps30::present::disasm::disasm_json;
+use std::path::PathBuf;
 
 #[derive(clap::Args)]
 pub struct Args {
     /// Shader: ps_3_0 bytecode, or assembly (assembled first); `-` reads standard input.
-    file: String,
+    /// Several, or a directory (walked recursively for .psh, .asm, .dis, .fxo, .cso and
+    /// .pso files): corpus mode, one line per file and a summary.
+    #[arg(required = true, num_args = 1..)]
+    files: Vec<String>,
+    #[command(flatten)]
+    corpus: CorpusArgs,
+    /// Corpus mode: write each listing into this directory (created if missing), as its
+    /// path below the argument it was found in, .dis appended to its name.
+    #[arg(short, long, value_name = "DIR")]
+    output: Option<PathBuf>,
     #[command(flatten)]
     source: SourceArgs,
     #[command(flatten)]
@@ -29,22 +43,97 @@ pub struct Args {
 }
 
 pub fn run(args: Args, ui: &Ui) -> super::Result {
+    if is_corpus(&args.files) {
+        let outputs = args.output.as_deref().map(|dir| Outputs {
+            dir,
+            extension: "dis",
+        });
+        let write = outputs.is_some();
+        return corpus::run(ui, &args.files, &args.corpus, args.json, outputs, |e| {
+            disasm_one(&args, e, write)
+        });
+    }
+    if args.output.is_some() {
+        return Err(BadInput(
+            "-o DIR is for several shaders or a directory; one listing goes to standard output"
+                .into(),
+        ));
+    }
+    let (name, module, len) = match module_of(&args, &args.files[0]) {
+        Ok(m) => m,
+        Err(Failed::Source(e)) => return Err(source_error(ui, &e)),
+        Err(Failed::Bad(m)) => return Err(BadInput(m)),
+    };
+    if args.json {
+        print_json(&disasm_json(&name, &module, len))?;
+    } else {
+        print(&text(&args, &module))?;
+    }
+    Ok(Outcome::Ok)
+}
+
+/// Why a shader has no listing.
+enum Failed {
+    /// It is assembly that does not assemble.
+    Source(Box<SourceError>),
+    /// It cannot be read, or is not bytecode ps30 reads.
+    Bad(String),
+}
+
+/// The listing the flags ask for.
+fn text(args: &Args, module: &Module) -> String {
+    if args.annotated {
+        listing(module).text
+    } else {
+        microsoft::listing(module)
+    }
+}
+
+/// One file of a corpus disassembled (nothing printed): its size and
+/// instruction count, and its listing when it is to be written.
+fn disasm_one(args: &Args, entry: &Entry, write: bool) -> Done {
+    match module_of(args, &entry.spec) {
+        Ok((_, module, len)) => {
+            let mut facts = serde_json::Map::new();
+            facts.insert("bytes".into(), len.into());
+            let instructions = module
+                .items
+                .iter()
+                .filter(|i| matches!(i.kind, ItemKind::Instr(_)))
+                .count();
+            facts.insert("instructions".into(), instructions.into());
+            (
+                FileResult::accepted(&entry.spec, facts),
+                write.then(|| text(args, &module).into_bytes()),
+            )
+        }
+        Err(Failed::Source(e)) => (FileResult::refused(&entry.spec, source_errors(&e)), None),
+        Err(Failed::Bad(m)) => refused(entry, m),
+    }
+}
+
+/// A shader argument as a bytecode module: its name, the module, and the
+/// bytecode's length.
+fn module_of(args: &Args, spec: &str) -> Result<(String, Module, usize), Failed> {
     let options = args.source.options();
-    let (name, mut bytes) = match ps30::jobs::bundled::listing(&args.file) {
+    let bad = |BadInput(m)| Failed::Bad(m);
+    let (name, mut bytes) = match ps30::jobs::bundled::listing(spec) {
         Some((name, text)) => (name.to_string(), text.as_bytes().to_vec()),
         None => {
-            exists(&args.file, std::path::Path::new(&args.file))?;
-            read_input(&args.file, args.input.max_input_bytes)?
+            exists(spec, std::path::Path::new(spec)).map_err(bad)?;
+            read_input(spec, args.input.max_input_bytes).map_err(bad)?
         }
     };
     if !bytecode::is_bytecode(&bytes) {
         // Assembly: what ps30 asm would write.
-        let file = load::source_file(&name, bytes, &options)?;
-        let (_, tokens) = load::assemble(file, &options).map_err(|e| source_error(ui, &e))?;
+        let file =
+            load::source_file(&name, bytes, &options).map_err(|e| Failed::Bad(e.to_string()))?;
+        let (_, tokens) =
+            load::assemble(file, &options).map_err(|e| Failed::Source(Box::new(e)))?;
         bytes = to_bytes(&tokens);
     }
     let module = read(&bytes, options.max_expanded).map_err(|error| {
-        BadInput(
+        Failed::Bad(
             load::NotASource::Bytecode {
                 name: name.clone(),
                 error,
@@ -52,12 +141,5 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
             .to_string(),
         )
     })?;
-    if args.json {
-        print_json(&disasm_json(&name, &module, bytes.len()))?;
-    } else if args.annotated {
-        print(&listing(&module).text)?;
-    } else {
-        print(&microsoft::listing(&module))?;
-    }
-    Ok(Outcome::Ok)
+    Ok((name, module, bytes.len()))
 }

@@ -15,6 +15,7 @@ pub mod asm;
 pub mod check;
 pub mod compare;
 pub mod completions;
+pub mod corpus;
 pub mod disasm;
 pub mod expand;
 pub mod io;
@@ -187,6 +188,9 @@ pub enum Outcome {
     Ok,
     /// The check found a problem (exit 1).
     Problem,
+    /// Some input was refused and its reasons are already printed (exit 2,
+    /// corpus mode's mixed results).
+    Refused,
 }
 
 impl Outcome {

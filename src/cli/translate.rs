@@ -2,21 +2,32 @@
 //! naga, with a header naming the source and the binding layout.
 
 use super::args::{FloatRulesArg, InputArgs, SourceArgs};
+use super::corpus::{self, refused, source_errors, CorpusArgs, Done, Outputs};
+use super::io::shader_file;
 use super::io::{eprint, load_shader, print, print_json};
 use super::ui::Ui;
 use super::{BadInput, Outcome};
+use ps30::core::load;
 use ps30::core::translate::{self, header, Entry, Target, Written};
+use ps30::jobs::corpus::{is_corpus, FileResult};
 use std::io::IsTerminal;
 use std::path::PathBuf;
 
 #[derive(clap::Args)]
 pub struct Args {
-    /// Shader file or bundled name (see `ps30 luminance --help`).
-    shader: String,
+    /// Shader file or bundled name (see `ps30 luminance --help`). Several, or a
+    /// directory (walked recursively for .psh, .asm, .dis, .fxo, .cso and .pso files):
+    /// corpus mode, one line per file and a summary.
+    #[arg(required = true, num_args = 1..)]
+    shaders: Vec<String>,
+    #[command(flatten)]
+    corpus: CorpusArgs,
     /// Target language.
     #[arg(long, value_enum)]
     to: TargetArg,
-    /// Write to this file (atomically) instead of stdout.
+    /// Write to this file (atomically) instead of stdout. In corpus mode a directory
+    /// (created if missing): each translation as its file's path below the argument it
+    /// was found in, the target's extension (.wgsl, .spv, .glsl, .hlsl, .metal) appended.
     #[arg(short, long)]
     output: Option<PathBuf>,
     /// Special values: d3d9 (Microsoft's pages, the default), ieee, d3d9-zero-mul, or hardware.
@@ -53,6 +64,66 @@ impl From<TargetArg> for Target {
 }
 
 pub fn run(args: Args, ui: &Ui) -> super::Result {
+    if is_corpus(&args.shaders) {
+        let target: Target = args.to.into();
+        let outputs = args.output.as_deref().map(|dir| Outputs {
+            dir,
+            extension: extension(target),
+        });
+        let write = outputs.is_some();
+        return corpus::run(ui, &args.shaders, &args.corpus, args.json, outputs, |e| {
+            translate_one(&args, e, write)
+        });
+    }
+    single(args, ui)
+}
+
+/// The extension of a translation's file in corpus mode.
+fn extension(target: Target) -> &'static str {
+    match target {
+        Target::Wgsl => "wgsl",
+        Target::SpirV => "spv",
+        Target::Glsl => "glsl",
+        Target::Hlsl => "hlsl",
+        Target::Msl => "metal",
+    }
+}
+
+/// One file of a corpus translated (nothing printed): the translation's
+/// size, and its bytes when they are to be written.
+fn translate_one(args: &Args, entry: &ps30::jobs::corpus::Entry, write: bool) -> Done {
+    let options = args.source.options();
+    let file = match shader_file(&entry.spec, &options, args.input.max_input_bytes) {
+        Ok(f) => f,
+        Err(BadInput(m)) => return refused(entry, m),
+    };
+    let loaded = match load::load(file, &options) {
+        Ok(l) => l,
+        Err(e) => return (FileResult::refused(&entry.spec, source_errors(&e)), None),
+    };
+    let target: Target = args.to.into();
+    let written = translate::translate(&loaded.shader, args.float_rules.into(), Entry::Application)
+        .map_err(|e| e.to_string())
+        .and_then(|t| {
+            let head = header::comment(&loaded.file.name, &t, target);
+            translate::write(&t, target, &head).map_err(|e| e.to_string())
+        });
+    let bytes = match written {
+        Ok(Written::Text(t)) => t.into_bytes(),
+        Ok(Written::Binary(b)) => b,
+        Err(m) => return refused(entry, format!("{}: {m}", entry.spec)),
+    };
+    let mut facts = serde_json::Map::new();
+    facts.insert("target".into(), target.name().into());
+    facts.insert("bytes".into(), bytes.len().into());
+    (
+        FileResult::accepted(&entry.spec, facts),
+        write.then_some(bytes),
+    )
+}
+
+/// One shader translated, to standard output or one file.
+fn single(args: Args, ui: &Ui) -> super::Result {
     let target: Target = args.to.into();
     if target == Target::SpirV
         && args.output.is_none()
@@ -64,9 +135,9 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         ));
     }
     if let Some(out) = &args.output {
-        super::io::check_output_path(out, &[std::path::Path::new(&args.shader)])?;
+        super::io::check_output_path(out, &[std::path::Path::new(&args.shaders[0])])?;
     }
-    let loaded = load_shader(ui, &args.shader, &args.source, &args.input)?;
+    let loaded = load_shader(ui, &args.shaders[0], &args.source, &args.input)?;
     let translation =
         translate::translate(&loaded.shader, args.float_rules.into(), Entry::Application)
             .map_err(|e| BadInput(format!("{}: {e}", loaded.file.name)))?;

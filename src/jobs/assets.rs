@@ -5,6 +5,12 @@
 //! Commands that take an image path (`luminance`, `tonemap`, `run`, …) still
 //! read the file the user names; these copies are the same bytes as the files
 //! in `assets/hdr/` of the source tree the binary was built from.
+//!
+//! One image is stored smaller than its file: `sunset.pfm` (6.3 MB of
+//! float32) is compiled in as `sunset.pfm.planes.deflate`, its pixel bytes
+//! regrouped into four planes (byte 0 of every float, then byte 1, …) and
+//! deflated (2.5 MB), and rebuilt the first time it is asked for. A test
+//! holds the rebuilt bytes equal to the file's.
 
 use crate::core::image::{self, HdrImage, ImageError, ImageLimits};
 use std::path::Path;
@@ -13,7 +19,8 @@ use std::path::Path;
 /// `assets/hdr/NAME` in output, as in the repository.
 pub const DIR: &str = "assets/hdr";
 
-/// Each bundled image's file name and bytes.
+/// Each bundled image's file name and bytes (`sunset.pfm`'s are empty here:
+/// [`sunset_pfm`] rebuilds them).
 const FILES: [(&str, &[u8]); 7] = [
     ("city.exr", include_bytes!("../../assets/hdr/city.exr")),
     (
@@ -27,8 +34,30 @@ const FILES: [(&str, &[u8]); 7] = [
     ("forest.exr", include_bytes!("../../assets/hdr/forest.exr")),
     ("forest.hdr", include_bytes!("../../assets/hdr/forest.hdr")),
     ("sunset.exr", include_bytes!("../../assets/hdr/sunset.exr")),
-    ("sunset.pfm", include_bytes!("../../assets/hdr/sunset.pfm")),
+    ("sunset.pfm", &[]),
 ];
+
+/// `sunset.pfm`'s header; its pixels follow as four deflated byte planes.
+const SUNSET_PFM_HEADER: &[u8] = b"PF\n1024 512\n-1\n";
+
+/// `sunset.pfm`'s pixel bytes as byte planes, deflated (see the module docs;
+/// made by `assets/hdr/README.md`'s command).
+const SUNSET_PFM_PLANES: &[u8] = include_bytes!("../../assets/hdr/sunset.pfm.planes.deflate");
+
+/// The bytes of `sunset.pfm`, rebuilt once from its byte planes.
+fn sunset_pfm() -> &'static [u8] {
+    static BYTES: std::sync::OnceLock<Vec<u8>> = std::sync::OnceLock::new();
+    BYTES.get_or_init(|| {
+        // The planes are compiled in and checked by a test: they inflate.
+        let planes = miniz_oxide::inflate::decompress_to_vec(SUNSET_PFM_PLANES)
+            .expect("the compiled-in planes of sunset.pfm inflate");
+        let n = planes.len() / 4;
+        let mut out = Vec::with_capacity(SUNSET_PFM_HEADER.len() + planes.len());
+        out.extend_from_slice(SUNSET_PFM_HEADER);
+        out.extend((0..planes.len()).map(|i| planes[(i % 4) * n + i / 4]));
+        out
+    })
+}
 
 /// The bundled images' file names, in the order reports show them.
 pub const IMAGES: [&str; 7] = {
@@ -47,7 +76,10 @@ pub fn bytes(name: &str) -> Option<&'static [u8]> {
     let file = name
         .strip_prefix(DIR)
         .map_or(name, |n| n.trim_start_matches('/'));
-    FILES.iter().find(|(n, _)| *n == file).map(|(_, b)| *b)
+    match file {
+        "sunset.pfm" => Some(sunset_pfm()),
+        _ => FILES.iter().find(|(n, _)| *n == file).map(|(_, b)| *b),
+    }
 }
 
 /// The bundled image `name` (`forest.exr` or `assets/hdr/forest.exr`),

@@ -31,6 +31,7 @@ pub mod blocks;
 pub mod bundled;
 pub mod compare;
 pub mod conformance;
+pub mod corpus;
 pub mod gen;
 pub mod luminance;
 pub mod outputs;

@@ -32,6 +32,7 @@
 //! (the loader is opened at run time).
 
 mod draw;
+mod runtime_dir;
 mod sampler;
 
 pub use draw::{prepare, prepare_with, run, GpuOutput, Prepared, TargetKind};
@@ -137,6 +138,7 @@ impl Gpu {
 
     /// `cpu`: wgpu's fallback adapter, a CPU device, is asked for.
     fn open_adapter(cpu: bool) -> Result<Gpu, GpuError> {
+        runtime_dir::ensure();
         let instance = wgpu::Instance::new(wgpu::InstanceDescriptor {
             backends: wgpu::Backends::VULKAN,
             flags: wgpu::InstanceFlags::empty(),
