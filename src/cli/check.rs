@@ -1,8 +1,8 @@
 //! `ps30 check`: slots and executed instructions against the limits.
 
 use super::args::{ConstantArgs, InputArgs, LimitArgs, SlotsArg, SourceArgs};
-use super::corpus::{self, refused, source_errors, CorpusArgs, Done};
-use super::io::{audit, load_shader, print_json, say, shader_file};
+use super::corpus::{self, refused, CorpusArgs, Done};
+use super::io::{audit, load_shader, print_json, say};
 use super::ui::Ui;
 use super::{BadInput, Outcome};
 use ps30::core::bytecode::{self, write::to_bytes};
@@ -93,13 +93,9 @@ fn profile(args: &Args) -> Profile {
 /// (nothing printed; the constants given apply to every file).
 fn check_one(args: &Args, entry: &Entry) -> Done {
     let options = args.source.options();
-    let file = match shader_file(&entry.spec, &options, args.input.max_input_bytes) {
-        Ok(f) => f,
-        Err(BadInput(m)) => return refused(entry, m),
-    };
-    let loaded = match load::load(file, &options) {
+    let loaded = match corpus::load_entry(entry, &options, args.input.max_input_bytes) {
         Ok(l) => l,
-        Err(e) => return (FileResult::refused(&entry.spec, source_errors(&e)), None),
+        Err(done) => return *done,
     };
     let analysis = args
         .constants

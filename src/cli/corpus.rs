@@ -54,6 +54,20 @@ pub fn source_errors(e: &SourceError) -> Vec<(Option<String>, String)> {
         .collect()
 }
 
+/// One corpus file read and loaded with `options`, or its refusal.
+pub fn load_entry(
+    entry: &Entry,
+    options: &ps30::core::load::Options,
+    max_input_bytes: u64,
+) -> Result<ps30::core::load::Loaded, Box<Done>> {
+    let file = match super::io::shader_file(&entry.spec, options, max_input_bytes) {
+        Ok(f) => f,
+        Err(BadInput(m)) => return Err(Box::new(refused(entry, m))),
+    };
+    ps30::core::load::load(file, options)
+        .map_err(|e| Box::new((FileResult::refused(&entry.spec, source_errors(&e)), None)))
+}
+
 /// A refusal without a diagnostic (unreadable, not a shader).
 pub fn refused(entry: &Entry, message: String) -> Done {
     (

@@ -2,12 +2,10 @@
 //! naga, with a header naming the source and the binding layout.
 
 use super::args::{FloatRulesArg, InputArgs, SourceArgs};
-use super::corpus::{self, refused, source_errors, CorpusArgs, Done, Outputs};
-use super::io::shader_file;
+use super::corpus::{self, refused, CorpusArgs, Done, Outputs};
 use super::io::{eprint, load_shader, print, print_json};
 use super::ui::Ui;
 use super::{BadInput, Outcome};
-use ps30::core::load;
 use ps30::core::translate::{self, header, Entry, Target, Written};
 use ps30::jobs::corpus::{is_corpus, FileResult};
 use std::io::IsTerminal;
@@ -93,13 +91,9 @@ fn extension(target: Target) -> &'static str {
 /// size, and its bytes when they are to be written.
 fn translate_one(args: &Args, entry: &ps30::jobs::corpus::Entry, write: bool) -> Done {
     let options = args.source.options();
-    let file = match shader_file(&entry.spec, &options, args.input.max_input_bytes) {
-        Ok(f) => f,
-        Err(BadInput(m)) => return refused(entry, m),
-    };
-    let loaded = match load::load(file, &options) {
+    let loaded = match corpus::load_entry(entry, &options, args.input.max_input_bytes) {
         Ok(l) => l,
-        Err(e) => return (FileResult::refused(&entry.spec, source_errors(&e)), None),
+        Err(done) => return *done,
     };
     let target: Target = args.to.into();
     let written = translate::translate(&loaded.shader, args.float_rules.into(), Entry::Application)

@@ -310,21 +310,7 @@ pub fn read_inputs(path: &Path, limits: &FileLimits) -> Result<Inputs, FileError
             "an inputs file gives only `constants`, `ints`, `bools` and `samplers`".into(),
         ));
     }
-    let mut r = Resolver {
-        path: path.to_path_buf(),
-        dir: path.parent().unwrap_or(Path::new("")).to_path_buf(),
-        limits: *limits,
-        pixels: 0,
-        list: DrawList {
-            targets: Vec::new(),
-            textures: Vec::new(),
-            shaders: Vec::new(),
-            steps: Vec::new(),
-        },
-        shader_keys: Vec::new(),
-        sources: Vec::new(),
-        warnings: Vec::new(),
-    };
+    let mut r = Resolver::new(path, limits);
     let constants = r.constants("", &step).map_err(|mut e| {
         e.at = e.at.trim_start_matches('.').to_string();
         e
@@ -376,22 +362,7 @@ pub fn parse(text: &str, path: &Path, limits: &FileLimits) -> Result<Loaded, Fil
             .unwrap_or("")
             .to_string(),
     })?;
-    let dir = path.parent().unwrap_or(Path::new("")).to_path_buf();
-    let mut r = Resolver {
-        path: path.to_path_buf(),
-        dir,
-        limits: *limits,
-        pixels: 0,
-        list: DrawList {
-            targets: Vec::new(),
-            textures: Vec::new(),
-            shaders: Vec::new(),
-            steps: Vec::new(),
-        },
-        shader_keys: Vec::new(),
-        sources: Vec::new(),
-        warnings: Vec::new(),
-    };
+    let mut r = Resolver::new(path, limits);
     if file.steps.len() > limits.max_steps {
         return Err(r.err(
             "steps",
@@ -433,6 +404,28 @@ struct Resolver {
     sources: Vec<PathBuf>,
     /// Audit warnings so far.
     warnings: Vec<String>,
+}
+
+impl Resolver {
+    /// A resolver for the file at `path` (names in it are relative to its
+    /// folder), with nothing resolved yet.
+    fn new(path: &Path, limits: &FileLimits) -> Resolver {
+        Resolver {
+            path: path.to_path_buf(),
+            dir: path.parent().unwrap_or(Path::new("")).to_path_buf(),
+            limits: *limits,
+            pixels: 0,
+            list: DrawList {
+                targets: Vec::new(),
+                textures: Vec::new(),
+                shaders: Vec::new(),
+                steps: Vec::new(),
+            },
+            shader_keys: Vec::new(),
+            sources: Vec::new(),
+            warnings: Vec::new(),
+        }
+    }
 }
 
 fn size(s: &str) -> Result<(u32, u32), String> {
