@@ -27,6 +27,9 @@
 #[path = "support/goals.rs"]
 mod goals;
 
+#[path = "support/draws.rs"]
+mod draws;
+
 use criterion::{criterion_group, Criterion};
 use ps30::core::emu::{self, Address, Constants, Draw, Filter, LinearInput, SamplerState};
 use ps30::core::gpu::{self, Gpu, TargetKind};
@@ -65,29 +68,7 @@ fn point(address: Address) -> SamplerState {
 
 /// Pass 1's draw with 125×128 blocks, as `benches/luminance.rs` draws it.
 fn pass1_draw(img: &HdrImage) -> Draw<'_> {
-    let (w, h, bw, bh) = (img.width, img.height, 125, 128);
-    let mut d = Draw::new(w.div_ceil(bw), h.div_ceil(bh));
-    d.inputs.push((
-        0,
-        LinearInput {
-            base: [0.5 / w as f32, 0.5 / h as f32, 0.0, 0.0],
-            ddx: [bw as f32 / w as f32, 0.0, 0.0, 0.0],
-            ddy: [0.0, bh as f32 / h as f32, 0.0, 0.0],
-        },
-    ));
-    d.constants = Constants {
-        float: vec![
-            [0.0; 4],
-            [1.0 / w as f32, 1.0 / h as f32, 0.0, 1.0],
-            [0.0; 4],
-            [0.27, 0.67, 0.06, 0.01],
-        ],
-        int: vec![[0; 4], [bw as i32, 0, 0, 0], [bh as i32, 0, 0, 0]],
-        bool: Vec::new(),
-    };
-    d.samplers
-        .push((0, img.as_texture().into(), point(Address::Border)));
-    d
+    draws::pass1_draw(img, 125, 128, point(Address::Border))
 }
 
 /// The tone map's draw of the whole image, as `ps30 tonemap` sets it up

@@ -47,6 +47,8 @@
 //! here, nearly all of it the commands'). Both are also written to
 //! `<criterion's directory>/courtyard_1280x1024/goals.md`.
 
+#[path = "support/draws.rs"]
+mod draws;
 #[path = "support/goals.rs"]
 mod goals;
 
@@ -131,29 +133,8 @@ fn state() -> SamplerState {
 
 /// Pass 1's draw: an `nx × ny` target, each pixel summing one block.
 fn pass1_draw(img: &HdrImage, bw: u32, bh: u32, record_lod: bool) -> Draw<'_> {
-    let (w, h) = (img.width, img.height);
-    let (nx, ny) = (w.div_ceil(bw), h.div_ceil(bh));
-    let mut d1 = Draw::new(nx, ny);
+    let mut d1 = draws::pass1_draw(img, bw, bh, state());
     d1.record_lod = record_lod;
-    d1.inputs.push((
-        0,
-        LinearInput {
-            base: [0.5 / w as f32, 0.5 / h as f32, 0.0, 0.0],
-            ddx: [bw as f32 / w as f32, 0.0, 0.0, 0.0],
-            ddy: [0.0, bh as f32 / h as f32, 0.0, 0.0],
-        },
-    ));
-    d1.constants = Constants {
-        float: vec![
-            [0.0; 4],
-            [1.0 / w as f32, 1.0 / h as f32, 0.0, 1.0],
-            [0.0; 4],
-            [0.27, 0.67, 0.06, 0.01],
-        ],
-        int: vec![[0; 4], [bw as i32, 0, 0, 0], [bh as i32, 0, 0, 0]],
-        bool: Vec::new(),
-    };
-    d1.samplers.push((0, img.as_texture().into(), state()));
     d1
 }
 
