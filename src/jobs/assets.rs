@@ -6,57 +6,89 @@
 //! read the file the user names; these copies are the same bytes as the files
 //! in `assets/hdr/` of the source tree the binary was built from.
 //!
-//! One image is stored smaller than its file: `sunset.pfm` (6.3 MB of
-//! float32) is compiled in as `sunset.pfm.planes.deflate`, its pixel bytes
-//! regrouped into four planes (byte 0 of every float, then byte 1, …) and
-//! deflated (2.5 MB), and rebuilt the first time it is asked for. A test
-//! holds the rebuilt bytes equal to the file's.
+//! Two images are stored smaller than their files, and rebuilt the first
+//! time they are asked for: `sunset.pfm` (6.3 MB of float32) as
+//! `sunset.pfm.planes.deflate`, its pixel bytes regrouped into four planes
+//! (byte 0 of every float, then byte 1, …) and deflated (2.5 MB), and
+//! `forest.hdr` (1.9 MB of run-length RGBE) deflated as `forest.hdr.deflate`
+//! (1.7 MB). A test holds the rebuilt bytes equal to the files'.
 
 use crate::core::image::{self, HdrImage, ImageError, ImageLimits};
 use std::path::Path;
+use std::sync::OnceLock;
 
 /// The folder of the bundled images in the source tree; images are named
 /// `assets/hdr/NAME` in output, as in the repository.
 pub const DIR: &str = "assets/hdr";
 
-/// Each bundled image's file name and bytes (`sunset.pfm`'s are empty here:
-/// [`sunset_pfm`] rebuilds them).
-const FILES: [(&str, &[u8]); 7] = [
-    ("city.exr", include_bytes!("../../assets/hdr/city.exr")),
+/// How a bundled image's bytes are compiled in.
+enum Stored {
+    /// The file's bytes as they are.
+    Plain(&'static [u8]),
+    /// The file's bytes, deflated (raw deflate, no zlib header).
+    Deflated(&'static [u8]),
+    /// A PFM: its header, then its pixel bytes as four byte planes, deflated.
+    Planes(&'static [u8], &'static [u8]),
+}
+
+/// Each bundled image's file name and how its bytes are stored (made by
+/// `assets/hdr/README.md`'s commands).
+const FILES: [(&str, Stored); 7] = [
+    (
+        "city.exr",
+        Stored::Plain(include_bytes!("../../assets/hdr/city.exr")),
+    ),
     (
         "courtyard.exr",
-        include_bytes!("../../assets/hdr/courtyard.exr"),
+        Stored::Plain(include_bytes!("../../assets/hdr/courtyard.exr")),
     ),
     (
         "courtyard_1280x1024.exr",
-        include_bytes!("../../assets/hdr/courtyard_1280x1024.exr"),
+        Stored::Plain(include_bytes!(
+            "../../assets/hdr/courtyard_1280x1024.exr"
+        )),
     ),
-    ("forest.exr", include_bytes!("../../assets/hdr/forest.exr")),
-    ("forest.hdr", include_bytes!("../../assets/hdr/forest.hdr")),
-    ("sunset.exr", include_bytes!("../../assets/hdr/sunset.exr")),
-    ("sunset.pfm", &[]),
+    (
+        "forest.exr",
+        Stored::Plain(include_bytes!("../../assets/hdr/forest.exr")),
+    ),
+    (
+        "forest.hdr",
+        Stored::Deflated(include_bytes!("../../assets/hdr/forest.hdr.deflate")),
+    ),
+    (
+        "sunset.exr",
+        Stored::Plain(include_bytes!("../../assets/hdr/sunset.exr")),
+    ),
+    (
+        "sunset.pfm",
+        Stored::Planes(
+            b"PF\n1024 512\n-1\n",
+            include_bytes!("../../assets/hdr/sunset.pfm.planes.deflate"),
+        ),
+    ),
 ];
 
-/// `sunset.pfm`'s header; its pixels follow as four deflated byte planes.
-const SUNSET_PFM_HEADER: &[u8] = b"PF\n1024 512\n-1\n";
-
-/// `sunset.pfm`'s pixel bytes as byte planes, deflated (see the module docs;
-/// made by `assets/hdr/README.md`'s command).
-const SUNSET_PFM_PLANES: &[u8] = include_bytes!("../../assets/hdr/sunset.pfm.planes.deflate");
-
-/// The bytes of `sunset.pfm`, rebuilt once from its byte planes.
-fn sunset_pfm() -> &'static [u8] {
-    static BYTES: std::sync::OnceLock<Vec<u8>> = std::sync::OnceLock::new();
-    BYTES.get_or_init(|| {
-        // The planes are compiled in and checked by a test: they inflate.
-        let planes = miniz_oxide::inflate::decompress_to_vec(SUNSET_PFM_PLANES)
-            .expect("the compiled-in planes of sunset.pfm inflate");
-        let n = planes.len() / 4;
-        let mut out = Vec::with_capacity(SUNSET_PFM_HEADER.len() + planes.len());
-        out.extend_from_slice(SUNSET_PFM_HEADER);
-        out.extend((0..planes.len()).map(|i| planes[(i % 4) * n + i / 4]));
-        out
-    })
+/// The bytes of the `i`th bundled image, rebuilt once where they are
+/// stored deflated.
+fn file_bytes(i: usize) -> &'static [u8] {
+    static REBUILT: [OnceLock<Vec<u8>>; 7] = [const { OnceLock::new() }; 7];
+    // The stored bytes are compiled in and checked by a test: they inflate.
+    let inflate = |d: &[u8]| {
+        miniz_oxide::inflate::decompress_to_vec(d).expect("a compiled-in image inflates")
+    };
+    match FILES[i].1 {
+        Stored::Plain(b) => b,
+        Stored::Deflated(d) => REBUILT[i].get_or_init(|| inflate(d)),
+        Stored::Planes(header, d) => REBUILT[i].get_or_init(|| {
+            let planes = inflate(d);
+            let n = planes.len() / 4;
+            let mut out = Vec::with_capacity(header.len() + planes.len());
+            out.extend_from_slice(header);
+            out.extend((0..planes.len()).map(|k| planes[(k % 4) * n + k / 4]));
+            out
+        }),
+    }
 }
 
 /// The bundled images' file names, in the order reports show them.
@@ -76,10 +108,7 @@ pub fn bytes(name: &str) -> Option<&'static [u8]> {
     let file = name
         .strip_prefix(DIR)
         .map_or(name, |n| n.trim_start_matches('/'));
-    match file {
-        "sunset.pfm" => Some(sunset_pfm()),
-        _ => FILES.iter().find(|(n, _)| *n == file).map(|(_, b)| *b),
-    }
+    FILES.iter().position(|(n, _)| *n == file).map(file_bytes)
 }
 
 /// The bundled image `name` (`forest.exr` or `assets/hdr/forest.exr`),
