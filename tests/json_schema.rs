@@ -306,6 +306,76 @@ fn every_command_matches_the_schema() {
     );
 }
 
+/// Runs `ps30 ARGS` (corpus mode) in `dir` and checks every JSON line: one
+/// `corpus_line` per file, then one `corpus_summary`; returns the lines.
+fn check_lines(args: &[&str], dir: &Path, codes: &[i32]) -> Vec<Value> {
+    let o = bin::ps30(args, dir);
+    let code = o.status.code().unwrap();
+    assert!(
+        codes.contains(&code),
+        "{args:?}: exit {code}\n{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let text = String::from_utf8(o.stdout).unwrap();
+    let lines: Vec<Value> = text
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap_or_else(|e| panic!("{args:?}: {l:?} ({e})")))
+        .collect();
+    let root = schema();
+    let mut problems = Vec::new();
+    for (i, v) in lines.iter().enumerate() {
+        let def = if i + 1 == lines.len() {
+            "corpus_summary"
+        } else {
+            "corpus_line"
+        };
+        let at = format!("{}[{i}]", args[0]);
+        validate(&root, resolve(&root, &format!("#/$defs/{def}")), v, &at, &mut problems);
+        vocabulary(v, &at, &mut problems);
+    }
+    assert!(problems.is_empty(), "{args:?}:\n{}", problems.join("\n"));
+    lines
+}
+
+/// Corpus mode's JSON Lines (check, asm, disasm, translate over a folder
+/// holding an accepted, an over-limit and a refused shader) match the schema.
+#[test]
+fn corpus_mode_json_lines_match_the_schema() {
+    let repo = bin::repo();
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path().join("in");
+    std::fs::create_dir(&dir).unwrap();
+    std::fs::write(dir.join("good.psh"), "ps_3_0\nmov oC0, c0\n").unwrap();
+    std::fs::write(dir.join("bad.psh"), "ps_3_0\nadd r0, r1\n").unwrap();
+    let over = std::fs::read_to_string(repo.join("asm/article/lum_pass1_loop.psh")).unwrap();
+    std::fs::write(dir.join("over.psh"), over).unwrap();
+    let p = |name: &str| tmp.path().join(name).to_str().unwrap().to_string();
+    let input = p("in");
+
+    // A refused file makes the run's exit code 2 (bad input), whatever the others.
+    let lines = check_lines(&["check", &input, "--json"], repo, &[2]);
+    let statuses: Vec<&str> = lines[..3]
+        .iter()
+        .map(|l| l["status"].as_str().unwrap())
+        .collect();
+    assert_eq!(statuses, ["refused", "accepted", "over"]);
+    assert_eq!(lines[0]["code"], "X2000");
+    assert_eq!(lines[3]["summary"]["files"], 3);
+
+    let fxo = p("fxo");
+    let lines = check_lines(&["asm", &input, "-o", &fxo, "--json"], repo, &[2]);
+    assert_eq!(lines[1]["crc32"].as_str().map(str::len), Some(8));
+    let lines = check_lines(&["disasm", &fxo, "--json"], repo, &[0]);
+    assert_eq!(lines[2]["summary"]["accepted"], 2);
+    let wgsl = p("wgsl");
+    let lines = check_lines(
+        &["translate", &input, "--to", "wgsl", "-o", &wgsl, "--json"],
+        repo,
+        &[2],
+    );
+    assert_eq!(lines[1]["target"], "wgsl");
+}
+
 /// The validator itself finds what it should: a missing field, a wrong
 /// type, a value outside an enum, inside arrays and through references.
 #[test]

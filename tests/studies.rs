@@ -262,3 +262,29 @@ fn study_pages_are_the_same_for_any_thread_count() {
         }
     }
 }
+
+/// `study article-chain -o FRAME.png` writes the frame where the user named
+/// it (here the working directory, outside the reports folder), beside the page.
+#[test]
+fn study_frame_goes_where_o_says() {
+    let dir = tempfile::tempdir().unwrap();
+    let reports = dir.path().join("reports");
+    let o = ps30(
+        &[
+            "study",
+            "article-chain",
+            "--size",
+            "32x32",
+            "--reports",
+            reports.to_str().unwrap(),
+            "-o",
+            "frame.png",
+        ],
+        dir.path(),
+    );
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let png = std::fs::read(dir.path().join("frame.png")).unwrap();
+    assert_eq!(&png[1..4], b"PNG");
+    assert!(reports.join("article-chain.md").is_file());
+    assert!(!reports.join("frame.png").exists());
+}

@@ -142,7 +142,13 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
     let mut batch = Batch::new(&args.reports)?;
     let mut written = stage_page(&mut batch, &args.reports, &page)?;
     if let (Some(path), Some((name, bytes))) = (&args.output, &png) {
-        batch.write_bytes(path, bytes)?;
+        // `-o` names a file of the user's anywhere, not one inside the reports folder.
+        let dir = path
+            .parent()
+            .filter(|d| !d.as_os_str().is_empty())
+            .unwrap_or(Path::new("."));
+        batch.directory(dir)?;
+        batch.write_bytes(&dir.join(path.file_name().unwrap_or_default()), bytes)?;
         written.push(name.clone());
     }
     batch.commit()?;
