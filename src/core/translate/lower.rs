@@ -353,8 +353,19 @@ impl Lower<'_> {
 
     // ----- the float rules ------------------------------------------------------
 
-    /// `a · b` per component; under d3d9-zero-mul a zero factor gives 0.
+    /// `a · b` per component; under d3d9-zero-mul a zero factor gives 0, and
+    /// under `hardware` a denormal product is a zero (inside `mad` and `lrp`
+    /// too: the product is a result of its own, as in the emulator).
     pub fn mul(&mut self, a: Expr, b: Expr, size: Option<VectorSize>) -> Expr {
+        let p = self.product(a, b, size);
+        if self.rules.flush_denormals() {
+            return self.flush(p, size);
+        }
+        p
+    }
+
+    /// `a · b` per component under the zero-multiply rule, unflushed.
+    fn product(&mut self, a: Expr, b: Expr, size: Option<VectorSize>) -> Expr {
         if !self.rules.zero_mul() {
             return self.fb.binary(B::Multiply, a, b);
         }
@@ -370,9 +381,22 @@ impl Lower<'_> {
         self.fb.binary(B::Multiply, a2, b2)
     }
 
-    /// `dot` of the first `n` components, under the zero-multiply rule.
+    /// `dot` of the first `n` components, under the zero-multiply rule; under
+    /// `hardware` summed left to right with every denormal product and
+    /// partial sum a zero, as the emulator computes it.
     fn dot(&mut self, a: Expr, b: Expr, n: u32) -> Expr {
         let (a, b) = (self.first(a, n), self.first(b, n));
+        if self.rules.flush_denormals() {
+            let size = [VectorSize::Bi, VectorSize::Tri, VectorSize::Quad][n as usize - 2];
+            let p = self.mul(a, b, Some(size));
+            let mut s = self.comp(p, 0);
+            for c in 1..n {
+                let pc = self.comp(p, c);
+                let sum = self.fb.binary(B::Add, s, pc);
+                s = self.flush(sum, None);
+            }
+            return s;
+        }
         let (a, b) = if self.rules.zero_mul() {
             let size = [VectorSize::Bi, VectorSize::Tri, VectorSize::Quad][n as usize - 2];
             let zero = self.fb.f32(0.0);
