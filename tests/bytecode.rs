@@ -178,14 +178,21 @@ fn constants_round_trip_by_their_bits() {
     }
     // Any other NaN (a payload, a signalling NaN) is read with its bits and
     // listed as D3DDisassemble lists it (tests/oracle/corpus/dis/def-bits).
-    for (bits, text) in [(0x7fc0_0001u32, "1.#QNAN"), (0x7f80_0001, "1.#QNAN"), (0xff80_0001, "-1.#IND")] {
+    for (bits, text) in [
+        (0x7fc0_0001u32, "1.#QNAN"),
+        (0x7f80_0001, "1.#QNAN"),
+        (0xff80_0001, "-1.#IND"),
+    ] {
         let module = read::read(
             &bytes(&[V, 0x0500_0051, 0xa00f_0000, bits, 0, 0, 0, E]),
             100,
         )
         .unwrap();
         let listed = listing::listing(&module).text;
-        assert!(listed.contains(&format!("def c0, {text}, 0, 0, 0")), "{bits:#x}:\n{listed}");
+        assert!(
+            listed.contains(&format!("def c0, {text}, 0, 0, 0")),
+            "{bits:#x}:\n{listed}"
+        );
     }
 }
 
