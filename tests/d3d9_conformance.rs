@@ -576,7 +576,14 @@ fn the_gpu_backend_agrees_or_compare_explains() {
         (
             format!("{FX}nonfinite.hlsl.fxo"),
             "{}".into(),
-            vec!["--const", "c0=inf,-inf,inf,0", "--target", "1x1"],
+            vec![
+                "--const",
+                "c0=inf,-inf,inf,0",
+                "--target",
+                "1x1",
+                "--float-rules",
+                "d3d9",
+            ],
         ),
         (
             format!("{FX}nonfinite.hlsl.fxo"),
@@ -593,7 +600,14 @@ fn the_gpu_backend_agrees_or_compare_explains() {
         (
             format!("{FX}nonfinite.hlsl.fxo"),
             "{}".into(),
-            vec!["--const", "c0=nan,0,1,0x80000000", "--target", "1x1"],
+            vec![
+                "--const",
+                "c0=nan,0,1,0x80000000",
+                "--target",
+                "1x1",
+                "--float-rules",
+                "d3d9",
+            ],
         ),
         (
             format!("{FX}float_rules.hlsl.fxo"),
@@ -693,6 +707,8 @@ fn the_gpu_backend_agrees_or_compare_explains() {
         "c2=5,0,0,0x00800000",
         "--target",
         "1x1",
+        "--float-rules",
+        "d3d9",
     ];
     let Some(c) = compare(&format!("{FX}float_rules.hlsl.fxo"), "{}", &args) else {
         return;

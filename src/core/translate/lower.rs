@@ -99,36 +99,53 @@ impl Lower<'_> {
     /// (temporaries and outputs were flushed when written).
     pub fn reg(&mut self, reg: Reg, relative: bool) -> Result<Expr, TranslateError> {
         let v = self.reg_raw(reg, relative)?;
-        if self.rules.flush_denormals() && matches!(reg.file, RegFile::Const | RegFile::Input) {
+        // A `def` without denormals needs no flush where it is read.
+        let cx = self.cx;
+        let plain_def = reg.file == RegFile::Const
+            && !relative
+            && (cx.float_defs.contains_key(&reg.index)
+                || cx.float_def_bits.contains_key(&reg.index))
+            && !cx.float_defs_subnormal.contains(&reg.index);
+        if self.rules.flush_denormals()
+            && matches!(reg.file, RegFile::Const | RegFile::Input)
+            && !plain_def
+        {
             return Ok(self.flush(v, Some(VectorSize::Quad)));
         }
         Ok(v)
     }
 
-    /// `v` with denormals replaced by zeros of their sign (`hardware`): the
-    /// sign bit alone, taken through the bits (a device need not keep the
-    /// sign of a zero it computes, so `v * 0` would not do).
+    /// `v` with denormals replaced by zeros of their sign (`hardware`),
+    /// decided on the bits alone: `(bits & 0x7FFFFFFF) < 0x00800000` as
+    /// unsigned integers, the sign bit kept. A float comparison
+    /// `abs(v) < 2^-126` turned −∞ into −0 on llvmpipe (its compiler may
+    /// assume finite values), and a device need not keep the sign of a
+    /// zero it computes, so `v * 0` would not do either.
     fn flush(&mut self, v: Expr, size: Option<VectorSize>) -> Expr {
-        let tiny = self.fb.f32(f32::MIN_POSITIVE);
-        let sign = self.fb.u32(0x8000_0000);
-        let (tiny, sign) = match size {
-            Some(size) => (self.fb.splat(tiny, size), self.fb.splat(sign, size)),
-            None => (tiny, sign),
+        let splat = |fb: &mut Fb, x: Expr| match size {
+            Some(size) => fb.splat(x, size),
+            None => x,
         };
-        let a = self.fb.math(M::Abs, &[v]);
-        let small = self.fb.binary(B::Less, a, tiny);
+        let magnitude = self.fb.u32(0x7FFF_FFFF);
+        let magnitude = splat(&mut self.fb, magnitude);
+        let smallest = self.fb.u32(0x0080_0000);
+        let smallest = splat(&mut self.fb, smallest);
+        let sign = self.fb.u32(0x8000_0000);
+        let sign = splat(&mut self.fb, sign);
         let bits = self.fb.add(Expression::As {
             expr: v,
             kind: naga::ScalarKind::Uint,
             convert: None,
         });
+        let abs_bits = self.fb.binary(B::And, bits, magnitude);
+        let small = self.fb.binary(B::Less, abs_bits, smallest);
         let sign_bits = self.fb.binary(B::And, bits, sign);
-        let signed_zero = self.fb.add(Expression::As {
-            expr: sign_bits,
+        let flushed = self.fb.select(small, sign_bits, bits);
+        self.fb.add(Expression::As {
+            expr: flushed,
             kind: naga::ScalarKind::Float,
             convert: None,
-        });
-        self.fb.select(small, signed_zero, v)
+        })
     }
 
     fn reg_raw(&mut self, reg: Reg, relative: bool) -> Result<Expr, TranslateError> {
