@@ -16,7 +16,7 @@
 //! filter adds at most half an ulp of the running result (every weight and
 //! texel is ≥ 0, so the relative bound adds up). [`close`] takes that count.
 
-use crate::common::bin::{ps30, repo, stderr, stdout};
+use crate::common::bin::{ps30, repo, stderr};
 use std::collections::HashMap;
 use std::path::PathBuf;
 
@@ -323,35 +323,51 @@ fn non_finite_constants_from_draw_lists_and_def() {
     assert_eq!(p("def_neg_zero")[0].to_bits(), 0x8000_0000);
 }
 
+/// `ps30 run SHADER --inputs INPUTS ARGS -o DIR/o.exr -q` (SHADER below the
+/// repository, INPUTS a path): the exit status, stderr, and the red channel of
+/// every pixel when the run succeeded.
+fn run_red(
+    shader: &str,
+    inputs: &std::path::Path,
+    args: &[&str],
+) -> (Option<i32>, String, Vec<f32>) {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("o.exr");
+    let shader = repo().join(shader);
+    let mut all = vec![
+        "run",
+        shader.to_str().unwrap(),
+        "--inputs",
+        inputs.to_str().unwrap(),
+    ];
+    all.extend_from_slice(args);
+    all.extend_from_slice(&["-o", out.to_str().unwrap(), "-q"]);
+    let o = ps30(&all, repo());
+    let red = match o.status.code() {
+        Some(0) => ps30::core::image::load(&out, &Default::default())
+            .unwrap()
+            .pixels
+            .iter()
+            .map(|p| p[0])
+            .collect(),
+        _ => Vec::new(),
+    };
+    (o.status.code(), stderr(&o), red)
+}
+
 #[test]
 fn non_finite_constants_from_the_command_line() {
     // The same shader through `ps30 run --const`: c0 = (inf, −inf, inf, 0)
-    // into an R32F target: red is rcp(rcp(inf)) = inf.
+    // into an R32F target: red is rcp(rcp(inf)) = inf. The inputs file sets
+    // nothing (`run` needs --image or --inputs).
     let dir = tempfile::tempdir().unwrap();
-    let out = dir.path().join("o.exr");
-    // an inputs file that sets nothing: `run` needs --image or --inputs
     let inputs = dir.path().join("none.json");
     std::fs::write(&inputs, "{}").unwrap();
-    let shader = repo().join("tests/oracle/fixtures/hlsl/conformance/nonfinite.hlsl.fxo");
-    let o = ps30(
-        &[
-            "run",
-            shader.to_str().unwrap(),
-            "--inputs",
-            inputs.to_str().unwrap(),
-            "--const",
-            "c0=inf,-inf,inf,0",
-            "--target",
-            "1x1",
-            "-o",
-            out.to_str().unwrap(),
-            "-q",
-        ],
-        repo(),
-    );
-    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
-    let img = ps30::core::image::load(&out, &Default::default()).unwrap();
-    assert_eq!(img.pixels[0][0], INF);
+    let shader = "tests/oracle/fixtures/hlsl/conformance/nonfinite.hlsl.fxo";
+    let args = ["--const", "c0=inf,-inf,inf,0", "--target", "1x1"];
+    let (code, err, red) = run_red(shader, &inputs, &args);
+    assert_eq!(code, Some(0), "{err}");
+    assert_eq!(red, [INF]);
 }
 
 // ----- the pixel's fate ---------------------------------------------------------
@@ -454,41 +470,18 @@ fn zero_times_infinity_and_denormal_products() {
 // ----- inputs from a file --------------------------------------------------------
 
 /// `ps30 run SHADER --inputs many_constants.inputs.json` on `backend`: red
-/// of every pixel of a 2×2 R32F target.
+/// of every pixel of a 2×2 R32F target; `None` without a GPU (outside CI).
 fn run_many_constants(backend: &str) -> Option<Vec<f32>> {
-    let dir = tempfile::tempdir().unwrap();
-    let out = dir.path().join("o.exr");
-    let shader = repo().join("tests/oracle/fixtures/hlsl/conformance/many_constants.hlsl.fxo");
+    let shader = "tests/oracle/fixtures/hlsl/conformance/many_constants.hlsl.fxo";
     let inputs = corpus().join("many_constants.inputs.json");
-    let o = ps30(
-        &[
-            "run",
-            shader.to_str().unwrap(),
-            "--inputs",
-            inputs.to_str().unwrap(),
-            "--target",
-            "2x2",
-            "--backend",
-            backend,
-            "-o",
-            out.to_str().unwrap(),
-            "-q",
-        ],
-        repo(),
-    );
-    if backend == "gpu" && o.status.code() == Some(2) && std::env::var_os("CI").is_none() {
-        eprintln!("many_constants on the GPU: skipped: {}", stderr(&o));
+    let args = ["--target", "2x2", "--backend", backend];
+    let (code, err, red) = run_red(shader, &inputs, &args);
+    if backend == "gpu" && code == Some(2) && std::env::var_os("CI").is_none() {
+        eprintln!("many_constants on the GPU: skipped: {err}");
         return None;
     }
-    assert_eq!(
-        o.status.code(),
-        Some(0),
-        "{backend}: {}{}",
-        stdout(&o),
-        stderr(&o)
-    );
-    let img = ps30::core::image::load(&out, &Default::default()).unwrap();
-    Some(img.pixels.iter().map(|p| p[0]).collect())
+    assert_eq!(code, Some(0), "{backend}: {err}");
+    Some(red)
 }
 
 #[test]
@@ -561,6 +554,18 @@ fn compare(shader: &str, inputs: &str, args: &[&str]) -> Option<serde_json::Valu
     Some(serde_json::from_slice(&o.stdout).unwrap())
 }
 
+/// The constants of `float_rules.json` for `compare`, and its 1×1 target.
+const FLOAT_RULES_ARGS: [&str; 8] = [
+    "--const",
+    "c0=0,1,1,0x1c800000",
+    "--const",
+    "c1=inf,2,3,0x1c800000",
+    "--const",
+    "c2=5,0,0,0x00800000",
+    "--target",
+    "1x1",
+];
+
 #[test]
 fn the_gpu_backend_agrees_or_compare_explains() {
     const FX: &str = "tests/oracle/fixtures/hlsl/conformance/";
@@ -612,18 +617,7 @@ fn the_gpu_backend_agrees_or_compare_explains() {
         (
             format!("{FX}float_rules.hlsl.fxo"),
             "{}".into(),
-            vec![
-                "--const",
-                "c0=0,1,1,0x1c800000",
-                "--const",
-                "c1=inf,2,3,0x1c800000",
-                "--const",
-                "c2=5,0,0,0x00800000",
-                "--target",
-                "1x1",
-                "--float-rules",
-                "hardware",
-            ],
+            [&FLOAT_RULES_ARGS[..], &["--float-rules", "hardware"]].concat(),
         ),
         (
             format!("{DIS}pos-inf.fxo"),
@@ -698,18 +692,7 @@ fn the_gpu_backend_agrees_or_compare_explains() {
     }
     // Under d3d9 the device (llvmpipe flushes subnormals) loses the
     // denormal product inside `mad`: a difference `compare` explains.
-    let args = [
-        "--const",
-        "c0=0,1,1,0x1c800000",
-        "--const",
-        "c1=inf,2,3,0x1c800000",
-        "--const",
-        "c2=5,0,0,0x00800000",
-        "--target",
-        "1x1",
-        "--float-rules",
-        "d3d9",
-    ];
+    let args = [&FLOAT_RULES_ARGS[..], &["--float-rules", "d3d9"]].concat();
     let Some(c) = compare(&format!("{FX}float_rules.hlsl.fxo"), "{}", &args) else {
         return;
     };
