@@ -10,7 +10,9 @@
 //! digits; `00000000` is accepted), `REL.err` (Microsoft's messages, when it
 //! wrote any), `REL.fxo` (the bytecode, when accepted) and `REL.dis`
 //! (`D3DDisassemble`'s listing of that bytecode), and for the round trip
-//! `REL.dis.rc` / `REL.dis.fxo`: `D3DAssemble` of that listing.
+//! `REL.dis.rc` / `REL.dis.fxo`: `D3DAssemble` of that listing. The third set,
+//! `dis`, is bytecode made by hand (`tools/oracle/def_bits.py`): Microsoft
+//! only lists it, so its `fxo` is the corpus file itself.
 //!
 //! Each aspect is a module: acceptance and error codes (`accept`), bytecode
 //! and round trips (`bytes`), listing text (`listing`), slot counts (`slots`),
@@ -26,7 +28,7 @@ use std::path::{Path, PathBuf};
 
 /// One corpus file and Microsoft's answers for it.
 pub struct Fixture {
-    /// `asm` or `hlsl`.
+    /// `asm`, `hlsl` or `dis`.
     pub set: &'static str,
     /// The path below `corpus/SET/`, with `/` separators (`ops/add.psh`).
     pub rel: String,
@@ -149,7 +151,10 @@ fn every_fixture(set: &'static str) -> Vec<Fixture> {
     let fixtures = root().join("fixtures").join(set);
     let mut files = Vec::new();
     walk(&corpus, &mut files);
-    files.retain(|p| p.extension().is_some_and(|e| e == "psh" || e == "hlsl"));
+    files.retain(|p| {
+        p.extension()
+            .is_some_and(|e| e == "psh" || e == "hlsl" || e == "fxo")
+    });
     files.sort();
     files
         .into_iter()
@@ -164,12 +169,19 @@ fn every_fixture(set: &'static str) -> Vec<Fixture> {
             let rc = rc_of(&with("rc"))
                 .unwrap_or_else(|| panic!("{set}/{rel} has no fixture: run tools/oracle/regen"));
             let redis = rc_of(&with("dis.rc")).map(|rc| (rc, read_opt(&with("dis.fxo"))));
+            let source = std::fs::read(&path).unwrap();
+            // hand-made bytecode is its own `fxo`: Microsoft only lists it
+            let fxo = if set == "dis" {
+                Some(source.clone())
+            } else {
+                read_opt(&with("fxo"))
+            };
             Fixture {
                 set,
-                source: std::fs::read(&path).unwrap(),
+                source,
                 rc,
                 err: read_opt(&with("err")).map(|b| String::from_utf8_lossy(&b).into_owned()),
-                fxo: read_opt(&with("fxo")),
+                fxo,
                 dis: read_opt(&with("dis")).map(|b| String::from_utf8_lossy(&b).into_owned()),
                 redis,
                 rel,
@@ -178,9 +190,10 @@ fn every_fixture(set: &'static str) -> Vec<Fixture> {
         .collect()
 }
 
-/// Every fixture of both sets.
+/// Every fixture of the three sets.
 pub fn all() -> Vec<Fixture> {
     let mut v = fixtures("asm");
     v.extend(fixtures("hlsl"));
+    v.extend(fixtures("dis"));
     v
 }

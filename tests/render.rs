@@ -39,7 +39,14 @@ fn each_draw_alone(list: &DrawList) -> Vec<Vec<[f32; 4]>> {
                 })],
                 ..list.clone()
             };
-            let (_, states) = render::run(&alone, &Default::default(), &mut |_, _| {}).unwrap();
+            // The CPU computations these draws are held to are plain IEEE
+            // f32 (the `d3d9` rules): `hardware`, the default, would flush
+            // the denormals a specular power like s^16 reaches.
+            let settings = render::Settings {
+                float_rules: ps30::core::float_rules::FloatRules::D3d9,
+                ..Default::default()
+            };
+            let (_, states) = render::run(&alone, &settings, &mut |_, _| {}).unwrap();
             states[0].target.texels.clone()
         })
         .collect()

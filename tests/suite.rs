@@ -19,6 +19,7 @@ mod conformance;
 mod corpus;
 mod corpus_mode;
 mod cost;
+mod d3d9_conformance;
 mod damaged_inputs;
 mod docs;
 mod gen;

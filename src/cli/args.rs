@@ -633,13 +633,13 @@ impl From<AddressArg> for Address {
 #[derive(Clone, Copy, Debug, Default, clap::ValueEnum)]
 pub enum FloatRulesArg {
     /// Microsoft's instruction pages: log(0) = -FLT_MAX, |x| in log and rsq, nrm(0) scaled by FLT_MAX.
-    #[default]
     D3d9,
     /// Plain IEEE results.
     Ieee,
     /// d3d9, and a product with a zero factor is 0 (0 × inf = 0).
     D3d9ZeroMul,
-    /// What Direct3D 9 hardware computes: d3d9-zero-mul, and denormals flushed to zero in and out.
+    /// What Direct3D 9 hardware computes (the default): d3d9-zero-mul, and denormals flushed to zero in and out.
+    #[default]
     Hardware,
 }
 
@@ -671,8 +671,8 @@ pub struct BackendArgs {
     /// Draw on the emulator (default) or on a GPU through Vulkan, with the translated shader.
     #[arg(long, value_enum, default_value = "emulator")]
     pub backend: BackendArg,
-    /// Special values: d3d9 (Microsoft's pages, the default), ieee, d3d9-zero-mul, or hardware.
-    #[arg(long, value_enum, default_value = "d3d9")]
+    /// Special values: hardware (what Direct3D 9 hardware computes, the default), d3d9 (Microsoft's pages), ieee, or d3d9-zero-mul.
+    #[arg(long, value_enum, default_value = "hardware")]
     pub float_rules: FloatRulesArg,
 }
 

@@ -86,8 +86,8 @@ pub struct Args {
     /// The draw's target: f32 (D3DFMT_R32F), f16 (D3DFMT_A16B16G16R16F); without it, unrounded f32.
     #[arg(long, value_enum)]
     target_format: Option<FormatArg>,
-    /// Special values: d3d9 (the default), ieee, d3d9-zero-mul, or hardware.
-    #[arg(long, value_enum, default_value = "d3d9")]
+    /// Special values: hardware (the default), d3d9, ieee, or d3d9-zero-mul.
+    #[arg(long, value_enum, default_value = "hardware")]
     float_rules: FloatRulesArg,
     /// Print JSON instead of text.
     #[arg(long)]

@@ -45,8 +45,8 @@ pub struct Args {
     /// s0's MIPMAPLODBIAS, added to every level of detail.
     #[arg(long, value_name = "B", default_value_t = 0.0, allow_negative_numbers = true, value_parser = parse_finite)]
     lod_bias: f32,
-    /// Special values: d3d9 (the default), ieee, d3d9-zero-mul, or hardware.
-    #[arg(long, value_enum, default_value = "d3d9")]
+    /// Special values: hardware (the default), d3d9, ieee, or d3d9-zero-mul.
+    #[arg(long, value_enum, default_value = "hardware")]
     float_rules: super::args::FloatRulesArg,
     /// s0's MAXMIPLEVEL (the most detailed level allowed).
     #[arg(long, value_name = "N", default_value_t = 0)]

@@ -40,8 +40,8 @@ pub struct Args {
     /// bytes than this (an upper bound computed before any step runs).
     #[arg(long, value_name = "BYTES", default_value_t = 1 << 30, value_parser = clap::value_parser!(u64).range(1..))]
     max_staged_bytes: u64,
-    /// Float rules of the draws that name none: d3d9 (the default), ieee, d3d9-zero-mul, or hardware.
-    #[arg(long, value_enum, default_value = "d3d9")]
+    /// Float rules of the draws that name none: hardware (the default), d3d9, ieee, or d3d9-zero-mul.
+    #[arg(long, value_enum, default_value = "hardware")]
     float_rules: super::args::FloatRulesArg,
     #[command(flatten)]
     exec: ExecArgs,

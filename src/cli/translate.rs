@@ -28,8 +28,8 @@ pub struct Args {
     /// was found in, the target's extension (.wgsl, .spv, .glsl, .hlsl, .metal) appended.
     #[arg(short, long)]
     output: Option<PathBuf>,
-    /// Special values: d3d9 (Microsoft's pages, the default), ieee, d3d9-zero-mul, or hardware.
-    #[arg(long, value_enum, default_value = "d3d9")]
+    /// Special values: hardware (what Direct3D 9 hardware computes, the default), d3d9 (Microsoft's pages), ieee, or d3d9-zero-mul.
+    #[arg(long, value_enum, default_value = "hardware")]
     float_rules: FloatRulesArg,
     #[command(flatten)]
     source: SourceArgs,

@@ -15,11 +15,11 @@
 
 use std::fmt;
 
-/// A set of float rules. `D3d9` is the default everywhere.
+/// A set of float rules. `Hardware` is the default everywhere (docs/float-rules.md
+/// says why).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default, serde::Serialize)]
 pub enum FloatRules {
-    /// Microsoft's instruction pages, as the emulator has always computed.
-    #[default]
+    /// Microsoft's instruction pages, IEEE everywhere else.
     D3d9,
     /// Plain IEEE 754 results: no absolute values, no clamps, no FLT_MAX.
     Ieee,
@@ -31,11 +31,12 @@ pub enum FloatRules {
     /// denormal flushed to zero (of the same sign) where it enters the
     /// shader (constants, inputs, texture samples) and where an instruction
     /// writes it. See `docs/float-rules.md` for the evidence of each rule.
+    #[default]
     Hardware,
 }
 
 impl FloatRules {
-    /// Every set, the default first: the order `--float-rules` lists them in.
+    /// Every set: the order reports list them in.
     pub const ALL: [FloatRules; 4] = [
         FloatRules::D3d9,
         FloatRules::Ieee,
@@ -175,7 +176,7 @@ mod tests {
             assert_eq!(FloatRules::from_name(r.name()), Some(r));
         }
         assert_eq!(FloatRules::from_name("strict"), None);
-        assert_eq!(FloatRules::default(), FloatRules::D3d9);
+        assert_eq!(FloatRules::default(), FloatRules::Hardware);
     }
 
     #[test]

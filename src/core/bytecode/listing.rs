@@ -310,10 +310,17 @@ fn literal_texts(extra: &Extra) -> Vec<String> {
 /// (it parses a double and rounds it to single precision), or the exact
 /// value when the shortest one would round twice to a neighbour.
 /// Infinities and the NaNs text can write are spelled as Microsoft's
-/// assembler reads them ([`special_float_text`]).
+/// assembler reads them ([`special_float_text`]); any other NaN (a payload
+/// or a signalling NaN read from bytecode) as `D3DDisassemble` lists it,
+/// `1.#QNAN` when positive and `-1.#IND` when negative — text cannot keep
+/// its payload, so it reads back as one of those two.
 pub fn float_text(x: f32) -> String {
     if let Some(special) = special_float_text(x.to_bits()) {
         return special.to_string();
+    }
+    if x.is_nan() {
+        let negative = x.to_bits() >> 31 == 1;
+        return if negative { "-1.#IND" } else { "1.#QNAN" }.to_string();
     }
     let short = x.to_string();
     match short.parse::<f64>() {

@@ -418,18 +418,10 @@ fn literals(kind: Operand, ops: &mut Operands) -> Result<Extra, ReadError> {
         };
     }
     let mut v = [0u32; 4];
+    // Any 32-bit pattern: SetPixelShaderConstantF and `def` take NaNs with
+    // any payload, denormals and -0 as they are.
     for slot in &mut v {
-        let (t, byte) = ops.take()?;
-        if kind == Operand::FloatLits
-            && !f32::from_bits(t).is_finite()
-            && super::listing::special_float_text(t).is_none()
-        {
-            return Err(ReadError::at(
-                byte,
-                format!("`def` value {t:#010x} is a NaN that assembly text cannot write"),
-            )
-            .with_help("ps30 reads finite constants, infinities (1.#INF) and the NaNs written 1.#QNAN, -1.#QNAN, 1.#IND and -1.#IND (0x7FE00000, 0xFFE00000, 0xFFC00000, 0x7FC00000)"));
-        }
+        let (t, _) = ops.take()?;
         *slot = t;
     }
     Ok(match kind {

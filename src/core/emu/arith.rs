@@ -20,6 +20,7 @@ use super::compile::{DstOp, SrcOp};
 use super::exec::Worker;
 use super::math::{self, modify};
 use super::LANES;
+use crate::core::float_rules::flush;
 use crate::core::isa::Compare;
 
 impl Worker<'_, '_> {
@@ -207,7 +208,11 @@ impl Worker<'_, '_> {
 
     #[inline(always)]
     pub(super) fn mad(&mut self, d: DstOp, a: SrcOp, b: SrcOp, c: SrcOp) {
-        if self.ctx.rules.zero_mul() {
+        if self.ctx.rules.flush_denormals() {
+            // `hardware`: a multiply, then an add (no fused multiply-add on
+            // Direct3D 9 hardware); a denormal product is flushed before the add.
+            self.map3(d, a, b, c, |x, y, z| flush(math::zmul(x, y)) + z)
+        } else if self.ctx.rules.zero_mul() {
             self.map3(d, a, b, c, |x, y, z| math::zmul(x, y) + z)
         } else {
             self.map3(d, a, b, c, math::mad)
@@ -216,7 +221,12 @@ impl Worker<'_, '_> {
 
     #[inline(always)]
     pub(super) fn lrp(&mut self, d: DstOp, a: SrcOp, b: SrcOp, c: SrcOp) {
-        if self.ctx.rules.zero_mul() {
+        if self.ctx.rules.flush_denormals() {
+            // `hardware`: a denormal product is a zero (1 − x never is one)
+            self.map3(d, a, b, c, |x, y, z| {
+                flush(math::zmul(x, y)) + flush(math::zmul(1.0 - x, z))
+            })
+        } else if self.ctx.rules.zero_mul() {
             self.map3(d, a, b, c, |x, y, z| {
                 math::zmul(x, y) + math::zmul(1.0 - x, z)
             })
@@ -276,14 +286,19 @@ impl Worker<'_, '_> {
     /// lane loop is compiled with the product inlined and vectorises).
     #[inline(always)]
     pub(super) fn dot<const N: usize>(&mut self, _d: DstOp, a: SrcOp, b: SrcOp, k: usize) {
-        if self.ctx.rules.zero_mul() {
-            self.dot_with::<N>(a, b, k, math::zmul)
+        if self.ctx.rules.flush_denormals() {
+            // `hardware`: products and partial sums are results of their
+            // own, each denormal one a zero
+            let mul = |x, y| flush(math::zmul(x, y));
+            self.dot_with::<N>(a, b, k, mul, |s, p| flush(s + p))
+        } else if self.ctx.rules.zero_mul() {
+            self.dot_with::<N>(a, b, k, math::zmul, |s, p| s + p)
         } else {
-            self.dot_with::<N>(a, b, k, |x, y| x * y)
+            self.dot_with::<N>(a, b, k, |x, y| x * y, |s, p| s + p)
         }
     }
 
-    /// [`Worker::dot`] with the product `mul`.
+    /// [`Worker::dot`] with the product `mul` and the sum `add`.
     #[inline(always)]
     fn dot_with<const N: usize>(
         &mut self,
@@ -291,6 +306,7 @@ impl Worker<'_, '_> {
         b: SrcOp,
         k: usize,
         mul: impl Fn(f32, f32) -> f32,
+        add: impl Fn(f32, f32) -> f32,
     ) {
         let n = self.span();
         let (am, ax) = a.mod_bits();
@@ -303,7 +319,7 @@ impl Worker<'_, '_> {
         for l in 0..n {
             let mut s = mul(modify(sa[0][l], am, ax), modify(sb[0][l], bm, bx));
             for c in 1..N {
-                s += mul(modify(sa[c][l], am, ax), modify(sb[c][l], bm, bx));
+                s = add(s, mul(modify(sa[c][l], am, ax), modify(sb[c][l], bm, bx)));
             }
             out[l] = s;
         }
@@ -393,7 +409,12 @@ impl Worker<'_, '_> {
                 modify(s[1][l], am, ax),
                 modify(s[2][l], am, ax),
             );
-            scale[l] = scale_of(x * x + y * y + z * z);
+            scale[l] = scale_of(if rules.flush_denormals() {
+                // `hardware`: the squares and sums as `dp3` computes them
+                flush(flush(flush(x * x) + flush(y * y)) + flush(z * z))
+            } else {
+                x * x + y * y + z * z
+            });
         }
         for c in 0..4 {
             let out = &mut self.tmp[c];

@@ -411,7 +411,7 @@ impl<'a> Draw<'a> {
             samplers: Vec::new(),
             limits: EmuLimits::default(),
             record_lod: false,
-            float_rules: crate::core::float_rules::FloatRules::D3d9,
+            float_rules: crate::core::float_rules::FloatRules::Hardware,
             face: Face::Front,
         }
     }

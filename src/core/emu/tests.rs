@@ -2011,3 +2011,55 @@ mul r0.y, c0.y, r1.x
     assert_eq!(ms[1].to_bits(), 1 << 22, "2^-127 as a denormal");
     assert!(ms[2].is_nan());
 }
+
+#[test]
+fn hardware_rules_flush_products_inside_mad_and_dot_products() {
+    use crate::core::float_rules::FloatRules;
+    // c0 = (2^-70, 2^-70, 2^-126, 0): the product 2^-140 is a denormal.
+    // By hand: `mad r0.x, c0.x, c0.y, c0.z` is 2^-126 + 2^-140 under `d3d9`
+    // (exact: 2^-126·(1 + 2^-14) has 15 significant bits) and 2^-126 under
+    // `hardware`, whose product is flushed before the add. `dp3 r0.y, c0,
+    // c1` with c1 = (2^-70, 0, 1, 0) is 2^-140 + 0 + 2^-126: the same two
+    // values. `dp2add r0.z, c0, c0, c0.z` is 2·2^-140 + 2^-126 under
+    // `d3d9`, 2^-126 under `hardware`. `m3x2 r1.xy, c0, c1` is dp3 with c1
+    // and with c2 = (0, 2^-70, 0, 0): 2^-140 alone, 0 under `hardware`.
+    let text = "mad r0.x, c0.x, c0.y, c0.z
+                dp3 r0.y, c0, c1
+                dp2add r0.z, c0, c0, c0.z
+                mov r0.w, c1.z
+                m3x2 r1.xy, c0, c1
+                mov r1.zw, c1.z
+                mov oC0, r0
+                mov oC1, r1";
+    let p70 = 2f32.powi(-70);
+    let p126 = f32::MIN_POSITIVE;
+    let mut d = Draw::new(1, 1);
+    d.constants.float = vec![
+        [p70, p70, p126, 0.0],
+        [p70, 0.0, 1.0, 0.0],
+        [0.0, p70, 0.0, 0.0],
+    ];
+    let p140 = f64::powi(2.0, -140);
+    let exact = |v: f64| v as f32;
+    d.float_rules = FloatRules::D3d9;
+    let out = run_text(text, &d);
+    let ms = out.color[0].as_ref().unwrap()[0];
+    assert_eq!(ms[0], exact(f64::from(p126) + p140));
+    assert_eq!(ms[1], exact(f64::from(p126) + p140));
+    assert_eq!(ms[2], exact(f64::from(p126) + 2.0 * p140));
+    let ms1 = out.color[1].as_ref().unwrap()[0];
+    assert_eq!(
+        [ms1[0], ms1[1]],
+        [exact(f64::from(p126) + p140), exact(p140)]
+    );
+    d.float_rules = FloatRules::Hardware;
+    let out = run_text(text, &d);
+    let hw = out.color[0].as_ref().unwrap()[0];
+    let p126_bits = p126.to_bits();
+    assert_eq!(
+        hw.map(f32::to_bits),
+        [p126_bits, p126_bits, p126_bits, 1f32.to_bits()]
+    );
+    let hw1 = out.color[1].as_ref().unwrap()[0];
+    assert_eq!([hw1[0].to_bits(), hw1[1].to_bits()], [p126_bits, 0]);
+}

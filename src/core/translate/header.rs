@@ -54,7 +54,7 @@ pub fn lines(source: &str, t: &Translation, target: Target) -> Vec<String> {
         );
     }
     if t.rules.flush_denormals() {
-        l.push("  denormals read from constants and inputs, and written by any instruction, are zeros of their sign".into());
+        l.push("  denormals read from constants and inputs, written by any instruction, or made by a product or sum inside mad, lrp and the dot products, are zeros of their sign".into());
     }
     l.push(format!("entry point: fragment `{}`", t.entry_name()));
     l.push(String::new());

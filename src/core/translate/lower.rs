@@ -99,36 +99,53 @@ impl Lower<'_> {
     /// (temporaries and outputs were flushed when written).
     pub fn reg(&mut self, reg: Reg, relative: bool) -> Result<Expr, TranslateError> {
         let v = self.reg_raw(reg, relative)?;
-        if self.rules.flush_denormals() && matches!(reg.file, RegFile::Const | RegFile::Input) {
+        // A `def` without denormals needs no flush where it is read.
+        let cx = self.cx;
+        let plain_def = reg.file == RegFile::Const
+            && !relative
+            && (cx.float_defs.contains_key(&reg.index)
+                || cx.float_def_bits.contains_key(&reg.index))
+            && !cx.float_defs_subnormal.contains(&reg.index);
+        if self.rules.flush_denormals()
+            && matches!(reg.file, RegFile::Const | RegFile::Input)
+            && !plain_def
+        {
             return Ok(self.flush(v, Some(VectorSize::Quad)));
         }
         Ok(v)
     }
 
-    /// `v` with denormals replaced by zeros of their sign (`hardware`): the
-    /// sign bit alone, taken through the bits (a device need not keep the
-    /// sign of a zero it computes, so `v * 0` would not do).
+    /// `v` with denormals replaced by zeros of their sign (`hardware`),
+    /// decided on the bits alone: `(bits & 0x7FFFFFFF) < 0x00800000` as
+    /// unsigned integers, the sign bit kept. A float comparison
+    /// `abs(v) < 2^-126` turned −∞ into −0 on llvmpipe (its compiler may
+    /// assume finite values), and a device need not keep the sign of a
+    /// zero it computes, so `v * 0` would not do either.
     fn flush(&mut self, v: Expr, size: Option<VectorSize>) -> Expr {
-        let tiny = self.fb.f32(f32::MIN_POSITIVE);
-        let sign = self.fb.u32(0x8000_0000);
-        let (tiny, sign) = match size {
-            Some(size) => (self.fb.splat(tiny, size), self.fb.splat(sign, size)),
-            None => (tiny, sign),
+        let splat = |fb: &mut Fb, x: Expr| match size {
+            Some(size) => fb.splat(x, size),
+            None => x,
         };
-        let a = self.fb.math(M::Abs, &[v]);
-        let small = self.fb.binary(B::Less, a, tiny);
+        let magnitude = self.fb.u32(0x7FFF_FFFF);
+        let magnitude = splat(&mut self.fb, magnitude);
+        let smallest = self.fb.u32(0x0080_0000);
+        let smallest = splat(&mut self.fb, smallest);
+        let sign = self.fb.u32(0x8000_0000);
+        let sign = splat(&mut self.fb, sign);
         let bits = self.fb.add(Expression::As {
             expr: v,
             kind: naga::ScalarKind::Uint,
             convert: None,
         });
+        let abs_bits = self.fb.binary(B::And, bits, magnitude);
+        let small = self.fb.binary(B::Less, abs_bits, smallest);
         let sign_bits = self.fb.binary(B::And, bits, sign);
-        let signed_zero = self.fb.add(Expression::As {
-            expr: sign_bits,
+        let flushed = self.fb.select(small, sign_bits, bits);
+        self.fb.add(Expression::As {
+            expr: flushed,
             kind: naga::ScalarKind::Float,
             convert: None,
-        });
-        self.fb.select(small, signed_zero, v)
+        })
     }
 
     fn reg_raw(&mut self, reg: Reg, relative: bool) -> Result<Expr, TranslateError> {
@@ -353,8 +370,19 @@ impl Lower<'_> {
 
     // ----- the float rules ------------------------------------------------------
 
-    /// `a · b` per component; under d3d9-zero-mul a zero factor gives 0.
+    /// `a · b` per component; under d3d9-zero-mul a zero factor gives 0, and
+    /// under `hardware` a denormal product is a zero (inside `mad` and `lrp`
+    /// too: the product is a result of its own, as in the emulator).
     pub fn mul(&mut self, a: Expr, b: Expr, size: Option<VectorSize>) -> Expr {
+        let p = self.product(a, b, size);
+        if self.rules.flush_denormals() {
+            return self.flush(p, size);
+        }
+        p
+    }
+
+    /// `a · b` per component under the zero-multiply rule, unflushed.
+    fn product(&mut self, a: Expr, b: Expr, size: Option<VectorSize>) -> Expr {
         if !self.rules.zero_mul() {
             return self.fb.binary(B::Multiply, a, b);
         }
@@ -370,9 +398,22 @@ impl Lower<'_> {
         self.fb.binary(B::Multiply, a2, b2)
     }
 
-    /// `dot` of the first `n` components, under the zero-multiply rule.
+    /// `dot` of the first `n` components, under the zero-multiply rule; under
+    /// `hardware` summed left to right with every denormal product and
+    /// partial sum a zero, as the emulator computes it.
     fn dot(&mut self, a: Expr, b: Expr, n: u32) -> Expr {
         let (a, b) = (self.first(a, n), self.first(b, n));
+        if self.rules.flush_denormals() {
+            let size = [VectorSize::Bi, VectorSize::Tri, VectorSize::Quad][n as usize - 2];
+            let p = self.mul(a, b, Some(size));
+            let mut s = self.comp(p, 0);
+            for c in 1..n {
+                let pc = self.comp(p, c);
+                let sum = self.fb.binary(B::Add, s, pc);
+                s = self.flush(sum, None);
+            }
+            return s;
+        }
         let (a, b) = if self.rules.zero_mul() {
             let size = [VectorSize::Bi, VectorSize::Tri, VectorSize::Quad][n as usize - 2];
             let zero = self.fb.f32(0.0);

@@ -58,6 +58,9 @@ pub(super) struct Ctx {
     /// The emulation code each sampler carries (set by `core::translate`).
     pub spec: super::Specialisation,
     pub float_defs: BTreeMap<u32, Handle<Constant>>,
+    /// The `def` registers with a denormal component: the only definitions
+    /// the `hardware` rules must flush where they are read.
+    pub float_defs_subnormal: std::collections::BTreeSet<u32>,
     /// Definitions holding ±∞ or NaN, as bits: read as a bitcast.
     pub float_def_bits: BTreeMap<u32, [u32; 4]>,
     pub int_defs: BTreeMap<u32, Handle<Constant>>,
@@ -296,6 +299,12 @@ impl Ctx {
 
         let mut float_defs = BTreeMap::new();
         let mut float_def_bits = BTreeMap::new();
+        let float_defs_subnormal = p
+            .float_defs
+            .iter()
+            .filter(|d| d.value.iter().any(|v| v.is_subnormal()))
+            .map(|d| d.index)
+            .collect();
         for d in &p.float_defs {
             // ±∞ and NaN have no literal in the shading languages (naga
             // refuses them): such a definition is rebuilt from its bits
@@ -317,6 +326,7 @@ impl Ctx {
         let bool_defs = p.bool_defs.iter().map(|d| (d.index, d.value)).collect();
         Ok(Ctx {
             t,
+            float_defs_subnormal,
             consts,
             temps,
             inputs,

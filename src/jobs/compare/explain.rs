@@ -268,7 +268,21 @@ pub fn draw(c: &DrawComparison, probes: &[Probe]) -> Explanation {
     }
     let differing: u64 = c.channels.iter().map(|ch| ch.pixels - ch.identical).sum();
     let flushed: u64 = c.channels.iter().map(|ch| ch.subnormal_flushes).sum();
-    let clauses = device_differences(&ops, probes);
+    let mut clauses = device_differences(&ops, probes);
+    let flushes_inside = flushes_subnormals(probes) && c.float_rules != "hardware";
+    if flushes_inside {
+        // A subnormal product inside `mad` or a dot product vanishes on
+        // such a device before the add: a normal result moves.
+        clauses.push(format!(
+            "the device flushes subnormals (the probes show it), inside instructions too: a subnormal product in `mad` or a dot product is 0 before the add, where the float rules {} keep it; `--float-rules hardware` flushes it on both backends",
+            c.float_rules
+        ));
+    }
+    let rest = differing - flushed;
+    if rest > 0 && c.max_ulp() == 0 {
+        // Values 0 ulp apart that are not identical are +0 and −0.
+        clauses.push("they are zeros of opposite sign: the device need not keep the sign of a zero (a SPIR-V module without SignedZeroInfNanPreserve lets its compiler drop it)".into());
+    }
     let mut parts = Vec::new();
     if flushed > 0 {
         parts.push(format!(
@@ -281,7 +295,6 @@ pub fn draw(c: &DrawComparison, probes: &[Probe]) -> Explanation {
             }
         ));
     }
-    let rest = differing - flushed;
     if rest > 0 {
         parts.push(format!(
             "{} other values differ, at most {} ulp: {}",
@@ -294,7 +307,7 @@ pub fn draw(c: &DrawComparison, probes: &[Probe]) -> Explanation {
         || c.killed_mismatches > 0
         || (rest > 0 && clauses.is_empty())
         || (flushed > 0 && !flushes_subnormals(probes));
-    let device = flushed > 0 && !finding;
+    let device = (flushed > 0 || (rest > 0 && flushes_inside)) && !finding;
     let mut text = parts.join("; ");
     if finding {
         text = format!(

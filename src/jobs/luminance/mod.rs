@@ -107,7 +107,7 @@ impl Default for Settings {
             threads: None,
             limits: emu::EmuLimits::default(),
             backend: Backend::Emulator,
-            float_rules: FloatRules::D3d9,
+            float_rules: FloatRules::Hardware,
         }
     }
 }

@@ -1,0 +1,15 @@
+// oracle: flags=SKIP_OPTIMIZATION
+// Conformance corpus: constants set by the application that are not finite numbers, through
+// rcp twice (rcp(rcp(+inf)) = +inf, kept apart by compiling without optimisation) and a
+// product.
+float4 k : register(c0);
+
+float4 main() : COLOR
+{
+    float4 r;
+    r.x = rcp(rcp(k.x));
+    r.y = rcp(rcp(k.y));
+    r.z = k.z * k.w;
+    r.w = rcp(k.w);
+    return r;
+}
