@@ -232,14 +232,16 @@ fn every_asset_image_has_reference_values_and_a_test() {
         .map(|entry| entry.unwrap().file_name().to_string_lossy().into_owned())
         .filter(|name| !name.ends_with(".json") && !name.ends_with(".md"))
         .collect();
-    // A `.planes.deflate` file is how the binary carries an image of this
-    // folder (src/jobs/assets.rs, which checks it rebuilds the image byte for
-    // byte): no image of its own, but its image must be here.
+    // A `.deflate` file (`.planes.deflate` too) is how the binary carries an
+    // image of this folder (src/jobs/assets.rs, which checks it rebuilds the
+    // image byte for byte): no image of its own, but its image must be here.
     let (packed, on_disk): (BTreeSet<String>, BTreeSet<String>) = on_disk
         .into_iter()
-        .partition(|name| name.ends_with(".planes.deflate"));
+        .partition(|name| name.ends_with(".deflate"));
     for p in &packed {
-        let image = p.trim_end_matches(".planes.deflate");
+        let image = p
+            .trim_end_matches(".deflate")
+            .trim_end_matches(".planes");
         assert!(
             on_disk.contains(image),
             "{p} packs {image}, which is not in assets/hdr"
