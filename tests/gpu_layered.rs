@@ -19,7 +19,7 @@ use crate::common::gpu as gpu_device;
 use gpu_device::gpu;
 use ps30::core::emu::{
     self, Address, CubeMap, Draw, DrawOutput, Filter, LinearInput, MipChain, MipFilter,
-    SamplerState, TextureLevels, VolumeChain,
+    SamplerState, Texture, TextureLevels, VolumeChain,
 };
 use ps30::core::gpu::{self as backend, Gpu, GpuOutput, TargetKind};
 use ps30::core::image::VolumeLevel;
@@ -313,5 +313,94 @@ fn unbound_cube_and_volume_samplers_read_the_default() {
         let (e, o) = both(&g, &s, &d);
         assert_close(dcl, &e, &o, 0.0);
         assert_eq!(o.color[0].as_ref().unwrap()[0], [0.0, 0.0, 0.0, 1.0]);
+    }
+}
+
+/// Texel (x, y) of [`nonfinite_texels`]: its own value on every channel.
+fn texel_value(x: usize, y: usize) -> [f32; 4] {
+    let i = (y * 4 + x) as f32;
+    [i / 16.0, 1.0 - i / 16.0, x as f32 / 4.0, y as f32 / 4.0]
+}
+
+fn nonfinite_texels() -> Vec<[f32; 4]> {
+    (0..16).map(|i| texel_value(i % 4, i / 4)).collect()
+}
+
+/// What a lookup at `u` (non-finite) and v = 0.375 (row 1's centre, so v
+/// contributes no blend) reads under CLAMP, BORDER and MIRRORONCE, by the
+/// rule of docs/textures.md ("Non-finite coordinates"), derived by hand:
+/// +∞ and −∞ are the far and near edge texels under CLAMP, the border colour
+/// under BORDER, the far edge under MIRRORONCE (|−∞| = +∞); NaN is u = 0 —
+/// texel 0 under CLAMP and MIRRORONCE with either filter, and under BORDER
+/// texel 0 when point sampled, half texel 0 and half border when linear
+/// (the taps of u·4 − ½ = −½ are −1 and 0 with weights ½).
+fn nonfinite_expected(mode: Address, filter: Filter, u: f32, border: [f32; 4]) -> [f32; 4] {
+    let (first, last) = (texel_value(0, 1), texel_value(3, 1));
+    match (mode, u.is_nan(), u > 0.0) {
+        (Address::Border, true, _) if filter == Filter::Linear => {
+            std::array::from_fn(|c| first[c] * 0.5 + border[c] * 0.5)
+        }
+        (_, true, _) => first,
+        (Address::Border, false, _) => border,
+        (Address::MirrorOnce, false, _) => last,
+        (_, false, true) => last,
+        (_, false, false) => first,
+    }
+}
+
+/// Lookups at +∞, −∞ and NaN on u (from constants, any bit pattern) with
+/// each address mode and filter: the emulator reads what the rule says
+/// (derived by hand for CLAMP, BORDER and MIRRORONCE; WRAP and MIRROR have
+/// no evidence and are only compared), and the GPU backend — whose Vulkan
+/// lookup would be undefined there — reads the same, bit for bit but for
+/// the rounding of a ½ · a + ½ · b blend (2⁻²⁰ for texels in [0, 1]).
+#[test]
+fn non_finite_coordinates_clamp_to_the_edge_on_both_backends() {
+    let texels = nonfinite_texels();
+    let s = shader("ps_3_0\ndcl_2d s0\nmov r1, c0\ntexld r0, r1, s0\nmov oC0, r0\n");
+    let compiled = emu::compile(&s).unwrap();
+    let g = gpu("non_finite_coordinates_clamp_to_the_edge_on_both_backends");
+    let border = [0.25, 0.5, 0.75, 1.0];
+    let modes = [
+        Address::Clamp,
+        Address::Border,
+        Address::MirrorOnce,
+        Address::Wrap,
+        Address::Mirror,
+    ];
+    for mode in modes {
+        for filter in [Filter::Point, Filter::Linear] {
+            for u in [f32::INFINITY, f32::NEG_INFINITY, f32::NAN] {
+                let mut d = Draw::new(2, 2);
+                d.constants.float = vec![[u, 0.375, 0.0, 0.0]];
+                d.samplers.push((
+                    0,
+                    Texture {
+                        width: 4,
+                        height: 4,
+                        texels: &texels,
+                    }
+                    .into(),
+                    SamplerState {
+                        address_u: mode,
+                        address_v: mode,
+                        address_w: mode,
+                        border,
+                        ..SamplerState::filtered(filter)
+                    },
+                ));
+                let what = format!("{mode:?} {filter:?} u = {u}");
+                let e = emu::run(&compiled, &d).unwrap();
+                let got = e.color[0].as_ref().unwrap()[0];
+                if !matches!(mode, Address::Wrap | Address::Mirror) {
+                    let want = nonfinite_expected(mode, filter, u, border);
+                    assert_eq!(got, want, "{what}: the emulator");
+                }
+                if let Some(g) = &g {
+                    let o = backend::run(g, &s, &d, TargetKind::Raw).unwrap();
+                    assert_close(&what, &e, &o, 1.0 / 1048576.0);
+                }
+            }
+        }
     }
 }

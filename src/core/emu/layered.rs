@@ -200,6 +200,7 @@ impl<'a> Level3<'a> {
 
     /// One sample at (u, v, w) with `filter` (see the module docs).
     pub(super) fn sample(&self, filter: Filter, p: [f32; 3]) -> [f32; 4] {
+        let p = p.map(super::sample::finite_coordinate);
         let n = [self.w, self.h, self.d];
         let a = self.address;
         match filter {

@@ -38,6 +38,26 @@ use super::{Address, Filter, MipFilter, SamplerState, Texture, TextureLevels, LA
 
 pub use super::layered::MAX_TEXTURE_SIDE;
 
+/// A coordinate as the sampler addresses it: +∞ is taken as 2 and −∞ as
+/// −1 (past the far and near edges, whatever the level's size), NaN as 0;
+/// finite values are unchanged. Under CLAMP a lookup at ±∞ so reads the
+/// edge texel, as Direct3D 9 hardware does, and under BORDER the border
+/// colour (see docs/textures.md, "Non-finite coordinates", for the rule
+/// under each address mode and its evidence). The translation applies the
+/// same replacement (`core/translate/texture.rs`), so both backends agree.
+#[inline(always)]
+pub(super) fn finite_coordinate(u: f32) -> f32 {
+    if u.is_nan() {
+        0.0
+    } else if u == f32::INFINITY {
+        2.0
+    } else if u == f32::NEG_INFINITY {
+        -1.0
+    } else {
+        u
+    }
+}
+
 /// Texel index meaning "border colour" (textures have fewer texels).
 const BORDER: u32 = u32::MAX;
 
@@ -169,7 +189,8 @@ impl<'a> Level<'a> {
     /// Point sampling with any address mode.
     #[inline(always)]
     pub fn point(&self, u: f32, v: f32) -> [f32; 4] {
-        // `as` saturates (NaN gives 0), so any coordinate is safe.
+        let (u, v) = (finite_coordinate(u), finite_coordinate(v));
+        // `as` saturates (a finite u·n past i64 stays past the edge).
         let x = floor(u * self.wf) as i64;
         let y = floor(v * self.hf) as i64;
         self.fetch(address(x, self.wi, self.au), address(y, self.hi, self.av))
@@ -179,6 +200,7 @@ impl<'a> Level<'a> {
     /// luminance-pass default), or [`BORDER`]. NaN fails the comparisons.
     #[inline(always)]
     fn point_border_index(&self, u: f32, v: f32) -> u32 {
+        let (u, v) = (finite_coordinate(u), finite_coordinate(v));
         let x = u * self.wf;
         let y = v * self.hf;
         let inside = x >= 0.0 && x < self.wf && y >= 0.0 && y < self.hf;
@@ -195,6 +217,7 @@ impl<'a> Level<'a> {
     /// Bilinear sampling.
     #[inline(always)]
     pub fn linear(&self, u: f32, v: f32) -> [f32; 4] {
+        let (u, v) = (finite_coordinate(u), finite_coordinate(v));
         let fu = u * self.wf - 0.5;
         let fv = v * self.hf - 0.5;
         let (tu, tv) = (floor(fu), floor(fv));
@@ -425,7 +448,7 @@ impl<'a> Sampler<'a> {
         let one = |i: usize| match &self.shape {
             Shape::Flat => self.levels[i].sample(filter, p[0], p[1]),
             Shape::Cube(faces) => {
-                let (f, s, tc) = cube_face(p);
+                let (f, s, tc) = cube_face(p.map(finite_coordinate));
                 faces[f][i].sample(filter, s, tc)
             }
             Shape::Volume(v) => v[i].sample(filter, p),
