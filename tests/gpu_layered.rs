@@ -98,7 +98,7 @@ fn cube(mips: bool) -> CubeMap {
 /// [0.125, 0.875] on a 4-texel face) — and s·4 is never an integer.
 fn across_face(axis: usize) -> LinearInput {
     let major = axis / 2;
-    let sign = if axis % 2 == 0 { 1.7 } else { -1.7 };
+    let sign = if axis.is_multiple_of(2) { 1.7 } else { -1.7 };
     let (a, b) = ((major + 1) % 3, (major + 2) % 3);
     let mut base = [0.0; 4];
     let (mut ddx, mut ddy) = ([0.0; 4], [0.0; 4]);
@@ -116,7 +116,8 @@ fn cube_maps_pick_faces_and_texels_as_the_emulator() {
         return;
     };
     let map = cube(false);
-    let texld = shader("ps_3_0\ndcl_texcoord0 v0.xyz\ndcl_cube s0\ntexld r0, v0, s0\nmov oC0, r0\n");
+    let texld =
+        shader("ps_3_0\ndcl_texcoord0 v0.xyz\ndcl_cube s0\ntexld r0, v0, s0\nmov oC0, r0\n");
     // texldp divides by w = 2 first (the direction, so the face, is unchanged).
     let texldp = shader(
         "ps_3_0\ndcl_texcoord0 v0.xyz\ndcl_cube s0\ndef c0, 2, 2, 2, 2\nmul r1, v0.xyzz, c0\nmov r1.w, c0.w\ntexldp r0, r1, s0\nmov oC0, r0\n",
@@ -258,7 +259,12 @@ fn volume_textures_address_and_filter_as_the_emulator() {
                     Filter::Point => 0.0,
                     Filter::Linear => VOLUME_BOUND,
                 };
-                assert_close(&format!("{mode:?} {border:?} {filter:?} w {w}"), &e, &o, bound);
+                assert_close(
+                    &format!("{mode:?} {border:?} {filter:?} w {w}"),
+                    &e,
+                    &o,
+                    bound,
+                );
             }
         }
     }
@@ -402,5 +408,40 @@ fn non_finite_coordinates_clamp_to_the_edge_on_both_backends() {
                 }
             }
         }
+    }
+}
+
+/// `ps30 compare` runs the DDS cube and volume draws of docs/textures.md
+/// on both backends: the cube (point filtered) bit for bit, the volume
+/// (trilinear) within rounding, its difference explained by the device's
+/// filtering rather than reported as a finding.
+#[test]
+fn compare_runs_cube_and_volume_draws_from_dds_files() {
+    if gpu("compare_runs_cube_and_volume_draws_from_dds_files").is_none() {
+        return;
+    }
+    for (shader, inputs, why) in [
+        (
+            "asm/textures/cube-lod.psh",
+            "asm/textures/cube.json",
+            "why: bit-identical",
+        ),
+        (
+            "asm/textures/volume.psh",
+            "asm/textures/volume.json",
+            "s0 (volume) filters linearly",
+        ),
+    ] {
+        let o = crate::common::bin::in_repo(&[
+            "compare", shader, "--inputs", inputs, "--target", "4x4",
+        ]);
+        let out = crate::common::bin::stdout(&o);
+        assert!(
+            o.status.success(),
+            "{shader}: {out}{}",
+            crate::common::bin::stderr(&o)
+        );
+        assert!(out.contains(why), "{shader}: {out}");
+        assert!(!out.contains("FINDING"), "{shader}: {out}");
     }
 }

@@ -646,7 +646,10 @@ impl Bindings {
             views.push((s.texture_binding, view));
             samplers.push((s.sampler_binding, sampler));
             let dimension = texture::view_dimension(s.ty);
-            layout_entries.push(entry(s.texture_binding, texture_type(filterable, dimension)));
+            layout_entries.push(entry(
+                s.texture_binding,
+                texture_type(filterable, dimension),
+            ));
             layout_entries.push(entry(
                 s.sampler_binding,
                 wgpu::BindingType::Sampler(if filterable {

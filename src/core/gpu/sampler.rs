@@ -135,7 +135,12 @@ pub(super) fn map(
         lod.map(f32::to_bits),
         border.map(f32::to_bits),
         [mirror_once[0], mirror_once[1], mirror_once[2], 0],
-        [border_axes[0], border_axes[1], border_axes[2], border_filter],
+        [
+            border_axes[0],
+            border_axes[1],
+            border_axes[2],
+            border_filter,
+        ],
     ];
     for (i, w) in words.iter().flatten().enumerate() {
         block[4 * i..4 * i + 4].copy_from_slice(&w.to_le_bytes());

@@ -96,7 +96,11 @@ fn unbound<'a>(ty: SamplerType) -> (Vec<Write<'a>>, (u32, u32, u32), wgpu::Textu
     };
     match ty {
         SamplerType::Tex2d => (vec![one(0)], (1, 1, 1), wgpu::TextureDimension::D2),
-        SamplerType::Cube => ((0..6).map(one).collect(), (1, 1, 6), wgpu::TextureDimension::D2),
+        SamplerType::Cube => (
+            (0..6).map(one).collect(),
+            (1, 1, 6),
+            wgpu::TextureDimension::D2,
+        ),
         SamplerType::Volume => (vec![one(0)], (1, 1, 1), wgpu::TextureDimension::D3),
     }
 }

@@ -204,11 +204,7 @@ impl Lower<'_> {
             let v = l.fb.f32(v);
             l.fb.splat(v, size)
         };
-        let (near, far, zero) = (
-            splat_f(self, -1.0),
-            splat_f(self, 2.0),
-            splat_f(self, 0.0),
-        );
+        let (near, far, zero) = (splat_f(self, -1.0), splat_f(self, 2.0), splat_f(self, 0.0));
         let edge = self.fb.select(negative, near, far);
         let coord = self.fb.select(is_inf, edge, coord);
         self.fb.select(is_nan, zero, coord)
