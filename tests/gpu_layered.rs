@@ -59,6 +59,19 @@ fn assert_close(what: &str, e: &DrawOutput, o: &GpuOutput, bound: f32) {
     }
 }
 
+/// A sampler state: `mode` on all three axes, `filter` for MIN and MAG,
+/// `mip` between levels, `border` for BORDER.
+fn state(mode: Address, filter: Filter, mip: MipFilter, border: [f32; 4]) -> SamplerState {
+    SamplerState {
+        address_u: mode,
+        address_v: mode,
+        address_w: mode,
+        border,
+        mip_filter: mip,
+        ..SamplerState::filtered(filter)
+    }
+}
+
 const FACE_BOUND: f32 = 1.0 / 16.0 + 1.0 / 1048576.0;
 const VOLUME_BOUND: f32 = 3.0 / 32.0 + 1.0 / 1048576.0;
 
@@ -175,10 +188,7 @@ fn cube_mips_follow_texldl_and_texldd() {
             d.samplers.push((
                 0,
                 TextureLevels::Cube(&map),
-                SamplerState {
-                    mip_filter: MipFilter::Point,
-                    ..SamplerState::filtered(Filter::Point)
-                },
+                state(Address::Clamp, Filter::Point, MipFilter::Point, [0.0; 4]),
             ));
             let (e, o) = both(&g, s, &d);
             assert_close(&format!("{name} face {axis}"), &e, &o, 0.0);
@@ -246,13 +256,7 @@ fn volume_textures_address_and_filter_as_the_emulator() {
                 d.samplers.push((
                     0,
                     TextureLevels::Volume(&vol),
-                    SamplerState {
-                        address_u: mode,
-                        address_v: mode,
-                        address_w: mode,
-                        border,
-                        ..SamplerState::filtered(filter)
-                    },
+                    state(mode, filter, MipFilter::None, border),
                 ));
                 let (e, o) = both(&g, &s, &d);
                 let bound = match filter {
@@ -291,13 +295,7 @@ fn volume_mips_follow_texldl() {
     d.samplers.push((
         0,
         TextureLevels::Volume(&vol),
-        SamplerState {
-            mip_filter: MipFilter::Point,
-            address_u: Address::Wrap,
-            address_v: Address::Wrap,
-            address_w: Address::Wrap,
-            ..SamplerState::filtered(Filter::Point)
-        },
+        state(Address::Wrap, Filter::Point, MipFilter::Point, [0.0; 4]),
     ));
     let (e, o) = both(&g, &s, &d);
     assert_close("texldl volume", &e, &o, 0.0);
@@ -387,13 +385,7 @@ fn non_finite_coordinates_clamp_to_the_edge_on_both_backends() {
                         texels: &texels,
                     }
                     .into(),
-                    SamplerState {
-                        address_u: mode,
-                        address_v: mode,
-                        address_w: mode,
-                        border,
-                        ..SamplerState::filtered(filter)
-                    },
+                    state(mode, filter, MipFilter::None, border),
                 ));
                 let what = format!("{mode:?} {filter:?} u = {u}");
                 let e = emu::run(&compiled, &d).unwrap();

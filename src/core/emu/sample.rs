@@ -33,30 +33,10 @@
 // clearer than zipped iterators and vectorises the same.
 #![allow(clippy::needless_range_loop)]
 
-use super::layered::{address, cube_face, Level3};
+use super::layered::{address, cube_face, finite_coordinate, Level3};
 use super::{Address, Filter, MipFilter, SamplerState, Texture, TextureLevels, LANES};
 
 pub use super::layered::MAX_TEXTURE_SIDE;
-
-/// A coordinate as the sampler addresses it: +∞ is taken as 2 and −∞ as
-/// −1 (past the far and near edges, whatever the level's size), NaN as 0;
-/// finite values are unchanged. Under CLAMP a lookup at ±∞ so reads the
-/// edge texel, as Direct3D 9 hardware does, and under BORDER the border
-/// colour (see docs/textures.md, "Non-finite coordinates", for the rule
-/// under each address mode and its evidence). The translation applies the
-/// same replacement (`core/translate/texture.rs`), so both backends agree.
-#[inline(always)]
-pub(super) fn finite_coordinate(u: f32) -> f32 {
-    if u.is_nan() {
-        0.0
-    } else if u == f32::INFINITY {
-        2.0
-    } else if u == f32::NEG_INFINITY {
-        -1.0
-    } else {
-        u
-    }
-}
 
 /// Texel index meaning "border colour" (textures have fewer texels).
 const BORDER: u32 = u32::MAX;
