@@ -24,6 +24,7 @@ mod damaged_inputs;
 mod docs;
 mod gen;
 mod gpu;
+mod gpu_layered;
 mod guide_tables;
 mod hostile;
 mod json_schema;

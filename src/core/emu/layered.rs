@@ -51,6 +51,28 @@ use crate::core::image::VolumeLevel;
 /// `sample.rs`'s `floor_index` is exact).
 pub const MAX_TEXTURE_SIDE: u32 = 1 << 22;
 
+/// A coordinate as the sampler addresses it: +∞ is taken as 2 and −∞ as
+/// −1 (past the far and near edges, whatever the level's size), NaN as 0;
+/// finite values are unchanged. Under CLAMP a lookup at ±∞ so reads the
+/// edge texel, as Direct3D 9 hardware does, and under BORDER the border
+/// colour (see docs/textures.md, "Non-finite coordinates", for the rule
+/// under each address mode and its evidence). The translation applies the
+/// same replacement (`core/translate/texture.rs`), so both backends
+/// agree. Kept here because the 2D path (`sample.rs`) and the volume path
+/// both use it.
+#[inline(always)]
+pub(super) fn finite_coordinate(u: f32) -> f32 {
+    if u.is_nan() {
+        0.0
+    } else if u == f32::INFINITY {
+        2.0
+    } else if u == f32::NEG_INFINITY {
+        -1.0
+    } else {
+        u
+    }
+}
+
 /// Applies an address mode to an integer texel index; `None` = border.
 #[inline(always)]
 pub(super) fn address(t: i64, n: i64, mode: Address) -> Option<i64> {
@@ -200,6 +222,7 @@ impl<'a> Level3<'a> {
 
     /// One sample at (u, v, w) with `filter` (see the module docs).
     pub(super) fn sample(&self, filter: Filter, p: [f32; 3]) -> [f32; 4] {
+        let p = p.map(finite_coordinate);
         let n = [self.w, self.h, self.d];
         let a = self.address;
         match filter {

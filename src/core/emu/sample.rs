@@ -33,7 +33,7 @@
 // clearer than zipped iterators and vectorises the same.
 #![allow(clippy::needless_range_loop)]
 
-use super::layered::{address, cube_face, Level3};
+use super::layered::{address, cube_face, finite_coordinate, Level3};
 use super::{Address, Filter, MipFilter, SamplerState, Texture, TextureLevels, LANES};
 
 pub use super::layered::MAX_TEXTURE_SIDE;
@@ -169,7 +169,8 @@ impl<'a> Level<'a> {
     /// Point sampling with any address mode.
     #[inline(always)]
     pub fn point(&self, u: f32, v: f32) -> [f32; 4] {
-        // `as` saturates (NaN gives 0), so any coordinate is safe.
+        let (u, v) = (finite_coordinate(u), finite_coordinate(v));
+        // `as` saturates (a finite u·n past i64 stays past the edge).
         let x = floor(u * self.wf) as i64;
         let y = floor(v * self.hf) as i64;
         self.fetch(address(x, self.wi, self.au), address(y, self.hi, self.av))
@@ -179,6 +180,7 @@ impl<'a> Level<'a> {
     /// luminance-pass default), or [`BORDER`]. NaN fails the comparisons.
     #[inline(always)]
     fn point_border_index(&self, u: f32, v: f32) -> u32 {
+        let (u, v) = (finite_coordinate(u), finite_coordinate(v));
         let x = u * self.wf;
         let y = v * self.hf;
         let inside = x >= 0.0 && x < self.wf && y >= 0.0 && y < self.hf;
@@ -195,6 +197,7 @@ impl<'a> Level<'a> {
     /// Bilinear sampling.
     #[inline(always)]
     pub fn linear(&self, u: f32, v: f32) -> [f32; 4] {
+        let (u, v) = (finite_coordinate(u), finite_coordinate(v));
         let fu = u * self.wf - 0.5;
         let fv = v * self.hf - 0.5;
         let (tu, tv) = (floor(fu), floor(fv));
@@ -425,7 +428,7 @@ impl<'a> Sampler<'a> {
         let one = |i: usize| match &self.shape {
             Shape::Flat => self.levels[i].sample(filter, p[0], p[1]),
             Shape::Cube(faces) => {
-                let (f, s, tc) = cube_face(p);
+                let (f, s, tc) = cube_face(p.map(finite_coordinate));
                 faces[f][i].sample(filter, s, tc)
             }
             Shape::Volume(v) => v[i].sample(filter, p),

@@ -1,11 +1,12 @@
 //! One draw on the device: resources from an [`emu::Draw`], one triangle
 //! over the target, and the targets read back into the emulator's layout.
 
-use super::sampler;
+use super::{sampler, texture};
 use super::{Gpu, GpuError};
 use crate::core::emu::{self, Draw};
 use crate::core::image::{unorm8_value, Encoding, TargetFormat};
 use crate::core::ir::Shader;
+use crate::core::isa::SamplerType;
 use crate::core::translate::{self, interface, Entry};
 use rayon::prelude::*;
 use std::borrow::Cow;
@@ -281,23 +282,11 @@ impl ErrorScopes {
     }
 }
 
-/// Refuses what the emulator refuses ([`emu::check`]), samplers other than
-/// 2D (not translated for the device yet), and targets larger than the device's.
+/// Refuses what the emulator refuses ([`emu::check`]) and targets larger
+/// than the device's.
 fn refuse(gpu: &Gpu, shader: &Shader, draw: &Draw) -> Result<(), GpuError> {
     let compiled = emu::compile(shader).map_err(GpuError::Draw)?;
     emu::check(&compiled, draw).map_err(GpuError::Draw)?;
-    if let Some(d) = shader
-        .program()
-        .samplers
-        .iter()
-        .find(|d| d.ty != crate::core::isa::SamplerType::Tex2d)
-    {
-        return Err(GpuError::Unsupported(format!(
-            "s{} is declared dcl_{}: the GPU backend draws 2D textures only (the emulator samples cube and volume textures)",
-            d.index,
-            d.ty.suffix()
-        )));
-    }
     let (w, h) = (draw.target_width, draw.target_height);
     let max = gpu.limits.max_texture_dimension_2d;
     if w > max || h > max {
@@ -653,10 +642,14 @@ impl Bindings {
         let mut views = Vec::new();
         let mut samplers = Vec::new();
         for s in &iface.samplers {
-            let (view, sampler) = bind_sampler(gpu, draw, s.register, &mut block)?;
+            let (view, sampler) = bind_sampler(gpu, draw, s.register, s.ty, &mut block)?;
             views.push((s.texture_binding, view));
             samplers.push((s.sampler_binding, sampler));
-            layout_entries.push(entry(s.texture_binding, texture_type(filterable, false)));
+            let dimension = texture::view_dimension(s.ty);
+            layout_entries.push(entry(
+                s.texture_binding,
+                texture_type(filterable, dimension),
+            ));
             layout_entries.push(entry(
                 s.sampler_binding,
                 wgpu::BindingType::Sampler(if filterable {
@@ -668,7 +661,7 @@ impl Bindings {
         }
         let inputs = (!iface.inputs.is_empty()).then(|| input_texture(gpu, draw, iface));
         if inputs.is_some() {
-            let ty = texture_type(false, true);
+            let ty = texture_type(false, wgpu::TextureViewDimension::D2Array);
             layout_entries.push(entry(interface::DRAW_INPUTS_BINDING, ty));
         }
         let buffer = device.create_buffer(&wgpu::BufferDescriptor {
@@ -731,15 +724,11 @@ fn entry(binding: u32, ty: wgpu::BindingType) -> wgpu::BindGroupLayoutEntry {
     }
 }
 
-/// A float texture binding: 2D, or a 2D array (the draw's inputs).
-fn texture_type(filterable: bool, array: bool) -> wgpu::BindingType {
+/// A float texture binding of `view_dimension` (a 2D array: the draw's inputs).
+fn texture_type(filterable: bool, view_dimension: wgpu::TextureViewDimension) -> wgpu::BindingType {
     wgpu::BindingType::Texture {
         sample_type: wgpu::TextureSampleType::Float { filterable },
-        view_dimension: if array {
-            wgpu::TextureViewDimension::D2Array
-        } else {
-            wgpu::TextureViewDimension::D2
-        },
+        view_dimension,
         multisampled: false,
     }
 }
@@ -774,16 +763,14 @@ fn constant_block(draw: &Draw) -> Vec<u8> {
     block
 }
 
-/// The levels bound to sampler `register` and its state. An unbound
+/// The texture bound to sampler `register` and its state. An unbound
 /// sampler reads (0, 0, 0, 1) (MS texldl---ps): no levels (a 1×1 texture of
-/// that value), clamped.
-fn bound<'d>(draw: &'d Draw, register: u32) -> (Vec<emu::Texture<'d>>, emu::SamplerState) {
+/// that value, `core/gpu/texture.rs`), clamped.
+fn bound<'d>(draw: &'d Draw, register: u32) -> (Option<emu::TextureLevels<'d>>, emu::SamplerState) {
     match draw.samplers.iter().find(|b| b.0 == register) {
-        Some((_, tex, state)) => (tex.views(), *state),
-        // An unbound sampler reads (0, 0, 0, 1) (MS texldl---ps): a
-        // 1×1 texture of that value, clamped.
+        Some((_, tex, state)) => (Some(*tex), *state),
         None => (
-            Vec::new(),
+            None,
             emu::SamplerState {
                 address_u: emu::Address::Clamp,
                 address_v: emu::Address::Clamp,
@@ -794,12 +781,17 @@ fn bound<'d>(draw: &'d Draw, register: u32) -> (Vec<emu::Texture<'d>>, emu::Samp
     }
 }
 
-/// Sampler `register`'s state mapped for the device, for a texture of its
-/// bound levels.
-fn mapped(gpu: &Gpu, draw: &Draw, register: u32) -> Result<sampler::Mapped, GpuError> {
+/// Sampler `register` (declared `ty`): its state mapped for the device,
+/// for a texture of its bound levels.
+fn mapped(
+    gpu: &Gpu,
+    draw: &Draw,
+    register: u32,
+    ty: SamplerType,
+) -> Result<sampler::Mapped, GpuError> {
     let (levels, state) = bound(draw, register);
-    let count = levels.len().max(1) as u32;
-    sampler::map(&state, count, register, gpu.clamp_to_border())
+    let count = levels.map_or(1, |l| l.len()) as u32;
+    sampler::map(&state, count, register, ty, gpu.clamp_to_border())
 }
 
 /// What the translation needs of each declared sampler under the draw's
@@ -811,7 +803,7 @@ fn specialisation(
 ) -> Result<translate::Specialisation, GpuError> {
     let mut spec = translate::Specialisation::general();
     for d in &shader.program().samplers {
-        spec.set(d.index, mapped(gpu, draw, d.index)?.spec);
+        spec.set(d.index, mapped(gpu, draw, d.index, d.ty)?.spec);
     }
     Ok(spec)
 }
@@ -823,10 +815,11 @@ fn bind_sampler(
     gpu: &Gpu,
     draw: &Draw,
     register: u32,
+    ty: SamplerType,
     block: &mut [u8],
 ) -> Result<(wgpu::TextureView, wgpu::Sampler), GpuError> {
     let (levels, _) = bound(draw, register);
-    let mapped = mapped(gpu, draw, register)?;
+    let mapped = mapped(gpu, draw, register, ty)?;
     if mapped.filtering && !gpu.float32_filterable() {
         return Err(GpuError::Unsupported(format!(
             "s{register} filters linearly and the device cannot filter 32-bit float textures (FLOAT32_FILTERABLE)"
@@ -834,98 +827,14 @@ fn bind_sampler(
     }
     block[interface::SAMPLERS_OFFSET as usize + 64 * register as usize..][..64]
         .copy_from_slice(&mapped.block);
-    let texture = upload(gpu, &levels, register)?;
-    let view = texture.create_view(&wgpu::TextureViewDescriptor {
+    let up = texture::upload(gpu, levels, ty, register)?;
+    let view = up.texture.create_view(&wgpu::TextureViewDescriptor {
+        dimension: Some(up.dimension),
         base_mip_level: mapped.base_level,
         mip_level_count: Some(mapped.level_count),
         ..Default::default()
     });
     Ok((view, gpu.device.create_sampler(&mapped.descriptor)))
-}
-
-/// An `Rgba32Float` texture with `levels` (none: the 1×1 unbound value).
-fn upload(gpu: &Gpu, levels: &[emu::Texture], sampler: u32) -> Result<wgpu::Texture, GpuError> {
-    let unbound = [[0.0f32, 0.0, 0.0, 1.0]];
-    let fallback = [emu::Texture {
-        width: 1,
-        height: 1,
-        texels: &unbound,
-    }];
-    let levels = if levels.is_empty() {
-        &fallback[..]
-    } else {
-        levels
-    };
-    let (w, h) = (levels[0].width, levels[0].height);
-    let max = gpu.limits.max_texture_dimension_2d;
-    if w > max || h > max {
-        return Err(GpuError::Unsupported(format!(
-            "s{sampler}: a {w}×{h} texture; the device's textures are at most {max} texels a side"
-        )));
-    }
-    for (i, l) in levels.iter().enumerate() {
-        let want = ((w >> i).max(1), (h >> i).max(1));
-        if (l.width, l.height) != want {
-            return Err(GpuError::Unsupported(format!(
-                "s{sampler}: mip level {i} is {}×{}, where Vulkan needs {}×{}",
-                l.width, l.height, want.0, want.1
-            )));
-        }
-    }
-    let texture = gpu.device.create_texture(&wgpu::TextureDescriptor {
-        label: None,
-        size: wgpu::Extent3d {
-            width: w,
-            height: h,
-            depth_or_array_layers: 1,
-        },
-        mip_level_count: levels.len() as u32,
-        sample_count: 1,
-        dimension: wgpu::TextureDimension::D2,
-        format: wgpu::TextureFormat::Rgba32Float,
-        usage: wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
-        view_formats: &[],
-    });
-    for (i, l) in levels.iter().enumerate() {
-        write_texels(gpu, &texture, i as u32, 0, l.width, l.height, l.texels);
-    }
-    Ok(texture)
-}
-
-fn write_texels(
-    gpu: &Gpu,
-    texture: &wgpu::Texture,
-    level: u32,
-    layer: u32,
-    w: u32,
-    h: u32,
-    texels: &[[f32; 4]],
-) {
-    // The device's Rgba32Float is little-endian f32, as the host's.
-    let bytes: &[u8] = bytemuck::cast_slice(texels);
-    gpu.queue.write_texture(
-        wgpu::TexelCopyTextureInfo {
-            texture,
-            mip_level: level,
-            origin: wgpu::Origin3d {
-                x: 0,
-                y: 0,
-                z: layer,
-            },
-            aspect: wgpu::TextureAspect::All,
-        },
-        bytes,
-        wgpu::TexelCopyBufferLayout {
-            offset: 0,
-            bytes_per_row: Some(16 * w),
-            rows_per_image: Some(h),
-        },
-        wgpu::Extent3d {
-            width: w,
-            height: h,
-            depth_or_array_layers: 1,
-        },
-    );
 }
 
 /// The inputs, evaluated per pixel with the emulator's formula, one layer
@@ -962,7 +871,7 @@ fn input_texture(gpu: &Gpu, draw: &Draw, iface: &translate::Interface) -> wgpu::
                     *t = value.at(x as f32, y as f32);
                 }
             });
-        write_texels(gpu, &texture, 0, layer as u32, w, h, &texels);
+        texture::write_texels(gpu, &texture, 0, layer as u32, (w, h, 1), &texels);
     }
     texture
 }

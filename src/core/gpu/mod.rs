@@ -34,6 +34,7 @@
 mod draw;
 mod runtime_dir;
 mod sampler;
+mod texture;
 
 pub use draw::{prepare, prepare_with, run, GpuOutput, Prepared, TargetKind};
 

@@ -8,6 +8,8 @@
 //! | BORDER, colour (0,0,0,0), (0,0,0,1), (1,1,1,1) | `ClampToBorder` with that colour |
 //! | BORDER, any other colour | `ClampToBorder` transparent black; the shader adds the colour (`border_mode`) |
 //! | MIRRORONCE | `ClampToEdge`; the shader takes \|u\| (`mirror_once`) |
+//! | ADDRESSW | the volume texture's w axis as U and V (2D: unused) |
+//! | any address mode on a cube map | none: the faces are clamped (`ClampToEdge`, which Vulkan ignores for cube lookups, filtering across faces) |
 //! | MAG/MINFILTER POINT, LINEAR | `Nearest`, `Linear` |
 //! | MIPFILTER NONE | a view of the base level only |
 //! | MIPFILTER POINT, LINEAR | the whole chain, `Nearest`/`Linear` between levels |
@@ -27,6 +29,7 @@
 
 use super::GpuError;
 use crate::core::emu::{Address, Filter, MipFilter, SamplerState};
+use crate::core::isa::SamplerType;
 use crate::core::translate::SamplerSpec;
 
 /// Everything the draw sets up for one `s#`.
@@ -60,14 +63,22 @@ fn hardware_border(c: [f32; 4]) -> Option<wgpu::SamplerBorderColor> {
     }
 }
 
-/// Maps `state` for a texture of `levels` levels.
+/// Maps `state` for a texture of `levels` levels declared `ty`.
 pub(super) fn map(
     state: &SamplerState,
     levels: u32,
     sampler: u32,
+    ty: SamplerType,
     clamp_to_border: bool,
 ) -> Result<Mapped, GpuError> {
-    let axes = [state.address_u, state.address_v];
+    // A 2D texture is addressed on u and v, a volume on u, v and w; a cube
+    // map's faces are clamped whatever the state says (see the module docs).
+    let axes = match ty {
+        SamplerType::Tex2d => vec![state.address_u, state.address_v],
+        SamplerType::Volume => vec![state.address_u, state.address_v, state.address_w],
+        SamplerType::Cube => Vec::new(),
+    };
+    let address = |i: usize| axes.get(i).copied().unwrap_or(Address::Clamp);
     let any_border = axes.contains(&Address::Border);
     if any_border && !clamp_to_border {
         return Err(GpuError::Unsupported(format!(
@@ -111,8 +122,9 @@ pub(super) fn map(
         [0.0; 4]
     };
     let flag = |on: bool| on as u32;
-    let mirror_once = axes.map(|a| flag(a == Address::MirrorOnce));
-    let border_axes = axes.map(|a| flag(emulate_border && a == Address::Border));
+    let mirror_once: [u32; 3] = std::array::from_fn(|i| flag(address(i) == Address::MirrorOnce));
+    let border_axes: [u32; 3] =
+        std::array::from_fn(|i| flag(emulate_border && address(i) == Address::Border));
     let border_filter = match (emulate_border, linear) {
         (false, _) => 0,
         (true, false) => 1,
@@ -122,8 +134,13 @@ pub(super) fn map(
     let words: [[u32; 4]; 4] = [
         lod.map(f32::to_bits),
         border.map(f32::to_bits),
-        [mirror_once[0], mirror_once[1], 0, 0],
-        [border_axes[0], border_axes[1], 0, border_filter],
+        [mirror_once[0], mirror_once[1], mirror_once[2], 0],
+        [
+            border_axes[0],
+            border_axes[1],
+            border_axes[2],
+            border_filter,
+        ],
     ];
     for (i, w) in words.iter().flatten().enumerate() {
         block[4 * i..4 * i + 4].copy_from_slice(&w.to_le_bytes());
@@ -131,9 +148,9 @@ pub(super) fn map(
     Ok(Mapped {
         descriptor: wgpu::SamplerDescriptor {
             label: None,
-            address_mode_u: mode(state.address_u),
-            address_mode_v: mode(state.address_v),
-            address_mode_w: wgpu::AddressMode::ClampToEdge,
+            address_mode_u: mode(address(0)),
+            address_mode_v: mode(address(1)),
+            address_mode_w: mode(address(2)),
             mag_filter: filter(state.mag_filter),
             min_filter: filter(state.min_filter),
             mipmap_filter: mip_filter,
@@ -173,7 +190,7 @@ mod tests {
 
     #[test]
     fn the_luminance_sampler_is_plain_hardware() {
-        let m = map(&SamplerState::default(), 1, 0, true).unwrap();
+        let m = map(&SamplerState::default(), 1, 0, SamplerType::Tex2d, true).unwrap();
         assert_eq!(
             m.descriptor.address_mode_u,
             wgpu::AddressMode::ClampToBorder
@@ -202,7 +219,7 @@ mod tests {
             border: [0.25, 0.5, 0.75, 1.0],
             ..SamplerState::filtered(Filter::Linear)
         };
-        let m = map(&s, 1, 3, true).unwrap();
+        let m = map(&s, 1, 3, SamplerType::Tex2d, true).unwrap();
         assert_eq!(m.descriptor.address_mode_v, wgpu::AddressMode::ClampToEdge);
         let w = words(&m.block);
         assert_eq!(w[4..8], [0.25f32, 0.5, 0.75, 1.0].map(f32::to_bits));
@@ -221,6 +238,7 @@ mod tests {
             },
             4,
             3,
+            SamplerType::Tex2d,
             true,
         );
         assert!(matches!(refused, Err(GpuError::Unsupported(_))));
@@ -233,7 +251,7 @@ mod tests {
             mip_lod_bias: 0.5,
             ..SamplerState::default()
         };
-        let m = map(&s, 4, 0, true).unwrap();
+        let m = map(&s, 4, 0, SamplerType::Tex2d, true).unwrap();
         assert_eq!((m.base_level, m.level_count), (2, 1));
         let w = words(&m.block);
         assert_eq!(f32::from_bits(w[0]), 2.5);
@@ -246,6 +264,7 @@ mod tests {
             },
             4,
             0,
+            SamplerType::Tex2d,
             true,
         )
         .unwrap();

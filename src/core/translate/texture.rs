@@ -22,6 +22,11 @@
 //! taps inside the texture on the marked axes (1 or 0 for point sampling;
 //! the bilinear weights on level 0 for linear).
 //!
+//! A non-finite coordinate is replaced before the lookup (+∞ by 2, −∞ by
+//! −1, NaN by 0, per axis) as the emulator does: under CLAMP a lookup at
+//! ±∞ reads the edge texel, as Direct3D 9 hardware does, where Vulkan
+//! leaves it undefined (docs/textures.md, "Non-finite coordinates").
+//!
 //! Each piece is emitted only where the sampler's [`SamplerSpec`] asks for
 //! it (`specialise.rs`): without `lod` the levels come unbiased (`texld` an
 //! implicit sample, `texldd` its gradients unscaled), without `mirror_once`
@@ -75,7 +80,8 @@ impl Lower<'_> {
         } else {
             a
         };
-        let mut coord = self.first(coord, dims);
+        let coord = self.first(coord, dims);
+        let mut coord = self.finite_coordinate(coord, dims);
         let spec = self.cx.spec.sampler(k);
         if tex.ty != SamplerType::Cube && spec.mirror_once {
             coord = self.mirror_once(k, coord, dims);
@@ -167,6 +173,41 @@ impl Lower<'_> {
                 None => SampleLevel::Auto,
             },
         })
+    }
+
+    /// The coordinate with +∞ replaced by 2, −∞ by −1 and NaN by 0 on each
+    /// axis, as the emulator addresses it (`core/emu/sample.rs`,
+    /// `finite_coordinate`): Vulkan leaves a lookup at a non-finite
+    /// coordinate undefined. Tested on the bits, so that no float
+    /// optimisation of the device's compiler can assume the values finite.
+    fn finite_coordinate(&mut self, coord: Expr, dims: u32) -> Expr {
+        let size = if dims == 2 {
+            VectorSize::Bi
+        } else {
+            VectorSize::Tri
+        };
+        let bits = self.fb.add(Expression::As {
+            expr: coord,
+            kind: naga::ScalarKind::Uint,
+            convert: None,
+        });
+        let splat_u = |l: &mut Self, v: u32| {
+            let v = l.fb.u32(v);
+            l.fb.splat(v, size)
+        };
+        let (abs_mask, inf) = (splat_u(self, 0x7fff_ffff), splat_u(self, 0x7f80_0000));
+        let magnitude = self.fb.binary(B::And, bits, abs_mask);
+        let is_nan = self.fb.binary(B::Greater, magnitude, inf);
+        let is_inf = self.fb.binary(B::Equal, magnitude, inf);
+        let negative = self.fb.binary(B::Greater, bits, abs_mask);
+        let splat_f = |l: &mut Self, v: f32| {
+            let v = l.fb.f32(v);
+            l.fb.splat(v, size)
+        };
+        let (near, far, zero) = (splat_f(self, -1.0), splat_f(self, 2.0), splat_f(self, 0.0));
+        let edge = self.fb.select(negative, near, far);
+        let coord = self.fb.select(is_inf, edge, coord);
+        self.fb.select(is_nan, zero, coord)
     }
 
     /// MIRRORONCE on the marked axes: |coordinate|.

@@ -265,6 +265,7 @@ pub fn compare_tonemap(
             killed_mismatches: 0,
             worst_inputs: Vec::new(),
             opcodes: super::opcodes(&[&loaded_tonemap()?]),
+            filtering: Vec::new(),
             explanation: None,
         },
         pixels,

@@ -256,6 +256,50 @@ pub fn tonemap(c: &TonemapComparison, probes: &[Probe]) -> Explanation {
     }
 }
 
+/// One clause per sampler of `draw` whose filtering Vulkan lets a device
+/// do otherwise than the emulator: linear filtering (the device may weigh
+/// taps with as few as 4 sub-texel bits, `subTexelPrecisionBits`; the
+/// emulator weighs in f32, so each axis's weight may be off by 2⁻⁵),
+/// MIPFILTER LINEAR (frac(λ) quantised likewise), and a cube map filtered
+/// linearly (Vulkan filters across faces; the emulator clamps each face,
+/// as Direct3D 9 hardware without seamless filtering does).
+pub fn filtering(draw: &crate::core::emu::Draw) -> Vec<String> {
+    use crate::core::emu::{Filter, MipFilter, TextureLevels};
+    let mut out = Vec::new();
+    for (k, tex, state) in &draw.samplers {
+        let linear = state.mag_filter == Filter::Linear || state.min_filter == Filter::Linear;
+        let blend = state.mip_filter == MipFilter::Linear && tex.len() > 1;
+        if !linear && !blend {
+            continue;
+        }
+        let (kind, axes) = match tex {
+            TextureLevels::Cube(_) => ("cube", 2),
+            TextureLevels::Volume(_) => ("volume", 3),
+            _ => ("2D", 2),
+        };
+        let mut parts = Vec::new();
+        if linear {
+            parts.push(format!(
+                "filters linearly on {axes} axes (a sample may move by up to {axes}·2⁻⁵ of its texels' range)"
+            ));
+        }
+        if blend {
+            parts.push("blends mip levels by a quantised frac(λ)".to_string());
+        }
+        if linear && kind == "cube" {
+            parts.push(
+                "filters across cube faces where the emulator clamps at each face's edge"
+                    .to_string(),
+            );
+        }
+        out.push(format!(
+            "s{k} ({kind}) {} — the device's filter weights need only 4 sub-texel bits in Vulkan",
+            parts.join(", ")
+        ));
+    }
+    out
+}
+
 /// A draw without a reference (the light models).
 pub fn draw(c: &DrawComparison, probes: &[Probe]) -> Explanation {
     let ops: Vec<&str> = c.opcodes.iter().map(String::as_str).collect();
@@ -283,6 +327,7 @@ pub fn draw(c: &DrawComparison, probes: &[Probe]) -> Explanation {
         // Values 0 ulp apart that are not identical are +0 and −0.
         clauses.push("they are zeros of opposite sign: the device need not keep the sign of a zero (a SPIR-V module without SignedZeroInfNanPreserve lets its compiler drop it)".into());
     }
+    clauses.extend(c.filtering.iter().cloned());
     let mut parts = Vec::new();
     if flushed > 0 {
         parts.push(format!(

@@ -85,6 +85,9 @@ pub struct DrawComparison {
     pub worst_inputs: Vec<PixelInputs>,
     /// The instructions the shader uses (mnemonics), for the explanation.
     pub opcodes: Vec<String>,
+    /// The draw's samplers whose filtering the device may do otherwise
+    /// than the emulator ([`explain::filtering`]), one clause each.
+    pub filtering: Vec<String>,
     /// Why the backends differ; set by [`explain`] once probes ran.
     pub explanation: Option<explain::Explanation>,
 }
@@ -235,6 +238,7 @@ pub fn compare_draw(
         killed_mismatches,
         worst_inputs,
         opcodes: opcodes(&[&loaded.shader]),
+        filtering: explain::filtering(draw),
         explanation: None,
     })
 }

@@ -1,0 +1,218 @@
+//! A sampler's texture on the device, as the emulator sees it: a 2D
+//! texture with its levels, a cube map (six array layers in D3DCUBEMAP_FACES
+//! order +X, −X, +Y, −Y, +Z, −Z, each face with its own levels, viewed as a
+//! cube) or a volume texture (3D, each level halving all three sides).
+//!
+//! Levels go up as given — box-filtered, authored in a DDS file, or decoded
+//! from DXT blocks by `core/image` — in `Rgba32Float`, so the device reads
+//! the very values the emulator reads. Vulkan's layer order and face table
+//! are Direct3D's (Vulkan §16.5.4, "Cube Map Face Selection"), and a face's
+//! row 0 is its top row in both, so faces are copied without reordering.
+//! A declared sampler with nothing bound reads (0, 0, 0, 1): a 1×1 texture
+//! (six 1×1 faces, a 1×1×1 volume) of that value.
+
+use super::{Gpu, GpuError};
+use crate::core::emu::{Texture, TextureLevels};
+use crate::core::isa::SamplerType;
+
+/// A texture uploaded for one sampler and the view dimension it is bound as.
+pub(super) struct Uploaded {
+    pub texture: wgpu::Texture,
+    pub dimension: wgpu::TextureViewDimension,
+}
+
+/// One copy into the texture: `texels` at `level`, starting at layer (or
+/// slice) `z`, `w × h × d` texels.
+struct Write<'a> {
+    level: u32,
+    z: u32,
+    size: (u32, u32, u32),
+    texels: &'a [[f32; 4]],
+}
+
+/// The view dimension a declaration binds (`dcl_2d`, `dcl_cube`, `dcl_volume`).
+pub(super) fn view_dimension(ty: SamplerType) -> wgpu::TextureViewDimension {
+    match ty {
+        SamplerType::Tex2d => wgpu::TextureViewDimension::D2,
+        SamplerType::Cube => wgpu::TextureViewDimension::Cube,
+        SamplerType::Volume => wgpu::TextureViewDimension::D3,
+    }
+}
+
+const UNBOUND: [[f32; 4]; 1] = [[0.0, 0.0, 0.0, 1.0]];
+
+/// The copies of `levels`, with the texture's level-0 size (width, height,
+/// layers or depth) and its dimension.
+fn writes<'a>(
+    levels: TextureLevels<'a>,
+) -> (Vec<Write<'a>>, (u32, u32, u32), wgpu::TextureDimension) {
+    let flat = |i: usize, t: Texture<'a>, z: u32| Write {
+        level: i as u32,
+        z,
+        size: (t.width, t.height, 1),
+        texels: t.texels,
+    };
+    match levels {
+        TextureLevels::Single(_) | TextureLevels::Chain(_) => {
+            let views = levels.views();
+            let size = (views[0].width, views[0].height, 1);
+            let w = views.into_iter().enumerate().map(|(i, t)| flat(i, t, 0));
+            (w.collect(), size, wgpu::TextureDimension::D2)
+        }
+        TextureLevels::Cube(c) => {
+            let e = c.edge();
+            let w = (0..6).flat_map(|f| {
+                let views = c.face(f).views();
+                views
+                    .into_iter()
+                    .enumerate()
+                    .map(move |(i, t)| flat(i, t, f as u32))
+            });
+            (w.collect(), (e, e, 6), wgpu::TextureDimension::D2)
+        }
+        TextureLevels::Volume(v) => {
+            let w = (0..v.len()).filter_map(|i| v.level(i)).enumerate();
+            let w: Vec<Write> = w
+                .map(|(i, l)| Write {
+                    level: i as u32,
+                    z: 0,
+                    size: (l.width, l.height, l.depth),
+                    texels: &l.texels,
+                })
+                .collect();
+            let size = w[0].size;
+            (w, size, wgpu::TextureDimension::D3)
+        }
+    }
+}
+
+/// The 1×1 texture of (0, 0, 0, 1) an unbound sampler of type `ty` reads.
+fn unbound<'a>(ty: SamplerType) -> (Vec<Write<'a>>, (u32, u32, u32), wgpu::TextureDimension) {
+    let one = |z| Write {
+        level: 0,
+        z,
+        size: (1, 1, 1),
+        texels: &UNBOUND,
+    };
+    match ty {
+        SamplerType::Tex2d => (vec![one(0)], (1, 1, 1), wgpu::TextureDimension::D2),
+        SamplerType::Cube => (
+            (0..6).map(one).collect(),
+            (1, 1, 6),
+            wgpu::TextureDimension::D2,
+        ),
+        SamplerType::Volume => (vec![one(0)], (1, 1, 1), wgpu::TextureDimension::D3),
+    }
+}
+
+/// Checks that the device holds a texture of `size` and that every level
+/// has the size Vulkan gives it (each side halved, at least 1).
+fn check(
+    gpu: &Gpu,
+    writes: &[Write],
+    size: (u32, u32, u32),
+    dimension: wgpu::TextureDimension,
+    sampler: u32,
+) -> Result<(), GpuError> {
+    let (w, h, d) = size;
+    let (max, sides) = match dimension {
+        wgpu::TextureDimension::D3 => (gpu.limits.max_texture_dimension_3d, [w, h, d]),
+        _ => (gpu.limits.max_texture_dimension_2d, [w, h, 1]),
+    };
+    if sides.iter().any(|&n| n > max) {
+        return Err(GpuError::Unsupported(format!(
+            "s{sampler}: a {w}×{h}{} texture; the device's textures are at most {max} texels a side",
+            if dimension == wgpu::TextureDimension::D3 {
+                format!("×{d}")
+            } else {
+                String::new()
+            }
+        )));
+    }
+    for wr in writes {
+        let i = wr.level;
+        let depth = if dimension == wgpu::TextureDimension::D3 {
+            (d >> i).max(1)
+        } else {
+            1
+        };
+        let want = ((w >> i).max(1), (h >> i).max(1), depth);
+        if wr.size != want {
+            return Err(GpuError::Unsupported(format!(
+                "s{sampler}: mip level {i} is {}×{}×{}, where Vulkan needs {}×{}×{}",
+                wr.size.0, wr.size.1, wr.size.2, want.0, want.1, want.2
+            )));
+        }
+    }
+    Ok(())
+}
+
+/// Uploads what sampler `sampler` (declared `ty`) reads: `levels`, or the
+/// unbound value.
+pub(super) fn upload(
+    gpu: &Gpu,
+    levels: Option<TextureLevels>,
+    ty: SamplerType,
+    sampler: u32,
+) -> Result<Uploaded, GpuError> {
+    let (writes, size, dimension) = match levels {
+        Some(l) => writes(l),
+        None => unbound(ty),
+    };
+    check(gpu, &writes, size, dimension, sampler)?;
+    let level_count = writes.iter().map(|w| w.level + 1).max().unwrap_or(1);
+    let texture = gpu.device.create_texture(&wgpu::TextureDescriptor {
+        label: None,
+        size: wgpu::Extent3d {
+            width: size.0,
+            height: size.1,
+            depth_or_array_layers: size.2,
+        },
+        mip_level_count: level_count,
+        sample_count: 1,
+        dimension,
+        format: wgpu::TextureFormat::Rgba32Float,
+        usage: wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
+        view_formats: &[],
+    });
+    for w in &writes {
+        write_texels(gpu, &texture, w.level, w.z, w.size, w.texels);
+    }
+    Ok(Uploaded {
+        texture,
+        dimension: view_dimension(ty),
+    })
+}
+
+/// Copies `texels` (`w × h × d`, row-major, slice after slice) into
+/// `level` of `texture` from layer or slice `z`.
+pub(super) fn write_texels(
+    gpu: &Gpu,
+    texture: &wgpu::Texture,
+    level: u32,
+    z: u32,
+    (w, h, d): (u32, u32, u32),
+    texels: &[[f32; 4]],
+) {
+    // The device's Rgba32Float is little-endian f32, as the host's.
+    let bytes: &[u8] = bytemuck::cast_slice(texels);
+    gpu.queue.write_texture(
+        wgpu::TexelCopyTextureInfo {
+            texture,
+            mip_level: level,
+            origin: wgpu::Origin3d { x: 0, y: 0, z },
+            aspect: wgpu::TextureAspect::All,
+        },
+        bytes,
+        wgpu::TexelCopyBufferLayout {
+            offset: 0,
+            bytes_per_row: Some(16 * w),
+            rows_per_image: Some(h),
+        },
+        wgpu::Extent3d {
+            width: w,
+            height: h,
+            depth_or_array_layers: d,
+        },
+    );
+}
