@@ -20,6 +20,7 @@ mod corpus;
 mod corpus_mode;
 mod cost;
 mod damaged_inputs;
+mod decompile;
 mod docs;
 mod gen;
 mod gpu;
