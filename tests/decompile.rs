@@ -285,3 +285,43 @@ fn the_recompiled_corpus_runs_identically() {
         problems.join("\n")
     );
 }
+
+#[test]
+fn verify_without_the_oracle_says_what_is_missing_and_exits_3() {
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_ps30"))
+        .args([
+            "decompile",
+            "tests/oracle/fixtures/hlsl/lighting/blinn_phong.hlsl.fxo",
+            "--verify",
+        ])
+        .current_dir(root())
+        .env("PS30_ORACLE", root().join("target/no-such-oracle"))
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(3), "{err}");
+    assert!(
+        err.contains("Microsoft's compiler is not installed"),
+        "{err}"
+    );
+    assert!(err.contains("tools/oracle/setup.sh"), "{err}");
+}
+
+#[test]
+fn a_shader_the_hlsl_cannot_express_is_refused_naming_the_instruction() {
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_ps30"))
+        .args([
+            "decompile",
+            "tests/oracle/fixtures/hlsl/listing/loop-input-array.hlsl.fxo",
+        ])
+        .current_dir(root())
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("cannot decompile instruction") && err.contains("v[aL + n]"),
+        "{err}"
+    );
+    assert!(o.stdout.is_empty());
+}
