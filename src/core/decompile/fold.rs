@@ -3,9 +3,9 @@
 //! straight run of code (no flow control between), through one operand,
 //! and dead after that read (overwritten before any other read, or the end
 //! of `main`) is not given a statement of its own; the reader takes the
-//! expression. Its operands must not change between the two. Moving the
-//! expression changes nothing the compiler sees: it builds the same
-//! data-flow graph from either text.
+//! expression. Its operands must not change between the two, so the
+//! value is the same; the instructions the compiler chooses for it may not
+//! be, which the corpus test (`tests/decompile.rs`) measures.
 
 use super::expr::{lanes, matrix_rows};
 use crate::core::ir::{Instruction, Shader};
