@@ -25,6 +25,7 @@ fn main() -> ExitCode {
         Command::Asm(args) => cli::asm::run(args, &ui),
         Command::Check(args) => cli::check::run(args, &ui),
         Command::Disasm(args) => cli::disasm::run(args, &ui),
+        Command::Decompile(args) => cli::decompile::run(args, &ui),
         Command::Expand(args) => cli::expand::run(args, &ui),
         Command::Run(args) => cli::run::run(args, &ui),
         Command::Luminance(args) => cli::luminance::run(args, &ui),
@@ -45,6 +46,7 @@ fn main() -> ExitCode {
         Ok(Outcome::Ok) => ExitCode::SUCCESS,
         Ok(Outcome::Problem) => ExitCode::from(1),
         Ok(Outcome::Refused) => ExitCode::from(2),
+        Ok(Outcome::Unavailable) => ExitCode::from(3),
         Err(BadInput(msg)) => {
             cli::io::eprint(&format!("error: {msg}\n"));
             ExitCode::from(2)

@@ -210,6 +210,8 @@ fn every_command_matches_the_schema() {
     assert_eq!(v["crc32"].as_str().map(str::len), Some(8));
     let out = t("two.fxo");
     let a = check("asm", &["asm", &two, "-o", &out, "--json"], repo, &[0]);
+    let d = check("decompile", &["decompile", &two, "--json"], repo, &[0]);
+    assert!(d["hlsl"].as_str().unwrap().contains("texCUBEbias("), "{d}");
     assert_eq!(a["crc32"], v["crc32"]);
     check(
         "check",

@@ -21,6 +21,7 @@ mod corpus_mode;
 mod cost;
 mod d3d9_conformance;
 mod damaged_inputs;
+mod decompile;
 mod docs;
 mod gen;
 mod gpu;

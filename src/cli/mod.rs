@@ -5,7 +5,8 @@
 //! only parses and dispatches. Nothing in the library imports from here.
 //!
 //! Exit codes: 0 ok; 1 the check found a problem (a limit exceeded, a claim
-//! or cross-check that disagrees); 2 bad input or usage. A closed stdout
+//! or cross-check that disagrees); 2 bad input or usage; 3 a tool the
+//! command needs is missing (`decompile --verify` without the oracle). A closed stdout
 //! (e.g. piping into `head`) counts as success. Interrupted by SIGINT,
 //! SIGTERM or SIGHUP, the command removes its temporary output files and
 //! exits with 130.
@@ -16,6 +17,7 @@ pub mod check;
 pub mod compare;
 pub mod completions;
 pub mod corpus;
+pub mod decompile;
 pub mod disasm;
 pub mod expand;
 pub mod io;
@@ -75,6 +77,10 @@ pub enum Command {
         after_help = "The listing shows the constant table as fxc does (parameters and registers) and keeps\nevery comment block as `//#comment` lines of hexadecimal tokens, so `ps30 asm` turns it\nback into the same bytes. Assembly given as input is assembled first.\n\nExamples:\n  ps30 disasm p2.fxo\n  ps30 disasm shader.fxo --json"
     )]
     Disasm(disasm::Args),
+    #[command(
+        after_help = "Exit codes: 0 written (with --verify: the recompiled shader computes the same values,\nbit for bit); 1 --verify found a difference or the compiler refused the HLSL; 2 bad input\nor a shader the HLSL cannot express; 3 --verify without Microsoft's compiler installed.\n\nExamples:\n  ps30 decompile shader.fxo -o shader.hlsl\n  ps30 decompile shader.fxo --verify"
+    )]
+    Decompile(decompile::Args),
     /// Print the shader as plain ps_3_0 assembly with every macro expanded.
     #[command(
         after_help = "Examples:\n  ps30 expand asm/article/lum_pass2.psh -D xsize=11 -D ysize=8\n  ps30 expand asm/article/lum_pass1_unrolled.psh -o unrolled.psh\n  ps30 expand asm/article/lum_pass2.psh -D xsize=11 -D ysize=8 --json"
@@ -191,6 +197,8 @@ pub enum Outcome {
     /// Some input was refused and its reasons are already printed (exit 2,
     /// corpus mode's mixed results).
     Refused,
+    /// A tool the command needs is not installed (exit 3).
+    Unavailable,
 }
 
 impl Outcome {

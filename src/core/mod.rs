@@ -21,6 +21,7 @@
 pub mod audit;
 pub mod bytecode;
 pub mod cost;
+pub mod decompile;
 pub mod diag;
 pub mod emu;
 pub mod float_rules;

@@ -32,6 +32,7 @@ pub mod bundled;
 pub mod compare;
 pub mod conformance;
 pub mod corpus;
+pub mod decompile;
 pub mod gen;
 pub mod luminance;
 pub mod outputs;

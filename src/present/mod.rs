@@ -6,6 +6,7 @@ pub mod check;
 pub mod compare;
 pub mod constants;
 pub mod corpus;
+pub mod decompile;
 pub mod disasm;
 pub mod json;
 pub mod luminance;

@@ -1,0 +1,90 @@
+//! `ps30 decompile`: a ps_3_0 shader (bytecode or assembly) as HLSL, and
+//! with `--verify` the proof that the HLSL means what the shader meant:
+//! Microsoft's compiler compiles it and both run in the emulator on the
+//! same inputs.
+
+use super::args::{InputArgs, SourceArgs};
+use super::io::{eprint, load_shader, print, print_json};
+use super::ui::Ui;
+use super::{BadInput, Outcome};
+use ps30::core::decompile;
+use ps30::jobs::decompile::{self as job, Verdict};
+use ps30::present::decompile as present;
+use std::path::PathBuf;
+
+#[derive(clap::Args)]
+pub struct Args {
+    /// Shader: ps_3_0 bytecode or assembly, a bundled name, or `-` for standard input.
+    shader: String,
+    /// Write the HLSL to this file (atomically) instead of standard output.
+    #[arg(short, long, value_name = "FILE")]
+    output: Option<PathBuf>,
+    /// Compile the HLSL with Microsoft's compiler (tools/oracle/setup.sh installs it into
+    /// target/oracle, or name its folder with PS30_ORACLE) and run both shaders in the
+    /// emulator on the same random and edge-case inputs. Exit 1 when they differ, 3 when the
+    /// compiler is not installed.
+    #[arg(long)]
+    verify: bool,
+    /// Pixels per verification draw (the side of a square target).
+    #[arg(long, default_value_t = 64, value_parser = clap::value_parser!(u32).range(2..=512))]
+    verify_size: u32,
+    /// Print JSON (the HLSL, its counts, and with --verify the verdict) instead of the HLSL.
+    #[arg(long)]
+    json: bool,
+    #[command(flatten)]
+    source: SourceArgs,
+    #[command(flatten)]
+    input: InputArgs,
+}
+
+pub fn run(args: Args, ui: &Ui) -> super::Result {
+    if let Some(out) = &args.output {
+        super::io::check_output_path(out, &[std::path::Path::new(&args.shader)])?;
+    }
+    let loaded = load_shader(ui, &args.shader, &args.source, &args.input)?;
+    let d = decompile::decompile(&loaded.shader, loaded.constants.as_ref())
+        .map_err(|e| BadInput(format!("{}: {e}", loaded.file.name)))?;
+    if let Some(path) = &args.output {
+        ps30::core::output::write_bytes(path, d.hlsl.as_bytes())
+            .map_err(|e| BadInput(format!("{}: {e}", path.display())))?;
+        if !ui.quiet && !args.json {
+            eprint(&format!(
+                "wrote {} ({} lines of HLSL)\n",
+                path.display(),
+                d.hlsl.lines().count()
+            ));
+        }
+    }
+    let verdict = if args.verify {
+        let oracle = job::Oracle::find().map_err(|e| BadInput(e.to_string()));
+        let oracle = match oracle {
+            Ok(o) => o,
+            Err(e) => {
+                eprint(&format!("ps30: {}\n", e.0));
+                return Ok(Outcome::Unavailable);
+            }
+        };
+        Some(
+            job::verify(&loaded.shader, &d, &oracle, args.verify_size)
+                .map_err(|e| BadInput(format!("{}: {e}", loaded.file.name)))?,
+        )
+    } else {
+        None
+    };
+    if args.json {
+        print_json(&present::json(&loaded.file.name, &d, verdict.as_ref()))?;
+    } else {
+        if args.output.is_none() {
+            print(&d.hlsl)?;
+        }
+        if let Some(v) = &verdict {
+            print(&present::verdict_text(v))?;
+        }
+    }
+    Ok(match verdict {
+        Some(Verdict {
+            equivalent: false, ..
+        }) => Outcome::Problem,
+        _ => Outcome::Ok,
+    })
+}

@@ -1,0 +1,391 @@
+//! Decompilation: a validated shader back to HLSL that Microsoft's
+//! compiler accepts for the same profile and that computes the same
+//! pixels.
+//!
+//! The HLSL keeps the shader's registers as variables (`r0`…, `oC0`…,
+//! `p0`) and writes one statement per instruction that writes a value,
+//! with the write mask and the source swizzles folded into the narrowest
+//! expression; `def` constants become literals, the constant table names
+//! and types the uniforms, and flow control becomes `if`/`else` and `for`.
+//! Only forms that compile back to the same operation are used: where an
+//! idiom is not exactly the instruction (`normalize` of a four-component
+//! `nrm`), the plain arithmetic is written. What cannot be written exactly
+//! is refused with [`DecompileError`], never approximated.
+//!
+//! The profile is a [`Target`]: ps_3_0 is the one the loader reads today;
+//! another profile is another row there (its output semantics and
+//! input spellings), with the same expressions.
+
+mod emit;
+mod expr;
+mod fold;
+mod names;
+
+use crate::core::bytecode::ctab::ConstantTable;
+use crate::core::ir::Shader;
+use crate::core::isa::{Opcode, RegFile};
+use emit::Body;
+use names::{Names, Uses};
+use serde::Serialize;
+use std::collections::{BTreeMap, BTreeSet};
+use std::fmt;
+
+/// A profile the decompiler writes HLSL for.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+pub struct Target {
+    /// The profile's name as `D3DCompile` takes it (`ps_3_0`).
+    pub profile: &'static str,
+}
+
+/// ps_3_0, the profile of every [`Shader`] today.
+pub const PS_3_0: Target = Target { profile: "ps_3_0" };
+
+/// Why a shader was not decompiled.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub enum DecompileError {
+    /// Something the HLSL cannot express exactly (yet).
+    Unsupported(String),
+    /// The same, at an instruction (0-based) with its mnemonic.
+    At {
+        /// Index of the instruction among the executable ones.
+        instruction: usize,
+        /// Its mnemonic.
+        op: String,
+        /// What could not be written.
+        message: String,
+    },
+}
+
+impl DecompileError {
+    fn at(self, instruction: usize, op: Opcode) -> DecompileError {
+        match self {
+            DecompileError::Unsupported(message) => DecompileError::At {
+                instruction,
+                op: op.info().mnemonic.to_string(),
+                message,
+            },
+            e => e,
+        }
+    }
+}
+
+impl fmt::Display for DecompileError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            DecompileError::Unsupported(m) => write!(f, "cannot decompile: {m}"),
+            DecompileError::At {
+                instruction,
+                op,
+                message,
+            } => write!(
+                f,
+                "cannot decompile instruction {} ({op}): {message}",
+                instruction + 1
+            ),
+        }
+    }
+}
+
+impl std::error::Error for DecompileError {}
+
+/// A decompiled shader.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Decompiled {
+    /// The profile it was written for.
+    pub target: Target,
+    /// The HLSL source; its entry point is `main`.
+    pub hlsl: String,
+    /// Executable instructions read.
+    pub instructions: usize,
+    /// Statements written (assignments, calls, `clip`, `break`, `return`).
+    pub statements: usize,
+    /// Uniforms declared from the constant table by name.
+    pub named_uniforms: usize,
+}
+
+/// What the program reads and writes, gathered before anything is named.
+#[derive(Default)]
+struct Scan {
+    uses: Uses,
+    temps: BTreeSet<u32>,
+    colors: BTreeSet<u32>,
+    depth: bool,
+    predicate: bool,
+}
+
+fn scan(shader: &Shader) -> Scan {
+    let mut s = Scan::default();
+    let program = shader.program();
+    for ins in shader.instructions() {
+        let sampler = ins
+            .src
+            .iter()
+            .find(|s| s.reg.file == RegFile::Sampler)
+            .and_then(|s| program.sampler_type(s.reg.index));
+        for (k, src) in ins.src.iter().enumerate() {
+            let mut note = |reg: u32, positions: &[usize]| {
+                let bits = positions
+                    .iter()
+                    .fold(0u8, |b, &p| b | 1 << src.swizzle.0[p]);
+                *s.uses.floats.entry(reg).or_default() |= bits;
+            };
+            match src.reg.file {
+                RegFile::Const if src.relative => {
+                    s.uses.relative.insert(src.reg.index);
+                }
+                RegFile::Const => {
+                    let positions = expr::lanes(ins, k, sampler);
+                    note(src.reg.index, &positions);
+                    if k == 1 {
+                        for row in 1..expr::matrix_rows(ins.op).unwrap_or(1) {
+                            note(src.reg.index + row, &positions);
+                        }
+                    }
+                }
+                RegFile::ConstInt => {
+                    s.uses.ints.insert(src.reg.index);
+                }
+                RegFile::ConstBool => {
+                    s.uses.bools.insert(src.reg.index);
+                }
+                RegFile::Sampler => {
+                    s.uses.samplers.insert(src.reg.index);
+                }
+                RegFile::Temp => {
+                    s.temps.insert(src.reg.index);
+                }
+                RegFile::Predicate => s.predicate = true,
+                _ => {}
+            }
+        }
+        if let Some(d) = ins.dst {
+            match d.reg.file {
+                RegFile::Temp => {
+                    s.temps.insert(d.reg.index);
+                }
+                RegFile::ColorOut => {
+                    s.colors.insert(d.reg.index);
+                }
+                RegFile::DepthOut => s.depth = true,
+                RegFile::Predicate => s.predicate = true,
+                _ => {}
+            }
+        }
+        if ins.predicate.is_some() {
+            s.predicate = true;
+        }
+    }
+    s
+}
+
+/// One input parameter: its declaration and the name the body reads.
+struct Param {
+    decl: String,
+    name: String,
+}
+
+/// The parameters of `main` for the shader's input declarations, and the
+/// register → name map expressions read.
+fn inputs(
+    shader: &Shader,
+    taken: &mut BTreeSet<String>,
+) -> Result<(Vec<Param>, BTreeMap<u32, String>), DecompileError> {
+    let mut params = Vec::new();
+    let mut map = BTreeMap::new();
+    for d in &shader.program().inputs {
+        let (ty, name, semantic) = match d.reg.file {
+            RegFile::Position => ("float2", "vpos".to_string(), "VPOS".to_string()),
+            RegFile::Face => ("float", "vface".to_string(), "VFACE".to_string()),
+            _ => {
+                let usage = d.usage.to_ascii_lowercase();
+                let name = names::identifier(&format!("{usage}{}", d.usage_index), taken);
+                let centroid = if d.centroid { "_centroid" } else { "" };
+                (
+                    "float4",
+                    name,
+                    format!("{}{}{centroid}", usage.to_ascii_uppercase(), d.usage_index),
+                )
+            }
+        };
+        if d.reg.file == RegFile::Input && map.insert(d.reg.index, name.clone()).is_some() {
+            return Err(DecompileError::Unsupported(format!(
+                "v{} is declared twice (packed inputs)",
+                d.reg.index
+            )));
+        }
+        params.push(Param {
+            decl: format!("{ty} {name} : {semantic}"),
+            name,
+        });
+    }
+    Ok((params, map))
+}
+
+/// Decompiles `shader` (ps_3_0) with the names of its constant table.
+pub fn decompile(
+    shader: &Shader,
+    table: Option<&ConstantTable>,
+) -> Result<Decompiled, DecompileError> {
+    let s = scan(shader);
+    let mut taken: BTreeSet<String> = BTreeSet::new();
+    let (params, input_map) = inputs(shader, &mut taken)?;
+    let names = Names::new(shader.program(), table, &s.uses, &mut taken)?;
+    let named_uniforms = table.map_or(0, |t| {
+        t.constants
+            .iter()
+            .filter(|c| {
+                names
+                    .decls
+                    .iter()
+                    .any(|d| d.contains(&format!(" {}", c.name)))
+            })
+            .count()
+    });
+    let mut ctx = expr::Ctx {
+        names: &names,
+        inputs: input_map,
+        counters: Vec::new(),
+        pending: Default::default(),
+    };
+    let info = shader.info();
+    let n = shader.instructions().len();
+    let main_end = (info.main_end as usize).min(n);
+    let labels: Vec<(u32, usize)> = info.labels.iter().map(|(&l, &i)| (l, i as usize)).collect();
+    let subroutines = !labels.is_empty();
+    let mut text = String::new();
+    text.push_str(&format!(
+        "// {} shader decompiled by ps30\n",
+        PS_3_0.profile
+    ));
+    for d in &names.decls {
+        text.push_str(d);
+        text.push('\n');
+    }
+    let locals = locals(&s);
+    let mut statements = 0;
+    if subroutines {
+        text.push('\n');
+        for l in &locals {
+            text.push_str(&format!("static {l}\n"));
+        }
+        for p in &params {
+            text.push_str(&format!(
+                "static {};\n",
+                p.decl.split(" : ").next().unwrap_or(&p.decl)
+            ));
+        }
+        for (l, _) in &labels {
+            text.push_str(&format!("void label{l}();\n"));
+        }
+        for (k, &(l, start)) in labels.iter().enumerate() {
+            let end = labels.get(k + 1).map_or(n, |&(_, e)| e);
+            let mut body = Body::new(1);
+            emit::statements(
+                &mut ctx,
+                shader,
+                start + 1..end.max(start + 1),
+                false,
+                &mut body,
+            )?;
+            statements += body.lines.len();
+            text.push_str(&format!("\nvoid label{l}()\n{{\n"));
+            for line in body.lines {
+                text.push_str(&line);
+                text.push('\n');
+            }
+            text.push_str("}\n");
+        }
+    }
+    let single = s.colors.iter().copied().eq([0]) && !s.depth;
+    let mut sig: Vec<String> = params
+        .iter()
+        .map(|p| {
+            if subroutines {
+                p.decl
+                    .replacen(&format!(" {}", p.name), &format!(" in_{}", p.name), 1)
+            } else {
+                p.decl.clone()
+            }
+        })
+        .collect();
+    if !single {
+        let out = if subroutines { "out_" } else { "" };
+        for &c in &s.colors {
+            sig.push(format!("out float4 {out}oC{c} : COLOR{c}"));
+        }
+        if s.depth {
+            sig.push(format!("out float {out}oDepth : DEPTH"));
+        }
+    }
+    let mut body = Body::new(1);
+    if subroutines {
+        for p in &params {
+            body.line(format!("{0} = in_{0};", p.name));
+        }
+    } else {
+        for l in &locals {
+            if single || !l.contains("oC") && !l.contains("oDepth") {
+                body.line(l.clone());
+            }
+        }
+    }
+    if !single {
+        for &c in &s.colors {
+            if !subroutines {
+                body.line(format!("oC{c} = 0;"));
+            }
+        }
+        if s.depth && !subroutines {
+            body.line("oDepth = 0;");
+        }
+    }
+    let head = body.lines.len();
+    emit::statements(&mut ctx, shader, 0..main_end, true, &mut body)?;
+    statements += body.lines.len() - head;
+    if single {
+        body.line("return oC0;");
+    } else if subroutines {
+        for &c in &s.colors {
+            body.line(format!("out_oC{c} = oC{c};"));
+        }
+        if s.depth {
+            body.line("out_oDepth = oDepth;");
+        }
+    }
+    let ret = if single { "float4" } else { "void" };
+    let semantic = if single { " : COLOR" } else { "" };
+    text.push_str(&format!("\n{ret} main({}){semantic}\n{{\n", sig.join(", ")));
+    for line in body.lines {
+        text.push_str(&line);
+        text.push('\n');
+    }
+    text.push_str("}\n");
+    Ok(Decompiled {
+        target: PS_3_0,
+        hlsl: text,
+        instructions: n,
+        statements,
+        named_uniforms,
+    })
+}
+
+/// The declarations of the registers the body writes, each starting at 0
+/// (what the emulator, and Direct3D's reference rasteriser, give a register
+/// before its first write).
+fn locals(s: &Scan) -> Vec<String> {
+    let mut out = Vec::new();
+    for &c in &s.colors {
+        out.push(format!("float4 oC{c} = 0;"));
+    }
+    if s.depth {
+        out.push("float oDepth = 0;".into());
+    }
+    if !s.temps.is_empty() {
+        let list: Vec<String> = s.temps.iter().map(|t| format!("r{t} = 0")).collect();
+        out.push(format!("float4 {};", list.join(", ")));
+    }
+    if s.predicate {
+        out.push("bool4 p0 = false;".into());
+    }
+    out
+}

@@ -1,0 +1,66 @@
+//! `ps30 decompile`'s output: the verdict of `--verify` as text, and the
+//! whole result as JSON (`docs/json-schema/ps30.json`, `decompile`).
+
+use crate::core::decompile::Decompiled;
+use crate::jobs::decompile::{Kind, Verdict};
+use serde_json::{json, Value};
+
+/// The verdict as comment lines that can follow the HLSL.
+pub fn verdict_text(v: &Verdict) -> String {
+    let mut out = String::new();
+    match v.kind {
+        Kind::Refused => {
+            out.push_str("// verify: FAILED: Microsoft's compiler refused the HLSL\n");
+            for line in v.compiler_messages.lines() {
+                out.push_str(&format!("//   {line}\n"));
+            }
+            return out;
+        }
+        Kind::Identical => out.push_str(&format!(
+            "// verify: identical: {} values of {} draws of {} pixels, bit for bit\n",
+            v.values, v.draws, v.pixels
+        )),
+        Kind::Different => {
+            out.push_str(&format!(
+                "// verify: FAILED: {} of {} values differ, the largest by {}\n",
+                v.differing,
+                v.values,
+                ulps(v.max_ulp)
+            ));
+            if let Some(w) = &v.worst {
+                out.push_str(&format!(
+                    "//   draw {} pixel ({}, {}) {}: original {:e}, recompiled {:e}\n",
+                    w.draw, w.x, w.y, w.output, w.original, w.recompiled
+                ));
+            }
+        }
+    }
+    if !v.changed_instructions.is_empty() {
+        out.push_str(&format!(
+            "//   the compiler changed: {}\n",
+            v.changed_instructions.join(", ")
+        ));
+    }
+    out
+}
+
+fn ulps(n: u64) -> String {
+    if n == u64::MAX {
+        "a NaN or infinity against a number".into()
+    } else {
+        format!("{n} ulp")
+    }
+}
+
+/// The JSON of `ps30 decompile --json`.
+pub fn json(source: &str, d: &Decompiled, verdict: Option<&Verdict>) -> Value {
+    json!({
+        "source": source,
+        "target": d.target.profile,
+        "instructions": d.instructions,
+        "statements": d.statements,
+        "named_uniforms": d.named_uniforms,
+        "hlsl": d.hlsl,
+        "verify": verdict,
+    })
+}

@@ -1,0 +1,27 @@
+// ps_3_0 shader decompiled by ps30
+float4 c0 : register(c0);
+float4 c1 : register(c1);
+float4 c3 : register(c3);
+int4 i1 : register(i1);
+int4 i2 : register(i2);
+sampler2D s0 : register(s0);
+
+float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
+{
+    float4 oC0 = 0;
+    float4 r0 = 0, r1 = 0, r2 = 0;
+    r0.xy = texcoord0.xy;
+    r0.zw = c0.z;
+    r1.w = c3.w;
+    r2.w = c1.x;
+    for (int n0 = 0; n0 < i2.x; n0++) {
+        for (int n1 = 0; n1 < i1.x; n1++) {
+            r1.xyz = tex2D(s0, r0.xy).xyz;
+            r2.x = log2(abs(dot(r1, c3)));
+            r0.xw = r0.xw + r2.wx;
+        }
+        r0.xy = r0.xy * c1.zw + c1.zy;
+    }
+    oC0 = r0.w;
+    return oC0;
+}

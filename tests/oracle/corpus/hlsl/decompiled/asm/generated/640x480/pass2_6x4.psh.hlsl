@@ -1,0 +1,68 @@
+// ps_3_0 shader decompiled by ps30
+float4 c0 : register(c0);
+float4 c1 : register(c1);
+sampler2D s0 : register(s0);
+
+float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
+{
+    float4 oC0 = 0;
+    float4 r0 = 0, r3 = 0;
+    r0.xy = texcoord0.xy;
+    r0.zw = c0.z;
+    r3.yzw = texcoord0.x * c1.zwz + c1.yzx;
+    r3.x = tex2D(s0, r0.xy).x;
+    r0.xw = r0.xw + r3.wx;
+    r3.x = tex2D(s0, r0.xy).x;
+    r0.xw = r0.xw + r3.wx;
+    r3.x = tex2D(s0, r0.xy).x;
+    r0.xw = r0.xw + r3.wx;
+    r3.x = tex2D(s0, r0.xy).x;
+    r0.xw = r0.xw + r3.wx;
+    r3.x = tex2D(s0, r0.xy).x;
+    r0.xw = r0.xw + r3.wx;
+    r3.x = tex2D(s0, r0.xy).x;
+    r0.xw = r0.xw + r3.wx;
+    r0.xy = r0.xy * c1.zw + r3.zy;
+    r3.x = tex2D(s0, r0.xy).x;
+    r0.xw = r0.xw + r3.wx;
+    r3.x = tex2D(s0, r0.xy).x;
+    r0.xw = r0.xw + r3.wx;
+    r3.x = tex2D(s0, r0.xy).x;
+    r0.xw = r0.xw + r3.wx;
+    r3.x = tex2D(s0, r0.xy).x;
+    r0.xw = r0.xw + r3.wx;
+    r3.x = tex2D(s0, r0.xy).x;
+    r0.xw = r0.xw + r3.wx;
+    r3.x = tex2D(s0, r0.xy).x;
+    r0.xw = r0.xw + r3.wx;
+    r0.xy = r0.xy * c1.zw + r3.zy;
+    r3.x = tex2D(s0, r0.xy).x;
+    r0.xw = r0.xw + r3.wx;
+    r3.x = tex2D(s0, r0.xy).x;
+    r0.xw = r0.xw + r3.wx;
+    r3.x = tex2D(s0, r0.xy).x;
+    r0.xw = r0.xw + r3.wx;
+    r3.x = tex2D(s0, r0.xy).x;
+    r0.xw = r0.xw + r3.wx;
+    r3.x = tex2D(s0, r0.xy).x;
+    r0.xw = r0.xw + r3.wx;
+    r3.x = tex2D(s0, r0.xy).x;
+    r0.xw = r0.xw + r3.wx;
+    r0.xy = r0.xy * c1.zw + r3.zy;
+    r3.x = tex2D(s0, r0.xy).x;
+    r0.xw = r0.xw + r3.wx;
+    r3.x = tex2D(s0, r0.xy).x;
+    r0.xw = r0.xw + r3.wx;
+    r3.x = tex2D(s0, r0.xy).x;
+    r0.xw = r0.xw + r3.wx;
+    r3.x = tex2D(s0, r0.xy).x;
+    r0.xw = r0.xw + r3.wx;
+    r3.x = tex2D(s0, r0.xy).x;
+    r0.xw = r0.xw + r3.wx;
+    r3.x = tex2D(s0, r0.xy).x;
+    r0.xw = r0.xw + r3.wx;
+    r0.xy = r0.xy * c1.zw + r3.zy;
+    r0.x = r0.w * c0.x + c0.y;
+    oC0 = exp2(r0.x);
+    return oC0;
+}

@@ -1,0 +1,62 @@
+// ps_3_0 shader decompiled by ps30
+float2 blurDir : register(c0);
+float sharpness : register(c1);
+sampler2D aoTex : register(s0);
+sampler2D depthTex : register(s1);
+
+float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
+{
+    float4 oC0 = 0;
+    float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0, r5 = 0, r6 = 0;
+    r0.xy = blurDir;
+    r1 = r0.xyxy * float4(-4.0, -4.0, -3.0, -3.0) + texcoord0.xyxy;
+    r2 = tex2D(aoTex, r1.zw);
+    r3 = tex2D(depthTex, r1.zw);
+    r4 = tex2D(depthTex, texcoord0.xy);
+    r1.zw = float2(-1.6, -0.90000004);
+    r0.z = exp2((abs((r3.x - r4.x)) * -sharpness + r1.w));
+    r0.w = r0.z * r2.x;
+    r2 = tex2D(aoTex, r1.xy);
+    r1.x = -r4.x + tex2D(depthTex, r1.xy).x;
+    r1.x = exp2((abs(r1.x) * -sharpness + r1.z));
+    r0.w = r2.x * r1.x + r0.w;
+    r0.z = r0.z + r1.x;
+    r2 = r0.xyxy * float4(-2.0, -2.0, 3.0, 3.0) + texcoord0.xyxy;
+    r3 = tex2D(aoTex, r2.xy);
+    r3.zw = float2(-0.4, -0.1);
+    r1.x = exp2((abs((-r4.x + tex2D(depthTex, r2.xy).x)) * -sharpness + r3.z));
+    r0.w = r3.x * r1.x + r0.w;
+    r0.z = r0.z + r1.x;
+    r1.xy = texcoord0.xy - blurDir;
+    r5 = tex2D(aoTex, r1.xy);
+    r6 = tex2D(depthTex, r1.xy);
+    r1.x = exp2((abs((r6.x - r4.x)) * -sharpness + r3.w));
+    r0.w = r5.x * r1.x + r0.w;
+    r0.z = (r0.z + r1.x) + 1.0;
+    r0.w = r0.w + tex2D(aoTex, texcoord0.xy).x;
+    r1.xy = blurDir + texcoord0.xy;
+    r5 = tex2D(aoTex, r1.xy);
+    r6 = tex2D(depthTex, r1.xy);
+    r1.x = exp2((abs((r6.x - r4.x)) * -sharpness + r3.w));
+    r0.w = r5.x * r1.x + r0.w;
+    r0.z = r0.z + r1.x;
+    r1.xy = r0.xy * 2.0 + texcoord0.xy;
+    r5 = tex2D(aoTex, r1.xy);
+    r6 = tex2D(depthTex, r1.xy);
+    r1.x = exp2((abs((r6.x - r4.x)) * -sharpness + r3.z));
+    r0.w = r5.x * r1.x + r0.w;
+    r0.z = r0.z + r1.x;
+    r3 = tex2D(aoTex, r2.zw);
+    r1.x = -r4.x + tex2D(depthTex, r2.zw).x;
+    r1.x = exp2((abs(r1.x) * -sharpness + r1.w));
+    r0.w = r3.x * r1.x + r0.w;
+    r0.z = r0.z + r1.x;
+    r0.xy = r0.xy * 4.0 + texcoord0.xy;
+    r2 = tex2D(aoTex, r0.xy);
+    r3 = tex2D(depthTex, r0.xy);
+    r0.x = exp2((abs((r3.x - r4.x)) * -sharpness + r1.z));
+    r0.y = r2.x * r0.x + r0.w;
+    r0.x = 1.0 / (r0.x + r0.z);
+    oC0 = r0.x * r0.y;
+    return oC0;
+}

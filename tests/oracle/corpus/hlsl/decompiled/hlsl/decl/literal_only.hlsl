@@ -1,0 +1,8 @@
+// ps_3_0 shader decompiled by ps30
+
+float4 main() : COLOR
+{
+    float4 oC0 = 0;
+    oC0 = float4(1.0, 0.5, 0.25, 1.0);
+    return oC0;
+}

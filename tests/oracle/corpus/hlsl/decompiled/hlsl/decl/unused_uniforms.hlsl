@@ -1,0 +1,11 @@
+// ps_3_0 shader decompiled by ps30
+float4 used : register(c0);
+sampler2D usedSampler : register(s0);
+
+float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
+{
+    float4 oC0 = 0;
+    float4 r0 = 0;
+    oC0 = tex2D(usedSampler, texcoord0.xy) * used;
+    return oC0;
+}

@@ -1,0 +1,28 @@
+// ps_3_0 shader decompiled by ps30
+row_major float4x4 invProj : register(c0);
+float3 lightColor : register(c5);
+float3 lightDirVS : register(c4);
+sampler2D gAlbedo : register(s0);
+sampler2D gNormal : register(s1);
+sampler2D gDepth : register(s2);
+
+float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
+{
+    float4 oC0 = 0;
+    float4 r0 = 0, r1 = 0;
+    r0 = (texcoord0.x * 2.0 - 1.0) * invProj[0] + ((texcoord0.y * -2.0 + 1.0) * invProj[1]);
+    r0 = (tex2D(gDepth, texcoord0.xy).x * invProj[2] + r0) + invProj[3];
+    r0.w = 1.0 / r0.w;
+    r0.xyz = r0.w * r0.xyz;
+    r0.w = rsqrt(abs(dot(-r0.xyz, -r0.xyz)));
+    r1.xyz = normalize((-r0.xyz * r0.w + lightDirVS));
+    r0.xyz = tex2D(gNormal, texcoord0.xy).xyz * 2.0 - 1.0;
+    r0.w = saturate(dot(r0.xyz, r1.xyz));
+    r0.x = saturate(dot(r0.xyz, lightDirVS));
+    r1 = tex2D(gAlbedo, texcoord0.xy);
+    r0.y = r1.w * 255.0;
+    r0.y = r0.x * pow(abs(r0.w), r0.y);
+    oC0.xyz = (r1.xyz * r0.x + r0.y) * lightColor;
+    oC0.w = 1.0;
+    return oC0;
+}

@@ -1,0 +1,17 @@
+// ps_3_0 shader decompiled by ps30
+float4 k : register(c0);
+
+float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
+{
+    float4 oC0 = 0;
+    float4 r0 = 0;
+    r0 = k * texcoord0;
+    r0.xy = r0.xy;
+    r0.zw = r0.zw;
+    r0.xy = r0.xy;
+    r0.zw = r0.zw;
+    r0.xy = r0.xy;
+    oC0.xy = r0.xy;
+    oC0.zw = r0.zw;
+    return oC0;
+}

@@ -1,0 +1,21 @@
+// ps_3_0 shader decompiled by ps30
+float4 x : register(c0);
+float4 y : register(c1);
+float4 z : register(c2);
+
+float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1) : COLOR
+{
+    float4 oC0 = 0;
+    float4 r0 = 0;
+    if (-texcoord0.x < 0.0) {
+        if (-texcoord0.y < 0.0) {
+            r0 = x;
+        } else {
+            r0 = y;
+        }
+    } else {
+        r0 = z;
+    }
+    oC0 = r0 * texcoord1;
+    return oC0;
+}

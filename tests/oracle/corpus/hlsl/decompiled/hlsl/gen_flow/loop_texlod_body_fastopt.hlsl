@@ -1,0 +1,22 @@
+// ps_3_0 shader decompiled by ps30
+float2 d : register(c0);
+sampler2D s : register(s0);
+
+float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
+{
+    float4 oC0 = 0;
+    float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0;
+    r0.zw = 0.0;
+    r1 = 0.0;
+    r2.x = 0.0;
+    for (int n0 = 0; n0 < int4(255, 0, 0, 0).x; n0++) {
+        r2.y = 5.0;
+        if (r2.x >= r2.y) break;
+        r0.xy = d * r2.x + texcoord0.xy;
+        r3 = tex2Dlod(s, r0);
+        r1 = r1 + r3;
+        r2.x = r2.x + 1.0;
+    }
+    oC0 = r1;
+    return oC0;
+}

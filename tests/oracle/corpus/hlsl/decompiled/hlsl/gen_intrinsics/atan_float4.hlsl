@@ -1,0 +1,20 @@
+// ps_3_0 shader decompiled by ps30
+
+float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
+{
+    float4 oC0 = 0;
+    float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0;
+    r1 = max(abs(texcoord0), 1.0);
+    r2.x = 1.0 / r1.x;
+    r2.y = 1.0 / r1.y;
+    r2.z = 1.0 / r1.z;
+    r2.w = 1.0 / r1.w;
+    r0 = saturate(abs(texcoord0)) * r2;
+    r1 = r0 * r0;
+    r2 = r1 * (r1 * 0.0208351 - 0.085133) + 0.180141;
+    r1 = r1 * (r1 * r2 - 0.3302995) + 0.999866;
+    r2 = (r0 * r1) * -2.0 + 1.5707964;
+    r0 = r0 * r1 + ((1.0 - abs(texcoord0)) >= 0.0 ? 0.0 : r2);
+    oC0 = r0 + (min(texcoord0, 1.0) >= 0.0 ? 0.0 : -(r0 + r0));
+    return oC0;
+}

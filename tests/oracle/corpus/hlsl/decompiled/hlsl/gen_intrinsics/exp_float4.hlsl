@@ -1,0 +1,13 @@
+// ps_3_0 shader decompiled by ps30
+
+float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
+{
+    float4 oC0 = 0;
+    float4 r0 = 0;
+    r0 = 1.442695 * texcoord0;
+    oC0.x = exp2(r0.x);
+    oC0.y = exp2(r0.y);
+    oC0.z = exp2(r0.z);
+    oC0.w = exp2(r0.w);
+    return oC0;
+}

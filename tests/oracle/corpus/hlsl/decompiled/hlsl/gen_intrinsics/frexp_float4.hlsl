@@ -1,0 +1,20 @@
+// ps_3_0 shader decompiled by ps30
+
+float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
+{
+    float4 oC0 = 0;
+    float4 r0 = 0, r1 = 0, r2 = 0;
+    r0 = (-abs(texcoord0) >= 0.0 ? 1.0 : 0.0) + abs(texcoord0);
+    r1.x = log2(abs(r0.x));
+    r1.y = log2(abs(r0.y));
+    r1.z = log2(abs(r0.z));
+    r1.w = log2(abs(r0.w));
+    r0 = frac(-r1) + r1;
+    r1.x = 1.0 / exp2(r0.x);
+    r1.y = 1.0 / exp2(r0.y);
+    r1.z = 1.0 / exp2(r0.z);
+    r2.x = exp2(r0.w);
+    r1.w = 1.0 / r2.x;
+    oC0 = texcoord0 * r1 + (r0 * 0.125);
+    return oC0;
+}

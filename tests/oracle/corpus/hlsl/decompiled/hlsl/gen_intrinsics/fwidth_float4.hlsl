@@ -1,0 +1,9 @@
+// ps_3_0 shader decompiled by ps30
+
+float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
+{
+    float4 oC0 = 0;
+    float4 r0 = 0, r1 = 0;
+    oC0 = abs(ddx(texcoord0)) + abs(ddy(texcoord0));
+    return oC0;
+}

@@ -1,0 +1,13 @@
+// ps_3_0 shader decompiled by ps30
+
+float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
+{
+    float4 oC0 = 0;
+    float4 r0 = 0;
+    r0.x = 1.0 / texcoord0.x;
+    r0.y = 1.0 / texcoord0.y;
+    r0.z = 1.0 / texcoord0.z;
+    oC0.xyz = -abs(r0.xyz) >= 0.0 ? 1.0 : 0.0;
+    oC0.w = 1.0;
+    return oC0;
+}

@@ -1,0 +1,19 @@
+// ps_3_0 shader decompiled by ps30
+
+float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1, float4 texcoord2 : TEXCOORD2) : COLOR
+{
+    float4 oC0 = 0;
+    float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0;
+    r0.xyz = frac((texcoord0.xyz * 0.15915494 + 0.5)) * 6.2831855 - 3.1415927;
+    r1.xy = float2(cos(r0.x), sin(r0.x));
+    r2.x = r1.y;
+    r3.xy = float2(cos(r0.y), sin(r0.y));
+    r4.xy = float2(cos(r0.z), sin(r0.z));
+    r1.y = r3.x;
+    r2.y = r3.y;
+    r1.z = r4.x;
+    r2.z = r4.y;
+    oC0.xyz = r2.xyz * texcoord1.xyz + (r1.xyz * texcoord2.xyz);
+    oC0.w = 1.0;
+    return oC0;
+}

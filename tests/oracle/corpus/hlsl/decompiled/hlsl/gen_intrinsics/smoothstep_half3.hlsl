@@ -1,0 +1,18 @@
+// ps_3_0 shader decompiled by ps30
+
+float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1, float4 texcoord2 : TEXCOORD2) : COLOR
+{
+    float4 oC0 = 0;
+    float4 r0 = 0, r1 = 0, r2 = 0;
+    r0.xyz = texcoord0.xyz;
+    r1.xyz = texcoord2.xyz - r0.xyz;
+    r0.xyz = texcoord1.xyz - r0.xyz;
+    r2.x = 1.0 / r0.x;
+    r2.y = 1.0 / r0.y;
+    r2.z = 1.0 / r0.z;
+    r0.xyz = saturate(r1.xyz * r2.xyz);
+    r1.xyz = r0.xyz * -2.0 + 3.0;
+    oC0.xyz = (r0.xyz * r0.xyz) * r1.xyz;
+    oC0.w = 1.0;
+    return oC0;
+}

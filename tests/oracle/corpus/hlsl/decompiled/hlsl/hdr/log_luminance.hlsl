@@ -1,0 +1,60 @@
+// ps_3_0 shader decompiled by ps30
+float2 texelSize : register(c0);
+sampler2D src : register(s0);
+
+float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
+{
+    float4 oC0 = 0;
+    float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0;
+    r0.xy = float2(-1.5, -0.5);
+    r1 = texelSize.xyxy * r0.xxyx + texcoord0.xyxy;
+    r2 = tex2D(src, r1.zw);
+    r0.z = log2(abs((dot(tex2D(src, r1.xy).xyz, float3(0.2125, 0.7154, 0.0721)) + 0.0001)));
+    r0.w = dot(r2.xyz, float3(0.2125, 0.7154, 0.0721)) + 0.0001;
+    r0.w = log2(abs(r0.w)) * 0.6931472;
+    r0.z = r0.z * 0.6931472 + r0.w;
+    r1.xy = texelSize;
+    r2 = r1.xyxy * float4(0.5, -1.5, 1.5, -1.5) + texcoord0.xyxy;
+    r3 = tex2D(src, r2.xy);
+    r0.w = log2(abs((dot(tex2D(src, r2.zw).xyz, float3(0.2125, 0.7154, 0.0721)) + 0.0001)));
+    r1.z = dot(r3.xyz, float3(0.2125, 0.7154, 0.0721)) + 0.0001;
+    r0.z = log2(abs(r1.z)) * 0.6931472 + r0.z;
+    r0.z = r0.w * 0.6931472 + r0.z;
+    r2 = texelSize.xyxy * r0.xyyy + texcoord0.xyxy;
+    r3 = tex2D(src, r2.xy);
+    r0.w = log2(abs((dot(tex2D(src, r2.zw).xyz, float3(0.2125, 0.7154, 0.0721)) + 0.0001)));
+    r1.z = dot(r3.xyz, float3(0.2125, 0.7154, 0.0721)) + 0.0001;
+    r0.z = log2(abs(r1.z)) * 0.6931472 + r0.z;
+    r0.z = r0.w * 0.6931472 + r0.z;
+    r2 = r1.xyxy * float4(0.5, -0.5, 1.5, -0.5) + texcoord0.xyxy;
+    r3 = tex2D(src, r2.xy);
+    r0.w = log2(abs((dot(tex2D(src, r2.zw).xyz, float3(0.2125, 0.7154, 0.0721)) + 0.0001)));
+    r1.z = dot(r3.xyz, float3(0.2125, 0.7154, 0.0721)) + 0.0001;
+    r0.z = log2(abs(r1.z)) * 0.6931472 + r0.z;
+    r0.z = r0.w * 0.6931472 + r0.z;
+    r2 = r1.xyxy * float4(-1.5, 0.5, -0.5, 0.5) + texcoord0.xyxy;
+    r3 = tex2D(src, r2.xy);
+    r0.w = log2(abs((dot(tex2D(src, r2.zw).xyz, float3(0.2125, 0.7154, 0.0721)) + 0.0001)));
+    r1.z = dot(r3.xyz, float3(0.2125, 0.7154, 0.0721)) + 0.0001;
+    r0.z = log2(abs(r1.z)) * 0.6931472 + r0.z;
+    r0.z = r0.w * 0.6931472 + r0.z;
+    r2 = texelSize.xyxy * -r0.yyxy + texcoord0.xyxy;
+    r3 = tex2D(src, r2.xy);
+    r0.w = log2(abs((dot(tex2D(src, r2.zw).xyz, float3(0.2125, 0.7154, 0.0721)) + 0.0001)));
+    r1.z = dot(r3.xyz, float3(0.2125, 0.7154, 0.0721)) + 0.0001;
+    r0.z = log2(abs(r1.z)) * 0.6931472 + r0.z;
+    r0.z = r0.w * 0.6931472 + r0.z;
+    r1 = r1.xyxy * float4(-1.5, 1.5, -0.5, 1.5) + texcoord0.xyxy;
+    r2 = tex2D(src, r1.xy);
+    r0.w = log2(abs((dot(tex2D(src, r1.zw).xyz, float3(0.2125, 0.7154, 0.0721)) + 0.0001)));
+    r1.x = dot(r2.xyz, float3(0.2125, 0.7154, 0.0721)) + 0.0001;
+    r0.z = log2(abs(r1.x)) * 0.6931472 + r0.z;
+    r0.z = r0.w * 0.6931472 + r0.z;
+    r1 = texelSize.xyxy * -r0.yxxx + texcoord0.xyxy;
+    r2 = tex2D(src, r1.xy);
+    r0.x = log2(abs((dot(tex2D(src, r1.zw).xyz, float3(0.2125, 0.7154, 0.0721)) + 0.0001)));
+    r0.y = log2(abs((dot(r2.xyz, float3(0.2125, 0.7154, 0.0721)) + 0.0001)));
+    r0.y = r0.y * 0.6931472 + r0.z;
+    oC0 = (r0.x * 0.6931472 + r0.y) * 0.0625;
+    return oC0;
+}
