@@ -1,0 +1,11 @@
+// ps_3_0 shader decompiled by ps30
+float4 c0 : register(c0);
+sampler2D s0 : register(s0);
+
+float4 main() : COLOR
+{
+    float4 oC0 = 0;
+    float4 r0 = 0;
+    oC0 = tex2D(s0, c0.xy);
+    return oC0;
+}

@@ -1,0 +1,9 @@
+// ps_3_0 shader decompiled by ps30
+samplerCUBE faces : register(s0);
+
+float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
+{
+    float4 oC0 = 0;
+    oC0 = texCUBE(faces, texcoord0.xyz);
+    return oC0;
+}
