@@ -19,6 +19,7 @@
 mod accept;
 mod bytes;
 mod listing;
+mod parity;
 mod profiles;
 mod slots;
 
