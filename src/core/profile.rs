@@ -21,7 +21,6 @@
 //!   Microsoft's assembler checks a `ps_2_x` file against
 //!   ([`Ps2xCaps::ASSEMBLER`], measured) and the two named targets'.
 
-use crate::core::isa::{Opcode, RegFile};
 use std::fmt;
 
 /// Which pipeline stage a profile programs.
@@ -498,11 +497,13 @@ impl Profile {
                 dependent_reads: Some(2),
                 ..none
             },
+            // No flow control: every slot runs once, so 96 executed.
             Profile::Ps2_0 => Limits {
                 slots: Some(96),
                 arithmetic: Some(64),
                 texture: Some(32),
                 dependent_reads: Some(4),
+                executed: Some(96),
                 ..none
             },
             Profile::Ps2A | Profile::Ps2B | Profile::Ps2X => {
@@ -549,49 +550,6 @@ impl Default for Profile {
     /// ps_3_0, the profile ps30 runs.
     fn default() -> Profile {
         Profile::Ps3_0
-    }
-}
-
-impl Profile {
-    /// How many registers of `file` a shader of this profile may name (0:
-    /// the profile has no such file), from [`Profile::registers`]. For
-    /// ps_3_0 these are the instruction table's counts.
-    pub fn count(self, file: RegFile) -> u32 {
-        let r = self.registers();
-        let pixel = self.stage() == Stage::Pixel;
-        let vs3 = self == Profile::Vs3_0;
-        let legacy_vs = !pixel && !vs3;
-        let flow = Opcode::Label.profiles().has(self);
-        match file {
-            RegFile::Temp => r.temps,
-            RegFile::Input => r.inputs,
-            // Microsoft's assembler takes any float constant a vertex
-            // token can number (c256 measured; the 11 bits hold c2047): the
-            // count is a device's, not the profile's.
-            RegFile::Const if !pixel => 2048,
-            RegFile::Const => r.float_consts,
-            RegFile::ConstInt => r.int_consts,
-            RegFile::ConstBool => r.bool_consts,
-            RegFile::Sampler => r.samplers,
-            RegFile::Predicate => u32::from(r.predicate),
-            RegFile::ColorOut => r.colour_outputs,
-            RegFile::DepthOut => u32::from(pixel),
-            RegFile::LoopCounter => u32::from(r.loop_counter),
-            RegFile::Position | RegFile::Face => u32::from(self == Profile::Ps3_0),
-            RegFile::Label => u32::from(flow) * 2048,
-            RegFile::Texture => r.texcoords,
-            RegFile::Address => u32::from(r.address),
-            RegFile::AttrOut => u32::from(legacy_vs) * 2,
-            RegFile::TexCoordOut => u32::from(legacy_vs) * 8,
-            RegFile::Output => u32::from(vs3) * r.outputs,
-            RegFile::PosOut | RegFile::FogOut | RegFile::PointSizeOut => u32::from(legacy_vs),
-        }
-    }
-
-    /// Whether ps30 runs shaders of this profile (the emulator, the GPU
-    /// backend, `render`, `compare`): ps_3_0 only.
-    pub fn runs(self) -> bool {
-        self == Profile::Ps3_0
     }
 }
 

@@ -106,7 +106,7 @@ fn compiled_outcomes(target: &str, f: &Fixture, out: &mut Vec<Outcome>) {
     let mut push = |measure, differs| {
         out.push(Outcome {
             measure,
-            profile: target.to_string(),
+            profile: format!("{target} (HLSL)"),
             name: f.name(),
             differs,
         })

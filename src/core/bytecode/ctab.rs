@@ -364,7 +364,7 @@ impl<'a> Decoder<'a> {
                     (u32::from(index) + u32::from(count)).saturating_sub(1),
                     set.name(),
                     set.prefix(),
-                    available - 1
+                    available.saturating_sub(1)
                 ),
             );
         }

@@ -214,7 +214,10 @@ fn instruction(tokens: &Tokens, at: usize, profile: Profile) -> Result<(Instr, u
     if !op.profiles().has(profile) {
         return Err(ReadError::at(
             byte,
-            format!("`{}` is not a {profile} instruction", op.info().mnemonic),
+            format!(
+                "opcode {code:#x} ({}) is not a {profile} instruction",
+                op.info().mnemonic
+            ),
         ));
     }
     let row = op.info_in(profile);
@@ -495,7 +498,10 @@ fn register(t: u32, byte: usize, relative: bool, profile: Profile) -> Result<Reg
             .get(ty as usize)
             .copied()
             .unwrap_or("undefined");
-        let message = if REG_FILES.iter().any(|f| f.token_type == ty) {
+        let message = if REG_FILES
+            .iter()
+            .any(|f| f.token_type == ty && profile.count(f.file) > 0)
+        {
             format!("register {number} of type {ty} ({name}) does not exist")
         } else {
             let stage = match profile {
