@@ -577,15 +577,15 @@ fn corpus() -> Vec<(&'static str, Input, &'static str, usize)> {
             4,
         ),
         (
-            "a ps_2_0 stream",
-            Tokens(vec![0xffff_0200, E]),
-            "a ps_2_0 shader",
+            "a ps_1_4 stream",
+            Tokens(vec![0xffff_0104, E]),
+            "a ps_1_4 shader",
             0,
         ),
         (
-            "a vs_3_0 stream",
-            Tokens(vec![0xfffe_0300, E]),
-            "a vs_3_0 shader",
+            "a vs_1_1 stream",
+            Tokens(vec![0xfffe_0101, E]),
+            "a vs_1_1 shader",
             0,
         ),
         (

@@ -1097,8 +1097,8 @@ fn asm_refuses_invalid_programs_and_other_versions_and_writes_nothing() {
             "unknown instruction `foo`",
         ),
         (
-            "ps_2_0\ndcl t0\nmov oC0, t0\n",
-            "this is a ps_2_0 shader; ps30 reads ps_3_0 only",
+            "ps_1_4\nmov r0, c0\n",
+            "this is a ps_1_4 shader; ps30 reads ps_2_0, ps_2_x, ps_3_0",
         ),
     ] {
         let path = dir.path().join("bad.psh");

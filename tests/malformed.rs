@@ -399,8 +399,9 @@ const WINE_PS30_FAILURES: &[(&str, &str, &str, usize, usize)] = &[
      "ps_3_0\ndcl_texcoord0_x2 v0\n", "unexpected `_x2` in declaration", 2, 14),
 ];
 
-/// The ps_2_0 failures of the same list: rejected by ps30 for their version
-/// line already, whatever else is wrong with them.
+/// The ps_2_0 failures of the same list: rejected by ps30 under ps_2_0's
+/// rules (co-issue, a literal operand, a shift, aL or r0 as an index, a
+/// ps_1_x instruction).
 const WINE_PS20_FAILURES: &[&str] = &[
     "ps_2_0\ntexld r0, t0, s0\nadd r0.rgb, r0, r1\n+add r0.a, r0, v1\n",
     "ps_2_0\nmov r2, 1 - r0\n",

@@ -21,6 +21,7 @@
 mod accept;
 mod bytes;
 mod listing;
+mod parity;
 mod profiles;
 mod slots;
 

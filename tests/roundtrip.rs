@@ -606,6 +606,7 @@ fn source_strategy(
 fn straight_line_rows() -> Vec<&'static ps30::core::isa::OpInfo> {
     TABLE
         .iter()
+        .filter(|r| r.op.profiles().has(ps30::core::profile::Profile::Ps3_0))
         .filter(|r| matches!(r.class, Class::Arithmetic | Class::Texture))
         .filter(|r| {
             !matches!(

@@ -357,6 +357,8 @@ pub struct SamplerDecl {
 /// [`Shader`] once validated.
 #[derive(Clone, Debug, PartialEq, Default)]
 pub struct Program {
+    /// The profile its version line names.
+    pub profile: crate::core::profile::Profile,
     /// The executable instructions, in order.
     pub instructions: Vec<Instruction>,
     /// `def` statements.

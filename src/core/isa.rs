@@ -163,6 +163,22 @@ pub enum Opcode {
     DefB,
     /// `dcl`: declare an input or sampler.
     Dcl,
+    /// `mova`: a0 = round(x) (vertex shaders).
+    Mova,
+    /// `lit`: the lighting coefficients (vertex shaders).
+    Lit,
+    /// `dst`: the distance vector (vertex shaders).
+    Dst,
+    /// `expp`: 2^x at partial precision (vertex shaders).
+    Expp,
+    /// `logp`: log2(|x|) at partial precision (vertex shaders).
+    Logp,
+    /// `slt`: 1 where a < b, else 0 (vertex shaders).
+    Slt,
+    /// `sge`: 1 where a >= b, else 0 (vertex shaders).
+    Sge,
+    /// `sgn`: the sign, -1, 0 or 1 (vertex shaders).
+    Sgn,
 }
 
 /// What an instruction is, for accounting and for validation rules.
@@ -494,6 +510,16 @@ pub const TABLE: &[OpInfo] = &[
     row!(DefI, "defi", 0x30/0, 0, None, fxc = 0, Declaration, &[O::Dst, O::IntLits], sat = false, cmp = false, pred = false, "define an integer constant"),
     row!(DefB, "defb", 0x2F/0, 0, None, fxc = 0, Declaration, &[O::Dst, O::BoolLit], sat = false, cmp = false, pred = false, "define a boolean constant"),
     row!(Dcl, "dcl", 0x1F/0, 0, None, fxc = 0, Declaration, NONE, sat = false, cmp = false, pred = false, "declare an input or sampler"),
+    // The vertex-shader instructions: the documented slots are the vs_2_0
+    // instruction page's column; Microsoft's count is 1 for each (measured).
+    row!(Mova, "mova", 0x2E/0, 1, None, fxc = 1, Arithmetic, DS, sat = false, cmp = false, pred = true, "a0 = round(x)"),
+    row!(Lit, "lit", 0x10/0, 3, None, fxc = 1, Arithmetic, DS, sat = true, cmp = false, pred = true, "lighting coefficients"),
+    row!(Dst, "dst", 0x11/0, 1, None, fxc = 1, Arithmetic, DSS, sat = true, cmp = false, pred = true, "distance vector"),
+    row!(Expp, "expp", 0x4E/0, 1, None, fxc = 1, Arithmetic, DSCALAR, sat = true, cmp = false, pred = true, "2^x, partial precision"),
+    row!(Logp, "logp", 0x4F/0, 1, None, fxc = 1, Arithmetic, DSCALAR, sat = true, cmp = false, pred = true, "log2(|x|), partial precision"),
+    row!(Slt, "slt", 0x0C/0, 1, None, fxc = 1, Arithmetic, DSS, sat = true, cmp = false, pred = true, "1 where a < b, else 0"),
+    row!(Sge, "sge", 0x0D/0, 1, None, fxc = 1, Arithmetic, DSS, sat = true, cmp = false, pred = true, "1 where a >= b, else 0"),
+    row!(Sgn, "sgn", 0x22/0, 3, None, fxc = 1, Arithmetic, DSSS, sat = true, cmp = false, pred = true, "sign: -1, 0 or 1"),
 ];
 
 impl Opcode {
@@ -501,6 +527,21 @@ impl Opcode {
     pub fn info(self) -> &'static OpInfo {
         // The table is ordered like the enum; the test below keeps it so.
         &TABLE[self as usize]
+    }
+
+    /// The row as `profile` has it: the table's, except for the operand
+    /// shapes that differ by profile: `sincos` takes two more sources
+    /// (constant registers) before the 3_0 profiles.
+    pub fn info_in(self, profile: Profile) -> OpInfo {
+        let mut row = *self.info();
+        let three = matches!(profile, Profile::Ps3_0 | Profile::Vs3_0);
+        match self {
+            Opcode::SinCos if !three => {
+                row.operands = &[O::Dst, O::ScalarSrc, O::Src, O::Src];
+            }
+            _ => {}
+        }
+        row
     }
 
     /// The profiles this instruction exists in: the table's availability
@@ -532,6 +573,8 @@ impl Opcode {
         const STATIC: S = PS2X.or(S::of(&[Vs2_0, Vs2A, Vs2X, Vs3_0]));
         // Predication and dynamic flow control: vs_2_x's capabilities.
         const DYNAMIC: S = PS2X.or(S::of(&[Vs2A, Vs2X, Vs3_0]));
+        // The vertex-shader instructions.
+        const VS: S = S::of(&[Vs1_1, Vs2_0, Vs2A, Vs2X, Vs3_0]);
         match self {
             Opcode::TexKill | Opcode::TexLd | Opcode::TexLdP | Opcode::TexLdB => PS2,
             Opcode::Cmp | Opcode::Dp2Add => PS2,
@@ -552,6 +595,14 @@ impl Opcode {
             | Opcode::DefI
             | Opcode::DefB => STATIC,
             Opcode::Ifc | Opcode::Break | Opcode::BreakC | Opcode::BreakP | Opcode::Setp => DYNAMIC,
+            Opcode::Mova
+            | Opcode::Lit
+            | Opcode::Dst
+            | Opcode::Expp
+            | Opcode::Logp
+            | Opcode::Slt
+            | Opcode::Sge
+            | Opcode::Sgn => VS,
             _ => SHARED,
         }
     }
@@ -722,6 +773,22 @@ pub enum RegFile {
     Face,
     /// `l#`, labels.
     Label,
+    /// `t#`, texture coordinates (ps_2_0, ps_2_x).
+    Texture,
+    /// `a0`, the address register (vertex shaders).
+    Address,
+    /// `oD#`, colour outputs of vs_1_1–vs_2_x.
+    AttrOut,
+    /// `oT#`, texture-coordinate outputs of vs_1_1–vs_2_x.
+    TexCoordOut,
+    /// `o#`, the outputs of vs_3_0.
+    Output,
+    /// `oPos`, the position output of vs_1_1–vs_2_x.
+    PosOut,
+    /// `oFog`, the fog output of vs_1_1–vs_2_x.
+    FogOut,
+    /// `oPts`, the point-size output of vs_1_1–vs_2_x.
+    PointSizeOut,
 }
 
 /// Static facts about a register file.
@@ -767,7 +834,21 @@ pub const REG_FILES: &[RegFileInfo] = &[
     RegFileInfo { file: RegFile::Position, name: "vPos", count: 1, numbered: false, readable: true, writable: false, read_ports: 1, token_type: 17, token_number: 0 },
     RegFileInfo { file: RegFile::Face, name: "vFace", count: 1, numbered: false, readable: true, writable: false, read_ports: 1, token_type: 17, token_number: 1 },
     RegFileInfo { file: RegFile::Label, name: "l", count: 2048, numbered: true, readable: false, writable: false, read_ports: 1, token_type: 18, token_number: 0 },
+    // The files other profiles add (counts: the most any profile has; a
+    // profile's own is Profile::count). TEXTURE and ADDR share type 3,
+    // TEXCRDOUT and OUTPUT type 6: the stage tells them apart.
+    RegFileInfo { file: RegFile::Texture, name: "t", count: 8, numbered: true, readable: true, writable: false, read_ports: 1, token_type: 3, token_number: 0 },
+    RegFileInfo { file: RegFile::Address, name: "a", count: 1, numbered: true, readable: true, writable: true, read_ports: 1, token_type: 3, token_number: 0 },
+    RegFileInfo { file: RegFile::AttrOut, name: "oD", count: 2, numbered: true, readable: false, writable: true, read_ports: 0, token_type: 5, token_number: 0 },
+    RegFileInfo { file: RegFile::TexCoordOut, name: "oT", count: 8, numbered: true, readable: false, writable: true, read_ports: 0, token_type: 6, token_number: 0 },
+    RegFileInfo { file: RegFile::Output, name: "o", count: 12, numbered: true, readable: false, writable: true, read_ports: 0, token_type: 6, token_number: 0 },
+    RegFileInfo { file: RegFile::PosOut, name: "oPos", count: 1, numbered: false, readable: false, writable: true, read_ports: 0, token_type: 4, token_number: 0 },
+    RegFileInfo { file: RegFile::FogOut, name: "oFog", count: 1, numbered: false, readable: false, writable: true, read_ports: 0, token_type: 4, token_number: 1 },
+    RegFileInfo { file: RegFile::PointSizeOut, name: "oPts", count: 1, numbered: false, readable: false, writable: true, read_ports: 0, token_type: 4, token_number: 2 },
 ];
+
+/// The files ps_3_0 has: the first thirteen rows.
+const PS_3_0_FILES: usize = 13;
 
 impl RegFile {
     /// The facts of this register file.
@@ -779,18 +860,82 @@ impl RegFile {
     /// `None` for types ps_3_0 does not have and numbers a single named
     /// register does not use.
     pub fn from_token(token_type: u8, number: u32) -> Option<(RegFile, u32)> {
-        REG_FILES.iter().find_map(|f| match f.numbered {
-            true if f.token_type == token_type => Some((f.file, number)),
-            false if f.token_type == token_type && f.token_number == number => Some((f.file, 0)),
-            _ => None,
-        })
+        RegFile::from_token_in(token_type, number, Profile::Ps3_0)
+    }
+
+    /// The register a parameter token names in `profile`: as
+    /// [`RegFile::from_token`], among the files the profile has.
+    pub fn from_token_in(token_type: u8, number: u32, profile: Profile) -> Option<(RegFile, u32)> {
+        REG_FILES
+            .iter()
+            .filter(|f| profile.count(f.file) > 0)
+            .find_map(|f| match f.numbered {
+                true if f.token_type == token_type => Some((f.file, number)),
+                false if f.token_type == token_type && f.token_number == number => {
+                    Some((f.file, 0))
+                }
+                _ => None,
+            })
     }
 
     /// Parses a register name (prefix and number already split). Names are
     /// spelled as Microsoft's assembler reads them, case included (`oC`,
     /// `vPos`, `aL`: `C0` and `oc0` are invalid registers there).
     pub fn lookup(prefix: &str) -> Option<RegFile> {
+        REG_FILES[..PS_3_0_FILES]
+            .iter()
+            .find(|f| f.name == prefix)
+            .map(|f| f.file)
+    }
+
+    /// Parses a register name of any profile's files (see [`RegFile::lookup`]).
+    pub fn lookup_any(prefix: &str) -> Option<RegFile> {
         REG_FILES.iter().find(|f| f.name == prefix).map(|f| f.file)
+    }
+}
+
+/// A profile's register files, by [`RegFile`] (here, beside the files,
+/// so that `profile.rs` needs nothing of this module).
+impl Profile {
+    /// How many registers of `file` a shader of this profile may name (0:
+    /// the profile has no such file), from [`Profile::registers`]. For
+    /// ps_3_0 these are the instruction table's counts.
+    pub fn count(self, file: RegFile) -> u32 {
+        let r = self.registers();
+        let pixel = self.stage() == crate::core::profile::Stage::Pixel;
+        let vs3 = self == Profile::Vs3_0;
+        let legacy_vs = !pixel && !vs3;
+        let flow = Opcode::Label.profiles().has(self);
+        match file {
+            RegFile::Temp => r.temps,
+            RegFile::Input => r.inputs,
+            // Microsoft's assembler takes any float constant a vertex
+            // token can number (c256 measured; the 11 bits hold c2047): the
+            // count is a device's, not the profile's.
+            RegFile::Const if !pixel => 2048,
+            RegFile::Const => r.float_consts,
+            RegFile::ConstInt => r.int_consts,
+            RegFile::ConstBool => r.bool_consts,
+            RegFile::Sampler => r.samplers,
+            RegFile::Predicate => u32::from(r.predicate),
+            RegFile::ColorOut => r.colour_outputs,
+            RegFile::DepthOut => u32::from(pixel),
+            RegFile::LoopCounter => u32::from(r.loop_counter),
+            RegFile::Position | RegFile::Face => u32::from(self == Profile::Ps3_0),
+            RegFile::Label => u32::from(flow) * 2048,
+            RegFile::Texture => r.texcoords,
+            RegFile::Address => u32::from(r.address),
+            RegFile::AttrOut => u32::from(legacy_vs) * 2,
+            RegFile::TexCoordOut => u32::from(legacy_vs) * 8,
+            RegFile::Output => u32::from(vs3) * r.outputs,
+            RegFile::PosOut | RegFile::FogOut | RegFile::PointSizeOut => u32::from(legacy_vs),
+        }
+    }
+
+    /// Whether ps30 runs shaders of this profile (the emulator, the GPU
+    /// backend, `render`, `compare`): ps_3_0 only.
+    pub fn runs(self) -> bool {
+        self == Profile::Ps3_0
     }
 }
 
@@ -863,7 +1008,8 @@ pub fn markdown_table() -> String {
     let mut s = String::from(
         "| mnemonic | slots (Microsoft's count) | slots (documented) | class | meaning |\n|---|---|---|---|---|\n",
     );
-    for r in TABLE {
+    // The guide's list is ps_3_0's; the other profiles' are docs/profiles.md's.
+    for r in TABLE.iter().filter(|r| r.op.profiles().has(Profile::Ps3_0)) {
         let name = if r.comparison {
             format!("{}_comp", r.mnemonic)
         } else {
@@ -931,7 +1077,8 @@ mod tests {
     #[test]
     fn the_tables_differ_on_seven_rows_and_the_documented_one_is_never_lower() {
         let mut differ = Vec::new();
-        for r in TABLE {
+        // The documented table is the ps_3_0 page's.
+        for r in TABLE.iter().filter(|r| r.op.profiles().has(Profile::Ps3_0)) {
             for (cube, predicated) in [(false, false), (true, false), (false, true), (true, true)] {
                 let fxc = r.count(SlotTable::Fxc, cube, predicated).total();
                 let doc = r.count(SlotTable::Documented, cube, predicated).total();
@@ -971,6 +1118,9 @@ mod tests {
         assert_eq!(Opcode::from_mnemonic("break", false), Some(Opcode::Break));
         assert_eq!(Opcode::from_mnemonic("texldl", false), Some(Opcode::TexLdL));
         assert_eq!(Opcode::from_mnemonic("TexLdL", false), None);
-        assert_eq!(Opcode::from_mnemonic("lit", false), None);
+        // A vertex-shader instruction is a row, of the vertex profiles only.
+        assert_eq!(Opcode::from_mnemonic("lit", false), Some(Opcode::Lit));
+        assert!(!Opcode::Lit.profiles().has(Profile::Ps3_0));
+        assert_eq!(Opcode::from_mnemonic("texcrd", false), None);
     }
 }

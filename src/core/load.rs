@@ -219,6 +219,10 @@ fn stages(file: SourceFile, options: &Options) -> Result<Stages, SourceError> {
         // The rest would be judged by the wrong rules: the version says it all.
         return fail(file, only(d));
     }
+    let profile = stmts
+        .first()
+        .and_then(crate::core::valid::checked_profile)
+        .unwrap_or_default();
     if diags.has_errors() {
         // Still report macro problems of the lines that did parse.
         if let Err(more) = repeat::expand(&stmts, &options.defines, options.max_expanded) {
@@ -227,7 +231,7 @@ fn stages(file: SourceFile, options: &Options) -> Result<Stages, SourceError> {
         // And the checks of each line that did parse on its own.
         for stmt in &stmts {
             if let ast::Stmt::Instr(instr) = stmt {
-                if let Err(d) = crate::core::valid::lower::lower(instr) {
+                if let Err(d) = crate::core::valid::lower::lower(instr, profile) {
                     diags.push(d);
                 }
             }
@@ -273,15 +277,14 @@ fn only(d: Diagnostic) -> Diagnostics {
     all
 }
 
-/// A first statement that names another shader model (`ps_2_0`, `vs_3_0`).
+/// A first statement that names a shader model ps30 does not check
+/// (`ps_1_4`, `ps_2_b`, `ps_4_0`).
 fn other_version(stmts: &[ast::Stmt]) -> Option<Diagnostic> {
-    match stmts.first()? {
-        ast::Stmt::Version {
-            text,
-            major,
-            minor,
-            span,
-        } if !(text.to_ascii_lowercase().starts_with("ps") && *major == 3 && *minor == 0) => {
+    let first = stmts.first()?;
+    match first {
+        ast::Stmt::Version { text, span, .. }
+            if crate::core::valid::checked_profile(first).is_none() =>
+        {
             Some(crate::core::valid::version_refusal(text, *span))
         }
         _ => None,

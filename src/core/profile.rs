@@ -345,11 +345,20 @@ impl Profile {
         !matches!(self, Profile::Ps2A | Profile::Ps2B | Profile::Vs2A)
     }
 
-    /// Whether ps30 checks, counts, assembles and runs shaders of this
-    /// profile today: ps_3_0 only. The others are recognised and refused
-    /// with their name.
+    /// Whether ps30 reads, checks, counts, assembles and lists shaders of
+    /// this profile: ps_2_0, ps_2_x, ps_3_0, vs_2_0, vs_2_x and vs_3_0. The
+    /// others (ps_1_x, vs_1_1, and the HLSL-only target names) are
+    /// recognised and refused with their name.
     pub fn checked(self) -> bool {
-        self == Profile::Ps3_0
+        matches!(
+            self,
+            Profile::Ps2_0
+                | Profile::Ps2X
+                | Profile::Ps3_0
+                | Profile::Vs2_0
+                | Profile::Vs2X
+                | Profile::Vs3_0
+        )
     }
 
     /// The `ps_2_x` capabilities a profile is checked against: the two named
@@ -488,11 +497,13 @@ impl Profile {
                 dependent_reads: Some(2),
                 ..none
             },
+            // No flow control: every slot runs once, so 96 executed.
             Profile::Ps2_0 => Limits {
                 slots: Some(96),
                 arithmetic: Some(64),
                 texture: Some(32),
                 dependent_reads: Some(4),
+                executed: Some(96),
                 ..none
             },
             Profile::Ps2A | Profile::Ps2B | Profile::Ps2X => {
@@ -532,6 +543,13 @@ impl Profile {
                 ..none
             },
         }
+    }
+}
+
+impl Default for Profile {
+    /// ps_3_0, the profile ps30 runs.
+    fn default() -> Profile {
+        Profile::Ps3_0
     }
 }
 

@@ -28,7 +28,7 @@ fn verdict(name: &str, bytes: &[u8]) -> Result<(), Option<String>> {
 }
 
 /// How ps30 and Microsoft differ on one fixture, if they do.
-fn disagreement(f: &Fixture) -> Option<String> {
+pub(super) fn disagreement(f: &Fixture) -> Option<String> {
     let ours = verdict(&f.name(), &f.source);
     let theirs = f.error_code();
     match (f.accepted(), ours) {

@@ -18,7 +18,7 @@ use ps30::core::load::{self, Options};
 
 /// Little-endian tokens of a bytecode file (a trailing partial token is
 /// dropped: the reader reports it; here the tokens are compared).
-fn tokens(bytes: &[u8]) -> Vec<u32> {
+pub(super) fn tokens(bytes: &[u8]) -> Vec<u32> {
     bytes
         .chunks_exact(4)
         .map(|c| u32::from_le_bytes([c[0], c[1], c[2], c[3]]))
@@ -84,7 +84,7 @@ fn only_nan_payloads_differ(a: &[u32], b: &[u32]) -> bool {
 }
 
 /// Where two token streams first differ, if they do.
-fn first_difference(ours: &[u32], theirs: &[u32]) -> Option<String> {
+pub(super) fn first_difference(ours: &[u32], theirs: &[u32]) -> Option<String> {
     let at = ours
         .iter()
         .zip(theirs)
@@ -101,7 +101,7 @@ fn first_difference(ours: &[u32], theirs: &[u32]) -> Option<String> {
 }
 
 /// ps30's tokens for some source bytes, or its first diagnostic.
-fn ps30_assemble(name: &str, bytes: Vec<u8>) -> Result<Vec<u32>, String> {
+pub(super) fn ps30_assemble(name: &str, bytes: Vec<u8>) -> Result<Vec<u32>, String> {
     let options = Options::default();
     let file = load::source_file(name, bytes, &options).map_err(|e| e.to_string())?;
     match load::assemble(file, &options) {

@@ -14,7 +14,7 @@ use ps30::core::bytecode::{microsoft, read::read};
 const MAX_ITEMS: u64 = 1 << 20;
 
 /// ps30's default listing of `fxo`, or why there is none.
-fn ps30_listing(fxo: &[u8]) -> Result<String, String> {
+pub(super) fn ps30_listing(fxo: &[u8]) -> Result<String, String> {
     read(fxo, MAX_ITEMS)
         .map(|m| microsoft::listing(&m))
         .map_err(|e| {
@@ -27,7 +27,7 @@ fn ps30_listing(fxo: &[u8]) -> Result<String, String> {
 }
 
 /// The first line where two texts differ: its number and both versions.
-fn first_difference(ours: &str, theirs: &str) -> String {
+pub(super) fn first_difference(ours: &str, theirs: &str) -> String {
     let (a, b): (Vec<&str>, Vec<&str>) = (ours.split('\n').collect(), theirs.split('\n').collect());
     let n = a.len().max(b.len());
     (0..n)

@@ -43,7 +43,7 @@ pub(super) fn listing_count(dis: &str) -> Option<(String, SlotCount)> {
 
 /// ps30's count under Microsoft's table of a shader given as bytes
 /// (bytecode or text), loaded as `ps30 check` loads it.
-fn ps30_count(name: &str, bytes: &[u8]) -> Result<SlotCount, String> {
+pub(super) fn ps30_count(name: &str, bytes: &[u8]) -> Result<SlotCount, String> {
     let options = Options::default();
     let file = load::source_file(name, bytes.to_vec(), &options).map_err(|e| e.to_string())?;
     let loaded = load::load(file, &options).map_err(|e| {

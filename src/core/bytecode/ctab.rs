@@ -215,8 +215,13 @@ pub fn decode(table: &[u32]) -> R<ConstantTable> {
             ),
         );
     }
+    // The registers are checked against the profile the table names (its
+    // version token); ps_3_0's files where it names none ps30 reads.
+    let profile = crate::core::profile::Profile::from_token(d.dword(8, "the header")?)
+        .filter(|p| p.checked())
+        .unwrap_or_default();
     let constants = (0..count)
-        .map(|i| d.constant(info + 20 * i))
+        .map(|i| d.constant(info + 20 * i, profile))
         .collect::<R<Vec<_>>>()?;
     Ok(ConstantTable {
         creator,
@@ -318,7 +323,7 @@ impl<'a> Decoder<'a> {
     }
 
     /// One D3DXSHADER_CONSTANTINFO.
-    fn constant(&mut self, at: usize) -> R<Constant> {
+    fn constant(&mut self, at: usize, profile: crate::core::profile::Profile) -> R<Constant> {
         self.spend(20, at)?;
         let name = self.string_at(at, "a constant's name")?;
         let set = match self.word(at + 4, "a constant")? {
@@ -338,7 +343,7 @@ impl<'a> Decoder<'a> {
         };
         let index = self.word(at + 6, "a constant")?;
         let count = self.word(at + 8, "a constant")?;
-        // The registers it names must exist in ps_3_0's register file of
+        // The registers it names must exist in the profile's register file of
         // that set (the table is hostile input: `--const NAME=` and `run`
         // would otherwise address registers that are not there).
         let file = match set {
@@ -347,7 +352,7 @@ impl<'a> Decoder<'a> {
             RegisterSet::Float4 => RegFile::Const,
             RegisterSet::Sampler => RegFile::Sampler,
         };
-        let available = file.info().count;
+        let available = profile.count(file);
         if u32::from(index) + u32::from(count) > available {
             return err(
                 at + 6,
@@ -359,7 +364,7 @@ impl<'a> Decoder<'a> {
                     (u32::from(index) + u32::from(count)).saturating_sub(1),
                     set.name(),
                     set.prefix(),
-                    available - 1
+                    available.saturating_sub(1)
                 ),
             );
         }

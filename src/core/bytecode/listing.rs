@@ -20,6 +20,7 @@ use super::{ctab, Dest, Extra, Instr, ItemKind, Module, Source, CENTROID, CTAB, 
 use crate::core::front::parse::{COMMENT_BLOCK, COMMENT_MORE};
 use crate::core::ir::{SrcMod, WriteMask};
 use crate::core::isa::{Class, Opcode, RegFile, USAGES};
+use crate::core::profile::Profile;
 use std::fmt::Write;
 
 /// A listing and where its parts came from.
@@ -42,6 +43,7 @@ pub fn listing(module: &Module) -> Listing {
             text: String::new(),
             anchors: Vec::new(),
         },
+        profile: module.profile,
     };
     let table = module.items.iter().find_map(|i| match &i.kind {
         ItemKind::Comment(body) if body.first() == Some(&CTAB) => {
@@ -54,7 +56,7 @@ pub fn listing(module: &Module) -> Listing {
             l.line(0, line);
         }
     }
-    l.line(0, "    ps_3_0");
+    l.line(0, &format!("    {}", module.profile));
     let mut depth = 0usize;
     for item in &module.items {
         match &item.kind {
@@ -137,6 +139,7 @@ pub fn slots(module: &Module) -> (u32, u32) {
 
 struct Builder {
     out: Listing,
+    profile: Profile,
 }
 
 impl Builder {
@@ -180,7 +183,7 @@ impl Builder {
         self.anchor(token);
         let indent = 4 + 2 * depth;
         self.out.text.push_str(&" ".repeat(indent));
-        let (line, anchors) = instruction_line(ins, token);
+        let (line, anchors) = instruction_line(ins, token, self.profile);
         let start = self.out.text.len() as u32;
         self.out
             .anchors
@@ -192,12 +195,12 @@ impl Builder {
 
 /// One instruction as assembly, e.g. `texld r0, v0, s0`.
 pub fn instruction_text(ins: &Instr) -> String {
-    instruction_line(ins, 0).0
+    instruction_line(ins, 0, Profile::Ps3_0).0
 }
 
 /// One instruction as assembly, with `(offset in the line, token)` for
 /// each operand; `token` is the instruction token's index.
-fn instruction_line(ins: &Instr, token: u32) -> (String, Vec<(u32, u32)>) {
+fn instruction_line(ins: &Instr, token: u32, profile: Profile) -> (String, Vec<(u32, u32)>) {
     let mut line = String::new();
     let mut anchors = Vec::new();
     // Token positions: [usage], dst, [predicate], sources (+ relative).
@@ -209,7 +212,7 @@ fn instruction_line(ins: &Instr, token: u32) -> (String, Vec<(u32, u32)>) {
         let _ = write!(line, "({}) ", source_text(p));
         at += 1 + u32::from(p.relative);
     }
-    line.push_str(&mnemonic(ins));
+    line.push_str(&mnemonic(ins, profile));
     let mut operands: Vec<(u32, String)> = Vec::new();
     if let Some(d) = &ins.dst {
         operands.push((dst_at, dest_text(d)));
@@ -231,7 +234,7 @@ fn instruction_line(ins: &Instr, token: u32) -> (String, Vec<(u32, u32)>) {
 
 /// The mnemonic with its suffixes: comparison, declaration kind, result
 /// modifiers.
-fn mnemonic(ins: &Instr) -> String {
+fn mnemonic(ins: &Instr, profile: Profile) -> String {
     let mut m = ins.op.info().mnemonic.to_string();
     if let Some(c) = ins.compare {
         let _ = write!(m, "_{}", c.suffix());
@@ -250,7 +253,12 @@ fn mnemonic(ins: &Instr) -> String {
             2 => m.push_str("_2d"),
             3 => m.push_str("_cube"),
             4 => m.push_str("_volume"),
-            _ if d.reg.file == RegFile::Input || usage != 0 || index != 0 => {
+            // ps_2_0 and ps_2_x declare t# and v# without a usage.
+            _ if usage != 0
+                || index != 0
+                || matches!(d.reg.file, RegFile::Input | RegFile::Output)
+                    && !matches!(profile, Profile::Ps2_0 | Profile::Ps2X) =>
+            {
                 let _ = write!(m, "_{}", USAGES[usage as usize]);
                 if index != 0 {
                     let _ = write!(m, "{index}");

@@ -45,6 +45,7 @@ use super::{
 };
 use crate::core::ir::{SrcMod, Swizzle, WriteMask};
 use crate::core::isa::{Opcode, RegFile, USAGES};
+use crate::core::profile::{Profile, Stage};
 use std::collections::HashMap;
 use std::fmt::Write;
 
@@ -60,7 +61,7 @@ pub fn listing(module: &Module) -> String {
             _ => None,
         })
         .unwrap_or_default();
-    out.push_str("    ps_3_0\n");
+    let _ = writeln!(out, "    {}", module.profile);
     let mut debug = Debug::of(module);
     let mut depth = 0usize;
     let instrs = module.items.iter().filter_map(|i| match &i.kind {
@@ -76,7 +77,7 @@ pub fn listing(module: &Module) -> String {
         }
         debug.line_directive(&mut out, token.wrapping_mul(4));
         out.push_str(&" ".repeat(4 + 2 * depth));
-        out.push_str(&instruction(ins));
+        out.push_str(&instruction_in(ins, module.profile));
         out.push_str(debug.note(index));
         out.push('\n');
         if ins.op.opens_block() || ins.op == Opcode::Else {
@@ -172,6 +173,11 @@ pub fn slots(module: &Module) -> (u32, u32) {
 
 /// One instruction as the listing writes it, without indentation.
 pub fn instruction(ins: &Instr) -> String {
+    instruction_in(ins, Profile::Ps3_0)
+}
+
+/// One instruction of a `profile` shader as the listing writes it.
+pub fn instruction_in(ins: &Instr, profile: Profile) -> String {
     let mut line = String::new();
     if let Some(p) = &ins.predicate {
         let _ = write!(line, "({}) ", source(p));
@@ -182,7 +188,7 @@ pub fn instruction(ins: &Instr) -> String {
             return line;
         }
     }
-    line.push_str(&mnemonic(ins));
+    line.push_str(&mnemonic(ins, profile));
     let mut operands: Vec<String> = Vec::new();
     operands.extend(ins.dst.as_ref().map(dest));
     operands.extend(ins.src.iter().map(source));
@@ -201,7 +207,7 @@ pub fn instruction(ins: &Instr) -> String {
 
 /// The mnemonic with its suffixes: comparison, declaration, result
 /// modifiers.
-fn mnemonic(ins: &Instr) -> String {
+fn mnemonic(ins: &Instr, profile: Profile) -> String {
     let mut m = ins.op.info().mnemonic.to_string();
     if let Some(c) = ins.compare {
         let _ = write!(m, "_{}", c.suffix());
@@ -223,7 +229,7 @@ fn mnemonic(ins: &Instr) -> String {
                 4 => "_volume",
                 _ => "_unknown",
             });
-        } else if usage != 0 || index != 0 {
+        } else if usage != 0 || index != 0 || profile.stage() == Stage::Vertex {
             let name = USAGES.get(usage as usize).copied().unwrap_or("unknown");
             let _ = write!(m, "_{name}");
             if index != 0 {

@@ -100,6 +100,8 @@ pub const CENTROID: u8 = 4;
 /// version token and the end token.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Module {
+    /// The profile of its version token.
+    pub profile: crate::core::profile::Profile,
     /// Instructions and comments in stream order (neither the version nor the
     /// end token).
     pub items: Vec<Item>,

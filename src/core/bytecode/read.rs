@@ -21,7 +21,7 @@ use crate::core::profile::Profile;
 /// comments (the same cap as REPEAT_BLOCK's expanded statements).
 pub fn read(bytes: &[u8], max_items: u64) -> Result<Module, ReadError> {
     let tokens = Tokens::new(bytes)?;
-    version(&tokens)?;
+    let profile = version(&tokens)?;
     let mut items = Vec::new();
     let mut at = 1;
     loop {
@@ -48,7 +48,7 @@ pub fn read(bytes: &[u8], max_items: u64) -> Result<Module, ReadError> {
         let (kind, next) = if t & 0xFFFF == COMMENT {
             comment(&tokens, at)?
         } else {
-            let (instr, next) = instruction(&tokens, at)?;
+            let (instr, next) = instruction(&tokens, at, profile)?;
             (ItemKind::Instr(instr), next)
         };
         items.push(Item {
@@ -69,7 +69,7 @@ pub fn read(bytes: &[u8], max_items: u64) -> Result<Module, ReadError> {
         )
         .with_help("a shader ends with its end token; the file holds something more"));
     }
-    Ok(Module { items })
+    Ok(Module { profile, items })
 }
 
 /// The stream as little-endian tokens, read on demand (never copied).
@@ -103,13 +103,17 @@ impl<'a> Tokens<'a> {
     }
 }
 
-/// The version token must be ps_3_0's; other shaders are named.
-fn version(tokens: &Tokens) -> Result<(), ReadError> {
+/// The version token must be a profile ps30 reads ([`Profile::checked`]);
+/// other shaders are named.
+fn version(tokens: &Tokens) -> Result<Profile, ReadError> {
     let Some(v) = tokens.get(0) else {
         return Err(ReadError::at(0, "empty: no version token"));
     };
     if v == VERSION_PS_3_0 {
-        return Ok(());
+        return Ok(Profile::Ps3_0);
+    }
+    if let Some(p) = Profile::from_token(v).filter(|p| p.checked()) {
+        return Ok(p);
     }
     let message = match (version_name(v), v >> 16) {
         (Some(name), _) => format!("a {name} shader (version token {v:#010x})"),
@@ -120,9 +124,9 @@ fn version(tokens: &Tokens) -> Result<(), ReadError> {
     };
     let help = match Profile::from_token(v) {
         Some(p) => format!(
-            "ps30 reads ps_3_0 only; it knows {p}'s instructions, registers and limits (docs/profiles.md) but does not read {p} shaders yet"
+            "ps30 reads ps_2_0, ps_2_x, ps_3_0, vs_2_0, vs_2_x and vs_3_0; it recognises {p} (docs/profiles.md) but does not read {p} shaders yet"
         ),
-        None => "ps30 reads ps_3_0 only".to_string(),
+        None => "ps30 reads ps_2_0, ps_2_x, ps_3_0, vs_2_0, vs_2_x and vs_3_0".to_string(),
     };
     Err(ReadError::at(0, message).with_help(help))
 }
@@ -194,7 +198,7 @@ const FOREIGN: &[(u16, &str)] = &[
 ];
 
 /// One instruction token and its operands; returns the index after it.
-fn instruction(tokens: &Tokens, at: usize) -> Result<(Instr, usize), ReadError> {
+fn instruction(tokens: &Tokens, at: usize, profile: Profile) -> Result<(Instr, usize), ReadError> {
     let t = tokens.get(at).unwrap_or_default();
     let byte = at * 4;
     let code = (t & 0xFFFF) as u16;
@@ -207,7 +211,16 @@ fn instruction(tokens: &Tokens, at: usize) -> Result<(Instr, usize), ReadError> 
         };
         return Err(ReadError::at(byte, message));
     };
-    let row = op.info();
+    if !op.profiles().has(profile) {
+        return Err(ReadError::at(
+            byte,
+            format!(
+                "opcode {code:#x} ({}) is not a {profile} instruction",
+                op.info().mnemonic
+            ),
+        ));
+    }
+    let row = op.info_in(profile);
     for (bit, what) in [
         (31, "bit 31, which an instruction token keeps clear"),
         (30, "the co-issue bit (ps_1_x only)"),
@@ -260,6 +273,7 @@ fn instruction(tokens: &Tokens, at: usize) -> Result<(Instr, usize), ReadError> 
         byte,
         mnemonic: row.mnemonic,
         len,
+        profile,
     };
     let predicated = t & 1 << 28 != 0;
     let instr = operands(op, predicated, compare, &mut ops)?;
@@ -285,6 +299,7 @@ struct Operands<'a, 'b> {
     byte: usize,
     mnemonic: &'static str,
     len: usize,
+    profile: Profile,
 }
 
 impl Operands<'_, '_> {
@@ -306,12 +321,12 @@ impl Operands<'_, '_> {
 
     fn dest(&mut self) -> Result<Dest, ReadError> {
         let (t, byte) = self.take()?;
-        dest(t, byte)
+        dest(t, byte, self.profile)
     }
 
     fn source(&mut self) -> Result<Source, ReadError> {
         let (t, byte) = self.take()?;
-        let s = source(t, byte)?;
+        let s = source(t, byte, self.profile)?;
         if s.relative {
             let (rel, rbyte) = self.take()?;
             if rel != super::loop_counter_token() {
@@ -344,7 +359,7 @@ fn operands(
         let (usage, byte) = ops.take()?;
         instr.extra = declaration(usage, byte)?;
     }
-    let shape = op.info().operands;
+    let shape = op.info_in(ops.profile).operands;
     let has_dst = matches!(
         shape.first(),
         Some(Operand::Dst | Operand::PredDst | Operand::KillSrc)
@@ -455,7 +470,7 @@ const REGISTER_TYPES: [&str; 20] = [
 ];
 
 /// The register of a parameter token, in range unless `relative`.
-fn register(t: u32, byte: usize, relative: bool) -> Result<Reg, ReadError> {
+fn register(t: u32, byte: usize, relative: bool, profile: Profile) -> Result<Reg, ReadError> {
     if t & 0x8000_0000 == 0 {
         return Err(ReadError::at(
             byte,
@@ -470,26 +485,34 @@ fn register(t: u32, byte: usize, relative: bool) -> Result<Reg, ReadError> {
     }
     let ty = ((t >> 28) & 7 | (t >> 8) & 0x18) as u8;
     let number = t & 0x7FF;
-    let Some((file, index)) = RegFile::from_token(ty, number) else {
+    let Some((file, index)) = RegFile::from_token_in(ty, number, profile) else {
         let name = REGISTER_TYPES
             .get(ty as usize)
             .copied()
             .unwrap_or("undefined");
-        let message = if REG_FILES.iter().any(|f| f.token_type == ty) {
+        let message = if REG_FILES
+            .iter()
+            .any(|f| f.token_type == ty && profile.count(f.file) > 0)
+        {
             format!("register {number} of type {ty} ({name}) does not exist")
         } else {
-            format!("register type {ty} ({name}) does not exist in pixel shaders 3.0")
+            let stage = match profile {
+                Profile::Ps3_0 => "pixel shaders 3.0",
+                p => p.name(),
+            };
+            format!("register type {ty} ({name}) does not exist in {stage}")
         };
         return Err(ReadError::at(byte, message));
     };
     let info = file.info();
-    if !relative && index >= info.count {
+    let count = profile.count(file);
+    if !relative && index >= count {
         return Err(ReadError::at(
             byte,
             format!(
-                "{}{index} does not exist: ps_3_0 has {0}0 to {0}{1}",
+                "{}{index} does not exist: {profile} has {0}0 to {0}{1}",
                 info.name,
-                info.count - 1
+                count - 1
             ),
         ));
     }
@@ -497,14 +520,14 @@ fn register(t: u32, byte: usize, relative: bool) -> Result<Reg, ReadError> {
 }
 
 /// A destination-format token.
-fn dest(t: u32, byte: usize) -> Result<Dest, ReadError> {
+fn dest(t: u32, byte: usize, profile: Profile) -> Result<Dest, ReadError> {
     if t & 1 << 13 != 0 {
         return Err(ReadError::at(
             byte,
             "a relatively addressed destination (o[aL] is vs_3_0 only)",
         ));
     }
-    let reg = register(t, byte, false)?;
+    let reg = register(t, byte, false, profile)?;
     if (t >> 24) & 0xF != 0 {
         return Err(ReadError::at(
             byte,
@@ -533,9 +556,9 @@ fn dest(t: u32, byte: usize) -> Result<Dest, ReadError> {
 }
 
 /// A source-format token (its relative-address token is read by the caller).
-fn source(t: u32, byte: usize) -> Result<Source, ReadError> {
+fn source(t: u32, byte: usize, profile: Profile) -> Result<Source, ReadError> {
     let relative = t & 1 << 13 != 0;
-    let reg = register(t, byte, relative)?;
+    let reg = register(t, byte, relative, profile)?;
     let modifier = modifier_from_code(((t >> 24) & 0xF) as u8).map_err(|name| {
         ReadError::at(
             byte,

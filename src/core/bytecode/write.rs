@@ -14,13 +14,14 @@
 
 use super::{
     dest_token, loop_counter_token, source_token, Dest, Extra, Instr, Item, ItemKind, Module,
-    Source, CENTROID, COMMENT, END, PP, SAT, VERSION_PS_3_0,
+    Source, CENTROID, COMMENT, END, PP, SAT,
 };
 use crate::core::diag::{codes, Diagnostic, Diagnostics};
 use crate::core::front::ast::{InstrAst, OperandAst, RegAst, Stmt};
 use crate::core::front::repeat::Expanded;
 use crate::core::ir::{Reg, Span, SrcMod};
 use crate::core::isa::{Class, Compare, Opcode, Operand, USAGES};
+use crate::core::profile::Profile;
 use crate::core::valid::register::{resolve_reg, swizzle, write_mask};
 use std::collections::HashMap;
 
@@ -28,7 +29,7 @@ type R<T> = Result<T, Diagnostic>;
 
 /// The tokens of a module: version, items, end.
 pub fn encode(module: &Module) -> Vec<u32> {
-    let mut out = vec![VERSION_PS_3_0];
+    let mut out = vec![module.profile.version_token()];
     for item in &module.items {
         match &item.kind {
             ItemKind::Comment(body) => {
@@ -92,14 +93,17 @@ pub fn assemble(stmts: &[Stmt], expanded: &[Expanded]) -> Result<Module, Diagnos
     let mut items = Vec::with_capacity(expanded.len());
     let mut cache: HashMap<usize, Option<ItemKind>> = HashMap::new();
     let mut token = 1u32;
+    let profile = expanded
+        .first()
+        .and_then(|e| crate::core::valid::checked_profile(&stmts[e.stmt]))
+        .unwrap_or_default();
     for (n, e) in expanded.iter().enumerate() {
         let kind = match &stmts[e.stmt] {
-            Stmt::Version {
-                major: 3,
-                minor: 0,
-                text,
-                ..
-            } if n == 0 && text.to_ascii_lowercase().starts_with("ps") => continue,
+            s @ Stmt::Version { .. }
+                if n == 0 && crate::core::valid::checked_profile(s).is_some() =>
+            {
+                continue
+            }
             Stmt::Version { text, span, .. } => {
                 diags.push(version_error(text, *span, n == 0));
                 continue;
@@ -115,7 +119,7 @@ pub fn assemble(stmts: &[Stmt], expanded: &[Expanded]) -> Result<Module, Diagnos
             Stmt::Comment { tokens, .. } => Some(ItemKind::Comment(tokens.clone())),
             Stmt::Instr(ast) => cache
                 .entry(e.stmt)
-                .or_insert_with(|| match instruction(ast) {
+                .or_insert_with(|| match instruction(ast, profile) {
                     Ok(i) => Some(ItemKind::Instr(i)),
                     Err(d) => {
                         diags.push(d);
@@ -140,14 +144,17 @@ pub fn assemble(stmts: &[Stmt], expanded: &[Expanded]) -> Result<Module, Diagnos
     }
     match diags.has_errors() {
         true => Err(diags),
-        false => Ok(Module { items }),
+        false => Ok(Module { profile, items }),
     }
 }
 
 fn version_error(text: &str, span: Span, first: bool) -> Diagnostic {
     if first {
-        Diagnostic::error(span, format!("`{text}`: ps30 writes ps_3_0 only"))
-            .with_label("not ps_3_0")
+        Diagnostic::error(
+            span,
+            format!("`{text}`: ps30 writes ps_2_0, ps_2_x, ps_3_0, vs_2_0, vs_2_x and vs_3_0"),
+        )
+        .with_label("not ps_3_0")
     } else {
         Diagnostic::error(span, "a second version line")
             .with_label("the version token comes once, first")
@@ -159,12 +166,12 @@ fn cannot(span: Span, message: impl Into<String>) -> Diagnostic {
 }
 
 /// One statement's instruction.
-fn instruction(ast: &InstrAst) -> R<Instr> {
-    let predicate = ast.predicate.as_ref().map(source).transpose()?;
+fn instruction(ast: &InstrAst, p: Profile) -> R<Instr> {
+    let predicate = ast.predicate.as_ref().map(|r| source(r, p)).transpose()?;
     let mut instr = match ast.base.as_str() {
-        "dcl" => declaration(ast)?,
-        "def" | "defi" | "defb" => definition(ast)?,
-        _ => operation(ast)?,
+        "dcl" => declaration(ast, p)?,
+        "def" | "defi" | "defb" => definition(ast, p)?,
+        _ => operation(ast, p)?,
     };
     instr.predicate = predicate;
     Ok(instr)
@@ -188,14 +195,14 @@ fn suffixes(ast: &InstrAst, mut kind: impl FnMut(&str, Span) -> R<()>) -> R<(u8,
 }
 
 /// An arithmetic, texture or flow-control instruction.
-fn operation(ast: &InstrAst) -> R<Instr> {
+fn operation(ast: &InstrAst, p: Profile) -> R<Instr> {
     let (result, compare) = suffixes(ast, |s, span| {
         Err(cannot(span, format!("`_{s}` is not a ps_3_0 modifier")))
     })?;
     let op = Opcode::from_mnemonic(&ast.base, compare.is_some())
         .filter(|op| op.class() != Class::Declaration)
         .ok_or_else(|| cannot(ast.base_span, format!("unknown instruction `{}`", ast.base)))?;
-    let row = op.info();
+    let row = op.info_in(p);
     if compare.is_some() != row.comparison {
         return Err(cannot(
             ast.base_span,
@@ -233,9 +240,9 @@ fn operation(ast: &InstrAst) -> R<Instr> {
         };
         match kind {
             Operand::Dst | Operand::PredDst | Operand::KillSrc => {
-                instr.dst = Some(dest(reg, result)?)
+                instr.dst = Some(dest(reg, result, p)?)
             }
-            _ => instr.src.push(source(reg)?),
+            _ => instr.src.push(source(reg, p)?),
         }
     }
     if result != 0 && instr.dst.is_none() {
@@ -271,7 +278,7 @@ pub fn sub_as_add(instr: &mut Instr) {
 }
 
 /// `dcl_<usage><n>`, `dcl_2d`, `dcl` with their register.
-fn declaration(ast: &InstrAst) -> R<Instr> {
+fn declaration(ast: &InstrAst, p: Profile) -> R<Instr> {
     let (mut usage, mut index, mut texture, mut seen) = (0u8, 0u8, 0u8, false);
     let (result, compare) = suffixes(ast, |s, span| {
         if seen {
@@ -319,7 +326,7 @@ fn declaration(ast: &InstrAst) -> R<Instr> {
         op: Opcode::Dcl,
         compare: None,
         predicate: None,
-        dst: Some(dest(reg, result)?),
+        dst: Some(dest(reg, result, p)?),
         src: Vec::new(),
         extra: Extra::Decl {
             usage,
@@ -330,7 +337,7 @@ fn declaration(ast: &InstrAst) -> R<Instr> {
 }
 
 /// `def`, `defi`, `defb`.
-fn definition(ast: &InstrAst) -> R<Instr> {
+fn definition(ast: &InstrAst, p: Profile) -> R<Instr> {
     let (result, compare) = suffixes(ast, |s, span| {
         Err(cannot(span, format!("`_{s}` on a definition")))
     })?;
@@ -351,7 +358,7 @@ fn definition(ast: &InstrAst) -> R<Instr> {
             "the defined register comes first",
         ));
     };
-    let dst = dest(reg, result)?;
+    let dst = dest(reg, result, p)?;
     let literal = &ast.operands[1..];
     let extra = match op {
         Opcode::DefB => match literal[0] {
@@ -410,7 +417,7 @@ fn number(operand: &OperandAst, integer: bool) -> R<u32> {
 }
 
 /// A register in destination format.
-fn dest(reg: &RegAst, result: u8) -> R<Dest> {
+fn dest(reg: &RegAst, result: u8, p: Profile) -> R<Dest> {
     if reg.negate || reg.not || reg.abs || reg.relative.is_some() {
         return Err(cannot(
             reg.span,
@@ -418,14 +425,14 @@ fn dest(reg: &RegAst, result: u8) -> R<Dest> {
         ));
     }
     Ok(Dest {
-        reg: resolve_reg(reg)?,
+        reg: resolve_reg(reg, p)?,
         mask: write_mask(reg)?,
         result,
     })
 }
 
 /// A register in source format.
-fn source(reg: &RegAst) -> R<Source> {
+fn source(reg: &RegAst, p: Profile) -> R<Source> {
     let modifier = match (reg.negate, reg.abs, reg.not) {
         (false, false, false) => SrcMod::None,
         (true, false, false) => SrcMod::Neg,
@@ -434,7 +441,7 @@ fn source(reg: &RegAst) -> R<Source> {
         (false, false, true) => SrcMod::Not,
         _ => return Err(cannot(reg.span, "`!` together with `_abs`")),
     };
-    let base = resolve_reg(reg)?;
+    let base = resolve_reg(reg, p)?;
     let (index, relative) = match &reg.relative {
         None => (base.index, false),
         Some(rel) => {

@@ -79,6 +79,23 @@ impl Profile {
         }
     }
 
+    /// This budget for a shader of `p`: the profile's name, and its slot
+    /// and executed limits where they are lower (ps_2_0's 96 slots,
+    /// vs_2_0's 256 and 1,024 executed).
+    pub fn for_profile(self, p: crate::core::profile::Profile) -> Profile {
+        if p == crate::core::profile::Profile::Ps3_0 {
+            return self;
+        }
+        let limits = p.limits();
+        let lower = |ours: u64, theirs: Option<u32>| theirs.map_or(ours, |t| ours.min(t.into()));
+        Profile {
+            name: p.name().to_string(),
+            max_slots: lower(self.max_slots, limits.slots),
+            max_executed: lower(self.max_executed, limits.executed),
+            ..self
+        }
+    }
+
     /// This profile, counting with `table`.
     pub fn counting(self, table: SlotTable) -> Profile {
         Profile {
@@ -923,6 +940,8 @@ pub fn analyse(
     env: &Environment,
     profile: &Profile,
 ) -> Result<Analysis, CostError> {
+    let own = profile.clone().for_profile(shader.program().profile);
+    let profile = &own;
     for (reg, v) in &env.ints {
         if *reg >= 16 {
             return Err(CostError(format!("i{reg} does not exist (i0 … i15)")));

@@ -323,3 +323,28 @@ pub const BREAK_OUTSIDE: Code = "X5897";
 pub const LOOP_UNCLOSED: Code = "X5905";
 /// "End of shader reached and 'if' construct was not completed".
 pub const IF_UNCLOSED: Code = "X5906";
+/// "Too many (N) standard (non tex*) instruction slots used. Max. allowed
+/// is M." (ps_2_0: 64; ps_2_x: its slot count).
+pub const ARITHMETIC_SLOTS: Code = "X5234";
+/// "Too many (N) tex* instruction slots used. Max. allowed is 32." (ps_2_0).
+pub const TEXTURE_SLOTS: Code = "X5607";
+/// "Too many (N) total instruction slots used. Max. allowed is M." (ps_2_0,
+/// ps_2_x).
+pub const TOTAL_SLOTS: Code = "X5617";
+/// "Number of instruction slots used too high: N. Max. allowed is M."
+/// (vs_2_0, vs_2_x).
+pub const VERTEX_SLOTS: Code = "X5755";
+/// "Dependent tex-op sequence too long (4th order)" (ps_2_0).
+pub const DEPENDENT_READS: Code = "X5775";
+/// "Instruction not supported by version ps_2_0 pixel shader."
+pub const PS_UNSUPPORTED: Code = "X5190";
+/// "Instruction not supported by version vs_2_0 shader."
+pub const VS_UNSUPPORTED: Code = "X5655";
+/// "Second and third source params for SGN must both be different temp
+/// (r#) registers." (vs_2_0, vs_2_x).
+pub const SGN_SCRATCH: Code = "X5470";
+/// The same rule in vs_3_0.
+pub const SGN_SCRATCH_3_0: Code = "X5797";
+/// "When a ps_2_0 shader writes to oCn, it must write to all of oC(n-1)
+/// down to oC0 (no gaps)."
+pub const COLOUR_OUTPUT_GAP: Code = "X5573";

@@ -791,6 +791,17 @@ impl Builder<'_> {
                 i,
                 "declarations belong in Program's lists, not in instructions",
             )),
+            Opcode::Mova
+            | Opcode::Lit
+            | Opcode::Dst
+            | Opcode::Expp
+            | Opcode::Logp
+            | Opcode::Slt
+            | Opcode::Sge
+            | Opcode::Sgn => Err(malformed(
+                i,
+                "a vertex-shader instruction: the emulator runs ps_3_0",
+            )),
         }
     }
 
@@ -1105,6 +1116,11 @@ pub fn compile(shader: &Shader) -> Result<Compiled, EmuError> {
 /// [`compile`], each micro-op charging its instruction's slots under `table`.
 pub fn compile_under(shader: &Shader, table: SlotTable) -> Result<Compiled, EmuError> {
     let program = shader.program();
+    if !program.profile.runs() {
+        return Err(EmuError::NotRun {
+            profile: program.profile,
+        });
+    }
     let info = shader.info();
     let ins = shader.instructions();
     let n = ins.len();

@@ -489,6 +489,11 @@ pub struct GradientSite {
 #[non_exhaustive]
 #[allow(missing_docs)]
 pub enum EmuError {
+    /// The shader is of a profile ps30 checks and lists but does not run
+    /// (every profile but ps_3_0).
+    NotRun {
+        profile: crate::core::profile::Profile,
+    },
     /// The IR and its `Info` disagree, or use something the emulator cannot
     /// represent (`index` is the instruction).
     Malformed { index: usize, reason: String },
@@ -542,6 +547,10 @@ pub enum EmuError {
 impl fmt::Display for EmuError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
+            EmuError::NotRun { profile } => write!(
+                f,
+                "a {profile} shader: ps30 runs ps_3_0 shaders only ({profile} is read, checked, counted, assembled and listed: check, asm, disasm)"
+            ),
             EmuError::Malformed { index, reason } => {
                 write!(f, "instruction {}: cannot emulate: {}", index, reason)
             }

@@ -191,6 +191,12 @@ pub fn translate_specialised(
     entry: Entry,
     spec: &Specialisation,
 ) -> Result<Translation, TranslateError> {
+    let profile = shader.program().profile;
+    if !profile.runs() {
+        return Err(TranslateError::Unsupported(format!(
+            "a {profile} shader: ps30 translates ps_3_0 shaders only"
+        )));
+    }
     let mut module = naga::Module::default();
     let mut cx = Ctx::new(&mut module, shader)?;
     cx.spec = spec.clone();

@@ -9,6 +9,7 @@ use crate::core::ir::{
     Span, Src, SrcMod, Swizzle, WriteMask,
 };
 use crate::core::isa::{Class, Compare, OpInfo, Opcode, Operand, RegFile, SamplerType, USAGES};
+use crate::core::profile::Profile;
 
 /// What one statement becomes.
 #[derive(Clone, Debug)]
@@ -55,15 +56,49 @@ const NOT_PS30: &[(&str, &str)] = &[
 /// Lowers one statement of the AST to the IR, or a diagnostic naming what is
 /// wrong. The lowering's origin is left empty: a statement repeated by
 /// REPEAT_BLOCK is lowered once, and the validator gives each copy its own.
-pub fn lower(ast: &InstrAst) -> R<Lowered> {
+pub fn lower(ast: &InstrAst, p: Profile) -> R<Lowered> {
     let lowered = match ast.base.as_str() {
-        "dcl" => lower_dcl(ast),
-        "def" | "defi" | "defb" => lower_def(ast),
-        _ => lower_instruction(ast).map(Lowered::Instr),
+        "dcl" => lower_dcl(ast, p),
+        "def" | "defi" | "defb" => lower_def(ast, p),
+        _ => lower_instruction(ast, p).map(Lowered::Instr),
     };
     // What a statement alone can get wrong is, unless a check names a
     // validator rule, what Microsoft's grammar refuses: a syntax error.
     lowered.map_err(|d| d.or_code(codes::SYNTAX))
+}
+
+/// `sgn`'s second and third sources are scratch temporaries of the
+/// vertex profiles' macro: two different `r#` (X5470; X5797 in vs_3_0).
+fn sgn_sources(src: &[Src], ast: &InstrAst, p: Profile) -> R<()> {
+    let ok = match src {
+        [_, a, b] => a.reg.file == RegFile::Temp && b.reg.file == RegFile::Temp && a.reg != b.reg,
+        _ => true,
+    };
+    if ok {
+        return Ok(());
+    }
+    let code = match p {
+        Profile::Vs3_0 => codes::SGN_SCRATCH_3_0,
+        _ => codes::SGN_SCRATCH,
+    };
+    Err(Diagnostic::coded(
+        code,
+        ast.span,
+        "sgn's second and third sources must be two different temporaries r#",
+    )
+    .with_label("scratch registers of the sign computation"))
+}
+
+/// Microsoft's code for an instruction the profile lacks: its grammar's
+/// syntax error (X2000) for most, its validator's for the few the
+/// grammar takes (measured: `defb` and `if` in ps_2_0, X5190; `break` in
+/// vs_2_0, X5655).
+fn unavailable_code(op: Opcode, p: Profile) -> Option<codes::Code> {
+    match (p, op) {
+        (Profile::Ps2_0, Opcode::DefB | Opcode::If) => Some(codes::PS_UNSUPPORTED),
+        (Profile::Vs2_0, Opcode::Break) => Some(codes::VS_UNSUPPORTED),
+        _ => None,
+    }
 }
 
 fn unknown_mnemonic(ast: &InstrAst) -> Diagnostic {
@@ -133,15 +168,19 @@ struct Suffixes {
     compare: Option<Compare>,
 }
 
-fn lower_instruction(ast: &InstrAst) -> R<Instruction> {
+fn lower_instruction(ast: &InstrAst, p: Profile) -> R<Instruction> {
     let m = suffixes(ast)?;
-    let op = opcode(ast, m.compare)?;
-    let info = op.info();
+    let op = opcode(ast, m.compare, p)?;
+    let row = op.info_in(p);
+    let info = &row;
     check_modifiers(ast, info, &m)?;
-    let predicate = instruction_predicate(ast, info)?;
+    let predicate = instruction_predicate(ast, info, p)?;
     check_operand_count(ast, info)?;
-    grammar_of_operands(ast, info)?;
-    let (dst, src) = operands(ast, info)?;
+    grammar_of_operands(ast, info, p)?;
+    let (dst, src) = operands(ast, info, p)?;
+    if op == Opcode::Sgn {
+        sgn_sources(&src, ast, p)?;
+    }
     texture_sources(op, &src, ast)?;
     operand_rules(op, dst.as_ref(), &src, ast)?;
     depth_rules(op, dst.as_ref(), &src, ast)?;
@@ -193,12 +232,18 @@ fn suffixes(ast: &InstrAst) -> R<Suffixes> {
 
 /// The instruction the mnemonic names, with a comparison suffix exactly when
 /// it takes one.
-fn opcode(ast: &InstrAst, compare: Option<Compare>) -> R<Opcode> {
+fn opcode(ast: &InstrAst, compare: Option<Compare>, p: Profile) -> R<Opcode> {
     let op =
         Opcode::from_mnemonic(&ast.base, compare.is_some()).ok_or_else(|| unknown_mnemonic(ast))?;
     let info = op.info();
     if info.class == Class::Declaration {
         return Err(unknown_mnemonic(ast));
+    }
+    if !op.profiles().has(p) && p == Profile::Ps3_0 {
+        return Err(unknown_mnemonic(ast));
+    }
+    if !op.profiles().has(p) {
+        return Err(not_in_profile(ast, op, p));
     }
     if compare.is_some() && !info.comparison {
         let span = ast
@@ -223,6 +268,27 @@ fn opcode(ast: &InstrAst, compare: Option<Compare>) -> R<Opcode> {
         )));
     }
     Ok(op)
+}
+
+/// The refusal of an instruction `p` does not have (Microsoft's grammar is
+/// the profile's: mostly a syntax error there, X2000 then X2023).
+fn not_in_profile(ast: &InstrAst, op: Opcode, p: Profile) -> Diagnostic {
+    let mnemonic = op.info().mnemonic;
+    let has: Vec<&str> = Profile::ALL
+        .into_iter()
+        .filter(|q| op.profiles().has(*q) && q.checked())
+        .map(Profile::name)
+        .collect();
+    let d = Diagnostic::error(
+        ast.base_span,
+        format!("`{mnemonic}` is not a {p} instruction"),
+    )
+    .with_label(format!("not in {p}"))
+    .with_help(format!("{mnemonic} exists in {}", has.join(", ")));
+    match unavailable_code(op, p) {
+        Some(code) => d.with_code(code),
+        None => d,
+    }
 }
 
 /// `_sat` only where the table allows it, `_centroid` only on texture
@@ -284,7 +350,7 @@ fn check_modifiers(ast: &InstrAst, info: &OpInfo, m: &Suffixes) -> R<()> {
 }
 
 /// The `(p0.c)` / `(!p0.c)` prefix, on instructions that can be predicated.
-fn instruction_predicate(ast: &InstrAst, info: &OpInfo) -> R<Option<Predicate>> {
+fn instruction_predicate(ast: &InstrAst, info: &OpInfo, profile: Profile) -> R<Option<Predicate>> {
     let Some(p) = &ast.predicate else {
         return Ok(None);
     };
@@ -316,7 +382,7 @@ fn instruction_predicate(ast: &InstrAst, info: &OpInfo) -> R<Option<Predicate>> 
         .with_label("flow-control instructions take no predicate")
         .with_help("use if / breakp / callnz with p0 instead"));
     }
-    let src = predicate_operand(p, false)?;
+    let src = predicate_operand(p, false, profile)?;
     Ok(Some(Predicate {
         negate: src.modifier == SrcMod::Not,
         swizzle: src.swizzle,
@@ -355,12 +421,12 @@ fn check_operand_count(ast: &InstrAst, info: &OpInfo) -> R<()> {
 /// index on a register other than v# (`c[aL]` is the invalid register
 /// `c[...]`), and components on a scalar register (aL, b#, oDepth, vFace; a
 /// write mask on a destination, a swizzle on a source or on the index aL).
-fn grammar_of_operands(ast: &InstrAst, info: &OpInfo) -> R<()> {
+fn grammar_of_operands(ast: &InstrAst, info: &OpInfo, p: Profile) -> R<()> {
     for (kind, operand) in info.operands.iter().zip(&ast.operands) {
         let OperandAst::Reg(r) = operand else {
             continue;
         };
-        let reg = resolve_reg(r)?;
+        let reg = resolve_reg(r, p)?;
         let index = r.relative.as_ref().filter(|rel| rel.index_reg == "aL");
         if let Some(span) = index.and_then(|rel| rel.index_swizzle) {
             return Err(Diagnostic::coded(
@@ -403,7 +469,7 @@ fn grammar_of_operands(ast: &InstrAst, info: &OpInfo) -> R<()> {
 
 /// Each operand resolved as its place in the shape requires: the
 /// destination (if any) and the sources in order.
-fn operands(ast: &InstrAst, info: &OpInfo) -> R<(Option<Dst>, Vec<Src>)> {
+fn operands(ast: &InstrAst, info: &OpInfo, p: Profile) -> R<(Option<Dst>, Vec<Src>)> {
     let mut dst = None;
     let mut src = Vec::with_capacity(ast.operands.len());
     for (pos, (kind, operand)) in info.operands.iter().zip(&ast.operands).enumerate() {
@@ -423,11 +489,11 @@ fn operands(ast: &InstrAst, info: &OpInfo) -> R<(Option<Dst>, Vec<Src>)> {
             }
         };
         match kind {
-            Operand::Dst | Operand::KillSrc => dst = Some(destination(reg, *kind)?),
-            Operand::PredDst => dst = Some(predicate_destination(reg)?),
+            Operand::Dst | Operand::KillSrc => dst = Some(destination(reg, *kind, p)?),
+            Operand::PredDst => dst = Some(predicate_destination(reg, p)?),
             Operand::Src | Operand::ScalarSrc => {
-                texture_operand(reg, pos, info)?;
-                let s = float_source(reg).map_err(|d| source_code(d, pos, info))?;
+                texture_operand(reg, pos, info, p)?;
+                let s = float_source(reg, p).map_err(|d| source_code(d, pos, info))?;
                 // vFace is a scalar register (dimension 1 in Microsoft's
                 // ps_3_0 register table, and the operand of if_comp and
                 // break_comp its page names): it needs no swizzle to be one.
@@ -451,18 +517,18 @@ fn operands(ast: &InstrAst, info: &OpInfo) -> R<(Option<Dst>, Vec<Src>)> {
                 }
                 src.push(s);
             }
-            Operand::Sampler => src.push(sampler_operand(reg, pos, info.mnemonic)?),
+            Operand::Sampler => src.push(sampler_operand(reg, pos, info.mnemonic, p)?),
             Operand::IntReg => src.push(
-                plain_of(reg, RegFile::ConstInt, "an integer constant i#")
+                plain_of(reg, RegFile::ConstInt, "an integer constant i#", p)
                     .map_err(|d| d.or_code(codes::REP_OPERAND))?,
             ),
             Operand::LoopCounter => src.push(
-                plain_of(reg, RegFile::LoopCounter, "the loop counter aL")
+                plain_of(reg, RegFile::LoopCounter, "the loop counter aL", p)
                     .map_err(|d| d.or_code(codes::LOOP_COUNTER))?,
             ),
-            Operand::Label => src.push(plain_of(reg, RegFile::Label, "a label l#")?),
+            Operand::Label => src.push(plain_of(reg, RegFile::Label, "a label l#", p)?),
             Operand::Condition => {
-                if info.mnemonic == "breakp" && resolve_reg(reg)?.file != RegFile::Predicate {
+                if info.mnemonic == "breakp" && resolve_reg(reg, p)?.file != RegFile::Predicate {
                     return Err(Diagnostic::coded(
                         codes::BREAKP_CONDITION,
                         reg.span,
@@ -471,7 +537,7 @@ fn operands(ast: &InstrAst, info: &OpInfo) -> R<(Option<Dst>, Vec<Src>)> {
                     .with_label("not p0")
                     .with_help("for a boolean b#, use if b# / break / endif"));
                 }
-                src.push(condition(reg).map_err(|d| condition_code(d, info))?)
+                src.push(condition(reg, p).map_err(|d| condition_code(d, info))?)
             }
             Operand::FloatLits | Operand::IntLits | Operand::BoolLit => {
                 unreachable!("only def rows use literal shapes")
@@ -484,14 +550,17 @@ fn operands(ast: &InstrAst, info: &OpInfo) -> R<(Option<Dst>, Vec<Src>)> {
 /// The texld family reads its coordinate (operand 1) and texldd its
 /// gradients (operands 3 and 4) from r#, v# or c# only; Microsoft checks
 /// that before any other rule on them (vPos and vFace included).
-fn texture_operand(reg: &RegAst, pos: usize, info: &OpInfo) -> R<()> {
+fn texture_operand(reg: &RegAst, pos: usize, info: &OpInfo, p: Profile) -> R<()> {
     let code = match (info.class, pos, info.mnemonic) {
         (Class::Texture, 1, _) => codes::TEXLD_COORDINATE,
         (Class::Texture, 3 | 4, "texldd") => codes::TEXLDD_GRADIENT,
         _ => return Ok(()),
     };
-    let r = resolve_reg(reg)?;
-    if matches!(r.file, RegFile::Temp | RegFile::Input | RegFile::Const) {
+    let r = resolve_reg(reg, p)?;
+    if matches!(
+        r.file,
+        RegFile::Temp | RegFile::Input | RegFile::Const | RegFile::Texture
+    ) {
         return Ok(());
     }
     Err(Diagnostic::coded(
@@ -531,8 +600,8 @@ fn condition_code(d: Diagnostic, info: &OpInfo) -> Diagnostic {
 }
 
 /// setp's destination: p0 with a write mask.
-fn predicate_destination(reg: &RegAst) -> R<Dst> {
-    let r = resolve_reg(reg)?;
+fn predicate_destination(reg: &RegAst, p: Profile) -> R<Dst> {
+    let r = resolve_reg(reg, p)?;
     if r.file != RegFile::Predicate {
         return Err(Diagnostic::coded(
             codes::SETP_DESTINATION,
@@ -549,8 +618,8 @@ fn predicate_destination(reg: &RegAst) -> R<Dst> {
 }
 
 /// A sampler `s#` (operand `pos` of `mnemonic`), without modifiers.
-fn sampler_operand(reg: &RegAst, pos: usize, mnemonic: &str) -> R<Src> {
-    let r = resolve_reg(reg)?;
+fn sampler_operand(reg: &RegAst, pos: usize, mnemonic: &str, p: Profile) -> R<Src> {
+    let r = resolve_reg(reg, p)?;
     if r.file != RegFile::Sampler {
         return Err(Diagnostic::coded(
             codes::TEXLD_SAMPLER,
@@ -586,8 +655,13 @@ fn texture_sources(op: Opcode, src: &[Src], ast: &InstrAst) -> R<()> {
         return Ok(());
     }
     // The coordinate and texldd's gradients are r#, v# or c# (X5525,
-    // X5526): vPos and vFace are refused.
-    let plain = |s: &Src| matches!(s.reg.file, RegFile::Temp | RegFile::Input | RegFile::Const);
+    // X5526), or t# where the profile has them: vPos and vFace are refused.
+    let plain = |s: &Src| {
+        matches!(
+            s.reg.file,
+            RegFile::Temp | RegFile::Input | RegFile::Const | RegFile::Texture
+        )
+    };
     for (k, s) in src.iter().enumerate() {
         let code = match k {
             0 => codes::TEXLD_COORDINATE,
@@ -916,8 +990,8 @@ fn shape_text(mnemonic: &str, shape: &[Operand]) -> String {
     }
 }
 
-fn destination(r: &RegAst, kind: Operand) -> R<Dst> {
-    let reg = resolve_reg(r)?;
+fn destination(r: &RegAst, kind: Operand, p: Profile) -> R<Dst> {
+    let reg = resolve_reg(r, p)?;
     if reg.file == RegFile::Predicate {
         return Err(Diagnostic::coded(
             codes::PREDICATE_WRITE,
@@ -945,7 +1019,10 @@ fn destination(r: &RegAst, kind: Operand) -> R<Dst> {
             )
             .with_label("expected r#, v# or oC#"));
         }
-        if !matches!(reg.file, RegFile::Temp | RegFile::Input | RegFile::ColorOut) {
+        if !matches!(
+            reg.file,
+            RegFile::Temp | RegFile::Input | RegFile::ColorOut | RegFile::Texture
+        ) {
             return Err(Diagnostic::coded(
                 codes::DESTINATION,
                 r.span,
@@ -1001,10 +1078,15 @@ fn source_modifier(r: &RegAst) -> SrcMod {
     }
 }
 
-fn float_source(r: &RegAst) -> R<Src> {
-    let reg = resolve_reg(r)?;
+fn float_source(r: &RegAst, p: Profile) -> R<Src> {
+    let reg = resolve_reg(r, p)?;
     match reg.file {
-        RegFile::Temp | RegFile::Input | RegFile::Const | RegFile::Position | RegFile::Face => {}
+        RegFile::Temp
+        | RegFile::Input
+        | RegFile::Const
+        | RegFile::Position
+        | RegFile::Face
+        | RegFile::Texture => {}
         RegFile::LoopCounter => {
             return Err(Diagnostic::coded(
                 codes::SOURCE_REGISTER,
@@ -1097,8 +1179,8 @@ fn float_source(r: &RegAst) -> R<Src> {
     })
 }
 
-fn plain_of(r: &RegAst, file: RegFile, what: &str) -> R<Src> {
-    let reg = resolve_reg(r)?;
+fn plain_of(r: &RegAst, file: RegFile, what: &str, p: Profile) -> R<Src> {
+    let reg = resolve_reg(r, p)?;
     if reg.file != file {
         return Err(Diagnostic::error(r.span, format!("expected {what}"))
             .with_label(format!("`{reg}` is not {what}")));
@@ -1113,8 +1195,8 @@ fn plain_of(r: &RegAst, file: RegFile, what: &str) -> R<Src> {
     Ok(Src::plain(reg))
 }
 
-fn predicate_operand(r: &RegAst, allow_full: bool) -> R<Src> {
-    let reg = resolve_reg(r)?;
+fn predicate_operand(r: &RegAst, allow_full: bool, p: Profile) -> R<Src> {
+    let reg = resolve_reg(r, p)?;
     if reg.file != RegFile::Predicate {
         return Err(
             Diagnostic::coded(codes::SYNTAX, r.span, "expected the predicate register p0")
@@ -1146,8 +1228,8 @@ fn predicate_operand(r: &RegAst, allow_full: bool) -> R<Src> {
     })
 }
 
-fn condition(r: &RegAst) -> R<Src> {
-    let reg = resolve_reg(r)?;
+fn condition(r: &RegAst, p: Profile) -> R<Src> {
+    let reg = resolve_reg(r, p)?;
     match reg.file {
         RegFile::ConstBool => {
             if r.negate || r.abs || r.components.is_some() || r.relative.is_some() {
@@ -1164,7 +1246,7 @@ fn condition(r: &RegAst) -> R<Src> {
             })
         }
         RegFile::Predicate => {
-            let s = predicate_operand(r, false)?;
+            let s = predicate_operand(r, false, p)?;
             if !s.swizzle.is_replicate() {
                 return Err(Diagnostic::coded(
                     codes::PREDICATE_REPLICATE,
@@ -1192,11 +1274,27 @@ struct DclSuffixes<'a> {
     kind: Option<(&'a str, Span)>,
 }
 
-fn lower_dcl(ast: &InstrAst) -> R<Lowered> {
+fn lower_dcl(ast: &InstrAst, p: Profile) -> R<Lowered> {
+    let sampler_kind = ast
+        .suffixes
+        .iter()
+        .find(|(k, _)| matches!(k.as_str(), "2d" | "cube" | "volume"));
+    if let (Some((k, span)), 0) = (sampler_kind, p.count(RegFile::Sampler)) {
+        // Microsoft's grammar has no sampler declarations there (X2000).
+        return Err(
+            Diagnostic::error(*span, format!("`dcl_{k}`: {p} has no samplers"))
+                .with_label("no sampler declaration in this profile"),
+        );
+    }
     let r = declared_operand(ast)?;
-    let reg = resolve_reg(r)?;
+    let reg = resolve_reg(r, p)?;
     no_modifiers(r, "a declared register")?;
     let m = dcl_suffixes(ast)?;
+    if p != Profile::Ps3_0 {
+        if let Some(lowered) = profile_decl(r, reg, &m, p) {
+            return lowered;
+        }
+    }
     match (reg.file, m.kind) {
         (RegFile::Sampler, Some((k, span))) => sampler_decl(r, reg, (k, span), &m),
         (RegFile::Sampler, None) => Err(Diagnostic::coded(
@@ -1410,6 +1508,50 @@ fn input_decl(r: &RegAst, reg: Reg, (k, span): (&str, Span), m: &DclSuffixes) ->
     }))
 }
 
+/// The declarations the other profiles have and ps_3_0 has not, or `None`
+/// where ps_3_0's rules apply: `dcl t#` / `dcl v#` without a usage in
+/// ps_2_0 and ps_2_x; `dcl_<usage> v#` (and `o#` in vs_3_0) in vertex
+/// shaders, with every usage.
+fn profile_decl(r: &RegAst, reg: Reg, m: &DclSuffixes, p: Profile) -> Option<R<Lowered>> {
+    let decl = |usage: &str, usage_index: u32| -> R<Lowered> {
+        Ok(Lowered::Input(InputDecl {
+            reg,
+            usage: usage.to_string(),
+            usage_index,
+            mask: write_mask(r)?,
+            centroid: m.centroid,
+            pp: m.pp,
+            origin: Origin::default(),
+        }))
+    };
+    let vertex = p.stage() == crate::core::profile::Stage::Vertex;
+    match (reg.file, m.kind) {
+        (RegFile::Texture | RegFile::Input, None) if !vertex => Some(decl("", 0)),
+        (RegFile::Input | RegFile::Output, Some((k, span))) if vertex => {
+            let name = k.trim_end_matches(|c: char| c.is_ascii_digit());
+            let index: u32 = k[name.len()..].parse().unwrap_or(0);
+            Some(if !USAGES.contains(&name) {
+                Err(Diagnostic::error(span, format!("unknown usage `{name}`"))
+                    .with_label("not a declaration usage"))
+            } else if index > 15 {
+                Err(
+                    Diagnostic::error(span, format!("usage index {index} is out of range"))
+                        .with_label("0 … 15"),
+                )
+            } else {
+                decl(name, index)
+            })
+        }
+        (RegFile::Input | RegFile::Output, None) if vertex => Some(Err(Diagnostic::coded(
+            codes::DCL_USAGE,
+            r.span,
+            format!("{p} declarations of `{reg}` need a usage"),
+        )
+        .with_label("e.g. dcl_position v0"))),
+        _ => None,
+    }
+}
+
 /// `dcl vPos.xy` / `dcl vFace`.
 fn pos_face_decl(r: &RegAst, reg: Reg, m: &DclSuffixes) -> R<Lowered> {
     let mask = write_mask(r)?;
@@ -1447,7 +1589,15 @@ fn pos_face_decl(r: &RegAst, reg: Reg, m: &DclSuffixes) -> R<Lowered> {
     }))
 }
 
-fn lower_def(ast: &InstrAst) -> R<Lowered> {
+fn lower_def(ast: &InstrAst, p: Profile) -> R<Lowered> {
+    let op = match ast.base.as_str() {
+        "defi" => Opcode::DefI,
+        "defb" => Opcode::DefB,
+        _ => Opcode::Def,
+    };
+    if !op.profiles().has(p) && p != Profile::Ps3_0 {
+        return Err(not_in_profile(ast, op, p));
+    }
     if let Some((_, span)) = ast.suffixes.first() {
         return Err(Diagnostic::error(
             *span,
@@ -1485,7 +1635,7 @@ fn lower_def(ast: &InstrAst) -> R<Lowered> {
             format!("expected the register to define, form: {form}"),
         ));
     };
-    let reg = resolve_reg(r)?;
+    let reg = resolve_reg(r, p)?;
     let code = match file {
         RegFile::Const => codes::DEF_DESTINATION,
         RegFile::ConstInt => codes::DEFI_DESTINATION,

@@ -14,6 +14,7 @@
 
 pub mod gradient;
 pub mod init;
+pub mod limits;
 pub mod lower;
 pub mod register;
 
@@ -33,10 +34,11 @@ pub fn validate(
     file: &SourceFile,
 ) -> Result<(Shader, Diagnostics), Diagnostics> {
     let mut diags = Diagnostics::default();
-    let body = check_version(stmts, expanded, &mut diags);
-    let program = collect(stmts, body, file, &mut diags);
+    let (body, profile) = check_version(stmts, expanded, &mut diags);
+    let program = collect(stmts, body, file, profile, &mut diags);
     check_declarations(&program, &mut diags, file);
     let info = check_program(&program, &mut diags, file);
+    limits::check(&program, &info, &mut diags, file);
     init::check(&program, &info, &mut diags, file);
     if diags.has_errors() {
         return Err(diags);
@@ -48,23 +50,28 @@ pub fn validate(
     Ok((Shader::new_validated(program, info), warnings))
 }
 
+/// The profile a version statement names, when ps30 checks that profile
+/// ([`Profile::checked`]); `None` for any other statement or profile.
+pub fn checked_profile(stmt: &Stmt) -> Option<Profile> {
+    match stmt {
+        Stmt::Version { text, .. } => Profile::from_version_line(text).filter(|p| p.checked()),
+        _ => None,
+    }
+}
+
 /// The version line must come first; returns the statements after it (all
-/// of them when it is missing).
+/// of them when it is missing) and the profile it names (ps_3_0 when it is
+/// missing or refused, so the rest is judged by ps_3_0's rules).
 fn check_version<'e>(
     stmts: &[Stmt],
     expanded: &'e [Expanded],
     diags: &mut Diagnostics,
-) -> &'e [Expanded] {
-    match expanded.first().map(|e| &stmts[e.stmt]) {
-        Some(Stmt::Version {
-            major: 3,
-            minor: 0,
-            text,
-            span,
-        }) if text.to_ascii_lowercase().starts_with("ps") => {
-            let _ = span;
-            &expanded[1..]
-        }
+) -> (&'e [Expanded], Profile) {
+    let first = expanded.first().map(|e| &stmts[e.stmt]);
+    if let Some(p) = first.and_then(checked_profile) {
+        return (&expanded[1..], p);
+    }
+    let body = match first {
         Some(Stmt::Version { text, span, .. }) => {
             diags.push(version_refusal(text, *span));
             &expanded[1..]
@@ -82,7 +89,8 @@ fn check_version<'e>(
             );
             expanded
         }
-    }
+    };
+    (body, Profile::Ps3_0)
 }
 
 /// The refusal of a version line `text` naming a profile ps30 does not
@@ -90,14 +98,16 @@ fn check_version<'e>(
 /// the loader and the validator give.
 pub fn version_refusal(text: &str, span: Span) -> Diagnostic {
     let profile = Profile::from_version_line(text);
-    let message = format!("this is a {text} shader; ps30 reads ps_3_0 only");
+    let message = format!(
+        "this is a {text} shader; ps30 reads ps_2_0, ps_2_x, ps_3_0, vs_2_0, vs_2_x and vs_3_0"
+    );
     let help = match profile {
         Some(p) if !p.assembles() => format!(
             "`{p}` is the name of an HLSL compile target, not a version line (Microsoft's assembler refuses it too, X2001); its shaders carry the {} version",
             Profile::from_token(p.version_token()).map_or("?", Profile::name)
         ),
         Some(p) => format!(
-            "ps30 knows {p}'s instructions, registers and limits (docs/profiles.md) but does not check, count or assemble {p} shaders yet; the first line of a ps_3_0 shader is `ps_3_0`"
+            "ps30 recognises {p} (docs/profiles.md) but does not check, count or assemble {p} shaders yet"
         ),
         None => "no Direct3D 9 profile has this version; the first line of a ps_3_0 shader is `ps_3_0`".to_string(),
     };
@@ -113,9 +123,13 @@ fn collect(
     stmts: &[Stmt],
     body: &[Expanded],
     file: &SourceFile,
+    profile: Profile,
     diags: &mut Diagnostics,
 ) -> Program {
-    let mut program = Program::default();
+    let mut program = Program {
+        profile,
+        ..Program::default()
+    };
     // Each statement's lowering, kept while copies of it (REPEAT_BLOCK)
     // remain: the last copy takes it instead of cloning it.
     let mut copies_left = vec![0usize; stmts.len()];
@@ -128,7 +142,7 @@ fn collect(
         let lowered = match &stmts[e.stmt] {
             Stmt::Instr(ast) => {
                 let slot = &mut lowerings[e.stmt];
-                let lowered = slot.get_or_insert_with(|| match lower::lower(ast) {
+                let lowered = slot.get_or_insert_with(|| match lower::lower(ast, profile) {
                     Ok(l) => Some(l),
                     Err(d) => {
                         diags.push(d.in_origin(&e.origin, file));
@@ -601,15 +615,21 @@ impl<'p, 'd> Checker<'p, 'd> {
 
     /// Read ports: distinct registers per file (Microsoft's register table).
     fn check_read_ports(&mut self, ins: &Instruction) {
+        // sincos's two extra sources before the 3_0 profiles are its
+        // macro's constants, which Microsoft's assembler does not count.
+        let src = match (ins.op, ins.src.as_slice()) {
+            (Opcode::SinCos, [first, _, _]) => std::slice::from_ref(first),
+            (_, all) => all,
+        };
         // The files whose read ports are checked, in `RegFile`'s order (so
         // the diagnostics come in it). Distinct registers are counted
         // without a set: an instruction has a few sources, and this runs
         // for every instruction.
         let key = |s: &Src| (s.reg.file, s.reg.index, s.relative);
         let abs = |s: &Src| matches!(s.modifier, SrcMod::Abs | SrcMod::NegAbs);
-        let mixed = ins.src.iter().enumerate().any(|(i, s)| {
+        let mixed = src.iter().enumerate().any(|(i, s)| {
             s.reg.file == RegFile::Const
-                && ins.src[..i]
+                && src[..i]
                     .iter()
                     .any(|e| key(e) == key(s) && abs(e) != abs(s))
         });
@@ -626,13 +646,10 @@ impl<'p, 'd> Checker<'p, 'd> {
             );
         }
         for f in &[RegFile::Temp, RegFile::Input, RegFile::Const] {
-            let distinct = ins
-                .src
+            let distinct = src
                 .iter()
                 .enumerate()
-                .filter(|(i, s)| {
-                    s.reg.file == *f && !ins.src[..*i].iter().any(|e| key(e) == key(s))
-                })
+                .filter(|(i, s)| s.reg.file == *f && !src[..*i].iter().any(|e| key(e) == key(s)))
                 .count();
             let ports = f.info().read_ports;
             if distinct as u32 > ports {
@@ -646,9 +663,10 @@ impl<'p, 'd> Checker<'p, 'd> {
                         code,
                         ins.origin.span,
                         format!(
-                            "reads {} different {} registers; ps_3_0 allows {}",
+                            "reads {} different {} registers; {} allows {}",
                             distinct,
                             f.info().name,
+                            self.p.profile,
                             ports
                         ),
                     )

@@ -7,7 +7,8 @@ use crate::core::diag::{codes, Diagnostic};
 use crate::core::front::ast::RegAst;
 use crate::core::ir::Span;
 use crate::core::ir::{Reg, Swizzle, WriteMask};
-use crate::core::isa::RegFile;
+use crate::core::isa::{RegFile, REG_FILES};
+use crate::core::profile::Profile;
 
 type R<T> = Result<T, Diagnostic>;
 
@@ -21,23 +22,26 @@ pub(super) fn foreign_register(name: &str) -> Option<&'static str> {
     }
 }
 
-/// The register an operand names (file and number), or a diagnostic.
-pub fn resolve_reg(r: &RegAst) -> R<Reg> {
-    let Some(file) = RegFile::lookup(&r.name) else {
-        let d = Diagnostic::coded(
-            codes::REGISTER,
-            r.name_span,
-            format!(
-                "unknown register `{}{}`",
-                r.name,
-                r.index.map(|i| i.to_string()).unwrap_or_default()
-            ),
-        )
-        .with_label("not a ps_3_0 register");
-        return Err(match foreign_register(&r.name) {
-            Some(why) => d.with_help(why),
-            None => d.with_help("ps_3_0 registers: r0-r31, v0-v9, c0-c223, i0-i15, b0-b15, s0-s15, p0, oC0-oC3, oDepth, aL, vPos, vFace, l#"),
-        });
+/// The register an operand names (file and number) in `profile`, or a
+/// diagnostic: the file must be one the profile has, and the number below
+/// the profile's count ([`Profile::count`]).
+pub fn resolve_reg(r: &RegAst, profile: Profile) -> R<Reg> {
+    let file = match RegFile::lookup_any(&r.name) {
+        Some(f) if profile.count(f) > 0 => f,
+        _ if profile == Profile::Ps3_0 => return Err(unknown_ps_3_0(r)),
+        _ => {
+            return Err(Diagnostic::coded(
+                codes::REGISTER,
+                r.name_span,
+                format!(
+                    "unknown register `{}{}`",
+                    r.name,
+                    r.index.map(|i| i.to_string()).unwrap_or_default()
+                ),
+            )
+            .with_label(format!("not a {profile} register"))
+            .with_help(format!("{profile} registers: {}", register_list(profile))))
+        }
     };
     let info = file.info();
     let index = match (info.numbered, r.index, &r.relative) {
@@ -64,24 +68,60 @@ pub fn resolve_reg(r: &RegAst) -> R<Reg> {
     // A relative input's number is a base (`v10[aL]`, as Microsoft's
     // listing writes `v[aL + 10]`), checked where the offset is added.
     let relative_base = r.relative.is_some() && file == RegFile::Input;
-    if index >= info.count as u64 && !relative_base {
+    let count = profile.count(file);
+    if index >= count as u64 && !relative_base {
         return Err(Diagnostic::coded(
             codes::REGISTER,
             r.name_span,
             format!("register `{}{}` is out of range", info.name, index),
         )
         .with_label(format!(
-            "ps_3_0 has {}{} to {}{}",
+            "{profile} has {}{} to {}{}",
             info.name,
             0,
             info.name,
-            info.count - 1
+            count - 1
         )));
     }
     Ok(Reg {
         file,
         index: index as u32,
     })
+}
+
+/// The refusal of a name ps_3_0 has no register file for.
+fn unknown_ps_3_0(r: &RegAst) -> Diagnostic {
+    let d = Diagnostic::coded(
+        codes::REGISTER,
+        r.name_span,
+        format!(
+            "unknown register `{}{}`",
+            r.name,
+            r.index.map(|i| i.to_string()).unwrap_or_default()
+        ),
+    )
+    .with_label("not a ps_3_0 register");
+    match foreign_register(&r.name) {
+        Some(why) => d.with_help(why),
+        None => d.with_help("ps_3_0 registers: r0-r31, v0-v9, c0-c223, i0-i15, b0-b15, s0-s15, p0, oC0-oC3, oDepth, aL, vPos, vFace, l#"),
+    }
+}
+
+/// The register files of a profile as a list (`r0-r11, v0-v1, …`).
+pub fn register_list(profile: Profile) -> String {
+    REG_FILES
+        .iter()
+        .filter_map(|f| {
+            let n = profile.count(f.file);
+            match (n, f.numbered) {
+                (0, _) => None,
+                (_, false) => Some(f.name.to_string()),
+                (1, true) => Some(format!("{}0", f.name)),
+                (n, true) => Some(format!("{}0-{}{}", f.name, f.name, n - 1)),
+            }
+        })
+        .collect::<Vec<_>>()
+        .join(", ")
 }
 
 fn component_index(c: char) -> Option<u8> {
