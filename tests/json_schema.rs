@@ -332,7 +332,13 @@ fn check_lines(args: &[&str], dir: &Path, codes: &[i32]) -> Vec<Value> {
             "corpus_line"
         };
         let at = format!("{}[{i}]", args[0]);
-        validate(&root, resolve(&root, &format!("#/$defs/{def}")), v, &at, &mut problems);
+        validate(
+            &root,
+            resolve(&root, &format!("#/$defs/{def}")),
+            v,
+            &at,
+            &mut problems,
+        );
         vocabulary(v, &at, &mut problems);
     }
     assert!(problems.is_empty(), "{args:?}:\n{}", problems.join("\n"));

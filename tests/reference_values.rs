@@ -239,9 +239,7 @@ fn every_asset_image_has_reference_values_and_a_test() {
         .into_iter()
         .partition(|name| name.ends_with(".deflate"));
     for p in &packed {
-        let image = p
-            .trim_end_matches(".deflate")
-            .trim_end_matches(".planes");
+        let image = p.trim_end_matches(".deflate").trim_end_matches(".planes");
         assert!(
             on_disk.contains(image),
             "{p} packs {image}, which is not in assets/hdr"

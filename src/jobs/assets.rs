@@ -44,9 +44,7 @@ const FILES: [(&str, Stored); 7] = [
     ),
     (
         "courtyard_1280x1024.exr",
-        Stored::Plain(include_bytes!(
-            "../../assets/hdr/courtyard_1280x1024.exr"
-        )),
+        Stored::Plain(include_bytes!("../../assets/hdr/courtyard_1280x1024.exr")),
     ),
     (
         "forest.exr",
