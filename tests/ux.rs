@@ -359,7 +359,7 @@ fn streams_and_messages() {
     use std::process::{Command, Stdio};
     // A closed stderr (`2>&1 | head` that has gone) is not a panic.
     let mut child = Command::new(env!("CARGO_BIN_EXE_ps30"))
-        .args(["check", "README.md"])
+        .args(["check", "Cargo.toml"])
         .current_dir(bin::repo())
         .stdout(Stdio::null())
         .stderr(Stdio::piped())
@@ -367,8 +367,9 @@ fn streams_and_messages() {
         .unwrap();
     drop(child.stderr.take());
     assert_eq!(child.wait().unwrap().code(), Some(2));
-    // A file that is no shader: one error, not hundreds.
-    let o = ps30(&["check", "README.md"]);
+    // A file that is no shader (the manifest: plain text, no `#` at a line's
+    // start, which would be a preprocessor directive): one error, not hundreds.
+    let o = ps30(&["check", "Cargo.toml"]);
     assert_eq!(o.status.code(), Some(2));
     assert_eq!(err(&o).matches("error[X2001]:").count(), 1, "{}", err(&o));
     assert!(err(&o).contains("missing version line"));

@@ -595,16 +595,25 @@ impl Opcode {
             | Opcode::DefI
             | Opcode::DefB => STATIC,
             Opcode::Ifc | Opcode::Break | Opcode::BreakC | Opcode::BreakP | Opcode::Setp => DYNAMIC,
-            Opcode::Mova
-            | Opcode::Lit
-            | Opcode::Dst
-            | Opcode::Expp
-            | Opcode::Logp
-            | Opcode::Slt
-            | Opcode::Sge
-            | Opcode::Sgn => VS,
+            op if op.is_vertex_only() => VS,
             _ => SHARED,
         }
+    }
+
+    /// The instructions only vertex shaders have (`mova`, `lit`, `dst`,
+    /// `expp`, `logp`, `slt`, `sge`, `sgn`).
+    pub fn is_vertex_only(self) -> bool {
+        matches!(
+            self,
+            Opcode::Mova
+                | Opcode::Lit
+                | Opcode::Dst
+                | Opcode::Expp
+                | Opcode::Logp
+                | Opcode::Slt
+                | Opcode::Sge
+                | Opcode::Sgn
+        )
     }
 
     /// For the matrix instructions (m4x4 … m3x2): how many consecutive

@@ -218,15 +218,7 @@ fn assignment(
         None => body.line(format!("{target} = {value};")),
         Some(p) => {
             let lanes: Vec<u8> = comps.iter().map(|&c| p.swizzle.0[c as usize]).collect();
-            let cond = ctx.register(
-                crate::core::ir::Reg {
-                    file: RegFile::Predicate,
-                    index: 0,
-                },
-                false,
-                Default::default(),
-                &lanes,
-            )?;
+            let cond = predicate(ctx, &lanes)?;
             let cond = if p.negate { format!("!{cond}") } else { cond };
             body.line(format!("{target} = {cond} ? ({value}) : {target};"));
         }
@@ -249,20 +241,21 @@ fn guarded(
                     "a predicated texkill with a mixed swizzle".into(),
                 ));
             }
-            let c = ctx.register(
-                crate::core::ir::Reg {
-                    file: RegFile::Predicate,
-                    index: 0,
-                },
-                false,
-                Default::default(),
-                &[p.swizzle.0[0]],
-            )?;
+            let c = predicate(ctx, &[p.swizzle.0[0]])?;
             let not = if p.negate { "!" } else { "" };
             body.line(format!("if ({not}{c}) {statement}"));
         }
     }
     Ok(())
+}
+
+/// The predicate register `p0` read in `lanes`.
+fn predicate(ctx: &Ctx, lanes: &[u8]) -> Result<String, DecompileError> {
+    let p0 = crate::core::ir::Reg {
+        file: RegFile::Predicate,
+        index: 0,
+    };
+    ctx.register(p0, false, Default::default(), lanes)
 }
 
 /// The spelling of a written register with its mask.

@@ -30,17 +30,9 @@ pub fn resolve_reg(r: &RegAst, profile: Profile) -> R<Reg> {
         Some(f) if profile.count(f) > 0 => f,
         _ if profile == Profile::Ps3_0 => return Err(unknown_ps_3_0(r)),
         _ => {
-            return Err(Diagnostic::coded(
-                codes::REGISTER,
-                r.name_span,
-                format!(
-                    "unknown register `{}{}`",
-                    r.name,
-                    r.index.map(|i| i.to_string()).unwrap_or_default()
-                ),
-            )
-            .with_label(format!("not a {profile} register"))
-            .with_help(format!("{profile} registers: {}", register_list(profile))))
+            return Err(unknown_register(r)
+                .with_label(format!("not a {profile} register"))
+                .with_help(format!("{profile} registers: {}", register_list(profile))))
         }
     };
     let info = file.info();
@@ -89,9 +81,9 @@ pub fn resolve_reg(r: &RegAst, profile: Profile) -> R<Reg> {
     })
 }
 
-/// The refusal of a name ps_3_0 has no register file for.
-fn unknown_ps_3_0(r: &RegAst) -> Diagnostic {
-    let d = Diagnostic::coded(
+/// The refusal of a name a profile has no register file for, to be labelled.
+fn unknown_register(r: &RegAst) -> Diagnostic {
+    Diagnostic::coded(
         codes::REGISTER,
         r.name_span,
         format!(
@@ -100,7 +92,11 @@ fn unknown_ps_3_0(r: &RegAst) -> Diagnostic {
             r.index.map(|i| i.to_string()).unwrap_or_default()
         ),
     )
-    .with_label("not a ps_3_0 register");
+}
+
+/// The refusal of a name ps_3_0 has no register file for.
+fn unknown_ps_3_0(r: &RegAst) -> Diagnostic {
+    let d = unknown_register(r).with_label("not a ps_3_0 register");
     match foreign_register(&r.name) {
         Some(why) => d.with_help(why),
         None => d.with_help("ps_3_0 registers: r0-r31, v0-v9, c0-c223, i0-i15, b0-b15, s0-s15, p0, oC0-oC3, oDepth, aL, vPos, vFace, l#"),
