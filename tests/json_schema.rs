@@ -345,7 +345,7 @@ fn check_lines(args: &[&str], dir: &Path, codes: &[i32]) -> Vec<Value> {
     lines
 }
 
-/// Corpus mode's JSON Lines (check, asm, disasm, translate over a folder
+/// Corpus mode's JSON Lines (check, asm, disasm, translate, decompile over a folder
 /// holding an accepted, an over-limit and a refused shader) match the schema.
 #[test]
 fn corpus_mode_json_lines_match_the_schema() {
@@ -382,6 +382,13 @@ fn corpus_mode_json_lines_match_the_schema() {
         &[2],
     );
     assert_eq!(lines[1]["target"], "wgsl");
+    let hlsl = p("hlsl");
+    let lines = check_lines(&["decompile", &input, "-o", &hlsl, "--json"], repo, &[2]);
+    assert!(lines[1]["statements"].as_u64().is_some_and(|n| n > 0));
+    assert!(std::path::Path::new(&hlsl).join("good.psh.hlsl").is_file());
+    // --verify compiles and runs one decompilation: not a corpus's.
+    let o = bin::ps30(&["decompile", &input, "--verify"], repo);
+    assert_eq!(o.status.code(), Some(2));
 }
 
 /// The validator itself finds what it should: a missing field, a wrong

@@ -1,4 +1,4 @@
-//! Corpus mode on the command line: `check`, `asm`, `disasm` and `translate`
+//! Corpus mode on the command line: `check`, `asm`, `disasm`, `translate` and `decompile`
 //! given several shaders or a directory. Each command says what it does with
 //! one file (a closure returning its [`FileResult`] and, with `-o DIR`, the
 //! bytes to write); this module walks the arguments, runs the files in
@@ -19,7 +19,7 @@ use ps30::present::corpus::{json_line, line, summary_json, summary_text};
 use std::collections::HashSet;
 use std::path::{Path, PathBuf};
 
-/// Corpus mode's flags, shared by the four commands.
+/// Corpus mode's flags, shared by the five commands.
 #[derive(clap::Args, Debug)]
 pub struct CorpusArgs {
     /// Threads for the files of a corpus (default: all cores).

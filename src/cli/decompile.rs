@@ -4,10 +4,12 @@
 //! same inputs.
 
 use super::args::{InputArgs, SourceArgs};
+use super::corpus::{self, refused, CorpusArgs, Done, Outputs};
 use super::io::{eprint, load_shader, print, print_json};
 use super::ui::Ui;
 use super::{BadInput, Outcome};
 use ps30::core::decompile;
+use ps30::jobs::corpus::{is_corpus, Entry, FileResult};
 use ps30::jobs::decompile::{self as job, Verdict};
 use ps30::present::decompile as present;
 use std::path::PathBuf;
@@ -15,14 +17,21 @@ use std::path::PathBuf;
 #[derive(clap::Args)]
 pub struct Args {
     /// Shader: ps_3_0 bytecode or assembly, a bundled name, or `-` for standard input.
-    shader: String,
-    /// Write the HLSL to this file (atomically) instead of standard output.
+    /// Several, or a directory (walked recursively for .psh, .asm, .dis, .fxo, .cso and .pso
+    /// files): corpus mode, one line per file and a summary.
+    #[arg(required = true, num_args = 1..)]
+    shaders: Vec<String>,
+    #[command(flatten)]
+    corpus: CorpusArgs,
+    /// Write the HLSL to this file (atomically) instead of standard output. In corpus mode a
+    /// directory (created if missing): each file's HLSL as its path below the argument it was
+    /// found in, with .hlsl appended.
     #[arg(short, long, value_name = "FILE")]
     output: Option<PathBuf>,
     /// Compile the HLSL with Microsoft's compiler (tools/oracle/setup.sh installs it into
     /// target/oracle, or name its folder with PS30_ORACLE) and run both shaders in the
     /// emulator on the same random and edge-case inputs. Exit 1 when they differ, 3 when the
-    /// compiler is not installed.
+    /// compiler is not installed. One shader at a time (not in corpus mode).
     #[arg(long)]
     verify: bool,
     /// Pixels per verification draw (the side of a square target).
@@ -38,10 +47,26 @@ pub struct Args {
 }
 
 pub fn run(args: Args, ui: &Ui) -> super::Result {
-    if let Some(out) = &args.output {
-        super::io::check_output_path(out, &[std::path::Path::new(&args.shader)])?;
+    if is_corpus(&args.shaders) {
+        if args.verify {
+            return Err(BadInput(
+                "--verify takes one shader: it compiles and runs each decompilation; give the files one at a time".into(),
+            ));
+        }
+        let outputs = args.output.as_deref().map(|dir| Outputs {
+            dir,
+            extension: "hlsl",
+        });
+        let write = outputs.is_some();
+        return corpus::run(ui, &args.shaders, &args.corpus, args.json, outputs, |e| {
+            decompile_one(&args, e, write)
+        });
     }
-    let loaded = load_shader(ui, &args.shader, &args.source, &args.input)?;
+    let shader = &args.shaders[0];
+    if let Some(out) = &args.output {
+        super::io::check_output_path(out, &[std::path::Path::new(shader)])?;
+    }
+    let loaded = load_shader(ui, shader, &args.source, &args.input)?;
     let d = decompile::decompile(&loaded.shader, loaded.constants.as_ref())
         .map_err(|e| BadInput(format!("{}: {e}", loaded.file.name)))?;
     if let Some(path) = &args.output {
@@ -87,4 +112,26 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         }) => Outcome::Problem,
         _ => Outcome::Ok,
     })
+}
+
+/// One file of a corpus decompiled (nothing printed): the counts, and the
+/// HLSL when it is to be written.
+fn decompile_one(args: &Args, entry: &Entry, write: bool) -> Done {
+    let options = args.source.options();
+    let loaded = match corpus::load_entry(entry, &options, args.input.max_input_bytes) {
+        Ok(l) => l,
+        Err(done) => return *done,
+    };
+    let d = match decompile::decompile(&loaded.shader, loaded.constants.as_ref()) {
+        Ok(d) => d,
+        Err(e) => return refused(entry, format!("{}: {e}", entry.spec)),
+    };
+    let mut facts = serde_json::Map::new();
+    facts.insert("instructions".into(), d.instructions.into());
+    facts.insert("statements".into(), d.statements.into());
+    facts.insert("bytes".into(), d.hlsl.len().into());
+    (
+        FileResult::accepted(&entry.spec, facts),
+        write.then(|| d.hlsl.into_bytes()),
+    )
 }
