@@ -2,7 +2,9 @@
 //! every page of docs/ holds `$ ps30 ARGS` lines, each run from the
 //! repository root with the built binary, and the lines after it up to the
 //! next `$` line or the end of the block are its exact standard output,
-//! except that a line holding only `...` matches any number of lines.
+//! except that a line holding only `...` matches any number of lines. A
+//! command ending in `2>&1` is compared on its standard output followed by
+//! its standard error (an error's message, which goes to stderr).
 //! Examples write under `target/docs-examples/`. Arguments are split at
 //! spaces; single or double quotes keep spaces in one argument.
 
@@ -13,6 +15,8 @@ use std::process::Command;
 struct Example {
     place: String,
     args: Vec<String>,
+    /// `2>&1`: standard error is compared too, after standard output.
+    stderr: bool,
     expected: Vec<String>,
 }
 
@@ -41,7 +45,11 @@ fn examples(name: &str, text: &str) -> Vec<Example> {
         if trimmed.starts_with("```") {
             in_console = false;
         } else if let Some(command) = trimmed.strip_prefix("$ ") {
-            let words = split(command);
+            let mut words = split(command);
+            let stderr = words.last().is_some_and(|w| w == "2>&1");
+            if stderr {
+                words.pop();
+            }
             assert_eq!(
                 words.first().map(String::as_str),
                 Some("ps30"),
@@ -51,6 +59,7 @@ fn examples(name: &str, text: &str) -> Vec<Example> {
             out.push(Example {
                 place: format!("{name}:{}", i + 1),
                 args: words[1..].to_vec(),
+                stderr,
                 expected: Vec::new(),
             });
         } else {
@@ -124,7 +133,10 @@ fn every_console_example_prints_what_the_guide_says() {
                 .env_remove("NO_COLOR")
                 .output()
                 .expect("run ps30");
-            let stdout = String::from_utf8_lossy(&out.stdout);
+            let mut stdout = String::from_utf8_lossy(&out.stdout).into_owned();
+            if example.stderr {
+                stdout.push_str(&String::from_utf8_lossy(&out.stderr));
+            }
             let actual: Vec<&str> = stdout.lines().collect();
             if !matches(&example.expected, &actual) {
                 failures.push(format!(
