@@ -7,7 +7,7 @@ use super::expr::{self, Ctx, Pending};
 use super::fold;
 use super::DecompileError;
 use crate::core::ir::{Instruction, Shader};
-use crate::core::isa::{Opcode, RegFile};
+use crate::core::isa::{Opcode, RegFile, SamplerType};
 
 /// Lines of HLSL at an indentation.
 pub(crate) struct Body {
@@ -70,16 +70,20 @@ pub(crate) fn statements(
     Ok(())
 }
 
+/// The type of the sampler `x` reads, if it reads one.
+fn sampler_of(shader: &Shader, x: &Instruction) -> Option<SamplerType> {
+    x.src
+        .iter()
+        .find(|s| s.reg.file == RegFile::Sampler)
+        .and_then(|s| shader.program().sampler_type(s.reg.index))
+}
+
 /// Keeps the value of `x` for its one reader instead of writing it.
 fn hold(ctx: &Ctx, shader: &Shader, x: &Instruction) -> Result<(), DecompileError> {
     let d = x.dst.ok_or_else(|| {
         DecompileError::Unsupported("a folded value without a destination".into())
     })?;
-    let sampler = x
-        .src
-        .iter()
-        .find(|s| s.reg.file == RegFile::Sampler)
-        .and_then(|s| shader.program().sampler_type(s.reg.index));
+    let sampler = sampler_of(shader, x);
     let text = expr::value(ctx, x, sampler)?;
     let pending = Pending {
         text,
@@ -206,11 +210,7 @@ fn assignment(
     let d = x.dst.ok_or_else(|| {
         DecompileError::Unsupported(format!("{} without a destination", x.op.info().mnemonic))
     })?;
-    let sampler = x
-        .src
-        .iter()
-        .find(|s| s.reg.file == RegFile::Sampler)
-        .and_then(|s| shader.program().sampler_type(s.reg.index));
+    let sampler = sampler_of(shader, x);
     let comps: Vec<u8> = (0..4u8).filter(|&c| d.mask.has(c as usize)).collect();
     let target = destination(d.reg, &comps)?;
     let value = expr::value(ctx, x, sampler)?;

@@ -9,29 +9,12 @@
 
 use super::expr::{lanes, matrix_rows};
 use crate::core::ir::{Instruction, Shader};
-use crate::core::isa::{Opcode, RegFile};
+use crate::core::isa::{Class, Opcode, RegFile};
 use std::collections::{BTreeMap, BTreeSet};
 
-/// Whether `op` ends a straight run of code.
+/// Whether `op` ends a straight run of code: flow control.
 fn flow(op: Opcode) -> bool {
-    matches!(
-        op,
-        Opcode::If
-            | Opcode::Ifc
-            | Opcode::Else
-            | Opcode::EndIf
-            | Opcode::Rep
-            | Opcode::EndRep
-            | Opcode::Loop
-            | Opcode::EndLoop
-            | Opcode::Break
-            | Opcode::BreakC
-            | Opcode::BreakP
-            | Opcode::Call
-            | Opcode::CallNz
-            | Opcode::Ret
-            | Opcode::Label
-    )
+    op.class() == Class::Flow
 }
 
 /// Registers (file, index) → component bits `ins` reads.

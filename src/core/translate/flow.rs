@@ -20,7 +20,7 @@ use super::builder::Fb;
 use super::lower::Lower;
 use super::TranslateError;
 use crate::core::ir::{Instruction, Src, SrcMod};
-use crate::core::isa::{Opcode, RegFile};
+use crate::core::isa::{Class, Opcode, RegFile};
 use naga::{BinaryOperator as B, Expression, Handle, Statement};
 use std::collections::BTreeMap;
 
@@ -44,24 +44,7 @@ impl Run {
 
     /// Whether `op` is lowered by `instruction` (not flow control).
     fn is_plain(op: Opcode) -> bool {
-        !matches!(
-            op,
-            Opcode::If
-                | Opcode::Ifc
-                | Opcode::Rep
-                | Opcode::Loop
-                | Opcode::Break
-                | Opcode::BreakC
-                | Opcode::BreakP
-                | Opcode::Call
-                | Opcode::CallNz
-                | Opcode::Ret
-                | Opcode::Label
-                | Opcode::Else
-                | Opcode::EndIf
-                | Opcode::EndRep
-                | Opcode::EndLoop
-        )
+        op.class() != Class::Flow
     }
 
     /// Before the run's next instruction: opens a new chunk where one starts.
