@@ -293,6 +293,43 @@ fn every_command_matches_the_schema() {
         repo,
         &[0],
     );
+    // The same kind of list with its shaders on a GPU: `executed_emulated`
+    // is null there. Without a Vulkan device (outside CI) the run is bad
+    // input, and there is no JSON to check.
+    let o = bin::ps30(
+        &[
+            "render",
+            "drawlists/pixel-rules.json",
+            "--backend",
+            "gpu",
+            "--json",
+        ],
+        repo,
+    );
+    if o.status.code() == Some(0) || std::env::var_os("CI").is_some() {
+        let v = check(
+            "render",
+            &[
+                "render",
+                "drawlists/pixel-rules.json",
+                "--backend",
+                "gpu",
+                "--json",
+            ],
+            repo,
+            &[0],
+        );
+        let draws: Vec<&Value> = v["steps"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .filter(|s| s["kind"] == "draw")
+            .collect();
+        assert!(!draws.is_empty());
+        for d in draws {
+            assert_eq!(d["detail"]["executed_emulated"], Value::Null, "{d}");
+        }
+    }
     let v = check(
         "study",
         &["study", "log-lights", "--reports", &t("study"), "--json"],

@@ -40,9 +40,12 @@ pub struct Args {
     /// bytes than this (an upper bound computed before any step runs).
     #[arg(long, value_name = "BYTES", default_value_t = 1 << 30, value_parser = clap::value_parser!(u64).range(1..))]
     max_staged_bytes: u64,
-    /// Float rules of the draws that name none: hardware (the default), d3d9, ieee, or d3d9-zero-mul.
-    #[arg(long, value_enum, default_value = "hardware")]
-    float_rules: super::args::FloatRulesArg,
+    /// Who runs each draw's shader, and the float rules of the draws that
+    /// name none. On a GPU the shaders run translated; clears, blending,
+    /// write masks, alpha test, clip planes and mip reductions stay ps30's
+    /// output merger.
+    #[command(flatten)]
+    backend: super::args::BackendArgs,
     #[command(flatten)]
     exec: ExecArgs,
     #[command(flatten)]
@@ -124,7 +127,8 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
             max_pixels: args.max_list_pixels,
             max_executed: args.max_list_executed,
         },
-        float_rules: args.float_rules.into(),
+        float_rules: args.backend.rules(),
+        backend: args.backend.open()?,
     };
     if args.every_step {
         let staged = render::staged_bytes_every_step(list);

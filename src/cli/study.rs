@@ -78,6 +78,7 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         limits: Default::default(),
         budget: Default::default(),
         float_rules: Default::default(),
+        backend: Default::default(),
     };
     let bar = std::cell::RefCell::new(ui.bar("study", 1));
     let progress = |done: u64, total: u64| bar.borrow_mut().set(None, done, total);

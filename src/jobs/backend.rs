@@ -164,11 +164,7 @@ pub fn draw(
     match backend {
         Backend::Emulator => {
             let compiled = emu::compile(shader).map_err(DrawError::Emu)?;
-            let out = match threads {
-                Some(t) => emu::run_with_threads(&compiled, draw, t),
-                None => emu::run(&compiled, draw),
-            }
-            .map_err(DrawError::Emu)?;
+            let out = draw_output(backend, shader, &compiled, file, draw, threads)?;
             let (min, max) =
                 emu::on_threads(threads.unwrap_or(0), || executed_range(&out.executed))
                     .map_err(DrawError::Emu)?;
@@ -191,6 +187,32 @@ pub fn draw(
                 executed: None,
                 findings: Vec::new(),
             })
+        }
+    }
+}
+
+/// Runs `draw` of `shader` on `backend` and returns all it produced: every
+/// `oC#` unrounded, the discards and, on the emulator, each pixel's
+/// executed count (zeros from a GPU, which counts nothing). `compiled` is
+/// the emulator's form of `shader`, made once by the caller.
+pub fn draw_output(
+    backend: &Backend,
+    shader: &Shader,
+    compiled: &emu::Compiled,
+    file: &SourceFile,
+    draw: &Draw,
+    threads: Option<usize>,
+) -> Result<emu::DrawOutput, DrawError> {
+    match backend {
+        Backend::Emulator => match threads {
+            Some(t) => emu::run_with_threads(compiled, draw, t),
+            None => emu::run(compiled, draw),
+        }
+        .map_err(DrawError::Emu),
+        Backend::Gpu(g) => {
+            gpu_cap(shader, file, draw)?;
+            let out = gpu::run(g, shader, draw, TargetKind::Raw).map_err(DrawError::Gpu)?;
+            Ok(out.into_draw_output())
         }
     }
 }

@@ -38,6 +38,32 @@ fn output_text(o: &OutputState) -> String {
     )
 }
 
+/// A draw's executed slots per pixel as counted, beside the cost model's:
+/// `executed 64 per pixel (cost model 64, same)`, or the cost model's
+/// alone when a GPU drew (`cost model 64 per pixel (a GPU counts nothing)`).
+pub fn executed_text(
+    executed: Option<crate::core::cost::Range>,
+    executed_static: crate::core::cost::Range,
+    counts_agree: bool,
+) -> String {
+    match executed {
+        Some(e) => format!(
+            "executed {} per pixel (cost model {}{})",
+            e.text(),
+            executed_static.text(),
+            if counts_agree {
+                ", same"
+            } else {
+                ", DIFFERENT"
+            }
+        ),
+        None => format!(
+            "cost model {} per pixel (a GPU counts nothing)",
+            executed_static.text()
+        ),
+    }
+}
+
 /// One line for a finished step.
 pub fn step_line(list: &DrawList, r: &StepReport) -> String {
     let what = match (&r.detail, &list.steps[r.index]) {
@@ -53,12 +79,10 @@ pub fn step_line(list: &DrawList, r: &StepReport) -> String {
             },
             Step::Draw(d),
         ) => format!(
-            "{shader}: {} pixels written, {} discarded; executed {} per pixel (cost model {}{}); {}",
+            "{shader}: {} pixels written, {} discarded; {}; {}",
             thousands(merged.written),
             thousands(merged.killed),
-            executed.text(),
-            executed_static.text(),
-            if *counts_agree { ", same" } else { ", DIFFERENT" },
+            executed_text(*executed, *executed_static, *counts_agree),
             output_text(&d.output)
         ),
         (StepDetail::Mips { odd, levels, mean }, _) => format!(

@@ -31,6 +31,7 @@ use crate::core::emu::{
 use crate::core::image::{MipChain, OddSides, RenderTarget, TargetFormat, Texture};
 use crate::core::load;
 use crate::core::merge::{self, MergeStats, OutputState};
+use crate::jobs::backend;
 use serde::Serialize;
 
 /// A texture a draw list reads: an image or a synthetic input, owned.
@@ -138,7 +139,7 @@ pub struct DrawList {
 }
 
 /// How a draw list runs.
-#[derive(Clone, Copy, Debug, Default)]
+#[derive(Clone, Debug, Default)]
 pub struct Settings {
     /// Emulator threads (`None`: all cores).
     pub threads: Option<usize>,
@@ -149,6 +150,10 @@ pub struct Settings {
     pub budget: ListBudget,
     /// The float rules of draws that do not name their own.
     pub float_rules: crate::core::float_rules::FloatRules,
+    /// Who runs each draw's shader: the emulator, or a GPU through the
+    /// translation. Clears, blending, write masks, the pixel state and mip
+    /// reductions are ps30's output merger on either.
+    pub backend: crate::jobs::backend::Backend,
 }
 
 /// Bounds on a whole draw list's work, on top of each draw's
@@ -264,10 +269,12 @@ pub enum StepDetail {
         /// pass).
         #[serde(rename = "executed")]
         executed_static: Range,
-        /// What the emulator counted (min, max over pixels).
+        /// What the emulator counted (min, max over pixels); `None` when a
+        /// GPU ran the shader (it counts nothing).
         #[serde(rename = "executed_emulated")]
-        executed: Range,
-        /// Whether every pixel's emulated count lies inside the static range.
+        executed: Option<Range>,
+        /// Whether every pixel's emulated count lies inside the static range
+        /// (true when nothing was counted).
         counts_agree: bool,
         /// What the output merger wrote, blended and masked.
         merged: MergeStats,
@@ -504,22 +511,42 @@ fn draw(
         };
         emu_draw.samplers.push((s, levels, state));
     }
-    let mut out = match threads {
-        Some(t) => emu::run_with_threads(compiled, &emu_draw, t),
-        None => emu::run(compiled, &emu_draw),
-    }
-    .map_err(DrawFailure::Emu)?;
+    let mut out = backend::draw_output(
+        &settings.backend,
+        &shader.loaded.shader,
+        compiled,
+        &shader.loaded.file,
+        &emu_draw,
+        threads,
+    )
+    .map_err(|e| match e {
+        backend::DrawError::Emu(e) => DrawFailure::Emu(e),
+        other => DrawFailure::Message(other.to_string()),
+    })?;
+    let counted = matches!(settings.backend, backend::Backend::Emulator);
     let oc0 = out.color.first().and_then(|c| c.as_deref());
     let mut killed = out.killed.clone();
     d.pixel.apply(oc0, &mut killed, spec.width);
     out.killed = killed;
-    let findings = emu::findings::findings(&out, &emu_draw, &shader.loaded.file);
-    let executed = Range {
+    let findings = if counted {
+        emu::findings::findings(&out, &emu_draw, &shader.loaded.file)
+    } else {
+        Vec::new()
+    };
+    let executed_static = static_count(shader, &d.constants)?;
+    let executed = counted.then(|| Range {
         min: out.executed.iter().copied().min().unwrap_or(0),
         max: out.executed.iter().copied().max().unwrap_or(0),
+    });
+    // A GPU counts nothing: the list's budget is charged the cost model's
+    // upper bound for every pixel instead.
+    let executed_total = if counted {
+        out.executed.iter().fold(0u64, |a, &e| a.saturating_add(e))
+    } else {
+        executed_static
+            .max
+            .saturating_mul(u64::from(spec.width) * u64::from(spec.height))
     };
-    let executed_total = out.executed.iter().fold(0u64, |a, &e| a.saturating_add(e));
-    let executed_static = static_count(shader, &d.constants)?;
     drop(emu_draw);
     let state = &mut states[d.target];
     let merged = match out.color.first().and_then(|c| c.as_ref()) {
@@ -550,7 +577,8 @@ fn draw(
     }
     let detail = StepDetail::Draw {
         shader: shader.name.clone(),
-        counts_agree: executed_static.min <= executed.min && executed.max <= executed_static.max,
+        counts_agree: executed
+            .is_none_or(|e| executed_static.min <= e.min && e.max <= executed_static.max),
         executed_static,
         executed,
         merged,

@@ -26,7 +26,8 @@ fn lights_rows(r: &ChainRun) -> Vec<Vec<String>> {
                     ..
                 } => format!(
                     "{} ({}{})",
-                    executed.text(),
+                    // The studies draw on the emulator, which counts.
+                    executed.map_or_else(|| "—".into(), |e| e.text()),
                     executed_static.text(),
                     if *counts_agree {
                         ", same"
