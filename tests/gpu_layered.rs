@@ -437,3 +437,226 @@ fn compare_runs_cube_and_volume_draws_from_dds_files() {
         assert!(!out.contains("FINDING"), "{shader}: {out}");
     }
 }
+
+/// Ties for the major axis: Direct3D 9 does not say which face a direction
+/// with two equal largest components reads; its successor does ("In the
+/// case of a tie, the following precedence should occur: Z, Y, X", the
+/// Direct3D 11.3 functional specification, §7.18.7), and the emulator
+/// follows it. Each direction below ties, and the face it must read comes
+/// from that precedence, computed here; the blue channel of the cube of
+/// [`cube`] names the face (face f, level 0: 3f/18). The GPU must agree
+/// bit for bit: where a device broke ties otherwise, this test would say so.
+#[test]
+fn cube_ties_pick_z_then_y_on_both_backends() {
+    let Some(g) = gpu("cube_ties_pick_z_then_y_on_both_backends") else {
+        return;
+    };
+    let map = cube(false);
+    let s = shader("ps_3_0\ndcl_texcoord0 v0\ndcl_cube s0\ntexldl r0, v0, s0\nmov oC0, r0\n");
+    let dirs: [[f32; 3]; 8] = [
+        [1.0, 1.0, 0.5],
+        [-1.0, 1.0, 0.25],
+        [1.0, -1.0, -0.5],
+        [1.0, 0.5, 1.0],
+        [-1.0, 0.25, -1.0],
+        [0.5, 1.0, 1.0],
+        [0.25, -1.0, -1.0],
+        [-1.0, -1.0, -1.0],
+    ];
+    for d in dirs {
+        let a = d.map(f32::abs);
+        let m = a[0].max(a[1]).max(a[2]);
+        let axis = if a[2] == m {
+            2
+        } else if a[1] == m {
+            1
+        } else {
+            0
+        };
+        let face = axis * 2 + usize::from(d[axis] < 0.0);
+        let mut draw = Draw::new(1, 1);
+        draw.inputs.push((
+            0,
+            LinearInput {
+                base: [d[0], d[1], d[2], 0.0],
+                ddx: [0.0; 4],
+                ddy: [0.0; 4],
+            },
+        ));
+        draw.samplers.push((
+            0,
+            TextureLevels::Cube(&map),
+            state(Address::Clamp, Filter::Point, MipFilter::None, [0.0; 4]),
+        ));
+        let (e, o) = both(&g, &s, &draw);
+        let blue = e.color[0].as_ref().unwrap()[0][2];
+        assert_eq!(blue, (face * 3) as f32 / 18.0, "emulator at {d:?}");
+        assert_close(&format!("tie {d:?}"), &e, &o, 0.0);
+    }
+}
+
+/// `texldb` on a cube and a volume (the quad's own level of detail plus
+/// src.w) and `texldd` on a volume (the level from the given gradients),
+/// point mip filtering, on both backends. The implicit level on a cube
+/// face here is log2(0.3) (the face coordinates move 0.255/1.7/2 per pixel
+/// on a 4-texel face), and the bias runs 1 + 0.35·x: the levels above 0
+/// sit at least 0.13 from any k + ½, where the two backends could round apart
+/// within Vulkan's 4 bits of level precision (mipmapPrecisionBits ≥ 4:
+/// 1/16). The volume's gradients are chosen the same way.
+#[test]
+fn texldb_on_cubes_and_volumes_and_texldd_on_volumes_agree() {
+    let Some(g) = gpu("texldb_on_cubes_and_volumes_and_texldd_on_volumes_agree") else {
+        return;
+    };
+    let map = cube(true);
+    let texldb_cube =
+        shader("ps_3_0\ndcl_texcoord0 v0\ndcl_cube s0\ntexldb r0, v0, s0\nmov oC0, r0\n");
+    for axis in [0, 3, 4] {
+        let mut d = Draw::new(8, 8);
+        let mut input = across_face(axis);
+        input.base[3] = 1.0;
+        input.ddx[3] = 0.35;
+        d.inputs.push((0, input));
+        d.samplers.push((
+            0,
+            TextureLevels::Cube(&map),
+            state(Address::Clamp, Filter::Point, MipFilter::Point, [0.0; 4]),
+        ));
+        let (e, o) = both(&g, &texldb_cube, &d);
+        assert_close(&format!("texldb cube face {axis}"), &e, &o, 0.0);
+        // the blue tag (3f + level)/18 says which levels were read: all three
+        let levels = levels_read(&e, |c| (c[2] * 18.0).round() as u32 % 3);
+        assert_eq!(levels, vec![0, 1, 2], "texldb cube face {axis}");
+    }
+    let vol = volume(true);
+    let volume_state = state(Address::Wrap, Filter::Point, MipFilter::Point, [0.0; 4]);
+    // u moves 0.061 per pixel on a 4-texel side: 0.244 texels, log2 = −2.03;
+    // the bias 1.3 + 0.35·x gives −0.73 … 1.72, the levels above 0 at least
+    // 0.13 from k + ½.
+    let texldb_volume =
+        shader("ps_3_0\ndcl_texcoord0 v0\ndcl_volume s0\ntexldb r0, v0, s0\nmov oC0, r0\n");
+    let mut d = Draw::new(8, 4);
+    d.inputs.push((
+        0,
+        LinearInput {
+            base: [0.03, 0.07, 0.41, 1.3],
+            ddx: [0.061, 0.0, 0.0, 0.35],
+            ddy: [0.0, 0.0, 0.0, 0.0],
+        },
+    ));
+    d.samplers
+        .push((0, TextureLevels::Volume(&vol), volume_state));
+    let (e, o) = both(&g, &texldb_volume, &d);
+    assert_close("texldb volume", &e, &o, 0.0);
+    // alpha is level/3: every level of the chain was read
+    let by_alpha = |c: [f32; 4]| (c[3] * 3.0).round() as u32;
+    assert_eq!(levels_read(&e, by_alpha), vec![0, 1, 2], "texldb volume");
+    // texldd: the w gradient of v1 (constant along a row) grows with y:
+    // 0.06 + 0.25·y on a 4-texel side is 0.24, 1.24, 2.24, 3.24 texels,
+    // levels −2.06, 0.31, 1.16, 1.70 (none within 0.19 of k + ½).
+    let texldd_volume = shader(
+        "ps_3_0\ndcl_texcoord0 v0\ndcl_texcoord1 v1\ndcl_volume s0\ndef c1, 0, 0, 0, 0\nmov r1, v1\ntexldd r0, v0, s0, r1, c1\nmov oC0, r0\n",
+    );
+    let mut d = Draw::new(8, 4);
+    d.inputs.push((
+        0,
+        LinearInput {
+            base: [0.03, 0.07, 0.41, 0.0],
+            ddx: [0.061, 0.0, 0.0, 0.0],
+            ddy: [0.0, 0.23, 0.0, 0.0],
+        },
+    ));
+    d.inputs.push((
+        1,
+        LinearInput {
+            base: [0.0, 0.0, 0.06, 0.0],
+            ddx: [0.0; 4],
+            ddy: [0.0, 0.0, 0.25, 0.0],
+        },
+    ));
+    d.samplers
+        .push((0, TextureLevels::Volume(&vol), volume_state));
+    let (e, o) = both(&g, &texldd_volume, &d);
+    assert_close("texldd volume", &e, &o, 0.0);
+    assert_eq!(levels_read(&e, by_alpha), vec![0, 1, 2], "texldd volume");
+}
+
+/// The distinct levels a draw read, by `level` of each pixel's colour.
+fn levels_read(e: &DrawOutput, level: impl Fn([f32; 4]) -> u32) -> Vec<u32> {
+    let mut l: Vec<u32> = e.color[0]
+        .as_ref()
+        .unwrap()
+        .iter()
+        .map(|&c| level(c))
+        .collect();
+    l.sort_unstable();
+    l.dedup();
+    l
+}
+
+/// The level of detail where the coordinates are not finite. It comes
+/// from the quad's raw coordinates (the edge clamp of docs/textures.md
+/// applies to the lookup, not to the derivatives): a quad whose pixels
+/// share one infinite coordinate has ∞ − ∞ = NaN as its derivative and
+/// reads level 0; a quad where one pixel's coordinate is infinite and its
+/// neighbour's finite has an infinite derivative, λ = +∞, and reads the
+/// smallest level. Direct3D 9 and Vulkan leave both undefined: this is
+/// ps30's rule, and the test holds the GPU to it bit for bit, so a device
+/// that picks otherwise shows up here. The levels of a 4×4 chain are told
+/// apart by their first channel, which holds the level's number.
+#[test]
+fn the_level_of_detail_at_non_finite_coordinates() {
+    let levels = (0..3u32)
+        .map(|l| {
+            let (e, _, mut texels) = level(4 >> l, 0.5);
+            for t in &mut texels {
+                t[0] = l as f32;
+            }
+            (e, e, texels)
+        })
+        .collect();
+    let chain = MipChain::from_levels(levels).unwrap();
+    // x = rcp(v0.x) with v0.x = pixel x: +∞ at x = 0, 1 at x = 1; the
+    // second quad (x = 2, 3) is finite: ½ − ⅓ of a 4-texel side is 0.67
+    // texels, λ = −0.58, level 0.
+    let varying = shader(
+        "ps_3_0\ndcl_texcoord0 v0.x\ndcl_2d s0\ndef c0, 0, 0.375, 0, 0\nmov r1, c0\nrcp r1.x, v0.x\ntexld r0, r1, s0\nmov oC0, r0\n",
+    );
+    let constant = shader(
+        "ps_3_0\ndcl_texcoord0 v0.x\ndcl_2d s0\ndef c0, 0, 0.375, 0, 0\nmov r1, c0\nrcp r1.x, c0.x\ntexld r0, r1, s0\nmov oC0, r0\n",
+    );
+    let g = gpu("the_level_of_detail_at_non_finite_coordinates");
+    for (name, s, want) in [
+        (
+            "one infinite pixel per quad",
+            &varying,
+            [2.0, 2.0, 0.0, 0.0],
+        ),
+        ("every pixel infinite", &constant, [0.0; 4]),
+    ] {
+        let mut d = Draw::new(4, 2);
+        d.inputs.push((
+            0,
+            LinearInput {
+                base: [0.0; 4],
+                ddx: [1.0, 0.0, 0.0, 0.0],
+                ddy: [0.0; 4],
+            },
+        ));
+        d.samplers.push((
+            0,
+            TextureLevels::Chain(&chain),
+            state(Address::Clamp, Filter::Point, MipFilter::Point, [0.0; 4]),
+        ));
+        let e = emu::run(&emu::compile(s).unwrap(), &d).unwrap();
+        let row: Vec<f32> = e.color[0].as_ref().unwrap()[..4]
+            .iter()
+            .map(|c| c[0])
+            .collect();
+        assert_eq!(row, want, "{name}: the level each pixel read (emulator)");
+        if let Some(g) = &g {
+            let o = backend::run(g, s, &d, TargetKind::Raw).unwrap();
+            assert_close(name, &e, &o, 0.0);
+        }
+    }
+}
