@@ -660,3 +660,43 @@ fn the_level_of_detail_at_non_finite_coordinates() {
         }
     }
 }
+
+/// Bilinear lookups within half a texel of a face's edge read that face
+/// alone on both backends: Direct3D 9 hardware clamps each face (the GPU
+/// backend samples the faces as a 2D array for that reason; a Vulkan cube
+/// view would blend in the neighbouring face). The faces' blue tags differ
+/// by at least 6/18 between a face and any face it touches, so a blend of
+/// the neighbour at the weights here (up to 0.47) would move blue by far
+/// more than [`FACE_BOUND`].
+#[test]
+fn cube_faces_are_filtered_alone_at_their_edges() {
+    let Some(g) = gpu("cube_faces_are_filtered_alone_at_their_edges") else {
+        return;
+    };
+    let map = cube(false);
+    let s = shader("ps_3_0\ndcl_texcoord0 v0\ndcl_cube s0\ntexldl r0, v0, s0\nmov oC0, r0\n");
+    // +X: s = (−z + 1)/2 runs 0.95 … 0.992 along x; −Y: s = (x + 1)/2 the same.
+    let edges = [
+        LinearInput {
+            base: [1.0, -0.9, -0.9, 0.0],
+            ddx: [0.0, 0.0, -0.012, 0.0],
+            ddy: [0.0, 0.25, 0.0, 0.0],
+        },
+        LinearInput {
+            base: [0.9, -1.0, -0.9, 0.0],
+            ddx: [0.012, 0.0, 0.0, 0.0],
+            ddy: [0.0, 0.0, 0.25, 0.0],
+        },
+    ];
+    for (i, input) in edges.into_iter().enumerate() {
+        let mut d = Draw::new(8, 8);
+        d.inputs.push((0, input));
+        d.samplers.push((
+            0,
+            TextureLevels::Cube(&map),
+            state(Address::Clamp, Filter::Linear, MipFilter::None, [0.0; 4]),
+        ));
+        let (e, o) = both(&g, &s, &d);
+        assert_close(&format!("edge {i}"), &e, &o, FACE_BOUND);
+    }
+}

@@ -9,7 +9,7 @@
 //! | BORDER, any other colour | `ClampToBorder` transparent black; the shader adds the colour (`border_mode`) |
 //! | MIRRORONCE | `ClampToEdge`; the shader takes \|u\| (`mirror_once`) |
 //! | ADDRESSW | the volume texture's w axis as U and V (2D: unused) |
-//! | any address mode on a cube map | none: the faces are clamped (`ClampToEdge`, which Vulkan ignores for cube lookups, filtering across faces) |
+//! | any address mode on a cube map | none: the faces, a 2D array the shader picks from, are clamped (`ClampToEdge`), so filtering stops at a face's edge as in Direct3D 9 |
 //! | MAG/MINFILTER POINT, LINEAR | `Nearest`, `Linear` |
 //! | MIPFILTER NONE | a view of the base level only |
 //! | MIPFILTER POINT, LINEAR | the whole chain, `Nearest`/`Linear` between levels |
@@ -173,6 +173,8 @@ pub(super) fn map(
             mirror_once: mirror_once.contains(&1),
             border: emulate_border,
             lod: lod != [0.0, 0.0, 1.0, 0.0],
+            // bound as its faces: see `texture::view_dimension`
+            faces: ty == SamplerType::Cube,
         },
     })
 }
@@ -229,6 +231,7 @@ mod tests {
             mirror_once: true,
             border: true,
             lod: false,
+            faces: false,
         };
         assert_eq!(m.spec, emulated);
         let refused = map(

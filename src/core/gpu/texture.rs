@@ -1,7 +1,8 @@
 //! A sampler's texture on the device, as the emulator sees it: a 2D
 //! texture with its levels, a cube map (six array layers in D3DCUBEMAP_FACES
 //! order +X, −X, +Y, −Y, +Z, −Z, each face with its own levels, viewed as a
-//! cube) or a volume texture (3D, each level halving all three sides).
+//! 2D array whose face the shader picks) or a volume texture (3D, each
+//! level halving all three sides).
 //!
 //! Levels go up as given — box-filtered, authored in a DDS file, or decoded
 //! from DXT blocks by `core/image` — in `Rgba32Float`, so the device reads
@@ -30,11 +31,14 @@ struct Write<'a> {
     texels: &'a [[f32; 4]],
 }
 
-/// The view dimension a declaration binds (`dcl_2d`, `dcl_cube`, `dcl_volume`).
+/// The view dimension a declaration binds (`dcl_2d`, `dcl_cube`, `dcl_volume`):
+/// a cube map as its six faces, a 2D array, which the translation samples
+/// face by face (`translate/cube.rs`: Direct3D 9's filtering stops at a
+/// face's edge, where a cube view's is seamless).
 pub(super) fn view_dimension(ty: SamplerType) -> wgpu::TextureViewDimension {
     match ty {
         SamplerType::Tex2d => wgpu::TextureViewDimension::D2,
-        SamplerType::Cube => wgpu::TextureViewDimension::Cube,
+        SamplerType::Cube => wgpu::TextureViewDimension::D2Array,
         SamplerType::Volume => wgpu::TextureViewDimension::D3,
     }
 }

@@ -9,7 +9,8 @@
 //!   i: array<vec4<i32>, 16>    byte 3584   i# at 3584 + 16·# (SetPixelShaderConstantI)
 //!   b: array<vec4<u32>, 16>    byte 3840   b# true when b[#].x ≠ 0 (SetPixelShaderConstantB)
 //!   s: array<Ps30Sampler, 16>  byte 4096   sampler state the shader applies itself, 64 bytes per s#
-//! @group(0) @binding(1 + 2·#)  s#'s texture (texture_2d, texture_cube or texture_3d of f32)
+//! @group(0) @binding(1 + 2·#)  s#'s texture (texture_2d, texture_cube or texture_3d of f32;
+//!                              the GPU backend binds a cube as texture_2d_array, its faces)
 //! @group(0) @binding(2 + 2·#)  s#'s sampler
 //! @location(#)                 v# in, oC# out; vPos = @builtin(position) − 0.5, vFace = ±1 from
 //!                              @builtin(front_facing); oDepth = @builtin(frag_depth)

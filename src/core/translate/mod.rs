@@ -40,6 +40,7 @@
 //! same count.
 
 mod builder;
+mod cube;
 mod flow;
 pub mod header;
 pub mod interface;
@@ -198,8 +199,7 @@ pub fn translate_specialised(
         )));
     }
     let mut module = naga::Module::default();
-    let mut cx = Ctx::new(&mut module, shader)?;
-    cx.spec = spec.clone();
+    let mut cx = Ctx::new(&mut module, shader, spec)?;
     cx.border = texture::add_border_function(&mut module, shader, &cx.t, spec);
     let functions = lower_functions(&mut module, &cx, shader, rules)?;
     let main = *functions

@@ -24,6 +24,7 @@ pub(super) struct Types {
     pub f32: Handle<Type>,
     pub i32: Handle<Type>,
     pub bool: Handle<Type>,
+    pub vec2: Handle<Type>,
     pub vec3: Handle<Type>,
     pub vec4: Handle<Type>,
     pub ivec4: Handle<Type>,
@@ -131,6 +132,7 @@ fn types(m: &mut Module) -> Types {
         f32: ty(m, None, TypeInner::Scalar(f)),
         i32: ty(m, None, TypeInner::Scalar(Scalar::I32)),
         bool: ty(m, None, TypeInner::Scalar(Scalar::BOOL)),
+        vec2: vector(m, VectorSize::Bi, f),
         vec3: vector(m, VectorSize::Tri, f),
         vec4: vector(m, VectorSize::Quad, f),
         ivec4: vector(m, VectorSize::Quad, Scalar::I32),
@@ -210,7 +212,11 @@ fn constant(
 
 impl Ctx {
     /// Declares every type, variable and constant the program needs.
-    pub fn new(m: &mut Module, shader: &Shader) -> Result<Ctx, TranslateError> {
+    pub fn new(
+        m: &mut Module,
+        shader: &Shader,
+        spec: &super::Specialisation,
+    ) -> Result<Ctx, TranslateError> {
         let t = types(m);
         let block = constant_block(m, &t);
         let consts = global(
@@ -223,8 +229,11 @@ impl Ctx {
         let p = shader.program();
         let mut textures = BTreeMap::new();
         for d in &p.samplers {
+            // A cube map bound as its faces is a 2D array of six layers.
+            let faces = d.ty == SamplerType::Cube && spec.sampler(d.index).faces;
             let dim = match d.ty {
                 SamplerType::Tex2d => ImageDimension::D2,
+                SamplerType::Cube if faces => ImageDimension::D2,
                 SamplerType::Cube => ImageDimension::Cube,
                 SamplerType::Volume => ImageDimension::D3,
             };
@@ -233,7 +242,7 @@ impl Ctx {
                 None,
                 TypeInner::Image {
                     dim,
-                    arrayed: false,
+                    arrayed: faces,
                     class: ImageClass::Sampled {
                         kind: ScalarKind::Float,
                         multi: false,
@@ -340,7 +349,7 @@ impl Ctx {
             textures,
             // Added by `core::translate` with `texture::add_border_function`.
             border: None,
-            spec: super::Specialisation::general(),
+            spec: spec.clone(),
             float_defs,
             float_def_bits,
             int_defs,

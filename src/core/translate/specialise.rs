@@ -8,8 +8,9 @@
 //! BORDER colour as the record says ([`SamplerSpec::GENERAL`]). The GPU
 //! backend knows each state before it compiles, and asks for the code of
 //! the states it binds: a plain CLAMP/WRAP/MIRROR sampler without bias
-//! samples the texture and nothing more ([`SamplerSpec::PLAIN`]). New
-//! texture kinds take the same per-sampler record.
+//! samples the texture and nothing more ([`SamplerSpec::PLAIN`]), and a
+//! cube map is bound as its six faces so that its filtering is Direct3D
+//! 9's. New texture kinds take the same per-sampler record.
 
 use std::collections::BTreeMap;
 
@@ -24,6 +25,11 @@ pub struct SamplerSpec {
     /// MAXMIPLEVEL's shift of the level without mips); without it the
     /// device's own level of detail is taken unchanged.
     pub lod: bool,
+    /// A cube map is bound as its six faces, a 2D array, and the shader
+    /// picks the face and its (s, t) itself (`cube.rs`), so that filtering
+    /// stops at the face's edge as Direct3D 9 hardware's does; a cube view
+    /// is filtered seamlessly across faces by every Vulkan device.
+    pub faces: bool,
 }
 
 impl SamplerSpec {
@@ -32,12 +38,14 @@ impl SamplerSpec {
         mirror_once: true,
         border: true,
         lod: true,
+        faces: false,
     };
     /// No emulation at all: the device's sampler does everything.
     pub const PLAIN: SamplerSpec = SamplerSpec {
         mirror_once: false,
         border: false,
         lod: false,
+        faces: false,
     };
 }
 

@@ -33,6 +33,7 @@
 //! or `border` the coordinate and the value go untouched.
 
 use super::builder::Expr;
+use super::cube::Face;
 use super::lower::Lower;
 use super::specialise::{SamplerSpec, Specialisation};
 use super::TranslateError;
@@ -83,18 +84,20 @@ impl Lower<'_> {
         let coord = self.first(coord, dims);
         let mut coord = self.finite_coordinate(coord, dims);
         let spec = self.cx.spec.sampler(k);
+        // A cube map bound as its faces: the face and its (s, t) found here.
+        let face = (tex.ty == SamplerType::Cube && spec.faces).then(|| self.cube_face(coord));
         if tex.ty != SamplerType::Cube && spec.mirror_once {
             coord = self.mirror_once(k, coord, dims);
         }
-        let level = self.level(ins, k, a, dims, spec)?;
+        let level = self.level(ins, k, a, dims, spec, face.as_ref())?;
         let image = self.cx.var(&mut self.fb, tex.image);
         let sampler = self.cx.var(&mut self.fb, tex.sampler);
         let mut value = self.fb.add(Expression::ImageSample {
             image,
             sampler,
             gather: None,
-            coordinate: coord,
-            array_index: None,
+            coordinate: face.as_ref().map_or(coord, |f| f.st),
+            array_index: face.as_ref().map(|f| f.layer),
             offset: None,
             level,
             depth_ref: None,
@@ -121,7 +124,8 @@ impl Lower<'_> {
     }
 
     /// The sample's level of detail: the instruction's, with the sampler's
-    /// bias from its record where `spec.lod` asks for it.
+    /// bias from its record where `spec.lod` asks for it; `texldd`'s
+    /// gradients taken to `face` for a cube bound as its faces.
     fn level(
         &mut self,
         ins: &Instruction,
@@ -129,6 +133,7 @@ impl Lower<'_> {
         a: Expr,
         dims: u32,
         spec: SamplerSpec,
+        face: Option<&Face>,
     ) -> Result<SampleLevel, TranslateError> {
         let lod = spec.lod.then(|| self.state_member(k, LOD));
         // Adds component `c` of the record's `lod` to `v`, where read.
@@ -151,6 +156,10 @@ impl Lower<'_> {
             Opcode::TexLdD => {
                 let (gx, gy) = (self.src(ins, 2)?, self.src(ins, 3)?);
                 let (gx, gy) = (self.first(gx, dims), self.first(gy, dims));
+                let ((gx, gy), dims) = match face {
+                    Some(f) => ((self.cube_gradient(f, gx), self.cube_gradient(f, gy)), 2),
+                    None => ((gx, gy), dims),
+                };
                 match lod {
                     Some(lod) => {
                         let scale = self.comp(lod, 2);

@@ -260,9 +260,9 @@ pub fn tonemap(c: &TonemapComparison, probes: &[Probe]) -> Explanation {
 /// do otherwise than the emulator: linear filtering (the device may weigh
 /// taps with as few as 4 sub-texel bits, `subTexelPrecisionBits`; the
 /// emulator weighs in f32, so each axis's weight may be off by 2⁻⁵),
-/// MIPFILTER LINEAR (frac(λ) quantised likewise), and a cube map filtered
-/// linearly (Vulkan filters across faces; the emulator clamps each face,
-/// as Direct3D 9 hardware without seamless filtering does).
+/// and MIPFILTER LINEAR (frac(λ) quantised likewise). A cube map's faces
+/// are clamped at their edges on both backends (the GPU backend samples
+/// them as a 2D array, `translate/cube.rs`).
 pub fn filtering(draw: &crate::core::emu::Draw) -> Vec<String> {
     use crate::core::emu::{Filter, MipFilter, TextureLevels};
     let mut out = Vec::new();
@@ -285,12 +285,6 @@ pub fn filtering(draw: &crate::core::emu::Draw) -> Vec<String> {
         }
         if blend {
             parts.push("blends mip levels by a quantised frac(λ)".to_string());
-        }
-        if linear && kind == "cube" {
-            parts.push(
-                "filters across cube faces where the emulator clamps at each face's edge"
-                    .to_string(),
-            );
         }
         out.push(format!(
             "s{k} ({kind}) {} — the device's filter weights need only 4 sub-texel bits in Vulkan",
