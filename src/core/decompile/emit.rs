@@ -46,18 +46,18 @@ impl Body {
 /// Names of loop counters by nesting depth.
 const COUNTERS: [&str; 8] = ["i", "j", "k", "m", "i4", "j5", "k6", "m7"];
 
-/// Writes instructions `range` of `shader` into `body`; `last` is true for
-/// a range whose final `ret` ends the function.
+/// Writes instructions `range` of `ins` (the instructions of `shader` as
+/// the decompiler reads them: `reduce::read_back`) into `body`.
 pub(crate) fn statements(
     ctx: &mut Ctx,
     shader: &Shader,
+    ins: &[Instruction],
     range: std::ops::Range<usize>,
     is_main: bool,
     body: &mut Body,
 ) -> Result<(), DecompileError> {
-    let ins = shader.instructions();
     let end = range.end;
-    let folds = fold::plan(shader, range.clone(), is_main);
+    let folds = fold::plan(shader, ins, range.clone(), is_main);
     for i in range {
         let x = &ins[i];
         let here = |e: DecompileError| e.at(i, x.op);

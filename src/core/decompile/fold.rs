@@ -68,10 +68,10 @@ fn takes_folds(ins: &Instruction) -> bool {
 /// Instruction A → instruction B for every value A writes that B takes.
 pub(crate) fn plan(
     shader: &Shader,
+    ins: &[Instruction],
     range: std::ops::Range<usize>,
     is_main: bool,
 ) -> BTreeMap<usize, usize> {
-    let ins = shader.instructions();
     let mut out = BTreeMap::new();
     for a in range.clone() {
         let x = &ins[a];
@@ -83,7 +83,7 @@ pub(crate) fn plan(
         {
             continue;
         }
-        if let Some(b) = reader(shader, a, range.end, is_main) {
+        if let Some(b) = reader(shader, ins, a, range.end, is_main) {
             out.insert(a, b);
         }
     }
@@ -109,8 +109,13 @@ pub(crate) fn plan(
 }
 
 /// The one reader of what instruction `a` writes, if the value can move there.
-fn reader(shader: &Shader, a: usize, end: usize, is_main: bool) -> Option<usize> {
-    let ins = shader.instructions();
+fn reader(
+    shader: &Shader,
+    ins: &[Instruction],
+    a: usize,
+    end: usize,
+    is_main: bool,
+) -> Option<usize> {
     let x = &ins[a];
     let d = x.dst?;
     let r = d.reg.index;

@@ -20,9 +20,10 @@ mod emit;
 mod expr;
 mod fold;
 mod names;
+mod reduce;
 
 use crate::core::bytecode::ctab::ConstantTable;
-use crate::core::ir::Shader;
+use crate::core::ir::{Instruction, Shader};
 use crate::core::isa::{Opcode, RegFile};
 use emit::Body;
 use names::{Names, Uses};
@@ -113,10 +114,10 @@ struct Scan {
     predicate: bool,
 }
 
-fn scan(shader: &Shader) -> Scan {
+fn scan(shader: &Shader, instructions: &[Instruction]) -> Scan {
     let mut s = Scan::default();
     let program = shader.program();
-    for ins in shader.instructions() {
+    for ins in instructions {
         let sampler = ins
             .src
             .iter()
@@ -226,7 +227,9 @@ pub fn decompile(
     shader: &Shader,
     table: Option<&ConstantTable>,
 ) -> Result<Decompiled, DecompileError> {
-    let s = scan(shader);
+    // sin and cos read as the calls the compiler lowered (`reduce.rs`)
+    let ins = reduce::read_back(shader);
+    let s = scan(shader, &ins);
     let mut taken: BTreeSet<String> = BTreeSet::new();
     let (params, input_map) = inputs(shader, &mut taken)?;
     let names = Names::new(shader.program(), table, &s.uses, &mut taken)?;
@@ -283,6 +286,7 @@ pub fn decompile(
             emit::statements(
                 &mut ctx,
                 shader,
+                &ins,
                 start + 1..end.max(start + 1),
                 false,
                 &mut body,
@@ -340,7 +344,7 @@ pub fn decompile(
         }
     }
     let head = body.lines.len();
-    emit::statements(&mut ctx, shader, 0..main_end, true, &mut body)?;
+    emit::statements(&mut ctx, shader, &ins, 0..main_end, true, &mut body)?;
     statements += body.lines.len() - head;
     if single {
         body.line("return oC0;");

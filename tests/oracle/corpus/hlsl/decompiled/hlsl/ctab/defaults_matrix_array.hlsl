@@ -8,8 +8,7 @@ float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
     float4 oC0 = 0;
     float4 r0 = 0, r1 = 0;
-    r0.x = frac(((W[1].x * texcoord0.x) * 0.15915494 + 0.5));
-    r1.y = sin((r0.x * 6.2831855 - 3.1415927));
+    r1.y = sin((W[1].x * texcoord0.x));
     r0 = tex2D(Image, ((r1.y * W[2].xy) * W[0].x + texcoord0.xy));
     r1.x = dot(r0.xyz, ColourMatrix._m00_m10_m20);
     r1.y = dot(r0.xyz, ColourMatrix._m01_m11_m21);

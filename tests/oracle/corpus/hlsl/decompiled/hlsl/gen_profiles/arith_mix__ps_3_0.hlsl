@@ -16,7 +16,7 @@ float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1, float4 c
     r1.w = r0.z + r0.y;
     r2 = lerp(color0, r1, r0.x);
     r0.z = rsqrt(abs((r0.x + 1.0)));
-    r1.x = frac((texcoord0.w * 0.15915494 + 0.5)) * 6.2831855 - 3.1415927;
+    r1.x = texcoord0.w;
     r0.xy = float2(cos(r1.x), sin(r1.x)).yx;
     r0.w = max(texcoord0.x, texcoord0.y);
     oC0 = r0 + r2;

@@ -28,11 +28,9 @@ float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
     r2.x = max(r1.x, 0.0);
     r0.x = r0.y * r0.z + r0.x;
     r1.x = max(r0.x, r0.w);
-    r1.z = min(r0.w, r0.x);
-    r0.x = frac((r1.z * 0.15915494 + 0.5)) * 6.2831855 - 3.1415927;
+    r0.x = min(r0.w, r0.x);
     r3.xy = float2(cos(r0.x), sin(r0.x));
-    r0.x = frac((r1.x * 0.15915494 + 0.5));
-    r4.y = sin((r0.x * 6.2831855 - 3.1415927));
+    r4.y = sin(r1.x);
     r0.x = sigma2;
     r0.yz = r0.x + float2(0.33, 0.09);
     r0.z = 1.0 / r0.z;

@@ -17,8 +17,7 @@ float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
     r1.x = r0.w * (r1.x * waves[1].z);
     r1.y = 1.0 / rsqrt(abs(r1.y));
     r1.y = dot(r0.xy, texcoord0.xz) + -(r1.y * t);
-    r0.w = (r0.w * r1.y) * 0.15915494 + 0.5;
-    r0.w = frac(r0.w) * 6.2831855 - 3.1415927;
+    r0.w = (r0.w * r1.y);
     r2.xy = float2(cos(r0.w), sin(r0.w));
     r0.w = r1.x * r2.x;
     r0.xy = r0.w * r0.xy;
@@ -30,8 +29,7 @@ float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
     r1.z = r0.w * (r1.z * waves[0].z);
     r1.w = rsqrt(abs(r1.w));
     r1.w = (1.0 / r1.w) * t;
-    r0.w = (r0.w * (dot(r1.xy, texcoord0.xz) + -r1.w)) * 0.15915494 + 0.5;
-    r0.w = frac(r0.w) * 6.2831855 - 3.1415927;
+    r0.w = (r0.w * (dot(r1.xy, texcoord0.xz) + -r1.w));
     r3.xy = float2(cos(r0.w), sin(r0.w));
     r0.w = r1.z * r3.x;
     r1.z = waves[1].z * -r2.y + (waves[0].z * -r3.y + 1.0);
@@ -45,8 +43,7 @@ float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
     r1.y = r1.y * r1.x;
     r1.w = 1.0 / rsqrt(abs(r1.w));
     r1.w = dot(r0.zw, texcoord0.xz) + -(r1.w * t);
-    r1.x = (r1.w * r1.x) * 0.15915494 + 0.5;
-    r1.x = frac(r1.x) * 6.2831855 - 3.1415927;
+    r1.x = (r1.w * r1.x);
     r2.xy = float2(cos(r1.x), sin(r1.x));
     r1.x = r1.y * r2.x;
     r2.y = waves[2].z * -r2.y + r1.z;
