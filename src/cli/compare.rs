@@ -174,14 +174,11 @@ fn one_draw(args: &Args, ui: &Ui, gpu: &Arc<Gpu>, img: Option<&image::HdrImage>)
     draw.float_rules = args.float_rules.into();
     draw.limits.max_executed_per_pixel = args.max_executed_per_pixel;
     draw.limits.max_executed_total = args.max_executed_total;
-    if program
-        .inputs
-        .iter()
-        .any(|d| d.reg.file == ps30::core::isa::RegFile::Input && d.reg.index == 0)
-    {
+    // v0 in ps_3_0, t0 in ps_2_x.
+    if let Some(at) = ps30::core::pixel_inputs::declared_coordinates(program) {
         let (iw, ih) = img.map_or((tw, th), |i| (i.width, i.height));
         draw.inputs
-            .push((0, block_start(iw, ih, iw.div_ceil(tw), ih.div_ceil(th))));
+            .push((at, block_start(iw, ih, iw.div_ceil(tw), ih.div_ceil(th))));
     }
     let inputs = read_inputs(args.inputs.as_deref())?;
     let resolved = args.constants.resolve(loaded.constants.as_ref())?;

@@ -21,7 +21,7 @@ pub struct Args {
     #[arg(value_name = "SHADER")]
     shader: String,
     /// The image s0 samples: OpenEXR, Radiance .hdr or PFM (v0 runs over its texel blocks).
-    #[arg(long, value_name = "IMAGE", required_unless_present = "inputs")]
+    #[arg(long, value_name = "IMAGE", required_unless_present_any = ["inputs", "input_values"])]
     image: Option<PathBuf>,
     /// Constants, textures and sampler states from a file in the draw-list step format:
     /// {"constants": {"c0": [x, y, z, w]}, "samplers": {"s0": {"texture": "sky.dds", "filter": "linear"}}}.
@@ -30,6 +30,11 @@ pub struct Args {
     /// Render-target size WxH.
     #[arg(long, value_name = "WxH", value_parser = super::args::parse_size)]
     target: (u32, u32),
+    /// An input's value, by register (v0, t1) or semantic (texcoord1, color0):
+    /// `texcoord` for the pixel centres in [0, 1], or X[,Y,Z,W] at every pixel.
+    /// With --image, v0 (ps_3_0) or t0 (ps_2_x) runs over its texel blocks unless given.
+    #[arg(long = "input", value_name = "NAME=texcoord|X,Y,Z,W")]
+    input_values: Vec<String>,
     #[command(flatten)]
     source: SourceArgs,
     #[command(flatten)]
@@ -90,6 +95,14 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         limits: args.exec.limits(),
         backend: args.draw.open()?,
         float_rules: args.draw.rules(),
+        inputs: args
+            .input_values
+            .iter()
+            .map(|t| {
+                ps30::jobs::render::input_values::parse(loaded.shader.program(), t, args.target)
+                    .map_err(|e| super::BadInput(format!("--input {e}")))
+            })
+            .collect::<Result<_, _>>()?,
     };
     let out = {
         let _spinner = ui.spinner("running the shader");

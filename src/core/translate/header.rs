@@ -100,12 +100,15 @@ pub fn lines(source: &str, t: &Translation, target: Target) -> Vec<String> {
     }
     for v in &i.inputs {
         l.push(format!(
-            "@location({}): v{} (dcl_{}{}{})",
+            "@location({}): {} (dcl_{}{}{}{})",
             v.location,
-            v.register,
+            v.spelled
+                .clone()
+                .unwrap_or_else(|| format!("v{}", v.register)),
             v.usage,
             v.usage_index,
-            if v.centroid { ", centroid" } else { "" }
+            if v.centroid { ", centroid" } else { "" },
+            if v.clamped { ", clamped to [0, 1]" } else { "" }
         ));
     }
     if i.position {

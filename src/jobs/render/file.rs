@@ -32,7 +32,9 @@
 //!     (default 0, 0, 0, 0);
 //!   * `{"draw": TARGET, "shader": …, …}` — `shader` is a bundled name or a
 //!     file; `defines` (REPEAT_BLOCK counts), `inputs` (`"v0": "texcoord"` for
-//!     pixel centres in [0, 1], or `{"base": […], "ddx": […], "ddy": […]}`),
+//!     pixel centres in [0, 1], or `{"base": […], "ddx": […], "ddy": […]}`;
+//!     an input is named by register — `v#`, and `t#` in ps_2_0/ps_2_x —
+//!     or by semantic, `texcoordN`/`colorN`: `core/pixel_inputs.rs`),
 //!     `constants` (`"c5": [x, y, z, w]`, a component a number or a string
 //!     for any bit pattern: `"inf"`, `"-inf"`, `"nan"`, `"0x7f800000"`), `ints`, `bools`, `samplers`
 //!     (`"s0": {"texture": NAME, "filter": "point"|"linear", "mip":
@@ -704,7 +706,9 @@ impl Resolver {
         let mut inputs = Vec::new();
         for (name, input) in s.inputs.iter().flatten() {
             let field = format!("{at}.inputs.{name}");
-            let v = register(name, 'v', 10).map_err(|m| self.err(&field, m))?;
+            let program = self.list.shaders[shader].loaded.shader.program();
+            let v = crate::core::pixel_inputs::resolve(program, name)
+                .map_err(|m| self.err(&field, m))?;
             let value = match input {
                 FileInput::Named(n) if n == "texcoord" => super::texcoord(w, h),
                 FileInput::Named(n) => {

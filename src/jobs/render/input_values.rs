@@ -1,0 +1,64 @@
+//! An input's value as a person writes it on the command line
+//! (`ps30 run --input t1=0.25,0.5`): the register or semantic it names,
+//! resolved against the shader (`core/pixel_inputs.rs`), and a value that
+//! is the same at every pixel or the target's own texture coordinates.
+
+use crate::core::emu::LinearInput;
+use crate::core::ir::Program;
+
+/// `NAME=texcoord` (pixel centres in [0, 1] of a `width × height` target)
+/// or `NAME=X[,Y,Z,W]` (the same at every pixel; missing components are 0,
+/// each any 32-bit pattern `--const` takes) as `(slot, value)`.
+pub fn parse(
+    program: &Program,
+    text: &str,
+    size: (u32, u32),
+) -> Result<(u32, LinearInput), String> {
+    let (name, value) = text
+        .split_once('=')
+        .ok_or_else(|| format!("`{text}` is not NAME=texcoord or NAME=X[,Y,Z,W]"))?;
+    let slot = crate::core::pixel_inputs::resolve(program, name.trim())?;
+    if value.trim().eq_ignore_ascii_case("texcoord") {
+        return Ok((slot, super::texcoord(size.0, size.1)));
+    }
+    let parts: Vec<&str> = value.split(',').collect();
+    if parts.len() > 4 {
+        return Err(format!(
+            "`{value}` has {} components; an input has 4",
+            parts.len()
+        ));
+    }
+    let mut base = [0.0f32; 4];
+    for (c, p) in parts.iter().enumerate() {
+        base[c] = crate::core::numbers::parse_constant(p).map_err(|e| format!("{name}: {e}"))?;
+    }
+    Ok((
+        slot,
+        LinearInput {
+            base,
+            ddx: [0.0; 4],
+            ddy: [0.0; 4],
+        },
+    ))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::core::profile::Profile;
+
+    #[test]
+    fn constant_and_texcoord_values() {
+        let p = Program {
+            profile: Profile::Ps2_0,
+            ..Program::default()
+        };
+        let (s, v) = parse(&p, "t1=0.25,0.5", (4, 4)).unwrap();
+        assert_eq!((s, v.base), (3, [0.25, 0.5, 0.0, 0.0]));
+        let (s, v) = parse(&p, "color0=texcoord", (4, 2)).unwrap();
+        assert_eq!((s, v.ddy[1]), (0, 0.5));
+        assert!(parse(&p, "t9=1", (4, 4)).is_err());
+        assert!(parse(&p, "t0=1,2,3,4,5", (4, 4)).is_err());
+        assert!(parse(&p, "t0", (4, 4)).is_err());
+    }
+}
