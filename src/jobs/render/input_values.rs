@@ -6,8 +6,8 @@
 use crate::core::emu::LinearInput;
 use crate::core::ir::Program;
 
-/// `NAME=texcoord` (pixel centres in [0, 1] of a `width × height` target)
-/// or `NAME=X[,Y,Z,W]` (the same at every pixel; missing components are 0,
+/// `NAME=texcoord[,Z,W]` (x, y: pixel centres in [0, 1] of a `width ×
+/// height` target; z, w as given, else 0) or `NAME=X[,Y,Z,W]` (the same at every pixel; missing components are 0,
 /// each any 32-bit pattern `--const` takes) as `(slot, value)`.
 pub fn parse(
     program: &Program,
@@ -18,10 +18,14 @@ pub fn parse(
         .split_once('=')
         .ok_or_else(|| format!("`{text}` is not NAME=texcoord or NAME=X[,Y,Z,W]"))?;
     let slot = crate::core::pixel_inputs::resolve(program, name.trim())?;
-    if value.trim().eq_ignore_ascii_case("texcoord") {
-        return Ok((slot, super::texcoord(size.0, size.1)));
+    let mut parts: Vec<&str> = value.split(',').collect();
+    let texcoord = parts[0].trim().eq_ignore_ascii_case("texcoord");
+    if texcoord {
+        parts.remove(0);
+        if parts.len() > 2 {
+            return Err(format!("`{value}`: texcoord takes z and w at most"));
+        }
     }
-    let parts: Vec<&str> = value.split(',').collect();
     if parts.len() > 4 {
         return Err(format!(
             "`{value}` has {} components; an input has 4",
@@ -29,8 +33,15 @@ pub fn parse(
         ));
     }
     let mut base = [0.0f32; 4];
+    let first = if texcoord { 2 } else { 0 };
     for (c, p) in parts.iter().enumerate() {
-        base[c] = crate::core::numbers::parse_constant(p).map_err(|e| format!("{name}: {e}"))?;
+        base[first + c] =
+            crate::core::numbers::parse_constant(p).map_err(|e| format!("{name}: {e}"))?;
+    }
+    if texcoord {
+        let mut t = super::texcoord(size.0, size.1);
+        t.base[2..].copy_from_slice(&base[2..]);
+        return Ok((slot, t));
     }
     Ok((
         slot,
@@ -57,6 +68,9 @@ mod tests {
         assert_eq!((s, v.base), (3, [0.25, 0.5, 0.0, 0.0]));
         let (s, v) = parse(&p, "color0=texcoord", (4, 2)).unwrap();
         assert_eq!((s, v.ddy[1]), (0, 0.5));
+        let (_, v) = parse(&p, "t0=texcoord,0.5,2", (4, 2)).unwrap();
+        assert_eq!(v.base, [0.125, 0.25, 0.5, 2.0]);
+        assert!(parse(&p, "t0=texcoord,1,2,3", (4, 4)).is_err());
         assert!(parse(&p, "t9=1", (4, 4)).is_err());
         assert!(parse(&p, "t0=1,2,3,4,5", (4, 4)).is_err());
         assert!(parse(&p, "t0", (4, 4)).is_err());
