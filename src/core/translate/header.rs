@@ -34,7 +34,8 @@ pub fn lines(source: &str, t: &Translation, target: Target) -> Vec<String> {
     let i: &Interface = &t.interface;
     let mut l = vec![
         format!(
-            "{source}: Direct3D 9 ps_3_0, translated by ps30 to {}",
+            "{source}: Direct3D 9 {}, translated by ps30 to {}",
+            i.profile,
             target.describe()
         ),
         format!(

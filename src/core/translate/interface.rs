@@ -105,6 +105,9 @@ fn sampler_type_name<S: serde::Serializer>(ty: &SamplerType, s: S) -> Result<S::
 /// Everything an application binds, derived from the shader.
 #[derive(Clone, Debug, PartialEq, serde::Serialize)]
 pub struct Interface {
+    /// The shader's profile (its version line).
+    #[serde(skip)]
+    pub profile: crate::core::profile::Profile,
     /// The `v#` the shader declares, in register order.
     pub inputs: Vec<Input>,
     /// Whether the shader reads `vPos`.
@@ -231,6 +234,7 @@ impl Interface {
             defs(v)
         };
         Interface {
+            profile: p.profile,
             inputs,
             position,
             face,
