@@ -333,6 +333,28 @@ fn ps_2_0_arithmetic_on_exact_values() {
     );
 }
 
+#[test]
+fn inputs_files_name_inputs_as_draw_lists_do() {
+    // ps2/select.inputs.json gives select.hlsl's inputs by semantic and
+    // register (texcoord0 = the pixel centres, v0.x = 0.375) and c0: the
+    // values of ps_2_0_arithmetic_on_exact_values' second case.
+    case(
+        "select",
+        &hlsl("select"),
+        (4, 1),
+        &["--inputs", &inputs("select")],
+        |x, y| {
+            let (u, v) = centre(x, y, 4, 1);
+            [
+                if u > 0.5 { 0.25 } else { 0.75 },
+                2.0 * u + 4.0 * v,
+                1.5,
+                0.25 + 0.5 * u,
+            ]
+        },
+    );
+}
+
 // ----- ps_2_x: predication, flow control, gradients ---------------------------------
 
 #[test]

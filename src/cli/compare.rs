@@ -184,13 +184,22 @@ fn one_draw(args: &Args, ui: &Ui, gpu: &Arc<Gpu>, img: Option<&image::HdrImage>)
         draw.inputs
             .push((at, block_start(iw, ih, iw.div_ceil(tw), ih.div_ceil(th))));
     }
+    let inputs = read_inputs(args.inputs.as_deref())?;
+    let mut values = match &inputs {
+        Some(i) => ps30::jobs::render::input_values::resolve_all(program, &i.inputs, (tw, th))
+            .map_err(|e| BadInput(format!("--inputs: {e}")))?,
+        None => Vec::new(),
+    };
     for text in &args.input_values {
-        let (at, value) = ps30::jobs::render::input_values::parse(program, text, (tw, th))
-            .map_err(|e| BadInput(format!("--input {e}")))?;
+        values.push(
+            ps30::jobs::render::input_values::parse(program, text, (tw, th))
+                .map_err(|e| BadInput(format!("--input {e}")))?,
+        );
+    }
+    for (at, value) in values {
         draw.inputs.retain(|(s, _)| *s != at);
         draw.inputs.push((at, value));
     }
-    let inputs = read_inputs(args.inputs.as_deref())?;
     let resolved = args.constants.resolve(loaded.constants.as_ref())?;
     audit(
         ui,

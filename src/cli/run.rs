@@ -25,7 +25,8 @@ pub struct Args {
     /// (t0 in ps_2_x) runs over the target's own texel centres.
     #[arg(long, value_name = "IMAGE", required_unless_present_any = ["inputs", "input_values", "floats"])]
     image: Option<PathBuf>,
-    /// Constants, textures and sampler states from a file in the draw-list step format:
+    /// Constants, textures, sampler states and inputs (by register or semantic) from a file
+    /// in the draw-list step format:
     /// {"constants": {"c0": [x, y, z, w]}, "samplers": {"s0": {"texture": "sky.dds", "filter": "linear"}}}.
     #[arg(long, value_name = "FILE")]
     inputs: Option<PathBuf>,
@@ -86,6 +87,18 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         Some(path) => Some(image::load(path, &args.exec.image_limits())?),
         None => None,
     };
+    let program = loaded.shader.program();
+    let mut values = match &inputs {
+        Some(i) => ps30::jobs::render::input_values::resolve_all(program, &i.inputs, args.target)
+            .map_err(|e| super::BadInput(format!("--inputs: {e}")))?,
+        None => Vec::new(),
+    };
+    for t in &args.input_values {
+        values.push(
+            ps30::jobs::render::input_values::parse(program, t, args.target)
+                .map_err(|e| super::BadInput(format!("--input {e}")))?,
+        );
+    }
     let (constants, textures) = with_inputs(&resolved, inputs);
     let setup = PassSetup {
         target: args.target,
@@ -97,14 +110,7 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         limits: args.exec.limits(),
         backend: args.draw.open()?,
         float_rules: args.draw.rules(),
-        inputs: args
-            .input_values
-            .iter()
-            .map(|t| {
-                ps30::jobs::render::input_values::parse(loaded.shader.program(), t, args.target)
-                    .map_err(|e| super::BadInput(format!("--input {e}")))
-            })
-            .collect::<Result<_, _>>()?,
+        inputs: values,
     };
     let out = {
         let _spinner = ui.spinner("running the shader");

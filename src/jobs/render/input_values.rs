@@ -53,6 +53,35 @@ pub fn parse(
     ))
 }
 
+/// An input's value as an inputs file gives it (`"inputs": {"t0":
+/// "texcoord"}`), before the shader and the target are known.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Given {
+    /// The pixel centres in [0, 1] of whatever target the draw has.
+    Texcoord,
+    /// A value with its per-pixel steps.
+    Linear(LinearInput),
+}
+
+/// The inputs a file names, resolved against the shader (`(slot, value)`).
+pub fn resolve_all(
+    program: &Program,
+    given: &[(String, Given)],
+    size: (u32, u32),
+) -> Result<Vec<(u32, LinearInput)>, String> {
+    given
+        .iter()
+        .map(|(name, g)| {
+            let slot = crate::core::pixel_inputs::resolve(program, name)
+                .map_err(|e| format!("inputs.{name}: {e}"))?;
+            Ok(match g {
+                Given::Texcoord => (slot, super::texcoord(size.0, size.1)),
+                Given::Linear(l) => (slot, *l),
+            })
+        })
+        .collect()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
