@@ -332,6 +332,7 @@ impl Workloads {
             backend: ps30::jobs::backend::Backend::Emulator,
             float_rules: ps30::core::float_rules::FloatRules::D3d9,
             textures: Vec::new(),
+            inputs: Vec::new(),
         };
         run_pass(&self.loop1, Some(&img), &setup)
             .unwrap()

@@ -20,6 +20,7 @@ mod corpus;
 mod corpus_mode;
 mod cost;
 mod d3d9_conformance;
+mod d3d9_conformance_ps2;
 mod damaged_inputs;
 mod decompile;
 mod docs;

@@ -278,6 +278,14 @@ pub struct SourceArgs {
     /// mixed _abs constant reads…): those warnings become errors.
     #[arg(long)]
     pub strict: bool,
+    /// The capabilities a ps_2_x shader is held to, as a device has them:
+    /// predication, gradients, arbitrary-swizzle, no-dependent-read-limit,
+    /// no-texture-instruction-limit, temps=N, slots=N, static-flow=N,
+    /// dynamic-flow=N (D3DPS20CAPS names too), from the least a ps_2_x device has;
+    /// or a named set: assembler (the default: what Microsoft's assembler assumes),
+    /// ps_2_a, ps_2_b, minimum.
+    #[arg(long, value_name = "LIST", value_parser = ps30::core::profile::Ps2xCaps::parse)]
+    pub caps: Option<ps30::core::profile::Ps2xCaps>,
 }
 
 impl SourceArgs {
@@ -287,6 +295,7 @@ impl SourceArgs {
             defines: self.define.iter().cloned().collect(),
             max_expanded: self.max_expanded,
             strict: self.strict,
+            caps: self.caps,
         }
     }
 }

@@ -32,6 +32,10 @@ pub struct Args {
     /// Render-target size WxH of the draw.
     #[arg(long, value_name = "WxH", value_parser = parse_size)]
     target: Option<(u32, u32)>,
+    /// An input's value for the draw, as `ps30 run --input` takes it (v0, t1, texcoord1,
+    /// color0 = texcoord[,Z,W] or X[,Y,Z,W]); --image is optional then.
+    #[arg(long = "input", value_name = "NAME=texcoord[,Z,W]|X,Y,Z,W", conflicts_with_all = ["luminance", "tonemap", "all"])]
+    input_values: Vec<String>,
     /// Compare the luminance pipeline on --image instead of one draw.
     #[arg(long, conflicts_with_all = ["shader", "tonemap", "all"])]
     luminance: bool,
@@ -107,7 +111,7 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
     if !ui.quiet && !args.json {
         eprint(&format!("device: {}\n", gpu.info().line()));
     }
-    if args.inputs.is_some() && args.image.is_none() {
+    if (args.inputs.is_some() || !args.input_values.is_empty()) && args.image.is_none() {
         return one_draw(&args, ui, &gpu, None);
     }
     let path = args
@@ -174,16 +178,28 @@ fn one_draw(args: &Args, ui: &Ui, gpu: &Arc<Gpu>, img: Option<&image::HdrImage>)
     draw.float_rules = args.float_rules.into();
     draw.limits.max_executed_per_pixel = args.max_executed_per_pixel;
     draw.limits.max_executed_total = args.max_executed_total;
-    if program
-        .inputs
-        .iter()
-        .any(|d| d.reg.file == ps30::core::isa::RegFile::Input && d.reg.index == 0)
-    {
+    // v0 in ps_3_0, t0 in ps_2_x.
+    if let Some(at) = ps30::core::pixel_inputs::declared_coordinates(program) {
         let (iw, ih) = img.map_or((tw, th), |i| (i.width, i.height));
         draw.inputs
-            .push((0, block_start(iw, ih, iw.div_ceil(tw), ih.div_ceil(th))));
+            .push((at, block_start(iw, ih, iw.div_ceil(tw), ih.div_ceil(th))));
     }
     let inputs = read_inputs(args.inputs.as_deref())?;
+    let mut values = match &inputs {
+        Some(i) => ps30::jobs::render::input_values::resolve_all(program, &i.inputs, (tw, th))
+            .map_err(|e| BadInput(format!("--inputs: {e}")))?,
+        None => Vec::new(),
+    };
+    for text in &args.input_values {
+        values.push(
+            ps30::jobs::render::input_values::parse(program, text, (tw, th))
+                .map_err(|e| BadInput(format!("--input {e}")))?,
+        );
+    }
+    for (at, value) in values {
+        draw.inputs.retain(|(s, _)| *s != at);
+        draw.inputs.push((at, value));
+    }
     let resolved = args.constants.resolve(loaded.constants.as_ref())?;
     audit(
         ui,

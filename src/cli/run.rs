@@ -21,15 +21,23 @@ pub struct Args {
     #[arg(value_name = "SHADER")]
     shader: String,
     /// The image s0 samples: OpenEXR, Radiance .hdr or PFM (v0 runs over its texel blocks).
-    #[arg(long, value_name = "IMAGE", required_unless_present = "inputs")]
+    /// Needed unless --inputs, --input or --const gives the draw something; without it, v0
+    /// (t0 in ps_2_x) runs over the target's own texel centres.
+    #[arg(long, value_name = "IMAGE", required_unless_present_any = ["inputs", "input_values", "floats"])]
     image: Option<PathBuf>,
-    /// Constants, textures and sampler states from a file in the draw-list step format:
+    /// Constants, textures, sampler states and inputs (by register or semantic) from a file
+    /// in the draw-list step format:
     /// {"constants": {"c0": [x, y, z, w]}, "samplers": {"s0": {"texture": "sky.dds", "filter": "linear"}}}.
     #[arg(long, value_name = "FILE")]
     inputs: Option<PathBuf>,
     /// Render-target size WxH.
     #[arg(long, value_name = "WxH", value_parser = super::args::parse_size)]
     target: (u32, u32),
+    /// An input's value, by register (v0, t1) or semantic (texcoord1, color0):
+    /// `texcoord[,Z,W]` for the pixel centres in [0, 1] (z, w as given), or X[,Y,Z,W] at every pixel.
+    /// With --image, v0 (ps_3_0) or t0 (ps_2_x) runs over its texel blocks unless given.
+    #[arg(long = "input", value_name = "NAME=texcoord[,Z,W]|X,Y,Z,W")]
+    input_values: Vec<String>,
     #[command(flatten)]
     source: SourceArgs,
     #[command(flatten)]
@@ -79,6 +87,18 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         Some(path) => Some(image::load(path, &args.exec.image_limits())?),
         None => None,
     };
+    let program = loaded.shader.program();
+    let mut values = match &inputs {
+        Some(i) => ps30::jobs::render::input_values::resolve_all(program, &i.inputs, args.target)
+            .map_err(|e| super::BadInput(format!("--inputs: {e}")))?,
+        None => Vec::new(),
+    };
+    for t in &args.input_values {
+        values.push(
+            ps30::jobs::render::input_values::parse(program, t, args.target)
+                .map_err(|e| super::BadInput(format!("--input {e}")))?,
+        );
+    }
     let (constants, textures) = with_inputs(&resolved, inputs);
     let setup = PassSetup {
         target: args.target,
@@ -90,6 +110,7 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         limits: args.exec.limits(),
         backend: args.draw.open()?,
         float_rules: args.draw.rules(),
+        inputs: values,
     };
     let out = {
         let _spinner = ui.spinner("running the shader");
@@ -109,7 +130,9 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
                 .image
                 .as_ref()
                 .or(args.inputs.as_ref())
-                .map_or(String::new(), |p| p.display().to_string()),
+                .map_or("the target's texel centres".into(), |p| {
+                    p.display().to_string()
+                }),
             &out,
             written.as_ref().map(|(p, w)| (*p, w)).filter(|_| !ui.quiet),
         );

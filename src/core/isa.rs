@@ -942,9 +942,13 @@ impl Profile {
     }
 
     /// Whether ps30 runs shaders of this profile (the emulator, the GPU
-    /// backend, `render`, `compare`): ps_3_0 only.
+    /// backend, `render`, `compare`): the pixel shaders ps_2_0, ps_2_x (and
+    /// the ps_2_a/ps_2_b shaders compiled to it) and ps_3_0.
     pub fn runs(self) -> bool {
-        self == Profile::Ps3_0
+        matches!(
+            self,
+            Profile::Ps2_0 | Profile::Ps2X | Profile::Ps2A | Profile::Ps2B | Profile::Ps3_0
+        )
     }
 }
 

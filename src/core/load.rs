@@ -28,6 +28,9 @@ pub struct Options {
     /// `--strict`: the documented rules Microsoft's assembler does not
     /// enforce (warnings by default) are errors.
     pub strict: bool,
+    /// `--caps`: the capabilities a ps_2_x shader is held to
+    /// (`core/valid/caps.rs`); `None`: the assembler's, every one on.
+    pub caps: Option<crate::core::profile::Ps2xCaps>,
 }
 
 impl Default for Options {
@@ -36,6 +39,7 @@ impl Default for Options {
             defines: BTreeMap::new(),
             max_expanded: repeat::DEFAULT_MAX_EXPANDED,
             strict: false,
+            caps: None,
         }
     }
 }
@@ -246,7 +250,18 @@ fn stages(file: SourceFile, options: &Options) -> Result<Stages, SourceError> {
         Ok(t) => t,
         Err(d) => return fail(file, only(d)),
     };
-    match crate::core::valid::validate(&stmts, &expanded, &file) {
+    let validated = crate::core::valid::validate(&stmts, &expanded, &file).and_then(|(s, w)| {
+        let refused = match options.caps {
+            Some(caps) => crate::core::valid::caps::check(s.program(), s.info(), caps, &file),
+            None => Diagnostics::default(),
+        };
+        if refused.has_errors() {
+            Err(refused)
+        } else {
+            Ok((s, w))
+        }
+    });
+    match validated {
         Ok((_, mut warnings)) if options.strict && warnings.has_strict() => {
             warnings.make_strict();
             fail(file, warnings)

@@ -222,6 +222,82 @@ impl Ps2xCaps {
         dynamic_flow_depth: 0,
     };
 
+    /// Capabilities as a person names them (`ps30 … --caps LIST`): a
+    /// comma-separated list that starts from [`Ps2xCaps::MINIMUM`] and turns
+    /// on each flag it names — `predication`, `gradients`,
+    /// `arbitrary-swizzle`, `no-dependent-read-limit`,
+    /// `no-texture-instruction-limit`, or D3DPS20CAPS's own names
+    /// (`D3DPS20CAPS_PREDICATION`, `GRADIENTINSTRUCTIONS`, `ARBITRARYSWIZZLE`,
+    /// `NODEPENDENTREADLIMIT`, `NOTEXINSTRUCTIONLIMIT`) — and sets each number
+    /// it gives: `temps=N` (NumTemps, 12–32), `slots=N`
+    /// (NumInstructionSlots, 96–512), `static-flow=N`
+    /// (StaticFlowControlDepth, 0–4), `dynamic-flow=N`
+    /// (DynamicFlowControlDepth, 0–24). A named set replaces everything
+    /// before it: `assembler` (what `D3DAssemble` assumes, the default),
+    /// `ps_2_a`, `ps_2_b`, `minimum`.
+    pub fn parse(text: &str) -> Result<Ps2xCaps, String> {
+        let mut caps = Ps2xCaps::MINIMUM;
+        for item in text.split(',').map(str::trim).filter(|s| !s.is_empty()) {
+            let lower = item.to_ascii_lowercase().replace('_', "-");
+            let name = lower.strip_prefix("d3dps20caps-").unwrap_or(&lower);
+            let (key, value) = match name.split_once('=') {
+                Some((k, v)) => (k.trim(), Some(v.trim())),
+                None => (name, None),
+            };
+            let number = |lo: u32, hi: u32| -> Result<u32, String> {
+                let v = value.ok_or_else(|| format!("`{item}` needs a value: {key}=N"))?;
+                v.parse::<u32>()
+                    .ok()
+                    .filter(|n| (lo..=hi).contains(n))
+                    .ok_or_else(|| format!("`{item}`: {key} is {lo} to {hi}"))
+            };
+            match (key, value.is_some()) {
+                ("assembler", false) => caps = Ps2xCaps::ASSEMBLER,
+                ("ps-2-a", false) => caps = Ps2xCaps::PS_2_A,
+                ("ps-2-b", false) => caps = Ps2xCaps::PS_2_B,
+                ("minimum", false) => caps = Ps2xCaps::MINIMUM,
+                ("predication", false) => caps.predication = true,
+                ("gradients" | "gradientinstructions", false) => caps.gradients = true,
+                ("arbitrary-swizzle" | "arbitraryswizzle", false) => caps.arbitrary_swizzle = true,
+                ("no-dependent-read-limit" | "nodependentreadlimit", false) => {
+                    caps.no_dependent_read_limit = true
+                }
+                ("no-texture-instruction-limit" | "notexinstructionlimit", false) => {
+                    caps.no_texture_instruction_limit = true
+                }
+                ("temps" | "numtemps", _) => caps.temps = number(12, 32)?,
+                ("slots" | "numinstructionslots", _) => caps.slots = number(96, 512)?,
+                ("static-flow" | "staticflowcontroldepth", _) => {
+                    caps.static_flow_depth = number(0, 4)?
+                }
+                ("dynamic-flow" | "dynamicflowcontroldepth", _) => {
+                    caps.dynamic_flow_depth = number(0, 24)?
+                }
+                _ => {
+                    return Err(format!(
+                    "`{item}` is no ps_2_x capability (predication, gradients, arbitrary-swizzle, \
+                         no-dependent-read-limit, no-texture-instruction-limit, temps=N, slots=N, \
+                         static-flow=N, dynamic-flow=N; or assembler, ps_2_a, ps_2_b, minimum)"
+                ))
+                }
+            }
+        }
+        Ok(caps)
+    }
+
+    /// The slot and flow-control limits these capabilities set.
+    pub fn limits(self) -> Limits {
+        Limits {
+            slots: Some(self.slots),
+            arithmetic: Some(self.slots),
+            texture: (!self.no_texture_instruction_limit).then_some(32),
+            dependent_reads: (!self.no_dependent_read_limit).then_some(4),
+            static_flow_depth: self.static_flow_depth,
+            dynamic_flow_depth: self.dynamic_flow_depth,
+            executed: Some(self.slots),
+        }
+    }
+
     /// The least a ps_2_x device has: every option off, 12 temporaries, 96
     /// slots.
     pub const MINIMUM: Ps2xCaps = Ps2xCaps {
@@ -507,16 +583,7 @@ impl Profile {
                 ..none
             },
             Profile::Ps2A | Profile::Ps2B | Profile::Ps2X => {
-                let caps = self.ps2x_caps().unwrap_or(Ps2xCaps::ASSEMBLER);
-                Limits {
-                    slots: Some(caps.slots),
-                    arithmetic: Some(caps.slots),
-                    texture: (!caps.no_texture_instruction_limit).then_some(32),
-                    dependent_reads: (!caps.no_dependent_read_limit).then_some(4),
-                    static_flow_depth: caps.static_flow_depth,
-                    dynamic_flow_depth: caps.dynamic_flow_depth,
-                    executed: Some(caps.slots),
-                }
+                self.ps2x_caps().unwrap_or(Ps2xCaps::ASSEMBLER).limits()
             }
             Profile::Ps3_0 | Profile::Vs3_0 => Limits {
                 slots: Some(512),
@@ -580,6 +647,21 @@ mod tests {
         assert_eq!(Profile::from_version_line("ps.2.0"), Some(Profile::Ps2_0));
         assert_eq!(Profile::from_version_line("ps_2_1"), None);
         assert_eq!(Profile::from_version_line("ps_2_sw"), None);
+    }
+
+    #[test]
+    fn caps_parse_from_lists_and_named_sets() {
+        assert_eq!(Ps2xCaps::parse(""), Ok(Ps2xCaps::MINIMUM));
+        assert_eq!(Ps2xCaps::parse("assembler"), Ok(Ps2xCaps::ASSEMBLER));
+        assert_eq!(Ps2xCaps::parse("ps_2_b"), Ok(Ps2xCaps::PS_2_B));
+        let c = Ps2xCaps::parse("D3DPS20CAPS_PREDICATION,dynamic-flow=24,temps=22").unwrap();
+        assert!(c.predication && !c.gradients);
+        assert_eq!((c.dynamic_flow_depth, c.temps, c.slots), (24, 22, 96));
+        let c = Ps2xCaps::parse("ps_2_a,slots=256").unwrap();
+        assert_eq!((c.temps, c.slots), (22, 256));
+        assert!(Ps2xCaps::parse("temps=40").is_err());
+        assert!(Ps2xCaps::parse("temps").is_err());
+        assert!(Ps2xCaps::parse("loops").is_err());
     }
 
     #[test]

@@ -338,6 +338,21 @@ pub const VERTEX_SLOTS: Code = "X5755";
 pub const DEPENDENT_READS: Code = "X5775";
 /// "Instruction not supported by version ps_2_0 pixel shader."
 pub const PS_UNSUPPORTED: Code = "X5190";
+/// "Source swizzles not allowed on tex* instruction." (ps_2_0, ps_2_x).
+pub const TEX_SOURCE_SWIZZLE: Code = "X5198";
+/// "Invalid source selector … The only available source swizzles in this
+/// shader version are …" (ps_2_0; ps_2_x without arbitrary swizzles).
+pub const PS2_SWIZZLE: Code = "X5202";
+/// ps_2_x's "Depth of loop nesting exceeds limit of 4" (ps_3_0's is X5827).
+pub const PS2X_LOOP_DEPTH: Code = "X5493";
+/// ps_2_x's "Depth of subroutine call nesting exceeds limit of 4".
+pub const PS2X_CALL_DEPTH: Code = "X5843";
+/// ps_2_x's "Depth of dynamic 'if' nesting exceeds limit of 24" for `if p0.c`.
+pub const PS2X_PREDICATE_IF_DEPTH: Code = "X5846";
+/// ps_2_x's "Depth of static 'if' nesting exceeds limit of 24".
+pub const PS2X_STATIC_IF_DEPTH: Code = "X5847";
+/// ps_2_x's "Depth of dynamic 'if' nesting exceeds limit of 24".
+pub const PS2X_DYNAMIC_IF_DEPTH: Code = "X5849";
 /// "Instruction not supported by version vs_2_0 shader."
 pub const VS_UNSUPPORTED: Code = "X5655";
 /// "Second and third source params for SGN must both be different temp

@@ -17,11 +17,12 @@
 //! | 0..4 | zeros (out-of-range `v[aL + n]`) | constant |
 //! | constant block | every `c#` the program reads (sorted, so matrix ranges are contiguous) and `vFace` | filled once per worker |
 //! | reset block | every `r#` used, `oC0..oC3`, `oDepth`, `aL` | zeroed per batch |
-//! | input block | `v0..v9`, `vPos` | filled per batch |
+//! | input block | `v0..v9` (ps_2_x: `v0`, `v1`, `t0..t7`, by [`slot`]), `vPos` | filled per batch |
 
 use super::{EmuError, GradientSite};
 use crate::core::ir::{Dst, Info, Instruction, Program, Shader, Span, Src, SrcMod, Swizzle};
 use crate::core::isa::{Compare, Opcode, RegFile, SamplerType, SlotTable};
+use crate::core::pixel_inputs::{self, slot};
 use std::collections::{BTreeSet, HashMap};
 
 /// A source operand: a row base, a packed swizzle and modifier bits.
@@ -410,8 +411,13 @@ pub struct Compiled {
     pub(crate) bool_defs: Vec<(u32, bool)>,
     /// Declared sampler types by `s#`.
     pub(crate) samplers: [Option<SamplerType>; 16],
-    /// `v#` the program declares or reads directly.
+    /// Input slots the program declares or reads directly
+    /// ([`pixel_inputs`]: `v#` in ps_3_0, `v#` and `t#` in ps_2_x).
     pub(crate) inputs: u16,
+    /// Input slots clamped to [0, 1] on entry ([`pixel_inputs::clamped`]).
+    pub(crate) clamped: u16,
+    /// The shader's profile, which names its input slots.
+    pub(crate) profile: crate::core::profile::Profile,
     /// Whether any op reads `aL` as a float source (the aL rows are kept up to
     /// date only then).
     pub(crate) reads_al: bool,
@@ -559,6 +565,7 @@ fn assign_rows(usage: &Usage) -> Result<Rows, EmuError> {
 /// index (texldd gradients, gradient sites).
 struct Builder<'a> {
     info: &'a Info,
+    profile: crate::core::profile::Profile,
     ins: &'a [Instruction],
     layout: Layout,
     temp_row: [u16; TEMPS as usize],
@@ -592,11 +599,12 @@ impl Builder<'_> {
             RegFile::Const if idx < CONSTS => self.const_row[idx as usize],
             // A relative base may lie past v9: the read lands inside v0 … v9
             // or reads 0 (Worker::row).
-            RegFile::Input if idx < INPUTS || s.relative => {
-                if !s.relative {
-                    self.inputs |= 1 << idx;
-                }
-                self.layout.input + 4 * idx as u16
+            RegFile::Input if s.relative => self.layout.input + 4 * idx as u16,
+            RegFile::Input | RegFile::Texture => {
+                let v = slot(self.profile, s.reg.file, idx)
+                    .ok_or_else(|| malformed(i, format!("{} is no input here", s.reg)))?;
+                self.inputs |= 1 << v;
+                self.layout.input + 4 * v as u16
             }
             RegFile::Position => self.layout.pos,
             RegFile::Face => self.layout.face,
@@ -650,9 +658,11 @@ impl Builder<'_> {
             // setp's p0: the row is unused, p0 lives in lane masks.
             RegFile::Predicate if ins.op == Opcode::Setp => (0, false),
             // texkill reads its "destination".
-            RegFile::Input if ins.op == Opcode::TexKill && idx < INPUTS => {
-                self.inputs |= 1 << idx;
-                (self.layout.input + 4 * idx as u16, false)
+            RegFile::Input | RegFile::Texture if ins.op == Opcode::TexKill => {
+                let v = slot(self.profile, d.reg.file, idx)
+                    .ok_or_else(|| malformed(i, format!("{} is no input here", d.reg)))?;
+                self.inputs |= 1 << v;
+                (self.layout.input + 4 * v as u16, false)
             }
             _ => return Err(malformed(i, format!("{} cannot be written here", d.reg))),
         };
@@ -861,13 +871,15 @@ impl Builder<'_> {
         if m.relative {
             return Err(malformed(i, "relative matrix operand"));
         }
-        let limit = match m.reg.file {
-            RegFile::Temp => TEMPS,
-            RegFile::Const => CONSTS,
-            RegFile::Input => INPUTS,
-            _ => 0,
+        let last = m.reg.index + rows as u32 - 1;
+        let exists = match m.reg.file {
+            RegFile::Temp => last < TEMPS,
+            RegFile::Const => last < CONSTS,
+            // Every row an input of the same file (t# rows are not v#).
+            RegFile::Input | RegFile::Texture => slot(self.profile, m.reg.file, last).is_some(),
+            _ => false,
         };
-        if m.reg.index + rows as u32 > limit {
+        if !exists {
             return Err(malformed(
                 i,
                 format!("matrix rows {}..+{} do not exist", m.reg, rows),
@@ -1090,12 +1102,12 @@ fn declared_samplers(program: &Program) -> [Option<SamplerType>; 16] {
     samplers
 }
 
-/// The `v#` declared by `dcl` (bit per register).
+/// The input slots declared by `dcl` (bit per slot).
 fn declared_inputs(program: &Program) -> u16 {
     let mut declared = 0u16;
     for d in &program.inputs {
-        if d.reg.file == RegFile::Input && d.reg.index < INPUTS {
-            declared |= 1 << d.reg.index;
+        if let Some(v) = slot(program.profile, d.reg.file, d.reg.index) {
+            declared |= 1 << v;
         }
     }
     declared
@@ -1137,6 +1149,7 @@ pub fn compile_under(shader: &Shader, table: SlotTable) -> Result<Compiled, EmuE
     let rows = assign_rows(&usage(ins)?)?;
     let mut b = Builder {
         info,
+        profile: program.profile,
         ins,
         layout: rows.layout,
         temp_row: rows.temp_row,
@@ -1196,6 +1209,8 @@ pub fn compile_under(shader: &Shader, table: SlotTable) -> Result<Compiled, EmuE
         bool_defs,
         samplers: b.samplers,
         inputs: b.inputs,
+        clamped: pixel_inputs::clamped(program.profile),
+        profile: program.profile,
         reads_al: b.reads_al,
         outputs: b.outputs,
         rep_ints: b.rep_ints,

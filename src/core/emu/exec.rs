@@ -236,6 +236,12 @@ impl<'c, 'a> Worker<'c, 'a> {
                     for l in 0..n {
                         row[l] = input.base[c] + xs[l] * input.ddx[c] + ys[l] * input.ddy[c];
                     }
+                    if ctx.compiled.clamped & (1 << v) != 0 {
+                        // ps_2_x colours (core/pixel_inputs.rs).
+                        for v in &mut row[..n] {
+                            *v = super::math::sat(*v);
+                        }
+                    }
                     if ctx.rules.flush_denormals() {
                         for v in &mut row[..n] {
                             *v = crate::core::float_rules::flush(*v);

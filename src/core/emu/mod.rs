@@ -515,10 +515,11 @@ pub enum EmuError {
     OutOfMemory { bytes: u64 },
     /// `call`/`callnz` nested deeper than ps_3_0's 4 levels.
     CallDepth { x: u32, y: u32, index: usize },
-    /// The shader declares `v#` but the draw does not supply it.
-    MissingInput { input: u32 },
-    /// The draw supplies `v#` the shader does not declare.
-    InputNotDeclared { input: u32 },
+    /// The shader declares an input (slot `input`, spelled `register`:
+    /// `core/pixel_inputs.rs`) but the draw does not supply it.
+    MissingInput { input: u32, register: String },
+    /// The draw supplies an input slot the shader does not declare.
+    InputNotDeclared { input: u32, register: String },
     /// The draw binds an `s#` the shader does not declare.
     SamplerNotDeclared { sampler: u32 },
     /// The same `v#` or `s#` given twice.
@@ -549,7 +550,7 @@ impl fmt::Display for EmuError {
         match self {
             EmuError::NotRun { profile } => write!(
                 f,
-                "a {profile} shader: ps30 runs ps_3_0 shaders only ({profile} is read, checked, counted, assembled and listed: check, asm, disasm)"
+                "a {profile} shader: ps30 runs ps_2_0, ps_2_x and ps_3_0 pixel shaders ({profile} is read, checked, counted, assembled and listed: check, asm, disasm)"
             ),
             EmuError::Malformed { index, reason } => {
                 write!(f, "instruction {}: cannot emulate: {}", index, reason)
@@ -594,15 +595,15 @@ impl fmt::Display for EmuError {
                 "pixel ({}, {}): call at instruction {} nests deeper than 4 calls",
                 x, y, index
             ),
-            EmuError::MissingInput { input } => write!(
+            EmuError::MissingInput { input, register } => write!(
                 f,
-                "the shader declares v{} but the draw supplies no value for it",
-                input
+                "the shader declares {} but the draw supplies no value for it (input slot {})",
+                register, input
             ),
-            EmuError::InputNotDeclared { input } => write!(
+            EmuError::InputNotDeclared { input, register } => write!(
                 f,
-                "the draw supplies v{} but the shader does not declare it",
-                input
+                "the draw supplies {} but the shader does not declare it (input slot {})",
+                register, input
             ),
             EmuError::SamplerNotDeclared { sampler } => write!(
                 f,
@@ -813,8 +814,12 @@ fn int_constants(compiled: &Compiled, c: &Constants) -> Result<[[i32; 4]; 16], E
 fn bind_inputs(compiled: &Compiled, draw: &Draw) -> Result<[Option<LinearInput>; 10], EmuError> {
     let mut inputs = [None; 10];
     for &(v, value) in &draw.inputs {
+        let register = || crate::core::pixel_inputs::name(compiled.profile, v);
         if v >= 10 || compiled.inputs & (1 << v) == 0 {
-            return Err(EmuError::InputNotDeclared { input: v });
+            return Err(EmuError::InputNotDeclared {
+                input: v,
+                register: register(),
+            });
         }
         if inputs[v as usize].replace(value).is_some() {
             return Err(EmuError::DuplicateBinding {
@@ -825,7 +830,10 @@ fn bind_inputs(compiled: &Compiled, draw: &Draw) -> Result<[Option<LinearInput>;
     }
     for v in 0..10u32 {
         if compiled.inputs & (1 << v) != 0 && inputs[v as usize].is_none() {
-            return Err(EmuError::MissingInput { input: v });
+            return Err(EmuError::MissingInput {
+                input: v,
+                register: crate::core::pixel_inputs::name(compiled.profile, v),
+            });
         }
     }
     Ok(inputs)

@@ -1609,13 +1609,19 @@ fn draw_errors_are_typed() {
     let mut d = Draw::new(2, 2);
     assert_eq!(
         run(&c, &d).unwrap_err(),
-        EmuError::MissingInput { input: 0 }
+        EmuError::MissingInput {
+            input: 0,
+            register: "v0".into()
+        }
     );
     good(&mut d);
     d.inputs.push((1, LinearInput::default()));
     assert_eq!(
         run(&c, &d).unwrap_err(),
-        EmuError::InputNotDeclared { input: 1 }
+        EmuError::InputNotDeclared {
+            input: 1,
+            register: "v1".into()
+        }
     );
     good(&mut d);
     d.samplers.push((

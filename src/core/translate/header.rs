@@ -34,7 +34,8 @@ pub fn lines(source: &str, t: &Translation, target: Target) -> Vec<String> {
     let i: &Interface = &t.interface;
     let mut l = vec![
         format!(
-            "{source}: Direct3D 9 ps_3_0, translated by ps30 to {}",
+            "{source}: Direct3D 9 {}, translated by ps30 to {}",
+            i.profile,
             target.describe()
         ),
         format!(
@@ -100,12 +101,15 @@ pub fn lines(source: &str, t: &Translation, target: Target) -> Vec<String> {
     }
     for v in &i.inputs {
         l.push(format!(
-            "@location({}): v{} (dcl_{}{}{})",
+            "@location({}): {} (dcl_{}{}{}{})",
             v.location,
-            v.register,
+            v.spelled
+                .clone()
+                .unwrap_or_else(|| format!("v{}", v.register)),
             v.usage,
             v.usage_index,
-            if v.centroid { ", centroid" } else { "" }
+            if v.centroid { ", centroid" } else { "" },
+            if v.clamped { ", clamped to [0, 1]" } else { "" }
         ));
     }
     if i.position {

@@ -64,8 +64,17 @@ pub fn sampler_binding(sampler: u32) -> u32 {
 /// A declared input register.
 #[derive(Clone, Debug, PartialEq, serde::Serialize)]
 pub struct Input {
-    /// The register number (`v3` → 3).
+    /// The input slot (`core/pixel_inputs.rs`): the register number in
+    /// ps_3_0 (`v3` → 3); in ps_2_0 and ps_2_x `v0`, `v1` are 0, 1 and `t#`
+    /// is 2 + #.
     pub register: u32,
+    /// The register's own name where it is not `v` + slot (`t0`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub spelled: Option<String>,
+    /// Clamped to [0, 1] where it enters the shader: ps_2_0 and ps_2_x
+    /// colours (`core/pixel_inputs.rs`).
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub clamped: bool,
     /// The `dcl` usage (`texcoord`, `color`).
     pub usage: String,
     /// The usage index (`dcl_texcoord3` → 3).
@@ -97,6 +106,9 @@ fn sampler_type_name<S: serde::Serializer>(ty: &SamplerType, s: S) -> Result<S::
 /// Everything an application binds, derived from the shader.
 #[derive(Clone, Debug, PartialEq, serde::Serialize)]
 pub struct Interface {
+    /// The shader's profile (its version line).
+    #[serde(skip)]
+    pub profile: crate::core::profile::Profile,
     /// The `v#` the shader declares, in register order.
     pub inputs: Vec<Input>,
     /// Whether the shader reads `vPos`.
@@ -135,14 +147,32 @@ impl Interface {
         let mut inputs = Vec::new();
         let (mut position, mut face) = (false, false);
         for d in &p.inputs {
+            let slot = crate::core::pixel_inputs::slot(p.profile, d.reg.file, d.reg.index);
             match d.reg.file {
-                RegFile::Input => inputs.push(Input {
-                    register: d.reg.index,
-                    usage: d.usage.clone(),
-                    usage_index: d.usage_index,
-                    location: d.reg.index,
-                    centroid: d.centroid,
-                }),
+                RegFile::Input | RegFile::Texture if slot.is_some() => {
+                    let slot = slot.unwrap_or_default();
+                    let spelled = crate::core::pixel_inputs::name(p.profile, slot);
+                    // ps_2_x declares no usage: a t# is a texcoord, a v# a colour.
+                    let usage = match (d.usage.is_empty(), d.reg.file) {
+                        (false, _) => d.usage.clone(),
+                        (true, RegFile::Texture) => "texcoord".into(),
+                        (true, _) => "color".into(),
+                    };
+                    let usage_index = if d.usage.is_empty() {
+                        d.reg.index
+                    } else {
+                        d.usage_index
+                    };
+                    inputs.push(Input {
+                        register: slot,
+                        spelled: (spelled != format!("v{slot}")).then_some(spelled),
+                        clamped: crate::core::pixel_inputs::clamped(p.profile) & (1 << slot) != 0,
+                        usage,
+                        usage_index,
+                        location: slot,
+                        centroid: d.centroid,
+                    })
+                }
                 RegFile::Position => position = true,
                 RegFile::Face => face = true,
                 _ => {}
@@ -205,6 +235,7 @@ impl Interface {
             defs(v)
         };
         Interface {
+            profile: p.profile,
             inputs,
             position,
             face,

@@ -160,9 +160,11 @@ impl Lower<'_> {
                 fb.load(p)
             }
             RegFile::Input if relative => return Ok(self.relative_input(reg.index)),
-            RegFile::Input => {
+            RegFile::Input | RegFile::Texture => {
+                let slot = crate::core::pixel_inputs::slot(cx.profile, reg.file, reg.index)
+                    .ok_or_else(|| TranslateError::Unsupported(format!("reading {reg}")))?;
                 let v = cx.var(fb, cx.inputs);
-                let p = fb.index(v, reg.index);
+                let p = fb.index(v, slot);
                 fb.load(p)
             }
             RegFile::Const => match cx.float_defs.get(&reg.index) {

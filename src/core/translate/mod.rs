@@ -195,7 +195,7 @@ pub fn translate_specialised(
     let profile = shader.program().profile;
     if !profile.runs() {
         return Err(TranslateError::Unsupported(format!(
-            "a {profile} shader: ps30 translates ps_3_0 shaders only"
+            "a {profile} shader: ps30 translates ps_2_0, ps_2_x and ps_3_0 pixel shaders"
         )));
     }
     let mut module = naga::Module::default();

@@ -66,6 +66,8 @@ pub(super) struct Ctx {
     pub float_def_bits: BTreeMap<u32, [u32; 4]>,
     pub int_defs: BTreeMap<u32, Handle<Constant>>,
     pub bool_defs: BTreeMap<u32, bool>,
+    /// The shader's profile, which numbers its input slots.
+    pub profile: crate::core::profile::Profile,
 }
 
 fn ty(m: &mut Module, name: Option<&str>, inner: TypeInner) -> Handle<Type> {
@@ -354,6 +356,7 @@ impl Ctx {
             float_def_bits,
             int_defs,
             bool_defs,
+            profile: shader.program().profile,
         })
     }
 
@@ -491,6 +494,7 @@ pub(super) fn entry_point(
         Entry::Application => {
             for (k, i) in iface.inputs.iter().enumerate() {
                 let value = fb.add(Expression::FunctionArgument(2 + k as u32));
+                let value = entering(&mut fb, i, value);
                 let v = cx.var(&mut fb, cx.inputs);
                 let slot = fb.index(v, i.register);
                 fb.store(slot, value);
@@ -519,6 +523,17 @@ pub(super) fn entry_point(
         task_payload: None,
         incoming_ray_payload: None,
     });
+}
+
+/// An input's value as the shader sees it: ps_2_x colours clamped to
+/// [0, 1] (`core/pixel_inputs.rs`; the emulator clamps them where it fills
+/// its input rows).
+fn entering(fb: &mut Fb, input: &interface::Input, value: Expr) -> Expr {
+    if input.clamped {
+        fb.math(naga::MathFunction::Saturate, &[value])
+    } else {
+        value
+    }
 }
 
 /// `Entry::Draw`'s inputs: `v#` = layer k of the input texture at this
@@ -562,6 +577,7 @@ fn draw_inputs(m: &mut Module, cx: &Ctx, iface: &Interface, fb: &mut Fb, centre:
             sample: None,
             level: Some(level),
         });
+        let value = entering(fb, i, value);
         let v = cx.var(fb, cx.inputs);
         let slot = fb.index(v, i.register);
         fb.store(slot, value);

@@ -19,6 +19,50 @@ pub fn check(p: &Program, info: &Info, diags: &mut Diagnostics, file: &SourceFil
     // Microsoft's assembler names the end of the file for the counts.
     let end = Span::new(file.text.len(), file.text.len());
     let limits = p.profile.limits();
+    if p.profile.stage() == Stage::Pixel {
+        pixel_slots(p, info, limits, end, diags);
+        if p.profile == Profile::Ps2_0 {
+            colour_outputs(p, end, diags);
+        }
+        if let Some(levels) = limits.dependent_reads {
+            dependent_reads(p, levels, diags, file);
+        }
+        return;
+    }
+    let count = info.total(SlotTable::Fxc);
+    if let Some(max) = limits.slots.filter(|&m| count.total() > m) {
+        diags.push(Diagnostic::coded(
+            codes::VERTEX_SLOTS,
+            end,
+            format!(
+                "{} instruction slots used; {} allows {max}",
+                count.total(),
+                p.profile
+            ),
+        ));
+    }
+}
+
+/// A ps_2_x program's slots under capabilities other than the assembler's
+/// (`core/valid/caps.rs`).
+pub(super) fn slots_under(
+    p: &Program,
+    info: &Info,
+    caps: crate::core::profile::Ps2xCaps,
+    end: Span,
+    diags: &mut Diagnostics,
+) {
+    pixel_slots(p, info, caps.limits(), end, diags);
+}
+
+/// A pixel shader's arithmetic, texture and total slots against `limits`.
+fn pixel_slots(
+    p: &Program,
+    info: &Info,
+    limits: crate::core::profile::Limits,
+    end: Span,
+    diags: &mut Diagnostics,
+) {
     let mut count = info.total(SlotTable::Fxc);
     // The listing counts texkill as arithmetic; the ps_2_x limits count it
     // as a tex* instruction (measured: 33 texkill are X5607 in ps_2_0).
@@ -30,20 +74,6 @@ pub fn check(p: &Program, info: &Info, diags: &mut Diagnostics, file: &SourceFil
     count.texture += kills;
     count.arithmetic = count.arithmetic.saturating_sub(kills);
     let over = |n: u32, max: Option<u32>| max.filter(|&m| n > m);
-    if p.profile.stage() == Stage::Vertex {
-        if let Some(max) = over(count.total(), limits.slots) {
-            diags.push(Diagnostic::coded(
-                codes::VERTEX_SLOTS,
-                end,
-                format!(
-                    "{} instruction slots used; {} allows {max}",
-                    count.total(),
-                    p.profile
-                ),
-            ));
-        }
-        return;
-    }
     let checks = [
         (
             codes::ARITHMETIC_SLOTS,
@@ -71,12 +101,6 @@ pub fn check(p: &Program, info: &Info, diags: &mut Diagnostics, file: &SourceFil
             ));
         }
     }
-    if p.profile == Profile::Ps2_0 {
-        colour_outputs(p, end, diags);
-    }
-    if let Some(levels) = limits.dependent_reads {
-        dependent_reads(p, levels, diags, file);
-    }
 }
 
 /// ps_2_0's dependent reads, as Microsoft's assembler defines them (X5775's
@@ -84,7 +108,12 @@ pub fn check(p: &Program, info: &Info, diags: &mut Diagnostics, file: &SourceFil
 /// reads a temporary (not a `t#`) or writes a temporary written before; to
 /// order n when it reads or writes a temporary whose contents depend on an
 /// instruction dependent to order n - 1. At most `levels - 1` orders.
-fn dependent_reads(p: &Program, levels: u32, diags: &mut Diagnostics, file: &SourceFile) {
+pub(super) fn dependent_reads(
+    p: &Program,
+    levels: u32,
+    diags: &mut Diagnostics,
+    file: &SourceFile,
+) {
     // For each temporary: whether it was written, and the highest order of
     // texture instruction its contents depend on.
     let mut written = [false; 32];

@@ -12,6 +12,7 @@
 //! ps_3_0 rules of Microsoft's documentation; where sources disagree, the
 //! choice is written next to the check.
 
+pub mod caps;
 pub mod gradient;
 pub mod init;
 pub mod limits;
@@ -39,6 +40,12 @@ pub fn validate(
     check_declarations(&program, &mut diags, file);
     let info = check_program(&program, &mut diags, file);
     limits::check(&program, &info, &mut diags, file);
+    if matches!(program.profile, Profile::Ps2_0 | Profile::Ps2X) {
+        caps::swizzles(&program, program.profile == Profile::Ps2X, &mut diags);
+    }
+    if program.profile == Profile::Ps2X {
+        caps::ps2x_codes(&mut diags);
+    }
     init::check(&program, &info, &mut diags, file);
     if diags.has_errors() {
         return Err(diags);
@@ -312,7 +319,12 @@ fn check_definitions(p: &Program, diags: &mut Diagnostics) {
 fn check_declarations(p: &Program, diags: &mut Diagnostics, file: &SourceFile) {
     check_definitions(p, diags);
     let mut usages: BTreeMap<(&str, u32), Span> = BTreeMap::new();
-    for d in p.inputs.iter().filter(|d| d.reg.file == RegFile::Input) {
+    // ps_2_0 and ps_2_x declare v# without a usage: no two of them clash.
+    for d in p
+        .inputs
+        .iter()
+        .filter(|d| d.reg.file == RegFile::Input && !d.usage.is_empty())
+    {
         let key = (d.usage.as_str(), d.usage_index);
         match usages.get(&key) {
             Some(&first) if first != d.origin.span => diags.push(

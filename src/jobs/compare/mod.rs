@@ -222,7 +222,13 @@ pub fn compare_draw(
             let mut values: Vec<(String, [f32; 4])> = draw
                 .inputs
                 .iter()
-                .map(|(v, input)| (format!("v{v}"), input.at(x as f32, y as f32)))
+                .map(|(v, input)| {
+                    let profile = loaded.shader.program().profile;
+                    (
+                        crate::core::pixel_inputs::name(profile, *v),
+                        input.at(x as f32, y as f32),
+                    )
+                })
                 .collect();
             values.push(("vPos".into(), [x as f32, y as f32, 0.0, 0.0]));
             PixelInputs { x, y, values }

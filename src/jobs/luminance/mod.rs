@@ -1093,6 +1093,9 @@ pub struct PassSetup {
     /// Textures bound to samplers besides the image (`run --inputs`): a
     /// texture on s0 takes the image's place there.
     pub textures: Vec<(u32, crate::core::image::TextureFile, SamplerState)>,
+    /// Input values by slot (`run --input`, `core/pixel_inputs.rs`): one
+    /// given for the coordinates' input takes the image's place there.
+    pub inputs: Vec<(u32, LinearInput)>,
 }
 
 /// What one pass produced.
@@ -1122,17 +1125,17 @@ pub fn run_pass(
     let mut draw = Draw::new(tw, th);
     draw.limits = setup.limits;
     draw.float_rules = setup.float_rules;
-    let declared = |file: crate::core::isa::RegFile, index: u32| {
-        loaded
-            .shader
-            .program()
-            .inputs
-            .iter()
-            .any(|d| d.reg.file == file && d.reg.index == index)
-    };
-    if declared(crate::core::isa::RegFile::Input, 0) {
-        draw.inputs
-            .push((0, block_start(iw, ih, iw.div_ceil(tw), ih.div_ceil(th))));
+    let program = loaded.shader.program();
+    // v0 in ps_3_0, t0 in ps_2_x (core/pixel_inputs.rs).
+    if let Some(coordinates) = crate::core::pixel_inputs::declared_coordinates(program) {
+        draw.inputs.push((
+            coordinates,
+            block_start(iw, ih, iw.div_ceil(tw), ih.div_ceil(th)),
+        ));
+    }
+    for (at, value) in &setup.inputs {
+        draw.inputs.retain(|(s, _)| s != at);
+        draw.inputs.push((*at, *value));
     }
     draw.constants = setup.constants.clone();
     let given_s0 = setup.textures.iter().any(|(s, _, _)| *s == 0);

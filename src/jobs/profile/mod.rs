@@ -448,15 +448,10 @@ fn image_draw<'i>(
     chain: Option<&'i MipChain>,
 ) -> Draw<'i> {
     let mut draw = Draw::new(tw, th);
-    if loaded
-        .shader
-        .program()
-        .inputs
-        .iter()
-        .any(|d| d.reg.file == crate::core::isa::RegFile::Input && d.reg.index == 0)
-    {
+    // v0 in ps_3_0, t0 in ps_2_x.
+    if let Some(at) = crate::core::pixel_inputs::declared_coordinates(loaded.shader.program()) {
         draw.inputs.push((
-            0,
+            at,
             crate::jobs::luminance::block_start(
                 image.width,
                 image.height,

@@ -32,7 +32,9 @@
 //!     (default 0, 0, 0, 0);
 //!   * `{"draw": TARGET, "shader": …, …}` — `shader` is a bundled name or a
 //!     file; `defines` (REPEAT_BLOCK counts), `inputs` (`"v0": "texcoord"` for
-//!     pixel centres in [0, 1], or `{"base": […], "ddx": […], "ddy": […]}`),
+//!     pixel centres in [0, 1], or `{"base": […], "ddx": […], "ddy": […]}`;
+//!     an input is named by register — `v#`, and `t#` in ps_2_0/ps_2_x —
+//!     or by semantic, `texcoordN`/`colorN`: `core/pixel_inputs.rs`),
 //!     `constants` (`"c5": [x, y, z, w]`, a component a number or a string
 //!     for any bit pattern: `"inf"`, `"-inf"`, `"nan"`, `"0x7f800000"`), `ints`, `bools`, `samplers`
 //!     (`"s0": {"texture": NAME, "filter": "point"|"linear", "mip":
@@ -52,6 +54,7 @@
 //!   * `{"mips": TARGET, "odd": "fold"|"bilinear"}` — reduce the target
 //!     through its mip chain (default `fold`).
 
+use super::input_values::Given;
 use super::{DrawList, DrawStep, ShaderSpec, Source, Step, TargetSpec, TextureData};
 use crate::core::emu::{Constants, Filter, LinearInput, MipFilter, SamplerState};
 use crate::core::image::{ImageLimits, OddSides, TargetFormat};
@@ -258,14 +261,19 @@ pub fn read(path: &Path, limits: &FileLimits) -> Result<Loaded, FileError> {
 
 /// Constants, textures and sampler states for one draw, read from a file in
 /// the draw-list step format (`ps30 run --inputs FILE`): `constants`,
-/// `ints`, `bools` and `samplers`, where a sampler's `texture` is an image
-/// or DDS file relative to the inputs file.
+/// `ints`, `bools`, `samplers`, where a sampler's `texture` is an image
+/// or DDS file relative to the inputs file, and `inputs` (named as in a
+/// draw list: `t0`, `texcoord0`, `v1`, `color1`).
 #[derive(Clone, Debug)]
 pub struct Inputs {
     /// The application's `c#`, `i#`, `b#`.
     pub constants: Constants,
     /// `(s#, texture, state)`; the texture's name is its file as written.
     pub samplers: Vec<(u32, TextureData, SamplerState)>,
+    /// Input values by the names the file gives them (`t0`, `texcoord0`,
+    /// `v1`), resolved against the shader when it runs
+    /// ([`super::input_values::resolve_all`]).
+    pub inputs: Vec<(String, Given)>,
     /// The files it read besides itself.
     pub sources: Vec<PathBuf>,
     /// The registers it sets: `c#`, `i#`, `b#`.
@@ -299,7 +307,6 @@ pub fn read_inputs(path: &Path, limits: &FileLimits) -> Result<Inputs, FileError
         ("clear", step.clear.is_some()),
         ("draw", step.draw.is_some()),
         ("shader", step.shader.is_some()),
-        ("inputs", step.inputs.is_some()),
         ("blend", step.blend.is_some()),
         ("mips", step.mips.is_some()),
         ("defines", step.defines.is_some()),
@@ -307,7 +314,8 @@ pub fn read_inputs(path: &Path, limits: &FileLimits) -> Result<Inputs, FileError
     if let Some((name, _)) = draw_only.iter().find(|(_, set)| *set) {
         return Err(fail(
             name,
-            "an inputs file gives only `constants`, `ints`, `bools` and `samplers`".into(),
+            "an inputs file gives only `constants`, `ints`, `bools`, `samplers` and `inputs`"
+                .into(),
         ));
     }
     let mut r = Resolver::new(path, limits);
@@ -331,6 +339,11 @@ pub fn read_inputs(path: &Path, limits: &FileLimits) -> Result<Inputs, FileError
         data.name = fs.texture.clone();
         samplers.push((reg, data, r.sampler_state(&field, fs)?));
     }
+    let mut values = Vec::new();
+    for (name, input) in step.inputs.iter().flatten() {
+        let field = format!("inputs.{name}");
+        values.push((name.clone(), r.input_value(&field, input)?));
+    }
     fn regs<V>(m: &Option<BTreeMap<String, V>>, letter: char) -> Vec<u32> {
         m.iter()
             .flatten()
@@ -340,6 +353,7 @@ pub fn read_inputs(path: &Path, limits: &FileLimits) -> Result<Inputs, FileError
     Ok(Inputs {
         constants,
         samplers,
+        inputs: values,
         sources: r.sources,
         given: [
             regs(&step.constants, 'c'),
@@ -689,6 +703,32 @@ impl Resolver {
         self.draw(&at, target, s).map(Step::Draw)
     }
 
+    /// One input's value as the file gives it (`"texcoord"` or `{"base": …}`).
+    fn input_value(&self, field: &str, input: &FileInput) -> Result<Given, FileError> {
+        Ok(match input {
+            FileInput::Named(n) if n == "texcoord" => Given::Texcoord,
+            FileInput::Named(n) => {
+                return Err(self.err(
+                    field,
+                    format!("`{n}` is not \"texcoord\" or {{\"base\": …}}"),
+                ))
+            }
+            FileInput::Linear { base, ddx, ddy } => {
+                let four = |v: &[f64], part: &str| -> Result<[f32; 4], FileError> {
+                    if v.is_empty() {
+                        return Ok([0.0; 4]);
+                    }
+                    vec4(v).map_err(|m| self.err(&format!("{field}.{part}"), m))
+                };
+                Given::Linear(LinearInput {
+                    base: four(base, "base")?,
+                    ddx: four(ddx, "ddx")?,
+                    ddy: four(ddy, "ddy")?,
+                })
+            }
+        })
+    }
+
     fn draw(&mut self, at: &str, target: usize, s: &FileStep) -> Result<DrawStep, FileError> {
         let spec = s
             .shader
@@ -704,28 +744,12 @@ impl Resolver {
         let mut inputs = Vec::new();
         for (name, input) in s.inputs.iter().flatten() {
             let field = format!("{at}.inputs.{name}");
-            let v = register(name, 'v', 10).map_err(|m| self.err(&field, m))?;
-            let value = match input {
-                FileInput::Named(n) if n == "texcoord" => super::texcoord(w, h),
-                FileInput::Named(n) => {
-                    return Err(self.err(
-                        &field,
-                        format!("`{n}` is not \"texcoord\" or {{\"base\": …}}"),
-                    ))
-                }
-                FileInput::Linear { base, ddx, ddy } => {
-                    let four = |v: &[f64], part: &str| -> Result<[f32; 4], FileError> {
-                        if v.is_empty() {
-                            return Ok([0.0; 4]);
-                        }
-                        vec4(v).map_err(|m| self.err(&format!("{field}.{part}"), m))
-                    };
-                    LinearInput {
-                        base: four(base, "base")?,
-                        ddx: four(ddx, "ddx")?,
-                        ddy: four(ddy, "ddy")?,
-                    }
-                }
+            let program = self.list.shaders[shader].loaded.shader.program();
+            let v = crate::core::pixel_inputs::resolve(program, name)
+                .map_err(|m| self.err(&field, m))?;
+            let value = match self.input_value(&field, input)? {
+                Given::Texcoord => super::texcoord(w, h),
+                Given::Linear(l) => l,
             };
             inputs.push((v, value));
         }

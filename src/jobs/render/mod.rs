@@ -20,6 +20,7 @@
 
 pub mod file;
 mod floats;
+pub mod input_values;
 pub mod pixel_state;
 pub mod textures;
 

@@ -84,6 +84,14 @@ pub(crate) type TargetOf<'a> = &'a dyn Fn(&str) -> Option<(usize, u32, u32)>;
 /// specular alpha, stays interpolated).
 pub fn flat_components(program: &Program, reg: u32) -> [bool; 4] {
     let mut flat = [false; 4];
+    // ps_2_x's v0 and v1 are the colours, declared without a usage.
+    let legacy = crate::core::pixel_inputs::clamped(program.profile) & (1 << reg) != 0;
+    if legacy {
+        for (c, f) in flat.iter_mut().enumerate() {
+            *f = !(reg == 1 && c == 3);
+        }
+        return flat;
+    }
     for d in program
         .inputs
         .iter()
