@@ -18,15 +18,21 @@
 //! * `texldd`'s direction gradients become face gradients by the quotient
 //!   rule, ∂s = (∂sc − (sc/|ma|)·∂ma′)/(2·|ma|), ∂ma′ the gradient of the
 //!   major component with the face's sign;
-//! * `texld`, `texldp` and `texldb` take the device's derivatives of (s, t),
-//!   which are the emulator's within a quad whose pixels share a face (a
-//!   quad across a face edge is projected on its top-left pixel's face by
-//!   the emulator, and differentiated per pixel by the device);
+//! * `texld`, `texldp` and `texldb` take the quad's coarse differences of
+//!   (s, t) as explicit gradients (scaled by 2^bias), which are the
+//!   emulator's within a quad whose pixels share a face (a quad across a
+//!   face edge is projected on its top-left pixel's face by the emulator,
+//!   and differenced per pixel here). Explicit, because llvmpipe takes
+//!   the last level of a 2D array (and of a volume) where the implicit
+//!   derivatives are zero, where Direct3D 9 and Vulkan take level 0;
 //! * `texldl` takes src0.w, as on any texture.
 
 use super::builder::Expr;
 use super::lower::Lower;
-use naga::{BinaryOperator as B, Expression, MathFunction as M};
+use naga::{
+    BinaryOperator as B, DerivativeAxis, DerivativeControl, Expression, MathFunction as M,
+    SampleLevel, VectorSize,
+};
 
 /// Which face a direction selects, as expressions.
 #[derive(Clone, Copy)]
@@ -122,6 +128,30 @@ impl Lower<'_> {
             ty: self.cx.t.vec2,
             components: vec![ds, dt],
         })
+    }
+
+    /// The implicit level of `texld`, `texldp` and `texldb` on `face`: the
+    /// quad's coarse differences of (s, t) as explicit gradients, scaled by
+    /// 2^`bias` where there is one (λ = log2 of their length, plus the bias).
+    pub(super) fn face_gradients(&mut self, face: &Face, bias: Option<Expr>) -> SampleLevel {
+        let [x, y] = [DerivativeAxis::X, DerivativeAxis::Y].map(|axis| {
+            self.fb.add(Expression::Derivative {
+                axis,
+                ctrl: DerivativeControl::Coarse,
+                expr: face.st,
+            })
+        });
+        match bias {
+            Some(b) => {
+                let scale = self.fb.math(M::Exp2, &[b]);
+                let scale = self.fb.splat(scale, VectorSize::Bi);
+                SampleLevel::Gradient {
+                    x: self.fb.binary(B::Multiply, x, scale),
+                    y: self.fb.binary(B::Multiply, y, scale),
+                }
+            }
+            None => SampleLevel::Gradient { x, y },
+        }
     }
 
     /// (sc, tc, ma) of the vec3 `v` on the face of `axis` (Direct3D's table: +X (−z,

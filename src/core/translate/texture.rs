@@ -124,8 +124,10 @@ impl Lower<'_> {
     }
 
     /// The sample's level of detail: the instruction's, with the sampler's
-    /// bias from its record where `spec.lod` asks for it; `texldd`'s
-    /// gradients taken to `face` for a cube bound as its faces.
+    /// bias from its record where `spec.lod` asks for it. On a cube bound as
+    /// its faces, `texldd`'s gradients are taken to `face`, and the
+    /// implicit level comes from the quad's coarse differences of (s, t)
+    /// given as gradients (`cube.rs` says why).
     fn level(
         &mut self,
         ins: &Instruction,
@@ -144,6 +146,16 @@ impl Lower<'_> {
             }
             None => v,
         };
+        if let (Some(f), Opcode::TexLd | Opcode::TexLdP | Opcode::TexLdB) = (face, ins.op) {
+            // The quad's coarse differences of (s, t), scaled by 2^bias.
+            let bias = if ins.op == Opcode::TexLdB {
+                let w = self.comp(a, 3);
+                Some(biased(self, w, 0))
+            } else {
+                lod.map(|lod| self.comp(lod, 0))
+            };
+            return Ok(self.face_gradients(f, bias));
+        }
         Ok(match ins.op {
             Opcode::TexLdL => {
                 let w = self.comp(a, 3);
