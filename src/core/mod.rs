@@ -36,5 +36,6 @@ pub mod merge;
 pub mod numbers;
 pub mod output;
 pub mod profile;
+pub mod ps1;
 pub mod translate;
 pub mod valid;
