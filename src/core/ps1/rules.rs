@@ -101,7 +101,13 @@ impl<'p> Walk<'p> {
     }
 
     fn err(&mut self, code: Code, span: Span, message: impl Into<String>) {
-        self.diags.push(Diagnostic::coded(code, span, message));
+        let mut d = Diagnostic::coded(code, span, message);
+        if span == self.end {
+            // Microsoft names the line after the last for what the whole
+            // shader breaks; so does ps30, saying why.
+            d = d.with_label("the end of the shader");
+        }
+        self.diags.push(d);
     }
 
     /// The code of a rule ps_1_1–ps_1_3 and ps_1_4 word apart.
