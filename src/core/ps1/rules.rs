@@ -678,18 +678,10 @@ impl<'p> Walk<'p> {
     }
 }
 
-/// The instructions that continue a texm sequence.
+/// The instructions that continue a texm sequence: the texm* family but
+/// the first pad of a 3x2 multiply.
 fn texm_continues(op: Opcode) -> bool {
-    matches!(
-        op,
-        Opcode::TexM3x2Tex
-            | Opcode::TexM3x2Depth
-            | Opcode::TexM3x3Pad
-            | Opcode::TexM3x3Tex
-            | Opcode::TexM3x3Spec
-            | Opcode::TexM3x3VSpec
-            | Opcode::TexM3x3
-    )
+    op.info().mnemonic.starts_with("texm") && op != Opcode::TexM3x2Pad
 }
 
 /// The components a swizzle reads for the written components `mask`.

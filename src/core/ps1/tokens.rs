@@ -60,7 +60,7 @@ pub fn is_ps1(bytes: &[u8]) -> bool {
 
 /// Reads a ps_1_x token stream (at most `max_items` instructions).
 pub fn decode(bytes: &[u8], max_items: u64) -> Result<Program, ReadError> {
-    if bytes.len() % 4 != 0 {
+    if !bytes.len().is_multiple_of(4) {
         let at = bytes.len() / 4 * 4;
         return Err(ReadError::at(
             at,
