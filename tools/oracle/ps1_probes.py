@@ -69,6 +69,9 @@ def texture_ops_old(p):
         ("bad-tex-after-arith", old(p, [], ["tex t0"])),
         ("bad-texbem-order", old(p, ["tex t1", "texbem t0, t1"])),
         ("bad-texcoord-source", old(p, ["texcoord t0, t1"])),
+        ("mod-tex-x2", old(p, ["tex_x2 t0"], ["add r0, r0, t0"])),
+        ("mod-tex-sat", old(p, ["tex_sat t0"], ["add r0, r0, t0"])),
+        ("mod-texbem-d4", old(p, ["tex t0", "texbem_d4 t1, t0"], ["add r0, r0, t1"])),
     ]
 
 
@@ -117,6 +120,13 @@ def texture_ops_new(p):
         ("bad-dz-twice", new(p, [], [], ["texld r2, t0_dz"], [])),
         ("bad-alpha-after-phase", new(p, [], ["mov r2, c0"], [], ["add r0, r0, r2.a"])),
         ("bad-texcrd-read-w", new(p, ["texcrd r2.rgb, t0"], ["add r0, r0, r2.a"])),
+        ("mod-texld-x2", new(p, ["texld_x2 r2, t0"], ["add r0, r0, r2"])),
+        ("mod-texcrd-sat", new(p, ["texcrd_sat r2.rgb, t0"], ["add r0.rgb, r0, r2"])),
+        ("mod-texdepth-x2", new(p, [], ["mov r5, c0"], ["texdepth_x2 r5"])),
+        ("mod-bem-d2", new(p, ["texld r2, t0", "texcrd r3.rgb, t1"], ["bem_d2 r3.rg, c0, r2"],
+                           ["texld r4, r3"], ["add r0, r0, r4"])),
+        ("mod-bem-sat", new(p, ["texld r2, t0", "texcrd r3.rgb, t1"], ["bem_sat r3.rg, c0, r2"],
+                            ["texld r4, r3"], ["add r0, r0, r4"])),
     ]
 
 

@@ -503,3 +503,12 @@ pub const PS14_TEXTURE_SLOTS: Code = "X5180";
 pub const PS14_ARITHMETIC_SLOTS: Code = "X5181";
 /// ps_1_4: "… arithmetic instruction slots used before phase marker."
 pub const PS14_ARITHMETIC_SLOTS_PHASE1: Code = "X5486";
+/// "Instruction modifiers are not allowed for tex* instructions." (`_sat`
+/// on a texture instruction before ps_1_4).
+pub const PS1_TEX_MODIFIER: Code = "X5042";
+/// "Dest shift not allowed for tex* instructions." (before ps_1_4).
+pub const PS1_TEX_SHIFT: Code = "X5043";
+/// ps_1_4's wording of [`PS1_TEX_MODIFIER`].
+pub const PS14_TEX_MODIFIER: Code = "X5128";
+/// ps_1_4's wording of [`PS1_TEX_SHIFT`].
+pub const PS14_TEX_SHIFT: Code = "X5129";

@@ -138,7 +138,11 @@ impl<'p> Walk<'p> {
         } else {
             self.place_old(x, texture);
         }
-        self.destination(x);
+        if !self.destination(x) {
+            // Microsoft's validator takes nothing from an instruction whose
+            // modifiers it refused: what it writes stays unwritten.
+            return;
+        }
         for (k, s) in x.src.iter().enumerate() {
             self.source(x, k, s);
         }
@@ -293,9 +297,21 @@ impl<'p> Walk<'p> {
         }
     }
 
-    fn destination(&mut self, x: &Instr) {
-        let Some(d) = x.dst else { return };
+    /// The destination's register, mask and modifiers; false when a
+    /// texture instruction carries a modifier.
+    fn destination(&mut self, x: &Instr) -> bool {
+        let Some(d) = x.dst else { return true };
         let texture = x.op.class() == Class::Texture;
+        if texture && (d.sat || d.shift != 0) {
+            let code = match (self.new, d.sat) {
+                (false, true) => codes::PS1_TEX_MODIFIER,
+                (false, false) => codes::PS1_TEX_SHIFT,
+                (true, true) => codes::PS14_TEX_MODIFIER,
+                (true, false) => codes::PS14_TEX_SHIFT,
+            };
+            self.err(code, x.base_span, "no shift or _sat on a tex* instruction");
+            return false;
+        }
         let allowed = match (self.new, texture) {
             (true, _) => {
                 d.reg.file == RegFile::Temp
@@ -311,7 +327,7 @@ impl<'p> Walk<'p> {
                 d.span,
                 format!("{} cannot be a destination here", d.reg),
             );
-            return;
+            return true;
         }
         let m = d.mask.0;
         if self.new {
@@ -332,6 +348,7 @@ impl<'p> Walk<'p> {
                 "ps_1_1–ps_1_3 shift by _x2, _x4 or _d2 only",
             );
         }
+        true
     }
 
     fn destination_new(&mut self, x: &Instr, m: u8, span: Span) {

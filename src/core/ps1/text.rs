@@ -142,7 +142,8 @@ fn statement(code: &str, at: usize, profile: Profile) -> R<Instr> {
 }
 
 /// The shift and `_sat` of the mnemonic's suffixes, in Microsoft's order
-/// (shift first); `None` for anything else.
+/// (shift first); `None` for anything else, or for either on `def` or
+/// `phase`.
 fn instruction_modifiers(suffixes: Vec<&str>, op: Opcode) -> Option<(i8, bool)> {
     let mut shift = 0i8;
     let mut sat = false;
@@ -160,12 +161,15 @@ fn instruction_modifiers(suffixes: Vec<&str>, op: Opcode) -> Option<(i8, bool)> 
             }
             _ => return None,
         };
-        if shift != 0 || sat || op.info().class != crate::core::isa::Class::Arithmetic {
+        if shift != 0 || sat {
             return None;
         }
         shift = k;
     }
-    (!sat || op.info().allows_sat).then_some((shift, sat))
+    // The grammar takes them on any instruction with a destination; the
+    // rules refuse them on texture instructions (X5042, X5043, X5128, X5129).
+    let declaration = op.info().class == crate::core::isa::Class::Declaration;
+    (!(declaration && (sat || shift != 0))).then_some((shift, sat))
 }
 
 /// The operands after the mnemonic, each trimmed with its place.

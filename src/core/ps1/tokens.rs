@@ -242,3 +242,86 @@ impl Reader<'_> {
         })
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn bytes(t: &[u32]) -> Vec<u8> {
+        t.iter().flat_map(|w| w.to_le_bytes()).collect()
+    }
+
+    /// Microsoft's tokens for a ps_1_1 shader with a texture instruction, a
+    /// shift, `_sat`, `1-` and `_bx2` sources and a co-issued pair (the
+    /// oracle's `pair-mods` probe, trimmed of its defs).
+    const STREAM: [u32; 14] = [
+        0xffff0101, 0x00000042, 0xb00f0000, 0x00000005, 0x81070000, 0x84e40000, 0x86e40001,
+        0x40000002, 0x80180000, 0x82e40001, 0x81e40000, 0x0000fffd, 0x0000ffff, 0,
+    ];
+
+    #[test]
+    fn tokens_read_and_write_back_the_same() {
+        let t = &STREAM[..11];
+        let mut whole = t.to_vec();
+        whole.push(END);
+        let p = decode(&bytes(&whole), 100).unwrap();
+        assert_eq!(p.instrs.len(), 3);
+        assert!(p.instrs[2].coissue);
+        assert_eq!(p.instrs[1].dst.unwrap().shift, 1);
+        assert_eq!(p.instrs[1].src[1].modifier, Modifier::Comp);
+        assert_eq!(encode(&p), whole);
+    }
+
+    #[test]
+    fn malformed_streams_are_refused_at_their_byte() {
+        let cases: [(&[u32], &str, usize); 8] = [
+            (&[0xffff0101, 0x00000001], "ends where a destination", 8),
+            (&[0xffff0101, 0x00001234, END], "no ps_1_1 instruction", 4),
+            (
+                &[
+                    0xffff0101, 0x00000059, 0x80030000, 0xa0e40000, 0x80e40000, END,
+                ],
+                "no ps_1_1 instruction",
+                4,
+            ),
+            (
+                &[0xffff0101, 0x00000001, 0x800f0002, 0xa0e40000, END],
+                "names no ps_1_1 register",
+                8,
+            ),
+            (
+                &[0xffff0101, 0x00000001, 0x800f0000, 0x8be40001, END],
+                "a modifier ps_1_x does not have",
+                12,
+            ),
+            (
+                &[0xffff0104, 0x0100fffd, END],
+                "bits ps_1_x does not use",
+                4,
+            ),
+            (&[0xffff0101, 0x7ffffffe, END], "runs past the end", 4),
+            (&[0xffff0101, END, END], "after the end token", 8),
+        ];
+        for (t, message, byte) in cases {
+            let e = decode(&bytes(t), 100).unwrap_err();
+            assert!(e.message.contains(message), "{e}: expected {message}");
+            assert_eq!(e.byte, byte, "{e}");
+        }
+    }
+
+    #[test]
+    fn every_cut_and_changed_byte_is_read_or_refused_without_panic() {
+        let whole = bytes(&STREAM[..13]);
+        for n in 0..whole.len() {
+            let _ = decode(&whole[..n], 100);
+            for v in [0u8, 0x40, 0x80, 0xff] {
+                let mut b = whole.clone();
+                b[n] = v;
+                if let Ok(p) = decode(&b, 100) {
+                    // What reads writes back to the same tokens.
+                    assert_eq!(bytes(&encode(&p)), b, "byte {n} = {v:#x}");
+                }
+            }
+        }
+    }
+}
