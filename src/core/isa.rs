@@ -1,4 +1,7 @@
 //! The ps_3_0 instruction set as one table: the single source of truth.
+//! The rows of the other profiles sit in the same table (the vertex-shader
+//! instructions, ps_1_x's texture-addressing family), each with the profiles
+//! that have it ([`Opcode::profiles`]).
 //!
 //! The parser looks mnemonics up here, the validator reads each row's operand
 //! shape and rules, the cost model reads the slot columns, the emulator
@@ -633,9 +636,13 @@ impl Opcode {
     /// `vs_2_a` follow their `ps_2_x`/`vs_2_x` capabilities, `ps_2_b` has
     /// ps_2_0's instructions and `texldd` (what Microsoft's HLSL compiler
     /// writes for those targets: `tests/oracle/corpus/hlsl/gen_profiles/`),
-    /// and ps_1_x, whose instruction set is another, has none of these rows
-    /// yet. The compiler writes no flow control at all for ps_2_a and ps_2_b
-    /// (X3528), although their capabilities allow it in assembly.
+    /// and ps_1_x has the arithmetic it shares with ps_2_0 (`cmp` and `dp4`
+    /// from ps_1_2), `texkill`, ps_1_4's `texld` (a coordinate and no
+    /// sampler: [`Opcode::info_in`]) and rows of its own, from `tex` to `cnd`
+    /// ([`Opcode::is_ps1_only`]; measured by the probes of
+    /// `asm/profiles/ps_1_*`, held by `tests/oracle/ps1x.rs`). The compiler
+    /// writes no flow control at all for ps_2_a and ps_2_b (X3528), although
+    /// their capabilities allow it in assembly.
     ///
     /// Across every profile that has an instruction, Microsoft's count of
     /// its slots is the same (measured: the `fxc_slots` column holds for
