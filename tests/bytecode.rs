@@ -576,10 +576,12 @@ fn corpus() -> Vec<(&'static str, Input, &'static str, usize)> {
             "the comment claims 32767 tokens",
             4,
         ),
+        // ps_1_x has its own reader (core::ps1): the ps_2_0-ps_3_0 reader
+        // names the version, ps30's commands the opcode ps_1_4 lacks.
         (
-            "a ps_1_4 stream",
-            Tokens(vec![0xffff_0104, E]),
-            "a ps_1_4 shader",
+            "a ps_1_4 stream with an opcode ps_1_4 lacks",
+            Tokens(vec![0xffff_0104, 0x0000_1234, E]),
+            "ps_1_4",
             0,
         ),
         (

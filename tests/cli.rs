@@ -1097,9 +1097,10 @@ fn asm_refuses_invalid_programs_and_other_versions_and_writes_nothing() {
             "unknown instruction `foo`",
         ),
         (
-            "ps_1_4\nmov r0, c0\n",
-            "this is a ps_1_4 shader; ps30 reads ps_2_0, ps_2_x, ps_3_0",
+            "vs_1_1\nmov oPos, c0\n",
+            "this is a vs_1_1 shader; ps30 reads ps_2_0, ps_2_x, ps_3_0",
         ),
+        ("ps_1_4\nmov r0, c8\n", "invalid register 'c8'"),
     ] {
         let path = dir.path().join("bad.psh");
         std::fs::write(&path, src).unwrap();

@@ -171,6 +171,8 @@ fn minimal(op: Opcode) -> (&'static str, Vec<&'static str>) {
         Mova | Lit | Dst | Expp | Logp | Slt | Sge | Sgn => {
             unreachable!("vertex-shader instructions are not ps_3_0's")
         }
+        op if op.is_ps1_only() => unreachable!("ps_1_x instructions are not ps_3_0's"),
+        _ => unreachable!("every ps_3_0 row has its instance above"),
     }
 }
 

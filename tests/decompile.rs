@@ -134,6 +134,9 @@ fn sources() -> Vec<Source> {
             .replace('\\', "/");
         let file = load::source_file(&rel, std::fs::read(&p).unwrap(), &options).unwrap();
         match load::load(file, &options) {
+            // decompile writes HLSL for ps_3_0; ps_1_x has no HLSL target left
+            // (Microsoft's compiler refuses it, X3539).
+            Ok(loaded) if loaded.shader.program().profile.is_ps1() => {}
             Ok(loaded) => out.push(Source {
                 name: format!("asm/{rel}"),
                 loaded,

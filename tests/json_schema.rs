@@ -210,6 +210,26 @@ fn every_command_matches_the_schema() {
     assert_eq!(v["crc32"].as_str().map(str::len), Some(8));
     let out = t("two.fxo");
     let a = check("asm", &["asm", &two, "-o", &out, "--json"], repo, &[0]);
+    // ps_1_x (core::ps1): the same shapes from check, asm and disasm.
+    let ps1 = t("phases.pso");
+    let c = check(
+        "check",
+        &["check", "asm/ps1x/phases.psh", "--json"],
+        repo,
+        &[0],
+    );
+    assert_eq!(c["slots"], 6);
+    check(
+        "asm",
+        &["asm", "asm/ps1x/phases.psh", "-o", &ps1, "--json"],
+        repo,
+        &[0],
+    );
+    // disasm's own JSON has no schema entry (its corpus lines do): its fields.
+    let o = bin::ps30(&["disasm", &ps1, "--json"], repo);
+    let l: Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(l["version"], "ps_1_4");
+    assert_eq!(l["slots"]["texture"], 4);
     let d = check("decompile", &["decompile", &two, "--json"], repo, &[0]);
     assert!(d["hlsl"].as_str().unwrap().contains("texCUBEbias("), "{d}");
     assert_eq!(a["crc32"], v["crc32"]);

@@ -16,13 +16,15 @@
 //!
 //! Each aspect is a module: acceptance and error codes (`accept`), bytecode
 //! and round trips (`bytes`), listing text (`listing`), slot counts (`slots`),
-//! and the shader profiles besides ps_3_0 (`profiles`).
+//! and the shader profiles besides ps_3_0 (`profiles`, `parity`; ps_1_x's
+//! instruction set and listings read back: `ps1x`).
 
 mod accept;
 mod bytes;
 mod listing;
 mod parity;
 mod profiles;
+mod ps1x;
 mod slots;
 
 use std::path::{Path, PathBuf};

@@ -12,13 +12,14 @@ use ps30::core::bytecode::{self, listing::listing, microsoft, read::read, write:
 use ps30::core::bytecode::{ItemKind, Module};
 use ps30::core::diag::SourceError;
 use ps30::core::load;
+use ps30::core::ps1;
 use ps30::jobs::corpus::{is_corpus, Entry, FileResult};
-use ps30::present::disasm::disasm_json;
+use ps30::present::disasm::{disasm_json, ps1_json};
 use std::path::PathBuf;
 
 #[derive(clap::Args)]
 pub struct Args {
-    /// Shader: ps_3_0 bytecode, or assembly (assembled first); `-` reads standard input.
+    /// Shader: bytecode (ps_1_1 to ps_3_0, vs_2_0 to vs_3_0), or assembly (assembled first); `-` reads standard input.
     /// Several, or a directory (walked recursively for .psh, .asm, .dis, .fxo, .cso and
     /// .pso files): corpus mode, one line per file and a summary.
     #[arg(required = true, num_args = 1..)]
@@ -64,10 +65,10 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         Err(Failed::Source(e)) => return Err(source_error(ui, &e)),
         Err(Failed::Bad(m)) => return Err(BadInput(m)),
     };
-    if args.json {
-        print_json(&disasm_json(&name, &module, len))?;
-    } else {
-        print(&text(&args, &module))?;
+    match (&module, args.json) {
+        (Listed::Stream(m), true) => print_json(&disasm_json(&name, m, len))?,
+        (Listed::Ps1(p), true) => print_json(&ps1_json(&name, p, len))?,
+        (_, false) => print(&text(&args, &module))?,
     }
     Ok(Outcome::Ok)
 }
@@ -80,12 +81,20 @@ enum Failed {
     Bad(String),
 }
 
-/// The listing the flags ask for.
-fn text(args: &Args, module: &Module) -> String {
-    if args.annotated {
-        listing(module).text
-    } else {
-        microsoft::listing(module)
+/// A shader as read: a ps_2_0–ps_3_0 token stream, or a ps_1_x program
+/// (another instruction set, `core::ps1`).
+enum Listed {
+    Stream(Module),
+    Ps1(ps1::Program),
+}
+
+/// The listing the flags ask for (a ps_1_x program has one: Microsoft's,
+/// which reads back).
+fn text(args: &Args, module: &Listed) -> String {
+    match module {
+        Listed::Stream(m) if args.annotated => listing(m).text,
+        Listed::Stream(m) => microsoft::listing(m),
+        Listed::Ps1(p) => ps1::listing::listing(p),
     }
 }
 
@@ -96,11 +105,14 @@ fn disasm_one(args: &Args, entry: &Entry, write: bool) -> Done {
         Ok((_, module, len)) => {
             let mut facts = serde_json::Map::new();
             facts.insert("bytes".into(), len.into());
-            let instructions = module
-                .items
-                .iter()
-                .filter(|i| matches!(i.kind, ItemKind::Instr(_)))
-                .count();
+            let instructions = match &module {
+                Listed::Stream(m) => m
+                    .items
+                    .iter()
+                    .filter(|i| matches!(i.kind, ItemKind::Instr(_)))
+                    .count(),
+                Listed::Ps1(p) => p.instrs.len(),
+            };
             facts.insert("instructions".into(), instructions.into());
             (
                 FileResult::accepted(&entry.spec, facts),
@@ -114,7 +126,7 @@ fn disasm_one(args: &Args, entry: &Entry, write: bool) -> Done {
 
 /// A shader argument as a bytecode module: its name, the module, and the
 /// bytecode's length.
-fn module_of(args: &Args, spec: &str) -> Result<(String, Module, usize), Failed> {
+fn module_of(args: &Args, spec: &str) -> Result<(String, Listed, usize), Failed> {
     let options = args.source.options();
     let bad = |BadInput(m)| Failed::Bad(m);
     let (name, mut bytes) = match ps30::jobs::bundled::listing(spec) {
@@ -132,7 +144,7 @@ fn module_of(args: &Args, spec: &str) -> Result<(String, Module, usize), Failed>
             load::assemble(file, &options).map_err(|e| Failed::Source(Box::new(e)))?;
         bytes = to_bytes(&tokens);
     }
-    let module = read(&bytes, options.max_expanded).map_err(|error| {
+    let bad = |error| {
         Failed::Bad(
             load::NotASource::Bytecode {
                 name: name.clone(),
@@ -140,6 +152,11 @@ fn module_of(args: &Args, spec: &str) -> Result<(String, Module, usize), Failed>
             }
             .to_string(),
         )
-    })?;
+    };
+    let module = if ps1::tokens::is_ps1(&bytes) {
+        Listed::Ps1(ps1::tokens::decode(&bytes, options.max_expanded).map_err(bad)?)
+    } else {
+        Listed::Stream(read(&bytes, options.max_expanded).map_err(bad)?)
+    };
     Ok((name, module, bytes.len()))
 }

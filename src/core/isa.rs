@@ -1,4 +1,7 @@
 //! The ps_3_0 instruction set as one table: the single source of truth.
+//! The rows of the other profiles sit in the same table (the vertex-shader
+//! instructions, ps_1_x's texture-addressing family), each with the profiles
+//! that have it ([`Opcode::profiles`]).
 //!
 //! The parser looks mnemonics up here, the validator reads each row's operand
 //! shape and rules, the cost model reads the slot columns, the emulator
@@ -179,6 +182,51 @@ pub enum Opcode {
     Sge,
     /// `sgn`: the sign, -1, 0 or 1 (vertex shaders).
     Sgn,
+    // The ps_1_x instructions (their rows say which of ps_1_1–ps_1_4).
+    /// `tex`: sample stage # at its texture coordinates into `t#` (ps_1_1–ps_1_3).
+    Tex,
+    /// `texcoord`: a texture coordinate as a colour into `t#` (ps_1_1–ps_1_3).
+    TexCoord,
+    /// `texcrd`: a texture coordinate into `r#` (ps_1_4).
+    TexCrd,
+    /// `texbem`: bump-environment-mapped sample (ps_1_1–ps_1_3).
+    TexBem,
+    /// `texbeml`: `texbem` with luminance (ps_1_1–ps_1_3).
+    TexBemL,
+    /// `texreg2ar`: sample at the source's alpha and red (ps_1_1–ps_1_3).
+    TexReg2Ar,
+    /// `texreg2gb`: sample at the source's green and blue (ps_1_1–ps_1_3).
+    TexReg2Gb,
+    /// `texreg2rgb`: sample at the source's red, green, blue (ps_1_2, ps_1_3).
+    TexReg2Rgb,
+    /// `texm3x2pad`: first row of a 3×2 matrix multiply (ps_1_1–ps_1_3).
+    TexM3x2Pad,
+    /// `texm3x2tex`: last row of a 3×2 multiply, then sample (ps_1_1–ps_1_3).
+    TexM3x2Tex,
+    /// `texm3x2depth`: last row of a 3×2 multiply as depth (ps_1_3).
+    TexM3x2Depth,
+    /// `texm3x3pad`: a row of a 3×3 matrix multiply (ps_1_1–ps_1_3).
+    TexM3x3Pad,
+    /// `texm3x3tex`: last row of a 3×3 multiply, then sample (ps_1_1–ps_1_3).
+    TexM3x3Tex,
+    /// `texm3x3spec`: 3×3 multiply, reflect by a constant eye ray, sample.
+    TexM3x3Spec,
+    /// `texm3x3vspec`: 3×3 multiply, reflect by the rows' eye ray, sample.
+    TexM3x3VSpec,
+    /// `texm3x3`: last row of a 3×3 multiply, no sample (ps_1_2, ps_1_3).
+    TexM3x3,
+    /// `texdp3`: a dot product of a coordinate and a register (ps_1_2, ps_1_3).
+    TexDp3,
+    /// `texdp3tex`: sample at a dot product (ps_1_2, ps_1_3).
+    TexDp3Tex,
+    /// `texdepth`: r5's r / g as the pixel's depth (ps_1_4).
+    TexDepth,
+    /// `bem`: bump-environment transform of a coordinate (ps_1_4).
+    Bem,
+    /// `phase`: ends ps_1_4's first phase.
+    Phase,
+    /// `cnd`: a > 0.5 ? b : c.
+    Cnd,
 }
 
 /// What an instruction is, for accounting and for validation rules.
@@ -375,6 +423,11 @@ impl OpInfo {
                 let texture = match self.op {
                     Opcode::TexLd | Opcode::TexLdP | Opcode::TexLdB | Opcode::TexLdD => 1,
                     Opcode::TexLdL => 2,
+                    // ps_1_x: every texture-addressing instruction is one
+                    // texture slot but texdepth (arithmetic, as texkill).
+                    op if op.is_ps1_only() && self.class == Class::Texture => {
+                        u32::from(op != Opcode::TexDepth)
+                    }
                     _ => 0,
                 };
                 (self.fxc_slots, texture)
@@ -427,6 +480,7 @@ const DSS: &[Operand] = &[O::Dst, O::Src, O::Src];
 const DSSS: &[Operand] = &[O::Dst, O::Src, O::Src, O::Src];
 const DSCALAR: &[Operand] = &[O::Dst, O::ScalarSrc];
 const TEX: &[Operand] = &[O::Dst, O::Src, O::Sampler];
+const DST: &[Operand] = &[O::Dst];
 const NONE: &[Operand] = &[];
 
 macro_rules! row {
@@ -520,6 +574,33 @@ pub const TABLE: &[OpInfo] = &[
     row!(Slt, "slt", 0x0C/0, 1, None, fxc = 1, Arithmetic, DSS, sat = true, cmp = false, pred = true, "1 where a < b, else 0"),
     row!(Sge, "sge", 0x0D/0, 1, None, fxc = 1, Arithmetic, DSS, sat = true, cmp = false, pred = true, "1 where a >= b, else 0"),
     row!(Sgn, "sgn", 0x22/0, 3, None, fxc = 1, Arithmetic, DSSS, sat = true, cmp = false, pred = true, "sign: -1, 0 or 1"),
+    // The ps_1_x instructions. Microsoft's count is measured (one probe per
+    // instruction under tests/oracle/corpus/asm/profiles/ps_1_*); the
+    // documented column repeats it, the ps_3_0 page having no such rows.
+    // `tex` and ps_1_4's `texld` share 0x42, `texcoord` and `texcrd` 0x40:
+    // the profile tells them apart (`Opcode::from_code_in`).
+    row!(Tex, "tex", 0x42/0, 1, None, fxc = 1, Texture, DST, sat = false, cmp = false, pred = false, "sample stage # into t#"),
+    row!(TexCoord, "texcoord", 0x40/0, 1, None, fxc = 1, Texture, DST, sat = false, cmp = false, pred = false, "texture coordinate # as a colour into t#"),
+    row!(TexCrd, "texcrd", 0x40/0, 1, None, fxc = 1, Texture, DS, sat = false, cmp = false, pred = false, "texture coordinate into r#"),
+    row!(TexBem, "texbem", 0x43/0, 1, None, fxc = 1, Texture, DS, sat = false, cmp = false, pred = false, "sample at a bump-mapped coordinate"),
+    row!(TexBemL, "texbeml", 0x44/0, 1, None, fxc = 1, Texture, DS, sat = false, cmp = false, pred = false, "texbem with luminance"),
+    row!(TexReg2Ar, "texreg2ar", 0x45/0, 1, None, fxc = 1, Texture, DS, sat = false, cmp = false, pred = false, "sample at (a, r) of a register"),
+    row!(TexReg2Gb, "texreg2gb", 0x46/0, 1, None, fxc = 1, Texture, DS, sat = false, cmp = false, pred = false, "sample at (g, b) of a register"),
+    row!(TexReg2Rgb, "texreg2rgb", 0x52/0, 1, None, fxc = 1, Texture, DS, sat = false, cmp = false, pred = false, "sample at (r, g, b) of a register"),
+    row!(TexM3x2Pad, "texm3x2pad", 0x47/0, 1, None, fxc = 1, Texture, DS, sat = false, cmp = false, pred = false, "first row of a 3x2 matrix multiply"),
+    row!(TexM3x2Tex, "texm3x2tex", 0x48/0, 1, None, fxc = 1, Texture, DS, sat = false, cmp = false, pred = false, "last row of a 3x2 multiply, then sample"),
+    row!(TexM3x2Depth, "texm3x2depth", 0x54/0, 1, None, fxc = 1, Texture, DS, sat = false, cmp = false, pred = false, "3x2 multiply as the pixel's depth"),
+    row!(TexM3x3Pad, "texm3x3pad", 0x49/0, 1, None, fxc = 1, Texture, DS, sat = false, cmp = false, pred = false, "a row of a 3x3 matrix multiply"),
+    row!(TexM3x3Tex, "texm3x3tex", 0x4A/0, 1, None, fxc = 1, Texture, DS, sat = false, cmp = false, pred = false, "last row of a 3x3 multiply, then sample"),
+    row!(TexM3x3Spec, "texm3x3spec", 0x4C/0, 1, None, fxc = 1, Texture, DSS, sat = false, cmp = false, pred = false, "3x3 multiply, reflect by a constant eye ray, sample"),
+    row!(TexM3x3VSpec, "texm3x3vspec", 0x4D/0, 1, None, fxc = 1, Texture, DS, sat = false, cmp = false, pred = false, "3x3 multiply, reflect by the rows' eye ray, sample"),
+    row!(TexM3x3, "texm3x3", 0x56/0, 1, None, fxc = 1, Texture, DS, sat = false, cmp = false, pred = false, "last row of a 3x3 multiply, no sample"),
+    row!(TexDp3, "texdp3", 0x55/0, 1, None, fxc = 1, Texture, DS, sat = false, cmp = false, pred = false, "dot product of a coordinate and a register"),
+    row!(TexDp3Tex, "texdp3tex", 0x53/0, 1, None, fxc = 1, Texture, DS, sat = false, cmp = false, pred = false, "sample at a dot product"),
+    row!(TexDepth, "texdepth", 0x57/0, 1, None, fxc = 1, Texture, DST, sat = false, cmp = false, pred = false, "r5.r / r5.g as the pixel's depth"),
+    row!(Bem, "bem", 0x59/0, 1, None, fxc = 1, Arithmetic, DSS, sat = false, cmp = false, pred = false, "bump-environment transform"),
+    row!(Phase, "phase", 0xFFFD/0, 0, None, fxc = 0, Declaration, NONE, sat = false, cmp = false, pred = false, "end of the first phase"),
+    row!(Cnd, "cnd", 0x50/0, 1, None, fxc = 1, Arithmetic, DSSS, sat = true, cmp = false, pred = false, "a > 0.5 ? b : c"),
 ];
 
 impl Opcode {
@@ -539,6 +620,9 @@ impl Opcode {
             Opcode::SinCos if !three => {
                 row.operands = &[O::Dst, O::ScalarSrc, O::Src, O::Src];
             }
+            // ps_1_4's texld: a coordinate, no sampler (the stage is the
+            // destination's number).
+            Opcode::TexLd if profile == Profile::Ps1_4 => row.operands = DS,
             _ => {}
         }
         row
@@ -552,9 +636,13 @@ impl Opcode {
     /// `vs_2_a` follow their `ps_2_x`/`vs_2_x` capabilities, `ps_2_b` has
     /// ps_2_0's instructions and `texldd` (what Microsoft's HLSL compiler
     /// writes for those targets: `tests/oracle/corpus/hlsl/gen_profiles/`),
-    /// and ps_1_x, whose instruction set is another, has none of these rows
-    /// yet. The compiler writes no flow control at all for ps_2_a and ps_2_b
-    /// (X3528), although their capabilities allow it in assembly.
+    /// and ps_1_x has the arithmetic it shares with ps_2_0 (`cmp` and `dp4`
+    /// from ps_1_2), `texkill`, ps_1_4's `texld` (a coordinate and no
+    /// sampler: [`Opcode::info_in`]) and rows of its own, from `tex` to `cnd`
+    /// ([`Opcode::is_ps1_only`]; measured by the probes of
+    /// `asm/profiles/ps_1_*`, held by `tests/oracle/ps1x.rs`). The compiler
+    /// writes no flow control at all for ps_2_a and ps_2_b (X3528), although
+    /// their capabilities allow it in assembly.
     ///
     /// Across every profile that has an instruction, Microsoft's count of
     /// its slots is the same (measured: the `fxc_slots` column holds for
@@ -575,9 +663,42 @@ impl Opcode {
         const DYNAMIC: S = PS2X.or(S::of(&[Vs2A, Vs2X, Vs3_0]));
         // The vertex-shader instructions.
         const VS: S = S::of(&[Vs1_1, Vs2_0, Vs2A, Vs2X, Vs3_0]);
+        // ps_1_x, by the version that brought each instruction in.
+        const PS1: S = S::of(&[Ps1_1, Ps1_2, Ps1_3, Ps1_4]);
+        const PS11: S = S::of(&[Ps1_1, Ps1_2, Ps1_3]);
+        const PS12: S = S::of(&[Ps1_2, Ps1_3]);
         match self {
-            Opcode::TexKill | Opcode::TexLd | Opcode::TexLdP | Opcode::TexLdB => PS2,
-            Opcode::Cmp | Opcode::Dp2Add => PS2,
+            Opcode::Mov
+            | Opcode::Add
+            | Opcode::Sub
+            | Opcode::Mad
+            | Opcode::Mul
+            | Opcode::Dp3
+            | Opcode::Lrp
+            | Opcode::Nop
+            | Opcode::Def => SHARED.or(PS1),
+            Opcode::Dp4 => SHARED.or(S::of(&[Ps1_2, Ps1_3, Ps1_4])),
+            Opcode::Cmp => PS2.or(S::of(&[Ps1_2, Ps1_3, Ps1_4])),
+            Opcode::TexKill => PS2.or(PS1),
+            Opcode::TexLd => PS2.or(S::of(&[Ps1_4])),
+            Opcode::Cnd => PS1,
+            Opcode::Tex
+            | Opcode::TexCoord
+            | Opcode::TexBem
+            | Opcode::TexBemL
+            | Opcode::TexReg2Ar
+            | Opcode::TexReg2Gb
+            | Opcode::TexM3x2Pad
+            | Opcode::TexM3x2Tex
+            | Opcode::TexM3x3Pad
+            | Opcode::TexM3x3Tex
+            | Opcode::TexM3x3Spec
+            | Opcode::TexM3x3VSpec => PS11,
+            Opcode::TexReg2Rgb | Opcode::TexM3x3 | Opcode::TexDp3 | Opcode::TexDp3Tex => PS12,
+            Opcode::TexM3x2Depth => S::of(&[Ps1_3]),
+            Opcode::TexCrd | Opcode::TexDepth | Opcode::Bem | Opcode::Phase => S::of(&[Ps1_4]),
+            Opcode::TexLdP | Opcode::TexLdB => PS2,
+            Opcode::Dp2Add => PS2,
             Opcode::Dsx | Opcode::Dsy => PS2X,
             // Microsoft's compiler writes texldd for ps_2_b (tex2Dgrad), not dsx.
             Opcode::TexLdD => PS2X.or(S::of(&[Ps2B])),
@@ -598,6 +719,14 @@ impl Opcode {
             op if op.is_vertex_only() => VS,
             _ => SHARED,
         }
+    }
+
+    /// The instructions only ps_1_x has (`tex`, `texcoord`, `texcrd`, the
+    /// `texm3x*` family, `bem`, `phase`, `cnd`, …): no mnemonic or opcode
+    /// lookup outside ps_1_x finds them ([`Opcode::from_mnemonic_in`],
+    /// [`Opcode::from_code_in`] do in ps_1_x).
+    pub fn is_ps1_only(self) -> bool {
+        self >= Opcode::Tex
     }
 
     /// The instructions only vertex shaders have (`mova`, `lit`, `dst`,
@@ -641,7 +770,45 @@ impl Opcode {
         }
         TABLE
             .iter()
-            .find(|r| r.mnemonic == base && !matches!(r.op, Opcode::Ifc | Opcode::BreakC))
+            .find(|r| {
+                r.mnemonic == base
+                    && !matches!(r.op, Opcode::Ifc | Opcode::BreakC)
+                    && !r.op.is_ps1_only()
+            })
+            .map(|r| r.op)
+    }
+
+    /// Looks up a base mnemonic as `profile` spells it: in ps_1_x the rows
+    /// of ps_1_x (`texld` is ps_1_4's, `tex` ps_1_1–ps_1_3's), elsewhere
+    /// [`Opcode::from_mnemonic`]. Whether the profile has the instruction
+    /// is [`Opcode::profiles`].
+    pub fn from_mnemonic_in(base: &str, has_comparison: bool, profile: Profile) -> Option<Opcode> {
+        if !profile.is_ps1() {
+            return Opcode::from_mnemonic(base, has_comparison);
+        }
+        TABLE
+            .iter()
+            .find(|r| r.mnemonic == base && (r.op.is_ps1_only() || r.op.profiles().has(profile)))
+            .map(|r| r.op)
+            .or_else(|| Opcode::from_mnemonic(base, has_comparison))
+    }
+
+    /// The row of an instruction token's code in `profile`: in ps_1_x the
+    /// profile's own row of a shared code (0x42 is `tex` in ps_1_1–ps_1_3
+    /// and `texld` in ps_1_4, 0x40 `texcoord` or `texcrd`), elsewhere
+    /// [`Opcode::from_code`].
+    pub fn from_code_in(code: u16, control: u8, profile: Profile) -> Option<Opcode> {
+        if !profile.is_ps1() {
+            return Opcode::from_code(code, control);
+        }
+        TABLE
+            .iter()
+            .find(|r| r.code == code && r.op.profiles().has(profile))
+            .or_else(|| {
+                TABLE
+                    .iter()
+                    .find(|r| r.code == code && r.control == control)
+            })
             .map(|r| r.op)
     }
 
@@ -654,7 +821,10 @@ impl Opcode {
     /// `texldp` and `texldb` share 0x42 and differ in the control; the
     /// comparison in the control of `ifc`, `breakc` and `setp` selects no row.
     pub fn from_code(code: u16, control: u8) -> Option<Opcode> {
-        let mut rows = TABLE.iter().filter(|r| r.code == code).peekable();
+        let mut rows = TABLE
+            .iter()
+            .filter(|r| r.code == code && !r.op.is_ps1_only())
+            .peekable();
         let first = rows.peek().map(|r| r.op)?;
         match rows.find(|r| r.control == control) {
             Some(r) => Some(r.op),

@@ -15,6 +15,7 @@ use crate::core::bytecode::{self, ctab, ReadError};
 use crate::core::diag::{codes, Diagnostic, Diagnostics, SourceError, SourceFile};
 use crate::core::front::{ast, parse, repeat};
 use crate::core::ir::Shader;
+use crate::core::profile::Profile;
 use std::collections::{BTreeMap, BTreeSet};
 use std::fmt;
 
@@ -141,6 +142,19 @@ pub fn source_file(
     mut bytes: Vec<u8>,
     options: &Options,
 ) -> Result<SourceFile, NotASource> {
+    if crate::core::ps1::tokens::is_ps1(&bytes) {
+        // ps_1_x: its own token stream, read as Microsoft's listing of it.
+        let program =
+            crate::core::ps1::tokens::decode(&bytes, options.max_expanded).map_err(|error| {
+                NotASource::Bytecode {
+                    name: name.to_string(),
+                    error,
+                }
+            })?;
+        let text = crate::core::ps1::listing::listing(&program);
+        let crc = bytecode::crc32(&bytes);
+        return Ok(SourceFile::compiled(name, text, Vec::new()).with_bytecode_crc32(crc));
+    }
     if bytecode::is_bytecode(&bytes) {
         let module = bytecode::read::read(&bytes, options.max_expanded).map_err(|error| {
             NotASource::Bytecode {
@@ -169,6 +183,16 @@ pub fn source_file(
     Ok(SourceFile::new(name, text))
 }
 
+/// Microsoft's listing (`D3DDisassemble`'s text) of a compiled shader of
+/// any profile ps30 reads, ps_1_x included (at most `max_items` items).
+pub fn microsoft_listing(bytes: &[u8], max_items: u64) -> Result<String, ReadError> {
+    if crate::core::ps1::tokens::is_ps1(bytes) {
+        let program = crate::core::ps1::tokens::decode(bytes, max_items)?;
+        return Ok(crate::core::ps1::listing::listing(&program));
+    }
+    bytecode::read::read(bytes, max_items).map(|m| bytecode::microsoft::listing(&m))
+}
+
 /// What the stages produced on the way to a shader.
 struct Stages {
     stmts: Vec<ast::Stmt>,
@@ -178,7 +202,41 @@ struct Stages {
 
 /// Parses, expands and validates a source file.
 pub fn load(file: SourceFile, options: &Options) -> Result<Loaded, SourceError> {
+    if let Some(profile) = ps1_version(&file.text) {
+        return ps1_stages(file, profile).map(|(loaded, _)| loaded);
+    }
     stages(file, options).map(|s| s.loaded)
+}
+
+/// The ps_1_x version a source's first statement names, if it names one:
+/// such a source goes through [`crate::core::ps1`] (another instruction
+/// set and syntax).
+pub fn ps1_version(text: &str) -> Option<Profile> {
+    text.lines()
+        .map(|l| parse::strip_comment(l).trim())
+        .find(|l| !l.is_empty())
+        .and_then(Profile::from_version_line)
+        .filter(|p| p.is_ps1())
+}
+
+/// A ps_1_x source through [`crate::core::ps1`]: the shader and its program.
+fn ps1_stages(
+    file: SourceFile,
+    profile: Profile,
+) -> Result<(Loaded, crate::core::ps1::Program), SourceError> {
+    match crate::core::ps1::load(&file, profile) {
+        Ok(l) => Ok((
+            Loaded {
+                file,
+                shader: l.shader,
+                warnings: Diagnostics::default(),
+                constants: None,
+                defines_used: BTreeSet::new(),
+            },
+            l.program,
+        )),
+        Err(diagnostics) => Err(SourceError { file, diagnostics }),
+    }
 }
 
 /// Loads a shader from a string (name used in messages).
@@ -190,6 +248,10 @@ pub fn load_str(name: &str, text: &str, options: &Options) -> Result<Loaded, Sou
 /// validate; its comment blocks, the constant table among them, are
 /// written where they stand.
 pub fn assemble(file: SourceFile, options: &Options) -> Result<(Loaded, Vec<u32>), SourceError> {
+    if let Some(profile) = ps1_version(&file.text) {
+        let (loaded, program) = ps1_stages(file, profile)?;
+        return Ok((loaded, crate::core::ps1::tokens::encode(&program)));
+    }
     let s = stages(file, options)?;
     if s.loaded.warnings.warnings().any(|d| d.code.is_some()) {
         // What Microsoft's assembler refuses is not written.

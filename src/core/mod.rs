@@ -37,5 +37,6 @@ pub mod numbers;
 pub mod output;
 pub mod pixel_inputs;
 pub mod profile;
+pub mod ps1;
 pub mod translate;
 pub mod valid;

@@ -422,18 +422,28 @@ impl Profile {
     }
 
     /// Whether ps30 reads, checks, counts, assembles and lists shaders of
-    /// this profile: ps_2_0, ps_2_x, ps_3_0, vs_2_0, vs_2_x and vs_3_0. The
-    /// others (ps_1_x, vs_1_1, and the HLSL-only target names) are
-    /// recognised and refused with their name.
+    /// this profile: ps_1_1–ps_1_4 (through `core::ps1`), ps_2_0, ps_2_x,
+    /// ps_3_0, vs_2_0, vs_2_x and vs_3_0. The others (vs_1_1 and the
+    /// HLSL-only target names) are recognised and refused with their name.
     pub fn checked(self) -> bool {
+        self.is_ps1()
+            || matches!(
+                self,
+                Profile::Ps2_0
+                    | Profile::Ps2X
+                    | Profile::Ps3_0
+                    | Profile::Vs2_0
+                    | Profile::Vs2X
+                    | Profile::Vs3_0
+            )
+    }
+
+    /// Whether the profile is one of ps_1_1–ps_1_4, whose instruction set,
+    /// syntax and token stream are their own (`core::ps1`).
+    pub fn is_ps1(self) -> bool {
         matches!(
             self,
-            Profile::Ps2_0
-                | Profile::Ps2X
-                | Profile::Ps3_0
-                | Profile::Vs2_0
-                | Profile::Vs2X
-                | Profile::Vs3_0
+            Profile::Ps1_1 | Profile::Ps1_2 | Profile::Ps1_3 | Profile::Ps1_4
         )
     }
 
@@ -560,17 +570,21 @@ impl Profile {
             executed: None,
         };
         match self {
+            // No flow control: every slot runs once.
             Profile::Ps1_1 | Profile::Ps1_2 | Profile::Ps1_3 => Limits {
                 slots: Some(12),
                 arithmetic: Some(8),
                 texture: Some(4),
+                executed: Some(12),
                 ..none
             },
+            // Per phase 6 texture and 8 arithmetic slots (core::ps1::rules).
             Profile::Ps1_4 => Limits {
                 slots: Some(28),
                 arithmetic: Some(16),
                 texture: Some(12),
                 dependent_reads: Some(2),
+                executed: Some(28),
                 ..none
             },
             // No flow control: every slot runs once, so 96 executed.

@@ -53,3 +53,44 @@ pub fn disasm_json(name: &str, module: &Module, bytes: usize) -> Value {
         "annotated": listing::listing(module).text,
     })
 }
+
+/// The JSON form of a ps_1_x disassembly, in the shape of [`disasm_json`]:
+/// no comment blocks or constant table (ps_1_x streams are read without
+/// them), both listings Microsoft's text (it reads back), and the slots
+/// ps_1_x counts under both tables.
+pub fn ps1_json(name: &str, program: &crate::core::ps1::Program, bytes: usize) -> Value {
+    use crate::core::ps1::{listing as ps1_listing, tokens};
+    let slots = program.slots();
+    let mut token = 1u32;
+    let mut instructions = Vec::new();
+    for i in &program.instrs {
+        let length = i.dst.iter().count() + i.src.len() + if i.def.is_some() { 4 } else { 0 };
+        let text = ps1_listing::instruction(i);
+        instructions.push(json!({
+            "token": token,
+            "byte": token * 4,
+            "length": length,
+            "opcode": i.op.info().mnemonic,
+            "code": i.op.info().code,
+            "text": text,
+            "annotated": text,
+        }));
+        token += 1 + length as u32;
+    }
+    let text = ps1_listing::listing(program);
+    let count =
+        json!({"total": slots.total(), "texture": slots.texture, "arithmetic": slots.arithmetic});
+    json!({
+        "file": name,
+        "version": program.profile.name(),
+        "tokens": tokens::encode(program).len().max(bytes / 4),
+        "bytes": bytes,
+        "slots": count,
+        "slots_documented": count,
+        "constant_table": null,
+        "comments": [],
+        "instructions": instructions,
+        "listing": text,
+        "annotated": text,
+    })
+}

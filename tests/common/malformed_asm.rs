@@ -110,11 +110,11 @@ pub const CASES: &[(&str, &str, usize, usize)] = &[
     ("mov r0, c0", "missing version line", 1, 1),
     ("", "missing version line", 1, 1),
     ("// only a comment\n", "missing version line", 1, 1),
-    ("ps_1_1\nmov r0, c0", "this is a ps_1_1 shader; ps30 reads ps_2_0, ps_2_x, ps_3_0", 1, 1),
+    ("ps_1_1\nmov r0, c8", "invalid register 'c8'", 2, 9),
     ("vs_1_1\nmov r0, c0", "this is a vs_1_1 shader", 1, 1),
     ("ps_2_0\nmov r12, c0", "register `r12` is out of range", 2, 5),
     ("vs_2_0\nmov oC0, c0", "unknown register `oC0`", 2, 5),
-    ("ps_1_4\ntexcrd r0, t0\nphase\n+mov r0, r1", "this is a ps_1_4 shader", 1, 1),
+    ("ps_1_4\ntexcrd r0, t0\nmov r0, c0", "texcrd writes .rgb", 2, 8),
     ("ps_2_a\ndcl t0\nmov oC0, t0", "this is a ps_2_a shader", 1, 1),
     ("ps_3_0\nps_3_0\nmov r0, c0", "the version line may appear only once", 2, 1),
     // --- declarations and definitions ---------------------------------------

@@ -8,22 +8,19 @@
 //! checks that the blob ends so and compares everything before it.
 
 use super::*;
-use ps30::core::bytecode::{microsoft, read::read};
 
 /// Items `read` may expand to: far more than any fixture holds.
 const MAX_ITEMS: u64 = 1 << 20;
 
 /// ps30's default listing of `fxo`, or why there is none.
 pub(super) fn ps30_listing(fxo: &[u8]) -> Result<String, String> {
-    read(fxo, MAX_ITEMS)
-        .map(|m| microsoft::listing(&m))
-        .map_err(|e| {
-            format!(
-                "ps30 does not read the bytecode: {} at {}",
-                e.message,
-                e.place()
-            )
-        })
+    ps30::core::load::microsoft_listing(fxo, MAX_ITEMS).map_err(|e| {
+        format!(
+            "ps30 does not read the bytecode: {} at {}",
+            e.message,
+            e.place()
+        )
+    })
 }
 
 /// The first line where two texts differ: its number and both versions.

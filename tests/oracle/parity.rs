@@ -1,5 +1,5 @@
-//! Microsoft parity for every profile ps30 reads besides ps_3_0 (ps_2_0,
-//! ps_2_x, vs_2_0, vs_2_x, vs_3_0): the same four measures the ps_3_0
+//! Microsoft parity for every profile ps30 reads besides ps_3_0 (ps_1_1–
+//! ps_1_4, ps_2_0, ps_2_x, vs_2_0, vs_2_x, vs_3_0): the same four measures the ps_3_0
 //! tests hold — acceptance with Microsoft's first code, the bytes ps30
 //! writes, the listing of Microsoft's bytecode, the slot count with its
 //! texture/arithmetic split — on the per-profile probes
@@ -14,7 +14,9 @@ use super::*;
 use std::collections::BTreeMap;
 
 /// The profiles measured here (ps_3_0 is the other oracle tests').
-const PROFILES: [&str; 5] = ["ps_2_0", "ps_2_x", "vs_2_0", "vs_2_x", "vs_3_0"];
+const PROFILES: [&str; 9] = [
+    "ps_1_1", "ps_1_2", "ps_1_3", "ps_1_4", "ps_2_0", "ps_2_x", "vs_2_0", "vs_2_x", "vs_3_0",
+];
 
 /// Relative addressing through the address register (`c[a0.x + n]`, and
 /// `c[aL + n]` in vertex shaders) is not read or written yet: the operand

@@ -4,8 +4,8 @@
     tools/oracle/profile_probes.py [--out DIR]   DIR defaults to tests/oracle/corpus/asm/profiles
 
 One folder per profile D3DAssemble reads as a version line (ps_2_0, ps_2_x, ps_3_0, vs_2_0,
-vs_2_x, vs_3_0), and a baseline for ps_1_1-ps_1_4, vs_1_1 and the HLSL-only names ps_2_a,
-ps_2_b, vs_2_a. In each:
+vs_2_x, vs_3_0), ps_1_1-ps_1_4 (tools/oracle/ps1_probes.py: another instruction set, its own
+probes), and a baseline for vs_1_1 and the HLSL-only names ps_2_a, ps_2_b, vs_2_a. In each:
 
 * `base.psh`: the smallest shader of the profile (its version line, one output written);
 * `op-NAME.psh`: the baseline plus one instruction of the whole Direct3D 9 set (pixel and
@@ -26,12 +26,13 @@ import argparse
 import os
 import sys
 
+import ps1_probes
+
 PIXEL = ["ps_2_0", "ps_2_x", "ps_3_0"]
 VERTEX = ["vs_2_0", "vs_2_x", "vs_3_0"]
-# A baseline each, to record what the assembler says of them: the ps_1_x and vs_1_1 ones it
-# reads; ps_2_a, ps_2_b and vs_2_a are names of HLSL targets only (their bytecode says ps_2_x
+# A baseline each, to record what the assembler says of them: the vs_1_1 one it reads; ps_2_a, ps_2_b and vs_2_a are names of HLSL targets only (their bytecode says ps_2_x
 # or vs_2_x), and as a version line D3DAssemble refuses them (X2001).
-OLD = ["ps_1_1", "ps_1_2", "ps_1_3", "ps_1_4", "ps_2_a", "ps_2_b", "vs_1_1", "vs_2_a"]
+OLD = ["ps_2_a", "ps_2_b", "vs_1_1", "vs_2_a"]
 
 
 def pixel(profile, body, pre=(), post=()):
@@ -209,10 +210,12 @@ def probes():
             out.append((f"{profile}/op-{name}.psh", make(profile, body, pre, post)))
         for name, text in reg_probes(profile) + limit_probes(profile):
             out.append((f"{profile}/{name}.psh", text))
+    # ps_1_x: another instruction set, its own probes (ps1_probes.py)
+    for profile in ps1_probes.PS1:
+        for name, text in ps1_probes.probes(profile):
+            out.append((f"{profile}/{name}.psh", text))
     for profile in OLD:
-        if profile.startswith("ps_1"):
-            text = f"{profile}\nmov r0, c0\n"
-        elif profile.startswith("ps"):
+        if profile.startswith("ps"):
             text = pixel(profile, [])
         else:
             text = f"{profile}\ndcl_position v0\nmov oPos, v0\n"

@@ -112,7 +112,8 @@ fn version(tokens: &Tokens) -> Result<Profile, ReadError> {
     if v == VERSION_PS_3_0 {
         return Ok(Profile::Ps3_0);
     }
-    if let Some(p) = Profile::from_token(v).filter(|p| p.checked()) {
+    // ps_1_x has its own reader (core::ps1::tokens): no length fields, co-issue.
+    if let Some(p) = Profile::from_token(v).filter(|p| p.checked() && !p.is_ps1()) {
         return Ok(p);
     }
     let message = match (version_name(v), v >> 16) {
@@ -123,6 +124,9 @@ fn version(tokens: &Tokens) -> Result<Profile, ReadError> {
         }
     };
     let help = match Profile::from_token(v) {
+        Some(p) if p.is_ps1() => format!(
+            "{p} is another instruction set, read by core::ps1 (ps30 check, asm and disasm read it)"
+        ),
         Some(p) => format!(
             "ps30 reads ps_2_0, ps_2_x, ps_3_0, vs_2_0, vs_2_x and vs_3_0; it recognises {p} (docs/profiles.md) but does not read {p} shaders yet"
         ),

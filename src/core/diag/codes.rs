@@ -363,3 +363,167 @@ pub const SGN_SCRATCH_3_0: Code = "X5797";
 /// "When a ps_2_0 shader writes to oCn, it must write to all of oC(n-1)
 /// down to oC0 (no gaps)."
 pub const COLOUR_OUTPUT_GAP: Code = "X5573";
+
+// --- ps_1_x (core::ps1): the rules D3DAssemble holds ps_1_1–ps_1_4 to ------
+// Where ps_1_4 words a rule of its own, its code is the second constant.
+/// "complement cannot be used with other modifiers" (`1-r0_bias`).
+pub const COMPLEMENT_WITH_MODIFIER: Code = "X2012";
+/// "For ps_1_2 or ps_1_3, the cmp or dp4 instructions cannot have a source
+/// register the same as the destination register."
+pub const PS1_SOURCE_IS_DEST: Code = "X5024";
+/// "Invalid src mod for … source param." (`_x2` before ps_1_4).
+pub const PS1_SOURCE_MODIFIER: Code = "X5025";
+/// "Src selector .b … is only valid for instructions that occur in the
+/// alpha pipe."
+pub const PS1_BLUE_SELECTOR: Code = "X5026";
+/// "Invalid src swizzle for … source param." (ps_1_1–ps_1_3).
+pub const PS1_SWIZZLE: Code = "X5027";
+/// "Texture register result of texkill, texm3x2depth or texm*pad
+/// instructions must not be read."
+pub const PS1_PAD_READ: Code = "X5031";
+/// "Read of uninitialized components(*) in …" (ps_1_1–ps_1_3).
+pub const PS1_UNINITIALIZED: Code = "X5036";
+/// "Invalid reg type for dest param." (ps_1_1–ps_1_3).
+pub const PS1_DEST_TYPE: Code = "X5037";
+/// "Invalid dst shift." (`_x8`, `_d4`, `_d8` before ps_1_4).
+pub const PS1_SHIFT: Code = "X5045";
+/// "Dest write mask must be .rgb, .a, or .rgba (all)." (ps_1_1–ps_1_3).
+pub const PS1_MASK: Code = "X5046";
+/// "Tex register t# already declared."
+pub const PS1_TEX_TWICE: Code = "X5053";
+/// "t# registers must appear in sequence."
+pub const PS1_TEX_ORDER: Code = "X5054";
+/// "Cannot use tex* instruction after non-tex* instruction."
+pub const PS1_TEX_AFTER_ARITHMETIC: Code = "X5055";
+/// "Incomplete texm* sequence."
+pub const PS1_TEXM_INCOMPLETE: Code = "X5056";
+/// "First source for cnd instruction must be 'r0.a'."
+pub const PS1_CND_SOURCE: Code = "X5059";
+/// "Const declaration (def) must appear before other instructions."
+pub const PS1_DEF_LATE: Code = "X5063";
+/// ps_1_4's wording of [`PS1_DEF_LATE`].
+pub const PS14_DEF_LATE: Code = "X5155";
+/// "Dest write mask must be .rgb, or .rgba (all) for dp3."
+pub const PS1_DP3_MASK: Code = "X5066";
+/// "Cannot set co-issue ('+') on consecutive instructions."
+pub const PS1_COISSUE_CHAIN: Code = "X5070";
+/// ps_1_4's wording of [`PS1_COISSUE_CHAIN`].
+pub const PS14_COISSUE_CHAIN: Code = "X5161";
+/// "(previous instruction) nop instruction cannot be co-issued."
+pub const PS1_COISSUE_NOP: Code = "X5071";
+/// ps_1_4's wording of [`PS1_COISSUE_NOP`].
+pub const PS14_COISSUE_NOP: Code = "X5164";
+/// "(previous instruction) Co-issued instruction cannot write all
+/// components - must write either alpha or color."
+pub const PS1_COISSUE_FIRST_ALL: Code = "X5080";
+/// The same of the co-issued instruction itself.
+pub const PS1_COISSUE_ALL: Code = "X5081";
+/// "Co-issued instructions cannot both write to the same components of a
+/// register."
+pub const PS1_COISSUE_SAME: Code = "X5082";
+/// "Co-issued instructions cannot both write to color components."
+pub const PS1_COISSUE_COLOUR: Code = "X5083";
+/// "Co-issued instructions cannot both write to alpha component."
+pub const PS1_COISSUE_ALPHA: Code = "X5084";
+/// ps_1_4: "(previous instruction) Individual instruction in co-issue pair
+/// cannot write both alpha and color component(s)."
+pub const PS14_COISSUE_FIRST_BOTH: Code = "X5172";
+/// ps_1_4: the same of the co-issued instruction itself.
+pub const PS14_COISSUE_BOTH: Code = "X5173";
+/// ps_1_4: "Co-issued instructions cannot both write to the same
+/// component(s)."
+pub const PS14_COISSUE_SAME: Code = "X5174";
+/// ps_1_4: "One of the instructions in a co-issue pair must write to alpha
+/// only (.a writemask)."
+pub const PS14_COISSUE_ALPHA: Code = "X5175";
+/// "Too many arithmetic instruction slots used: N. Max. allowed (counting
+/// any co-issued pairs as 1) is 8." (ps_1_1–ps_1_3).
+pub const PS1_ARITHMETIC_SLOTS: Code = "X5088";
+/// "r0 must be written by shader." (ps_1_1–ps_1_3).
+pub const PS1_R0_UNWRITTEN: Code = "X5090";
+/// ps_1_4's wording of [`PS1_R0_UNWRITTEN`].
+pub const PS14_R0_UNWRITTEN: Code = "X5185";
+/// ps_1_4: "Modifiers are not allowed on constants for ps_1_4."
+pub const PS14_CONST_MODIFIER: Code = "X5097";
+/// ps_1_1–ps_1_3: "Modifiers are not allowed on constants for ps_1_x."
+pub const PS1_CONST_MODIFIER: Code = "X5539";
+/// ps_1_4: "Source register type must be texture coordinate input (t#) for
+/// texcrd instruction."
+pub const PS14_TEXCRD_SOURCE: Code = "X5098";
+/// ps_1_4: "_dz(=_db) modifier on source param for texld only allowed if
+/// source is a temp register (r#)."
+pub const PS14_DZ_ON_TEXCOORD: Code = "X5101";
+/// ps_1_4: "_dz(=_db) modifier … must be paired with source selector
+/// .xyz(=.rgb)."
+pub const PS14_DZ_SELECTOR: Code = "X5102";
+/// ps_1_4: "Using a texture coordinate register (t#) as source for texld
+/// requires component selector .xyw(=.rga), or .xyz(=.rgb)."
+pub const PS14_TEXCOORD_SELECTOR: Code = "X5108";
+/// ps_1_4: "Using a temp register (r#) as source for texld requires
+/// component selector .xyz(==.rgb)."
+pub const PS14_TEMP_SELECTOR: Code = "X5109";
+/// ps_1_4: "Texture coordinate registers (t#) are not available to
+/// arithmetic instructions."
+pub const PS14_TEXCOORD_IN_ARITHMETIC: Code = "X5112";
+/// ps_1_4: "Invalid source selector."
+pub const PS14_SELECTOR: Code = "X5116";
+/// ps_1_4: "Read of uninitialized component(*) in r#" after the phase
+/// marker, whose alpha the marker lost.
+pub const PS14_ALPHA_AFTER_PHASE: Code = "X5119";
+/// ps_1_4: "Read of uninitialized components(*) in …".
+pub const PS14_UNINITIALIZED: Code = "X5121";
+/// ps_1_4: "Invalid register type for destination param."
+pub const PS14_DEST_TYPE: Code = "X5123";
+/// ps_1_4: "texcrd with _dw(=_da) source modifier must use .xy(=.rg)
+/// destination writemask."
+pub const PS14_TEXCRD_DW_MASK: Code = "X5125";
+/// ps_1_4: "texcrd must use .xyz(=.rgb) destination writemask."
+pub const PS14_TEXCRD_MASK: Code = "X5126";
+/// ps_1_4: "Register r# (and thus texture stage #) already used as a
+/// destination for a tex* instruction in this block of the shader."
+pub const PS14_TEX_TWICE: Code = "X5140";
+/// ps_1_4: "tex* instructions cannot be after arithmetic instructions
+/// within one phase."
+pub const PS14_TEX_AFTER_ARITHMETIC: Code = "X5141";
+/// ps_1_4: "Multiple phase markers not permitted."
+pub const PS14_PHASE_TWICE: Code = "X5142";
+/// ps_1_4: "Earlier texld instruction used _dz(=_db) … When a phase marker
+/// is present, the _dz modifier is only permitted after the phase marker."
+pub const PS14_DZ_BEFORE_PHASE: Code = "X5143";
+/// ps_1_4: "v# register read by instruction(s) before phase marker."
+pub const PS14_COLOUR_BEFORE_PHASE: Code = "X5144";
+/// ps_1_4: "When a phase marker is present in a shader, texkill is only
+/// permitted after the phase marker."
+pub const PS14_TEXKILL_BEFORE_PHASE: Code = "X5145";
+/// ps_1_4: "bem can only be used before a phase marker (required) later in
+/// the shader."
+pub const PS14_BEM_PLACE: Code = "X5147";
+/// ps_1_4: "Writemask for bem must be '.rg'".
+pub const PS14_BEM_MASK: Code = "X5148";
+/// ps_1_4: "When a phase marker is present in a shader, texdepth is only
+/// permitted after the phase marker."
+pub const PS14_TEXDEPTH_BEFORE_PHASE: Code = "X5154";
+/// ps_1_4: "Too many (N) tex* instruction slots used before phase marker.
+/// Max. allowed in a phase is 6."
+pub const PS14_TEXTURE_SLOTS_PHASE1: Code = "X5176";
+/// ps_1_4: "… tex* instruction slots used after phase marker."
+pub const PS14_TEXTURE_SLOTS_PHASE2: Code = "X5178";
+/// ps_1_4: "… arithmetic instruction slots used after phase marker."
+pub const PS14_ARITHMETIC_SLOTS_PHASE2: Code = "X5179";
+/// ps_1_4 without a phase marker: "Too many (N) tex* instruction slots
+/// used. Max. allowed is 6."
+pub const PS14_TEXTURE_SLOTS: Code = "X5180";
+/// ps_1_4 without a phase marker: "Too many (N) arithmetic instruction
+/// slots used. Max. allowed … is 8."
+pub const PS14_ARITHMETIC_SLOTS: Code = "X5181";
+/// ps_1_4: "… arithmetic instruction slots used before phase marker."
+pub const PS14_ARITHMETIC_SLOTS_PHASE1: Code = "X5486";
+/// "Instruction modifiers are not allowed for tex* instructions." (`_sat`
+/// on a texture instruction before ps_1_4).
+pub const PS1_TEX_MODIFIER: Code = "X5042";
+/// "Dest shift not allowed for tex* instructions." (before ps_1_4).
+pub const PS1_TEX_SHIFT: Code = "X5043";
+/// ps_1_4's wording of [`PS1_TEX_MODIFIER`].
+pub const PS14_TEX_MODIFIER: Code = "X5128";
+/// ps_1_4's wording of [`PS1_TEX_SHIFT`].
+pub const PS14_TEX_SHIFT: Code = "X5129";

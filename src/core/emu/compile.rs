@@ -812,6 +812,31 @@ impl Builder<'_> {
                 i,
                 "a vertex-shader instruction: the emulator runs ps_3_0",
             )),
+            Opcode::Tex
+            | Opcode::TexCoord
+            | Opcode::TexCrd
+            | Opcode::TexBem
+            | Opcode::TexBemL
+            | Opcode::TexReg2Ar
+            | Opcode::TexReg2Gb
+            | Opcode::TexReg2Rgb
+            | Opcode::TexM3x2Pad
+            | Opcode::TexM3x2Tex
+            | Opcode::TexM3x2Depth
+            | Opcode::TexM3x3Pad
+            | Opcode::TexM3x3Tex
+            | Opcode::TexM3x3Spec
+            | Opcode::TexM3x3VSpec
+            | Opcode::TexM3x3
+            | Opcode::TexDp3
+            | Opcode::TexDp3Tex
+            | Opcode::TexDepth
+            | Opcode::Bem
+            | Opcode::Phase
+            | Opcode::Cnd => Err(malformed(
+                i,
+                "a ps_1_x instruction: the emulator does not run ps_1_x",
+            )),
         }
     }
 

@@ -53,6 +53,23 @@ pub fn parse(text: &str) -> (Vec<Stmt>, Diagnostics) {
     (stmts, diags)
 }
 
+/// The text as Microsoft's assembler's grammar reads it, for a reader of
+/// another instruction set (ps_1_x, `core::ps1`): comments blanked, the
+/// preprocessor run where the text uses it, with a map from places in the
+/// returned text back to the source. Line comments (`//`, `;`) are left for
+/// the reader ([`strip_comment`]).
+pub(crate) fn prepare(text: &str) -> (String, Box<dyn Fn(Span) -> Span>, Diagnostics) {
+    let mut diags = Diagnostics::default();
+    let blanked = blank(text, &mut diags).into_owned();
+    if !preprocess::needed(&blanked) {
+        return (blanked, Box::new(|s| s), diags);
+    }
+    let (pre, pre_diags) = preprocess::preprocess(&blanked);
+    diags.extend(pre_diags);
+    let text = pre.text.clone();
+    (text, Box::new(move |s| pre.span(s)), diags)
+}
+
 /// The statements of text that needs no preprocessing (comments blanked),
 /// and the diagnostics of every line that did not parse.
 fn parse_lines(text: &str) -> (Vec<Stmt>, Diagnostics) {
@@ -405,7 +422,7 @@ fn is_line_directive(line: &str) -> bool {
 }
 
 /// The code part of a line: everything before `//` or `;`.
-fn strip_comment(line: &str) -> &str {
+pub(crate) fn strip_comment(line: &str) -> &str {
     let cut = [line.find("//"), line.find(';')]
         .into_iter()
         .flatten()

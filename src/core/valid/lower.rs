@@ -117,12 +117,13 @@ fn unknown_mnemonic(ast: &InstrAst) -> Diagnostic {
     // longer than the longest one, so longer names are not compared.
     let longest = crate::core::isa::TABLE
         .iter()
+        .filter(|r| !r.op.is_ps1_only())
         .map(|r| r.mnemonic.len())
         .max()
         .unwrap_or(0);
     let best = crate::core::isa::TABLE
         .iter()
-        .filter(|_| name.len() <= longest + 2)
+        .filter(|r| name.len() <= longest + 2 && !r.op.is_ps1_only())
         .map(|r| (edit_distance(name, r.mnemonic), r.mnemonic))
         .min();
     match best {

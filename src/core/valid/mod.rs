@@ -106,7 +106,7 @@ fn check_version<'e>(
 pub fn version_refusal(text: &str, span: Span) -> Diagnostic {
     let profile = Profile::from_version_line(text);
     let message = format!(
-        "this is a {text} shader; ps30 reads ps_2_0, ps_2_x, ps_3_0, vs_2_0, vs_2_x and vs_3_0"
+        "this is a {text} shader; ps30 reads ps_2_0, ps_2_x, ps_3_0, vs_2_0, vs_2_x, vs_3_0 and ps_1_1–ps_1_4"
     );
     let help = match profile {
         Some(p) if !p.assembles() => format!(
