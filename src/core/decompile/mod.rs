@@ -130,7 +130,7 @@ fn scan(shader: &Shader) -> Scan {
                 *s.uses.floats.entry(reg).or_default() |= bits;
             };
             match src.reg.file {
-                RegFile::Const if src.relative => {
+                RegFile::Const if src.relative.is_some() => {
                     s.uses.relative.insert(src.reg.index);
                 }
                 RegFile::Const => {

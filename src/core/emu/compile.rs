@@ -592,8 +592,8 @@ impl Builder<'_> {
             RegFile::Const if idx < CONSTS => self.const_row[idx as usize],
             // A relative base may lie past v9: the read lands inside v0 … v9
             // or reads 0 (Worker::row).
-            RegFile::Input if idx < INPUTS || s.relative => {
-                if !s.relative {
+            RegFile::Input if idx < INPUTS || s.relative.is_some() => {
+                if s.relative.is_none() {
                     self.inputs |= 1 << idx;
                 }
                 self.layout.input + 4 * idx as u16
@@ -606,7 +606,7 @@ impl Builder<'_> {
             }
             _ => return Err(malformed(i, format!("{} cannot be read here", s.reg))),
         };
-        if s.relative && s.reg.file != RegFile::Input {
+        if s.relative.is_some() && s.reg.file != RegFile::Input {
             return Err(malformed(
                 i,
                 format!("relative addressing of {} (only v# allowed)", s.reg),
@@ -622,7 +622,12 @@ impl Builder<'_> {
         Ok(SrcOp {
             row,
             swz: pack_swizzle(s.swizzle),
-            flags: modifier | if s.relative { SrcOp::RELATIVE } else { 0 },
+            flags: modifier
+                | if s.relative.is_some() {
+                    SrcOp::RELATIVE
+                } else {
+                    0
+                },
         })
     }
 
@@ -858,7 +863,7 @@ impl Builder<'_> {
         let d = self.dst(i, x)?;
         let a = self.src_at(i, x, 0)?;
         let m = operand(i, x, 1)?;
-        if m.relative {
+        if m.relative.is_some() {
             return Err(malformed(i, "relative matrix operand"));
         }
         let limit = match m.reg.file {

@@ -198,6 +198,8 @@ pub struct RelAst {
     pub index_reg: CompactString,
     /// Swizzle written on the index register, which ps_3_0 forbids.
     pub index_swizzle: Option<Span>,
+    /// The letters of that swizzle (`x` of `a0.x`), lower-cased.
+    pub index_letters: CompactString,
     /// Sum of the constant offsets.
     pub offset: i64,
     /// The whole `[…]`.

@@ -1049,8 +1049,10 @@ impl<'a> Cursor<'a> {
                 .with_help("relative addressing in ps_3_0 is written v[aL + n]"));
         };
         let swz_start = self.pos();
+        let mut index_letters = CompactString::default();
         let index_swizzle = if self.eat(char('.')).is_some() {
-            self.eat(take_while(|c: char| c.is_ascii_alphabetic()));
+            let letters = self.eat(take_while(|c: char| c.is_ascii_alphabetic()));
+            index_letters = letters.unwrap_or_default().to_ascii_lowercase().into();
             Some(self.span_from(swz_start))
         } else {
             None
@@ -1103,6 +1105,7 @@ impl<'a> Cursor<'a> {
         Ok(RelAst {
             index_reg: index_reg.into(),
             index_swizzle,
+            index_letters,
             offset,
             span: self.span_from(start),
         })
