@@ -1,4 +1,7 @@
-//! `ps30 run`: one pass of any shader over an image into a render target.
+//! `ps30 run`: one pass of any shader over an image into a render target,
+//! or a vertex shader over a vertex list (`--vertices`, in `run/vertices.rs`).
+
+mod vertices;
 
 use super::args::{
     given_with, read_inputs, with_inputs, BackendArgs, ConstantArgs, ExecArgs, FormatArg,
@@ -21,15 +24,20 @@ pub struct Args {
     #[arg(value_name = "SHADER")]
     shader: String,
     /// The image s0 samples: OpenEXR, Radiance .hdr or PFM (v0 runs over its texel blocks).
-    #[arg(long, value_name = "IMAGE", required_unless_present = "inputs")]
+    #[arg(long, value_name = "IMAGE", required_unless_present_any = ["inputs", "vertices"])]
     image: Option<PathBuf>,
+    /// Run a vertex shader (vs_2_0, vs_2_x, vs_3_0) over the vertices of this JSON file:
+    /// {"attributes": {"position0": [[x, y, z, w], ...], "texcoord0": [[u, v], ...]}}
+    /// (docs/vertex-shaders.md); prints each vertex's outputs.
+    #[arg(long, value_name = "FILE", conflicts_with_all = ["image", "target"])]
+    vertices: Option<PathBuf>,
     /// Constants, textures and sampler states from a file in the draw-list step format:
     /// {"constants": {"c0": [x, y, z, w]}, "samplers": {"s0": {"texture": "sky.dds", "filter": "linear"}}}.
     #[arg(long, value_name = "FILE")]
     inputs: Option<PathBuf>,
     /// Render-target size WxH.
-    #[arg(long, value_name = "WxH", value_parser = super::args::parse_size)]
-    target: (u32, u32),
+    #[arg(long, value_name = "WxH", value_parser = super::args::parse_size, required_unless_present = "vertices")]
+    target: Option<(u32, u32)>,
     #[command(flatten)]
     source: SourceArgs,
     #[command(flatten)]
@@ -55,6 +63,9 @@ pub struct Args {
 
 pub fn run(args: Args, ui: &Ui) -> super::Result {
     super::bound_threads(args.exec.threads())?;
+    if let Some(path) = &args.vertices {
+        return vertices::run(&args, path, ui);
+    }
     let inputs = read_inputs(args.inputs.as_deref())?;
     if let Some(path) = &args.output {
         let mut sources: Vec<&Path> = vec![Path::new(&args.shader)];
@@ -81,7 +92,7 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
     };
     let (constants, textures) = with_inputs(&resolved, inputs);
     let setup = PassSetup {
-        target: args.target,
+        target: args.target.unwrap_or_default(),
         constants,
         textures,
         sampler: args.sampler.state(),
