@@ -376,3 +376,6 @@ fn bind_samplers<'a>(draw: &VertexDraw<'a>) -> Result<[Option<Sampler<'a>>; 4], 
     }
     Ok(out)
 }
+
+#[cfg(test)]
+mod tests;
