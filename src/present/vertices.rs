@@ -2,6 +2,7 @@
 //! semantic, as a text table and as JSON.
 
 use crate::core::emu::vertex::VertexOutput;
+use crate::jobs::vertices::VertexProfile;
 use crate::present::json::real32x4;
 use serde_json::{json, Value};
 use std::fmt::Write;
@@ -72,5 +73,49 @@ pub fn json(shader: &str, profile: &str, out: &VertexOutput) -> Value {
         "profile": profile,
         "outputs": slots,
         "vertices": vertices,
+    })
+}
+
+/// `ps30 profile VS --vertices FILE` as text.
+pub fn profile_text(shader: &str, p: &VertexProfile) -> String {
+    let n = p.executed.len();
+    let (lo, hi) = (
+        p.executed.iter().min().copied().unwrap_or(0),
+        p.executed.iter().max().copied().unwrap_or(0),
+    );
+    let total: u64 = p.executed.iter().sum();
+    let mut s = format!("{shader}: {} over {n} vertices\n\n", p.profile);
+    let _ = writeln!(s, "slots               {} / {}", p.slots, p.max_slots);
+    let model = if p.model.min == p.model.max {
+        p.model.min.to_string()
+    } else {
+        format!("{} to {}", p.model.min, p.model.max)
+    };
+    let _ = writeln!(
+        s,
+        "executed per vertex {lo} to {hi} (the cost model: {model}; limit {})",
+        p.max_executed
+    );
+    let _ = writeln!(s, "executed in all     {total}");
+    let verdict = match (p.within_limits, p.counts_agree) {
+        (true, true) => "within limits; every vertex's count is in the cost model's range",
+        (false, true) => "over a limit",
+        (_, false) => "a vertex's count is outside the cost model's range",
+    };
+    let _ = writeln!(s, "verdict: {verdict}");
+    s
+}
+
+/// `ps30 profile VS --vertices FILE` as JSON.
+pub fn profile_json(shader: &str, p: &VertexProfile) -> Value {
+    json!({
+        "shader": shader,
+        "profile": p.profile,
+        "slots": p.slots,
+        "limits": {"name": p.profile, "slots": p.max_slots, "executed": p.max_executed},
+        "executed_model": crate::present::json::range(p.model),
+        "executed": p.executed,
+        "within_limits": p.within_limits,
+        "counts_agree": p.counts_agree,
     })
 }

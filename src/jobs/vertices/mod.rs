@@ -19,6 +19,8 @@
 //! vertex has every attribute; at most [`MAX_VERTICES`] vertices. Each
 //! refusal names the file and the field (`attributes.texcoord0[2]`).
 
+use crate::core::cost::{self, Environment, Range, Verdict};
+use crate::core::diag::SourceFile;
 use crate::core::emu::vertex::{self, Attribute, VertexDraw, VertexError, VertexOutput, Vertices};
 use crate::core::emu::{Constants, SamplerState};
 use crate::core::float_rules::FloatRules;
@@ -219,6 +221,80 @@ pub fn run(
         max_executed_per_vertex,
     };
     vertex::run(shader, &draw, vertices)
+}
+
+/// A vertex shader's costs over a vertex list: the cost model's (slots,
+/// executed range) beside what each vertex executed.
+#[derive(Clone, Debug, PartialEq)]
+pub struct VertexProfile {
+    /// The profile's name.
+    pub profile: String,
+    /// Static slots (Microsoft's count).
+    pub slots: u64,
+    /// The profile's slot limit.
+    pub max_slots: u64,
+    /// The profile's executed limit per vertex.
+    pub max_executed: u64,
+    /// The cost model's executed range for one vertex.
+    pub model: Range,
+    /// Executed slots of each vertex, as the vertex stage counted them.
+    pub executed: Vec<u64>,
+    /// Whether the model's verdict is within the limits.
+    pub within_limits: bool,
+    /// Whether every vertex's count lies in the model's range.
+    pub counts_agree: bool,
+}
+
+/// [`run`], with the cost model's analysis under the same integer and
+/// boolean constants.
+pub fn profile(
+    shader: &Shader,
+    file: &SourceFile,
+    constants: Constants,
+    textures: &[(u32, TextureFile, SamplerState)],
+    vertices: &Vertices,
+    float_rules: FloatRules,
+    max_executed_per_vertex: u64,
+) -> Result<VertexProfile, String> {
+    let env = Environment {
+        ints: constants
+            .int
+            .iter()
+            .enumerate()
+            .map(|(i, v)| (i as u32, *v))
+            .collect(),
+        bools: constants
+            .bool
+            .iter()
+            .enumerate()
+            .map(|(i, v)| (i as u32, *v))
+            .collect(),
+    };
+    let analysis =
+        cost::analyse(shader, file, &env, &cost::Profile::ps_3_0()).map_err(|e| e.to_string())?;
+    let out = run(
+        shader,
+        constants,
+        textures,
+        vertices,
+        float_rules,
+        max_executed_per_vertex,
+    )
+    .map_err(|e| e.to_string())?;
+    let model = analysis.executed;
+    Ok(VertexProfile {
+        profile: analysis.profile.name.clone(),
+        slots: analysis.slots,
+        max_slots: analysis.profile.max_slots,
+        max_executed: analysis.profile.max_executed,
+        model,
+        counts_agree: out
+            .executed
+            .iter()
+            .all(|&e| model.min <= e && e <= model.max),
+        executed: out.executed,
+        within_limits: analysis.verdict == Verdict::Within,
+    })
 }
 
 /// A vertex stage's outputs in the vertex-list form (`{"attributes": …}`),
