@@ -42,8 +42,8 @@ pub fn text(shader: &str, profile: &str, out: &VertexOutput) -> String {
 }
 
 /// The JSON: the shader, its profile, the output registers with their
-/// semantics, and per vertex its executed slots and outputs (in the
-/// registers' order).
+/// semantics, and per vertex the slots it executed (`executed_emulated`)
+/// and its outputs (in the registers' order).
 pub fn json(shader: &str, profile: &str, out: &VertexOutput) -> Value {
     let slots: Vec<Value> = out
         .slots
@@ -63,7 +63,7 @@ pub fn json(shader: &str, profile: &str, out: &VertexOutput) -> Value {
         .map(|(i, (values, executed))| {
             json!({
                 "vertex": i,
-                "executed": executed,
+                "executed_emulated": executed,
                 "outputs": values.iter().map(|v| real32x4(*v)).collect::<Vec<_>>(),
             })
         })
@@ -113,8 +113,8 @@ pub fn profile_json(shader: &str, p: &VertexProfile) -> Value {
         "profile": p.profile,
         "slots": p.slots,
         "limits": {"name": p.profile, "slots": p.max_slots, "executed": p.max_executed},
-        "executed_model": crate::present::json::range(p.model),
-        "executed": p.executed,
+        "executed": crate::present::json::range(p.model),
+        "executed_emulated": p.executed,
         "within_limits": p.within_limits,
         "counts_agree": p.counts_agree,
     })

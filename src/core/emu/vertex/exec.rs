@@ -252,7 +252,7 @@ impl<'s, 'a> State<'s, 'a> {
     fn compare(&self, g: &Regs, x: &Instruction, k: usize) -> bool {
         let a = self.read(g, &x.src[k])[0];
         let b = self.read(g, &x.src[k + 1])[0];
-        x.compare.is_some_and(|c| compare(c, a, b))
+        x.compare.is_some_and(|c| c.eval(a, b))
     }
 
     /// Source `s` with its relative addressing, swizzle and modifier.
@@ -448,7 +448,7 @@ impl<'s, 'a> State<'s, 'a> {
                 let (a, b) = (src(0), src(1));
                 let c = x.compare.unwrap_or(Compare::Eq);
                 (
-                    std::array::from_fn(|k| f32::from(u8::from(compare(c, a[k], b[k])))),
+                    std::array::from_fn(|k| f32::from(u8::from(c.eval(a[k], b[k])))),
                     15,
                 )
             }
@@ -542,19 +542,6 @@ fn leave(frames: &mut Vec<Frame>, g: &mut Regs) -> usize {
             f.end + 1
         }
         None => usize::MAX,
-    }
-}
-
-/// A comparison of `if_cmp`, `break_cmp`, `setp_cmp` (false with a NaN but
-/// for `_ne`).
-fn compare(c: Compare, a: f32, b: f32) -> bool {
-    match c {
-        Compare::Gt => a > b,
-        Compare::Lt => a < b,
-        Compare::Ge => a >= b,
-        Compare::Le => a <= b,
-        Compare::Eq => a == b,
-        Compare::Ne => a != b,
     }
 }
 
