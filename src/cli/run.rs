@@ -9,7 +9,7 @@ use super::args::{
 };
 use super::io::{audit, load_shader, print_json, say};
 use super::ui::Ui;
-use super::Outcome;
+use super::{BadInput, Outcome};
 use ps30::core::image;
 use ps30::jobs::luminance::{run_pass, PassSetup};
 use ps30::present::constants::{table_json, table_text};
@@ -79,6 +79,13 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         super::io::check_image_output(path, &sources)?;
     }
     let loaded = load_shader(ui, &args.shader, &args.source, &args.input)?;
+    let profile = loaded.shader.program().profile;
+    if ps30::core::emu::vertex::runs(profile) {
+        return Err(BadInput(format!(
+            "{}: a {profile} shader: run it over a vertex list with --vertices FILE",
+            args.shader
+        )));
+    }
     let resolved = args.constants.resolve(loaded.constants.as_ref())?;
     let found = audit(
         ui,

@@ -941,10 +941,14 @@ impl Profile {
         }
     }
 
-    /// Whether ps30 runs shaders of this profile (the emulator, the GPU
-    /// backend, `render`, `compare`): ps_3_0 only.
+    /// Whether ps30 runs shaders of this profile: ps_3_0 pixel shaders in
+    /// the emulator, the GPU backend, `render` and `compare`; vs_2_0, vs_2_x
+    /// and vs_3_0 in the vertex stage (`emu::vertex`, `run --vertices`).
     pub fn runs(self) -> bool {
-        self == Profile::Ps3_0
+        matches!(
+            self,
+            Profile::Ps3_0 | Profile::Vs2_0 | Profile::Vs2X | Profile::Vs3_0
+        )
     }
 }
 

@@ -1121,7 +1121,8 @@ pub fn compile(shader: &Shader) -> Result<Compiled, EmuError> {
 /// [`compile`], each micro-op charging its instruction's slots under `table`.
 pub fn compile_under(shader: &Shader, table: SlotTable) -> Result<Compiled, EmuError> {
     let program = shader.program();
-    if !program.profile.runs() {
+    let pixel = program.profile.stage() == crate::core::profile::Stage::Pixel;
+    if !program.profile.runs() || !pixel {
         return Err(EmuError::NotRun {
             profile: program.profile,
         });

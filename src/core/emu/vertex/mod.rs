@@ -207,7 +207,7 @@ impl std::error::Error for VertexError {}
 
 /// Whether the vertex stage runs shaders of `profile`.
 pub fn runs(profile: Profile) -> bool {
-    matches!(profile, Profile::Vs2_0 | Profile::Vs2X | Profile::Vs3_0)
+    profile.runs() && profile.stage() == Stage::Vertex
 }
 
 /// The output registers a shader has: vs_3_0's declared and written `o#`,
@@ -276,7 +276,7 @@ pub fn run(
     vertices: &Vertices,
 ) -> Result<VertexOutput, VertexError> {
     let profile = shader.program().profile;
-    if profile.stage() != Stage::Vertex || !runs(profile) {
+    if !runs(profile) {
         return Err(VertexError::NotRun(profile));
     }
     for (attribute, values) in &vertices.attributes {
