@@ -11,10 +11,13 @@ use std::path::Path;
 
 const FIXTURES: &str = "tests/oracle/fixtures/hlsl/vertex";
 
+/// One vertex's output values, in the order of the outputs.
+type Outputs = Vec<[f64; 4]>;
+
 /// Runs `ps30 run SHADER --vertices LIST --json ARGS` on a bytecode fixture
 /// with the vertex list `list` (JSON text): (register, semantic) of each
 /// output and per vertex the output values.
-fn run(shader: &str, list: &str, args: &[&str]) -> (Vec<(String, Value)>, Vec<Vec<[f64; 4]>>) {
+fn run(shader: &str, list: &str, args: &[&str]) -> (Vec<(String, Value)>, Vec<Outputs>) {
     let dir = tempfile::tempdir().unwrap();
     let path = dir.path().join("vertices.json");
     std::fs::write(&path, list).unwrap();

@@ -439,11 +439,9 @@ fn indexed(reg: &RegAst, p: Profile) -> R<(Reg, Option<RelIndex>)> {
     let Some(rel) = &reg.relative else {
         return Ok((base, None));
     };
-    let index = match (rel.index_reg.as_str(), rel.index_letters.as_str()) {
-        ("aL", "") => RelIndex::Loop,
-        ("a0", c) if c.len() == 1 => {
-            RelIndex::Addr("xyzw".find(c).or_else(|| "rgba".find(c)).unwrap_or(0) as u8)
-        }
+    let index = match (rel.index_reg.as_str(), rel.index_component) {
+        ("aL", _) if rel.index_swizzle.is_none() => RelIndex::Loop,
+        ("a0", Some(c)) => RelIndex::Addr(c),
         _ => {
             return Err(cannot(
                 rel.span,

@@ -67,14 +67,7 @@ fn index_register(rel: &RelAst, profile: Profile) -> R<RelIndex> {
         return Ok(RelIndex::Loop);
     }
     if rel.index_reg == "a0" && profile.stage() == Stage::Vertex {
-        let component = match rel.index_letters.as_str() {
-            "x" | "r" => Some(0),
-            "y" | "g" => Some(1),
-            "z" | "b" => Some(2),
-            "w" | "a" => Some(3),
-            _ => None,
-        };
-        return component.map(RelIndex::Addr).ok_or_else(|| {
+        return rel.index_component.map(RelIndex::Addr).ok_or_else(|| {
             Diagnostic::coded(
                 codes::RELATIVE_COMPONENT,
                 rel.span,
