@@ -121,6 +121,10 @@ fn sources() -> Vec<Source> {
         let Some(fxo) = f.fxo else { continue };
         let file = load::source_file(&f.rel, fxo, &options).expect("a fixture's bytecode reads");
         let loaded = load::load(file, &options).unwrap_or_else(|e| panic!("{}: {e}", f.rel));
+        // the vertex shaders of `hlsl/vertex/` are the vertex stage's
+        if loaded.shader.program().profile != ps30::core::profile::Profile::Ps3_0 {
+            continue;
+        }
         out.push(Source {
             name: format!("hlsl/{}", f.rel),
             loaded,

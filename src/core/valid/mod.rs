@@ -699,7 +699,7 @@ impl<'p, 'd> Checker<'p, 'd> {
                     Diagnostic::coded(
                         al_outside_loop(self.p.profile),
                         ins.origin.span,
-                        "aL indexes a register outside a loop",
+                        format!("{}[aL + n] used outside a loop", indexed_by_al(ins)),
                     )
                     .with_label("aL is only defined inside loop … endloop")
                     .with_help("wrap it in `loop aL, i#` … `endloop` (rep does not set aL)"),
@@ -1175,7 +1175,10 @@ impl Checker<'_, '_> {
                     Diagnostic::coded(
                         al_outside_loop(self.p.profile),
                         at(idx).origin.span,
-                        "aL indexes a register in a subroutine that is not always called from inside a loop",
+                        format!(
+                            "{}[aL + n] in a subroutine that is not always called from inside a loop",
+                            indexed_by_al(at(idx))
+                        ),
                     )
                     .with_label("aL is only defined inside loop … endloop")
                     .with_help("call the subroutine only from inside `loop aL, i#` … `endloop`"),
@@ -1235,6 +1238,17 @@ fn mixed_relative_constants(src: &[Src], profile: Profile, span: Span) -> Option
 fn indexes_by_al(ins: &Instruction) -> bool {
     let src = ins.src.iter().any(|s| s.relative == Some(RelIndex::Loop));
     src || ins.dst.is_some_and(|d| d.relative == Some(RelIndex::Loop))
+}
+
+/// The name of the file an instruction indexes by `aL` (`v`, `c`, `o`).
+fn indexed_by_al(ins: &Instruction) -> &'static str {
+    let by_al = ins
+        .src
+        .iter()
+        .find(|s| s.relative == Some(RelIndex::Loop))
+        .map(|s| s.reg.file);
+    let file = by_al.or(ins.dst.filter(|d| d.relative.is_some()).map(|d| d.reg.file));
+    file.map_or("v", |f| f.info().name)
 }
 
 /// Microsoft's code for `aL` outside a loop, which differs by stage.

@@ -3,6 +3,7 @@
 //! comparisons are exact.
 
 use super::*;
+use crate::core::emu::SamplerState;
 use crate::core::load::{self, Options};
 
 /// Runs assembly `text` over `vertices` (position0 values) with float
@@ -170,4 +171,58 @@ fn inputs_are_bound_by_usage_and_index() {
         .push((attr("texcoord", 2), vec![[3.0; 4]]));
     let out = run(&shader, &VertexDraw::default(), &vertices).unwrap();
     assert_eq!(out.values[0][0], [3.0; 4]);
+}
+
+#[test]
+fn texldl_reads_the_level_its_w_names_through_the_sampler_swizzle() {
+    use crate::core::emu::{MipChain, MipFilter};
+    // Level 0 is 2×1: texel 0 = (1, 2, 3, 4), texel 1 = (5, 6, 7, 8);
+    // level 1 is 1×1: (9, 10, 11, 12). Point filters, point mip filter.
+    let chain = MipChain::from_levels(vec![
+        (2, 1, vec![[1.0, 2.0, 3.0, 4.0], [5.0, 6.0, 7.0, 8.0]]),
+        (1, 1, vec![[9.0, 10.0, 11.0, 12.0]]),
+    ])
+    .unwrap();
+    let state = SamplerState {
+        mip_filter: MipFilter::Point,
+        ..SamplerState::default()
+    };
+    let text = "vs_3_0\ndcl_position v0\ndcl_2d s0\ndcl_position o0\ndcl_texcoord0 o1\n\
+                texldl o0, v0, s0\ntexldl o1, v0, s1\n";
+    let options = Options::default();
+    let file = load::source_file("t.vsh", text.as_bytes().to_vec(), &options);
+    let loaded = load::load(file.unwrap(), &options);
+    // s1 is not declared: Microsoft's assembler refuses that (X5577), so
+    // the second read goes through s0 with a swizzle instead.
+    assert!(loaded.is_err());
+    let text = "vs_3_0\ndcl_position v0\ndcl_2d s0\ndcl_position o0\ndcl_texcoord0 o1\n\
+                texldl o0, v0, s0\ntexldl o1, v0, s0.wzyx\n";
+    let file = load::source_file("t.vsh", text.as_bytes().to_vec(), &options).unwrap();
+    let shader = load::load(file, &options).unwrap().shader;
+    let draw = VertexDraw {
+        samplers: vec![(0, (&chain).into(), state)],
+        ..VertexDraw::default()
+    };
+    let positions = vec![
+        [0.25, 0.5, 0.0, 0.0],
+        [0.75, 0.5, 0.0, 0.0],
+        [0.75, 0.5, 0.0, 1.0],
+    ];
+    let vertices = Vertices {
+        count: 3,
+        attributes: vec![(
+            Attribute {
+                usage: "position".into(),
+                index: 0,
+            },
+            positions,
+        )],
+    };
+    let out = run(&shader, &draw, &vertices).unwrap();
+    // u = 0.25 at LOD 0: texel 0; u = 0.75: texel 1; w = 1: level 1.
+    assert_eq!(out.values[0][0], [1.0, 2.0, 3.0, 4.0]);
+    assert_eq!(out.values[1][0], [5.0, 6.0, 7.0, 8.0]);
+    assert_eq!(out.values[2][0], [9.0, 10.0, 11.0, 12.0]);
+    // the sampler's swizzle .wzyx reverses the texel
+    assert_eq!(out.values[1][1], [8.0, 7.0, 6.0, 5.0]);
 }
