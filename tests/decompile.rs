@@ -114,7 +114,8 @@ fn sources() -> Vec<Source> {
         let Some(fxo) = f.fxo else { continue };
         let file = load::source_file(&f.rel, fxo, &options).expect("a fixture's bytecode reads");
         let loaded = load::load(file, &options).unwrap_or_else(|e| panic!("{}: {e}", f.rel));
-        // The decompiler writes ps_3_0 (the ps_2_0 conformance shaders are not its input).
+        // The decompiler writes ps_3_0 (the ps_2_0 conformance shaders and the vertex
+        // shaders of `hlsl/vertex/` are not its input).
         if loaded.shader.program().profile != ps30::core::profile::Profile::Ps3_0 {
             continue;
         }

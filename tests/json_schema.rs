@@ -265,6 +265,37 @@ fn every_command_matches_the_schema() {
     );
     let run = bin::loop_args("assets/hdr/forest.hdr", &["--json"]);
     check("run", &run, repo, &[0]);
+    let vs = "tests/oracle/fixtures/hlsl/vertex/offsets.hlsl.fxo";
+    let v = check(
+        "run_vertices",
+        &[
+            "run",
+            vs,
+            "--vertices",
+            "asm/vs/skin.json",
+            "--int",
+            "i0=2,0,1,0",
+            "--json",
+        ],
+        repo,
+        &[0],
+    );
+    assert_eq!(v["outputs"][1]["semantic"], "texcoord1");
+    let v = check(
+        "profile_vertices",
+        &[
+            "profile",
+            vs,
+            "--vertices",
+            "asm/vs/skin.json",
+            "--int",
+            "i0=2,0,1,0",
+            "--json",
+        ],
+        repo,
+        &[0],
+    );
+    assert_eq!(v["limits"]["slots"], 512);
     let v = check(
         "luminance",
         &["luminance", "assets/hdr/city.exr", "--json"],

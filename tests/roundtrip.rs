@@ -466,7 +466,7 @@ fn hand_written_shaders_mean_what_they_say() {
         .instructions
         .iter()
         .flat_map(|i| &i.src)
-        .filter(|s| s.relative)
+        .filter(|s| s.relative.is_some())
         .collect();
     assert_eq!(
         rel.iter().map(|s| s.reg.index).collect::<Vec<_>>(),
@@ -591,7 +591,7 @@ fn source_strategy(
             };
             Src {
                 reg,
-                relative: false,
+                relative: None,
                 swizzle,
                 modifier,
             }
@@ -653,6 +653,7 @@ fn instruction_strategy(decls: Decls) -> BoxedStrategy<Instruction> {
                         .prop_map(|((file, index), mask)| {
                             (
                                 Some(Dst {
+                                    relative: None,
                                     reg: Reg { file, index },
                                     mask,
                                 }),
@@ -677,13 +678,23 @@ fn instruction_strategy(decls: Decls) -> BoxedStrategy<Instruction> {
                             );
                         }
                         (prop::strategy::Union::new(files), mask_strategy())
-                            .prop_map(|(reg, mask)| (Some(Dst { reg, mask }), None))
+                            .prop_map(|(reg, mask)| {
+                                (
+                                    Some(Dst {
+                                        reg,
+                                        mask,
+                                        relative: None,
+                                    }),
+                                    None,
+                                )
+                            })
                             .boxed()
                     }
                     Operand::PredDst => mask_strategy()
                         .prop_map(|mask| {
                             (
                                 Some(Dst {
+                                    relative: None,
                                     reg: Reg {
                                         file: RegFile::Predicate,
                                         index: 0,
@@ -708,7 +719,7 @@ fn instruction_strategy(decls: Decls) -> BoxedStrategy<Instruction> {
                                         file: RegFile::Sampler,
                                         index: sampler.expect("a declared sampler"),
                                     },
-                                    relative: false,
+                                    relative: None,
                                     swizzle,
                                     modifier: SrcMod::None,
                                 }),
@@ -986,6 +997,7 @@ fn program_strategy() -> impl Strategy<Value = Program> {
                             compare: Some(Compare::Lt),
                             predicate: None,
                             dst: Some(Dst {
+                                relative: None,
                                 reg: Reg {
                                     file: RegFile::Predicate,
                                     index: 0,
@@ -1050,6 +1062,7 @@ fn first_writes(body: &[Instruction], const_abs: bool) -> Vec<Instruction> {
             compare: None,
             predicate: None,
             dst: Some(Dst {
+                relative: None,
                 reg: Reg {
                     file: RegFile::Temp,
                     index,

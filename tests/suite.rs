@@ -46,4 +46,5 @@ mod tonemap;
 mod translate;
 mod ux;
 mod validation;
+mod vertex_shaders;
 mod wine_vectors;

@@ -21,8 +21,12 @@ pub struct Args {
     #[arg(value_name = "SHADER")]
     shader: String,
     /// Run on the synthetic G-buffer of the light-model shaders (asm/lights/), WxH pixels.
-    #[arg(long, value_name = "WxH", value_parser = parse_size, conflicts_with_all = ["image", "target"], required_unless_present = "image")]
+    #[arg(long, value_name = "WxH", value_parser = parse_size, conflicts_with_all = ["image", "target"], required_unless_present_any = ["image", "vertices"])]
     gbuffer: Option<(u32, u32)>,
+    /// Run a vertex shader over the vertices of this JSON file (see `ps30 run --vertices`):
+    /// its slots, and each vertex's executed count against the cost model's.
+    #[arg(long, value_name = "FILE", conflicts_with_all = ["image", "gbuffer"])]
+    vertices: Option<std::path::PathBuf>,
     /// Image sampled by s0 (OpenEXR, Radiance .hdr or PFM); pixel (x, y) of the target gets
     /// v0.xy = the centre of the top-left texel of its block of the image, as in `ps30 run`.
     #[arg(long, value_name = "IMAGE", requires = "target")]
@@ -99,6 +103,9 @@ impl Args {
 pub fn run(args: Args, ui: &Ui) -> super::Result {
     super::bound_threads(args.exec.threads())?;
     let loaded = load_shader(ui, &args.shader, &args.source, &args.input)?;
+    if let Some(path) = &args.vertices {
+        return vertices(&args, path, &loaded, ui);
+    }
     let input = args.input()?;
     let resolved = args.constants.resolve(loaded.constants.as_ref())?;
     let inputs = read_inputs(args.inputs.as_deref())?;
@@ -126,4 +133,32 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         say(ui, &text(&r))?;
     }
     Ok(Outcome::from_ok(!r.problem()))
+}
+
+/// `--vertices`: a vertex shader's costs over a vertex list.
+fn vertices(
+    args: &Args,
+    path: &std::path::Path,
+    loaded: &ps30::core::load::Loaded,
+    ui: &Ui,
+) -> super::Result {
+    let list = ps30::jobs::vertices::read(path).map_err(BadInput)?;
+    let resolved = args.constants.resolve(loaded.constants.as_ref())?;
+    let (constants, textures) = with_inputs(&resolved, read_inputs(args.inputs.as_deref())?);
+    let p = ps30::jobs::vertices::profile(
+        &loaded.shader,
+        &loaded.file,
+        constants,
+        &textures,
+        &list,
+        args.float_rules.into(),
+        args.exec.limits().max_executed_per_pixel,
+    )
+    .map_err(|e| BadInput(format!("{}: {e}", args.shader)))?;
+    if args.exec.json {
+        print_json(&ps30::present::vertices::profile_json(&args.shader, &p))?;
+    } else {
+        say(ui, &ps30::present::vertices::profile_text(&args.shader, &p))?;
+    }
+    Ok(Outcome::from_ok(p.within_limits && p.counts_agree))
 }

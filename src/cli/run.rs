@@ -1,4 +1,7 @@
-//! `ps30 run`: one pass of any shader over an image into a render target.
+//! `ps30 run`: one pass of any shader over an image into a render target,
+//! or a vertex shader over a vertex list (`--vertices`, in `run/vertices.rs`).
+
+mod vertices;
 
 use super::args::{
     given_with, read_inputs, with_inputs, BackendArgs, ConstantArgs, ExecArgs, FormatArg,
@@ -6,7 +9,7 @@ use super::args::{
 };
 use super::io::{audit, load_shader, print_json, say};
 use super::ui::Ui;
-use super::Outcome;
+use super::{BadInput, Outcome};
 use ps30::core::image;
 use ps30::jobs::luminance::{run_pass, PassSetup};
 use ps30::present::constants::{table_json, table_text};
@@ -21,18 +24,23 @@ pub struct Args {
     #[arg(value_name = "SHADER")]
     shader: String,
     /// The image s0 samples: OpenEXR, Radiance .hdr or PFM (v0 runs over its texel blocks).
-    /// Needed unless --inputs, --input or --const gives the draw something; without it, v0
-    /// (t0 in ps_2_x) runs over the target's own texel centres.
-    #[arg(long, value_name = "IMAGE", required_unless_present_any = ["inputs", "input_values", "floats"])]
+    /// Needed unless --inputs, --input, --const or --vertices gives the draw something; without
+    /// it, v0 (t0 in ps_2_x) runs over the target's own texel centres.
+    #[arg(long, value_name = "IMAGE", required_unless_present_any = ["inputs", "input_values", "floats", "vertices"])]
     image: Option<PathBuf>,
+    /// Run a vertex shader (vs_2_0, vs_2_x, vs_3_0) over the vertices of this JSON file:
+    /// {"attributes": {"position0": [[x, y, z, w], ...], "texcoord0": [[u, v], ...]}}
+    /// (docs/vertex-shaders.md); prints each vertex's outputs.
+    #[arg(long, value_name = "FILE", conflicts_with_all = ["image", "target", "input_values"])]
+    vertices: Option<PathBuf>,
     /// Constants, textures, sampler states and inputs (by register or semantic) from a file
     /// in the draw-list step format:
     /// {"constants": {"c0": [x, y, z, w]}, "samplers": {"s0": {"texture": "sky.dds", "filter": "linear"}}}.
     #[arg(long, value_name = "FILE")]
     inputs: Option<PathBuf>,
     /// Render-target size WxH.
-    #[arg(long, value_name = "WxH", value_parser = super::args::parse_size)]
-    target: (u32, u32),
+    #[arg(long, value_name = "WxH", value_parser = super::args::parse_size, required_unless_present = "vertices")]
+    target: Option<(u32, u32)>,
     /// An input's value, by register (v0, t1) or semantic (texcoord1, color0):
     /// `texcoord[,Z,W]` for the pixel centres in [0, 1] (z, w as given), or X[,Y,Z,W] at every pixel.
     /// With --image, v0 (ps_3_0) or t0 (ps_2_x) runs over its texel blocks unless given.
@@ -63,6 +71,9 @@ pub struct Args {
 
 pub fn run(args: Args, ui: &Ui) -> super::Result {
     super::bound_threads(args.exec.threads())?;
+    if let Some(path) = &args.vertices {
+        return vertices::run(&args, path, ui);
+    }
     let inputs = read_inputs(args.inputs.as_deref())?;
     if let Some(path) = &args.output {
         let mut sources: Vec<&Path> = vec![Path::new(&args.shader)];
@@ -76,6 +87,13 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         super::io::check_image_output(path, &sources)?;
     }
     let loaded = load_shader(ui, &args.shader, &args.source, &args.input)?;
+    let profile = loaded.shader.program().profile;
+    if ps30::core::emu::vertex::runs(profile) {
+        return Err(BadInput(format!(
+            "{}: a {profile} shader: run it over a vertex list with --vertices FILE",
+            args.shader
+        )));
+    }
     let resolved = args.constants.resolve(loaded.constants.as_ref())?;
     let found = audit(
         ui,
@@ -88,20 +106,23 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         None => None,
     };
     let program = loaded.shader.program();
+    let target = args
+        .target
+        .ok_or_else(|| BadInput("--target WxH: the render target's size is needed".into()))?;
     let mut values = match &inputs {
-        Some(i) => ps30::jobs::render::input_values::resolve_all(program, &i.inputs, args.target)
+        Some(i) => ps30::jobs::render::input_values::resolve_all(program, &i.inputs, target)
             .map_err(|e| super::BadInput(format!("--inputs: {e}")))?,
         None => Vec::new(),
     };
     for t in &args.input_values {
         values.push(
-            ps30::jobs::render::input_values::parse(program, t, args.target)
+            ps30::jobs::render::input_values::parse(program, t, target)
                 .map_err(|e| super::BadInput(format!("--input {e}")))?,
         );
     }
     let (constants, textures) = with_inputs(&resolved, inputs);
     let setup = PassSetup {
-        target: args.target,
+        target,
         constants,
         textures,
         sampler: args.sampler.state(),

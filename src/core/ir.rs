@@ -210,13 +210,34 @@ pub enum SrcMod {
     Not,
 }
 
+/// The register that indexes a relatively addressed operand: the number
+/// read is the operand's `reg.index` plus the index register's value.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum RelIndex {
+    /// `aL`, the loop counter (`v[aL + n]`, `c[aL + n]`, `o[aL + n]`).
+    Loop,
+    /// `a0.x` … `a0.w`: one component (0 = x … 3 = w) of the address
+    /// register of vertex shaders (`c[a0.x + n]`).
+    Addr(u8),
+}
+
+impl fmt::Display for RelIndex {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            RelIndex::Loop => f.write_str("aL"),
+            RelIndex::Addr(c) => write!(f, "a0.{}", ["x", "y", "z", "w"][*c as usize & 3]),
+        }
+    }
+}
+
 /// A source operand.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct Src {
     /// The register read.
     pub reg: Reg,
-    /// `v[aL + n]`: the register number is `reg.index + aL`.
-    pub relative: bool,
+    /// `v[aL + n]`, `c[a0.x + n]`: the register number is `reg.index` plus
+    /// the index register's value.
+    pub relative: Option<RelIndex>,
     /// Which component each of x, y, z, w reads.
     pub swizzle: Swizzle,
     /// Negation and absolute value.
@@ -228,7 +249,7 @@ impl Src {
     pub fn plain(reg: Reg) -> Src {
         Src {
             reg,
-            relative: false,
+            relative: None,
             swizzle: Swizzle::IDENTITY,
             modifier: SrcMod::None,
         }
@@ -240,6 +261,8 @@ impl Src {
 pub struct Dst {
     /// The register written.
     pub reg: Reg,
+    /// `o[aL + n]` (vs_3_0 outputs): the register number is `reg.index + aL`.
+    pub relative: Option<RelIndex>,
     /// The components written.
     pub mask: WriteMask,
 }

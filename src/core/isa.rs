@@ -1111,13 +1111,21 @@ impl Profile {
         }
     }
 
-    /// Whether ps30 runs shaders of this profile (the emulator, the GPU
-    /// backend, `render`, `compare`): the pixel shaders ps_2_0, ps_2_x (and
-    /// the ps_2_a/ps_2_b shaders compiled to it) and ps_3_0.
+    /// Whether ps30 runs shaders of this profile: the pixel shaders ps_2_0,
+    /// ps_2_x (and the ps_2_a/ps_2_b shaders compiled to it) and ps_3_0 in
+    /// the emulator, the GPU backend, `render` and `compare`; vs_2_0, vs_2_x
+    /// and vs_3_0 in the vertex stage (`emu::vertex`, `run --vertices`).
     pub fn runs(self) -> bool {
         matches!(
             self,
-            Profile::Ps2_0 | Profile::Ps2X | Profile::Ps2A | Profile::Ps2B | Profile::Ps3_0
+            Profile::Ps2_0
+                | Profile::Ps2X
+                | Profile::Ps2A
+                | Profile::Ps2B
+                | Profile::Ps3_0
+                | Profile::Vs2_0
+                | Profile::Vs2X
+                | Profile::Vs3_0
         )
     }
 }

@@ -42,3 +42,4 @@ pub mod scenes;
 pub mod studies;
 pub mod tonemap;
 pub mod verify;
+pub mod vertices;

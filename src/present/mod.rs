@@ -19,3 +19,4 @@ pub mod study;
 pub mod tonemap;
 pub mod unroll;
 pub mod verify;
+pub mod vertices;

@@ -18,23 +18,8 @@ const PROFILES: [&str; 9] = [
     "ps_1_1", "ps_1_2", "ps_1_3", "ps_1_4", "ps_2_0", "ps_2_x", "vs_2_0", "vs_2_x", "vs_3_0",
 ];
 
-/// Relative addressing through the address register (`c[a0.x + n]`, and
-/// `c[aL + n]` in vertex shaders) is not read or written yet: the operand
-/// model holds ps_3_0's `v[aL + n]` alone.
-const A0: &str = "vertex-shader relative addressing (a0, aL on c#) is not modelled";
-
 /// Known disagreements: (`measure:SET/REL`, cause).
-const GAPS: &[(&str, &str)] = &[
-    ("slots:hlsl/gen_profiles/loop__vs_2_0.hlsl", A0),
-    ("slots:hlsl/gen_profiles/loop__vs_2_a.hlsl", A0),
-    ("slots:hlsl/gen_profiles/loop__vs_3_0.hlsl", A0),
-    ("listing:hlsl/gen_profiles/skinning__vs_2_0.hlsl", A0),
-    ("slots:hlsl/gen_profiles/skinning__vs_2_0.hlsl", A0),
-    ("listing:hlsl/gen_profiles/skinning__vs_2_a.hlsl", A0),
-    ("slots:hlsl/gen_profiles/skinning__vs_2_a.hlsl", A0),
-    ("listing:hlsl/gen_profiles/skinning__vs_3_0.hlsl", A0),
-    ("slots:hlsl/gen_profiles/skinning__vs_3_0.hlsl", A0),
-];
+const GAPS: &[(&str, &str)] = &[];
 
 /// One measure's result on one input.
 struct Outcome {

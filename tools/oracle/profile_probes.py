@@ -200,6 +200,51 @@ def limit_probes(profile):
     return out
 
 
+def rel_probes(profile):
+    """Relative addressing in a vertex profile: `c[a0.x + n]`, `c[aL + n]`, vs_3_0's `v[aL + n]`
+    and `o[aL + n]`, and the forms the assembler refuses (each probe's name says which)."""
+    i0 = ["defi i0, 2, 0, 0, 0"]
+    looped = lambda *body: ["loop aL, i0"] + list(body) + ["endloop"]
+    mova = ["mova a0.x, r1.x"]
+    out = [
+        ("rel-c-a0", mova + ["mov r0, c[a0.x + 3]"], []),
+        ("rel-c-a0-base", mova + ["mov r0, c2[a0.x + 3]"], []),
+        ("rel-c-a0-y", ["mova a0.xy, r1", "mov r0, -c[a0.y + 1].yzxw"], []),
+        ("rel-c-a0-w", ["mova a0, r1", "mul r0, r1, c[a0.w + 7].y"], []),
+        ("rel-c-a0-unset", ["mov r0, c[a0.x]"], []),
+        ("rel-c-a0-nocomponent", mova + ["mov r0, c[a0 + 3]"], []),
+        ("rel-c-a0-twocomponents", mova + ["mov r0, c[a0.xy + 3]"], []),
+        ("rel-c-same", mova + ["add r0, c[a0.x + 3], c[a0.x + 3]"], []),
+        ("rel-c-different", mova + ["add r0, c[a0.x + 3], c[a0.x + 4]"], []),
+        ("rel-c-absolute", mova + ["add r0, c[a0.x + 3], c1"], []),
+        ("rel-c-m4x4", mova + ["m4x4 r0, r1, c[a0.x + 4]"], []),
+        ("rel-c-mova", ["mova a0.x, c[a0.x + 1].x"], []),
+        ("rel-c-aL", looped("add r0, r0, c[aL + 5]"), i0),
+        ("rel-c-aL-outside", ["mov r0, c[aL + 1]"], []),
+        ("rel-c-aL-swizzle", looped("add r0, r0, c[aL.x + 5]"), i0),
+        ("rel-c-aL-a0", mova + looped("add r0, c[aL + 5], c[a0.x + 5]"), i0),
+        ("rel-r", mova + ["mov r0, r[a0.x + 1]"], []),
+        ("rel-i", mova + ["rep i[a0.x]", "endrep"], i0),
+        ("rel-v-aL", looped("add r0, r0, v[aL + 1]"), i0 + ["dcl_texcoord v1"]),
+        ("rel-v-a0", mova + ["mov r0, v[a0.x + 1]"], ["dcl_texcoord v1"]),
+        ("mova-dst-r", ["mova r0.x, r1.x"], []),
+    ]
+    if profile != "vs_2_0":
+        out.append(("rel-c-if", mova + ["if_gt c[a0.x].x, r1.x", "mov r0, r1", "endif"], []))
+    if profile == "vs_3_0":
+        outs = ["dcl_texcoord o1", "dcl_texcoord1 o2"]
+        out += [
+            ("rel-o-aL", looped("mov o[aL + 1], r1"), i0 + outs),
+            ("rel-o-aL-mask", looped("mov o[aL + 1].xy, r1"), i0 + outs),
+            ("rel-o-a0", mova + ["mov o[a0.x + 1], r1"], outs),
+            ("rel-c-texldl", mova + ["texldl r0, c[a0.x], s0"], []),
+        ]
+    sub = ["ret", "label l0", "add r0, r0, c[aL + 1]", "ret"]
+    return [(name, vertex(profile, body, pre)) for name, body, pre in out] + [
+        ("rel-c-aL-subroutine", vertex(profile, looped("call l0"), i0, sub)),
+    ]
+
+
 def probes():
     """(relative path, text) of every probe, in a fixed order."""
     out = []
@@ -210,6 +255,9 @@ def probes():
             out.append((f"{profile}/op-{name}.psh", make(profile, body, pre, post)))
         for name, text in reg_probes(profile) + limit_probes(profile):
             out.append((f"{profile}/{name}.psh", text))
+        if profile in VERTEX:
+            for name, text in rel_probes(profile):
+                out.append((f"{profile}/{name}.psh", text))
     # ps_1_x: another instruction set, its own probes (ps1_probes.py)
     for profile in ps1_probes.PS1:
         for name, text in ps1_probes.probes(profile):

@@ -18,7 +18,7 @@
 
 use super::{ctab, Dest, Extra, Instr, ItemKind, Module, Source, CENTROID, CTAB, PP, SAT};
 use crate::core::front::parse::{COMMENT_BLOCK, COMMENT_MORE};
-use crate::core::ir::{SrcMod, WriteMask};
+use crate::core::ir::{Reg, RelIndex, SrcMod, WriteMask};
 use crate::core::isa::{Class, Opcode, RegFile, USAGES};
 use crate::core::profile::Profile;
 use std::fmt::Write;
@@ -206,11 +206,11 @@ fn instruction_line(ins: &Instr, token: u32, profile: Profile) -> (String, Vec<(
     // Token positions: [usage], dst, [predicate], sources (+ relative).
     let mut at = token + 1 + u32::from(matches!(ins.extra, Extra::Decl { .. }));
     let dst_at = at;
-    at += u32::from(ins.dst.is_some());
+    at += ins.dst.map_or(0, |d| 1 + u32::from(d.relative.is_some()));
     if let Some(p) = &ins.predicate {
         anchors.push((line.len() as u32, at));
         let _ = write!(line, "({}) ", source_text(p));
-        at += 1 + u32::from(p.relative);
+        at += 1 + u32::from(p.relative.is_some());
     }
     line.push_str(&mnemonic(ins, profile));
     let mut operands: Vec<(u32, String)> = Vec::new();
@@ -219,7 +219,7 @@ fn instruction_line(ins: &Instr, token: u32, profile: Profile) -> (String, Vec<(
     }
     for s in &ins.src {
         operands.push((at, source_text(s)));
-        at += 1 + u32::from(s.relative);
+        at += 1 + u32::from(s.relative.is_some());
     }
     for (i, v) in literal_texts(&ins.extra).into_iter().enumerate() {
         operands.push((at + i as u32, v));
@@ -277,23 +277,32 @@ fn mnemonic(ins: &Instr, profile: Profile) -> String {
 }
 
 fn dest_text(d: &Dest) -> String {
+    let reg = match d.relative {
+        Some(index) => indexed_text(d.reg, index),
+        None => d.reg.to_string(),
+    };
     if d.mask == WriteMask::ALL {
-        d.reg.to_string()
+        reg
     } else {
-        format!("{}{}", d.reg, d.mask)
+        format!("{reg}{}", d.mask)
+    }
+}
+
+/// `v[aL + 2]`, `c[a0.x]`: a relatively addressed register as the parser
+/// reads it.
+fn indexed_text(reg: Reg, index: RelIndex) -> String {
+    let name = reg.file.info().name;
+    match (reg.file.info().numbered, reg.index) {
+        (true, 0) | (false, _) => format!("{name}[{index}]"),
+        (true, n) => format!("{name}[{index} + {n}]"),
     }
 }
 
 /// A source as the parser reads it: `-v[aL + 2]_abs.x`, `!b0`, `p0.z`.
 pub fn source_text(s: &Source) -> String {
-    let reg = if s.relative {
-        let name = s.reg.file.info().name;
-        match (s.reg.file.info().numbered, s.reg.index) {
-            (true, 0) | (false, _) => format!("{name}[aL]"),
-            (true, n) => format!("{name}[aL + {n}]"),
-        }
-    } else {
-        s.reg.to_string()
+    let reg = match s.relative {
+        Some(index) => indexed_text(s.reg, index),
+        None => s.reg.to_string(),
     };
     let (pre, abs) = match s.modifier {
         SrcMod::None => ("", ""),

@@ -280,7 +280,8 @@ fn breakp(s: &Source) -> String {
 
 /// A destination: the register and its write mask.
 pub fn dest(d: &Dest) -> String {
-    format!("{}{}", d.reg, mask_text(d.mask))
+    let relative = d.relative.map(|i| format!("[{i}]")).unwrap_or_default();
+    format!("{}{relative}{}", d.reg, mask_text(d.mask))
 }
 
 /// Nothing for a full mask, else `.` and the components written (only `.`
@@ -307,7 +308,7 @@ pub fn source(s: &Source) -> String {
         SrcMod::NegAbs => ("-", "_abs"),
         SrcMod::Not => ("!", ""),
     };
-    let relative = if s.relative { "[aL]" } else { "" };
+    let relative = s.relative.map(|i| format!("[{i}]")).unwrap_or_default();
     format!("{pre}{}{relative}{abs}{}", s.reg, swizzle_text(s.swizzle))
 }
 

@@ -63,7 +63,7 @@ pub mod microsoft;
 pub mod read;
 pub mod write;
 
-use crate::core::ir::{Reg, SrcMod, Swizzle, WriteMask};
+use crate::core::ir::{Reg, RelIndex, SrcMod, Swizzle, WriteMask};
 use crate::core::isa::{Compare, Opcode, RegFile};
 use std::fmt;
 
@@ -175,6 +175,8 @@ pub struct Dest {
     pub reg: Reg,
     /// Which components are written (bits 16–19).
     pub mask: WriteMask,
+    /// The index register of vs_3_0's `o[aL + n]`, whose token follows.
+    pub relative: Option<RelIndex>,
     /// [`SAT`] | [`PP`] | [`CENTROID`].
     pub result: u8,
 }
@@ -185,8 +187,9 @@ pub struct Dest {
 pub struct Source {
     /// The register (file and number).
     pub reg: Reg,
-    /// Whether a relative-address token (`aL`) follows the parameter.
-    pub relative: bool,
+    /// The index register whose relative-address token (`aL`, `a0.x` …)
+    /// follows the parameter, if any.
+    pub relative: Option<RelIndex>,
     /// Which component each of x, y, z, w reads (bits 16–23).
     pub swizzle: Swizzle,
     /// Negation and absolute value (bits 24–27).
@@ -201,10 +204,16 @@ impl Instr {
             Extra::Decl { .. } | Extra::Bool(_) => 1,
             Extra::Float(_) | Extra::Int(_) => 4,
         };
-        let sources: u32 = self.src.iter().map(|s| 1 + u32::from(s.relative)).sum();
+        let sources: u32 = self
+            .src
+            .iter()
+            .map(|s| 1 + u32::from(s.relative.is_some()))
+            .sum();
         extra
-            + u32::from(self.dst.is_some())
-            + self.predicate.map_or(0, |p| 1 + u32::from(p.relative))
+            + self.dst.map_or(0, |d| 1 + u32::from(d.relative.is_some()))
+            + self
+                .predicate
+                .map_or(0, |p| 1 + u32::from(p.relative.is_some()))
             + sources
     }
 }
@@ -263,7 +272,10 @@ pub fn register_token(reg: Reg) -> u32 {
 
 /// A destination token.
 pub fn dest_token(d: &Dest) -> u32 {
-    register_token(d.reg) | (d.mask.0 as u32) << 16 | (d.result as u32) << 20
+    register_token(d.reg)
+        | (d.mask.0 as u32) << 16
+        | (d.result as u32) << 20
+        | u32::from(d.relative.is_some()) << 13
 }
 
 /// A source token (without its relative-address token).
@@ -278,7 +290,24 @@ pub fn source_token(s: &Source) -> u32 {
     register_token(s.reg)
         | swizzle << 16
         | (modifier_code(s.modifier) as u32) << 24
-        | u32::from(s.relative) << 13
+        | u32::from(s.relative.is_some()) << 13
+}
+
+/// The relative-address token of an index register: `aL` with the
+/// identity swizzle, `a0` with the replicate swizzle of its component
+/// (what Microsoft's assembler writes for `c[a0.y + n]`: 0xb0550000).
+pub fn relative_token(index: RelIndex) -> u32 {
+    match index {
+        RelIndex::Loop => loop_counter_token(),
+        RelIndex::Addr(c) => {
+            let c = u32::from(c & 3);
+            let replicate = c | c << 2 | c << 4 | c << 6;
+            register_token(Reg {
+                file: RegFile::Address,
+                index: 0,
+            }) | replicate << 16
+        }
+    }
 }
 
 /// The relative-address token of ps_3_0: `aL`, identity swizzle.
@@ -371,7 +400,7 @@ mod tests {
         let src = |file, index| {
             source_token(&Source {
                 reg: Reg { file, index },
-                relative: false,
+                relative: None,
                 swizzle: Swizzle::IDENTITY,
                 modifier: SrcMod::None,
             })
@@ -390,6 +419,7 @@ mod tests {
             dest_token(&Dest {
                 reg: Reg { file, index },
                 mask: WriteMask::ALL,
+                relative: None,
                 result: 0,
             })
         };
@@ -397,6 +427,9 @@ mod tests {
         assert_eq!(dst(RegFile::DepthOut, 0), 0x900f0800);
         assert_eq!(dst(RegFile::Predicate, 0), 0xb00f1000);
         assert_eq!(loop_counter_token(), 0xf0e40800);
+        // Microsoft's assembler's tokens for c[a0.x], c[a0.z] (vs_2_0, vs_3_0).
+        assert_eq!(relative_token(RelIndex::Addr(0)), 0xb0000000);
+        assert_eq!(relative_token(RelIndex::Addr(2)), 0xb0aa0000);
     }
 
     #[test]

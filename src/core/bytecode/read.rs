@@ -13,7 +13,7 @@ use super::{
     modifier_from_code, version_name, Dest, Extra, Instr, Item, ItemKind, Module, ReadError,
     Source, CENTROID, COMMENT, CTAB, END, PP, SAT, VERSION_PS_3_0,
 };
-use crate::core::ir::{Reg, Swizzle, WriteMask};
+use crate::core::ir::{Reg, RelIndex, Swizzle, WriteMask};
 use crate::core::isa::{Compare, Opcode, Operand, RegFile, REG_FILES};
 use crate::core::profile::Profile;
 
@@ -325,22 +325,42 @@ impl Operands<'_, '_> {
 
     fn dest(&mut self) -> Result<Dest, ReadError> {
         let (t, byte) = self.take()?;
-        dest(t, byte, self.profile)
+        let mut d = dest(t, byte, self.profile)?;
+        if t & 1 << 13 != 0 {
+            d.relative = Some(self.index()?);
+        }
+        Ok(d)
     }
 
     fn source(&mut self) -> Result<Source, ReadError> {
         let (t, byte) = self.take()?;
-        let s = source(t, byte, self.profile)?;
-        if s.relative {
-            let (rel, rbyte) = self.take()?;
-            if rel != super::loop_counter_token() {
-                return Err(ReadError::at(
-                    rbyte,
-                    format!("relative-address token {rel:#010x}: ps_3_0 indexes with aL alone (0xf0e40800)"),
-                ));
-            }
+        let mut s = source(t, byte, self.profile)?;
+        if t & 1 << 13 != 0 {
+            s.relative = Some(self.index()?);
         }
         Ok(s)
+    }
+
+    /// The relative-address token after a parameter: `aL`, or in vertex
+    /// shaders one component of `a0` (its replicate swizzle).
+    fn index(&mut self) -> Result<RelIndex, ReadError> {
+        let (rel, byte) = self.take()?;
+        if rel == super::relative_token(RelIndex::Loop) {
+            return Ok(RelIndex::Loop);
+        }
+        let vertex = self.profile.stage() == crate::core::profile::Stage::Vertex;
+        let addr = (0..4).find(|&c| rel == super::relative_token(RelIndex::Addr(c)));
+        match addr {
+            Some(c) if vertex => Ok(RelIndex::Addr(c)),
+            _ if vertex => Err(ReadError::at(
+                byte,
+                format!("relative-address token {rel:#010x}: the index is aL (0xf0e40800) or one component of a0 (0xb0000000, 0xb0550000, 0xb0aa0000, 0xb0ff0000)"),
+            )),
+            _ => Err(ReadError::at(
+                byte,
+                format!("relative-address token {rel:#010x}: {} indexes with aL alone (0xf0e40800)", self.profile),
+            )),
+        }
     }
 }
 
@@ -525,13 +545,14 @@ fn register(t: u32, byte: usize, relative: bool, profile: Profile) -> Result<Reg
 
 /// A destination-format token.
 fn dest(t: u32, byte: usize, profile: Profile) -> Result<Dest, ReadError> {
-    if t & 1 << 13 != 0 {
+    let relative = t & 1 << 13 != 0;
+    let reg = register(t, byte, relative, profile)?;
+    if relative && !(profile == Profile::Vs3_0 && reg.file == RegFile::Output) {
         return Err(ReadError::at(
             byte,
             "a relatively addressed destination (o[aL] is vs_3_0 only)",
         ));
     }
-    let reg = register(t, byte, false, profile)?;
     if (t >> 24) & 0xF != 0 {
         return Err(ReadError::at(
             byte,
@@ -555,6 +576,7 @@ fn dest(t: u32, byte: usize, profile: Profile) -> Result<Dest, ReadError> {
     Ok(Dest {
         reg,
         mask: WriteMask(mask),
+        relative: None,
         result,
     })
 }
@@ -573,7 +595,7 @@ fn source(t: u32, byte: usize, profile: Profile) -> Result<Source, ReadError> {
     let swizzle = Swizzle([0, 1, 2, 3].map(|i| ((s >> (2 * i)) & 3) as u8));
     Ok(Source {
         reg,
-        relative,
+        relative: None,
         swizzle,
         modifier,
     })

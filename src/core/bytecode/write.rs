@@ -13,13 +13,13 @@
 //! [`encode`] lays a module out as tokens.
 
 use super::{
-    dest_token, loop_counter_token, source_token, Dest, Extra, Instr, Item, ItemKind, Module,
-    Source, CENTROID, COMMENT, END, PP, SAT,
+    dest_token, relative_token, source_token, Dest, Extra, Instr, Item, ItemKind, Module, Source,
+    CENTROID, COMMENT, END, PP, SAT,
 };
 use crate::core::diag::{codes, Diagnostic, Diagnostics};
 use crate::core::front::ast::{InstrAst, OperandAst, RegAst, Stmt};
 use crate::core::front::repeat::Expanded;
-use crate::core::ir::{Reg, Span, SrcMod};
+use crate::core::ir::{Reg, RelIndex, Span, SrcMod};
 use crate::core::isa::{Class, Compare, Opcode, Operand, USAGES};
 use crate::core::profile::Profile;
 use crate::core::valid::register::{resolve_reg, swizzle, write_mask};
@@ -67,12 +67,11 @@ fn instruction_tokens(i: &Instr, out: &mut Vec<u32>) {
     }
     if let Some(d) = &i.dst {
         out.push(dest_token(d));
+        out.extend(d.relative.map(relative_token));
     }
     let mut source = |s: &Source| {
         out.push(source_token(s));
-        if s.relative {
-            out.push(loop_counter_token());
-        }
+        out.extend(s.relative.map(relative_token));
     };
     if let Some(p) = &i.predicate {
         source(p);
@@ -418,17 +417,51 @@ fn number(operand: &OperandAst, integer: bool) -> R<u32> {
 
 /// A register in destination format.
 fn dest(reg: &RegAst, result: u8, p: Profile) -> R<Dest> {
-    if reg.negate || reg.not || reg.abs || reg.relative.is_some() {
+    if reg.negate || reg.not || reg.abs {
         return Err(cannot(
             reg.span,
-            "a destination takes no `-`, `!`, `_abs` or `[aL]`",
+            "a destination takes no `-`, `!` or `_abs`",
         ));
     }
+    let (reg_, relative) = indexed(reg, p)?;
     Ok(Dest {
-        reg: resolve_reg(reg, p)?,
+        reg: reg_,
         mask: write_mask(reg)?,
+        relative,
         result,
     })
+}
+
+/// The register of an operand with its relative addressing folded in: the
+/// number the token carries (base plus offsets) and the index register.
+fn indexed(reg: &RegAst, p: Profile) -> R<(Reg, Option<RelIndex>)> {
+    let base = resolve_reg(reg, p)?;
+    let Some(rel) = &reg.relative else {
+        return Ok((base, None));
+    };
+    let index = match (rel.index_reg.as_str(), rel.index_component) {
+        ("aL", _) if rel.index_swizzle.is_none() => RelIndex::Loop,
+        ("a0", Some(c)) => RelIndex::Addr(c),
+        _ => {
+            return Err(cannot(
+                rel.span,
+                "the index register is aL or one component of a0",
+            ))
+        }
+    };
+    let numbered = base.file.info().numbered;
+    let number = (base.index as i64).saturating_add(rel.offset);
+    if (!numbered && rel.offset != 0) || number > 0x7ff {
+        return Err(cannot(
+            rel.span,
+            "the register number does not fit the 11 bits of a token",
+        ));
+    }
+    let reg = Reg {
+        file: base.file,
+        index: number as u32,
+    };
+    Ok((reg, Some(index)))
 }
 
 /// A register in source format.
@@ -441,29 +474,9 @@ fn source(reg: &RegAst, p: Profile) -> R<Source> {
         (false, false, true) => SrcMod::Not,
         _ => return Err(cannot(reg.span, "`!` together with `_abs`")),
     };
-    let base = resolve_reg(reg, p)?;
-    let (index, relative) = match &reg.relative {
-        None => (base.index, false),
-        Some(rel) => {
-            if !rel.index_reg.eq_ignore_ascii_case("aL") || rel.index_swizzle.is_some() {
-                return Err(cannot(rel.span, "ps_3_0 indexes with `aL` alone"));
-            }
-            let numbered = base.file.info().numbered;
-            let index = (base.index as i64).saturating_add(rel.offset);
-            if (!numbered && rel.offset != 0) || index > 0x7ff {
-                return Err(cannot(
-                    rel.span,
-                    "the register number does not fit the 11 bits of a token",
-                ));
-            }
-            (index as u32, true)
-        }
-    };
+    let (reg_, relative) = indexed(reg, p)?;
     Ok(Source {
-        reg: Reg {
-            file: base.file,
-            index,
-        },
+        reg: reg_,
         relative,
         swizzle: swizzle(reg)?,
         modifier,

@@ -189,7 +189,7 @@ impl Ctx<'_> {
     /// Source `s` read at swizzle positions `positions`, with its modifier.
     pub(crate) fn operand(&self, s: &Src, positions: &[usize]) -> Result<String, DecompileError> {
         let comps: Vec<u8> = positions.iter().map(|&p| s.swizzle.0[p]).collect();
-        self.register(s.reg, s.relative, s.modifier, &comps)
+        self.register(s.reg, s.relative.is_some(), s.modifier, &comps)
     }
 
     /// [`Ctx::operand`] of a component-wise operation, where a source that
@@ -202,9 +202,9 @@ impl Ctx<'_> {
     ) -> Result<String, DecompileError> {
         let comps: Vec<u8> = positions.iter().map(|&p| s.swizzle.0[p]).collect();
         if comps.len() > 1 && comps.iter().all(|&c| c == comps[0]) {
-            return self.register(s.reg, s.relative, s.modifier, &comps[..1]);
+            return self.register(s.reg, s.relative.is_some(), s.modifier, &comps[..1]);
         }
-        self.register(s.reg, s.relative, s.modifier, &comps)
+        self.register(s.reg, s.relative.is_some(), s.modifier, &comps)
     }
 
     /// Register `reg` read at components `comps`, with modifier `m`.

@@ -131,7 +131,7 @@ fn scan(shader: &Shader, instructions: &[Instruction]) -> Scan {
                 *s.uses.floats.entry(reg).or_default() |= bits;
             };
             match src.reg.file {
-                RegFile::Const if src.relative => {
+                RegFile::Const if src.relative.is_some() => {
                     s.uses.relative.insert(src.reg.index);
                 }
                 RegFile::Const => {

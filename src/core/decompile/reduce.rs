@@ -99,7 +99,7 @@ fn reduction(shader: &Shader, ins: &[Instruction], a: usize) -> Option<(usize, u
             && (written == d.mask.0 || wider && written & d.mask.0 == d.mask.0)
             && x.src[0].reg == d.reg
             && x.src[0].modifier == SrcMod::None
-            && !x.src[0].relative
+            && x.src[0].relative.is_none()
             && lanes.iter().all(|&p| x.src[0].swizzle.0[p] as usize == p);
         same.then_some(i)
     };
@@ -117,7 +117,7 @@ fn reduction(shader: &Shader, ins: &[Instruction], a: usize) -> Option<(usize, u
 /// component that `lanes` read.
 fn constant(shader: &Shader, x: &Instruction, k: usize, lanes: &[usize], bits: u32) -> bool {
     let Some(s) = x.src.get(k) else { return false };
-    if s.reg.file != RegFile::Const || s.relative || s.modifier != SrcMod::None {
+    if s.reg.file != RegFile::Const || s.relative.is_some() || s.modifier != SrcMod::None {
         return false;
     }
     let Some(value) = shader.program().float_def(s.reg.index) else {
@@ -159,7 +159,7 @@ fn only_sincos_reads(shader: &Shader, ins: &[Instruction], at: usize, d: Dst) ->
             let sincos = x.op == Opcode::SinCos
                 && x.src.len() == 1
                 && s.modifier == SrcMod::None
-                && !s.relative;
+                && s.relative.is_none();
             if !sincos {
                 return false;
             }

@@ -363,6 +363,32 @@ pub const SGN_SCRATCH_3_0: Code = "X5797";
 /// "When a ps_2_0 shader writes to oCn, it must write to all of oC(n-1)
 /// down to oC0 (no gaps)."
 pub const COLOUR_OUTPUT_GAP: Code = "X5573";
+/// "aL can only be referenced … inside a loop/endloop block" in the vertex
+/// profiles (ps_3_0's is [`AL_OUTSIDE_LOOP`]).
+pub const AL_OUTSIDE_LOOP_VS: Code = "X5705";
+/// "Relative address must specify a single component selector (.x, .y, .z
+/// or .w)": `c[a0 + 3]`, `c[a0.xy]`.
+pub const RELATIVE_COMPONENT: Code = "X5804";
+/// "Relative address for input (v#) can only be aL register" (vs_3_0).
+pub const INPUT_RELATIVE_AL: Code = "X5964";
+/// "Relative addressing of o# register requires aL register" (vs_3_0).
+pub const OUTPUT_RELATIVE_AL: Code = "X5728";
+/// "Different relative addressing of constant registers cannot be combined
+/// in one instruction" (`c[a0.x + 3]` beside `c[a0.x + 4]` or `c[aL]`).
+pub const CONST_RELATIVE_DIFFERENT: Code = "X5743";
+/// "Absolute and relative addressing of constant registers cannot be
+/// combined in one instruction" (vs_2_0, vs_2_x).
+pub const CONST_RELATIVE_ABSOLUTE: Code = "X5747";
+/// The same rule in vs_3_0.
+pub const CONST_RELATIVE_ABSOLUTE_3_0: Code = "X5749";
+/// "mova instruction can only write to the address register".
+pub const MOVA_DESTINATION: Code = "X5372";
+/// [`MOVA_DESTINATION`] in vs_3_0.
+pub const MOVA_DESTINATION_3_0: Code = "X5713";
+/// [`CONST_RELATIVE_DIFFERENT`] in vs_3_0.
+pub const CONST_RELATIVE_DIFFERENT_3_0: Code = "X5745";
+/// [`AL_OUTSIDE_LOOP_VS`] in vs_3_0.
+pub const AL_OUTSIDE_LOOP_VS_3_0: Code = "X5707";
 
 // --- ps_1_x (core::ps1): the rules D3DAssemble holds ps_1_1–ps_1_4 to ------
 // Where ps_1_4 words a rule of its own, its code is the second constant.

@@ -599,7 +599,7 @@ impl Builder<'_> {
             RegFile::Const if idx < CONSTS => self.const_row[idx as usize],
             // A relative base may lie past v9: the read lands inside v0 … v9
             // or reads 0 (Worker::row).
-            RegFile::Input if s.relative => self.layout.input + 4 * idx as u16,
+            RegFile::Input if s.relative.is_some() => self.layout.input + 4 * idx as u16,
             RegFile::Input | RegFile::Texture => {
                 let v = slot(self.profile, s.reg.file, idx)
                     .ok_or_else(|| malformed(i, format!("{} is no input here", s.reg)))?;
@@ -614,7 +614,7 @@ impl Builder<'_> {
             }
             _ => return Err(malformed(i, format!("{} cannot be read here", s.reg))),
         };
-        if s.relative && s.reg.file != RegFile::Input {
+        if s.relative.is_some() && s.reg.file != RegFile::Input {
             return Err(malformed(
                 i,
                 format!("relative addressing of {} (only v# allowed)", s.reg),
@@ -630,7 +630,12 @@ impl Builder<'_> {
         Ok(SrcOp {
             row,
             swz: pack_swizzle(s.swizzle),
-            flags: modifier | if s.relative { SrcOp::RELATIVE } else { 0 },
+            flags: modifier
+                | if s.relative.is_some() {
+                    SrcOp::RELATIVE
+                } else {
+                    0
+                },
         })
     }
 
@@ -893,7 +898,7 @@ impl Builder<'_> {
         let d = self.dst(i, x)?;
         let a = self.src_at(i, x, 0)?;
         let m = operand(i, x, 1)?;
-        if m.relative {
+        if m.relative.is_some() {
             return Err(malformed(i, "relative matrix operand"));
         }
         let last = m.reg.index + rows as u32 - 1;
@@ -1153,7 +1158,8 @@ pub fn compile(shader: &Shader) -> Result<Compiled, EmuError> {
 /// [`compile`], each micro-op charging its instruction's slots under `table`.
 pub fn compile_under(shader: &Shader, table: SlotTable) -> Result<Compiled, EmuError> {
     let program = shader.program();
-    if !program.profile.runs() {
+    let pixel = program.profile.stage() == crate::core::profile::Stage::Pixel;
+    if !program.profile.runs() || !pixel {
         return Err(EmuError::NotRun {
             profile: program.profile,
         });

@@ -92,6 +92,7 @@ mod tests;
 mod tests_layered;
 mod texop;
 mod texop3;
+pub mod vertex;
 
 pub use compile::{compile, compile_under, Compiled, MicroOp};
 

@@ -156,7 +156,7 @@ fn src(s: &str) -> Src {
     let (reg, relative) = reg(body);
     Src {
         reg,
-        relative,
+        relative: relative.then_some(crate::core::ir::RelIndex::Loop),
         swizzle: sw.map(swizzle).unwrap_or(Swizzle::IDENTITY),
         modifier,
     }
@@ -170,6 +170,7 @@ fn dst(s: &str) -> Dst {
     };
     Dst {
         reg: reg(body).0,
+        relative: None,
         mask: m,
     }
 }

@@ -198,6 +198,9 @@ pub struct RelAst {
     pub index_reg: CompactString,
     /// Swizzle written on the index register, which ps_3_0 forbids.
     pub index_swizzle: Option<Span>,
+    /// The component that swizzle selects when it is one letter (`a0.y`
+    /// is 1), `None` for none or several.
+    pub index_component: Option<u8>,
     /// Sum of the constant offsets.
     pub offset: i64,
     /// The whole `[…]`.

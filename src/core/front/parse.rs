@@ -1066,8 +1066,16 @@ impl<'a> Cursor<'a> {
                 .with_help("relative addressing in ps_3_0 is written v[aL + n]"));
         };
         let swz_start = self.pos();
+        let mut index_component = None;
         let index_swizzle = if self.eat(char('.')).is_some() {
-            self.eat(take_while(|c: char| c.is_ascii_alphabetic()));
+            let letters = self.eat(take_while(|c: char| c.is_ascii_alphabetic()));
+            index_component = match letters.unwrap_or_default().to_ascii_lowercase().as_str() {
+                "x" | "r" => Some(0),
+                "y" | "g" => Some(1),
+                "z" | "b" => Some(2),
+                "w" | "a" => Some(3),
+                _ => None,
+            };
             Some(self.span_from(swz_start))
         } else {
             None
@@ -1120,6 +1128,7 @@ impl<'a> Cursor<'a> {
         Ok(RelAst {
             index_reg: index_reg.into(),
             index_swizzle,
+            index_component,
             offset,
             span: self.span_from(start),
         })

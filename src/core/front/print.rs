@@ -1,7 +1,7 @@
 //! The assembly writer: prints a program as plain ps_3_0 assembly (no
 //! macros), which the front end parses back to the same program.
 
-use crate::core::ir::{Dst, Instruction, Program, Src, SrcMod};
+use crate::core::ir::{Dst, Instruction, Program, Reg, RelIndex, Src, SrcMod};
 use crate::core::isa::{Opcode, RegFile};
 use std::fmt::Write;
 
@@ -92,19 +92,27 @@ pub fn write_instruction(ins: &Instruction) -> String {
 }
 
 fn write_dst(d: &Dst) -> String {
-    format!("{}{}", d.reg, d.mask)
+    match d.relative {
+        Some(index) => format!("{}{}", relative_reg(d.reg, index), d.mask),
+        None => format!("{}{}", d.reg, d.mask),
+    }
+}
+
+/// `v[aL + 2]`, `c[a0.x]`: a relatively addressed register as the parser
+/// reads it (the offset is the register's number).
+fn relative_reg(reg: Reg, index: RelIndex) -> String {
+    let name = reg.file.info().name;
+    match reg.index {
+        0 => format!("{name}[{index}]"),
+        n => format!("{name}[{index} + {n}]"),
+    }
 }
 
 /// Prints a source operand with its modifiers.
 pub fn write_src(s: &Src) -> String {
-    let reg = if s.relative {
-        if s.reg.index == 0 {
-            "v[aL]".to_string()
-        } else {
-            format!("v[aL + {}]", s.reg.index)
-        }
-    } else {
-        s.reg.to_string()
+    let reg = match s.relative {
+        Some(index) => relative_reg(s.reg, index),
+        None => s.reg.to_string(),
     };
     match s.modifier {
         SrcMod::None => format!("{reg}{}", s.swizzle),

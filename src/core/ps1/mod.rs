@@ -250,13 +250,14 @@ fn shader_of(program: &Program) -> ir::Shader {
             dst: i.dst.map(|d| ir::Dst {
                 reg: d.reg,
                 mask: d.mask,
+                relative: None,
             }),
             src: i
                 .src
                 .iter()
                 .map(|s| ir::Src {
                     reg: s.reg,
-                    relative: false,
+                    relative: None,
                     swizzle: s.swizzle,
                     modifier: if s.modifier.negated() {
                         ir::SrcMod::Neg

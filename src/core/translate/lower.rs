@@ -233,7 +233,7 @@ impl Lower<'_> {
 
     /// A source operand with its swizzle and modifier applied.
     pub fn read(&mut self, s: &Src) -> Result<Expr, TranslateError> {
-        let v = self.reg(s.reg, s.relative)?;
+        let v = self.reg(s.reg, s.relative.is_some())?;
         Ok(self.modify(v, s.swizzle, s.modifier))
     }
 

@@ -193,7 +193,7 @@ pub fn translate_specialised(
     spec: &Specialisation,
 ) -> Result<Translation, TranslateError> {
     let profile = shader.program().profile;
-    if !profile.runs() {
+    if !profile.runs() || profile.stage() != crate::core::profile::Stage::Pixel {
         return Err(TranslateError::Unsupported(format!(
             "a {profile} shader: ps30 translates ps_2_0, ps_2_x and ps_3_0 pixel shaders"
         )));

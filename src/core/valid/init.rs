@@ -180,7 +180,7 @@ pub fn reads_of(p: &Program, ins: &Instruction, file: RegFile) -> Vec<(u32, u8)>
     }
     let dims = dimension(p, ins);
     for (k, s) in ins.src.iter().enumerate() {
-        if s.reg.file != file || s.relative {
+        if s.reg.file != file || s.relative.is_some() {
             continue;
         }
         let need = match ins.op {

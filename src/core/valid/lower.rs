@@ -31,6 +31,7 @@ pub enum Lowered {
 use super::register::{foreign_register, no_modifiers, resolve_reg, swizzle, write_mask};
 
 mod decl;
+mod relative;
 use decl::{lower_dcl, lower_def};
 
 type R<T> = Result<T, Diagnostic>;
@@ -431,26 +432,7 @@ fn grammar_of_operands(ast: &InstrAst, info: &OpInfo, p: Profile) -> R<()> {
             continue;
         };
         let reg = resolve_reg(r, p)?;
-        let index = r.relative.as_ref().filter(|rel| rel.index_reg == "aL");
-        if let Some(span) = index.and_then(|rel| rel.index_swizzle) {
-            return Err(Diagnostic::coded(
-                codes::SCALAR,
-                span,
-                "aL is a scalar register: no swizzle",
-            )
-            .with_label("remove the swizzle"));
-        }
-        if let (Some(rel), false) = (&r.relative, reg.file == RegFile::Input) {
-            return Err(Diagnostic::coded(
-                codes::REGISTER,
-                rel.span,
-                format!(
-                    "`{}` registers cannot be relatively addressed in ps_3_0",
-                    reg.file.info().name
-                ),
-            )
-            .with_label("only v[aL + n] is indexable"));
-        }
+        relative::grammar(r, reg, p)?;
         let scalar = matches!(
             reg.file,
             RegFile::LoopCounter | RegFile::ConstBool | RegFile::DepthOut | RegFile::Face
@@ -493,7 +475,22 @@ fn operands(ast: &InstrAst, info: &OpInfo, p: Profile) -> R<(Option<Dst>, Vec<Sr
             }
         };
         match kind {
-            Operand::Dst | Operand::KillSrc => dst = Some(destination(reg, *kind, p)?),
+            Operand::Dst | Operand::KillSrc => {
+                let d = destination(reg, *kind, p)?;
+                if info.mnemonic == "mova" && d.reg.file != RegFile::Address {
+                    let code = match p {
+                        Profile::Vs3_0 => codes::MOVA_DESTINATION_3_0,
+                        _ => codes::MOVA_DESTINATION,
+                    };
+                    return Err(Diagnostic::coded(
+                        code,
+                        reg.span,
+                        "mova writes the address register a0",
+                    )
+                    .with_label("expected a0"));
+                }
+                dst = Some(d);
+            }
             Operand::PredDst => dst = Some(predicate_destination(reg, p)?),
             Operand::Src | Operand::ScalarSrc => {
                 texture_operand(reg, pos, info, p)?;
@@ -617,6 +614,7 @@ fn predicate_destination(reg: &RegAst, p: Profile) -> R<Dst> {
     no_modifiers(reg, "the predicate destination")?;
     Ok(Dst {
         reg: r,
+        relative: None,
         mask: write_mask(reg)?,
     })
 }
@@ -642,7 +640,7 @@ fn sampler_operand(reg: &RegAst, pos: usize, mnemonic: &str, p: Profile) -> R<Sr
     }
     Ok(Src {
         reg: r,
-        relative: false,
+        relative: None,
         swizzle: swizzle(reg)?,
         modifier: SrcMod::None,
     })
@@ -1058,16 +1056,30 @@ fn destination(r: &RegAst, kind: Operand, p: Profile) -> R<Dst> {
         )
         .with_label("remove the modifier"));
     }
-    if let Some(rel) = &r.relative {
-        return Err(Diagnostic::coded(
-            codes::DESTINATION_RELATIVE,
-            rel.span,
-            "a destination cannot be relatively addressed",
-        )
-        .with_label("only sources v[aL + n] may be indexed"));
-    }
+    let (reg, relative) = match &r.relative {
+        Some(_) if reg.file == RegFile::Output => match relative::index(r, reg, p)? {
+            Some((index, number)) => (
+                Reg {
+                    file: reg.file,
+                    index: number,
+                },
+                Some(index),
+            ),
+            None => (reg, None),
+        },
+        Some(rel) => {
+            return Err(Diagnostic::coded(
+                codes::DESTINATION_RELATIVE,
+                rel.span,
+                "a destination cannot be relatively addressed",
+            )
+            .with_label("only vs_3_0's outputs o[aL + n] may be indexed"))
+        }
+        None => (reg, None),
+    };
     Ok(Dst {
         reg,
+        relative,
         mask: write_mask(r)?,
     })
 }
@@ -1126,51 +1138,9 @@ fn float_source(r: &RegAst, p: Profile) -> R<Src> {
         )
         .with_label("use `-` to negate"));
     }
-    let relative = match &r.relative {
-        None => false,
-        Some(rel) => {
-            if rel.index_reg != "aL" {
-                let d = Diagnostic::coded(
-                    codes::REGISTER,
-                    rel.span,
-                    format!("`{}` cannot index registers in ps_3_0", rel.index_reg),
-                )
-                .with_label("expected aL");
-                return Err(
-                    match foreign_register(rel.index_reg.trim_end_matches(char::is_numeric)) {
-                        Some(why) => d.with_help(why),
-                        None => d,
-                    },
-                );
-            }
-            if let Some(span) = rel.index_swizzle {
-                return Err(Diagnostic::coded(
-                    codes::SCALAR,
-                    span,
-                    "aL is a scalar register: no swizzle",
-                )
-                .with_label("remove the swizzle"));
-            }
-            // Microsoft's assembler takes a base past v9 (`v[aL + 10]` is
-            // `v10[aL]`: what aL adds may bring it back, and a read that
-            // lands outside v0 … v9 is undefined, 0 in the emulator), up to
-            // what the token's register number holds.
-            let total = (reg.index as i64).saturating_add(rel.offset);
-            if total >= MAX_RELATIVE_BASE {
-                return Err(Diagnostic::coded(
-                    codes::REGISTER,
-                    rel.span,
-                    format!("base register v{total} is out of range"),
-                )
-                .with_label(format!("v0 … v{}", MAX_RELATIVE_BASE - 1)));
-            }
-            true
-        }
-    };
-    let index = if relative {
-        reg.index + r.relative.as_ref().map_or(0, |rel| rel.offset as u32)
-    } else {
-        reg.index
+    let (index, relative) = match relative::index(r, reg, p)? {
+        Some((index, number)) => (number, Some(index)),
+        None => (reg.index, None),
     };
     Ok(Src {
         reg: Reg {
@@ -1226,7 +1196,7 @@ fn predicate_operand(r: &RegAst, allow_full: bool, p: Profile) -> R<Src> {
     }
     Ok(Src {
         reg,
-        relative: false,
+        relative: None,
         swizzle: s,
         modifier: if r.not { SrcMod::Not } else { SrcMod::None },
     })
@@ -1244,7 +1214,7 @@ fn condition(r: &RegAst, p: Profile) -> R<Src> {
             }
             Ok(Src {
                 reg,
-                relative: false,
+                relative: None,
                 swizzle: Swizzle::IDENTITY,
                 modifier: if r.not { SrcMod::Not } else { SrcMod::None },
             })

@@ -22,9 +22,9 @@ pub mod register;
 use crate::core::diag::{codes, Diagnostic, Diagnostics, SourceFile};
 use crate::core::front::ast::Stmt;
 use crate::core::front::repeat::Expanded;
-use crate::core::ir::{Info, Instruction, Program, Reg, Shader, Span, Src, SrcMod};
+use crate::core::ir::{Info, Instruction, Program, Reg, RelIndex, Shader, Span, Src, SrcMod};
 use crate::core::isa::{self, Class, Opcode, RegFile};
-use crate::core::profile::Profile;
+use crate::core::profile::{Profile, Stage};
 use lower::Lowered;
 use std::collections::{BTreeMap, BTreeSet};
 
@@ -493,7 +493,7 @@ impl<'p, 'd> Checker<'p, 'd> {
                     )),
                 ),
                 RegFile::Input | RegFile::Position | RegFile::Face
-                    if !s.relative
+                    if s.relative.is_none()
                         && !self.declared_inputs.contains(&(s.reg.file, s.reg.index)) =>
                 {
                     let code = match s.reg.file {
@@ -638,6 +638,10 @@ impl<'p, 'd> Checker<'p, 'd> {
         // without a set: an instruction has a few sources, and this runs
         // for every instruction.
         let key = |s: &Src| (s.reg.file, s.reg.index, s.relative);
+        if let Some(d) = mixed_relative_constants(src, self.p.profile, ins.origin.span) {
+            self.err(ins, d);
+            return;
+        }
         let abs = |s: &Src| matches!(s.modifier, SrcMod::Abs | SrcMod::NegAbs);
         let mixed = src.iter().enumerate().any(|(i, s)| {
             s.reg.file == RegFile::Const
@@ -697,16 +701,17 @@ impl<'p, 'd> Checker<'p, 'd> {
         let Some(innermost) = self.stack.iter().rev().find(|o| o.block == Block::Loop) else {
             // A subroutine may use aL when every call to it runs inside a
             // loop (judged once the calls are known).
-            if ins.src.iter().any(|s| s.relative) && self.current.is_some() {
+            let uses_al = indexes_by_al(ins);
+            if uses_al && self.current.is_some() {
                 self.sub_relative.push(idx);
             }
-            if self.current.is_none() && ins.src.iter().any(|s| s.relative) {
+            if self.current.is_none() && uses_al {
                 self.err(
                     ins,
                     Diagnostic::coded(
-                        codes::AL_OUTSIDE_LOOP,
+                        al_outside_loop(self.p.profile),
                         ins.origin.span,
-                        "v[aL + n] used outside a loop",
+                        format!("{}[aL + n] used outside a loop", indexed_by_al(ins)),
                     )
                     .with_label("aL is only defined inside loop … endloop")
                     .with_help("wrap it in `loop aL, i#` … `endloop` (rep does not set aL)"),
@@ -715,7 +720,8 @@ impl<'p, 'd> Checker<'p, 'd> {
             return;
         };
         let loop_at = innermost.index;
-        for s in ins.src.iter().filter(|s| s.relative) {
+        let by_al = |s: &&Src| s.relative == Some(RelIndex::Loop) && s.reg.file == RegFile::Input;
+        for s in ins.src.iter().filter(by_al) {
             if let Some(d) = self.undeclared_relative(s, loop_at, ins.origin.span) {
                 self.err(ins, d);
                 break;
@@ -1179,9 +1185,12 @@ impl Checker<'_, '_> {
                 found.push((
                     idx,
                     Diagnostic::coded(
-                        codes::AL_OUTSIDE_LOOP,
+                        al_outside_loop(self.p.profile),
                         at(idx).origin.span,
-                        "v[aL + n] in a subroutine that is not always called from inside a loop",
+                        format!(
+                            "{}[aL + n] in a subroutine that is not always called from inside a loop",
+                            indexed_by_al(at(idx))
+                        ),
                     )
                     .with_label("aL is only defined inside loop … endloop")
                     .with_help("call the subroutine only from inside `loop aL, i#` … `endloop`"),
@@ -1191,6 +1200,75 @@ impl Checker<'_, '_> {
         for (i, d) in found {
             self.err(at(i), d);
         }
+    }
+}
+
+/// Constants read relatively beside different relative reads or plain ones
+/// in one instruction, which Microsoft's vertex validator refuses before
+/// it counts read ports (X5743, X5747; X5749 in vs_3_0).
+fn mixed_relative_constants(src: &[Src], profile: Profile, span: Span) -> Option<Diagnostic> {
+    let consts: Vec<&Src> = src
+        .iter()
+        .filter(|s| s.reg.file == RegFile::Const)
+        .collect();
+    let first = consts.iter().find(|s| s.relative.is_some())?;
+    let key = |s: &Src| (s.reg.index, s.relative);
+    if consts
+        .iter()
+        .any(|s| s.relative.is_some() && key(s) != key(first))
+    {
+        return Some(
+            Diagnostic::coded(
+                match profile {
+                    Profile::Vs3_0 => codes::CONST_RELATIVE_DIFFERENT_3_0,
+                    _ => codes::CONST_RELATIVE_DIFFERENT,
+                },
+                span,
+                "two different relatively addressed constants in one instruction",
+            )
+            .with_label("one constant register per instruction")
+            .with_help("copy one of them into a temporary r# first"),
+        );
+    }
+    consts.iter().any(|s| s.relative.is_none()).then(|| {
+        let code = match profile {
+            Profile::Vs3_0 => codes::CONST_RELATIVE_ABSOLUTE_3_0,
+            _ => codes::CONST_RELATIVE_ABSOLUTE,
+        };
+        Diagnostic::coded(
+            code,
+            span,
+            "a relatively addressed constant beside a plain one in one instruction",
+        )
+        .with_label("one constant register per instruction")
+        .with_help("copy one of them into a temporary r# first")
+    })
+}
+
+/// Whether an instruction indexes a register by `aL` (`v[aL + n]`,
+/// `c[aL + n]`, `o[aL + n]`).
+fn indexes_by_al(ins: &Instruction) -> bool {
+    let src = ins.src.iter().any(|s| s.relative == Some(RelIndex::Loop));
+    src || ins.dst.is_some_and(|d| d.relative == Some(RelIndex::Loop))
+}
+
+/// The name of the file an instruction indexes by `aL` (`v`, `c`, `o`).
+fn indexed_by_al(ins: &Instruction) -> &'static str {
+    let by_al = ins
+        .src
+        .iter()
+        .find(|s| s.relative == Some(RelIndex::Loop))
+        .map(|s| s.reg.file);
+    let file = by_al.or(ins.dst.filter(|d| d.relative.is_some()).map(|d| d.reg.file));
+    file.map_or("v", |f| f.info().name)
+}
+
+/// Microsoft's code for `aL` outside a loop, which differs by stage.
+fn al_outside_loop(profile: Profile) -> codes::Code {
+    match profile.stage() {
+        Stage::Vertex if profile == Profile::Vs3_0 => codes::AL_OUTSIDE_LOOP_VS_3_0,
+        Stage::Vertex => codes::AL_OUTSIDE_LOOP_VS,
+        _ => codes::AL_OUTSIDE_LOOP,
     }
 }
 
