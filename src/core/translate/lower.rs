@@ -140,18 +140,23 @@ impl Lower<'_> {
 
     /// A constant the draw fixes (`bits`, flushed): each finite component
     /// as a literal, except a zero that flushing made (a denormal the draw
-    /// gave); that one and ∞ and NaN are read from the constant block and
-    /// flushed at run time. A denormal folded to a literal zero would let a
-    /// device's compiler drop `x + 0` (Vulkan lets it), and the `add` probe
-    /// of a denormal constant would measure that instead of the device's
-    /// arithmetic; the zeros a draw gives are kept as literals (pass 1
-    /// runs 7 to 15 times slower on llvmpipe with them read at run time).
+    /// gave) and, under rules without the zero-multiply rule, every zero;
+    /// those and ∞ and NaN are read from the constant block and flushed at
+    /// run time. A denormal folded to a literal zero lets a device's
+    /// compiler drop `x + 0` (Vulkan lets it; the H100's did), so the `add`
+    /// probe of a denormal constant would measure that instead of the
+    /// device's arithmetic; and a literal zero lets it fold `x · 0` to 0,
+    /// which only the zero-multiply rule allows (Mesa's does it). The zeros
+    /// a draw gives stay literals otherwise: pass 1 runs 7 to 15 times
+    /// slower on llvmpipe with them read at run time.
     fn fixed_value(&mut self, reg: Reg, bits: [u32; 4]) -> Expr {
         let values = bits.map(f32::from_bits);
         let given = self.cx.spec.constant(reg.index).unwrap_or(bits);
         let folds = values.map(|x| x.is_finite());
-        let folds: [bool; 4] =
-            std::array::from_fn(|c| folds[c] && (values[c] != 0.0 || given[c] & 0x7FFF_FFFF == 0));
+        let zero_mul = self.rules.zero_mul();
+        let folds: [bool; 4] = std::array::from_fn(|c| {
+            folds[c] && (values[c] != 0.0 || (zero_mul && given[c] & 0x7FFF_FFFF == 0))
+        });
         let foldable = |c: usize| folds[c];
         let from_block = if (0..4).all(foldable) {
             None
