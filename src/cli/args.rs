@@ -692,7 +692,15 @@ impl BackendArgs {
         use ps30::jobs::backend::Backend;
         Ok(match self.backend {
             BackendArg::Emulator => Backend::Emulator,
-            BackendArg::Gpu => Backend::Gpu(std::sync::Arc::new(ps30::core::gpu::Gpu::open()?)),
+            BackendArg::Gpu => {
+                let g = std::sync::Arc::new(ps30::core::gpu::Gpu::open()?);
+                // The device lives until the process ends, and the OS takes
+                // it back then: closing it first (the driver freeing a 4K
+                // frame's buffers) took 40 ms of a 3840×2160 tone map on an
+                // H100 (docs/speed.md).
+                std::mem::forget(g.clone());
+                Backend::Gpu(g)
+            }
         })
     }
 

@@ -46,8 +46,8 @@ impl Backend {
 
     /// Rows per band for a job that draws a `width`-pixel image in bands:
     /// `emulator` on the emulator (its batches want small bands), the
-    /// device's [`Gpu::max_rows`] on a GPU (each draw there uploads its
-    /// textures, so fewer draws are faster).
+    /// device's [`Gpu::max_rows`] on a GPU (each draw there has a fixed
+    /// cost: its inputs, targets and read-back buffers are made anew).
     pub fn band_rows(&self, width: u32, emulator: u32) -> u32 {
         match self {
             Backend::Emulator => emulator,

@@ -600,8 +600,9 @@ fn assemble(
 }
 
 /// Each texel of a read-back target decoded by `decode`, row by row (the
-/// rows in parallel: a 4K target is 8 million texels).
-fn texels<T: Send>(
+/// rows in parallel, each written in place: a 4K target is 8 million
+/// texels, and collecting rows as they come took longer than the draw).
+fn texels<T: Send + Copy + Default>(
     w: u32,
     h: u32,
     r: &Readback,
@@ -609,15 +610,18 @@ fn texels<T: Send>(
     decode: impl Fn(&[u8]) -> T + Sync,
 ) -> Vec<T> {
     let (pitch, texel) = (r.pitch as usize, r.texel as usize);
-    let row_bytes = w as usize * texel;
-    (0..h as usize)
-        .into_par_iter()
-        .flat_map_iter(|y| {
-            bytes[y * pitch..y * pitch + row_bytes]
-                .chunks_exact(texel)
-                .map(&decode)
-        })
-        .collect()
+    let width = w as usize;
+    let row_bytes = width * texel;
+    let mut out = vec![T::default(); width * h as usize];
+    out.par_chunks_mut(width.max(1))
+        .enumerate()
+        .for_each(|(y, row)| {
+            let src = &bytes[y * pitch..y * pitch + row_bytes];
+            for (t, b) in row.iter_mut().zip(src.chunks_exact(texel)) {
+                *t = decode(b);
+            }
+        });
+    out
 }
 
 /// The bind group: constants, textures with their samplers, inputs.
@@ -659,7 +663,10 @@ impl Bindings {
                 }),
             ));
         }
-        let inputs = (!iface.inputs.is_empty()).then(|| input_texture(gpu, draw, iface));
+        let inputs = match iface.inputs.is_empty() {
+            true => None,
+            false => Some(input_texture(gpu, draw, iface)?),
+        };
         if inputs.is_some() {
             let ty = texture_type(false, wgpu::TextureViewDimension::D2Array);
             layout_entries.push(entry(interface::DRAW_INPUTS_BINDING, ty));
@@ -794,8 +801,10 @@ fn mapped(
     sampler::map(&state, count, register, ty, gpu.clamp_to_border())
 }
 
-/// What the translation needs of each declared sampler under the draw's
-/// states (`translate::specialise`): only the emulation they ask for.
+/// What the translation may assume of the draw (`translate::specialise`):
+/// each declared sampler carries only the emulation its state asks for,
+/// the float constants are the draw's, and the inputs arrive flushed where
+/// the float rules flush them ([`input_texture`] does it on the CPU).
 fn specialisation(
     gpu: &Gpu,
     shader: &Shader,
@@ -805,6 +814,14 @@ fn specialisation(
     for d in &shader.program().samplers {
         spec.set(d.index, mapped(gpu, draw, d.index, d.ty)?.spec);
     }
+    spec.set_constants(
+        draw.constants
+            .float
+            .iter()
+            .map(|v| v.map(f32::to_bits))
+            .collect(),
+    );
+    spec.set_inputs_flushed(draw.float_rules.flush_denormals());
     Ok(spec)
 }
 
@@ -838,8 +855,14 @@ fn bind_sampler(
 }
 
 /// The inputs, evaluated per pixel with the emulator's formula, one layer
-/// per declared `v#` in register order.
-fn input_texture(gpu: &Gpu, draw: &Draw, iface: &translate::Interface) -> wgpu::Texture {
+/// per declared `v#` in register order; under the `hardware` rules with
+/// denormals flushed, as the emulator reads them (the shader then reads
+/// them as they are: [`specialisation`]).
+fn input_texture(
+    gpu: &Gpu,
+    draw: &Draw,
+    iface: &translate::Interface,
+) -> Result<wgpu::Texture, GpuError> {
     let (w, h) = (draw.target_width, draw.target_height);
     let texture = gpu.device.create_texture(&wgpu::TextureDescriptor {
         label: Some("ps30 inputs"),
@@ -855,6 +878,7 @@ fn input_texture(gpu: &Gpu, draw: &Draw, iface: &translate::Interface) -> wgpu::
         usage: wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
         view_formats: &[],
     });
+    let flush = draw.float_rules.flush_denormals();
     for (layer, input) in iface.inputs.iter().enumerate() {
         let value = draw
             .inputs
@@ -862,16 +886,24 @@ fn input_texture(gpu: &Gpu, draw: &Draw, iface: &translate::Interface) -> wgpu::
             .find(|(v, _)| *v == input.register)
             .map(|(_, value)| *value)
             .unwrap_or_default();
-        let mut texels = vec![[0.0f32; 4]; w as usize * h as usize];
-        texels
-            .par_chunks_mut(w.max(1) as usize)
-            .enumerate()
-            .for_each(|(y, row)| {
-                for (x, t) in row.iter_mut().enumerate() {
-                    *t = value.at(x as f32, y as f32);
+        let row = |y: usize, row: &mut [[f32; 4]]| {
+            for (x, t) in row.iter_mut().enumerate() {
+                *t = value.at(x as f32, y as f32);
+                if flush {
+                    *t = t.map(crate::core::float_rules::flush);
                 }
-            });
-        texture::write_texels(gpu, &texture, 0, layer as u32, (w, h, 1), &texels);
+            }
+        };
+        let size = (w, h, 1);
+        if w as usize * h as usize * 16 >= texture::PARALLEL_UPLOAD {
+            texture::write_rows(gpu, &texture, 0, layer as u32, size, row)?;
+        } else {
+            let mut texels = vec![[0.0f32; 4]; w as usize * h as usize];
+            for (y, r) in texels.chunks_mut(w.max(1) as usize).enumerate() {
+                row(y, r);
+            }
+            texture::write_texels(gpu, &texture, 0, layer as u32, size, &texels)?;
+        }
     }
-    texture
+    Ok(texture)
 }

@@ -80,6 +80,9 @@ pub struct Gpu {
     pub(crate) queue: wgpu::Queue,
     pub(crate) features: wgpu::Features,
     pub(crate) limits: wgpu::Limits,
+    /// Large textures uploaded by earlier draws (`texture.rs`): the passes
+    /// of one command sample the same image.
+    pub(crate) textures: texture::Cache,
     info: DeviceInfo,
 }
 
@@ -174,6 +177,7 @@ impl Gpu {
             queue,
             features,
             limits,
+            textures: Default::default(),
             info: DeviceInfo {
                 name: a.name,
                 backend: format!("{:?}", a.backend),

@@ -29,6 +29,8 @@ pub(super) struct Lower<'a> {
     pub rules: FloatRules,
     /// Counter for naming loop variables.
     pub loops: u32,
+    /// Values already flushed (`hardware`): flushing them again is skipped.
+    pub flushed: std::collections::HashSet<Expr>,
 }
 
 /// A result: a vec4, or a scalar replicated to every component.
@@ -99,20 +101,171 @@ impl Lower<'_> {
     /// (temporaries and outputs were flushed when written).
     pub fn reg(&mut self, reg: Reg, relative: bool) -> Result<Expr, TranslateError> {
         let v = self.reg_raw(reg, relative)?;
-        // A `def` without denormals needs no flush where it is read.
+        // A `def` without denormals needs no flush where it is read, nor a
+        // constant the draw fixes (flushed as it became a literal), nor an
+        // input the GPU backend flushed on the CPU.
         let cx = self.cx;
         let plain_def = reg.file == RegFile::Const
             && !relative
             && (cx.float_defs.contains_key(&reg.index)
                 || cx.float_def_bits.contains_key(&reg.index))
             && !cx.float_defs_subnormal.contains(&reg.index);
+        let fixed = reg.file == RegFile::Const && !relative && self.fixed_constant(reg).is_some();
+        let flushed_input = reg.file == RegFile::Input && cx.spec.inputs_flushed();
         if self.rules.flush_denormals()
             && matches!(reg.file, RegFile::Const | RegFile::Input)
             && !plain_def
+            && !fixed
+            && !flushed_input
         {
             return Ok(self.flush(v, Some(VectorSize::Quad)));
         }
         Ok(v)
+    }
+
+    /// The bits of constant `reg` where the draw fixes them and no `def`
+    /// sets it, flushed as the float rules say.
+    fn fixed_constant(&self, reg: Reg) -> Option<[u32; 4]> {
+        let cx = self.cx;
+        if cx.float_defs.contains_key(&reg.index) || cx.float_def_bits.contains_key(&reg.index) {
+            return None;
+        }
+        let bits = cx.spec.constant(reg.index)?;
+        Some(if self.rules.flush_denormals() {
+            bits.map(|b| crate::core::float_rules::flush(f32::from_bits(b)).to_bits())
+        } else {
+            bits
+        })
+    }
+
+    /// A constant the draw fixes (`bits`, flushed): each finite component
+    /// as a literal, except a zero that flushing made (a denormal the draw
+    /// gave) and, under rules without the zero-multiply rule, every zero;
+    /// those and ∞ and NaN are read from the constant block and flushed at
+    /// run time. A denormal folded to a literal zero lets a device's
+    /// compiler drop `x + 0` (Vulkan lets it; the H100's did), so the `add`
+    /// probe of a denormal constant would measure that instead of the
+    /// device's arithmetic; and a literal zero lets it fold `x · 0` to 0,
+    /// which only the zero-multiply rule allows (Mesa's does it). The zeros
+    /// a draw gives stay literals otherwise: pass 1 runs 7 to 15 times
+    /// slower on llvmpipe with them read at run time.
+    fn fixed_value(&mut self, reg: Reg, bits: [u32; 4]) -> Expr {
+        let values = bits.map(f32::from_bits);
+        let given = self.cx.spec.constant(reg.index).unwrap_or(bits);
+        let folds = values.map(|x| x.is_finite());
+        let zero_mul = self.rules.zero_mul();
+        let folds: [bool; 4] = std::array::from_fn(|c| {
+            folds[c] && (values[c] != 0.0 || (zero_mul && given[c] & 0x7FFF_FFFF == 0))
+        });
+        let foldable = |c: usize| folds[c];
+        let from_block = if (0..4).all(foldable) {
+            None
+        } else {
+            let c = self.cx.block(&mut self.fb, 0);
+            let p = self.fb.index(c, reg.index);
+            let v = self.fb.load(p);
+            Some(match self.rules.flush_denormals() {
+                true => self.flush(v, Some(VectorSize::Quad)),
+                false => v,
+            })
+        };
+        let components = (0..4)
+            .map(|c| match from_block {
+                Some(v) if !foldable(c) => self.fb.index(v, c as u32),
+                _ => self.fb.f32(values[c]),
+            })
+            .collect();
+        self.fb.add(Expression::Compose {
+            ty: self.cx.t.vec4,
+            components,
+        })
+    }
+
+    /// Component `i` of `e` when it is an f32 literal (through
+    /// compositions of scalars, splats, swizzles, component accesses,
+    /// negation and `abs`).
+    fn literal(&self, e: Expr, i: usize) -> Option<f32> {
+        use naga::Literal;
+        match &self.fb.f.expressions[e] {
+            Expression::Literal(Literal::F32(x)) if i == 0 => Some(*x),
+            // Four parts of a vec4 are its four scalars.
+            Expression::Compose { ty, components }
+                if *ty == self.cx.t.vec4 && components.len() == 4 =>
+            {
+                let c = *components.get(i)?;
+                match self.fb.f.expressions[c] {
+                    Expression::Literal(_) => self.literal(c, 0),
+                    _ => None,
+                }
+            }
+            Expression::Splat { value, .. } => self.literal(*value, 0),
+            Expression::Swizzle {
+                size,
+                vector,
+                pattern,
+            } if i < *size as usize => self.literal(*vector, pattern[i] as usize),
+            Expression::AccessIndex { base, index } if i == 0 => {
+                self.literal(*base, *index as usize)
+            }
+            Expression::Unary {
+                op: naga::UnaryOperator::Negate,
+                expr,
+            } => self.literal(*expr, i).map(|x| -x),
+            Expression::Math {
+                fun: M::Abs, arg, ..
+            } => self.literal(*arg, i).map(f32::abs),
+            _ => None,
+        }
+    }
+
+    /// Whether each of the `n` components of `e` is a finite, positive
+    /// literal: then the zero-multiply rule gives exactly the plain product
+    /// (a zero factor times it is that zero, sign included; ∞ and NaN stay).
+    fn positive_finite(&self, e: Expr, n: usize) -> bool {
+        (0..n).all(|i| self.literal(e, i).is_some_and(|x| x.is_finite() && x > 0.0))
+    }
+
+    /// Whether `e` holds no denormal under the `hardware` rules: a result
+    /// [`flush`](Self::flush) made, a literal without denormals, a
+    /// temporary (flushed when written), an input flushed on the CPU, or a
+    /// part, negation, `abs` or saturation of one of them.
+    fn is_flushed(&self, e: Expr) -> bool {
+        if self.flushed.contains(&e) {
+            return true;
+        }
+        match &self.fb.f.expressions[e] {
+            Expression::Literal(naga::Literal::F32(x)) => !x.is_subnormal(),
+            Expression::Swizzle { vector, .. } => self.is_flushed(*vector),
+            Expression::AccessIndex { base, .. } => self.is_flushed(*base),
+            Expression::Splat { value, .. } => self.is_flushed(*value),
+            Expression::Compose { components, .. } => {
+                components.iter().all(|&c| self.is_flushed(c))
+            }
+            Expression::Unary {
+                op: naga::UnaryOperator::Negate,
+                expr,
+            } => self.is_flushed(*expr),
+            Expression::Math {
+                fun: M::Abs | M::Saturate,
+                arg,
+                ..
+            } => self.is_flushed(*arg),
+            Expression::Load { pointer } => self.holds_flushed(*pointer),
+            _ => false,
+        }
+    }
+
+    /// Whether `pointer` points into a temporary, or into the inputs when
+    /// they arrive flushed.
+    fn holds_flushed(&self, pointer: Expr) -> bool {
+        match &self.fb.f.expressions[pointer] {
+            Expression::GlobalVariable(g) => {
+                self.cx.temps.values().any(|t| t == g)
+                    || (*g == self.cx.inputs && self.cx.spec.inputs_flushed())
+            }
+            Expression::AccessIndex { base, .. } => self.holds_flushed(*base),
+            _ => false,
+        }
     }
 
     /// `v` with denormals replaced by zeros of their sign (`hardware`),
@@ -122,34 +275,46 @@ impl Lower<'_> {
     /// assume finite values), and a device need not keep the sign of a
     /// zero it computes, so `v * 0` would not do either.
     fn flush(&mut self, v: Expr, size: Option<VectorSize>) -> Expr {
+        if self.is_flushed(v) {
+            return v;
+        }
         let splat = |fb: &mut Fb, x: Expr| match size {
             Some(size) => fb.splat(x, size),
             None => x,
         };
-        let magnitude = self.fb.u32(0x7FFF_FFFF);
+        // Signed integers: the magnitude's bits are never negative, and a
+        // signed comparison is one instruction where an unsigned one is
+        // not (x86's vector units have none).
+        let magnitude = self.fb.i32(0x7FFF_FFFF);
         let magnitude = splat(&mut self.fb, magnitude);
-        let smallest = self.fb.u32(0x0080_0000);
+        let smallest = self.fb.i32(0x0080_0000);
         let smallest = splat(&mut self.fb, smallest);
-        let sign = self.fb.u32(0x8000_0000);
+        let sign = self.fb.i32(i32::MIN);
         let sign = splat(&mut self.fb, sign);
         let bits = self.fb.add(Expression::As {
             expr: v,
-            kind: naga::ScalarKind::Uint,
+            kind: naga::ScalarKind::Sint,
             convert: None,
         });
         let abs_bits = self.fb.binary(B::And, bits, magnitude);
         let small = self.fb.binary(B::Less, abs_bits, smallest);
         let sign_bits = self.fb.binary(B::And, bits, sign);
         let flushed = self.fb.select(small, sign_bits, bits);
-        self.fb.add(Expression::As {
+        let out = self.fb.add(Expression::As {
             expr: flushed,
             kind: naga::ScalarKind::Float,
             convert: None,
-        })
+        });
+        self.flushed.insert(out);
+        out
     }
 
     fn reg_raw(&mut self, reg: Reg, relative: bool) -> Result<Expr, TranslateError> {
         let cx = self.cx;
+        let fixed = match reg.file {
+            RegFile::Const if !relative => self.fixed_constant(reg),
+            _ => None,
+        };
         let fb = &mut self.fb;
         Ok(match reg.file {
             RegFile::Temp => {
@@ -169,6 +334,10 @@ impl Lower<'_> {
             }
             RegFile::Const => match cx.float_defs.get(&reg.index) {
                 Some(&c) => fb.add(Expression::Constant(c)),
+                None if fixed.is_some() => {
+                    let bits = fixed.unwrap_or_default();
+                    return Ok(self.fixed_value(reg, bits));
+                }
                 None if cx.float_def_bits.contains_key(&reg.index) => {
                     let bits = cx.float_def_bits[&reg.index];
                     let components = bits.map(|b| fb.u32(b)).to_vec();
@@ -385,7 +554,8 @@ impl Lower<'_> {
 
     /// `a · b` per component under the zero-multiply rule, unflushed.
     fn product(&mut self, a: Expr, b: Expr, size: Option<VectorSize>) -> Expr {
-        if !self.rules.zero_mul() {
+        let n = size.map_or(1, |s| s as usize);
+        if !self.rules.zero_mul() || self.positive_finite(a, n) || self.positive_finite(b, n) {
             return self.fb.binary(B::Multiply, a, b);
         }
         let zero = self.fb.f32(0.0);
@@ -416,7 +586,8 @@ impl Lower<'_> {
             }
             return s;
         }
-        let (a, b) = if self.rules.zero_mul() {
+        let plain = self.positive_finite(a, n as usize) || self.positive_finite(b, n as usize);
+        let (a, b) = if self.rules.zero_mul() && !plain {
             let size = [VectorSize::Bi, VectorSize::Tri, VectorSize::Quad][n as usize - 2];
             let zero = self.fb.f32(0.0);
             let zero = self.fb.splat(zero, size);

@@ -427,6 +427,7 @@ fn lower_functions(
             fb: Fb::new(&name),
             rules,
             loops: 0,
+            flushed: Default::default(),
         };
         l.range(ins, &info.matching, &functions, s, e)?;
         let h = module

@@ -11,6 +11,13 @@
 //! samples the texture and nothing more ([`SamplerSpec::PLAIN`]), and a
 //! cube map is bound as its six faces so that its filtering is Direct3D
 //! 9's. New texture kinds take the same per-sampler record.
+//!
+//! The GPU backend also fixes the draw's float constants: each `c#` read
+//! without relative addressing becomes a literal, so that a device's
+//! compiler folds what the float rules ask of it (a denormal flush, the
+//! zero-multiply test) instead of computing it per pixel; and it flushes
+//! the draw's inputs on the CPU under the `hardware` rules, so that the
+//! shader reads them as they are.
 
 use std::collections::BTreeMap;
 
@@ -54,6 +61,11 @@ impl SamplerSpec {
 #[derive(Clone, Debug, Default, PartialEq, Eq, Hash)]
 pub struct Specialisation {
     samplers: BTreeMap<u32, SamplerSpec>,
+    /// The bits of every `c#` the draw sets (registers past the end are
+    /// zero), or `None`: read from the constant block at run time.
+    constants: Option<Vec<[u32; 4]>>,
+    /// The inputs (`v#`) arrive with denormals already flushed.
+    inputs_flushed: bool,
 }
 
 impl Specialisation {
@@ -65,6 +77,29 @@ impl Specialisation {
     /// Sets what sampler `register`'s translation carries.
     pub fn set(&mut self, register: u32, spec: SamplerSpec) {
         self.samplers.insert(register, spec);
+    }
+
+    /// Fixes the float constants to `bits` (`c0`, `c1`, …; those past the
+    /// end are zero, as the constant block holds them).
+    pub fn set_constants(&mut self, bits: Vec<[u32; 4]>) {
+        self.constants = Some(bits);
+    }
+
+    /// The bits of `c{register}` when the draw fixes them.
+    pub fn constant(&self, register: u32) -> Option<[u32; 4]> {
+        let c = self.constants.as_ref()?;
+        Some(c.get(register as usize).copied().unwrap_or([0; 4]))
+    }
+
+    /// Says that the inputs arrive with denormals flushed to zeros of their
+    /// sign (the GPU backend does it on the CPU under `hardware`).
+    pub fn set_inputs_flushed(&mut self, flushed: bool) {
+        self.inputs_flushed = flushed;
+    }
+
+    /// Whether the inputs arrive flushed.
+    pub fn inputs_flushed(&self) -> bool {
+        self.inputs_flushed
     }
 
     /// What sampler `register`'s translation carries.

@@ -60,6 +60,7 @@ use crate::core::emu::{Address, Constants, Draw, Filter, LinearInput, SamplerSta
 use crate::core::image::LUMINANCE_WEIGHTS;
 use crate::core::image::{HdrImage, RenderTarget, TargetFormat};
 use crate::core::load::{self, Options};
+use crate::jobs::backend::{Backend, Drawn};
 use crate::jobs::luminance::{self, LuminanceRun, PassCost, ShaderSource};
 use serde::Serialize;
 
@@ -88,8 +89,10 @@ pub struct Settings {
     pub threads: Option<usize>,
     /// Rows per draw (the image is drawn in bands of this many rows, for
     /// progress and bounded memory; results do not depend on it). 0 picks
-    /// about 256 K pixels per band on the emulator, the device's
-    /// [`Backend::band_rows`](crate::jobs::backend::Backend::band_rows) on a GPU.
+    /// about 256 K pixels per band on the emulator; on a GPU a quarter of
+    /// the frame, or the device's
+    /// [`Backend::band_rows`](crate::jobs::backend::Backend::band_rows) if
+    /// fewer, each band drawn while the one before is checked.
     pub band_rows: u32,
     /// The tone-mapping shader: [`TONEMAP_REINHARD`](crate::jobs::bundled::TONEMAP_REINHARD) by default, or any shader with
     /// the same inputs (v0, s0, s1, c0–c2), which is then checked against
@@ -884,6 +887,10 @@ pub fn run_into(
     })
 }
 
+/// Bands a GPU draws a frame in at least (when each fits the device): the
+/// first is waited for, the others drawn while the one before is checked.
+const GPU_BANDS: u32 = 4;
+
 /// What [`emulate`] hands each band of rows to, top band first.
 pub type BandSink<'a> = dyn FnMut(&[[f32; 4]]) -> Result<(), TonemapError> + 'a;
 
@@ -922,16 +929,14 @@ pub fn emulate(
         ..SamplerState::filtered(Filter::Point)
     };
     let (w, h) = (image.width, image.height);
-    let band_rows = match settings.band_rows {
-        0 => settings
-            .backend
-            .band_rows(w, ((1u32 << 18) / w.max(1)).max(2)),
-        n => n,
+    let band_rows = match (settings.band_rows, &settings.backend) {
+        (0, Backend::Emulator) => ((1u32 << 18) / w.max(1)).max(2),
+        // A quarter of the frame at most: one band is checked on the CPU
+        // while the device draws the next.
+        (0, gpu) => gpu.band_rows(w, 1).min(h.div_ceil(GPU_BANDS).max(1)),
+        (n, _) => n,
     };
-    let mut executed: Option<Range> = None;
-    let mut y0 = 0;
-    while y0 < h {
-        let rows = band_rows.min(h - y0);
+    let draw_band = |y0: u32, rows: u32| {
         let mut draw = Draw::new(w, rows);
         draw.limits = settings.limits;
         draw.float_rules = settings.float_rules;
@@ -960,7 +965,7 @@ pub fn emulate(
         draw.samplers.push((0, image.as_texture().into(), clamp));
         draw.samplers
             .push((1, lw_target.as_texture().into(), clamp));
-        let out = crate::jobs::backend::draw(
+        crate::jobs::backend::draw(
             &settings.backend,
             &loaded.shader,
             &loaded.file,
@@ -968,7 +973,10 @@ pub fn emulate(
             crate::core::gpu::TargetKind::Raw,
             settings.threads,
         )
-        .map_err(TonemapError::Draw)?;
+        .map_err(TonemapError::Draw)
+    };
+    let mut executed: Option<Range> = None;
+    let mut take = |y0: u32, rows: u32, out: Drawn| {
         match out.color {
             Some(c) => band(&c)?,
             None => {
@@ -986,8 +994,37 @@ pub fn emulate(
             (None, b) => b,
             (a, None) => a,
         };
-        y0 += rows;
-        progress(y0 as u64, h as u64);
+        progress((y0 + rows) as u64, h as u64);
+        Ok(())
+    };
+    let bands: Vec<(u32, u32)> = (0..h)
+        .step_by(band_rows.max(1) as usize)
+        .map(|y0| (y0, band_rows.min(h - y0)))
+        .collect();
+    if matches!(settings.backend, Backend::Emulator) {
+        for &(y0, rows) in &bands {
+            take(y0, rows, draw_band(y0, rows)?)?;
+        }
+    } else {
+        // The device draws band k + 1 (on a thread of its own) while this
+        // thread checks band k and hands it on, in order.
+        std::thread::scope(|s| {
+            let (tx, rx) = std::sync::mpsc::sync_channel(1);
+            let (bands, draw_band) = (&bands, &draw_band);
+            s.spawn(move || {
+                for &(y0, rows) in bands {
+                    let drawn = draw_band(y0, rows);
+                    let failed = drawn.is_err();
+                    if tx.send((y0, rows, drawn)).is_err() || failed {
+                        break;
+                    }
+                }
+            });
+            for (y0, rows, drawn) in rx {
+                take(y0, rows, drawn?)?;
+            }
+            Ok::<(), TonemapError>(())
+        })?;
     }
     let cost = PassCost {
         shader: src.name().to_string(),
