@@ -11,9 +11,9 @@
 //! `sunset.pfm.planes.deflate`, its pixel bytes regrouped into four planes
 //! (byte 0 of every float, then byte 1, …), planes 1–3 stored as the
 //! difference from the same byte three floats back (the previous pixel's
-//! same channel), and deflated (2.1 MB), and
+//! same channel), and deflated (2.0 MB), and
 //! `forest.hdr` (1.9 MB of run-length RGBE) deflated as `forest.hdr.deflate`
-//! (1.7 MB). A test holds the rebuilt bytes equal to the files'.
+//! (1.6 MB). A test holds the rebuilt bytes equal to the files'.
 
 use crate::core::image::{self, HdrImage, ImageError, ImageLimits};
 use std::path::Path;
