@@ -1052,11 +1052,29 @@ impl<'a> Cursor<'a> {
         .with_help("ps_3_0 sources take `-` (negate) and `_abs`; _bias, _bx2, _x2, _dz and _dw are ps_1_x only"))
     }
 
-    /// `[aL]`, `[aL + 3]`, `[ aL + 1 + 2 ]`.
+    /// `[aL]`, `[aL + 3]`, `[ aL + 1 + 2 ]`, and offsets before the index
+    /// register, `[3 + a0.x]`, as Microsoft's assembler takes them: the terms
+    /// are added, one of them the index register.
     fn relative(&mut self) -> Result<RelAst, Diagnostic> {
         let start = self.pos();
         self.eat(char('['));
-        self.skip_space();
+        let mut offset: i64 = 0;
+        loop {
+            self.skip_space();
+            if !self.rest.starts_with(|c: char| c.is_ascii_digit()) {
+                break;
+            }
+            offset = offset.saturating_add(self.offset_term()?);
+            self.skip_space();
+            if self.eat(char('+')).is_none() {
+                return Err(self
+                    .error_here(format!(
+                        "expected `+` and the index register after the offset, {}",
+                        self.found()
+                    ))
+                    .with_label("expected `+ a0.x` or `+ aL`"));
+            }
+        }
         let Some(index_reg) = self.eat(take_while1(|c: char| c.is_ascii_alphanumeric())) else {
             return Err(self
                 .error_here(format!(
@@ -1080,7 +1098,6 @@ impl<'a> Cursor<'a> {
         } else {
             None
         };
-        let mut offset: i64 = 0;
         loop {
             self.skip_space();
             if self.eat(char(']')).is_some() {
@@ -1100,30 +1117,7 @@ impl<'a> Cursor<'a> {
                     .with_label("expected `+ n` or `]`"));
             }
             self.skip_space();
-            let dstart = self.pos();
-            let Some(d) = self.eat(digit1) else {
-                return Err(self
-                    .error_here(format!("expected an integer offset, {}", self.found()))
-                    .with_label("offsets are non-negative integers"));
-            };
-            // Microsoft's lexer refuses a number past 64 bits (X1004) and
-            // its grammar one past 32 bits (a syntax error).
-            let Ok(n) = d.parse::<u64>() else {
-                return Err(Diagnostic::coded(
-                    codes::NUMBER_TOO_LONG,
-                    self.span_from(dstart),
-                    format!("offset `{d}` does not fit in 64 bits"),
-                ));
-            };
-            if n > u64::from(u32::MAX) {
-                return Err(Diagnostic::coded(
-                    codes::SYNTAX,
-                    self.span_from(dstart),
-                    format!("offset `{d}` does not fit in 32 bits"),
-                )
-                .with_label("too large"));
-            }
-            offset = offset.saturating_add(n as i64);
+            offset = offset.saturating_add(self.offset_term()?);
         }
         Ok(RelAst {
             index_reg: index_reg.into(),
@@ -1132,6 +1126,34 @@ impl<'a> Cursor<'a> {
             offset,
             span: self.span_from(start),
         })
+    }
+
+    /// One integer term of a relative address.
+    fn offset_term(&mut self) -> Result<i64, Diagnostic> {
+        let dstart = self.pos();
+        let Some(d) = self.eat(digit1) else {
+            return Err(self
+                .error_here(format!("expected an integer offset, {}", self.found()))
+                .with_label("offsets are non-negative integers"));
+        };
+        // Microsoft's lexer refuses a number past 64 bits (X1004) and
+        // its grammar one past 32 bits (a syntax error).
+        let Ok(n) = d.parse::<u64>() else {
+            return Err(Diagnostic::coded(
+                codes::NUMBER_TOO_LONG,
+                self.span_from(dstart),
+                format!("offset `{d}` does not fit in 64 bits"),
+            ));
+        };
+        if n > u64::from(u32::MAX) {
+            return Err(Diagnostic::coded(
+                codes::SYNTAX,
+                self.span_from(dstart),
+                format!("offset `{d}` does not fit in 32 bits"),
+            )
+            .with_label("too large"));
+        }
+        Ok(n as i64)
     }
 }
 
