@@ -231,6 +231,8 @@ def rel_probes(profile):
         ("rel-v-aL", looped("add r0, r0, v[aL + 1]"), i0 + ["dcl_texcoord v1"]),
         ("rel-v-a0", mova + ["mov r0, v[a0.x + 1]"], ["dcl_texcoord v1"]),
         ("mova-dst-r", ["mova r0.x, r1.x"], []),
+        ("read-a0-mov", mova + ["mov r0, a0"], []),
+        ("read-a0-add", mova + ["add r0, r1, a0.x"], []),
     ]
     if profile != "vs_2_0":
         out.append(("rel-c-if", mova + ["if_gt c[a0.x].x, r1.x", "mov r0, r1", "endif"], []))

@@ -200,6 +200,10 @@ pub const NRM_ALIAS: Code = "X5604";
 pub const PREDICATED_FLOW: Code = "X5665";
 /// "Invalid reg type for first source param".
 pub const SOURCE_REGISTER: Code = "X5679";
+/// [`SOURCE_REGISTER`] in vs_2_0 and vs_2_x (`mov r0, a0`).
+pub const SOURCE_REGISTER_VS: Code = "X5680";
+/// [`SOURCE_REGISTER`] in vs_3_0.
+pub const SOURCE_REGISTER_VS_3_0: Code = "X5681";
 /// "Reg num … on matrix instruction causes attempt to access out of range
 /// register".
 pub const MATRIX_RANGE: Code = "X5684";

@@ -1113,13 +1113,19 @@ fn float_source(r: &RegAst, p: Profile) -> R<Src> {
             .with_help("read inputs relative to the loop counter with v[aL + n]"))
         }
         _ => {
+            // The assembler words the rule per stage (measured: `mov r0, a0`).
+            let code = match p {
+                Profile::Vs3_0 => codes::SOURCE_REGISTER_VS_3_0,
+                Profile::Vs2_0 | Profile::Vs2X | Profile::Vs2A => codes::SOURCE_REGISTER_VS,
+                _ => codes::SOURCE_REGISTER,
+            };
             return Err(Diagnostic::coded(
-                codes::SOURCE_REGISTER,
+                code,
                 r.name_span,
                 format!("`{reg}` cannot be read here"),
             )
             .with_label("not a float source")
-            .with_help("float sources are r#, v#, c#, vPos and vFace"))
+            .with_help("float sources are r#, v#, c#, vPos and vFace"));
         }
     }
     if let (RegFile::Face, Some((_, span))) = (reg.file, &r.components) {
