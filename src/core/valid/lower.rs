@@ -1125,7 +1125,11 @@ fn float_source(r: &RegAst, p: Profile) -> R<Src> {
                 format!("`{reg}` cannot be read here"),
             )
             .with_label("not a float source")
-            .with_help("float sources are r#, v#, c#, vPos and vFace"));
+            .with_help(if p.stage() == crate::core::profile::Stage::Vertex {
+                "float sources are r#, v# and c# (a0 and aL only index: c[a0.x + n])"
+            } else {
+                "float sources are r#, v#, c#, vPos and vFace"
+            }));
         }
     }
     if let (RegFile::Face, Some((_, span))) = (reg.file, &r.components) {
