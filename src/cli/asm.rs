@@ -19,7 +19,7 @@ use std::path::Path;
 
 #[derive(clap::Args)]
 pub struct Args {
-    /// Shader: assembly or ps_3_0 bytecode (`-` reads standard input). Several, or a
+    /// Shader: assembly or bytecode (`-` reads standard input). Several, or a
     /// directory (walked recursively for .psh, .asm, .dis, .fxo, .cso and .pso files):
     /// corpus mode, one line per file and a summary.
     #[arg(required = true, num_args = 1..)]

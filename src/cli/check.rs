@@ -15,7 +15,7 @@ use serde_json::Value;
 
 #[derive(clap::Args)]
 pub struct Args {
-    /// The shader: a file (assembly or ps_3_0 bytecode), `-` for standard input, or a
+    /// The shader: a file (assembly or bytecode), `-` for standard input, or a
     /// bundled name such as article:loop (`ps30 shaders` lists them). Several, or a
     /// directory (walked recursively for .psh, .asm, .dis, .fxo, .cso and .pso files):
     /// corpus mode, one line per file and a summary.

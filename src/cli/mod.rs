@@ -41,7 +41,7 @@ use clap::{Parser, Subcommand};
 #[command(
     name = "ps30",
     version,
-    about = "Parse, measure, run and generate Direct3D 9 ps_3_0 assembly"
+    about = "Check, count, assemble, list, run, translate and decompile Direct3D 9 shaders (ps_1_1 to ps_3_0, vs_2_0 to vs_3_0)"
 )]
 pub struct Cli {
     /// Print only results and problems: no progress bars, notes or "wrote …" lines.
@@ -67,7 +67,7 @@ pub enum Command {
         after_help = "Examples:\n  ps30 check asm/article/lum_pass1_loop.psh --int i1=128 --int i2=56\n  ps30 check asm/article/lum_pass2.psh -D xsize=11 -D ysize=8 --json"
     )]
     Check(check::Args),
-    /// Write a shader as ps_3_0 bytecode (REPEAT_BLOCK expanded, validated, written atomically).
+    /// Write a shader as bytecode (REPEAT_BLOCK expanded, validated, written atomically).
     #[command(
         after_help = "The tokens are exactly those Microsoft's assembler emits for the program, in the order\nthe statements stand. A compiled shader given as input is written back as it is, its\nconstant table (CTAB) included.\n\nExamples:\n  ps30 asm asm/corrected/lum_pass2.psh -D xsize=11 -D ysize=8 -o p2.fxo\n  ps30 disasm p2.fxo | ps30 asm - -o again.fxo"
     )]
@@ -77,11 +77,12 @@ pub enum Command {
         after_help = "The listing shows the constant table as fxc does (parameters and registers) and keeps\nevery comment block as `//#comment` lines of hexadecimal tokens, so `ps30 asm` turns it\nback into the same bytes. Assembly given as input is assembled first.\n\nExamples:\n  ps30 disasm p2.fxo\n  ps30 disasm shader.fxo --json"
     )]
     Disasm(disasm::Args),
+    /// Write a compiled shader as HLSL; --verify recompiles it with Microsoft's compiler and runs both.
     #[command(
         after_help = "Exit codes: 0 written (with --verify: the recompiled shader computes the same values,\nbit for bit); 1 --verify found a difference or the compiler refused the HLSL; 2 bad input\nor a shader the HLSL cannot express; 3 --verify without Microsoft's compiler installed.\n\nExamples:\n  ps30 decompile shader.fxo -o shader.hlsl\n  ps30 decompile shader.fxo --verify"
     )]
     Decompile(decompile::Args),
-    /// Print the shader as plain ps_3_0 assembly with every macro expanded.
+    /// Print the shader as plain assembly with every macro expanded.
     #[command(
         after_help = "Examples:\n  ps30 expand asm/article/lum_pass2.psh -D xsize=11 -D ysize=8\n  ps30 expand asm/article/lum_pass1_unrolled.psh -o unrolled.psh\n  ps30 expand asm/article/lum_pass2.psh -D xsize=11 -D ysize=8 --json"
     )]
@@ -124,7 +125,7 @@ pub enum Command {
     Shaders(shaders::Args),
     /// Run a draw list: clears, draws with blending and write masks, mip-chain reductions.
     #[command(
-        after_help = "The draw list is JSON: named targets (size, D3D9 format), textures (images or the\nsynthetic G-buffer of asm/lights/), and steps: {\"clear\": T, \"color\": [r,g,b,a]},\n{\"draw\": T, \"shader\": S, \"inputs\", \"constants\", \"samplers\", \"blend\", \"write\"},\n{\"mips\": T, \"odd\": \"fold\"|\"bilinear\"}. Every draw covers its whole target; the output\nmerger blends in the target's precision. The README's `ps30 render` section has the format.\n\nExit codes: 0 ok; 1 a draw's executed count left the cost model's range; 2 bad input.\n\nExamples:\n  ps30 render drawlists/lights.json\n  ps30 render drawlists/log-lights.json -o out/ --every-step\n  ps30 render drawlists/lights.json --json"
+        after_help = "The draw list is JSON: named targets (size, D3D9 format), textures (images or the\nsynthetic G-buffer of asm/lights/), and steps: {\"clear\": T, \"color\": [r,g,b,a]},\n{\"draw\": T, \"shader\": S, \"inputs\", \"constants\", \"samplers\", \"blend\", \"write\"},\n{\"mips\": T, \"odd\": \"fold\"|\"bilinear\"}. Every draw covers its whole target; the output\nmerger blends in the target's precision. docs/render.md has the format.\n\nExit codes: 0 ok; 1 a draw's executed count left the cost model's range; 2 bad input.\n\nExamples:\n  ps30 render drawlists/lights.json\n  ps30 render drawlists/log-lights.json -o out/ --every-step\n  ps30 render drawlists/lights.json --json"
     )]
     Render(render::Args),
     /// Measure the alternatives to the article's methods, and the article's own chain, with a report page.

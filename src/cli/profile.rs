@@ -16,7 +16,7 @@ use ps30::present::profile::{text, to_json};
 
 #[derive(clap::Args)]
 pub struct Args {
-    /// The shader: a file (assembly or ps_3_0 bytecode), `-` for standard input, or a
+    /// The shader: a file (assembly or bytecode), `-` for standard input, or a
     /// bundled name such as lights:select (`ps30 shaders` lists them).
     #[arg(value_name = "SHADER")]
     shader: String,

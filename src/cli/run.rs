@@ -19,7 +19,7 @@ use std::path::{Path, PathBuf};
 
 #[derive(clap::Args)]
 pub struct Args {
-    /// The shader: a file (assembly or ps_3_0 bytecode), `-` for standard input, or a
+    /// The shader: a file (assembly or bytecode), `-` for standard input, or a
     /// bundled name such as corrected:loop (`ps30 shaders` lists them).
     #[arg(value_name = "SHADER")]
     shader: String,

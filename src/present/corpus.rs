@@ -61,8 +61,9 @@ pub fn json_line(r: &FileResult) -> String {
 pub fn summary_text(s: &Summary) -> String {
     let n = |v: u64| thousands(v);
     let mut out = format!(
-        "{} files: {} accepted, {} over a limit, {} refused\n",
+        "{} {}: {} accepted, {} over a limit, {} refused\n",
         n(s.files),
+        if s.files == 1 { "file" } else { "files" },
         n(s.accepted),
         n(s.over),
         n(s.refused)

@@ -128,9 +128,9 @@ fn version(tokens: &Tokens) -> Result<Profile, ReadError> {
             "{p} is another instruction set, read by core::ps1 (ps30 check, asm and disasm read it)"
         ),
         Some(p) => format!(
-            "ps30 reads ps_2_0, ps_2_x, ps_3_0, vs_2_0, vs_2_x and vs_3_0; it recognises {p} (docs/profiles.md) but does not read {p} shaders yet"
+            "ps30 reads ps_1_1 to ps_3_0 and vs_2_0 to vs_3_0; it recognises {p} (docs/profiles.md) but does not read {p} shaders yet"
         ),
-        None => "ps30 reads ps_2_0, ps_2_x, ps_3_0, vs_2_0, vs_2_x and vs_3_0".to_string(),
+        None => "ps30 reads ps_1_1 to ps_3_0 and vs_2_0 to vs_3_0".to_string(),
     };
     Err(ReadError::at(0, message).with_help(help))
 }

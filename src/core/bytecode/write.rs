@@ -153,7 +153,7 @@ fn version_error(text: &str, span: Span, first: bool) -> Diagnostic {
             span,
             format!("`{text}`: ps30 writes ps_2_0, ps_2_x, ps_3_0, vs_2_0, vs_2_x and vs_3_0"),
         )
-        .with_label("not ps_3_0")
+        .with_label("not a profile ps30 writes")
     } else {
         Diagnostic::error(span, "a second version line")
             .with_label("the version token comes once, first")

@@ -46,7 +46,12 @@ pub fn validate(
     if program.profile == Profile::Ps2X {
         caps::ps2x_codes(&mut diags);
     }
-    init::check(&program, &info, &mut diags, file);
+    // An instruction refused above is missing from the program, so the
+    // registers it writes would read as never written: no cascade of
+    // warnings about them until the errors are fixed.
+    if !diags.has_errors() {
+        init::check(&program, &info, &mut diags, file);
+    }
     if diags.has_errors() {
         return Err(diags);
     }
@@ -119,7 +124,7 @@ pub fn version_refusal(text: &str, span: Span) -> Diagnostic {
         None => "no Direct3D 9 profile has this version; the first line of a ps_3_0 shader is `ps_3_0`".to_string(),
     };
     Diagnostic::coded(codes::VERSION, span, message)
-        .with_label("not ps_3_0")
+        .with_label("not a profile ps30 reads")
         .with_help(help)
 }
 
