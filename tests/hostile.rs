@@ -823,7 +823,7 @@ fn a_draw_list_may_start_with_a_byte_order_mark() {
         draw_list("t", r#"{"clear": "t", "color": [1, 0, 0, 0]}"#)
     );
     write(d, "list.json", &list);
-    expect(d, &["render", "list.json"], 0, "1 targets");
+    expect(d, &["render", "list.json"], 0, "1 target,");
 }
 
 #[test]

@@ -7,6 +7,7 @@ use super::ui::Ui;
 use super::{BadInput, Outcome};
 use ps30::core::emu::findings::diagnostic;
 use ps30::core::image::{encode_exr, encode_png_rgb8, RenderTarget};
+use ps30::core::numbers::plural;
 use ps30::core::output::{self, Batch};
 use ps30::jobs::render::{self, file, StepDetail, StepReport, TargetState};
 use ps30::present::render as show;
@@ -108,12 +109,13 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
     };
     let name = args.list.display().to_string();
     if !args.exec.json {
+        let count = |n: usize, one, many| plural(n as u64, one, many);
         let mut head = format!(
-            "{name}: {} targets, {} textures, {} shaders, {} steps\n",
-            list.targets.len(),
-            list.textures.len(),
-            list.shaders.len(),
-            list.steps.len()
+            "{name}: {}, {}, {}, {}\n",
+            count(list.targets.len(), "target", "targets"),
+            count(list.textures.len(), "texture", "textures"),
+            count(list.shaders.len(), "shader", "shaders"),
+            count(list.steps.len(), "step", "steps")
         );
         if let Some(d) = &loaded.description {
             head.push_str(&format!("  {d}\n"));

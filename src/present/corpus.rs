@@ -2,7 +2,7 @@
 //! object per line with `--json`) as results arrive, and the summary the run
 //! ends with (see [`crate::jobs::corpus`]).
 
-use crate::core::numbers::thousands;
+use crate::core::numbers::{plural, thousands};
 use crate::jobs::corpus::{FileResult, Status, Summary};
 
 /// One file as a table line: its status (`ok`, `over`, or the code of its
@@ -61,9 +61,8 @@ pub fn json_line(r: &FileResult) -> String {
 pub fn summary_text(s: &Summary) -> String {
     let n = |v: u64| thousands(v);
     let mut out = format!(
-        "{} {}: {} accepted, {} over a limit, {} refused\n",
-        n(s.files),
-        if s.files == 1 { "file" } else { "files" },
+        "{}: {} accepted, {} over a limit, {} refused\n",
+        plural(s.files, "file", "files"),
         n(s.accepted),
         n(s.over),
         n(s.refused)
