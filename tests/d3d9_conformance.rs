@@ -67,7 +67,7 @@ pub(crate) fn render_file(path: &std::path::Path, backend: &str) -> Option<Targe
         "{list} ({backend}): {}",
         stderr(&o)
     );
-    let text: serde_json::Value = serde_json::from_slice(&std::fs::read(&path).unwrap()).unwrap();
+    let text: serde_json::Value = serde_json::from_slice(&std::fs::read(path).unwrap()).unwrap();
     let mut out = HashMap::new();
     for t in text["targets"].as_array().unwrap() {
         let name = t["name"].as_str().unwrap();

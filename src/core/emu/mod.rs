@@ -908,7 +908,7 @@ fn bind_inputs(compiled: &Compiled, draw: &Draw) -> Result<[Option<LinearInput>;
 fn check_pixels(p: &PixelInputs, w: u32, h: u32) -> Result<(), EmuError> {
     let grid = PixelInputs::grid_width(w) * PixelInputs::grid_width(h);
     let bad = |reason: String| Err(EmuError::BadPixelInputs { reason });
-    if p.origin.0 % 2 != 0 || p.origin.1 % 2 != 0 {
+    if !p.origin.0.is_multiple_of(2) || !p.origin.1.is_multiple_of(2) {
         return bad(format!("origin {:?} is not on the quad grid", p.origin));
     }
     if p.covered.len() != w as usize * h as usize {
