@@ -301,3 +301,68 @@ fn depth_tests_formats_and_odepth() {
     // (drawn at z 0.9), 0.75 on the right fails (drawn at z 0.1).
     check(&t, "odepth", |x, _| if x < 2 { GREEN } else { RED });
 }
+
+#[test]
+fn divergent_gradients_are_reported_on_geometry_draws() {
+    // texcoord0.x at column i is 1.1·i/8 (w = 1, u from 0 to 1.1 over 8
+    // pixels): 0.275 at column 2, 0.4125 at column 3, so `if_lt v0.x, 0.3`
+    // splits every quad of columns 2–3 the triangle reaches — rows 0–5
+    // (x + y < 8 with x = 2 or 3), three quads — and `dsx` of a temporary
+    // inside it reads a neighbour that did not run it.
+    let path = repo().join("tests/draw_conformance/divergent.json");
+    let o = crate::common::bin::ps30(&["render", path.to_str().unwrap()], repo());
+    assert_eq!(o.status.code(), Some(0));
+    let err = crate::common::bin::stderr(&o);
+    assert!(err.contains("`dsx` ran in divergent quads"), "{err}");
+    assert!(
+        err.contains("3 of 7 quads ran it with only part of their pixels"),
+        "{err}"
+    );
+}
+
+#[test]
+fn bad_geometry_is_refused_with_its_place() {
+    let dir = tempfile::tempdir().unwrap();
+    let shader = repo().join("tests/draw_conformance/texcoord.psh");
+    let run = |geometry: &str| {
+        let list = format!(
+            r#"{{"targets": [{{"name": "t", "size": "4x4", "format": "A8R8G8B8"}}],
+                "steps": [{{"draw": "t", "shader": {shader:?}, "geometry": {geometry}}}]}}"#
+        );
+        let path = dir.path().join("list.json");
+        std::fs::write(&path, list).unwrap();
+        let o = crate::common::bin::ps30(&["render", path.to_str().unwrap()], repo());
+        assert_eq!(o.status.code(), Some(2), "{geometry}");
+        crate::common::bin::stderr(&o)
+    };
+    let verts = r#"{"attributes": {"positiont0": [[0, 0, 0, 1], [4, 0, 0, 1], [0, 4, 0, 1]]}}"#;
+    for (geometry, want) in [
+        (
+            format!(r#"{{"primitive": "line_list", "vertices": {verts}}}"#),
+            "steps[0].geometry.primitive: `line_list` is not one of",
+        ),
+        (
+            format!(r#"{{"primitive": "triangle_list", "indices": [0, 1, 3], "vertices": {verts}}}"#),
+            "steps[0].geometry.indices[2]: 3 is past the last of 3 vertices",
+        ),
+        (
+            format!(r#"{{"primitive": "triangle_list", "vertices": {verts}, "viewport": {{"x": 2, "y": 0, "width": 4, "height": 4}}}}"#),
+            "steps[0].geometry.viewport: the rectangle must lie within the 4x4 target",
+        ),
+        (
+            format!(r#"{{"primitive": "triangle_list", "vertices": {verts}, "depth": {{"format": "D15S1"}}}}"#),
+            "steps[0].geometry.depth.format: `D15S1` is not one of D16, D24X8, D24S8, D32F_LOCKABLE",
+        ),
+        (
+            format!(r#"{{"primitive": "triangle_strip", "vertices": "missing.json"}}"#),
+            "steps[0].geometry.vertices:",
+        ),
+        (
+            format!(r#"{{"primitive": "triangle_list", "vertices": {verts}, "vertex_shader": {shader:?}}}"#),
+            "steps[0].geometry.vertex_shader: a ps_3_0 shader; the vertex stage runs",
+        ),
+    ] {
+        let err = run(&geometry);
+        assert!(err.contains(want), "{geometry}: {err}");
+    }
+}

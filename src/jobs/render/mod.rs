@@ -571,15 +571,7 @@ fn draw(
             .map_err(|e| DrawFailure::Message(format!("oC{}: {e}", k + 1)))?;
         state.mips = None;
     }
-    let detail = StepDetail::Draw {
-        shader: shader.name.clone(),
-        counts_agree: executed
-            .is_none_or(|e| executed_static.min <= e.min && e.max <= executed_static.max),
-        executed_static,
-        executed,
-        merged,
-        findings,
-    };
+    let detail = draw_detail(shader, executed_static, executed, merged, findings);
     Ok((detail, executed_total))
 }
 
@@ -650,16 +642,28 @@ fn geometry_draw(
     let mut draw = Draw::new(1, 1);
     draw.samplers = bind_samplers(list, d, states)?;
     let findings = emu::findings::findings(&summary, &draw, &shader.loaded.file);
-    let detail = StepDetail::Draw {
+    let detail = draw_detail(shader, executed_static, executed, drawn.merged, findings);
+    Ok((detail, drawn.total))
+}
+
+/// A draw's report: its counts beside the cost model's, what it merged,
+/// the emulator's findings.
+fn draw_detail(
+    shader: &ShaderSpec,
+    executed_static: Range,
+    executed: Option<Range>,
+    merged: MergeStats,
+    findings: Vec<Finding>,
+) -> StepDetail {
+    StepDetail::Draw {
         shader: shader.name.clone(),
         counts_agree: executed
             .is_none_or(|e| executed_static.min <= e.min && e.max <= executed_static.max),
         executed_static,
         executed,
-        merged: drawn.merged,
+        merged,
         findings,
-    };
-    Ok((detail, drawn.total))
+    }
 }
 
 /// The cost model's executed range for a draw, under its constants.

@@ -518,16 +518,21 @@ fn shade_all(
         if clip_rect.is_empty() {
             break;
         }
-        let Some(window) = tri.pixels(clip_rect, &slots, &stage.values[*provoking]) else {
+        // The window's quad grid is paid for before its values are computed.
+        let Some(b) = tri.bounds(clip_rect) else {
             continue;
         };
-        let grid = (PixelGrid::of(&window)) as u64;
+        let side = |lo: u32, hi: u32| emu::PixelInputs::grid_width(hi - (lo & !1)) as u64;
+        let grid = side(b.left, b.right) * side(b.top, b.bottom);
         pixels_left = pixels_left.checked_sub(grid).ok_or_else(|| {
             DrawFailure::Message(format!(
                 "the draw's triangles cover more than {} pixels with their quads (raise it with --max-list-pixels)",
                 settings.budget.max_pixels
             ))
         })?;
+        let Some(window) = tri.pixels(clip_rect, &slots, &stage.values[*provoking]) else {
+            continue;
+        };
         let mut draw = Draw::new(window.width, window.height);
         draw.limits = limits;
         draw.limits.max_executed_total = limits.max_executed_total.saturating_sub(drawn.total);
@@ -562,15 +567,6 @@ fn shade_all(
         pass.take(&window, &out, d.pixel.alpha_test)?;
     }
     Ok(drawn)
-}
-
-/// The pixels of a window's quad grid.
-struct PixelGrid;
-
-impl PixelGrid {
-    fn of(w: &raster::triangle::Window) -> usize {
-        emu::PixelInputs::grid_width(w.width) * emu::PixelInputs::grid_width(w.height)
-    }
 }
 
 /// Adds one triangle's gradient sites to the draw's.
