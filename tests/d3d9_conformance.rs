@@ -27,7 +27,7 @@ fn corpus() -> PathBuf {
 }
 
 /// What a list drew: each target's width and pixels, by name.
-type Targets = HashMap<String, (u32, Vec<Rgba>)>;
+pub(crate) type Targets = HashMap<String, (u32, Vec<Rgba>)>;
 
 /// The backends every list is drawn on: the emulator, and the GPU through
 /// the translation (`render --backend gpu`: the shaders run on the device,
@@ -38,8 +38,13 @@ const BACKENDS: [&str; 2] = ["emulator", "gpu"];
 /// --backend BACKEND` and reads every target back from its EXR file; `None`
 /// on the GPU when this machine has no Vulkan device (outside CI).
 fn render(list: &str, backend: &str) -> Option<Targets> {
+    render_file(&corpus().join(list), backend)
+}
+
+/// [`render`] for a draw list anywhere (other corpora share it).
+pub(crate) fn render_file(path: &std::path::Path, backend: &str) -> Option<Targets> {
+    let list = path.display().to_string();
     let dir = tempfile::tempdir().unwrap();
-    let path = corpus().join(list);
     let o = ps30(
         &[
             "render",
@@ -62,7 +67,7 @@ fn render(list: &str, backend: &str) -> Option<Targets> {
         "{list} ({backend}): {}",
         stderr(&o)
     );
-    let text: serde_json::Value = serde_json::from_slice(&std::fs::read(&path).unwrap()).unwrap();
+    let text: serde_json::Value = serde_json::from_slice(&std::fs::read(path).unwrap()).unwrap();
     let mut out = HashMap::new();
     for t in text["targets"].as_array().unwrap() {
         let name = t["name"].as_str().unwrap();

@@ -35,6 +35,7 @@ fn each_draw_alone(list: &DrawList) -> Vec<Vec<[f32; 4]>> {
                     target: 0,
                     output: OutputState::default(),
                     pixel: Default::default(),
+                    geometry: None,
                     ..d.clone()
                 })],
                 ..list.clone()

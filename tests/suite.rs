@@ -24,6 +24,7 @@ mod d3d9_conformance_ps2;
 mod damaged_inputs;
 mod decompile;
 mod docs;
+mod draw_conformance;
 mod gen;
 mod gpu;
 mod gpu_layered;

@@ -38,5 +38,6 @@ pub mod output;
 pub mod pixel_inputs;
 pub mod profile;
 pub mod ps1;
+pub mod raster;
 pub mod translate;
 pub mod valid;

@@ -147,6 +147,26 @@ fn malformed(pc: usize, reason: &str) -> EmuError {
     }
 }
 
+/// Component `c` of a primitive's per-pixel values into the first `n`
+/// lanes of `row` for batch `batch` (a lane outside the quad grid keeps its
+/// value: it is never live).
+fn grid_values(
+    ctx: &RunCtx,
+    batch: u64,
+    row: &mut [f32; LANES],
+    values: &[[f32; 4]],
+    c: usize,
+    n: usize,
+) {
+    let grid = 2 * ctx.quads_x;
+    for l in 0..n {
+        let (x, y, _) = ctx.lane_pixel(batch, l);
+        if let Some(v) = values.get((y * grid + x) as usize) {
+            row[l] = v[c];
+        }
+    }
+}
+
 /// Lanes whose bit is set in `m`.
 #[inline(always)]
 fn lanes(mut m: u64) -> impl Iterator<Item = usize> {
@@ -213,11 +233,12 @@ impl<'c, 'a> Worker<'c, 'a> {
         let mut target = 0u64;
         let mut xs = [0.0f32; LANES];
         let mut ys = [0.0f32; LANES];
+        let origin = ctx.pixels.map_or((0, 0), |p| p.origin);
         for l in 0..LANES {
             let (x, y, inside) = ctx.lane_pixel(batch, l);
             target |= (inside as u64) << l;
-            xs[l] = x as f32;
-            ys[l] = y as f32;
+            xs[l] = (x + u64::from(origin.0)) as f32;
+            ys[l] = (y + u64::from(origin.1)) as f32;
             self.pixel[l] = (y * ctx.width + x) as usize;
         }
         // Whole quads run when any of their pixels is inside the target.
@@ -229,12 +250,21 @@ impl<'c, 'a> Worker<'c, 'a> {
         }
         self.span = (LANES - live.leading_zeros() as usize).next_multiple_of(8);
         let n = self.span();
+        let per_pixel = ctx.pixels.map_or(&[][..], |p| &p.values[..]);
         for (v, input) in ctx.inputs.iter().enumerate() {
-            if let Some(input) = input {
+            let given = per_pixel.iter().find(|(s, _)| *s as usize == v);
+            if input.is_some() || given.is_some() {
                 for c in 0..4 {
                     let row = &mut self.rows[layout.input as usize + 4 * v + c];
-                    for l in 0..n {
-                        row[l] = input.base[c] + xs[l] * input.ddx[c] + ys[l] * input.ddy[c];
+                    match (input, given) {
+                        (Some(input), _) => {
+                            for l in 0..n {
+                                row[l] =
+                                    input.base[c] + xs[l] * input.ddx[c] + ys[l] * input.ddy[c];
+                            }
+                        }
+                        (None, Some((_, values))) => grid_values(ctx, batch, row, values, c, n),
+                        (None, None) => {}
                     }
                     if ctx.compiled.clamped & (1 << v) != 0 {
                         // ps_2_x colours (core/pixel_inputs.rs).

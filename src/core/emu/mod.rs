@@ -373,6 +373,44 @@ pub struct Draw<'a> {
     pub float_rules: crate::core::float_rules::FloatRules,
     /// Which side of the primitive the draw shows: the sign of `vFace`.
     pub face: Face,
+    /// A primitive's pixels: which pixels of the target it covers and its
+    /// inputs' values at every pixel of their quads ([`PixelInputs`]).
+    /// `None` (the default): every pixel is covered and the inputs are
+    /// [`Draw::inputs`]' planes.
+    pub pixels: Option<&'a PixelInputs>,
+}
+
+/// The pixels of one primitive and its inputs' values at each of them: what
+/// a draw of geometry hands the pixel shader, where interpolation with
+/// perspective is no plane over the target.
+///
+/// The draw's `target_width × target_height` is a window of the render
+/// target whose pixel (0, 0) is the render target's pixel `origin`; both
+/// coordinates of `origin` are even, so that the window's 2×2 quads are the
+/// render target's. Only `covered` pixels are reported; the other pixels of
+/// a quad with a covered pixel run as helper lanes, with their own values
+/// from `values` (the primitive's interpolation extended past its edges, as
+/// hardware computes it), so that `dsx`/`dsy` and the texld family's level
+/// of detail see at a primitive's edge what they see on hardware.
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct PixelInputs {
+    /// The render-target pixel of the window's pixel (0, 0); even
+    /// coordinates. `vPos` is `origin + (x, y)`.
+    pub origin: (u32, u32),
+    /// `target_width × target_height` flags, row-major: the pixels the
+    /// primitive covers.
+    pub covered: Vec<bool>,
+    /// `(slot, values)`: every pixel of the window's quad grid, `2·⌈w/2⌉ ×
+    /// 2·⌈h/2⌉` values row-major (a window of odd width or height has its
+    /// last column or row outside it, helpers only).
+    pub values: Vec<(u32, Vec<[f32; 4]>)>,
+}
+
+impl PixelInputs {
+    /// The width of the quad grid the values are laid out in.
+    pub fn grid_width(width: u32) -> usize {
+        2 * width.div_ceil(2) as usize
+    }
 }
 
 /// The facing of the primitive a draw rasterises, as `vFace` reports it.
@@ -414,6 +452,7 @@ impl<'a> Draw<'a> {
             record_lod: false,
             float_rules: crate::core::float_rules::FloatRules::Hardware,
             face: Face::Front,
+            pixels: None,
         }
     }
 }
@@ -544,6 +583,8 @@ pub enum EmuError {
     InvalidIntConstant { register: u32, reason: String },
     /// The thread pool could not be started.
     ThreadPool(String),
+    /// A primitive's [`PixelInputs`] do not fit the draw's window.
+    BadPixelInputs { reason: String },
 }
 
 impl fmt::Display for EmuError {
@@ -641,6 +682,9 @@ impl fmt::Display for EmuError {
                 write!(f, "i{} used by rep/loop: {}", register, reason)
             }
             EmuError::ThreadPool(e) => write!(f, "cannot start worker threads: {}", e),
+            EmuError::BadPixelInputs { reason } => {
+                write!(f, "a primitive's per-pixel inputs: {reason}")
+            }
         }
     }
 }
@@ -671,6 +715,8 @@ pub(crate) struct RunCtx<'c, 'a> {
     pub face: f32,
     /// The draw's float rules.
     pub rules: crate::core::float_rules::FloatRules,
+    /// A primitive's coverage and per-pixel inputs ([`Draw::pixels`]).
+    pub pixels: Option<&'a PixelInputs>,
 }
 
 impl<'c, 'a> RunCtx<'c, 'a> {
@@ -743,6 +789,7 @@ impl<'c, 'a> RunCtx<'c, 'a> {
             record_lod: draw.record_lod,
             face: draw.face.value(),
             rules: draw.float_rules,
+            pixels: draw.pixels,
         })
     }
 
@@ -759,7 +806,12 @@ impl<'c, 'a> RunCtx<'c, 'a> {
         let x = 2 * qx + (lane & 1) as u64;
         let y = 2 * qy + ((lane >> 1) & 1) as u64;
         let inside = q < self.batch_quads && quad < self.quads;
-        (x, y, inside && x < self.width && y < self.height)
+        let inside = inside && x < self.width && y < self.height;
+        let covered = match self.pixels {
+            None => true,
+            Some(p) => inside && p.covered[(y * self.width + x) as usize],
+        };
+        (x, y, inside && covered)
     }
 }
 
@@ -814,7 +866,14 @@ fn int_constants(compiled: &Compiled, c: &Constants) -> Result<[[i32; 4]; 16], E
 /// The draw's `v#` values: each declared input exactly once, nothing else.
 fn bind_inputs(compiled: &Compiled, draw: &Draw) -> Result<[Option<LinearInput>; 10], EmuError> {
     let mut inputs = [None; 10];
-    for &(v, value) in &draw.inputs {
+    let per_pixel = draw.pixels.map_or(&[][..], |p| &p.values[..]);
+    let mut given = 0u16;
+    let slots = draw
+        .inputs
+        .iter()
+        .map(|&(v, value)| (v, Some(value)))
+        .chain(per_pixel.iter().map(|(v, _)| (*v, None)));
+    for (v, value) in slots {
         let register = || crate::core::pixel_inputs::name(compiled.profile, v);
         if v >= 10 || compiled.inputs & (1 << v) == 0 {
             return Err(EmuError::InputNotDeclared {
@@ -822,15 +881,20 @@ fn bind_inputs(compiled: &Compiled, draw: &Draw) -> Result<[Option<LinearInput>;
                 register: register(),
             });
         }
-        if inputs[v as usize].replace(value).is_some() {
+        if given & (1 << v) != 0 {
             return Err(EmuError::DuplicateBinding {
                 what: "v",
                 index: v,
             });
         }
+        given |= 1 << v;
+        inputs[v as usize] = value;
+    }
+    if let Some(p) = draw.pixels {
+        check_pixels(p, draw.target_width, draw.target_height)?;
     }
     for v in 0..10u32 {
-        if compiled.inputs & (1 << v) != 0 && inputs[v as usize].is_none() {
+        if compiled.inputs & (1 << v) != 0 && given & (1 << v) == 0 {
             return Err(EmuError::MissingInput {
                 input: v,
                 register: crate::core::pixel_inputs::name(compiled.profile, v),
@@ -838,6 +902,28 @@ fn bind_inputs(compiled: &Compiled, draw: &Draw) -> Result<[Option<LinearInput>;
         }
     }
     Ok(inputs)
+}
+
+/// A primitive's pixels laid out as [`PixelInputs`] says for a `w × h` window.
+fn check_pixels(p: &PixelInputs, w: u32, h: u32) -> Result<(), EmuError> {
+    let grid = PixelInputs::grid_width(w) * PixelInputs::grid_width(h);
+    let bad = |reason: String| Err(EmuError::BadPixelInputs { reason });
+    if !p.origin.0.is_multiple_of(2) || !p.origin.1.is_multiple_of(2) {
+        return bad(format!("origin {:?} is not on the quad grid", p.origin));
+    }
+    if p.covered.len() != w as usize * h as usize {
+        return bad(format!(
+            "{} coverage flags for a {w}x{h} window",
+            p.covered.len()
+        ));
+    }
+    if let Some((v, values)) = p.values.iter().find(|(_, v)| v.len() != grid) {
+        return bad(format!(
+            "slot {v} has {} values for a quad grid of {grid}",
+            values.len()
+        ));
+    }
+    Ok(())
 }
 
 /// The draw's textures as samplers: each on an `s#` declared with its type, once.

@@ -182,18 +182,8 @@ pub enum Positions {
     Screen,
 }
 
-/// D3DRS_CULLMODE. The default is D3D9's, `ccw`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum Cull {
-    /// D3DCULL_NONE: both facings are drawn.
-    None,
-    /// D3DCULL_CW: triangles wound clockwise on screen are dropped.
-    Cw,
-    /// D3DCULL_CCW: triangles wound counter-clockwise on screen are dropped.
-    #[default]
-    Ccw,
-}
+/// D3DRS_CULLMODE (the rasteriser's own type, `core/raster`).
+pub use crate::core::raster::Cull;
 
 /// D3DRS_SHADEMODE. The default is D3D9's, Gouraud.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default, Deserialize)]

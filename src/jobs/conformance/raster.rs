@@ -10,7 +10,9 @@
 //! the triangle covers the target. Pixels next to an edge see the plane
 //! extended beyond the triangle — what a GPU's helper pixels compute too.
 //!
-//! The rules, each from Direct3D 9's documentation:
+//! The rules are `core/raster`'s (assembly, facing and culling, the
+//! top-left rule), stated and tested there; this file adds what only the
+//! corpus needs, each from Direct3D 9's documentation:
 //! * pixel (x, y) is sampled at screen point (x, y): D3D9 puts pixel centres
 //!   on integer coordinates ("Directly Mapping Texels to Pixels"); a clip-space
 //!   vertex (x, y) lands at ((x + 1)·W/2, (1 − y)·H/2), the viewport being
@@ -30,6 +32,7 @@
 
 use super::case::{Cull, Positions, Primitive};
 use crate::core::emu::{Face, LinearInput};
+use crate::core::raster;
 
 /// A vertex on screen: position in pixels and its values, one per input
 /// register the shader reads.
@@ -47,6 +50,19 @@ pub struct Triangle {
     /// Index into `v` of the vertex flat shading takes its colour from.
     pub provoking: usize,
     pub face: Face,
+    /// The same corners as the rasteriser holds them, for coverage.
+    shape: raster::Triangle,
+}
+
+/// `v` as the rasteriser's vertex (position only).
+fn corner(v: &ScreenVertex) -> raster::ScreenVertex {
+    raster::ScreenVertex {
+        x: v.x,
+        y: v.y,
+        z: 0.0,
+        rhw: 1.0,
+        values: Vec::new(),
+    }
 }
 
 /// The screen position of a vertex given as `positions` on a `width ×
@@ -84,12 +100,6 @@ pub fn to_screen(
     })
 }
 
-/// Twice the signed area in screen coordinates (y down): positive for a
-/// triangle wound clockwise on screen.
-fn area2(a: &ScreenVertex, b: &ScreenVertex, c: &ScreenVertex) -> f64 {
-    (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x)
-}
-
 /// Assembles `vertices` into triangles, drops the culled and degenerate
 /// ones, and winds the rest clockwise.
 pub fn assemble(
@@ -97,65 +107,30 @@ pub fn assemble(
     primitive: Primitive,
     cull: Cull,
 ) -> Result<Vec<Triangle>, String> {
-    // (vertex indices in winding order, provoking vertex index)
-    let corners: Vec<([usize; 3], usize)> = match primitive {
-        Primitive::TriangleList => {
-            if !vertices.len().is_multiple_of(3) {
-                return Err(format!(
-                    "a triangle list needs a multiple of 3 vertices, not {}",
-                    vertices.len()
-                ));
-            }
-            (0..vertices.len() / 3)
-                .map(|t| ([3 * t, 3 * t + 1, 3 * t + 2], 3 * t))
-                .collect()
-        }
-        Primitive::TriangleStrip => {
-            if vertices.len() < 3 {
-                return Err(format!(
-                    "a triangle strip needs at least 3 vertices, not {}",
-                    vertices.len()
-                ));
-            }
-            (0..vertices.len() - 2)
-                .map(|i| {
-                    let order = if i % 2 == 0 {
-                        [i, i + 1, i + 2]
-                    } else {
-                        [i + 1, i, i + 2]
-                    };
-                    (order, i)
-                })
-                .collect()
-        }
+    let kind = match primitive {
+        Primitive::TriangleList => raster::Primitive::TriangleList,
+        Primitive::TriangleStrip => raster::Primitive::TriangleStrip,
     };
     let mut out = Vec::new();
-    for (order, provoking) in corners {
-        let [a, b, c] = order.map(|i| &vertices[i]);
-        let area = area2(a, b, c);
-        let face = match area {
-            x if x > 0.0 => Face::Front,
-            x if x < 0.0 => Face::Back,
-            _ => continue, // degenerate: covers nothing
+    for a in raster::assemble(kind, vertices.len())? {
+        let [p, q, r] = a.corners.map(|i| corner(&vertices[i]));
+        let Some(shape) = raster::Triangle::new(p, q, r) else {
+            continue; // degenerate: covers nothing
         };
-        let culled = match cull {
-            Cull::None => false,
-            Cull::Cw => face == Face::Front,
-            Cull::Ccw => face == Face::Back,
-        };
-        if culled {
+        if cull.drops(shape.face) {
             continue;
         }
-        // Clockwise order, so that every edge function is positive inside.
-        let order = if face == Face::Front {
-            order
+        // Clockwise order, as the rasteriser rewinds it.
+        let order = if shape.face == Face::Front {
+            a.corners
         } else {
-            [order[0], order[2], order[1]]
+            [a.corners[0], a.corners[2], a.corners[1]]
         };
         out.push(Triangle {
             v: order.map(|i| vertices[i].clone()),
-            provoking: order.iter().position(|&i| i == provoking).unwrap_or(0),
-            face,
+            provoking: order.iter().position(|&i| i == a.provoking).unwrap_or(0),
+            face: shape.face,
+            shape,
         });
     }
     Ok(out)
@@ -165,14 +140,7 @@ impl Triangle {
     /// Whether the pixel centred at (`x`, `y`) is covered, with the
     /// top-left rule for centres exactly on an edge.
     pub fn covers(&self, x: f64, y: f64) -> bool {
-        (0..3).all(|i| {
-            let (a, b) = (&self.v[i], &self.v[(i + 1) % 3]);
-            let (dx, dy) = (b.x - a.x, b.y - a.y);
-            let e = dx * (y - a.y) - dy * (x - a.x);
-            // Clockwise on screen with y down: a top edge runs right along
-            // a row, a left edge runs up.
-            e > 0.0 || (e == 0.0 && ((dy == 0.0 && dx > 0.0) || dy < 0.0))
-        })
+        self.shape.covers(x, y)
     }
 
     /// The pixels the triangle covers on a `width × height` target, as

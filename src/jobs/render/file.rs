@@ -160,6 +160,7 @@ struct FileStep {
     outputs: Option<BTreeMap<String, super::pixel_state::FileOutput>>,
     clip_planes: Option<Vec<super::pixel_state::FileClipPlane>>,
     shade: Option<String>,
+    geometry: Option<super::geometry::FileGeometry>,
     mips: Option<String>,
     odd: Option<String>,
 }
@@ -655,7 +656,8 @@ impl Resolver {
             || s.alpha_test.is_some()
             || s.outputs.is_some()
             || s.clip_planes.is_some()
-            || s.shade.is_some();
+            || s.shade.is_some()
+            || s.geometry.is_some();
         let target = |name: &str, field: &str| {
             self.list.target(name).ok_or_else(|| {
                 self.err(
@@ -819,7 +821,13 @@ impl Resolver {
             .collect();
         let pixel = super::pixel_state::read(&fields, &target_of, (target, w, h), &sampled)
             .map_err(|(field, m)| self.err(&format!("{at}.{field}"), m))?;
+        let geometry = match &s.geometry {
+            None => None,
+            Some(g) => Some(Box::new(self.geometry(at, g, s, (w, h))?)),
+        };
+        self.pixel_stage(&format!("{at}.shader"), shader)?;
         Ok(DrawStep {
+            geometry,
             pixel: Box::new(pixel),
             target,
             shader,
@@ -998,6 +1006,50 @@ impl Resolver {
             alpha,
             factor: b.factor.unwrap_or([255; 4]),
         })
+    }
+
+    /// A draw's `geometry`, its vertex shader loaded.
+    fn geometry(
+        &mut self,
+        at: &str,
+        g: &super::geometry::FileGeometry,
+        s: &FileStep,
+        size: (u32, u32),
+    ) -> Result<super::geometry::Geometry, FileError> {
+        if s.inputs.is_some() || s.clip_planes.is_some() {
+            return Err(self.err(
+                at,
+                "a draw of geometry takes its inputs from its vertices and its clip planes in `geometry.clip_planes`".into(),
+            ));
+        }
+        let (mut geometry, vs) =
+            super::geometry::read(g, &self.dir, self.limits.max_input_bytes, size)
+                .map_err(|(field, m)| self.err(&format!("{at}.geometry.{field}"), m))?;
+        if let Some(spec) = vs {
+            let field = format!("{at}.geometry.vertex_shader");
+            let index = self.shader(&field, &spec, BTreeMap::new())?;
+            let profile = self.list.shaders[index].loaded.shader.program().profile;
+            if !crate::core::emu::vertex::runs(profile) {
+                return Err(self.err(
+                    &field,
+                    format!("a {profile} shader; the vertex stage runs vs_2_0, vs_2_x and vs_3_0"),
+                ));
+            }
+            geometry.vertex_shader = Some(index);
+        }
+        Ok(geometry)
+    }
+
+    /// Refuses a draw whose `shader` is no pixel shader.
+    fn pixel_stage(&self, field: &str, shader: usize) -> Result<(), FileError> {
+        let profile = self.list.shaders[shader].loaded.shader.program().profile;
+        if profile.stage() == crate::core::profile::Stage::Vertex {
+            return Err(self.err(
+                field,
+                format!("a {profile} shader; a draw's `shader` is its pixel shader (a vertex shader goes in `geometry.vertex_shader`)"),
+            ));
+        }
+        Ok(())
     }
 
     fn shader(

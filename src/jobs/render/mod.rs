@@ -20,14 +20,15 @@
 
 pub mod file;
 mod floats;
+pub mod geometry;
 pub mod input_values;
 pub mod pixel_state;
 pub mod textures;
 
 use crate::core::cost::{self, Profile, Range};
 use crate::core::emu::{
-    self, findings::Finding, Compiled, Constants, Draw, EmuError, LinearInput, SamplerState,
-    TextureLevels,
+    self, findings::Finding, Compiled, Constants, Draw, DrawOutput, EmuError, LinearInput,
+    SamplerState, TextureLevels,
 };
 use crate::core::image::{MipChain, OddSides, RenderTarget, TargetFormat, Texture};
 use crate::core::load;
@@ -102,6 +103,8 @@ pub struct DrawStep {
     /// Float rules, alpha test, further targets, clip planes, flat
     /// shading ([`pixel_state`]); boxed, as most draws leave it default.
     pub pixel: Box<pixel_state::PixelState>,
+    /// The vertices drawn ([`geometry`]); `None`: a full-screen quad.
+    pub geometry: Option<Box<geometry::Geometry>>,
 }
 
 /// One step of a draw list.
@@ -302,6 +305,8 @@ pub struct TargetState {
     pub target: RenderTarget,
     /// The mip chain of its last [`Step::Mips`], until it is drawn into again.
     pub mips: Option<MipChain>,
+    /// Its depth-stencil surface, once a draw of geometry tests depth.
+    pub depth: Option<geometry::run::DepthBuffer>,
 }
 
 /// Why a draw list could not run (a result that disagrees is not an error).
@@ -369,16 +374,23 @@ pub fn run(
         .map(|t| TargetState {
             target: RenderTarget::new(t.width, t.height, t.format),
             mips: None,
+            depth: None,
         })
         .collect();
-    let compiled: Vec<Compiled> = list
+    // Vertex shaders run in the vertex stage, through the IR.
+    let compiled: Vec<Option<Compiled>> = list
         .shaders
         .iter()
         .map(|s| {
-            emu::compile(&s.loaded.shader).map_err(|error| RenderError::Compile {
-                shader: s.name.clone(),
-                error,
-            })
+            let vertex =
+                s.loaded.shader.program().profile.stage() == crate::core::profile::Stage::Vertex;
+            (!vertex)
+                .then(|| emu::compile(&s.loaded.shader))
+                .transpose()
+                .map_err(|error| RenderError::Compile {
+                    shader: s.name.clone(),
+                    error,
+                })
         })
         .collect::<Result<_, _>>()?;
     let mut reports = Vec::with_capacity(list.steps.len());
@@ -413,7 +425,7 @@ pub fn run(
                 let list_bound = limits.max_executed_total > executed_left;
                 limits.max_executed_total = limits.max_executed_total.min(executed_left);
                 let (detail, executed) =
-                    draw(list, &compiled[d.shader], d, &mut states, settings, limits)
+                    draw(list, compiled[d.shader].as_ref(), d, &mut states, settings, limits)
                         .map_err(|e| match e {
                             DrawFailure::Emu(EmuError::TotalExecutedLimit { .. }) if list_bound => {
                                 RenderError::Budget(format!(
@@ -449,7 +461,7 @@ fn report(
 }
 
 /// A draw's failure before its step index is known.
-enum DrawFailure {
+pub(crate) enum DrawFailure {
     Message(String),
     Emu(EmuError),
 }
@@ -467,7 +479,7 @@ impl DrawFailure {
 /// and the instruction slots it executed, all pixels together.
 fn draw(
     list: &DrawList,
-    compiled: &Compiled,
+    compiled: Option<&Compiled>,
     d: &DrawStep,
     states: &mut [TargetState],
     settings: &Settings,
@@ -476,6 +488,15 @@ fn draw(
     let threads = settings.threads;
     let spec = &list.targets[d.target];
     let shader = &list.shaders[d.shader];
+    let compiled = compiled.ok_or_else(|| {
+        DrawFailure::Message(format!(
+            "{} is a vertex shader, not a pixel shader",
+            shader.name
+        ))
+    })?;
+    if let Some(g) = &d.geometry {
+        return geometry_draw(list, compiled, d, g, states, settings, limits);
+    }
     let mut emu_draw = Draw::new(spec.width, spec.height);
     emu_draw.limits = limits;
     emu_draw.record_lod = true;
@@ -485,33 +506,7 @@ fn draw(
     }
     emu_draw.constants = d.constants.clone();
     emu_draw.float_rules = d.pixel.float_rules.unwrap_or(settings.float_rules);
-    for &(s, source, state) in &d.samplers {
-        let levels: TextureLevels<'_> = match source {
-            Source::Texture(t) => {
-                let t = &list.textures[t];
-                match &t.file {
-                    Some(file) => file.into(),
-                    None => Texture {
-                        width: t.width,
-                        height: t.height,
-                        texels: &t.texels,
-                    }
-                    .into(),
-                }
-            }
-            Source::Target(t) if t == d.target => {
-                return Err(DrawFailure::Message(format!(
-                "s{s} samples `{}`, the target this draw renders to (Direct3D 9 does not allow it)",
-                spec.name
-            )))
-            }
-            Source::Target(t) => match &states[t].mips {
-                Some(chain) => chain.into(),
-                None => states[t].target.as_texture().into(),
-            },
-        };
-        emu_draw.samplers.push((s, levels, state));
-    }
+    emu_draw.samplers = bind_samplers(list, d, states)?;
     let mut out = backend::draw_output(
         &settings.backend,
         &shader.loaded.shader,
@@ -576,7 +571,91 @@ fn draw(
             .map_err(|e| DrawFailure::Message(format!("oC{}: {e}", k + 1)))?;
         state.mips = None;
     }
-    let detail = StepDetail::Draw {
+    let detail = draw_detail(shader, executed_static, executed, merged, findings);
+    Ok((detail, executed_total))
+}
+
+/// The textures a draw's samplers read, as the emulator binds them.
+pub(crate) fn bind_samplers<'s>(
+    list: &'s DrawList,
+    d: &DrawStep,
+    states: &'s [TargetState],
+) -> Result<Vec<(u32, TextureLevels<'s>, SamplerState)>, DrawFailure> {
+    let spec = &list.targets[d.target];
+    let mut out = Vec::with_capacity(d.samplers.len());
+    for &(s, source, state) in &d.samplers {
+        let levels: TextureLevels<'_> = match source {
+            Source::Texture(t) => {
+                let t = &list.textures[t];
+                match &t.file {
+                    Some(file) => file.into(),
+                    None => Texture {
+                        width: t.width,
+                        height: t.height,
+                        texels: &t.texels,
+                    }
+                    .into(),
+                }
+            }
+            Source::Target(t) if t == d.target => {
+                return Err(DrawFailure::Message(format!(
+                "s{s} samples `{}`, the target this draw renders to (Direct3D 9 does not allow it)",
+                spec.name
+            )))
+            }
+            Source::Target(t) => match &states[t].mips {
+                Some(chain) => chain.into(),
+                None => states[t].target.as_texture().into(),
+            },
+        };
+        out.push((s, levels, state));
+    }
+    Ok(out)
+}
+
+/// A draw of geometry ([`geometry`]) and its report.
+fn geometry_draw(
+    list: &DrawList,
+    compiled: &Compiled,
+    d: &DrawStep,
+    g: &geometry::Geometry,
+    states: &mut [TargetState],
+    settings: &Settings,
+    limits: emu::EmuLimits,
+) -> Result<(StepDetail, u64), DrawFailure> {
+    let shader = &list.shaders[d.shader];
+    let drawn = geometry::run::draw(list, compiled, d, g, states, settings, limits)?;
+    let executed_static = static_count(shader, &d.constants)?;
+    let executed = drawn.executed.map(|(min, max)| Range { min, max });
+    let summary = DrawOutput {
+        width: 0,
+        height: 0,
+        color: Vec::new(),
+        depth: None,
+        killed: Vec::new(),
+        executed: Vec::new(),
+        quads_x: 0,
+        quad_executed: Vec::new(),
+        quad_divergent: Vec::new(),
+        gradients: drawn.gradients,
+    };
+    let mut draw = Draw::new(1, 1);
+    draw.samplers = bind_samplers(list, d, states)?;
+    let findings = emu::findings::findings(&summary, &draw, &shader.loaded.file);
+    let detail = draw_detail(shader, executed_static, executed, drawn.merged, findings);
+    Ok((detail, drawn.total))
+}
+
+/// A draw's report: its counts beside the cost model's, what it merged,
+/// the emulator's findings.
+fn draw_detail(
+    shader: &ShaderSpec,
+    executed_static: Range,
+    executed: Option<Range>,
+    merged: MergeStats,
+    findings: Vec<Finding>,
+) -> StepDetail {
+    StepDetail::Draw {
         shader: shader.name.clone(),
         counts_agree: executed
             .is_none_or(|e| executed_static.min <= e.min && e.max <= executed_static.max),
@@ -584,8 +663,7 @@ fn draw(
         executed,
         merged,
         findings,
-    };
-    Ok((detail, executed_total))
+    }
 }
 
 /// The cost model's executed range for a draw, under its constants.

@@ -158,7 +158,7 @@ impl CmpFunc {
     }
 
     /// Whether `a FUNC b` holds.
-    pub fn passes(self, a: u8, b: u8) -> bool {
+    pub fn passes<T: PartialOrd>(self, a: T, b: T) -> bool {
         match self {
             CmpFunc::Never => false,
             CmpFunc::Less => a < b,

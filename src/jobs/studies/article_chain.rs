@@ -105,6 +105,7 @@ pub fn draw_list(scene: &Scene, lights: &[Light]) -> Result<DrawList, String> {
                 write: ColorWrite(ColorWrite::RED | ColorWrite::GREEN | ColorWrite::BLUE),
             },
             pixel: Default::default(),
+            geometry: None,
         }));
     }
     Ok(DrawList {

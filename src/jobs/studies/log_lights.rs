@@ -166,6 +166,7 @@ fn light_draw(target: usize, shader: usize, brightness: f32, output: OutputState
         samplers: Vec::new(),
         output,
         pixel: Default::default(),
+        geometry: None,
     })
 }
 
@@ -243,6 +244,7 @@ pub fn draw_list(method: Method, lights: u32, brightness: f32) -> Result<DrawLis
             )],
             output: OutputState::default(),
             pixel: Default::default(),
+            geometry: None,
         }));
     }
     Ok(list)

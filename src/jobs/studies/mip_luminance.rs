@@ -132,6 +132,7 @@ pub fn draw_list(
                     ..OutputState::default()
                 },
                 pixel: Default::default(),
+                geometry: None,
             }),
             Step::Mips { target: 0, odd },
         ],
