@@ -46,5 +46,6 @@ mod tonemap;
 mod translate;
 mod ux;
 mod validation;
+mod vertex_gpu;
 mod vertex_shaders;
 mod wine_vectors;

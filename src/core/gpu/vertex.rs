@@ -116,9 +116,43 @@ fn dispatch(
         label: Some("ps30 vertex shader"),
         source: wgpu::ShaderSource::Naga(Cow::Owned(module)),
     });
+    // An explicit layout: a shader that reads no constant (or no input)
+    // still binds all three buffers.
+    let buffer_entry = |binding, ty| wgpu::BindGroupLayoutEntry {
+        binding,
+        visibility: wgpu::ShaderStages::COMPUTE,
+        ty: wgpu::BindingType::Buffer {
+            ty,
+            has_dynamic_offset: false,
+            min_binding_size: None,
+        },
+        count: None,
+    };
+    let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+        label: Some("ps30 vertex bindings"),
+        entries: &[
+            buffer_entry(
+                crate::core::translate::interface::CONSTANTS_BINDING,
+                wgpu::BufferBindingType::Uniform,
+            ),
+            buffer_entry(
+                tv::INPUTS_BINDING,
+                wgpu::BufferBindingType::Storage { read_only: true },
+            ),
+            buffer_entry(
+                tv::OUTPUTS_BINDING,
+                wgpu::BufferBindingType::Storage { read_only: false },
+            ),
+        ],
+    });
+    let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+        label: Some("ps30 vertices"),
+        bind_group_layouts: &[Some(&layout)],
+        immediate_size: 0,
+    });
     let pipeline = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
         label: Some("ps30 vertices"),
-        layout: None,
+        layout: Some(&pipeline_layout),
         module: &shader,
         entry_point: Some(tv::ENTRY),
         compilation_options: Default::default(),
@@ -153,7 +187,6 @@ fn dispatch(
         usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
         mapped_at_creation: false,
     });
-    let layout = pipeline.get_bind_group_layout(0);
     let bind = device.create_bind_group(&wgpu::BindGroupDescriptor {
         label: None,
         layout: &layout,

@@ -409,6 +409,14 @@ impl Lower<'_> {
     pub fn read(&mut self, s: &Src) -> Result<Expr, TranslateError> {
         let v = match s.relative {
             Some(rel) if self.cx.vertex.is_some() => self.vertex_relative(s.reg, rel)?,
+            // Past c255 (vs_2_0 assembles up to c8191): zeros, as the
+            // emulator's vertex stage reads them.
+            None if self.cx.vertex.is_some()
+                && s.reg.file == RegFile::Const
+                && s.reg.index >= super::vertex::FLOATS =>
+            {
+                self.zero4()
+            }
             _ => self.reg(s.reg, s.relative.is_some())?,
         };
         Ok(self.modify(v, s.swizzle, s.modifier))
