@@ -19,8 +19,8 @@ use std::path::Path;
 
 /// Values that exercise `mova`'s rounding (halves, 2.49999), signs, small
 /// and large magnitudes.
-const VALUES: [f32; 12] = [
-    0.0, 1.0, -1.0, 0.5, -1.5, 2.49999, 3.75, -0.25, 1e-3, 100.0, -7.5, 0.75,
+const VALUES: [f32; 14] = [
+    0.0, 1.0, -1.0, 0.5, -1.5, 2.49999, 3.75, -0.25, 1e-3, 100.0, -7.5, 0.75, 2.5, 3.5,
 ];
 
 /// 16 vertices, each declared input filled from [`VALUES`].
@@ -140,4 +140,44 @@ fn vertex_probes_on_the_gpu_agree_with_the_emulator_or_are_explained() {
     assert!(findings.is_empty(), "{}", findings.join("\n"));
     // 298 probes and 3 compiled shaders; most probes assemble.
     assert!(ran >= 150, "only {ran} shaders ran");
+}
+
+#[test]
+fn mova_rounds_halves_away_from_zero_on_the_gpu() {
+    // c[a0.x] with c_k = (k, 0, 0, 0): oPos.x is the register a0.x picked,
+    // and 0 where it lies outside c0–c255. Rounded to nearest, halves away
+    // from zero (docs/vertex-shaders.md): 0.5 → 1, 3.5 → 4, 2.49999 → 2,
+    // −0.5 → −1 (outside: 0). llvmpipe once gave 3 for 3.5, the emulator 4.
+    let Some(g) = gpu("mova_rounds_halves_away_from_zero_on_the_gpu") else {
+        return;
+    };
+    let src = "vs_2_0\ndcl_position v0\nmova a0.x, v0.x\nmov oPos, c[a0.x]\n";
+    let l = load::load_str("mova.vsh", src, &Options::default()).unwrap();
+    let xs = [
+        0.5f32, 1.5, 2.5, 3.5, 4.5, 7.5, 2.49999, 3.51, -0.5, 0.49999997,
+    ];
+    let want = [1.0f32, 2.0, 3.0, 4.0, 5.0, 8.0, 2.0, 4.0, 0.0, 0.0];
+    let list = Vertices {
+        count: xs.len(),
+        attributes: vec![(
+            Attribute {
+                usage: "position".into(),
+                index: 0,
+            },
+            xs.iter().map(|&x| [x, 0.0, 0.0, 1.0]).collect(),
+        )],
+    };
+    let draw = VertexDraw {
+        constants: Constants {
+            float: (0..16).map(|k| [k as f32, 0.0, 0.0, 0.0]).collect(),
+            ..Default::default()
+        },
+        ..Default::default()
+    };
+    let e = ps30::core::emu::vertex::run(&l.shader, &draw, &list).unwrap();
+    let o = ps30::core::gpu::run_vertices(&g, &l.shader, &draw, &list).unwrap();
+    for (k, &w) in want.iter().enumerate() {
+        assert_eq!(e.values[k][0][0], w, "emulator, a0.x from {}", xs[k]);
+        assert_eq!(o.values[k][0][0], w, "GPU, a0.x from {}", xs[k]);
+    }
 }

@@ -357,13 +357,20 @@ impl Lower<'_> {
     fn round_to_int(&mut self, x: Expr) -> Expr {
         let t = self.fb.math(M::Trunc, &[x]);
         // Exact: |x − trunc(x)| < 1 and both share their exponent range.
+        // The two signs are tested apart: written as |x − t| ≥ ½ with
+        // `sign(x)`, llvmpipe rounded 3.5 to 3 (its compiler took the
+        // pattern for a round-to-even).
         let frac = self.fb.binary(B::Subtract, x, t);
-        let afrac = self.fb.math(M::Abs, &[frac]);
-        let half = self.fb.f32(0.5);
-        let away = self.fb.binary(B::GreaterEqual, afrac, half);
-        let s = self.fb.math(M::Sign, &[x]);
-        let stepped = self.fb.binary(B::Add, t, s);
-        let r = self.fb.select(away, stepped, t);
+        let (half, minus_half) = (self.fb.f32(0.5), self.fb.f32(-0.5));
+        let up = self.fb.binary(B::GreaterEqual, frac, half);
+        let down = self.fb.binary(B::LessEqual, frac, minus_half);
+        let one = self.fb.f32(1.0);
+        let (above, below) = (
+            self.fb.binary(B::Add, t, one),
+            self.fb.binary(B::Subtract, t, one),
+        );
+        let r = self.fb.select(down, below, t);
+        let r = self.fb.select(up, above, r);
         // i32's range: −2^31 is a float, 2147483520 the largest below 2^31.
         let (lo, hi) = (self.fb.f32(-2_147_483_648.0), self.fb.f32(2_147_483_520.0));
         let clamped = self.fb.math(M::Clamp, &[r, lo, hi]);
