@@ -413,7 +413,7 @@ impl Lower<'_> {
             // emulator's vertex stage reads them.
             None if self.cx.vertex.is_some()
                 && s.reg.file == RegFile::Const
-                && s.reg.index >= super::vertex::FLOATS =>
+                && s.reg.index >= super::module::VERTEX_FLOATS =>
             {
                 self.zero4()
             }

@@ -69,7 +69,29 @@ pub(super) struct Ctx {
     /// The shader's profile, which numbers its input slots.
     pub profile: crate::core::profile::Profile,
     /// A vertex shader's own registers (`vertex.rs`); `None` for pixel shaders.
-    pub vertex: Option<super::vertex::VertexVars>,
+    pub vertex: Option<VertexVars>,
+}
+
+/// `c#` registers in a vertex shader's constant block (c0–c255).
+pub const VERTEX_FLOATS: u32 = 256;
+
+/// Output rows of a vertex shader (`emu::vertex::output_row`'s).
+pub const VERTEX_ROWS: u32 = crate::core::emu::vertex::OUTPUT_ROWS as u32;
+
+/// The registers only vertex shaders have.
+pub struct VertexVars {
+    /// `a0`, four integers.
+    pub a0: Handle<GlobalVariable>,
+    /// The output rows, plus one that catches dropped writes.
+    pub o: Handle<GlobalVariable>,
+}
+
+fn vertex_vars(m: &mut Module, t: &Types) -> VertexVars {
+    let rows = array(m, t.vec4, VERTEX_ROWS + 1, 16);
+    VertexVars {
+        a0: global(m, "a0", AddressSpace::Private, None, t.ivec4),
+        o: global(m, "o", AddressSpace::Private, None, rows),
+    }
 }
 
 pub(super) fn ty(m: &mut Module, name: Option<&str>, inner: TypeInner) -> Handle<Type> {
@@ -225,12 +247,7 @@ impl Ctx {
     ) -> Result<Ctx, TranslateError> {
         let t = types(m);
         let is_vertex = shader.program().profile.stage() == crate::core::profile::Stage::Vertex;
-        let floats = if is_vertex {
-            super::vertex::FLOATS
-        } else {
-            224
-        };
-        let block = constant_block(m, &t, floats);
+        let block = constant_block(m, &t, if is_vertex { VERTEX_FLOATS } else { 224 });
         let consts = global(
             m,
             "ps30",
@@ -345,9 +362,8 @@ impl Ctx {
             int_defs.insert(d.index, c);
         }
         let bool_defs = p.bool_defs.iter().map(|d| (d.index, d.value)).collect();
-        let vertex = is_vertex.then(|| super::vertex::VertexVars::new(m, &t));
         Ok(Ctx {
-            vertex,
+            vertex: is_vertex.then(|| vertex_vars(m, &t)),
             t,
             float_defs_subnormal,
             consts,

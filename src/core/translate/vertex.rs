@@ -31,19 +31,19 @@
 
 use super::builder::{Expr, Fb};
 use super::lower::{Lower, Value};
-use super::module::{self, Ctx, Types};
+use super::module::{self, Ctx};
 use super::{Entry, Interface, Specialisation, TranslateError, Translation};
-use crate::core::emu::vertex::{output_row, OUTPUT_ROWS};
+use crate::core::emu::vertex::output_row;
 use crate::core::float_rules::FloatRules;
 use crate::core::ir::{Dst, Instruction, Reg, RelIndex, Shader};
 use crate::core::isa::{Opcode, RegFile};
 use naga::{
-    AddressSpace, ArraySize, BinaryOperator as B, Binding, BuiltIn, Expression, GlobalVariable,
-    Handle, MathFunction as M, Module, Statement, StorageAccess, TypeInner,
+    AddressSpace, ArraySize, BinaryOperator as B, Binding, BuiltIn, Expression, Handle,
+    MathFunction as M, Module, Statement, StorageAccess, TypeInner,
 };
 
-/// `c#` registers in a vertex shader's constant block (c0–c255).
-pub const FLOATS: u32 = 256;
+pub use super::module::{VertexVars, VERTEX_FLOATS as FLOATS};
+
 /// Byte offset of `i0` in a vertex shader's constant block.
 pub const INTS_OFFSET: u32 = FLOATS * 16;
 /// Byte offset of `b0` in a vertex shader's constant block.
@@ -58,29 +58,11 @@ pub const OUTPUTS_BINDING: u32 = 42;
 /// Input registers per vertex in the input buffer (v0–v15).
 pub const INPUT_ROWS: u32 = 16;
 /// Output rows per vertex in the output buffer (the emulator's rows).
-pub const ROWS: u32 = OUTPUT_ROWS as u32;
+pub const ROWS: u32 = super::module::VERTEX_ROWS;
 /// Vertices per workgroup of `ps30_vertices`.
 pub const WORKGROUP: u32 = 64;
 /// The compute entry point's name.
 pub const ENTRY: &str = "ps30_vertices";
-
-/// The registers only vertex shaders have.
-pub struct VertexVars {
-    /// `a0`, four integers.
-    pub a0: Handle<GlobalVariable>,
-    /// The output rows, plus one that catches dropped writes.
-    pub o: Handle<GlobalVariable>,
-}
-
-impl VertexVars {
-    pub(super) fn new(m: &mut Module, t: &Types) -> VertexVars {
-        let rows = module::array(m, t.vec4, ROWS + 1, 16);
-        VertexVars {
-            a0: module::global(m, "a0", AddressSpace::Private, None, t.ivec4),
-            o: module::global(m, "o", AddressSpace::Private, None, rows),
-        }
-    }
-}
 
 /// Lowers a vertex shader into a module with the compute entry point
 /// [`ENTRY`], validated. Every constant is read from the constant block at
