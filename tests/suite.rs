@@ -47,5 +47,6 @@ mod tonemap;
 mod translate;
 mod ux;
 mod validation;
+mod vertex_gpu;
 mod vertex_shaders;
 mod wine_vectors;

@@ -60,6 +60,19 @@ fn run(shader: &str, list: &str, args: &[&str]) -> (Vec<(String, Value)>, Vec<Ou
     (slots, values)
 }
 
+/// The same run on the GPU backend (`--backend gpu`), when a device exists:
+/// every value here is exact in f32, so the translation must give the
+/// emulator's outputs bit for bit (and the hand-worked values with them).
+fn same_on_gpu(test: &str, shader: &str, list: &str, args: &[&str], emulated: &[Outputs]) {
+    if super::common::gpu::gpu(test).is_none() {
+        return;
+    }
+    let mut all = args.to_vec();
+    all.extend(["--backend", "gpu"]);
+    let (_, on_gpu) = run(shader, list, &all);
+    assert_eq!(on_gpu, emulated, "{test}: the GPU backend's outputs");
+}
+
 #[test]
 fn a_vs_2_0_transform_compiled_by_microsoft() {
     // transform.hlsl: oPos = mul(p, wvp) (dp4 with the columns c0-c3),
@@ -93,6 +106,7 @@ fn a_vs_2_0_transform_compiled_by_microsoft() {
     assert_eq!(v[1][0], [1.0, 0.0, 0.0, 1.0]);
     assert_eq!(v[1][1], [0.0; 4]);
     assert_eq!(v[1][2][..2], [2.0, 2.0]);
+    same_on_gpu("transform", "transform.hlsl.fxo", list, &consts, &v);
 }
 
 #[test]
@@ -126,6 +140,7 @@ fn vs_3_0_skinning_indexes_the_palette_through_a0() {
     assert_eq!(v[0][1][..2], [0.5, 0.25]);
     // vertex 1: (int)0.9 = 0, so a = p (weight 1; b does not count).
     assert_eq!(v[1][0], [1.0, 1.0, 1.0, 1.0]);
+    same_on_gpu("palette", "palette.hlsl.fxo", list, &args, &v);
 }
 
 #[test]
@@ -149,6 +164,7 @@ fn vs_3_0_loop_over_a_uniform_count_reads_c_al() {
     // three iterations: (1 + 1, −2 + 10, 0 + 100, 4); c3 is never added.
     assert_eq!(v[0][0], [2.0, 8.0, 100.0, 4.0]);
     assert_eq!(v[0][1], [1.0, -1.0, 0.0, 1.0]);
+    same_on_gpu("offsets", "offsets.hlsl.fxo", list, &args, &v);
 }
 
 #[test]

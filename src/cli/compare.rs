@@ -36,6 +36,10 @@ pub struct Args {
     /// color0 = texcoord[,Z,W] or X[,Y,Z,W]); --image is optional then.
     #[arg(long = "input", value_name = "NAME=texcoord[,Z,W]|X,Y,Z,W", conflicts_with_all = ["luminance", "tonemap", "all"])]
     input_values: Vec<String>,
+    /// Run the vertex shader SHADER over the vertices of this JSON file (the `ps30 run
+    /// --vertices` format) on both backends and compare every output component.
+    #[arg(long, value_name = "FILE", conflicts_with_all = ["luminance", "tonemap", "all", "image", "target"])]
+    vertices: Option<PathBuf>,
     /// Compare the luminance pipeline on --image instead of one draw.
     #[arg(long, conflicts_with_all = ["shader", "tonemap", "all"])]
     luminance: bool,
@@ -110,6 +114,9 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
     let gpu = Arc::new(Gpu::open()?);
     if !ui.quiet && !args.json {
         eprint(&format!("device: {}\n", gpu.info().line()));
+    }
+    if let Some(path) = &args.vertices {
+        return vertices(&args, ui, &gpu, path);
     }
     if (args.inputs.is_some() || !args.input_values.is_empty()) && args.image.is_none() {
         return one_draw(&args, ui, &gpu, None);
@@ -280,5 +287,43 @@ fn run_all(args: &Args, ui: &Ui) -> super::Result {
     }
     Ok(Outcome::from_ok(
         ps30::jobs::compare::explain::all_explained(&result),
+    ))
+}
+
+/// `compare VS --vertices FILE`: the vertex shader on both backends.
+fn vertices(args: &Args, ui: &Ui, gpu: &Arc<Gpu>, path: &std::path::Path) -> super::Result {
+    let spec = args.shader.as_deref().unwrap_or_default();
+    let list = ps30::jobs::vertices::read(path).map_err(BadInput)?;
+    let loaded = load_shader(ui, spec, &args.source, &args.input)?;
+    let profile = loaded.shader.program().profile;
+    if !ps30::core::emu::vertex::runs(profile) {
+        return Err(BadInput(format!(
+            "{spec}: a {profile} shader; --vertices runs vertex shaders (vs_2_0, vs_2_x, vs_3_0)"
+        )));
+    }
+    let resolved = args.constants.resolve(loaded.constants.as_ref())?;
+    let inputs = read_inputs(args.inputs.as_deref())?;
+    let (constants, textures) = with_inputs(&resolved, inputs);
+    let draw = ps30::core::emu::vertex::VertexDraw {
+        constants,
+        samplers: textures
+            .iter()
+            .map(|(s, t, state)| (*s, t.into(), *state))
+            .collect(),
+        float_rules: args.float_rules.into(),
+        max_executed_per_vertex: args.max_executed_per_pixel,
+    };
+    let c = {
+        let _s = ui.spinner("running the vertices on both backends, and the probes");
+        let probes = compare::probe::run(gpu)?;
+        compare::vertices::explained(gpu, &loaded, &draw, &list, &probes)?
+    };
+    if args.json {
+        print_json(&show::draw_json(gpu.info(), &c))?;
+    } else {
+        say(ui, &show::vertices_text(&c))?;
+    }
+    Ok(Outcome::from_ok(
+        c.explanation.as_ref().is_some_and(|e| !e.finding),
     ))
 }

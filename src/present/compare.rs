@@ -98,6 +98,44 @@ pub fn draw_text(c: &DrawComparison) -> String {
     s
 }
 
+/// The text of a vertex shader's comparison (`compare VS --vertices`):
+/// one channel per output component, the worst vertices with their inputs.
+pub fn vertices_text(c: &DrawComparison) -> String {
+    let mut s = format!(
+        "{}: {} vertices, {}, float rules {}: emulator vs GPU\n",
+        c.shader, c.width, c.target, c.float_rules
+    );
+    s.push_str(&channel_table(&c.channels));
+    for ch in &c.channels {
+        for w in &ch.worst {
+            s.push_str(&format!(
+                "  worst {} at vertex {}: emulator {:e}, GPU {:e} ({})",
+                ch.channel,
+                w.x,
+                w.emulator,
+                w.gpu,
+                ulp_text(w.ulp)
+            ));
+            if let Some(p) = c.worst_inputs.iter().find(|p| p.x == w.x) {
+                let inputs: Vec<String> = p
+                    .values
+                    .iter()
+                    .map(|(r, v)| format!("{r} = ({}, {}, {}, {})", v[0], v[1], v[2], v[3]))
+                    .collect();
+                s.push_str(&format!("; {}", inputs.join(", ")));
+            }
+            s.push('\n');
+        }
+    }
+    s.push_str(if c.all_identical() {
+        "every output bit-identical\n"
+    } else {
+        "the backends differ (see the table)\n"
+    });
+    s.push_str(&explanation_line(&c.explanation));
+    s
+}
+
 /// `--json` of one draw's comparison: the device, the comparison and
 /// whether every pixel is bit-identical.
 pub fn draw_json(device: &DeviceInfo, c: &DrawComparison) -> serde_json::Value {

@@ -27,8 +27,11 @@ pub(super) fn run(args: &Args, path: &Path, ui: &Ui) -> super::super::Result {
     let resolved = args.constants.resolve(loaded.constants.as_ref())?;
     let inputs = read_inputs(args.inputs.as_deref())?;
     let (constants, textures) = with_inputs(&resolved, inputs);
-    let out = vertices::run(
+    let backend = args.draw.open()?;
+    let out = vertices::run_on(
+        &backend,
         &loaded.shader,
+        &loaded.file,
         constants,
         &textures,
         &list,

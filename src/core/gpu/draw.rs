@@ -253,7 +253,7 @@ impl Prepared<'_> {
 
 /// The device's validation and out-of-memory errors over a span of calls,
 /// and any error it raised outside a scope.
-struct ErrorScopes {
+pub(super) struct ErrorScopes {
     // wgpu panics when scopes are popped out of order, and a span left
     // early (`?`) drops them in field order: the inner scope comes first.
     memory: wgpu::ErrorScopeGuard,
@@ -261,14 +261,14 @@ struct ErrorScopes {
 }
 
 impl ErrorScopes {
-    fn push(gpu: &Gpu) -> ErrorScopes {
+    pub(super) fn push(gpu: &Gpu) -> ErrorScopes {
         let validation = gpu.device.push_error_scope(wgpu::ErrorFilter::Validation);
         let memory = gpu.device.push_error_scope(wgpu::ErrorFilter::OutOfMemory);
         ErrorScopes { memory, validation }
     }
 
     /// The first error the span raised, if any (innermost scope first).
-    fn pop(self, gpu: &Gpu) -> Result<(), GpuError> {
+    pub(super) fn pop(self, gpu: &Gpu) -> Result<(), GpuError> {
         if let Some(e) = pollster::block_on(self.memory.pop()) {
             return Err(GpuError::Failed(e.to_string()));
         }

@@ -35,8 +35,10 @@ mod draw;
 mod runtime_dir;
 mod sampler;
 mod texture;
+mod vertex;
 
 pub use draw::{prepare, prepare_with, run, GpuOutput, Prepared, TargetKind};
+pub use vertex::run_vertices;
 
 use crate::core::emu::EmuError;
 use crate::core::translate::TranslateError;
@@ -95,6 +97,8 @@ pub enum GpuError {
     Device(String),
     /// The draw is not one the emulator would run either.
     Draw(EmuError),
+    /// The vertex draw is not one the emulator's vertex stage would run either.
+    Vertices(crate::core::emu::vertex::VertexError),
     /// The shader did not translate.
     Translate(TranslateError),
     /// The device cannot do what the draw asks (a feature or a limit).
@@ -113,6 +117,7 @@ impl fmt::Display for GpuError {
             ),
             GpuError::Device(e) => write!(f, "the GPU adapter gave no device: {e}"),
             GpuError::Draw(e) => write!(f, "{e}"),
+            GpuError::Vertices(e) => write!(f, "{e}"),
             GpuError::Translate(e) => write!(f, "{e}"),
             GpuError::Unsupported(e) => write!(f, "the GPU cannot draw this: {e}"),
             GpuError::Failed(e) => write!(f, "GPU: {e}"),

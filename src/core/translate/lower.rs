@@ -35,7 +35,7 @@ pub(super) struct Lower<'a> {
 
 /// A result: a vec4, or a scalar replicated to every component.
 #[derive(Clone, Copy)]
-enum Value {
+pub(super) enum Value {
     Vector(Expr),
     Scalar(Expr),
 }
@@ -55,7 +55,7 @@ impl Lower<'_> {
     }
 
     /// +∞ (naga refuses non-finite literals: a bit cast of 0x7f800000).
-    fn infinity(&mut self) -> Expr {
+    pub(super) fn infinity(&mut self) -> Expr {
         let bits = self.fb.u32(0x7f80_0000);
         self.fb.add(Expression::As {
             expr: bits,
@@ -274,7 +274,7 @@ impl Lower<'_> {
     /// `abs(v) < 2^-126` turned −∞ into −0 on llvmpipe (its compiler may
     /// assume finite values), and a device need not keep the sign of a
     /// zero it computes, so `v * 0` would not do either.
-    fn flush(&mut self, v: Expr, size: Option<VectorSize>) -> Expr {
+    pub(super) fn flush(&mut self, v: Expr, size: Option<VectorSize>) -> Expr {
         if self.is_flushed(v) {
             return v;
         }
@@ -325,6 +325,11 @@ impl Lower<'_> {
                 fb.load(p)
             }
             RegFile::Input if relative => return Ok(self.relative_input(reg.index)),
+            RegFile::Input if cx.vertex.is_some() => {
+                let v = cx.var(fb, cx.inputs);
+                let p = fb.index(v, reg.index);
+                fb.load(p)
+            }
             RegFile::Input | RegFile::Texture => {
                 let slot = crate::core::pixel_inputs::slot(cx.profile, reg.file, reg.index)
                     .ok_or_else(|| TranslateError::Unsupported(format!("reading {reg}")))?;
@@ -402,7 +407,18 @@ impl Lower<'_> {
 
     /// A source operand with its swizzle and modifier applied.
     pub fn read(&mut self, s: &Src) -> Result<Expr, TranslateError> {
-        let v = self.reg(s.reg, s.relative.is_some())?;
+        let v = match s.relative {
+            Some(rel) if self.cx.vertex.is_some() => self.vertex_relative(s.reg, rel)?,
+            // Past c255 (vs_2_0 assembles up to c8191): zeros, as the
+            // emulator's vertex stage reads them.
+            None if self.cx.vertex.is_some()
+                && s.reg.file == RegFile::Const
+                && s.reg.index >= super::module::VERTEX_FLOATS =>
+            {
+                self.zero4()
+            }
+            _ => self.reg(s.reg, s.relative.is_some())?,
+        };
         Ok(self.modify(v, s.swizzle, s.modifier))
     }
 
@@ -445,7 +461,7 @@ impl Lower<'_> {
     // ----- destinations ---------------------------------------------------------
 
     /// Whether `(p0.c)` lets component `c` be written.
-    fn predicate(&mut self, ins: &Instruction, c: usize) -> Option<Expr> {
+    pub(super) fn predicate(&mut self, ins: &Instruction, c: usize) -> Option<Expr> {
         let pred = ins.predicate?;
         let p = self.cx.var(&mut self.fb, self.cx.p0);
         let p = self.fb.load(p);
@@ -465,13 +481,17 @@ impl Lower<'_> {
     }
 
     /// Writes a scalar result replicated to the masked components.
-    fn write_scalar(&mut self, ins: &Instruction, s: Expr) -> Result<(), TranslateError> {
+    pub(super) fn write_scalar(
+        &mut self,
+        ins: &Instruction,
+        s: Expr,
+    ) -> Result<(), TranslateError> {
         self.write_value(ins, Value::Scalar(s), 0b1111)
     }
 
     /// Component `c` of a value; a swizzle is looked through, so that
     /// `r0.x = r1.wwww.x` reads `r1.w`.
-    fn component(&mut self, value: Value, c: u32) -> Expr {
+    pub(super) fn component(&mut self, value: Value, c: u32) -> Expr {
         match value {
             Value::Scalar(s) => s,
             Value::Vector(v) => match self.fb.f.expressions[v] {
@@ -485,7 +505,7 @@ impl Lower<'_> {
         }
     }
 
-    fn write_value(
+    pub(super) fn write_value(
         &mut self,
         ins: &Instruction,
         value: Value,
@@ -496,11 +516,12 @@ impl Lower<'_> {
             .ok_or(TranslateError::Internal("a missing destination"))?;
         let cx = self.cx;
         let g = match d.reg.file {
-            RegFile::Temp => *cx.temps.get(&d.reg.index).ok_or(TranslateError::Internal(
+            RegFile::Temp => Some(*cx.temps.get(&d.reg.index).ok_or(TranslateError::Internal(
                 "a temporary missing from the register list",
-            ))?,
-            RegFile::ColorOut if d.reg.index < 4 => cx.outputs[d.reg.index as usize],
-            RegFile::DepthOut => cx.depth,
+            ))?),
+            RegFile::ColorOut if d.reg.index < 4 => Some(cx.outputs[d.reg.index as usize]),
+            RegFile::DepthOut => Some(cx.depth),
+            _ if cx.vertex.is_some() => None,
             _ => return Err(TranslateError::Unsupported(format!("writing {}", d.reg))),
         };
         let value = match (ins.sat, value) {
@@ -514,7 +535,13 @@ impl Lower<'_> {
             Value::Scalar(v) => Value::Scalar(self.flush(v, None)),
         };
         let mask = d.mask.0 & allowed;
-        let ptr = cx.var(&mut self.fb, g);
+        let ptr = match g {
+            Some(g) => cx.var(&mut self.fb, g),
+            None if d.reg.file == RegFile::Address => {
+                return self.write_address(ins, value, mask);
+            }
+            None => self.vertex_output(&d)?,
+        };
         if mask == 0b1111 && ins.predicate.is_none() {
             let v = match value {
                 Value::Vector(v) => v,
@@ -604,7 +631,7 @@ impl Lower<'_> {
     }
 
     /// `log`: d3d9 log2(|x|) with log(0) = −FLT_MAX; ieee log2(x).
-    fn log(&mut self, x: Expr) -> Expr {
+    pub(super) fn log(&mut self, x: Expr) -> Expr {
         if !self.rules.d3d9_specials() {
             return self.fb.math(M::Log2, &[x]);
         }
@@ -853,6 +880,7 @@ impl Lower<'_> {
             Opcode::TexLd | Opcode::TexLdP | Opcode::TexLdB | Opcode::TexLdL | Opcode::TexLdD => {
                 self.texture(ins)?
             }
+            op if self.cx.vertex.is_some() => self.vertex_instruction(ins, op)?,
             op => {
                 return Err(TranslateError::Unsupported(format!(
                     "`{op}` outside the flow-control lowering"

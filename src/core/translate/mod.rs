@@ -48,6 +48,7 @@ mod lower;
 mod module;
 pub mod specialise;
 mod texture;
+pub mod vertex;
 
 pub use interface::Interface;
 pub use module::Entry;

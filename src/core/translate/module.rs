@@ -68,9 +68,33 @@ pub(super) struct Ctx {
     pub bool_defs: BTreeMap<u32, bool>,
     /// The shader's profile, which numbers its input slots.
     pub profile: crate::core::profile::Profile,
+    /// A vertex shader's own registers (`vertex.rs`); `None` for pixel shaders.
+    pub vertex: Option<VertexVars>,
 }
 
-fn ty(m: &mut Module, name: Option<&str>, inner: TypeInner) -> Handle<Type> {
+/// `c#` registers in a vertex shader's constant block (c0–c255).
+pub const VERTEX_FLOATS: u32 = 256;
+
+/// Output rows of a vertex shader (`emu::vertex::output_row`'s).
+pub const VERTEX_ROWS: u32 = crate::core::emu::vertex::OUTPUT_ROWS as u32;
+
+/// The registers only vertex shaders have.
+pub struct VertexVars {
+    /// `a0`, four integers.
+    pub a0: Handle<GlobalVariable>,
+    /// The output rows, plus one that catches dropped writes.
+    pub o: Handle<GlobalVariable>,
+}
+
+fn vertex_vars(m: &mut Module, t: &Types) -> VertexVars {
+    let rows = array(m, t.vec4, VERTEX_ROWS + 1, 16);
+    VertexVars {
+        a0: global(m, "a0", AddressSpace::Private, None, t.ivec4),
+        o: global(m, "o", AddressSpace::Private, None, rows),
+    }
+}
+
+pub(super) fn ty(m: &mut Module, name: Option<&str>, inner: TypeInner) -> Handle<Type> {
     m.types.insert(
         Type {
             name: name.map(str::to_string),
@@ -84,7 +108,7 @@ fn vector(m: &mut Module, size: VectorSize, scalar: Scalar) -> Handle<Type> {
     ty(m, None, TypeInner::Vector { size, scalar })
 }
 
-fn array(m: &mut Module, base: Handle<Type>, len: u32, stride: u32) -> Handle<Type> {
+pub(super) fn array(m: &mut Module, base: Handle<Type>, len: u32, stride: u32) -> Handle<Type> {
     ty(
         m,
         None,
@@ -105,7 +129,7 @@ fn member(name: &str, ty: Handle<Type>, offset: u32) -> StructMember {
     }
 }
 
-fn global(
+pub(super) fn global(
     m: &mut Module,
     name: &str,
     space: AddressSpace,
@@ -143,8 +167,9 @@ fn types(m: &mut Module) -> Types {
     }
 }
 
-/// The uniform block's type (layout in [`interface`]).
-fn constant_block(m: &mut Module, t: &Types) -> Handle<Type> {
+/// The uniform block's type (layout in [`interface`]; a vertex shader's
+/// block holds `floats` = 256 `c#`, and the members after it move up).
+fn constant_block(m: &mut Module, t: &Types, floats: u32) -> Handle<Type> {
     let sampler = ty(
         m,
         Some("Ps30Sampler"),
@@ -158,21 +183,22 @@ fn constant_block(m: &mut Module, t: &Types) -> Handle<Type> {
             span: interface::SAMPLER_STATE_SIZE,
         },
     );
-    let c = array(m, t.vec4, 224, 16);
+    let c = array(m, t.vec4, floats, 16);
     let i = array(m, t.ivec4, 16, 16);
     let b = array(m, t.uvec4, 16, 16);
     let s = array(m, sampler, 16, interface::SAMPLER_STATE_SIZE);
+    let extra = (floats - 224) * 16;
     ty(
         m,
         Some("Ps30Constants"),
         TypeInner::Struct {
             members: vec![
                 member("c", c, interface::FLOATS_OFFSET),
-                member("i", i, interface::INTS_OFFSET),
-                member("b", b, interface::BOOLS_OFFSET),
-                member("s", s, interface::SAMPLERS_OFFSET),
+                member("i", i, interface::INTS_OFFSET + extra),
+                member("b", b, interface::BOOLS_OFFSET + extra),
+                member("s", s, interface::SAMPLERS_OFFSET + extra),
             ],
-            span: interface::CONSTANTS_SIZE,
+            span: interface::CONSTANTS_SIZE + extra,
         },
     )
 }
@@ -220,7 +246,8 @@ impl Ctx {
         spec: &super::Specialisation,
     ) -> Result<Ctx, TranslateError> {
         let t = types(m);
-        let block = constant_block(m, &t);
+        let is_vertex = shader.program().profile.stage() == crate::core::profile::Stage::Vertex;
+        let block = constant_block(m, &t, if is_vertex { VERTEX_FLOATS } else { 224 });
         let consts = global(
             m,
             "ps30",
@@ -296,7 +323,7 @@ impl Ctx {
             let g = global(m, &format!("r{r}"), AddressSpace::Private, None, t.vec4);
             temps.insert(r, g);
         }
-        let input_array = array(m, t.vec4, 10, 16);
+        let input_array = array(m, t.vec4, if is_vertex { 16 } else { 10 }, 16);
         let inputs = global(m, "v", AddressSpace::Private, None, input_array);
         let pos = global(m, "vPos", AddressSpace::Private, None, t.vec4);
         let face = global(m, "vFace", AddressSpace::Private, None, t.vec4);
@@ -336,6 +363,7 @@ impl Ctx {
         }
         let bool_defs = p.bool_defs.iter().map(|d| (d.index, d.value)).collect();
         Ok(Ctx {
+            vertex: is_vertex.then(|| vertex_vars(m, &t)),
             t,
             float_defs_subnormal,
             consts,

@@ -15,6 +15,7 @@ pub mod all;
 pub mod explain;
 pub mod probe;
 pub mod stats;
+pub mod vertices;
 
 use crate::core::emu::{self, Draw};
 use crate::core::gpu::{self, Gpu, GpuError, TargetKind};

@@ -223,6 +223,59 @@ pub fn run(
     vertex::run(shader, &draw, vertices)
 }
 
+/// [`run`] on `backend`: the emulator, or the GPU through the translation
+/// (`core::gpu::run_vertices`), whose outputs are the same registers
+/// without executed counts. A GPU cannot stop a vertex part way, so a draw
+/// whose cost-model longest path passes `max_executed_per_vertex` is
+/// refused there, as the pixel path refuses it (`jobs::backend`).
+#[allow(clippy::too_many_arguments)]
+pub fn run_on(
+    backend: &crate::jobs::backend::Backend,
+    shader: &Shader,
+    file: &SourceFile,
+    constants: Constants,
+    textures: &[(u32, TextureFile, SamplerState)],
+    vertices: &Vertices,
+    float_rules: FloatRules,
+    max_executed_per_vertex: u64,
+) -> Result<VertexOutput, String> {
+    use crate::jobs::backend::Backend;
+    let gpu = match backend {
+        Backend::Emulator => {
+            return run(
+                shader,
+                constants,
+                textures,
+                vertices,
+                float_rules,
+                max_executed_per_vertex,
+            )
+            .map_err(|e| e.to_string())
+        }
+        Backend::Gpu(g) => g,
+    };
+    let env = crate::jobs::backend::environment(&constants);
+    if let Ok(a) = cost::analyse(shader, file, &env, &cost::Profile::ps_3_0()) {
+        if a.executed.max > max_executed_per_vertex {
+            return Err(format!(
+                "a vertex may execute up to {} instruction slots (the cost model's longest path for these constants), over the cap of {}: a GPU cannot stop a vertex part way, so ps30 does not run it there (the emulator stops the first vertex that passes the cap)",
+                crate::core::numbers::thousands(a.executed.max),
+                crate::core::numbers::thousands(max_executed_per_vertex)
+            ));
+        }
+    }
+    let draw = VertexDraw {
+        constants,
+        samplers: textures
+            .iter()
+            .map(|(s, t, state)| (*s, t.into(), *state))
+            .collect(),
+        float_rules,
+        max_executed_per_vertex,
+    };
+    crate::core::gpu::run_vertices(gpu, shader, &draw, vertices).map_err(|e| e.to_string())
+}
+
 /// A vertex shader's costs over a vertex list: the cost model's (slots,
 /// executed range) beside what each vertex executed.
 #[derive(Clone, Debug, PartialEq)]

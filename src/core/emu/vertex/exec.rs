@@ -2,7 +2,7 @@
 //! flow control with the cost model's counting rule, and each instruction's
 //! vertex-shader form.
 
-use super::{VertexDraw, VertexError, VERTEX_CONSTANTS};
+use super::{VertexDraw, VertexError};
 use crate::core::emu::layered::finite_coordinate;
 use crate::core::emu::math;
 use crate::core::emu::sample::{Sampler, UNBOUND};
@@ -11,11 +11,11 @@ use crate::core::ir::{Dst, Instruction, RelIndex, Shader, Src, SrcMod};
 use crate::core::isa::{Compare, Opcode, RegFile, SlotTable};
 
 /// Rows of the output block: o0–o11, oPos, oD0–oD1, oT0–oT7, oFog, oPts.
-pub(super) const OUTPUT_ROWS: usize = 25;
+pub const OUTPUT_ROWS: usize = 25;
 
 /// The row of output register `file`/`index`, `None` for other files or an
 /// index past the file.
-pub(super) fn output_row(file: RegFile, index: u32) -> Option<usize> {
+pub fn output_row(file: RegFile, index: u32) -> Option<usize> {
     let i = index as usize;
     match file {
         RegFile::Output if i < 12 => Some(i),
@@ -71,30 +71,9 @@ impl<'s, 'a> State<'s, 'a> {
         samplers: [Option<Sampler<'a>>; 4],
     ) -> Self {
         let rules = draw.float_rules;
-        let p = shader.program();
-        let mut consts = vec![[0.0f32; 4]; VERTEX_CONSTANTS];
-        consts[..draw.constants.float.len()].copy_from_slice(&draw.constants.float);
-        for d in &p.float_defs {
-            if let Some(c) = consts.get_mut(d.index as usize) {
-                *c = d.value;
-            }
-        }
+        let (mut consts, ints, bools) = super::effective_constants(shader, &draw.constants);
         if rules.flush_denormals() {
             consts.iter_mut().flatten().for_each(|x| *x = flush(*x));
-        }
-        let mut ints = [[0i32; 4]; 16];
-        ints[..draw.constants.int.len()].copy_from_slice(&draw.constants.int);
-        let mut bools = [false; 16];
-        bools[..draw.constants.bool.len()].copy_from_slice(&draw.constants.bool);
-        for d in &p.int_defs {
-            if let Some(i) = ints.get_mut(d.index as usize) {
-                *i = d.value;
-            }
-        }
-        for d in &p.bool_defs {
-            if let Some(b) = bools.get_mut(d.index as usize) {
-                *b = d.value;
-            }
         }
         State {
             shader,

@@ -34,6 +34,8 @@
 
 mod exec;
 
+pub use exec::{output_row, OUTPUT_ROWS};
+
 use super::sample::Sampler;
 use super::{Constants, SamplerState, TextureLevels};
 use crate::core::float_rules::FloatRules;
@@ -216,8 +218,9 @@ pub fn output_slots(shader: &Shader) -> Vec<OutputSlot> {
     outputs(shader).into_iter().map(|(_, s)| s).collect()
 }
 
-/// [`output_slots`] with each slot's row in the executor's output block.
-fn outputs(shader: &Shader) -> Vec<(usize, OutputSlot)> {
+/// [`output_slots`] with each slot's row in the executor's output block
+/// ([`output_row`]).
+pub fn outputs(shader: &Shader) -> Vec<(usize, OutputSlot)> {
     let p = shader.program();
     let mut regs: Vec<(RegFile, u32)> = p
         .instructions
@@ -275,6 +278,78 @@ pub fn run(
     draw: &VertexDraw,
     vertices: &Vertices,
 ) -> Result<VertexOutput, VertexError> {
+    let bound = check(shader, draw, vertices)?;
+    let samplers = bind_samplers(draw)?;
+    let state = exec::State::new(shader, draw, samplers);
+    let (rows, slots): (Vec<usize>, Vec<OutputSlot>) = outputs(shader).into_iter().unzip();
+    let results = (0..vertices.count)
+        .into_par_iter()
+        .map(|v| {
+            let (out, executed) = state.run_vertex(v, vertex_inputs(&bound, vertices, v))?;
+            Ok((rows.iter().map(|&r| out[r]).collect::<Vec<_>>(), executed))
+        })
+        .collect::<Result<Vec<_>, VertexError>>()?;
+    let (values, executed) = results.into_iter().unzip();
+    Ok(VertexOutput {
+        slots,
+        values,
+        executed,
+    })
+}
+
+/// Vertex `v`'s input registers v0–v15 from the bindings [`check`] made
+/// (zeros where nothing is bound).
+pub fn vertex_inputs(bound: &[(usize, usize)], vertices: &Vertices, v: usize) -> [[f32; 4]; 16] {
+    let mut inputs = [[0.0f32; 4]; 16];
+    for &(reg, attr) in bound {
+        inputs[reg] = vertices.attributes[attr].1[v];
+    }
+    inputs
+}
+
+/// The constants a draw's vertices see: the application's with the
+/// shader's `def`, `defi` and `defb` over them (c0–c255, i0–i15, b0–b15).
+pub fn effective_constants(
+    shader: &Shader,
+    constants: &Constants,
+) -> (Vec<[f32; 4]>, [[i32; 4]; 16], [bool; 16]) {
+    let p = shader.program();
+    let mut floats = vec![[0.0f32; 4]; VERTEX_CONSTANTS];
+    let n = constants.float.len().min(VERTEX_CONSTANTS);
+    floats[..n].copy_from_slice(&constants.float[..n]);
+    for d in &p.float_defs {
+        if let Some(c) = floats.get_mut(d.index as usize) {
+            *c = d.value;
+        }
+    }
+    let mut ints = [[0i32; 4]; 16];
+    let n = constants.int.len().min(16);
+    ints[..n].copy_from_slice(&constants.int[..n]);
+    for d in &p.int_defs {
+        if let Some(i) = ints.get_mut(d.index as usize) {
+            *i = d.value;
+        }
+    }
+    let mut bools = [false; 16];
+    let n = constants.bool.len().min(16);
+    bools[..n].copy_from_slice(&constants.bool[..n]);
+    for d in &p.bool_defs {
+        if let Some(b) = bools.get_mut(d.index as usize) {
+            *b = d.value;
+        }
+    }
+    (floats, ints, bools)
+}
+
+/// Refuses what the vertex stage refuses (a profile it does not run,
+/// attributes of the wrong length, too many constants, an input the list
+/// does not have) and binds each declared input `v#` to its attribute (by
+/// index into `vertices.attributes`).
+pub fn check(
+    shader: &Shader,
+    draw: &VertexDraw,
+    vertices: &Vertices,
+) -> Result<Vec<(usize, usize)>, VertexError> {
     let profile = shader.program().profile;
     if !runs(profile) {
         return Err(VertexError::NotRun(profile));
@@ -298,27 +373,7 @@ pub fn run(
             return Err(VertexError::TooManyConstants { kind, given, max });
         }
     }
-    let bound = bind_inputs(shader, vertices)?;
-    let samplers = bind_samplers(draw)?;
-    let state = exec::State::new(shader, draw, samplers);
-    let (rows, slots): (Vec<usize>, Vec<OutputSlot>) = outputs(shader).into_iter().unzip();
-    let results = (0..vertices.count)
-        .into_par_iter()
-        .map(|v| {
-            let mut inputs = [[0.0f32; 4]; 16];
-            for &(reg, attr) in &bound {
-                inputs[reg] = vertices.attributes[attr].1[v];
-            }
-            let (out, executed) = state.run_vertex(v, inputs)?;
-            Ok((rows.iter().map(|&r| out[r]).collect::<Vec<_>>(), executed))
-        })
-        .collect::<Result<Vec<_>, VertexError>>()?;
-    let (values, executed) = results.into_iter().unzip();
-    Ok(VertexOutput {
-        slots,
-        values,
-        executed,
-    })
+    bind_inputs(shader, vertices)
 }
 
 /// Each declared input `v#` with the attribute it reads (by index into
