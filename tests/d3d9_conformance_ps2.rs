@@ -495,3 +495,192 @@ fn draw_lists_name_ps_2_0_inputs_by_register_and_semantic() {
     assert_eq!(p[0], [0.0, 0.5, 1.0, 0.25]);
     assert_eq!(p[1], [1.0, 0.5, 1.0, -0.75]);
 }
+
+// ----- around the shader: several targets, flat shading -----------------------------
+
+/// `ps30 render LIST -o DIR --backend BACKEND -q` for a list of `ps2/`: each
+/// target's width and pixels, read back from its EXR file (f32, so values
+/// pass unrounded except where the target's own format rounds them).
+fn render_ps2(
+    list: &str,
+    backend: &str,
+) -> std::collections::BTreeMap<String, (u32, Vec<[f32; 4]>)> {
+    let dir = tempfile::tempdir().unwrap();
+    let path = repo().join(format!("tests/d3d9_conformance/ps2/{list}"));
+    let o = ps30(
+        &[
+            "render",
+            path.to_str().unwrap(),
+            "-o",
+            dir.path().to_str().unwrap(),
+            "--backend",
+            backend,
+            "-q",
+        ],
+        repo(),
+    );
+    assert!(o.status.success(), "{list} on {backend}: {}", stderr(&o));
+    let mut out = std::collections::BTreeMap::new();
+    for e in std::fs::read_dir(dir.path()).unwrap() {
+        let p = e.unwrap().path();
+        if p.extension().is_none_or(|x| x != "exr") {
+            continue;
+        }
+        let name = p.file_stem().unwrap().to_string_lossy().into_owned();
+        let img = ps30::core::image::load(&p, &Default::default()).unwrap();
+        out.insert(name, (img.width, img.pixels));
+    }
+    out
+}
+
+/// The backends a case runs on: the emulator, and the GPU backend where
+/// there is a device.
+fn backends(name: &str) -> Vec<&'static str> {
+    let mut b = vec!["emulator"];
+    if crate::common::gpu::gpu(name).is_some() {
+        b.push("gpu");
+    }
+    b
+}
+
+#[test]
+fn four_render_targets_and_flat_shaded_colours() {
+    for backend in backends("ps2 pixel.json") {
+        let t = render_ps2("pixel.json", backend);
+        let px = |name: &str, x: u32, y: u32| {
+            let (w, p) = &t[name];
+            p[(y * w + x) as usize].map(f64::from)
+        };
+        // mrt.hlsl over a 4×1 target with t0 = (⅛ + ¼x, ¼, ½, 1): oC0 = t0,
+        // oC1 = t0·½, oC2 = t0.wzyx, oC3 = t0 + ¼, each into its target. Every
+        // value is a short binary fraction: exact in f32 and in half (mrt_c).
+        for x in 0..4 {
+            let r = 0.125 + 0.25 * f64::from(x);
+            let at = |n: &str| px(n, x, 0);
+            assert_eq!(at("mrt_a"), [r, 0.25, 0.5, 1.0], "{backend} mrt_a {x}");
+            assert_eq!(
+                at("mrt_b"),
+                [r * 0.5, 0.125, 0.25, 0.5],
+                "{backend} mrt_b {x}"
+            );
+            assert_eq!(at("mrt_c"), [1.0, 0.5, 0.25, r], "{backend} mrt_c {x}");
+            assert_eq!(
+                at("mrt_d"),
+                [r + 0.25, 0.5, 0.75, 1.25],
+                "{backend} mrt_d {x}"
+            );
+        }
+        // flat_color.hlsl under D3DSHADE_FLAT: each colour holds the first
+        // vertex's value, base − ½·ddx − ½·ddy (docs/pixel-rules.md), and
+        // ps_2_0 clamps it to [0, 1] as it enters the shader: color0 =
+        // (0.5 − 1/16, 0.25 − 1/8, 0.75, 1 + 1/16) → (0.4375, 0.125, 0.75, 1).
+        // color1's alpha stays interpolated (D3DSHADE_FLAT flattens the
+        // specular colour, not its alpha): 0.75 + x/8, clamped at x = 3
+        // (1.125 → 1); its colour (0.25 − 1/8, 0.5, 0.25 − 1/16).
+        for (x, y) in [(0, 0), (1, 0), (3, 0), (0, 1), (3, 1)] {
+            assert_eq!(
+                px("flat_a", x, y),
+                [0.4375, 0.125, 0.75, 1.0],
+                "{backend} flat_a ({x}, {y})"
+            );
+            let alpha = (0.75 + 0.125 * f64::from(x)).min(1.0);
+            assert_eq!(
+                px("flat_b", x, y),
+                [0.125, 0.5, 0.1875, alpha],
+                "{backend} flat_b ({x}, {y})"
+            );
+        }
+    }
+}
+
+// ----- float rules and constants that are not finite -------------------------------------
+
+/// `ps30 run SHADER --target 1x1 --target-format f16 -o DIR/o.exr` with
+/// `args` on `backend`: the one texel of the four-channel half target as the
+/// EXR file holds it (infinities with their signs, NaN and −0 kept; every
+/// finite value the cases expect is an exact half).
+fn run_f32(backend: &str, shader: &str, args: &[&str]) -> [f32; 4] {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("o.exr");
+    let mut all = vec![
+        "run",
+        shader,
+        "--target",
+        "1x1",
+        "--target-format",
+        "f16",
+        "--backend",
+        backend,
+        "-q",
+        "-o",
+        out.to_str().unwrap(),
+    ];
+    all.extend_from_slice(args);
+    let o = ps30(&all, repo());
+    assert!(o.status.success(), "{shader} on {backend}: {}", stderr(&o));
+    ps30::core::image::load(&out, &Default::default())
+        .unwrap()
+        .pixels[0]
+}
+
+#[test]
+fn zero_times_infinity_under_both_float_rules() {
+    // float_rules.hlsl compiled for ps_2_0 with a = c0 = (0, 1, 1, 0),
+    // b = c1 = (inf, 2, 3, inf), c = c2 = (5, 0, 0, 0.5): x = a.x·b.x (mul),
+    // y = a.x·b.x + c.x (mad), z = a.xyz·b.xyz (dp3), w = a.w·b.w + c.w
+    // (mad). Every one holds 0 × inf: NaN under `d3d9` (IEEE 754's invalid
+    // product, docs/float-rules.md), 0 under `hardware`, which gives
+    // (0, 5, 0 + 2 + 3, 0.5), each exact.
+    let shader = hlsl("float_rules");
+    let consts = [
+        "--const",
+        "c0=0,1,1,0",
+        "--const",
+        "c1=inf,2,3,inf",
+        "--const",
+        "c2=5,0,0,0.5",
+    ];
+    for backend in backends("ps2 float_rules") {
+        let mut d3d9 = consts.to_vec();
+        d3d9.extend_from_slice(&["--float-rules", "d3d9"]);
+        let t = run_f32(backend, &shader, &d3d9);
+        assert!(t.iter().all(|v| v.is_nan()), "{backend} d3d9: {t:?}");
+        let mut hw = consts.to_vec();
+        hw.extend_from_slice(&["--float-rules", "hardware"]);
+        let t = run_f32(backend, &shader, &hw);
+        assert_eq!(t, [0.0, 5.0, 5.0, 0.5], "{backend} hardware");
+    }
+}
+
+#[test]
+fn constants_that_are_not_finite_numbers() {
+    // nonfinite.hlsl compiled for ps_2_0 without optimisation: x =
+    // rcp(rcp(k.x)), y = rcp(rcp(k.y)), z = k.z·k.w, w = rcp(k.w). With
+    // k = (inf, −inf, 2, 0.25) under IEEE 754's reciprocal (rcp(±inf) = ±0,
+    // rcp(±0) = ±inf; docs/float-rules.md): x = +inf, y = −inf, z = 0.5,
+    // w = 4. Under `d3d9`, as the ps_3_0 corpus's `inf` and `nan` draws.
+    let shader = hlsl("nonfinite");
+    for backend in backends("ps2 nonfinite") {
+        let t = run_f32(
+            backend,
+            &shader,
+            &["--const", "c0=inf,-inf,2,0.25", "--float-rules", "d3d9"],
+        );
+        assert_eq!(t, [f32::INFINITY, f32::NEG_INFINITY, 0.5, 4.0], "{backend}");
+        // k = (NaN, 0, 1, −0): NaN propagates through rcp; rcp(rcp(0)) =
+        // rcp(inf) = 0; 1·(−0) = −0; rcp(−0) = −inf (the ps_3_0 corpus's
+        // `nan` case, which both backends pass bit for bit).
+        let t = run_f32(
+            backend,
+            &shader,
+            &["--const", "c0=nan,0,1,0x80000000", "--float-rules", "d3d9"],
+        );
+        assert!(t[0].is_nan(), "{backend}: {t:?}");
+        let bits = |v: f32| v.to_bits();
+        assert_eq!(
+            [t[1], t[2], t[3]].map(bits),
+            [0.0f32, -0.0, f32::NEG_INFINITY].map(bits),
+            "{backend}: {t:?}"
+        );
+    }
+}

@@ -85,6 +85,7 @@ fn profile(args: &Args) -> Profile {
     Profile {
         max_slots: args.limits.max_slots,
         max_executed: args.limits.max_executed,
+        ps2x_caps: args.source.caps,
         ..Profile::ps_3_0().counting(args.slots.into())
     }
 }

@@ -234,18 +234,33 @@ pub fn audit(shader: &Shader, defines_used: &BTreeSet<String>, given: &Given) ->
     let program = shader.program();
     // Reads: register → (first span, count).
     let mut reads: BTreeMap<(u8, u32), (Span, usize)> = BTreeMap::new();
+    // A relative read (`c[a0.x + n]`, `c[aL + n]`) reads registers only the
+    // run knows: none of them is reported unset, and no float constant given
+    // is reported unread.
+    let mut relative = false;
     for instr in &program.instructions {
-        for src in &instr.src {
+        for (k, src) in instr.src.iter().enumerate() {
             let file = match src.reg.file {
                 RegFile::Const => 0,
                 RegFile::ConstInt => 1,
                 RegFile::ConstBool => 2,
                 _ => continue,
             };
-            let e = reads
-                .entry((file, src.reg.index))
-                .or_insert((instr.origin.span, 0));
-            e.1 += 1;
+            if src.relative.is_some() {
+                relative |= file == 0;
+                continue;
+            }
+            // a matrix instruction reads its rows from consecutive registers
+            let rows = match instr.op.matrix_shape() {
+                Some((rows, _)) if k == 1 => rows,
+                _ => 1,
+            };
+            for row in 0..rows {
+                let e = reads
+                    .entry((file, src.reg.index.saturating_add(row)))
+                    .or_insert((instr.origin.span, 0));
+                e.1 += 1;
+            }
         }
     }
     let defined = |file: u8, i: u32| -> Option<Span> {
@@ -296,7 +311,7 @@ pub fn audit(shader: &Shader, defines_used: &BTreeSet<String>, given: &Given) ->
                     reads: 0,
                     instead: Vec::new(),
                 });
-            } else if !reads.contains_key(&(file, i)) {
+            } else if !reads.contains_key(&(file, i)) && !(relative && file == 0) {
                 found.push(Finding {
                     kind: Kind::Unread,
                     what: name(file, i),

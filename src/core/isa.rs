@@ -1029,6 +1029,12 @@ pub const REG_FILES: &[RegFileInfo] = &[
 /// The files ps_3_0 has: the first thirteen rows.
 const PS_3_0_FILES: usize = 13;
 
+/// The D3DSPR_* register types of float constants: CONST numbers c0–c2047
+/// and CONST2, CONST3 and CONST4 the next 2048 each (c2048–c8191), as
+/// Microsoft's assembler writes a vertex shader's large constant file (the
+/// token's register number is 11 bits).
+pub const CONST_TOKEN_TYPES: [u8; 4] = [2, 11, 12, 13];
+
 impl RegFile {
     /// The facts of this register file.
     pub fn info(self) -> &'static RegFileInfo {
@@ -1045,6 +1051,10 @@ impl RegFile {
     /// The register a parameter token names in `profile`: as
     /// [`RegFile::from_token`], among the files the profile has.
     pub fn from_token_in(token_type: u8, number: u32, profile: Profile) -> Option<(RegFile, u32)> {
+        if let Some(bank) = CONST_TOKEN_TYPES[1..].iter().position(|&t| t == token_type) {
+            let index = number + 2048 * (bank as u32 + 1);
+            return (profile.count(RegFile::Const) > 0).then_some((RegFile::Const, index));
+        }
         REG_FILES
             .iter()
             .filter(|f| profile.count(f.file) > 0)
@@ -1055,6 +1065,17 @@ impl RegFile {
                 }
                 _ => None,
             })
+    }
+
+    /// How many registers of this file a token can number, which is where
+    /// a relative base wraps: 8192 float constants through
+    /// [`CONST_TOKEN_TYPES`], 2048 (the 11-bit register number) of any
+    /// other file.
+    pub fn token_registers(self) -> u32 {
+        match self {
+            RegFile::Const => 2048 * CONST_TOKEN_TYPES.len() as u32,
+            _ => 2048,
+        }
     }
 
     /// Parses a register name (prefix and number already split). Names are
@@ -1089,9 +1110,9 @@ impl Profile {
             RegFile::Temp => r.temps,
             RegFile::Input => r.inputs,
             // Microsoft's assembler takes any float constant a vertex
-            // token can number (c256 measured; the 11 bits hold c2047): the
-            // count is a device's, not the profile's.
-            RegFile::Const if !pixel => 2048,
+            // token can number (measured: c8191 through CONST4, c8192 is
+            // X2005): the count is a device's, not the profile's.
+            RegFile::Const if !pixel => RegFile::Const.token_registers(),
             RegFile::Const => r.float_consts,
             RegFile::ConstInt => r.int_consts,
             RegFile::ConstBool => r.bool_consts,

@@ -234,6 +234,27 @@ def rel_probes(profile):
         ("read-a0-mov", mova + ["mov r0, a0"], []),
         ("read-a0-add", mova + ["add r0, r1, a0.x"], []),
     ]
+    # Large constant files: bases from c2048 on are the register types CONST2-CONST4
+    # (c2048-c8191); a larger base wraps at 8192, and a plain `c#` past c8191 is refused
+    out += [
+        ("rel-c-a0-2047", mova + ["mov r0, c[a0.x + 2047]"], []),
+        ("rel-c-a0-2048", mova + ["mov r0, c[a0.x + 2048]"], []),
+        ("rel-c-a0-4096", mova + ["mov r0, c[a0.x + 4096]"], []),
+        ("rel-c-a0-6144", mova + ["mov r0, -c[a0.x + 6144].wzyx"], []),
+        ("rel-c-a0-8191", mova + ["mov r0, c[a0.x + 8191]"], []),
+        ("rel-c-a0-8195", mova + ["mov r0, c[a0.x + 8195]"], []),
+        ("rel-c-a0-100000", mova + ["mov r0, c[a0.x + 100000]"], []),
+        ("rel-c-base-2000", mova + ["mov r0, c2000[a0.x + 100]"], []),
+        ("rel-c-aL-4100", looped("add r0, r0, c[aL + 4100]"), i0),
+        ("rel-c-m4x4-8190", mova + ["m4x4 r0, r1, c[a0.x + 8190]"], []),
+        ("rel-c-same-2050", mova + ["add r0, c[a0.x + 2050], c[a0.x + 2050]"], []),
+        ("rel-c-absolute-2050", mova + ["add r0, c[a0.x + 2050], c2050"], []),
+        ("const-3000", ["mov r0, c3000"], ["def c3000, 1, 2, 3, 4"]),
+        ("const-8191", ["add r0, r1, c8191"], []),
+        ("const-8192", ["mov r0, c8192"], []),
+        ("const-def-8192", [], ["def c8192, 1, 2, 3, 4"]),
+        ("const-two-large", ["add r0, c2050, c4000"], []),
+    ]
     if profile != "vs_2_0":
         out.append(("rel-c-if", mova + ["if_gt c[a0.x].x, r1.x", "mov r0, r1", "endif"], []))
     if profile == "vs_3_0":
@@ -243,11 +264,92 @@ def rel_probes(profile):
             ("rel-o-aL-mask", looped("mov o[aL + 1].xy, r1"), i0 + outs),
             ("rel-o-a0", mova + ["mov o[a0.x + 1], r1"], outs),
             ("rel-c-texldl", mova + ["texldl r0, c[a0.x], s0"], []),
+            ("rel-c-texldl-4000", mova + ["texldl r0, c[a0.x + 4000], s0"], []),
+            # an 11-bit register number: v[aL + 2048] is v0[aL]
+            ("rel-v-aL-2048", looped("add r0, r0, v[aL + 2048]"), i0 + ["dcl_texcoord v1"]),
+            ("rel-o-aL-2049", looped("mov o[aL + 2049], r1"), i0 + outs),
         ]
     sub = ["ret", "label l0", "add r0, r0, c[aL + 1]", "ret"]
     return [(name, vertex(profile, body, pre)) for name, body, pre in out] + [
         ("rel-c-aL-subroutine", vertex(profile, looped("call l0"), i0, sub)),
     ]
+
+
+def operand_probes(profile):
+    """Two different constants in one instruction, and matrix rows at and past the end of
+    their file: each profile numbers these refusals apart; a vertex shader's constants are
+    not checked at all (c8190's rows run past c8191 and are accepted)."""
+    t = {"ps_3_0": "v0", "ps_2_0": "t0", "ps_2_x": "t0"}.get(profile, "v0")
+    if profile.startswith("ps"):
+        last = 224 if profile == "ps_3_0" else 32
+        cases = [
+            ("const-two", ["add r0, c1, c2"], []),
+            (f"matrix-c{last - 4}", [f"m4x4 r0, {t}, c{last - 4}"], []),
+            (f"matrix-c{last - 2}", [f"m4x4 r0, {t}, c{last - 2}"], []),
+        ]
+        return [(n, pixel(profile, b, p)) for n, b, p in cases]
+    last = 12 if profile == "vs_2_0" else 32
+    rows = lambda first: [f"mov r{k}, c0" for k in range(first, min(first + 4, last))]
+    cases = [
+        ("const-two", ["add r0, c1, c2"], []),
+        ("matrix-c254", ["m4x4 r0, v0, c254"], []),
+        (f"matrix-r{last - 4}", rows(last - 4) + [f"m4x4 r0, v0, r{last - 4}"], []),
+        (f"matrix-r{last - 2}", rows(last - 2) + [f"m4x4 r0, v0, r{last - 2}"], []),
+    ]
+    return [(n, vertex(profile, b, p)) for n, b, p in cases]
+
+
+def nest_probes(profile):
+    """Flow-control nesting at and past each depth, within a function and through calls
+    (Microsoft's validator counts a subroutine's blocks on top of those around its call),
+    with `break_comp` and `callnz p0` counting as dynamic levels."""
+    make = pixel if profile.startswith("ps") else vertex
+    pre = ["defi i0, 2, 0, 0, 0", "defb b0, true"]
+    nest = lambda n, head, tail, *body: [head] * n + list(body) + [tail] * n
+    sub = lambda *body: ["ret", "label l0"] + list(body) + ["ret"]
+    ifc, ifp, ifb = "if_gt r1.x, r2.x", "if p0.x", "if b0"
+    setp = ["setp_gt p0, r1, r2"]
+    add = "add r0, r0, c0"
+
+    def chain(n):
+        """main calls l0, which calls l1, ...: n calls deep."""
+        post = []
+        for k in range(n):
+            post += ["ret", f"label l{k}", f"call l{k + 1}" if k < n - 1 else add]
+        return ["call l0"], post + ["ret"]
+
+    loops = 1 if profile == "vs_2_0" else 4
+    cases = [
+        (f"nest-rep-{loops + 1}", nest(loops + 1, "rep i0", "endrep", add), []),
+        (f"nest-rep-{loops}-call", nest(loops, "rep i0", "endrep", "call l0"), sub(add)),
+        (f"nest-rep-{loops}-call-rep", nest(loops, "rep i0", "endrep", "call l0"),
+         sub("rep i0", add, "endrep")),
+        ("nest-ifb-25", nest(25, ifb, "endif", add), []),
+        ("nest-ifb-24-call-ifb", nest(24, ifb, "endif", "call l0"), sub(ifb, add, "endif")),
+        ("nest-ifb-23-call-ifb", nest(23, ifb, "endif", "call l0"), sub(ifb, add, "endif")),
+    ]
+    for n in (loops, loops + 1):
+        body, post = chain(n)
+        cases.append((f"nest-calls-{n}", body, post))
+    if profile != "vs_2_0":
+        cases += [
+            ("nest-ifc-25", nest(25, ifc, "endif", add), []),
+            ("nest-ifp-25", setp + nest(25, ifp, "endif", add), []),
+            ("nest-ifc-24-call-ifc", nest(24, ifc, "endif", "call l0"), sub(ifc, add, "endif")),
+            ("nest-ifc-23-call-ifc", nest(23, ifc, "endif", "call l0"), sub(ifc, add, "endif")),
+            ("nest-ifp-24-call-ifp", setp + nest(24, ifp, "endif", "call l0"),
+             sub(ifp, add, "endif")),
+            ("nest-breakc-24", ["rep i0"] + nest(24, ifc, "endif", "break_gt r1.x, r2.x")
+             + ["endrep"], []),
+            ("nest-breakc-23", ["rep i0"] + nest(23, ifc, "endif", "break_gt r1.x, r2.x")
+             + ["endrep"], []),
+            ("nest-callnzp-24", setp + nest(24, ifc, "endif", "callnz l0, p0.x"), sub(add)),
+            ("nest-callnzp-23-call-ifc", setp + nest(23, ifc, "endif", "callnz l0, p0.x"),
+             sub(ifc, add, "endif")),
+            ("nest-callnzp-22-call-ifc", setp + nest(22, ifc, "endif", "callnz l0, p0.x"),
+             sub(ifc, add, "endif")),
+        ]
+    return [(name, make(profile, body, pre, post)) for name, body, post in cases]
 
 
 def probes():
@@ -260,9 +362,18 @@ def probes():
             out.append((f"{profile}/op-{name}.psh", make(profile, body, pre, post)))
         for name, text in reg_probes(profile) + limit_probes(profile):
             out.append((f"{profile}/{name}.psh", text))
+        for name, text in operand_probes(profile):
+            out.append((f"{profile}/{name}.psh", text))
+        if profile != "ps_2_0":
+            for name, text in nest_probes(profile):
+                out.append((f"{profile}/{name}.psh", text))
         if profile in VERTEX:
             for name, text in rel_probes(profile):
                 out.append((f"{profile}/{name}.psh", text))
+        if profile == "ps_3_0":
+            # the 11-bit register number of v[aL + n]: v[aL + 2048] is v0[aL]
+            body = ["loop aL, i0", "add r0, r0, v[aL + 2048]", "endloop"]
+            out.append((f"{profile}/rel-v-aL-2048.psh", pixel(profile, body, ["defi i0, 2, 0, 0, 0"])))
     # ps_1_x: another instruction set, its own probes (ps1_probes.py)
     for profile in ps1_probes.PS1:
         for name, text in ps1_probes.probes(profile):

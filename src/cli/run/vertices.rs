@@ -1,7 +1,7 @@
 //! `ps30 run VS --vertices FILE`: a vertex shader over a vertex list.
 
-use super::super::args::{read_inputs, with_inputs};
-use super::super::io::{load_shader, print_json, say};
+use super::super::args::{given_with, read_inputs, with_inputs};
+use super::super::io::{audit, load_shader, print_json, say};
 use super::super::ui::Ui;
 use super::super::{BadInput, Outcome};
 use super::Args;
@@ -26,6 +26,13 @@ pub(super) fn run(args: &Args, path: &Path, ui: &Ui) -> super::super::Result {
     }
     let resolved = args.constants.resolve(loaded.constants.as_ref())?;
     let inputs = read_inputs(args.inputs.as_deref())?;
+    // as the pixel path does: nothing runs on constants nobody set
+    audit(
+        ui,
+        &loaded,
+        &given_with(&resolved, &args.source, &inputs),
+        true,
+    )?;
     let (constants, textures) = with_inputs(&resolved, inputs);
     let backend = args.draw.open()?;
     let out = vertices::run_on(

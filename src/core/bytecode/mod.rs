@@ -64,7 +64,7 @@ pub mod read;
 pub mod write;
 
 use crate::core::ir::{Reg, RelIndex, SrcMod, Swizzle, WriteMask};
-use crate::core::isa::{Compare, Opcode, RegFile};
+use crate::core::isa::{Compare, Opcode, RegFile, CONST_TOKEN_TYPES};
 use std::fmt;
 
 /// The version token of ps_3_0.
@@ -261,11 +261,13 @@ pub fn modifier_from_code(code: u8) -> Result<SrcMod, &'static str> {
 /// The D3DSPR_* type and number a register's tokens carry.
 pub fn register_token(reg: Reg) -> u32 {
     let info = reg.file.info();
-    let ty = info.token_type as u32;
-    let number = if info.numbered {
-        reg.index
+    let (ty, number) = if reg.file == RegFile::Const {
+        let bank = (reg.index / 2048) as usize % CONST_TOKEN_TYPES.len();
+        (u32::from(CONST_TOKEN_TYPES[bank]), reg.index % 2048)
+    } else if info.numbered {
+        (info.token_type as u32, reg.index)
     } else {
-        info.token_number
+        (info.token_type as u32, info.token_number)
     };
     0x8000_0000 | (ty & 7) << 28 | (ty & 0x18) << 8 | (number & 0x7ff)
 }

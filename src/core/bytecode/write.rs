@@ -8,7 +8,7 @@
 //! what makes a listing assemble back to the tokens it came from). It is the
 //! encoder alone, like an assembler run with validation off: it refuses only
 //! what has no encoding (an unknown mnemonic or register, a modifier no bit
-//! carries, a register number past 2047); whether the program follows the
+//! carries); whether the program follows the
 //! ps_3_0 rules is validation's verdict, which `ps30 asm` requires first.
 //! [`encode`] lays a module out as tokens.
 
@@ -450,13 +450,14 @@ fn indexed(reg: &RegAst, p: Profile) -> R<(Reg, Option<RelIndex>)> {
         }
     };
     let numbered = base.file.info().numbered;
-    let number = (base.index as i64).saturating_add(rel.offset);
-    if (!numbered && rel.offset != 0) || number > 0x7ff {
-        return Err(cannot(
-            rel.span,
-            "the register number does not fit the 11 bits of a token",
-        ));
+    if !numbered && rel.offset != 0 {
+        return Err(cannot(rel.span, "this register takes no offset"));
     }
+    // A base past what the token numbers wraps, as Microsoft's assembler
+    // writes it (`c[a0.x + 8195]` is `c3[a0.x]`, `v[aL + 2048]` `v0[aL]`).
+    let number = (base.index as i64)
+        .saturating_add(rel.offset)
+        .rem_euclid(i64::from(base.file.token_registers()));
     let reg = Reg {
         file: base.file,
         index: number as u32,

@@ -62,6 +62,10 @@ pub struct Profile {
     /// report it name it beside.
     #[serde(skip)]
     pub slot_table: SlotTable,
+    /// The capabilities a ps_2_x shader is held to (`--caps`): their slot
+    /// count is a ps_2_x shader's budget, in place of the assembler's 512.
+    #[serde(skip)]
+    pub ps2x_caps: Option<crate::core::profile::Ps2xCaps>,
 }
 
 impl Profile {
@@ -76,21 +80,27 @@ impl Profile {
             max_rep_count: crate::core::isa::MAX_REP_COUNT as u32,
             max_loop_nesting: crate::core::isa::MAX_LOOP_NESTING,
             slot_table: SlotTable::default(),
+            ps2x_caps: None,
         }
     }
 
     /// This budget for a shader of `p`: the profile's name, and its slot
     /// and executed limits where they are lower (ps_2_0's 96 slots,
-    /// vs_2_0's 256 and 1,024 executed).
+    /// vs_2_0's 256 and 1,024 executed; a ps_2_x shader's slots those of
+    /// [`Profile::ps2x_caps`] when set).
     pub fn for_profile(self, p: crate::core::profile::Profile) -> Profile {
         if p == crate::core::profile::Profile::Ps3_0 {
             return self;
         }
         let limits = p.limits();
         let lower = |ours: u64, theirs: Option<u32>| theirs.map_or(ours, |t| ours.min(t.into()));
+        let slots = match (p, self.ps2x_caps) {
+            (crate::core::profile::Profile::Ps2X, Some(caps)) => Some(caps.slots),
+            _ => limits.slots,
+        };
         Profile {
             name: p.name().to_string(),
-            max_slots: lower(self.max_slots, limits.slots),
+            max_slots: lower(self.max_slots, slots),
             max_executed: lower(self.max_executed, limits.executed),
             ..self
         }

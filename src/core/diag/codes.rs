@@ -338,6 +338,24 @@ pub const TOTAL_SLOTS: Code = "X5617";
 /// "Number of instruction slots used too high: N. Max. allowed is M."
 /// (vs_2_0, vs_2_x).
 pub const VERTEX_SLOTS: Code = "X5755";
+/// "Too may static flow control instructions (N) for this shader model.
+/// Maximum allowed is 16." (vs_2_0, vs_2_x; `D3DAssemble` returns E_FAIL).
+pub const STATIC_FLOW_COUNT: Code = "X5520";
+/// ps_2_0's and ps_2_x's "(Second source param) Register number: N on this
+/// parameter for a matrix instruction causes attempt to access out of range
+/// register" (ps_3_0's is X5684).
+pub const PS2_MATRIX_RANGE: Code = "X5565";
+/// vs_2_0's and vs_2_x's matrix rows past the file (ps_3_0's is X5684).
+pub const VS2_MATRIX_RANGE: Code = "X5362";
+/// vs_3_0's matrix rows past the file (ps_3_0's is X5684).
+pub const VS3_MATRIX_RANGE: Code = "X5688";
+/// ps_2_0's and ps_2_x's "2 different constant registers (c#) read by
+/// instruction" (ps_3_0's is X5584).
+pub const PS2_CONST_PORTS: Code = "X5213";
+/// vs_2_0's and vs_2_x's two different constants in one instruction.
+pub const VS2_CONST_PORTS: Code = "X5393";
+/// vs_3_0's two different constants in one instruction.
+pub const VS3_CONST_PORTS: Code = "X5752";
 /// "Dependent tex-op sequence too long (4th order)" (ps_2_0).
 pub const DEPENDENT_READS: Code = "X5775";
 /// "Instruction not supported by version ps_2_0 pixel shader."

@@ -11,15 +11,15 @@
 //! on ps_2_0 and ps_2_x probes): an instruction that needs a capability is
 //! X2000, as in ps_2_0; a swizzle X5202; a temporary X2005; slots X5234 and
 //! X5617; texture instructions X5607; dependent reads X5775; flow control
-//! with a depth of 0 X5190, deeper than the depth X5493 (loops) and X5849
-//! (dynamic `if`).
+//! with a depth of 0 X5190; deeper nesting than the depths, counted
+//! through calls as [`super::nesting`] counts it, X5493 (loops), X5843
+//! (calls) and X5849 (dynamic `if`; X5846 on `p0`, X5880 for a
+//! `break_comp`, X6048 for a `callnz p0`).
 //!
 //! [`swizzles`] is the part every ps_2_0 and ps_2_x shader obeys (measured
 //! with `D3DAssemble`): no source swizzle on a texture instruction (X5198,
 //! ps_2_x included), and in ps_2_0 only the swizzles `.xyzw`, `.yzxw`,
-//! `.zxyw`, `.wzyx` and the four replicates (X5202). [`ps2x_codes`] gives
-//! the nesting refusals of ps_2_x their own codes: Microsoft's assembler
-//! numbers them apart from ps_3_0's.
+//! `.zxyw`, `.wzyx` and the four replicates (X5202).
 
 use crate::core::diag::{codes, Diagnostic, Diagnostics, SourceFile};
 use crate::core::ir::{Info, Instruction, Program, Span, Swizzle};
@@ -95,22 +95,6 @@ pub fn swizzles(p: &Program, arbitrary: bool, diags: &mut Diagnostics) {
     }
 }
 
-/// ps_3_0's nesting codes as ps_2_x's (measured: `D3DAssemble` answers a
-/// fifth nested `rep` in ps_2_x with X5493, where ps_3_0's is X5827).
-pub fn ps2x_codes(diags: &mut Diagnostics) {
-    for d in &mut diags.items {
-        d.code = d.code.map(|c| match c {
-            codes::LOOP_DEPTH => codes::PS2X_LOOP_DEPTH,
-            codes::CALL_DEPTH => codes::PS2X_CALL_DEPTH,
-            codes::STATIC_IF_DEPTH => codes::PS2X_STATIC_IF_DEPTH,
-            codes::PREDICATE_IF_DEPTH => codes::PS2X_PREDICATE_IF_DEPTH,
-            codes::DYNAMIC_IF_DEPTH => codes::PS2X_DYNAMIC_IF_DEPTH,
-            other => other,
-        });
-        d.message = d.message.replace("ps_3_0 allows", "ps_2_x allows");
-    }
-}
-
 /// What an instruction asks of the capabilities.
 fn needs(ins: &Instruction) -> (bool, bool) {
     let predicate = ins.predicate.is_some()
@@ -121,13 +105,17 @@ fn needs(ins: &Instruction) -> (bool, bool) {
     (predicate, gradient)
 }
 
-/// Whether a flow instruction opens a dynamic construct (`if_comp`,
-/// `if p0`, `break_comp`, `breakp`, `callnz p0`), and whether it is
-/// static flow control (`rep`, `if b#`, `call`, `callnz b#`).
+/// Whether a flow instruction is dynamic flow control (`if_comp`, `if p0`,
+/// `break`, `break_comp`, `breakp`, `callnz p0`), and whether it is static
+/// flow control (`rep`, `if b#`, `call`, `callnz b#`). A plain `break` is
+/// dynamic although it tests nothing: Direct3D 9 lists it among the
+/// instructions `DynamicFlowControlDepth` enables ("if, break, and
+/// breakc"), and Microsoft's assembler refuses it where a profile has
+/// static flow control only (vs_2_0's `rep` with a `break` is X5655).
 fn flow(ins: &Instruction) -> (bool, bool) {
     let on_predicate = ins.src.iter().any(|s| s.reg.file == RegFile::Predicate);
     match ins.op {
-        Opcode::Ifc | Opcode::BreakC | Opcode::BreakP => (true, false),
+        Opcode::Ifc | Opcode::Break | Opcode::BreakC | Opcode::BreakP => (true, false),
         Opcode::If | Opcode::CallNz => (on_predicate, !on_predicate),
         Opcode::Rep | Opcode::Call => (false, true),
         _ => (false, false),
@@ -143,7 +131,6 @@ pub fn check(p: &Program, info: &Info, caps: Ps2xCaps, file: &SourceFile) -> Dia
         return diags;
     }
     let end = Span::new(file.text.len(), file.text.len());
-    let (mut loops, mut ifs) = (0u32, Vec::<bool>::new());
     for ins in &p.instructions {
         let span = ins.origin.span;
         let (predicate, gradient) = needs(ins);
@@ -192,41 +179,9 @@ pub fn check(p: &Program, info: &Info, caps: Ps2xCaps, file: &SourceFile) -> Dia
                 ));
             }
         }
-        match ins.op {
-            Opcode::Rep => {
-                loops += 1;
-                if caps.static_flow_depth > 0 && loops > caps.static_flow_depth {
-                    diags.push(Diagnostic::coded(
-                        codes::PS2X_LOOP_DEPTH,
-                        span,
-                        format!(
-                            "rep nested {loops} deep; the static flow-control depth is {}",
-                            caps.static_flow_depth
-                        ),
-                    ));
-                }
-            }
-            Opcode::EndRep => loops = loops.saturating_sub(1),
-            Opcode::If | Opcode::Ifc => {
-                ifs.push(dynamic);
-                let open = ifs.iter().filter(|&&d| d).count() as u32;
-                if dynamic && caps.dynamic_flow_depth > 0 && open > caps.dynamic_flow_depth {
-                    diags.push(Diagnostic::coded(
-                        codes::PS2X_DYNAMIC_IF_DEPTH,
-                        span,
-                        format!(
-                            "dynamic if nested {open} deep; the dynamic flow-control depth is {}",
-                            caps.dynamic_flow_depth
-                        ),
-                    ));
-                }
-            }
-            Opcode::EndIf => {
-                ifs.pop();
-            }
-            Opcode::Label => (loops, ifs) = (0, Vec::new()),
-            _ => {}
-        }
+    }
+    if let Some(d) = super::nesting::check(p, super::nesting::Limits::under(caps), file) {
+        diags.push(d);
     }
     swizzles(p, caps.arbitrary_swizzle, &mut diags);
     super::limits::slots_under(p, info, caps, end, &mut diags);

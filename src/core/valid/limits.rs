@@ -1,7 +1,8 @@
 //! The limits a profile's assembler enforces and ps_3_0's does not: the
 //! slot counts of ps_2_0 (64 arithmetic, 32 texture, 96 in all), ps_2_x
-//! (its capabilities' slots) and vs_2_0/vs_2_x (256), and ps_2_0's levels
-//! of dependent texture reads. The numbers are [`Profile::limits`]; the
+//! (its capabilities' slots) and vs_2_0/vs_2_x (256, and 16 static
+//! flow-control instructions), and ps_2_0's levels of dependent texture
+//! reads. The numbers are [`Profile::limits`]; the
 //! codes and their order are Microsoft's assembler's (measured:
 //! `tests/oracle/corpus/asm/profiles/*/limit-*.psh`).
 
@@ -37,6 +38,51 @@ pub fn check(p: &Program, info: &Info, diags: &mut Diagnostics, file: &SourceFil
             format!(
                 "{} instruction slots used; {} allows {max}",
                 count.total(),
+                p.profile
+            ),
+        ));
+    }
+    if matches!(p.profile, Profile::Vs2_0 | Profile::Vs2X) {
+        static_flow_count(p, end, diags);
+    }
+}
+
+/// vs_2_0 and vs_2_x run at most 16 static flow-control instructions
+/// (Microsoft's "Flow Control Nesting Limits": `call`, `callnz b#`,
+/// `if b#`, the `else` of an `if b#`, `loop` and `rep` count one each;
+/// measured: 25 are X5520, which `D3DAssemble` returns as E_FAIL; ps_2_x
+/// and vs_3_0 have no such count).
+fn static_flow_count(p: &Program, end: Span, diags: &mut Diagnostics) {
+    let on_bool = |i: &crate::core::ir::Instruction| {
+        i.src
+            .first()
+            .is_some_and(|s| s.reg.file == RegFile::ConstBool)
+    };
+    let mut ifs: Vec<bool> = Vec::new();
+    let mut count = 0u32;
+    for i in &p.instructions {
+        let counts = match i.op {
+            Opcode::Call | Opcode::Loop | Opcode::Rep => true,
+            Opcode::CallNz => !i.src.iter().any(|s| s.reg.file == RegFile::Predicate),
+            Opcode::If | Opcode::Ifc => {
+                ifs.push(i.op == Opcode::If && on_bool(i));
+                ifs.last() == Some(&true)
+            }
+            Opcode::Else => ifs.last() == Some(&true),
+            Opcode::EndIf => {
+                ifs.pop();
+                false
+            }
+            _ => false,
+        };
+        count += u32::from(counts);
+    }
+    if count > 16 {
+        diags.push(Diagnostic::coded(
+            codes::STATIC_FLOW_COUNT,
+            end,
+            format!(
+                "{count} static flow-control instructions (call, callnz b#, if b#, its else, loop, rep); {} allows 16",
                 p.profile
             ),
         ));

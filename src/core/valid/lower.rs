@@ -36,10 +36,6 @@ use decl::{lower_dcl, lower_def};
 
 type R<T> = Result<T, Diagnostic>;
 
-/// One past the highest base register of `v[aL + n]`: the 11 bits of a
-/// token's register number.
-const MAX_RELATIVE_BASE: i64 = 2048;
-
 /// Mnemonics of other shader models, with what to say about them.
 const NOT_PS30: &[(&str, &str)] = &[
     ("lit", "lit is a vertex-shader instruction"),
@@ -187,7 +183,7 @@ fn lower_instruction(ast: &InstrAst, p: Profile) -> R<Instruction> {
         sgn_sources(&src, ast, p)?;
     }
     texture_sources(op, &src, ast)?;
-    operand_rules(op, dst.as_ref(), &src, ast)?;
+    operand_rules(op, dst.as_ref(), &src, ast, p)?;
     depth_rules(op, dst.as_ref(), &src, ast)?;
     Ok(Instruction {
         op,
@@ -753,13 +749,20 @@ fn depth_rules(op: Opcode, dst: Option<&Dst>, src: &[Src], ast: &InstrAst) -> R<
 /// Per-instruction operand rules of Microsoft's instruction pages (crs,
 /// m#x#, nrm, pow, sincos): required write masks, unswizzled sources, and
 /// destinations that may not alias a source.
-fn operand_rules(op: Opcode, dst: Option<&Dst>, src: &[Src], ast: &InstrAst) -> R<()> {
+fn operand_rules(
+    op: Opcode,
+    dst: Option<&Dst>,
+    src: &[Src],
+    ast: &InstrAst,
+    profile: Profile,
+) -> R<()> {
     let Some(d) = dst else { return Ok(()) };
     let rules = Rules {
         mnemonic: op.info().mnemonic,
         d,
         src,
         ast,
+        profile,
     };
     match op {
         Opcode::SinCos => {
@@ -794,6 +797,7 @@ struct Rules<'a> {
     d: &'a Dst,
     src: &'a [Src],
     ast: &'a InstrAst,
+    profile: Profile,
 }
 
 impl Rules<'_> {
@@ -950,9 +954,21 @@ impl Rules<'_> {
             )
             .with_label("vPos has only .x and .y"));
         }
-        if m.reg.index + rows > m.reg.file.info().count {
+        // The rows must exist in the profile's file; a vertex shader's
+        // float constants are not checked (measured: `m4x4 r0, v0, c8190`
+        // is accepted in every vertex profile). Each profile has its code.
+        let vertex_consts = m.reg.file == RegFile::Const
+            && self.profile.stage() == crate::core::profile::Stage::Vertex;
+        let count = self.profile.count(m.reg.file);
+        if !vertex_consts && m.reg.index.saturating_add(rows) > count {
+            let code = match self.profile {
+                Profile::Ps2_0 | Profile::Ps2X => codes::PS2_MATRIX_RANGE,
+                Profile::Vs2_0 | Profile::Vs2X => codes::VS2_MATRIX_RANGE,
+                Profile::Vs3_0 => codes::VS3_MATRIX_RANGE,
+                _ => codes::MATRIX_RANGE,
+            };
             return Err(Diagnostic::coded(
-                codes::MATRIX_RANGE,
+                code,
                 self.span(2),
                 format!(
                     "the matrix {}…+{} runs past the last register",

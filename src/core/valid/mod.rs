@@ -17,6 +17,7 @@ pub mod gradient;
 pub mod init;
 pub mod limits;
 pub mod lower;
+pub mod nesting;
 pub mod register;
 
 use crate::core::diag::{codes, Diagnostic, Diagnostics, SourceFile};
@@ -39,13 +40,23 @@ pub fn validate(
     let program = collect(stmts, body, file, profile, &mut diags);
     check_declarations(&program, &mut diags, file);
     let info = check_program(&program, &mut diags, file);
+    // What the checks above cannot see: blocks inside subroutines on top of
+    // those around their calls, break_comp and callnz p0 as dynamic levels,
+    // and vs_2_0's depths of one.
+    let nested = diags
+        .items
+        .iter()
+        .any(|d| d.code.is_some_and(nesting::is_depth_code));
+    if !nested && !diags.has_errors() {
+        if let Some(d) = nesting::check(&program, nesting::Limits::of(program.profile), file) {
+            diags.push(d);
+        }
+    }
     limits::check(&program, &info, &mut diags, file);
     if matches!(program.profile, Profile::Ps2_0 | Profile::Ps2X) {
         caps::swizzles(&program, program.profile == Profile::Ps2X, &mut diags);
     }
-    if program.profile == Profile::Ps2X {
-        caps::ps2x_codes(&mut diags);
-    }
+    nesting::own_codes(program.profile, &mut diags);
     // An instruction refused above is missing from the program, so the
     // registers it writes would read as never written: no cascade of
     // warnings about them until the errors are fixed.
@@ -674,8 +685,11 @@ impl<'p, 'd> Checker<'p, 'd> {
                 .count();
             let ports = f.info().read_ports;
             if distinct as u32 > ports {
-                let code = match f {
-                    RegFile::Input => codes::INPUT_PORTS,
+                let code = match (f, self.p.profile) {
+                    (RegFile::Input, _) => codes::INPUT_PORTS,
+                    (_, Profile::Ps2_0 | Profile::Ps2X) => codes::PS2_CONST_PORTS,
+                    (_, Profile::Vs2_0 | Profile::Vs2X) => codes::VS2_CONST_PORTS,
+                    (_, Profile::Vs3_0) => codes::VS3_CONST_PORTS,
                     _ => codes::CONST_PORTS,
                 };
                 self.err(

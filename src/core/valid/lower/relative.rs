@@ -5,7 +5,7 @@
 //! destination `o[aL + n]`. Any other register written with `[…]` is the
 //! assembler's "invalid register `r[...]`" (X2005).
 
-use super::{foreign_register, MAX_RELATIVE_BASE, R};
+use super::{foreign_register, R};
 use crate::core::diag::{codes, Diagnostic};
 use crate::core::front::ast::{RegAst, RelAst};
 use crate::core::ir::{Reg, RelIndex};
@@ -117,18 +117,13 @@ pub(super) fn index(r: &RegAst, reg: Reg, profile: Profile) -> R<Option<(RelInde
     }
     // Microsoft's assembler takes a base past the file's end (`v[aL + 10]`
     // is `v10[aL]`: what the index adds may bring it back; a read that lands
-    // outside the file is undefined) up to what the token's 11-bit register
-    // number holds. (Constant bases from c2048 on take the token types
-    // CONST2…CONST4, which ps30 does not write.)
-    let total = i64::from(reg.index).saturating_add(rel.offset);
-    if total >= MAX_RELATIVE_BASE {
-        let name = reg.file.info().name;
-        return Err(Diagnostic::coded(
-            codes::REGISTER,
-            rel.span,
-            format!("base register {name}{total} is out of range"),
-        )
-        .with_label(format!("{name}0 … {name}{}", MAX_RELATIVE_BASE - 1)));
-    }
+    // outside the file is undefined) and keeps what the token can number:
+    // the 11-bit register number, and for float constants the register
+    // types CONST…CONST4 above it (c0–c8191). A larger base wraps
+    // (measured: `c[a0.x + 8195]` is `c3[a0.x]`, `v[aL + 2048]` is
+    // `v0[aL]`).
+    let total = i64::from(reg.index)
+        .saturating_add(rel.offset)
+        .rem_euclid(i64::from(reg.file.token_registers()));
     Ok(Some((index, total as u32)))
 }
