@@ -221,7 +221,9 @@ pub fn equivalence(
         v.draws += 1;
     }
     v.changed_instructions = changed(original, recompiled);
-    v.explained_by = explanations(&v.changed_instructions);
+    if v.differing > 0 {
+        v.explained_by = explanations(&v.changed_instructions);
+    }
     if v.unexplained > 0 {
         v.kind = Kind::Different;
     } else if v.differing > 0 {
