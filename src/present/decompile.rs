@@ -20,20 +20,40 @@ pub fn verdict_text(v: &Verdict) -> String {
             "// verify: identical: {} values of {} draws of {} pixels, bit for bit\n",
             v.values, v.draws, v.pixels
         )),
-        Kind::Different => {
+        Kind::WithinBound => {
             out.push_str(&format!(
-                "// verify: FAILED: {} of {} values differ, the largest by {}\n",
+                "// verify: equivalent within the derived rounding bound: {} of {} values differ \
+                 (the largest by {}), each by no more than the bound of both shaders' arithmetic\n",
                 v.differing,
                 v.values,
                 ulps(v.max_ulp)
             ));
             if let Some(w) = &v.worst {
-                out.push_str(&format!(
-                    "//   draw {} pixel ({}, {}) {}: original {:e}, recompiled {:e}\n",
-                    w.draw, w.x, w.y, w.output, w.original, w.recompiled
-                ));
+                out.push_str(&divergence(w));
             }
         }
+        Kind::Different => {
+            out.push_str(&format!(
+                "// verify: FAILED: {} of {} values differ, {} beyond the derived rounding bound; \
+                 the largest by {}\n",
+                v.differing,
+                v.values,
+                v.unexplained,
+                ulps(v.max_ulp)
+            ));
+            if let Some(w) = &v.first_unexplained {
+                out.push_str(&format!(
+                    "//   first beyond the bound: {}",
+                    &divergence(w)[4..]
+                ));
+            }
+            if let Some(w) = &v.worst {
+                out.push_str(&format!("//   largest: {}", &divergence(w)[4..]));
+            }
+        }
+    }
+    if !v.explained_by.is_empty() {
+        out.push_str(&format!("//   roundings: {}\n", v.explained_by.join("; ")));
     }
     if !v.changed_instructions.is_empty() {
         out.push_str(&format!(
@@ -42,6 +62,24 @@ pub fn verdict_text(v: &Verdict) -> String {
         ));
     }
     out
+}
+
+/// One differing value as a comment line.
+fn divergence(w: &crate::jobs::decompile::Divergence) -> String {
+    let bound = match w.bound {
+        Some(e) => format!("bound {e:e}"),
+        None => "no bound derived".into(),
+    };
+    format!(
+        "//   draw {} pixel ({}, {}) {}: original {:e}, recompiled {:e}, difference {:e}, {bound}\n",
+        w.draw,
+        w.x,
+        w.y,
+        w.output,
+        w.original,
+        w.recompiled,
+        (w.original - w.recompiled).abs()
+    )
 }
 
 fn ulps(n: u64) -> String {

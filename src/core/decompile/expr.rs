@@ -67,6 +67,8 @@ pub(crate) struct Ctx<'a> {
     pub names: &'a Names,
     /// Input register → parameter name.
     pub inputs: BTreeMap<u32, String>,
+    /// Inputs read as `v[aL + n]`, declared as arrays.
+    pub input_arrays: Vec<super::InputArray>,
     /// The loop counters of the enclosing `loop`s, innermost last.
     pub counters: Vec<String>,
     /// Values not written to their temporary because their one reader
@@ -270,7 +272,25 @@ impl Ctx<'_> {
                 }
                 folded.unwrap_or_else(|| swizzled(&format!("r{}", reg.index), 4, comps))
             }
-            RegFile::Input if relative => return unsupported("v[aL + n]"),
+            RegFile::Input if relative => {
+                let Some(a) = self
+                    .input_arrays
+                    .iter()
+                    .find(|a| reg.index >= a.first && reg.index < a.first + a.len)
+                else {
+                    return unsupported("v[aL + n] outside a run of declared inputs");
+                };
+                let Some(counter) = self.counters.last() else {
+                    return unsupported("v[aL] outside a loop");
+                };
+                let offset = reg.index - a.first;
+                let index = if offset == 0 {
+                    counter.clone()
+                } else {
+                    format!("{counter} + {offset}")
+                };
+                swizzled(&format!("{}[{index}]", a.name), 4, comps)
+            }
             RegFile::Input => match self.inputs.get(&reg.index) {
                 Some(name) => swizzled(name, 4, comps),
                 None => return unsupported("an input read without its declaration"),
@@ -499,6 +519,20 @@ fn absolute(ins: &Instruction, text: &str) -> String {
 fn matrix(ctx: &Ctx, ins: &Instruction, mask: &[usize]) -> Result<String, DecompileError> {
     let rows = lanes(ins, 0, None);
     let a = ctx.operand(&ins.src[0], &rows)?;
+    let n = matrix_rows(ins.op).unwrap_or(0);
+    let m = ins.src[1];
+    let whole =
+        (m.reg.file == RegFile::Const && m.relative.is_none() && m.modifier == SrcMod::None)
+            .then(|| super::matrix::whole(ctx.names, m.reg.index, rows.len() as u8, n))
+            .flatten();
+    if let Some((name, by_rows)) = whole.filter(|_| mask.iter().copied().eq(0..n as usize)) {
+        let a = if atomic(&a) { a } else { format!("({a})") };
+        return Ok(if by_rows {
+            format!("mul({name}, {a})")
+        } else {
+            format!("mul({a}, {name})")
+        });
+    }
     let mut parts = Vec::new();
     for &m in mask {
         if m as u32 >= matrix_rows(ins.op).unwrap_or(0) {

@@ -19,6 +19,7 @@
 mod emit;
 mod expr;
 mod fold;
+mod matrix;
 mod names;
 mod reduce;
 
@@ -185,15 +186,99 @@ struct Param {
     name: String,
 }
 
-/// The parameters of `main` for the shader's input declarations, and the
-/// register → name map expressions read.
-fn inputs(
-    shader: &Shader,
-    taken: &mut BTreeSet<String>,
-) -> Result<(Vec<Param>, BTreeMap<u32, String>), DecompileError> {
+/// An input array: inputs read as `v[aL + n]` are the run of declarations
+/// around `v#n` with one usage, consecutive usage indices and consecutive
+/// registers, declared as one array parameter (`float4 texcoord[4] :
+/// TEXCOORD0`) that the loop counter indexes.
+pub(crate) struct InputArray {
+    /// Its first register.
+    pub first: u32,
+    /// How many registers it spans.
+    pub len: u32,
+    /// The parameter's name.
+    pub name: String,
+}
+
+/// Registers `v#` that instructions read relatively (`v[aL + n]`: `n`).
+fn relative_inputs(shader: &Shader) -> BTreeSet<u32> {
+    shader
+        .instructions()
+        .iter()
+        .flat_map(|i| i.src.iter())
+        .filter(|s| s.reg.file == RegFile::Input && s.relative.is_some())
+        .map(|s| s.reg.index)
+        .collect()
+}
+
+/// The runs of input declarations that relative reads need as arrays.
+fn input_runs(shader: &Shader) -> Vec<(u32, u32)> {
+    let bases = relative_inputs(shader);
+    let mut decls: Vec<&crate::core::ir::InputDecl> = shader
+        .program()
+        .inputs
+        .iter()
+        .filter(|d| d.reg.file == RegFile::Input)
+        .collect();
+    decls.sort_by_key(|d| d.reg.index);
+    let mut runs: Vec<(u32, u32)> = Vec::new();
+    let mut k = 0;
+    while k < decls.len() {
+        let mut end = k + 1;
+        while end < decls.len() {
+            let (p, q) = (decls[end - 1], decls[end]);
+            let follows = q.reg.index == p.reg.index + 1
+                && q.usage == p.usage
+                && q.usage_index == p.usage_index + 1
+                && q.centroid == p.centroid;
+            if !follows {
+                break;
+            }
+            end += 1;
+        }
+        let (first, len) = (decls[k].reg.index, (end - k) as u32);
+        if bases.iter().any(|&b| b >= first && b < first + len) {
+            runs.push((first, len));
+        }
+        k = end;
+    }
+    runs
+}
+
+/// The parameters of `main` for the shader's input declarations, the
+/// register → name map expressions read, and the input arrays.
+type Inputs = (Vec<Param>, BTreeMap<u32, String>, Vec<InputArray>);
+
+/// [`Inputs`] of `shader`.
+fn inputs(shader: &Shader, taken: &mut BTreeSet<String>) -> Result<Inputs, DecompileError> {
     let mut params = Vec::new();
     let mut map = BTreeMap::new();
+    let runs = input_runs(shader);
+    let mut arrays = Vec::new();
     for d in &shader.program().inputs {
+        let run = runs.iter().find(|(f, n)| {
+            d.reg.file == RegFile::Input && d.reg.index >= *f && d.reg.index < f + n
+        });
+        if let Some(&(first, len)) = run {
+            if d.reg.index != first {
+                continue;
+            }
+            let usage = d.usage.to_ascii_lowercase();
+            let name = names::identifier(&usage, taken);
+            let centroid = if d.centroid { "_centroid" } else { "" };
+            for k in 0..len {
+                map.insert(first + k, format!("{name}[{k}]"));
+            }
+            params.push(Param {
+                decl: format!(
+                    "float4 {name}[{len}] : {}{}{centroid}",
+                    usage.to_ascii_uppercase(),
+                    d.usage_index
+                ),
+                name: name.clone(),
+            });
+            arrays.push(InputArray { first, len, name });
+            continue;
+        }
         let (ty, name, semantic) = match d.reg.file {
             RegFile::Position => ("float2", "vpos".to_string(), "VPOS".to_string()),
             RegFile::Face => ("float", "vface".to_string(), "VFACE".to_string()),
@@ -219,7 +304,7 @@ fn inputs(
             name,
         });
     }
-    Ok((params, map))
+    Ok((params, map, arrays))
 }
 
 /// Decompiles `shader` (ps_3_0) with the names of its constant table.
@@ -231,8 +316,10 @@ pub fn decompile(
     let ins = reduce::read_back(shader);
     let s = scan(shader, &ins);
     let mut taken: BTreeSet<String> = BTreeSet::new();
-    let (params, input_map) = inputs(shader, &mut taken)?;
+    let (params, input_map, input_arrays) = inputs(shader, &mut taken)?;
     let names = Names::new(shader.program(), table, &s.uses, &mut taken)?;
+    // runs of dot products over a whole matrix read as `mul` (`matrix.rs`)
+    let ins = matrix::group(ins, &names);
     let named_uniforms = table.map_or(0, |t| {
         t.constants
             .iter()
@@ -247,6 +334,7 @@ pub fn decompile(
     let mut ctx = expr::Ctx {
         names: &names,
         inputs: input_map,
+        input_arrays,
         counters: Vec::new(),
         pending: Default::default(),
     };

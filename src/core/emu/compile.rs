@@ -445,8 +445,10 @@ impl Compiled {
     }
 }
 
-/// Number of registers of each numbered file.
-const TEMPS: u32 = 32;
+/// Number of registers of each numbered file. Validation keeps a shader's
+/// temporaries to its profile's count; the bound shader of `ps30 decompile
+/// --verify` (`jobs/decompile/bound.rs`) keeps shadow registers up to r127.
+const TEMPS: u32 = 128;
 const INPUTS: u32 = 10;
 const CONSTS: u32 = 224;
 

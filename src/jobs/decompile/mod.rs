@@ -8,6 +8,7 @@
 //! are matched by semantic (`TEXCOORD0` is whatever `v#` the compiler
 //! chose), samplers and constants by the registers the HLSL binds.
 
+pub mod bound;
 pub mod oracle;
 
 pub use oracle::Oracle;
@@ -42,10 +43,23 @@ pub struct Verdict {
     pub values: u64,
     /// Values whose bits differ (NaN counts as equal to NaN).
     pub differing: u64,
+    /// Of those, values within the rounding bound derived from both
+    /// shaders' arithmetic ([`bound`]).
+    pub within_bound: u64,
+    /// Of those, values beyond it (or where no bound was derived): a
+    /// failure.
+    pub unexplained: u64,
     /// The largest distance in ulp among differing values (0 when none).
     pub max_ulp: u64,
     /// The first value that differs most.
     pub worst: Option<Divergence>,
+    /// The first value (in draw, row, column order) that differs beyond its
+    /// bound.
+    pub first_unexplained: Option<Divergence>,
+    /// What the changed instructions are, in words (`mad split or fused:
+    /// sums regrouped`, `lrp expanded`): the roundings that explain the
+    /// differences within the bound.
+    pub explained_by: Vec<String>,
     /// Instruction counts that differ between the original and the
     /// recompiled shader (`mnemonic: original → recompiled`): where a
     /// rounding difference comes from.
@@ -58,7 +72,10 @@ pub struct Verdict {
 pub enum Kind {
     /// Every value bit for bit.
     Identical,
-    /// Values differ: a failure.
+    /// Values differ, each within the rounding bound derived from the two
+    /// shaders' arithmetic: equivalent.
+    WithinBound,
+    /// Values differ beyond that bound: a failure.
     Different,
     /// Microsoft's compiler refused the HLSL: a failure.
     Refused,
@@ -81,6 +98,9 @@ pub struct Divergence {
     pub recompiled: f32,
     /// Their distance in ulp (`None`: one NaN or infinite, the other not).
     pub ulp: Option<u64>,
+    /// The derived bound of their difference (the two shaders' bounds
+    /// summed); `None` where none was derived.
+    pub bound: Option<f32>,
 }
 
 /// Why a verification could not run.
@@ -122,8 +142,12 @@ fn refused(messages: String) -> Verdict {
         pixels: 0,
         values: 0,
         differing: 0,
+        within_bound: 0,
+        unexplained: 0,
         max_ulp: 0,
         worst: None,
+        first_unexplained: None,
+        explained_by: Vec::new(),
         changed_instructions: Vec::new(),
     }
 }
@@ -163,51 +187,134 @@ pub fn equivalence(
     let mut v = refused(String::new());
     v.kind = Kind::Identical;
     v.pixels = size as u64 * size as u64;
+    // the bound shaders run only on draws where some value differs
+    let mut bounds = None;
     let mut worst_key = (0u64, false);
     for draw in 0..DRAWS {
         let inputs = Inputs::new(original, draw, size);
-        let oa = emu::run(&a, &inputs.draw(original, draw, size))
+        let da = inputs.draw(original, draw, size);
+        let db = inputs.draw(recompiled, draw, size);
+        let oa = emu::run(&a, &da)
             .map_err(|e| VerifyError(format!("the original, draw {draw}: {e}")))?;
-        let ob = emu::run(&b, &inputs.draw(recompiled, draw, size))
+        let ob = emu::run(&b, &db)
             .map_err(|e| VerifyError(format!("the recompiled shader, draw {draw}: {e}")))?;
-        compare(&oa, &ob, draw, &mut v, &mut worst_key);
+        let differ = oa.killed != ob.killed || !same_bits(&oa, &ob);
+        if differ && bounds.is_none() {
+            bounds = Some(
+                [original, recompiled]
+                    .map(|s| bound::bound_shader(s).and_then(|b| emu::compile(&b).ok())),
+            );
+        }
+        let outs = [0, 1].map(|k| {
+            if !differ {
+                return None;
+            }
+            let c = bounds.as_ref()?[k].as_ref()?;
+            emu::run(c, if k == 0 { &da } else { &db }).ok()
+        });
+        let pair = Pair {
+            a: &oa,
+            b: &ob,
+            bounds: [outs[0].as_ref(), outs[1].as_ref()],
+        };
+        compare(&pair, draw, &mut v, &mut worst_key);
         v.draws += 1;
     }
     v.changed_instructions = changed(original, recompiled);
     if v.differing > 0 {
-        v.kind = Kind::Different;
+        v.explained_by = explanations(&v.changed_instructions);
     }
-    v.equivalent = v.kind == Kind::Identical;
+    if v.unexplained > 0 {
+        v.kind = Kind::Different;
+    } else if v.differing > 0 {
+        v.kind = Kind::WithinBound;
+    }
+    v.equivalent = matches!(v.kind, Kind::Identical | Kind::WithinBound);
     Ok(v)
+}
+
+/// Whether every colour and depth value of two runs has the same bits.
+fn same_bits(a: &emu::DrawOutput, b: &emu::DrawOutput) -> bool {
+    let bits = |o: &emu::DrawOutput| -> Vec<u32> {
+        let colors = o.color.iter().flatten().flatten().flatten();
+        colors
+            .chain(o.depth.iter().flatten())
+            .map(|x| x.to_bits())
+            .collect()
+    };
+    bits(a) == bits(b)
+}
+
+/// The roundings that the changed instruction counts stand for.
+fn explanations(changed: &[String]) -> Vec<String> {
+    let has = |ops: &[&str]| {
+        changed
+            .iter()
+            .any(|c| ops.iter().any(|o| c.starts_with(&format!("{o}:"))))
+    };
+    let mut out = Vec::new();
+    let rows: [(&[&str], &str); 6] = [
+        (&["mad", "mul", "add"], "mad split or fused: sums regrouped"),
+        (&["dp2add", "dp3", "dp4"], "dot products regrouped"),
+        (&["lrp"], "lrp expanded"),
+        (&["cmp", "min", "max"], "selections rewritten"),
+        (&["frc", "sincos"], "range reduction rewritten"),
+        (
+            &["rcp", "rsq", "nrm", "exp", "log", "pow"],
+            "reciprocals, roots, powers rewritten",
+        ),
+    ];
+    for (ops, words) in rows {
+        if has(ops) {
+            out.push(words.to_string());
+        }
+    }
+    out
+}
+
+/// The two runs of one draw, with the bound shaders' outputs when derived.
+struct Pair<'a> {
+    a: &'a emu::DrawOutput,
+    b: &'a emu::DrawOutput,
+    bounds: [Option<&'a emu::DrawOutput>; 2],
+}
+
+impl Pair<'_> {
+    /// The derived bound of `|a − b|` at pixel `i` of colour `t` (4: depth)
+    /// component `c`.
+    fn bound(&self, i: usize, t: usize, c: usize) -> Option<f32> {
+        let one = |o: Option<&emu::DrawOutput>| -> Option<f32> {
+            let o = o?;
+            let e = if t == 4 {
+                o.depth.as_ref()?.get(i).copied()?
+            } else {
+                o.color.get(t)?.as_ref()?.get(i)?[c]
+            };
+            (e.is_finite() && e < bound::UNBOUNDED).then_some(e)
+        };
+        Some((one(self.bounds[0])? + one(self.bounds[1])?) * bound::SLACK)
+    }
 }
 
 /// Draws per verification: random constants on the front face, edge-case
 /// constants on the back face, and random constants of larger magnitude.
 pub const DRAWS: u32 = 3;
 
-fn compare(
-    oa: &emu::DrawOutput,
-    ob: &emu::DrawOutput,
-    draw: u32,
-    v: &mut Verdict,
-    worst_key: &mut (u64, bool),
-) {
+fn compare(p: &Pair, draw: u32, v: &mut Verdict, worst_key: &mut (u64, bool)) {
+    let (oa, ob) = (p.a, p.b);
     let w = oa.width;
-    let mut note = |i: usize, output: String, x: f32, y: f32, v: &mut Verdict| {
-        v.values += 1;
-        let same = x.to_bits() == y.to_bits() || (x.is_nan() && y.is_nan());
-        if same {
-            return;
-        }
-        v.differing += 1;
-        let ulp = ulp_distance(x, y);
-        let key = (ulp.unwrap_or(u64::MAX), true);
-        if ulp.unwrap_or(u64::MAX) > v.max_ulp || v.worst.is_none() {
-            v.max_ulp = v.max_ulp.max(ulp.unwrap_or(u64::MAX));
-        }
-        if key.0 > worst_key.0 || !worst_key.1 {
-            *worst_key = key;
-            v.worst = Some(Divergence {
+    let mut note =
+        |i: usize, output: String, x: f32, y: f32, bound: Option<f32>, v: &mut Verdict| {
+            v.values += 1;
+            let same = x.to_bits() == y.to_bits() || (x.is_nan() && y.is_nan());
+            if same {
+                return;
+            }
+            v.differing += 1;
+            let ulp = ulp_distance(x, y);
+            let within =
+                x.is_finite() && y.is_finite() && bound.is_some_and(|e| (x - y).abs() <= e);
+            let here = Divergence {
                 draw,
                 x: i as u32 % w,
                 y: i as u32 / w,
@@ -215,13 +322,34 @@ fn compare(
                 original: x,
                 recompiled: y,
                 ulp,
-            });
-        }
-    };
+                bound,
+            };
+            if within {
+                v.within_bound += 1;
+            } else {
+                v.unexplained += 1;
+                if v.first_unexplained.is_none() {
+                    v.first_unexplained = Some(here.clone());
+                }
+            }
+            let key = (ulp.unwrap_or(u64::MAX), true);
+            v.max_ulp = v.max_ulp.max(ulp.unwrap_or(u64::MAX));
+            if key.0 > worst_key.0 || !worst_key.1 {
+                *worst_key = key;
+                v.worst = Some(here);
+            }
+        };
     for i in 0..oa.killed.len() {
         let (ka, kb) = (oa.killed[i], ob.killed.get(i).copied().unwrap_or(false));
         if ka != kb {
-            note(i, "texkill".into(), ka as u8 as f32, kb as u8 as f32, v);
+            note(
+                i,
+                "texkill".into(),
+                ka as u8 as f32,
+                kb as u8 as f32,
+                None,
+                v,
+            );
             continue;
         }
         if ka {
@@ -235,13 +363,14 @@ fn compare(
                         format!("oC{t}.{}", ['x', 'y', 'z', 'w'][c]),
                         ca[i][c],
                         cb[i][c],
+                        p.bound(i, t, c),
                         v,
                     );
                 }
             }
         }
         if let (Some(da), Some(db)) = (&oa.depth, &ob.depth) {
-            note(i, "oDepth".into(), da[i], db[i], v);
+            note(i, "oDepth".into(), da[i], db[i], p.bound(i, 4, 0), v);
         }
     }
 }

@@ -11,10 +11,7 @@ float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
     float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0;
     r1.xyw = texcoord0.xyx * float3(2.0, -2.0, 0.0) + float2(-1.0, 1.0).xyy;
     r1.z = tex2D(depth, texcoord0.xy).x;
-    r0.x = dot(r1, currInvViewProj._m00_m10_m20_m30);
-    r0.y = dot(r1, currInvViewProj._m01_m11_m21_m31);
-    r0.z = dot(r1, currInvViewProj._m02_m12_m22_m32);
-    r0.w = dot(r1, currInvViewProj._m03_m13_m23_m33);
+    r0 = mul(r1, currInvViewProj);
     r0 = r0 * (1.0 / r0.w);
     r1.x = dot(r0, prevViewProj._m00_m10_m20_m30);
     r1.y = dot(r0, prevViewProj._m01_m11_m21_m31);

@@ -10,9 +10,7 @@ float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
     float4 r0 = 0, r1 = 0;
     r1.y = sin((W[1].x * texcoord0.x));
     r0 = tex2D(Image, ((r1.y * W[2].xy) * W[0].x + texcoord0.xy));
-    r1.x = dot(r0.xyz, ColourMatrix._m00_m10_m20);
-    r1.y = dot(r0.xyz, ColourMatrix._m01_m11_m21);
-    r1.z = dot(r0.xyz, ColourMatrix._m02_m12_m22);
+    r1.xyz = mul(r0.xyz, ColourMatrix);
     r0 = Weights[1] * texcoord0.x + Weights[0];
     r1.w = 1.0;
     oC0 = (Weights[2] * texcoord0.y + r0) * r1;

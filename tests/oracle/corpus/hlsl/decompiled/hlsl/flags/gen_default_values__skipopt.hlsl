@@ -13,11 +13,7 @@ float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
     float4 oC0 = 0;
     float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0;
-    r0.x = dot(texcoord0, Ident._m00_m10_m20_m30);
-    r0.y = dot(texcoord0, Ident._m01_m11_m21_m31);
-    r0.z = dot(texcoord0, Ident._m02_m12_m22_m32);
-    r0.w = dot(texcoord0, Ident._m03_m13_m23_m33);
-    r0 = r0 * Vec;
+    r0 = mul(texcoord0, Ident) * Vec;
     r1.xyz = Pair.y * Colour;
     r1.w = Pair.y * Pair.x;
     r0 = (r0 * Scalar) + r1;

@@ -28,15 +28,9 @@ float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1_centroid,
     r0 = r0 + tex3D(s3d, texcoord1.xyz);
     r0 = r0 + tex2D(s1d, texcoord0.xy);
     r1.xyz = texcoord1.z * g_RowMat[2].xyz + (texcoord1.x * g_RowMat[0].xyz + (g_RowMat[1].xyz * texcoord1.y));
-    r2.x = dot(texcoord1.xyz, g_M33._m00_m10_m20);
-    r2.y = dot(texcoord1.xyz, g_M33._m01_m11_m21);
-    r2.z = dot(texcoord1.xyz, g_M33._m02_m12_m22);
-    r1.xyz = (r1.xyz + g_RowMat[3].xyz) + r2.xyz;
+    r1.xyz = (r1.xyz + g_RowMat[3].xyz) + mul(texcoord1.xyz, g_M33);
     r2 = texcoord1.xyzx * float4(1.0, 1.0, 1.0, 0.0) + float4(0.0, 0.0, 0.0, 1.0);
-    r3.x = dot(r2, g_M43._m00_m10_m20_m30);
-    r3.y = dot(r2, g_M43._m01_m11_m21_m31);
-    r3.z = dot(r2, g_M43._m02_m12_m22_m32);
-    r1.xyz = r1.xyz + r3.xyz;
+    r1.xyz = r1.xyz + mul(r2, g_M43);
     r2 = tex2D(s2d, texcoord0.xy) * g_Color + g_fKey;
     r2.xyz = r1.xyz + r2.xyz;
     r0 = r0 + r2;

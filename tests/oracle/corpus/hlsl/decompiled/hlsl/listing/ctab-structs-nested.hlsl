@@ -41,11 +41,7 @@ float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
     r0 = -g_b4.y >= 0.0 ? r0 : (r0 + 1.0);
     r0 = -g_bb[1].x >= 0.0 ? r0 : (r0 + r0);
     r1.x = g_arr[3].x + g_arr[0].x;
-    r3.x = dot(r2, g_mats[1]._m00_m10_m20_m30);
-    r3.y = dot(r2, g_mats[1]._m01_m11_m21_m31);
-    r3.z = dot(r2, g_mats[1]._m02_m12_m22_m32);
-    r3.w = dot(r2, g_mats[1]._m03_m13_m23_m33);
-    r0 = r0 + (r1.x + r3);
+    r0 = r0 + (r1.x + mul(r2, g_mats[1]));
     oC0 = r0 + (tex2D(g_Samp, texcoord0.xy) + tex2D(g_plain, texcoord0.xy));
     return oC0;
 }
