@@ -354,7 +354,7 @@ fn bad_geometry_is_refused_with_its_place() {
             "steps[0].geometry.depth.format: `D15S1` is not one of D16, D24X8, D24S8, D32F_LOCKABLE",
         ),
         (
-            format!(r#"{{"primitive": "triangle_strip", "vertices": "missing.json"}}"#),
+            r#"{"primitive": "triangle_strip", "vertices": "missing.json"}"#.to_string(),
             "steps[0].geometry.vertices:",
         ),
         (
