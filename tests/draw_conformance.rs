@@ -354,7 +354,7 @@ fn bad_geometry_is_refused_with_its_place() {
             "steps[0].geometry.depth.format: `D15S1` is not one of D16, D24X8, D24S8, D32F_LOCKABLE",
         ),
         (
-            format!(r#"{{"primitive": "triangle_strip", "vertices": "missing.json"}}"#),
+            r#"{"primitive": "triangle_strip", "vertices": "missing.json"}"#.to_string(),
             "steps[0].geometry.vertices:",
         ),
         (
@@ -364,5 +364,97 @@ fn bad_geometry_is_refused_with_its_place() {
     ] {
         let err = run(&geometry);
         assert!(err.contains(want), "{geometry}: {err}");
+    }
+}
+
+#[test]
+fn overlapping_triangles_of_one_draw_blend_in_draw_order() {
+    // Three full-height quads in one triangle list, blended ONE/ONE: every
+    // pixel is the sum of all that cover it (D3D9 blends each primitive
+    // over what the earlier ones left). Columns 0–1 take (0.25, 0.5, 0,
+    // 0.5) + (0.5, 0.25, 0.125, 0.25) + (0.125, 0, 0.5, 0) = (0.875, 0.75,
+    // 0.625, 0.75); columns 2–3 the first two: (0.75, 0.75, 0.125, 0.75).
+    // Had a later triangle replaced the earlier one, or been blended with
+    // the target as it stood before the draw, a single quad's colour (or
+    // the last two's sum) would show. Every sum is of dyadic fractions:
+    // exact in f32.
+    let t = draw("blend.json");
+    check(&t, "add", |x, _| {
+        if x < 2 {
+            [0.875, 0.75, 0.625, 0.75]
+        } else {
+            [0.75, 0.75, 0.125, 0.75]
+        }
+    });
+    // SRCALPHA/INVSRCALPHA over a clear to blue (0, 0, 1, 1), alpha
+    // blended by the same factors (no separate alpha): red at alpha 0.5
+    // everywhere gives 0.5·(1, 0, 0, 0.5) + 0.5·(0, 0, 1, 1) = (0.5, 0,
+    // 0.5, 0.75); then green at alpha 0.25 over columns 0–1 gives
+    // 0.25·(0, 1, 0, 0.25) + 0.75·(0.5, 0, 0.5, 0.75) = (0.375, 0.25,
+    // 0.375, 0.625). The other order would give (0.5, 0.125, 0.375,
+    // 0.65625) there. Exact in f32 (dyadic, few bits).
+    check(&t, "over", |x, _| {
+        if x < 2 {
+            [0.375, 0.25, 0.375, 0.625]
+        } else {
+            [0.5, 0.0, 0.5, 0.75]
+        }
+    });
+}
+
+#[test]
+fn a_pixel_failing_the_alpha_test_writes_no_depth() {
+    // Draw 1 (z 0.25, ALPHAFUNC GREATEREQUAL, ALPHAREF 128): red with
+    // alpha 0 (code 0 < 128: discarded) over columns 0–1, alpha 1 (code
+    // 255: kept) over columns 2–3. Draw 2 (z 0.5, LESSEQUAL, no alpha
+    // test): green everywhere. Where the alpha test discarded, the depth
+    // is still the clear's 1 and 0.5 passes; where red was drawn, 0.25 is
+    // stored and 0.5 fails.
+    let t = draw("alpha_depth.json");
+    check(&t, "t", |x, _| if x < 2 { GREEN } else { RED });
+}
+
+#[test]
+fn both_colours_of_a_triangle_reach_their_targets() {
+    // The triangle (0,0), (4,0), (0,4) covers the centres with x + y < 4
+    // (the hypotenuse is a right edge). oC0 = texcoord0, red at every
+    // vertex; oC1 = texcoord1, (0,0,0,1), (1,0,0,1), (0,1,0,1) at the
+    // corners, so (x/4, y/4, 0, 1) at pixel (x, y) (w = 1: the
+    // interpolation is affine; quarters are exact in f32). Neither target
+    // is touched outside the triangle.
+    let t = draw("mrt.json");
+    check(&t, "c0", |x, y| if x + y < 4 { RED } else { CLEAR });
+    check(&t, "c1", |x, y| {
+        if x + y < 4 {
+            [x as f32 / 4.0, y as f32 / 4.0, 0.0, 1.0]
+        } else {
+            CLEAR
+        }
+    });
+}
+
+#[test]
+fn depth_functions_at_equal_and_nearly_equal_depths() {
+    // Each 2×2 target: red drawn first with ZFUNC ALWAYS (its depth
+    // written), then green with the named function. At equal depth (0.5
+    // in D24S8, 0.3 in D32F) LESS, NOTEQUAL and NEVER fail (red stays);
+    // LESSEQUAL, EQUAL and GREATEREQUAL pass (green). NEVER fails even for
+    // the nearer 0.25. GREATER with 0.500005 over 0.5: D16 rounds both to
+    // code 32768 (0.5·65535 = 32767.5 and 0.500005·65535 = 32767.83, to
+    // nearest), equal, so it fails; D24 stores 8388608 and 8388691
+    // (0.5·16777215 = 8388607.5, 0.500005·16777215 = 8388691.4), behind,
+    // so it passes.
+    let t = draw("depth_funcs.json");
+    for (name, want) in [
+        ("less", RED),
+        ("lessequal", GREEN),
+        ("equal", GREEN),
+        ("notequal", RED),
+        ("greater_d16", RED),
+        ("greater_d24", GREEN),
+        ("never", RED),
+        ("greaterequal", GREEN),
+    ] {
+        check(&t, name, |_, _| want);
     }
 }

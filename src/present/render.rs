@@ -75,11 +75,17 @@ pub fn step_line(list: &DrawList, r: &StepReport) -> String {
                 executed,
                 counts_agree,
                 merged,
+                triangles,
                 ..
             },
             Step::Draw(d),
         ) => format!(
-            "{shader}: {} pixels written, {} discarded; {}; {}",
+            "{shader}: {}{} pixels written, {} discarded; {}; {}",
+            triangles.map_or(String::new(), |n| format!(
+                "{} triangle{}, ",
+                thousands(n),
+                if n == 1 { "" } else { "s" }
+            )),
             thousands(merged.written),
             thousands(merged.killed),
             executed_text(*executed, *executed_static, *counts_agree),

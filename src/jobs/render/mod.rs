@@ -282,6 +282,11 @@ pub enum StepDetail {
         counts_agree: bool,
         /// What the output merger wrote, blended and masked.
         merged: MergeStats,
+        /// A draw of geometry: the triangles that reached the pixel
+        /// shader (after assembly, clipping and culling; a point is two);
+        /// absent for a full-screen draw.
+        #[serde(skip_serializing_if = "Option::is_none")]
+        triangles: Option<u64>,
         /// The emulator's findings about the draw's quads (divergent gradients,
         /// LOD far from level 0); not in JSON.
         #[serde(skip)]
@@ -571,7 +576,7 @@ fn draw(
             .map_err(|e| DrawFailure::Message(format!("oC{}: {e}", k + 1)))?;
         state.mips = None;
     }
-    let detail = draw_detail(shader, executed_static, executed, merged, findings);
+    let detail = draw_detail(shader, executed_static, executed, merged, None, findings);
     Ok((detail, executed_total))
 }
 
@@ -642,7 +647,14 @@ fn geometry_draw(
     let mut draw = Draw::new(1, 1);
     draw.samplers = bind_samplers(list, d, states)?;
     let findings = emu::findings::findings(&summary, &draw, &shader.loaded.file);
-    let detail = draw_detail(shader, executed_static, executed, drawn.merged, findings);
+    let detail = draw_detail(
+        shader,
+        executed_static,
+        executed,
+        drawn.merged,
+        Some(drawn.triangles),
+        findings,
+    );
     Ok((detail, drawn.total))
 }
 
@@ -653,9 +665,11 @@ fn draw_detail(
     executed_static: Range,
     executed: Option<Range>,
     merged: MergeStats,
+    triangles: Option<u64>,
     findings: Vec<Finding>,
 ) -> StepDetail {
     StepDetail::Draw {
+        triangles,
         shader: shader.name.clone(),
         counts_agree: executed
             .is_none_or(|e| executed_static.min <= e.min && e.max <= executed_static.max),

@@ -40,6 +40,8 @@ pub(crate) struct Drawn {
     pub total: u64,
     /// Gradient sites summed over the triangles' draws.
     pub gradients: Vec<GradientSite>,
+    /// Triangles that covered a pixel and ran the pixel shader.
+    pub triangles: u64,
 }
 
 /// A pixel-shader input slot and where its components come from: the
@@ -512,6 +514,7 @@ fn shade_all(
         executed: None,
         total: 0,
         gradients: compiled.sites.clone(),
+        triangles: 0,
     };
     let mut pixels_left = settings.budget.max_pixels;
     for (tri, provoking) in tris {
@@ -533,6 +536,7 @@ fn shade_all(
         let Some(window) = tri.pixels(clip_rect, &slots, &stage.values[*provoking]) else {
             continue;
         };
+        drawn.triangles += 1;
         let mut draw = Draw::new(window.width, window.height);
         draw.limits = limits;
         draw.limits.max_executed_total = limits.max_executed_total.saturating_sub(drawn.total);
