@@ -44,11 +44,11 @@ pub fn verdict_text(v: &Verdict) -> String {
             if let Some(w) = &v.first_unexplained {
                 out.push_str(&format!(
                     "//   first beyond the bound: {}",
-                    &divergence(w)[4..]
+                    &divergence(w)[5..]
                 ));
             }
             if let Some(w) = &v.worst {
-                out.push_str(&format!("//   largest: {}", &divergence(w)[4..]));
+                out.push_str(&format!("//   largest: {}", &divergence(w)[5..]));
             }
         }
     }

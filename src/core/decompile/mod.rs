@@ -307,6 +307,21 @@ fn inputs(shader: &Shader, taken: &mut BTreeSet<String>) -> Result<Inputs, Decom
     Ok((params, map, arrays))
 }
 
+/// How many of the constant table's uniforms are declared by name.
+fn named_uniforms(table: Option<&ConstantTable>, names: &Names) -> usize {
+    table.map_or(0, |t| {
+        t.constants
+            .iter()
+            .filter(|c| {
+                names
+                    .decls
+                    .iter()
+                    .any(|d| d.contains(&format!(" {}", c.name)))
+            })
+            .count()
+    })
+}
+
 /// Decompiles `shader` (ps_3_0) with the names of its constant table.
 pub fn decompile(
     shader: &Shader,
@@ -320,17 +335,7 @@ pub fn decompile(
     let names = Names::new(shader.program(), table, &s.uses, &mut taken)?;
     // runs of dot products over a whole matrix read as `mul` (`matrix.rs`)
     let ins = matrix::group(ins, &names);
-    let named_uniforms = table.map_or(0, |t| {
-        t.constants
-            .iter()
-            .filter(|c| {
-                names
-                    .decls
-                    .iter()
-                    .any(|d| d.contains(&format!(" {}", c.name)))
-            })
-            .count()
-    });
+    let named_uniforms = named_uniforms(table, &names);
     let mut ctx = expr::Ctx {
         names: &names,
         inputs: input_map,
