@@ -311,7 +311,7 @@ pub fn audit(shader: &Shader, defines_used: &BTreeSet<String>, given: &Given) ->
                     reads: 0,
                     instead: Vec::new(),
                 });
-            } else if !reads.contains_key(&(file, i)) && !(relative && file == 0) {
+            } else if !(reads.contains_key(&(file, i)) || relative && file == 0) {
                 found.push(Finding {
                     kind: Kind::Unread,
                     what: name(file, i),
