@@ -2,8 +2,10 @@
 //! `geometry` field of draw lists, docs/draw.md): vertices through a vertex
 //! shader or pre-transformed, clipping, the viewport, pixel centres, the
 //! top-left rule, interpolation with perspective, quads at triangle edges,
-//! vFace, vPos, culling, points, flat shading, the scissor and the depth
-//! test — each list drawn with `ps30 render` as a user draws it and every
+//! vFace, vPos, culling, points, flat shading, the scissor, the depth
+//! test and its functions, blending across the primitives of one draw, the
+//! alpha test against depth, two render targets and vertex texture fetch —
+//! each list drawn with `ps30 render` as a user draws it and every
 //! pixel compared with a value derived here, by hand or in f64 from
 //! Direct3D 9's rules (the derivation beside each case), never from ps30.
 //! Targets are D3DFMT_A32B32G32R32F, read back exactly from their EXR.
@@ -354,6 +356,14 @@ fn bad_geometry_is_refused_with_its_place() {
             "steps[0].geometry.depth.format: `D15S1` is not one of D16, D24X8, D24S8, D32F_LOCKABLE",
         ),
         (
+            format!(r#"{{"primitive": "triangle_list", "vertices": {verts}, "vertex_samplers": {{"s4": {{"texture": "t"}}}}}}"#),
+            "steps[0].geometry.vertex_samplers.s4:",
+        ),
+        (
+            format!(r#"{{"primitive": "triangle_list", "vertices": {verts}, "vertex_samplers": {{"s0": {{"texture": "t"}}}}}}"#),
+            "steps[0].geometry.vertex_samplers.s0.texture: `t` is the target this draw renders to",
+        ),
+        (
             r#"{"primitive": "triangle_strip", "vertices": "missing.json"}"#.to_string(),
             "steps[0].geometry.vertices:",
         ),
@@ -457,4 +467,23 @@ fn depth_functions_at_equal_and_nearly_equal_depths() {
     ] {
         check(&t, name, |_, _| want);
     }
+}
+
+#[test]
+fn vertex_texture_fetch_moves_and_colours_vertices() {
+    // The 2×1 target `texels` is drawn first with texcoord0 = (1, 0, 0, 0)
+    // + x·(−1, 1, 0, 0.5): texel 0 (1, 0, 0, 0), texel 1 (0, 1, 0, 0.5).
+    // fetch.vsh reads s0 with texldl at texcoord0 (point filtering, LOD 0)
+    // and adds the texel's alpha to clip x. Quad A (clip x −1…0) reads
+    // u = 0.25, texel 0: alpha 0, so it stays on columns 0–3 and carries
+    // (1, 0, 0, 0). Quad B (clip x 0…0.5) reads u = 0.75, texel 1: moved by
+    // 0.5 to clip 0.5…1, screen 6–8, columns 6–7, with (0, 1, 0, 0.5);
+    // columns 4–5 stay clear (green, had the texel's alpha not moved it;
+    // red, had it read texel 0). All values exact in f32.
+    let t = draw("vertex_fetch.json");
+    check(&t, "t", |x, _| match x {
+        0..=3 => [1.0, 0.0, 0.0, 0.0],
+        6..=7 => [0.0, 1.0, 0.0, 0.5],
+        _ => CLEAR,
+    });
 }
