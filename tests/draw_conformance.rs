@@ -425,7 +425,7 @@ fn a_pixel_failing_the_alpha_test_writes_no_depth() {
 }
 
 #[test]
-fn both_colours_of_a_triangle_reach_their_targets() {
+fn two_targets_take_oc0_and_oc1_and_share_the_alpha_test() {
     // The triangle (0,0), (4,0), (0,4) covers the centres with x + y < 4
     // (the hypotenuse is a right edge). oC0 = texcoord0, red at every
     // vertex; oC1 = texcoord1, (0,0,0,1), (1,0,0,1), (0,1,0,1) at the
@@ -441,6 +441,12 @@ fn both_colours_of_a_triangle_reach_their_targets() {
             CLEAR
         }
     });
+    // The alpha test reads oC0's alpha and discards the pixel in every
+    // target: two quads, oC0 red with alpha 0 (code 0 < ALPHAREF 128:
+    // discarded) over columns 0–1 and alpha 1 (kept) over columns 2–3,
+    // oC1 blue throughout. Only columns 2–3 are written, in both targets.
+    check(&t, "a0", |x, _| if x < 2 { CLEAR } else { RED });
+    check(&t, "a1", |x, _| if x < 2 { CLEAR } else { BLUE });
 }
 
 #[test]
