@@ -493,3 +493,17 @@ fn vertex_texture_fetch_moves_and_colours_vertices() {
         _ => CLEAR,
     });
 }
+
+#[test]
+fn depth_is_interpolated_linearly_on_screen() {
+    // The first strip runs from z 0 (x = 0, 1/w = 1) to z 1 (x = 8,
+    // 1/w = 0.25) and is written whole (D32F, cleared to 1): Direct3D 9
+    // interpolates z (z/w after the divide) linearly in screen space, so
+    // column x stores x/8. The second, flat at 0.4375 = 3.5/8 under LESS,
+    // passes where 3.5/8 < x/8: columns 4–7. Interpolated with perspective
+    // instead, z at column x would be (λ·0.25)/((1 − λ) + λ·0.25) with
+    // λ = x/8: 0.2, 0.294, 0.429 at columns 4–6 (all below 0.4375) and
+    // 0.636 at column 7, so columns 4–6 would stay red.
+    let t = draw("depth_ramp.json");
+    check(&t, "t", |x, _| if x >= 4 { GREEN } else { RED });
+}
