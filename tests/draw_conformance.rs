@@ -2,8 +2,10 @@
 //! `geometry` field of draw lists, docs/draw.md): vertices through a vertex
 //! shader or pre-transformed, clipping, the viewport, pixel centres, the
 //! top-left rule, interpolation with perspective, quads at triangle edges,
-//! vFace, vPos, culling, points, flat shading, the scissor and the depth
-//! test — each list drawn with `ps30 render` as a user draws it and every
+//! vFace, vPos, culling, points, flat shading, the scissor, the depth
+//! test and its functions, blending across the primitives of one draw, the
+//! alpha test against depth, two render targets and vertex texture fetch —
+//! each list drawn with `ps30 render` as a user draws it and every
 //! pixel compared with a value derived here, by hand or in f64 from
 //! Direct3D 9's rules (the derivation beside each case), never from ps30.
 //! Targets are D3DFMT_A32B32G32R32F, read back exactly from their EXR.
@@ -354,6 +356,14 @@ fn bad_geometry_is_refused_with_its_place() {
             "steps[0].geometry.depth.format: `D15S1` is not one of D16, D24X8, D24S8, D32F_LOCKABLE",
         ),
         (
+            format!(r#"{{"primitive": "triangle_list", "vertices": {verts}, "vertex_samplers": {{"s4": {{"texture": "t"}}}}}}"#),
+            "steps[0].geometry.vertex_samplers.s4:",
+        ),
+        (
+            format!(r#"{{"primitive": "triangle_list", "vertices": {verts}, "vertex_samplers": {{"s0": {{"texture": "t"}}}}}}"#),
+            "steps[0].geometry.vertex_samplers.s0.texture: `t` is the target this draw renders to",
+        ),
+        (
             r#"{"primitive": "triangle_strip", "vertices": "missing.json"}"#.to_string(),
             "steps[0].geometry.vertices:",
         ),
@@ -415,7 +425,7 @@ fn a_pixel_failing_the_alpha_test_writes_no_depth() {
 }
 
 #[test]
-fn both_colours_of_a_triangle_reach_their_targets() {
+fn two_targets_take_oc0_and_oc1_and_share_the_alpha_test() {
     // The triangle (0,0), (4,0), (0,4) covers the centres with x + y < 4
     // (the hypotenuse is a right edge). oC0 = texcoord0, red at every
     // vertex; oC1 = texcoord1, (0,0,0,1), (1,0,0,1), (0,1,0,1) at the
@@ -431,6 +441,12 @@ fn both_colours_of_a_triangle_reach_their_targets() {
             CLEAR
         }
     });
+    // The alpha test reads oC0's alpha and discards the pixel in every
+    // target: two quads, oC0 red with alpha 0 (code 0 < ALPHAREF 128:
+    // discarded) over columns 0–1 and alpha 1 (kept) over columns 2–3,
+    // oC1 blue throughout. Only columns 2–3 are written, in both targets.
+    check(&t, "a0", |x, _| if x < 2 { CLEAR } else { RED });
+    check(&t, "a1", |x, _| if x < 2 { CLEAR } else { BLUE });
 }
 
 #[test]
@@ -457,4 +473,37 @@ fn depth_functions_at_equal_and_nearly_equal_depths() {
     ] {
         check(&t, name, |_, _| want);
     }
+}
+
+#[test]
+fn vertex_texture_fetch_moves_and_colours_vertices() {
+    // The 2×1 target `texels` is drawn first with texcoord0 = (1, 0, 0, 0)
+    // + x·(−1, 1, 0, 0.5): texel 0 (1, 0, 0, 0), texel 1 (0, 1, 0, 0.5).
+    // fetch.vsh reads s0 with texldl at texcoord0 (point filtering, LOD 0)
+    // and adds the texel's alpha to clip x. Quad A (clip x −1…0) reads
+    // u = 0.25, texel 0: alpha 0, so it stays on columns 0–3 and carries
+    // (1, 0, 0, 0). Quad B (clip x 0…0.5) reads u = 0.75, texel 1: moved by
+    // 0.5 to clip 0.5…1, screen 6–8, columns 6–7, with (0, 1, 0, 0.5);
+    // columns 4–5 stay clear (green, had the texel's alpha not moved it;
+    // red, had it read texel 0). All values exact in f32.
+    let t = draw("vertex_fetch.json");
+    check(&t, "t", |x, _| match x {
+        0..=3 => [1.0, 0.0, 0.0, 0.0],
+        6..=7 => [0.0, 1.0, 0.0, 0.5],
+        _ => CLEAR,
+    });
+}
+
+#[test]
+fn depth_is_interpolated_linearly_on_screen() {
+    // The first strip runs from z 0 (x = 0, 1/w = 1) to z 1 (x = 8,
+    // 1/w = 0.25) and is written whole (D32F, cleared to 1): Direct3D 9
+    // interpolates z (z/w after the divide) linearly in screen space, so
+    // column x stores x/8. The second, flat at 0.4375 = 3.5/8 under LESS,
+    // passes where 3.5/8 < x/8: columns 4–7. Interpolated with perspective
+    // instead, z at column x would be (λ·0.25)/((1 − λ) + λ·0.25) with
+    // λ = x/8: 0.2, 0.294, 0.429 at columns 4–6 (all below 0.4375) and
+    // 0.636 at column 7, so columns 4–6 would stay red.
+    let t = draw("depth_ramp.json");
+    check(&t, "t", |x, _| if x >= 4 { GREEN } else { RED });
 }

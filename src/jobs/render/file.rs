@@ -55,6 +55,7 @@
 //!     through its mip chain (default `fold`).
 
 use super::input_values::Given;
+use super::textures::FileSampler;
 use super::{DrawList, DrawStep, ShaderSpec, Source, Step, TargetSpec, TextureData};
 use crate::core::emu::{Constants, Filter, LinearInput, MipFilter, SamplerState};
 use crate::core::image::{ImageLimits, OddSides, TargetFormat};
@@ -176,23 +177,6 @@ enum FileInput {
         #[serde(default)]
         ddy: Vec<f64>,
     },
-}
-
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct FileSampler {
-    texture: String,
-    filter: Option<String>,
-    mip: Option<String>,
-    address: Option<String>,
-    border: Option<[f64; 4]>,
-    lod_bias: Option<f64>,
-    max_mip_level: Option<u32>,
-    address_u: Option<String>,
-    address_v: Option<String>,
-    address_w: Option<String>,
-    min_filter: Option<String>,
-    mag_filter: Option<String>,
 }
 
 #[derive(Deserialize)]
@@ -756,36 +740,7 @@ impl Resolver {
             inputs.push((v, value));
         }
         let constants = self.constants(at, s)?;
-        let mut samplers = Vec::new();
-        for (name, fs) in s.samplers.iter().flatten() {
-            let field = format!("{at}.samplers.{name}");
-            let reg = register(name, 's', 16).map_err(|m| self.err(&field, m))?;
-            let source = match self.list.target(&fs.texture) {
-                Some(t) if t == target => {
-                    return Err(self.err(
-                        &format!("{field}.texture"),
-                        format!(
-                        "`{}` is the target this draw renders to (Direct3D 9 does not allow it)",
-                        fs.texture
-                    ),
-                    ))
-                }
-                Some(t) => Source::Target(t),
-                None => Source::Texture(
-                    self.list
-                        .textures
-                        .iter()
-                        .position(|t| t.name == fs.texture)
-                        .ok_or_else(|| {
-                            self.err(
-                                &format!("{field}.texture"),
-                                format!("no texture or target named `{}`", fs.texture),
-                            )
-                        })?,
-                ),
-            };
-            samplers.push((reg, source, self.sampler_state(&field, fs)?));
-        }
+        let samplers = self.samplers(&format!("{at}.samplers"), s.samplers.as_ref(), 16, target)?;
         let blend = match &s.blend {
             None => BlendState::OFF,
             Some(b) => self.blend(&format!("{at}.blend"), b)?,
@@ -812,8 +767,18 @@ impl Resolver {
             let i = targets.iter().position(|t| t.name == name)?;
             Some((i, targets[i].width, targets[i].height))
         };
+        let vertex_samplers = match &s.geometry {
+            Some(g) => self.samplers(
+                &format!("{at}.geometry.vertex_samplers"),
+                g.vertex_samplers.as_ref(),
+                4,
+                target,
+            )?,
+            None => Vec::new(),
+        };
         let sampled: Vec<usize> = samplers
             .iter()
+            .chain(&vertex_samplers)
             .filter_map(|&(_, src, _)| match src {
                 Source::Target(t) => Some(t),
                 Source::Texture(_) => None,
@@ -823,7 +788,11 @@ impl Resolver {
             .map_err(|(field, m)| self.err(&format!("{at}.{field}"), m))?;
         let geometry = match &s.geometry {
             None => None,
-            Some(g) => Some(Box::new(self.geometry(at, g, s, (w, h))?)),
+            Some(g) => {
+                let mut g = self.geometry(at, g, s, (w, h))?;
+                g.vertex_samplers = vertex_samplers;
+                Some(Box::new(g))
+            }
         };
         self.pixel_stage(&format!("{at}.shader"), shader)?;
         Ok(DrawStep {
@@ -1006,6 +975,49 @@ impl Resolver {
             alpha,
             factor: b.factor.unwrap_or([255; 4]),
         })
+    }
+
+    /// A draw's `samplers` (or its geometry's `vertex_samplers`, `count`
+    /// of them): each register with the texture or target it reads — never
+    /// the draw's own `target` — and its states.
+    fn samplers(
+        &self,
+        at: &str,
+        given: Option<&BTreeMap<String, FileSampler>>,
+        count: u32,
+        target: usize,
+    ) -> Result<Vec<(u32, Source, SamplerState)>, FileError> {
+        let mut samplers = Vec::new();
+        for (name, fs) in given.into_iter().flatten() {
+            let field = format!("{at}.{name}");
+            let reg = register(name, 's', count).map_err(|m| self.err(&field, m))?;
+            let source = match self.list.target(&fs.texture) {
+                Some(t) if t == target => {
+                    return Err(self.err(
+                        &format!("{field}.texture"),
+                        format!(
+                        "`{}` is the target this draw renders to (Direct3D 9 does not allow it)",
+                        fs.texture
+                    ),
+                    ))
+                }
+                Some(t) => Source::Target(t),
+                None => Source::Texture(
+                    self.list
+                        .textures
+                        .iter()
+                        .position(|t| t.name == fs.texture)
+                        .ok_or_else(|| {
+                            self.err(
+                                &format!("{field}.texture"),
+                                format!("no texture or target named `{}`", fs.texture),
+                            )
+                        })?,
+                ),
+            };
+            samplers.push((reg, source, self.sampler_state(&field, fs)?));
+        }
+        Ok(samplers)
     }
 
     /// A draw's `geometry`, its vertex shader loaded.

@@ -511,7 +511,7 @@ fn draw(
     }
     emu_draw.constants = d.constants.clone();
     emu_draw.float_rules = d.pixel.float_rules.unwrap_or(settings.float_rules);
-    emu_draw.samplers = bind_samplers(list, d, states)?;
+    emu_draw.samplers = bind_samplers(list, d, &d.samplers, states)?;
     let mut out = backend::draw_output(
         &settings.backend,
         &shader.loaded.shader,
@@ -584,11 +584,12 @@ fn draw(
 pub(crate) fn bind_samplers<'s>(
     list: &'s DrawList,
     d: &DrawStep,
+    samplers: &[(u32, Source, SamplerState)],
     states: &'s [TargetState],
 ) -> Result<Vec<(u32, TextureLevels<'s>, SamplerState)>, DrawFailure> {
     let spec = &list.targets[d.target];
-    let mut out = Vec::with_capacity(d.samplers.len());
-    for &(s, source, state) in &d.samplers {
+    let mut out = Vec::with_capacity(samplers.len());
+    for &(s, source, state) in samplers {
         let levels: TextureLevels<'_> = match source {
             Source::Texture(t) => {
                 let t = &list.textures[t];
@@ -645,7 +646,7 @@ fn geometry_draw(
         gradients: drawn.gradients,
     };
     let mut draw = Draw::new(1, 1);
-    draw.samplers = bind_samplers(list, d, states)?;
+    draw.samplers = bind_samplers(list, d, &d.samplers, states)?;
     let findings = emu::findings::findings(&summary, &draw, &shader.loaded.file);
     let detail = draw_detail(
         shader,

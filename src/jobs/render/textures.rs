@@ -131,3 +131,22 @@ pub fn overrides(
     }
     Ok(())
 }
+
+/// A sampler as a draw list writes it (a draw's `samplers` entry, or its
+/// geometry's `vertex_samplers`).
+#[derive(serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct FileSampler {
+    pub(crate) texture: String,
+    pub(crate) filter: Option<String>,
+    pub(crate) mip: Option<String>,
+    pub(crate) address: Option<String>,
+    pub(crate) border: Option<[f64; 4]>,
+    pub(crate) lod_bias: Option<f64>,
+    pub(crate) max_mip_level: Option<u32>,
+    pub(crate) address_u: Option<String>,
+    pub(crate) address_v: Option<String>,
+    pub(crate) address_w: Option<String>,
+    pub(crate) min_filter: Option<String>,
+    pub(crate) mag_filter: Option<String>,
+}

@@ -2,7 +2,8 @@
 //! covering its target whole. The `geometry` field of a draw names the
 //! vertices (inline, or a vertex-list file in the format `run --vertices`
 //! reads: attributes by D3DDECLUSAGE), optional indices, the primitive
-//! type, a vertex shader or none, the viewport, the scissor rectangle, the
+//! type, a vertex shader or none (with its constants and vs_3_0's vertex
+//! textures for `texldl`), the viewport, the scissor rectangle, the
 //! cull mode, user clip planes, the point size and the depth test; this
 //! module reads it into a plain [`Geometry`] and `run.rs` draws it: the
 //! vertex stage (`emu::vertex`), then `core/raster` (assembly, clipping,
@@ -60,6 +61,9 @@ pub struct Geometry {
     pub vertex_shader: Option<usize>,
     /// The vertex shader's constants (SetVertexShaderConstantF/I/B).
     pub vertex_constants: Constants,
+    /// vs_3_0's vertex textures (`s0`–`s3`, D3DVERTEXTEXTURESAMPLER0–3)
+    /// for `texldl`, as the draw's `samplers` give the pixel shader's.
+    pub vertex_samplers: Vec<(u32, super::Source, crate::core::emu::SamplerState)>,
     /// The viewport; `None`: the whole target, depth 0 to 1.
     pub viewport: Option<Viewport>,
     /// The scissor rectangle (D3DRS_SCISSORTESTENABLE on); `None`: off.
@@ -99,6 +103,9 @@ pub(crate) struct FileGeometry {
     primitive: String,
     vertex_shader: Option<String>,
     vertex_constants: Option<BTreeMap<String, Vec<FileFloat>>>,
+    /// `vertex_samplers`, read by the draw-list reader (they name its
+    /// textures and targets).
+    pub(crate) vertex_samplers: Option<BTreeMap<String, super::textures::FileSampler>>,
     viewport: Option<FileViewport>,
     scissor: Option<[u32; 4]>,
     cull: Option<String>,
@@ -232,6 +239,7 @@ pub(crate) fn read(
         primitive,
         vertex_shader: None,
         vertex_constants: vertex_constants(g.vertex_constants.as_ref())?,
+        vertex_samplers: Vec::new(),
         viewport,
         scissor,
         cull,

@@ -94,6 +94,7 @@ fn vertex_stage(
     g: &Geometry,
     d: &DrawStep,
     float_rules: crate::core::float_rules::FloatRules,
+    states: &[TargetState],
 ) -> Result<Stage, DrawFailure> {
     let program = list.shaders[d.shader].loaded.shader.program();
     let wanted = pixel_semantics(program);
@@ -151,6 +152,7 @@ fn vertex_stage(
     let shader = &list.shaders[vs].loaded.shader;
     let draw = VertexDraw {
         constants: g.vertex_constants.clone(),
+        samplers: super::super::bind_samplers(list, d, &g.vertex_samplers, states)?,
         float_rules,
         ..VertexDraw::default()
     };
@@ -376,7 +378,7 @@ pub(crate) fn draw(
     let spec = &list.targets[d.target];
     let (width, height) = (spec.width, spec.height);
     let float_rules = d.pixel.float_rules.unwrap_or(settings.float_rules);
-    let stage = vertex_stage(list, g, d, float_rules)?;
+    let stage = vertex_stage(list, g, d, float_rules, states)?;
     let viewport = g.viewport.unwrap_or_else(|| Viewport::whole(width, height));
     let tris = triangles(g, &stage, &viewport).map_err(DrawFailure::Message)?;
     let mut clip_rect = viewport.rect().intersect(Rect {
@@ -409,7 +411,7 @@ pub(crate) fn draw(
     let depth = depth_buffer(&mut taken[0], g, width, height);
     let result = (|| {
         let depth = depth?;
-        let samplers = super::super::bind_samplers(list, d, states)?;
+        let samplers = super::super::bind_samplers(list, d, &d.samplers, states)?;
         let n = width as usize * height as usize;
         let mut pass = Pass {
             width,
