@@ -130,13 +130,24 @@ fn large_inputs_made_on_the_device_are_the_cpus_bits() {
 }
 
 /// `run_in_bands` hands on the frame one band of rows at a time, top band
-/// first, each the rows `run` gives for it.
+/// first, each the rows `run` gives for it (the killing draw without its
+/// depth output: a depth target is read back whole).
 #[test]
 fn a_frame_read_back_in_bands_is_the_whole_frame() {
     let Some(g) = gpu("a_frame_read_back_in_bands_is_the_whole_frame") else {
         return;
     };
-    let (s, d) = killing_draw();
+    let (_, d) = killing_draw();
+    let s = shader(
+        "ps_3_0
+dcl_texcoord0 v0
+def c0, 0.5, 0.25, 0, 1
+add r0, v0, -c0.x
+texkill r0.xy
+mov oC0, v0
+mov oC1, r0
+",
+    );
     let whole = backend::run(&g, &s, &d, TargetKind::Raw).unwrap();
     let (w, h) = (whole.width, whole.height);
     let mut next = 0;
@@ -158,6 +169,16 @@ fn a_frame_read_back_in_bands_is_the_whole_frame() {
     })
     .unwrap();
     assert_eq!(next, h);
+    // With depth, one band: the whole frame.
+    let (s, d) = killing_draw();
+    let mut bands = 0;
+    backend::run_in_bands(&g, &s, &d, TargetKind::Raw, 3, &mut |y0, band| {
+        assert_eq!((y0, band.height), (0, 8));
+        bands += 1;
+        true
+    })
+    .unwrap();
+    assert_eq!(bands, 1);
 }
 
 /// Flow control, relative addressing, subroutines, predication, modifiers,

@@ -276,8 +276,8 @@ impl Prepared<'_> {
         Ok(out)
     }
 
-    /// Draws once and reads the targets back `rows` rows at a time, top
-    /// band first, handing each band to `band` (as a `width × rows` output
+    /// Draws once and reads the targets back `rows` rows at a time (all at
+    /// once where the shader writes depth), top band first, handing each band to `band` (as a `width × rows` output
     /// starting at row `y0`) as soon as it is decoded, so that the caller
     /// works on one band while the next is decoded; `band` returns `false`
     /// to stop. Every band's copy is recorded with the draw: one draw, one
@@ -289,7 +289,11 @@ impl Prepared<'_> {
     ) -> Result<(), GpuError> {
         let (gpu, (w, h)) = (self.gpu, self.size);
         let device = &gpu.device;
-        let rows = rows.clamp(1, h.max(1));
+        // WebGPU copies a depth aspect whole, never a band of it.
+        let rows = match self.depth {
+            Some(_) => h.max(1),
+            None => rows.clamp(1, h.max(1)),
+        };
         let scopes = ErrorScopes::push(gpu);
         let mut encoder = device.create_command_encoder(&Default::default());
         record_pass(
@@ -312,6 +316,8 @@ impl Prepared<'_> {
             })
             .collect();
         gpu.queue.submit([encoder.finish()]);
+        // An invalid copy is reported here, before any band is handed on.
+        scopes.pop(gpu)?;
         for (y0, n, readbacks) in &bands {
             read_all(gpu, readbacks)?;
             let views = readbacks
@@ -328,7 +334,7 @@ impl Prepared<'_> {
                 break;
             }
         }
-        scopes.pop(gpu)
+        Ok(())
     }
 }
 

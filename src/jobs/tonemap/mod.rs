@@ -1011,50 +1011,7 @@ pub fn emulate(
             take(y0, rows, draw_band(y0, rows)?)?;
         }
     } else {
-        // The device draws as much of the frame at once as it takes (all
-        // of a 3840×2160 one) and reads it back a band at a time, on a
-        // thread of its own, while this thread checks band k and hands it
-        // on, in order: one translation, one texture lookup, one set of
-        // inputs and one draw per device-sized part of the frame.
-        let draw_rows = match settings.band_rows {
-            0 => settings.backend.band_rows(w, 1),
-            n => n,
-        };
-        std::thread::scope(|s| {
-            let (tx, rx) = std::sync::mpsc::sync_channel(1);
-            let loaded = &loaded;
-            let band_draw = &band_draw;
-            s.spawn(move || {
-                for y0 in (0..h).step_by(draw_rows.max(1) as usize) {
-                    let part = band_draw(y0, draw_rows.min(h - y0));
-                    let mut open = true;
-                    let drawn = crate::jobs::backend::draw_in_bands(
-                        &settings.backend,
-                        &loaded.shader,
-                        &loaded.file,
-                        &part,
-                        crate::core::gpu::TargetKind::Raw,
-                        settings.threads,
-                        band_rows,
-                        &mut |y, drawn| {
-                            open = tx.send((y0 + y, drawn.height, Ok(drawn))).is_ok();
-                            open
-                        },
-                    );
-                    if let Err(e) = drawn {
-                        let _ = tx.send((y0, 0, Err(TonemapError::Draw(e))));
-                        break;
-                    }
-                    if !open {
-                        break;
-                    }
-                }
-            });
-            for (y0, rows, drawn) in rx {
-                take(y0, rows, drawn?)?;
-            }
-            Ok::<(), TonemapError>(())
-        })?;
+        on_device(settings, &loaded, &band_draw, (w, h), band_rows, &mut take)?;
     }
     let cost = PassCost {
         shader: src.name().to_string(),
@@ -1067,6 +1024,58 @@ pub fn emulate(
         findings: Vec::new(),
     };
     Ok(cost)
+}
+
+/// [`emulate`] on a GPU: the device draws as much of the frame at once as it
+/// takes (all of a 3840×2160 one) and reads it back `band_rows` rows at a
+/// time, on a thread of its own, while this thread hands band k to `take`
+/// (which checks it), in order: one translation, one texture lookup, one set
+/// of inputs and one draw per device-sized part of the frame.
+fn on_device<'d>(
+    settings: &Settings,
+    loaded: &load::Loaded,
+    band_draw: &(dyn Fn(u32, u32) -> Draw<'d> + Sync),
+    (w, h): (u32, u32),
+    band_rows: u32,
+    take: &mut dyn FnMut(u32, u32, Drawn) -> Result<(), TonemapError>,
+) -> Result<(), TonemapError> {
+    let draw_rows = match settings.band_rows {
+        0 => settings.backend.band_rows(w, 1),
+        n => n,
+    };
+    std::thread::scope(|s| {
+        let (tx, rx) = std::sync::mpsc::sync_channel(1);
+        s.spawn(move || {
+            for y0 in (0..h).step_by(draw_rows.max(1) as usize) {
+                let part = band_draw(y0, draw_rows.min(h - y0));
+                let mut open = true;
+                let drawn = crate::jobs::backend::draw_in_bands(
+                    &settings.backend,
+                    &loaded.shader,
+                    &loaded.file,
+                    &part,
+                    crate::core::gpu::TargetKind::Raw,
+                    settings.threads,
+                    band_rows,
+                    &mut |y, drawn| {
+                        open = tx.send((y0 + y, drawn.height, Ok(drawn))).is_ok();
+                        open
+                    },
+                );
+                if let Err(e) = drawn {
+                    let _ = tx.send((y0, 0, Err(TonemapError::Draw(e))));
+                    break;
+                }
+                if !open {
+                    break;
+                }
+            }
+        });
+        for (y0, rows, drawn) in rx {
+            take(y0, rows, drawn?)?;
+        }
+        Ok(())
+    })
 }
 
 #[cfg(test)]
