@@ -303,7 +303,7 @@ impl Prepared<'_> {
             &self.pipeline,
             &self.bindings.group,
         );
-        let bands: Vec<(u32, u32, Vec<(Slot, Readback)>)> = (0..h)
+        let bands: Vec<Band> = (0..h)
             .step_by(rows as usize)
             .map(|y0| {
                 let n = rows.min(h - y0);
@@ -538,6 +538,9 @@ fn readback_buffers(
     }
     readbacks
 }
+
+/// A band of rows read back: its first row, its rows and its buffers.
+type Band = (u32, u32, Vec<(Slot, Readback)>);
 
 /// Which target a read-back buffer holds.
 #[derive(Clone, Copy)]

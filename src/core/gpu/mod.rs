@@ -147,13 +147,16 @@ impl GpuError {
 /// the f64 reference — meanwhile; the first draw waits for it
 /// ([`Opening::wait`]).
 pub struct Opening {
-    thread: Mutex<Option<std::thread::JoinHandle<Result<Arc<Gpu>, GpuError>>>>,
-    opened: OnceLock<Result<Arc<Gpu>, GpuError>>,
+    thread: Mutex<Option<std::thread::JoinHandle<Opened>>>,
+    opened: OnceLock<Opened>,
 }
+
+/// What opening a device gave.
+type Opened = Result<Arc<Gpu>, GpuError>;
 
 impl Opening {
     /// Starts `open` on a new thread.
-    pub fn start(open: impl FnOnce() -> Result<Arc<Gpu>, GpuError> + Send + 'static) -> Opening {
+    pub fn start(open: impl FnOnce() -> Opened + Send + 'static) -> Opening {
         let thread = std::thread::Builder::new()
             .name("gpu-open".into())
             .spawn(open)
