@@ -20,6 +20,13 @@
 //!   tonemap --backend gpu` does — translation, pipeline, uploads, the draw
 //!   and the read-back; `tonemap/gpu-draw`: the draw and read-back alone).
 //!   Goal: the device's draw at least 20× faster than the emulator's.
+//! * `command` (the first Vulkan adapter): whole commands as a user runs
+//!   them — `ps30 tonemap` and `ps30 luminance` of the same frame written
+//!   as a PFM, `--backend emulator` (every core) and `--backend gpu`, each
+//!   iteration one process of the `ps30` binary built with this bench, or
+//!   of the one `PS30_BENCH_BIN` names (a release build, say, on a machine
+//!   the bench was copied to) (`<command>/<backend>`). Goal: the GPU at
+//!   least as fast as the emulator, whole command.
 //!
 //! Skipped, with a line saying so, without an adapter.
 
@@ -41,6 +48,7 @@ use std::path::Path;
 
 const TRANSLATION: &str = "translation";
 const UHD: &str = "uhd";
+const COMMAND: &str = "command";
 
 /// The adapters each group drew on, for the tables.
 static DEVICES: std::sync::Mutex<Vec<(&str, String)>> = std::sync::Mutex::new(Vec::new());
@@ -219,7 +227,69 @@ fn uhd(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, translation, uhd);
+/// `image` as a PFM file (RGB, little-endian, bottom row first).
+fn write_pfm(path: &Path, image: &HdrImage) {
+    let mut bytes = format!("PF\n{} {}\n-1.0\n", image.width, image.height).into_bytes();
+    for row in image.pixels.chunks(image.width as usize).rev() {
+        for p in row {
+            for c in &p[..3] {
+                bytes.extend_from_slice(&c.to_le_bytes());
+            }
+        }
+    }
+    std::fs::write(path, bytes).unwrap();
+}
+
+/// The `command` group: `ps30 tonemap` and `ps30 luminance` of a 3840×2160
+/// PFM, whole processes, on the emulator and on the first adapter.
+fn command(c: &mut Criterion) {
+    let dir = std::env::temp_dir().join(format!("ps30-bench-gpu-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let pfm = dir.join("uhd.pfm");
+    write_pfm(&pfm, &uhd_image());
+    let exe =
+        std::env::var_os("PS30_BENCH_BIN").unwrap_or_else(|| env!("CARGO_BIN_EXE_ps30").into());
+    let run = |cmd: &str, backend: &str| {
+        std::process::Command::new(&exe)
+            .arg(cmd)
+            .arg(&pfm)
+            .args([
+                "--max-pixels",
+                "10000000",
+                "--backend",
+                backend,
+                "-q",
+                "--json",
+            ])
+            .stdout(std::process::Stdio::null())
+            .stderr(std::process::Stdio::null())
+            .status()
+            .unwrap()
+            .code()
+    };
+    // Exit 1 is a cross-check that disagrees: still a whole run.
+    if !matches!(run("luminance", "gpu"), Some(0 | 1)) {
+        eprintln!("{COMMAND}: skipped: `ps30 luminance --backend gpu` found no device");
+        let _ = std::fs::remove_dir_all(&dir);
+        return;
+    }
+    if let Ok(d) = Gpu::open() {
+        DEVICES.lock().unwrap().push((COMMAND, d.info().line()));
+    }
+    let mut g = c.benchmark_group(COMMAND);
+    g.sample_size(10);
+    for cmd in ["tonemap", "luminance"] {
+        for backend in ["emulator", "gpu"] {
+            g.bench_function(format!("{cmd}/{backend}"), |b| {
+                b.iter(|| assert!(matches!(run(cmd, backend), Some(0 | 1))))
+            });
+        }
+    }
+    g.finish();
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+criterion_group!(benches, translation, uhd, command);
 
 /// `a / b` of two entries of `times`, as a table row against `bound`.
 fn row(times: &[(String, f64)], a: &str, b: &str, bound: &str, met: fn(f64) -> bool) -> String {
@@ -272,6 +342,20 @@ fn main() {
                     (|r| r <= 0.05) as fn(f64) -> bool,
                 ),
             ],
+        ),
+        (
+            COMMAND,
+            ["tonemap", "luminance"]
+                .iter()
+                .map(|cmd| {
+                    (
+                        format!("{cmd}/gpu"),
+                        format!("{cmd}/emulator"),
+                        "≤ 1",
+                        (|r| r <= 1.0) as fn(f64) -> bool,
+                    )
+                })
+                .collect(),
         ),
     ] {
         let times = goals::criterion_dirs()

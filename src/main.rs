@@ -12,6 +12,7 @@ use cli::{ui::Ui, BadInput, Cli, Command, Outcome};
 use std::process::ExitCode;
 
 fn main() -> ExitCode {
+    ps30::core::phases::mark("start");
     let parsed = match Cli::try_parse() {
         Ok(parsed) => parsed,
         Err(e) => {
@@ -42,6 +43,7 @@ fn main() -> ExitCode {
         Command::Completions(args) => cli::completions::run(args, &ui),
         Command::Man(args) => cli::man::run(args, &ui),
     };
+    ps30::core::phases::mark("command done");
     match outcome {
         Ok(Outcome::Ok) => ExitCode::SUCCESS,
         Ok(Outcome::Problem) => ExitCode::from(1),

@@ -91,6 +91,96 @@ fn inputs_and_vpos_arrive_as_the_emulator_computes_them() {
     );
 }
 
+/// A draw of at least 4 MB of inputs has them made on the device from one
+/// term per column and one per row (`core/gpu/inputs.rs`): they must still
+/// arrive as the emulator computes them, bit for bit. v0's terms allow the
+/// device's sum (finite, no −0, none below 2⁻¹⁰³ but zero); v1's row terms
+/// include −0 (0 · −2) and its column terms a subnormal, so v1's draw is
+/// evaluated on the CPU as before — both must agree with the emulator.
+#[test]
+fn large_inputs_made_on_the_device_are_the_cpus_bits() {
+    let Some(g) = gpu("large_inputs_made_on_the_device_are_the_cpus_bits") else {
+        return;
+    };
+    let s = shader("ps_3_0\ndcl_texcoord0 v0\nmov oC0, v0\n");
+    let (w, h) = (1024, 1024);
+    let inputs = [
+        LinearInput {
+            base: [0.5 / 1024.0, 0.3, -7.25, 1e3],
+            ddx: [1.0 / 1024.0, 0.0, 1.0 / 3.0, -2.0],
+            ddy: [0.0, 1.0 / 7.0, 1e-3, 2.0],
+        },
+        LinearInput {
+            base: [1e-40, 0.3, -7.25, 1e3],
+            ddx: [0.0, 0.0, 1.0 / 3.0, -2.0],
+            ddy: [0.0, 1.0 / 7.0, 1e-3, -2.0],
+        },
+    ];
+    for (k, input) in inputs.into_iter().enumerate() {
+        let mut d = Draw::new(w, h);
+        d.inputs.push((0, input));
+        let (e, o) = both(&g, &s, &d, TargetKind::Raw);
+        assert_same(
+            &format!("input {k}"),
+            e.color[0].as_ref().unwrap(),
+            o.color[0].as_ref().unwrap(),
+            w,
+        );
+    }
+}
+
+/// `run_in_bands` hands on the frame one band of rows at a time, top band
+/// first, each the rows `run` gives for it (the killing draw without its
+/// depth output: a depth target is read back whole).
+#[test]
+fn a_frame_read_back_in_bands_is_the_whole_frame() {
+    let Some(g) = gpu("a_frame_read_back_in_bands_is_the_whole_frame") else {
+        return;
+    };
+    let (_, d) = killing_draw();
+    let s = shader(
+        "ps_3_0
+dcl_texcoord0 v0
+def c0, 0.5, 0.25, 0, 1
+add r0, v0, -c0.x
+texkill r0.xy
+mov oC0, v0
+mov oC1, r0
+",
+    );
+    let whole = backend::run(&g, &s, &d, TargetKind::Raw).unwrap();
+    let (w, h) = (whole.width, whole.height);
+    let mut next = 0;
+    backend::run_in_bands(&g, &s, &d, TargetKind::Raw, 3, &mut |y0, band| {
+        assert_eq!((y0, band.width), (next, w));
+        assert_eq!(band.height, 3.min(h - y0));
+        let rows = (y0 * w) as usize..((y0 + band.height) * w) as usize;
+        assert_eq!(band.killed, whole.killed[rows.clone()]);
+        for k in 0..2 {
+            assert_same(
+                &format!("rows from {y0}, oC{k}"),
+                &whole.color[k].as_ref().unwrap()[rows.clone()],
+                band.color[k].as_ref().unwrap(),
+                w,
+            );
+        }
+        next += band.height;
+        true
+    })
+    .unwrap();
+    assert_eq!(next, h);
+    // With depth, one band: the whole frame.
+    let (s, d) = killing_draw();
+    let mut bands = 0;
+    backend::run_in_bands(&g, &s, &d, TargetKind::Raw, 3, &mut |y0, band| {
+        assert_eq!((y0, band.height), (0, 8));
+        bands += 1;
+        true
+    })
+    .unwrap();
+    assert_eq!(bands, 1);
+}
+
 /// Flow control, relative addressing, subroutines, predication, modifiers,
 /// masks and `_sat` on values where every operation is exact (small
 /// integers and halves): any correct device gives the emulator's bits,

@@ -692,40 +692,53 @@ impl BackendArgs {
         use ps30::jobs::backend::Backend;
         Ok(match self.backend {
             BackendArg::Emulator => Backend::Emulator,
-            BackendArg::Gpu => {
-                let g = std::sync::Arc::new(ps30::core::gpu::Gpu::open()?);
-                // The device lives until the process ends, and the OS takes
-                // it back then: closing it first (the driver freeing a 4K
-                // frame's buffers) took 40 ms of a 3840×2160 tone map on an
-                // H100 (docs/speed.md).
-                std::mem::forget(g.clone());
-                Backend::Gpu(g)
-            }
+            BackendArg::Gpu => Backend::Gpu(open_kept()?),
         })
     }
 
-    /// [`open`](Self::open) on a thread of its own while `work` (decoding
-    /// the image) runs on this one: a GPU driver takes a large part of a
-    /// second to start, which the decoding hides.
+    /// The backend, a GPU opening on a thread of its own while `work`
+    /// (decoding the image) and whatever the command does before its first
+    /// draw run on this one: a GPU driver takes a large part of a second to
+    /// start. A device that fails to open fails the first draw; the command
+    /// then reports it as [`open`](Self::open) does ([`opening_failed`]).
     pub fn open_beside<T>(
         &self,
         work: impl FnOnce() -> T,
     ) -> (Result<ps30::jobs::backend::Backend, super::BadInput>, T) {
+        use ps30::jobs::backend::Backend;
         if matches!(self.backend, BackendArg::Emulator) {
             return (self.open(), work());
         }
-        std::thread::scope(|s| {
-            let opening = s.spawn(|| self.open());
-            let done = work();
-            let backend = opening
-                .join()
-                .unwrap_or_else(|panic| std::panic::resume_unwind(panic));
-            (backend, done)
-        })
+        let opening = ps30::core::gpu::Opening::start(open_kept);
+        let done = work();
+        (Ok(Backend::Opening(std::sync::Arc::new(opening))), done)
     }
 
     pub fn rules(&self) -> ps30::core::float_rules::FloatRules {
         self.float_rules.into()
+    }
+}
+
+/// A GPU opened for the rest of the process: it lives until the process
+/// ends, and the OS takes it back then — closing it first (the driver
+/// freeing a 4K frame's buffers) took 40 ms of a 3840×2160 tone map on an
+/// H100 (docs/speed.md).
+fn open_kept() -> Result<std::sync::Arc<ps30::core::gpu::Gpu>, ps30::core::gpu::GpuError> {
+    let g = std::sync::Arc::new(ps30::core::gpu::Gpu::open()?);
+    std::mem::forget(g.clone());
+    Ok(g)
+}
+
+/// A job's error, or the device's when the backend failed to open (the job
+/// stopped at its first draw): the message and exit code of
+/// [`BackendArgs::open`].
+pub fn opening_failed(
+    backend: &ps30::jobs::backend::Backend,
+    job: impl std::fmt::Display,
+) -> BadInput {
+    match backend.open_error() {
+        Some(e) => BadInput::from(e),
+        None => BadInput::from(job),
     }
 }
 

@@ -1,6 +1,8 @@
 //! `ps30 luminance`: both passes on an HDR image, cross-checked.
 
-use super::args::{parse_delta, parse_size, BackendArgs, ExecArgs, FormatArg, InputArgs};
+use super::args::{
+    opening_failed, parse_delta, parse_size, BackendArgs, ExecArgs, FormatArg, InputArgs,
+};
 use super::io::{print_json, say, shader_source};
 use super::ui::Ui;
 use super::{BadInput, Outcome};
@@ -126,6 +128,7 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         })
     });
     let (img, passes) = loaded?;
+    ps30::core::phases::mark("image decoded");
     let passes = passes?;
     let settings = Settings {
         block: passes.block,
@@ -143,15 +146,12 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
     let run = {
         let _spinner = ui.spinner("running both passes");
         match &passes.last {
-            Some(last) => luminance::run_with_last_column(
-                &img,
-                &passes.pass1,
-                last,
-                &passes.pass2,
-                &settings,
-            )?,
-            None => luminance::run(&img, &passes.pass1, &passes.pass2, &settings)?,
+            Some(last) => {
+                luminance::run_with_last_column(&img, &passes.pass1, last, &passes.pass2, &settings)
+            }
+            None => luminance::run(&img, &passes.pass1, &passes.pass2, &settings),
         }
+        .map_err(|e| opening_failed(&settings.backend, e))?
     };
     let name = args.image.display().to_string();
     if args.exec.json {

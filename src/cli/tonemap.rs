@@ -2,7 +2,7 @@
 //! 8-bit sRGB PNG, cross-checked pixel by pixel. The result is never held
 //! whole in floating point: each band of rows is encoded as it is drawn.
 
-use super::args::{parse_key, parse_white, BackendArgs, ExecArgs, InputArgs};
+use super::args::{opening_failed, parse_key, parse_white, BackendArgs, ExecArgs, InputArgs};
 use super::io::{check_image_output, print_json, say, shader_source};
 use super::ui::Ui;
 use super::Outcome;
@@ -46,6 +46,7 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         .draw
         .open_beside(|| image::load(&args.image, &args.exec.image_limits()));
     let img = img?;
+    ps30::core::phases::mark("image decoded");
     let settings = Settings {
         key: args.key,
         white: args.white,
@@ -67,7 +68,8 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         tonemap::run_into(&img, &settings, &progress, &mut |band| match &mut output {
             Some(out) => out.band(band),
             None => Ok(()),
-        })?
+        })
+        .map_err(|e| opening_failed(&settings.backend, e))?
     };
     // The image is not needed any more: the PNG is encoded without it.
     drop(img);

@@ -35,6 +35,7 @@ pub mod load;
 pub mod merge;
 pub mod numbers;
 pub mod output;
+pub mod phases;
 pub mod pixel_inputs;
 pub mod profile;
 pub mod ps1;

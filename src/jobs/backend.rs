@@ -19,6 +19,10 @@ pub enum Backend {
     Emulator,
     /// A device opened with [`Gpu::open`].
     Gpu(Arc<Gpu>),
+    /// A device still opening on a thread of its own ([`gpu::Opening`]): the
+    /// first draw on it waits for it, so that a command's CPU work runs
+    /// while the driver starts.
+    Opening(Arc<gpu::Opening>),
 }
 
 impl fmt::Debug for Backend {
@@ -32,15 +36,32 @@ impl Backend {
     pub fn name(&self) -> &'static str {
         match self {
             Backend::Emulator => "emulator",
-            Backend::Gpu(_) => "gpu",
+            Backend::Gpu(_) | Backend::Opening(_) => "gpu",
         }
+    }
+
+    /// The device a GPU backend draws on (waiting for one still opening);
+    /// `Ok(None)` for the emulator.
+    pub fn gpu(&self) -> Result<Option<&Arc<Gpu>>, GpuError> {
+        match self {
+            Backend::Emulator => Ok(None),
+            Backend::Gpu(g) => Ok(Some(g)),
+            Backend::Opening(o) => o.wait().map(Some),
+        }
+    }
+
+    /// Why the device could not be opened, if it was asked for and failed:
+    /// a command reports that rather than the draw it stopped.
+    pub fn open_error(&self) -> Option<GpuError> {
+        self.gpu().err()
     }
 
     /// `emulator`, or `GPU: <device line>`.
     pub fn describe(&self) -> String {
-        match self {
-            Backend::Emulator => "emulator".into(),
-            Backend::Gpu(g) => format!("GPU: {}", g.info().line()),
+        match self.gpu() {
+            Ok(None) => "emulator".into(),
+            Ok(Some(g)) => format!("GPU: {}", g.info().line()),
+            Err(e) => format!("GPU: not opened ({e})"),
         }
     }
 
@@ -49,18 +70,16 @@ impl Backend {
     /// device's [`Gpu::max_rows`] on a GPU (each draw there has a fixed
     /// cost: its inputs, targets and read-back buffers are made anew).
     pub fn band_rows(&self, width: u32, emulator: u32) -> u32 {
-        match self {
-            Backend::Emulator => emulator,
-            Backend::Gpu(g) => g.max_rows(width),
+        match self.gpu() {
+            Ok(Some(g)) => g.max_rows(width),
+            _ => emulator,
         }
     }
 
-    /// The device a GPU backend draws on; `None` for the emulator.
+    /// The device a GPU backend draws on; `None` for the emulator (and for
+    /// a device that failed to open).
     pub fn device(&self) -> Option<&gpu::DeviceInfo> {
-        match self {
-            Backend::Emulator => None,
-            Backend::Gpu(g) => Some(g.info()),
-        }
+        self.gpu().ok().flatten().map(|g| g.info())
     }
 }
 
@@ -128,6 +147,17 @@ pub fn environment(c: &emu::Constants) -> Environment {
     env
 }
 
+/// The device of a GPU backend, waiting for one still opening.
+fn device(backend: &Backend) -> Result<&Arc<Gpu>, DrawError> {
+    match backend.gpu() {
+        Ok(Some(g)) => Ok(g),
+        Ok(None) => Err(DrawError::Gpu(GpuError::Failed(
+            "the emulator has no device".into(),
+        ))),
+        Err(e) => Err(DrawError::Gpu(e)),
+    }
+}
+
 /// Holds a GPU draw to the emulator's per-pixel cap, by the cost model's
 /// longest path (an upper bound on every pixel's count).
 fn gpu_cap(shader: &Shader, file: &SourceFile, draw: &Draw) -> Result<(), DrawError> {
@@ -177,8 +207,9 @@ pub fn draw(
                 findings,
             })
         }
-        Backend::Gpu(g) => {
+        Backend::Gpu(_) | Backend::Opening(_) => {
             gpu_cap(shader, file, draw)?;
+            let g = device(backend)?;
             let out = gpu::run(g, shader, draw, target).map_err(DrawError::Gpu)?;
             Ok(Drawn {
                 width: out.width,
@@ -189,6 +220,45 @@ pub fn draw(
             })
         }
     }
+}
+
+/// [`draw`] on a GPU, the target read back `rows` rows at a time and each
+/// band handed to `band` (its first row and what it drew) as soon as it is
+/// read, so that the caller checks one band while the next is read; `band`
+/// returns `false` to stop. The emulator draws the whole target and hands
+/// it on as one band: a job that wants the emulator in bands draws them
+/// itself.
+#[allow(clippy::too_many_arguments)] // `draw`'s arguments and the bands'
+pub fn draw_in_bands(
+    backend: &Backend,
+    shader: &Shader,
+    file: &SourceFile,
+    draw: &Draw,
+    target: TargetKind,
+    threads: Option<usize>,
+    rows: u32,
+    band: &mut dyn FnMut(u32, Drawn) -> bool,
+) -> Result<(), DrawError> {
+    if matches!(backend, Backend::Emulator) {
+        let drawn = self::draw(backend, shader, file, draw, target, threads)?;
+        band(0, drawn);
+        return Ok(());
+    }
+    gpu_cap(shader, file, draw)?;
+    let g = device(backend)?;
+    gpu::run_in_bands(g, shader, draw, target, rows, &mut |y0, out| {
+        band(
+            y0,
+            Drawn {
+                width: out.width,
+                height: out.height,
+                color: out.color.into_iter().next().flatten(),
+                executed: None,
+                findings: Vec::new(),
+            },
+        )
+    })
+    .map_err(DrawError::Gpu)
 }
 
 /// Runs `draw` of `shader` on `backend` and returns all it produced: every
@@ -209,8 +279,9 @@ pub fn draw_output(
             None => emu::run(compiled, draw),
         }
         .map_err(DrawError::Emu),
-        Backend::Gpu(g) => {
+        Backend::Gpu(_) | Backend::Opening(_) => {
             gpu_cap(shader, file, draw)?;
+            let g = device(backend)?;
             let out = gpu::run(g, shader, draw, TargetKind::Raw).map_err(DrawError::Gpu)?;
             Ok(out.into_draw_output())
         }

@@ -1,12 +1,13 @@
 //! One draw on the device: resources from an [`emu::Draw`], one triangle
 //! over the target, and the targets read back into the emulator's layout.
 
-use super::{sampler, texture};
+use super::{inputs, sampler, texture};
 use super::{Gpu, GpuError};
 use crate::core::emu::{self, Draw};
 use crate::core::image::{unorm8_value, Encoding, TargetFormat};
 use crate::core::ir::Shader;
 use crate::core::isa::SamplerType;
+use crate::core::phases;
 use crate::core::translate::{self, interface, Entry};
 use rayon::prelude::*;
 use std::borrow::Cow;
@@ -121,6 +122,19 @@ pub fn run(
     prepare(gpu, shader, draw, targets)?.draw()
 }
 
+/// [`run`], the targets read back `rows` rows at a time
+/// ([`Prepared::draw_in_bands`]).
+pub fn run_in_bands(
+    gpu: &Gpu,
+    shader: &Shader,
+    draw: &Draw,
+    targets: TargetKind,
+    rows: u32,
+    band: &mut dyn FnMut(u32, GpuOutput) -> bool,
+) -> Result<(), GpuError> {
+    prepare(gpu, shader, draw, targets)?.draw_in_bands(rows, band)
+}
+
 /// A draw made ready on the device: the shader translated and its pipeline
 /// compiled, the constants and textures uploaded, the targets allocated.
 /// [`Prepared::draw`] draws and reads the targets back, as often as asked:
@@ -135,6 +149,10 @@ pub struct Prepared<'g> {
     pipeline: wgpu::RenderPipeline,
     attachments: Vec<Option<(wgpu::Texture, wgpu::TextureFormat)>>,
     depth: Option<wgpu::Texture>,
+    /// The buffers each [`draw`](Prepared::draw) copies the targets into,
+    /// made by the first: a 4K target's is 133 MB of host memory the
+    /// driver would otherwise map anew for every draw.
+    readbacks: std::sync::OnceLock<Vec<(Slot, Readback)>>,
 }
 
 /// Makes `draw` of `shader` ready on the device (see [`Prepared`]): the
@@ -145,10 +163,12 @@ pub fn prepare<'g>(
     draw: &Draw,
     targets: TargetKind,
 ) -> Result<Prepared<'g>, GpuError> {
+    phases::mark("draw: preparing");
     refuse(gpu, shader, draw)?;
     let spec = specialisation(gpu, shader, draw)?;
     let t = translate::translate_specialised(shader, draw.float_rules, Entry::Draw, &spec)
         .map_err(GpuError::Translate)?;
+    phases::mark("draw: translated");
     ready(gpu, draw, targets, t.interface, t.module)
 }
 
@@ -187,8 +207,10 @@ fn ready<'g>(
     let device = &gpu.device;
     let scopes = ErrorScopes::push(gpu);
     let bindings = Bindings::new(gpu, draw, &iface)?;
+    phases::mark("draw: bound");
     let color_targets = color_targets(&iface, targets);
     let pipeline = render_pipeline(device, fragment, &bindings, &color_targets, draw, &iface)?;
+    phases::mark("draw: pipeline");
     let attachments = color_targets
         .iter()
         .map(|c| {
@@ -209,6 +231,7 @@ fn ready<'g>(
         pipeline,
         attachments,
         depth,
+        readbacks: Default::default(),
     })
 }
 
@@ -226,16 +249,15 @@ impl Prepared<'_> {
             &self.pipeline,
             &self.bindings.group,
         );
-        let readbacks = copy_targets(
-            device,
-            &mut encoder,
-            &self.attachments,
-            self.depth.as_ref(),
-            w,
-            h,
-        );
+        let readbacks = self
+            .readbacks
+            .get_or_init(|| readback_buffers(device, &self.attachments, self.depth.as_ref(), w, h));
+        for (_, r) in readbacks {
+            r.record(&mut encoder, 0, w, h);
+        }
         gpu.queue.submit([encoder.finish()]);
-        read_all(gpu, &readbacks)?;
+        read_all(gpu, readbacks)?;
+        phases::mark("draw: drawn and mapped");
         // Decoded straight from the mapped buffers: a 4K target is 132 MB.
         let views = readbacks
             .iter()
@@ -243,11 +265,76 @@ impl Prepared<'_> {
             .collect::<Result<Vec<_>, _>>()
             .map_err(|e| GpuError::Failed(e.to_string()))?;
         let data: Vec<&[u8]> = views.iter().map(|v| &v[..]).collect();
-        let out = assemble(w, h, &self.iface, self.targets, &readbacks, &data);
+        let out = assemble(w, h, &self.iface, self.targets, readbacks, &data);
         drop(data);
         drop(views);
+        for (_, r) in readbacks {
+            r.buffer.unmap();
+        }
         scopes.pop(gpu)?;
+        phases::mark("draw: read back");
         Ok(out)
+    }
+
+    /// Draws once and reads the targets back `rows` rows at a time (all at
+    /// once where the shader writes depth), top band first, handing each band to `band` (as a `width × rows` output
+    /// starting at row `y0`) as soon as it is decoded, so that the caller
+    /// works on one band while the next is decoded; `band` returns `false`
+    /// to stop. Every band's copy is recorded with the draw: one draw, one
+    /// submission, one wait.
+    pub fn draw_in_bands(
+        &self,
+        rows: u32,
+        band: &mut dyn FnMut(u32, GpuOutput) -> bool,
+    ) -> Result<(), GpuError> {
+        let (gpu, (w, h)) = (self.gpu, self.size);
+        let device = &gpu.device;
+        // WebGPU copies a depth aspect whole, never a band of it.
+        let rows = match self.depth {
+            Some(_) => h.max(1),
+            None => rows.clamp(1, h.max(1)),
+        };
+        let scopes = ErrorScopes::push(gpu);
+        let mut encoder = device.create_command_encoder(&Default::default());
+        record_pass(
+            &mut encoder,
+            &self.attachments,
+            self.depth.as_ref(),
+            &self.pipeline,
+            &self.bindings.group,
+        );
+        let bands: Vec<Band> = (0..h)
+            .step_by(rows as usize)
+            .map(|y0| {
+                let n = rows.min(h - y0);
+                let readbacks =
+                    readback_buffers(device, &self.attachments, self.depth.as_ref(), w, n);
+                for (_, r) in &readbacks {
+                    r.record(&mut encoder, y0, w, n);
+                }
+                (y0, n, readbacks)
+            })
+            .collect();
+        gpu.queue.submit([encoder.finish()]);
+        // An invalid copy is reported here, before any band is handed on.
+        scopes.pop(gpu)?;
+        for (y0, n, readbacks) in &bands {
+            read_all(gpu, readbacks)?;
+            let views = readbacks
+                .iter()
+                .map(|(_, r)| r.buffer.get_mapped_range(..))
+                .collect::<Result<Vec<_>, _>>()
+                .map_err(|e| GpuError::Failed(e.to_string()))?;
+            let data: Vec<&[u8]> = views.iter().map(|v| &v[..]).collect();
+            let out = assemble(w, *n, &self.iface, self.targets, readbacks, &data);
+            drop(data);
+            drop(views);
+            phases::mark("draw: band read back");
+            if !band(*y0, out) {
+                break;
+            }
+        }
+        Ok(())
     }
 }
 
@@ -427,10 +514,9 @@ fn record_pass(
     pass.draw(0..3, 0..1);
 }
 
-/// Copies every target into a buffer the host can map.
-fn copy_targets(
+/// A buffer the host can map for every target.
+fn readback_buffers(
     device: &wgpu::Device,
-    encoder: &mut wgpu::CommandEncoder,
     attachments: &[Option<(wgpu::Texture, wgpu::TextureFormat)>],
     depth: Option<&wgpu::Texture>,
     w: u32,
@@ -441,17 +527,20 @@ fn copy_targets(
         if let Some((texture, format)) = a {
             let bytes = format.block_copy_size(None).unwrap_or(16);
             let aspect = wgpu::TextureAspect::All;
-            let r = copy_out(device, encoder, texture, w, h, bytes, aspect);
+            let r = Readback::new(device, texture, w, h, bytes, aspect);
             readbacks.push((Slot::Color(k), r));
         }
     }
     if let Some(d) = depth {
         let aspect = wgpu::TextureAspect::DepthOnly;
-        let r = copy_out(device, encoder, d, w, h, 4, aspect);
+        let r = Readback::new(device, d, w, h, 4, aspect);
         readbacks.push((Slot::Depth, r));
     }
     readbacks
 }
+
+/// A band of rows read back: its first row, its rows and its buffers.
+type Band = (u32, u32, Vec<(Slot, Readback)>);
 
 /// Which target a read-back buffer holds.
 #[derive(Clone, Copy)]
@@ -461,8 +550,10 @@ enum Slot {
     Depth,
 }
 
-/// A buffer a target was copied into, and its row pitch.
+/// A buffer a target is copied into, and its row pitch.
 struct Readback {
+    source: wgpu::Texture,
+    aspect: wgpu::TextureAspect,
     buffer: wgpu::Buffer,
     pitch: u32,
     texel: u32,
@@ -490,47 +581,54 @@ fn target_texture(
     })
 }
 
-fn copy_out(
-    device: &wgpu::Device,
-    encoder: &mut wgpu::CommandEncoder,
-    texture: &wgpu::Texture,
-    w: u32,
-    h: u32,
-    texel: u32,
-    aspect: wgpu::TextureAspect,
-) -> Readback {
-    let pitch = (w * texel).div_ceil(ROW_ALIGN) * ROW_ALIGN;
-    let buffer = device.create_buffer(&wgpu::BufferDescriptor {
-        label: None,
-        size: pitch as u64 * h as u64,
-        usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
-        mapped_at_creation: false,
-    });
-    encoder.copy_texture_to_buffer(
-        wgpu::TexelCopyTextureInfo {
-            texture,
-            mip_level: 0,
-            origin: wgpu::Origin3d::ZERO,
+impl Readback {
+    fn new(
+        device: &wgpu::Device,
+        source: &wgpu::Texture,
+        w: u32,
+        h: u32,
+        texel: u32,
+        aspect: wgpu::TextureAspect,
+    ) -> Readback {
+        let pitch = (w * texel).div_ceil(ROW_ALIGN) * ROW_ALIGN;
+        let buffer = device.create_buffer(&wgpu::BufferDescriptor {
+            label: None,
+            size: pitch as u64 * h as u64,
+            usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
+            mapped_at_creation: false,
+        });
+        Readback {
+            source: source.clone(),
             aspect,
-        },
-        wgpu::TexelCopyBufferInfo {
-            buffer: &buffer,
-            layout: wgpu::TexelCopyBufferLayout {
-                offset: 0,
-                bytes_per_row: Some(pitch),
-                rows_per_image: Some(h),
+            buffer,
+            pitch,
+            texel,
+        }
+    }
+
+    /// Copies rows `y0..y0 + h` of the target into the buffer.
+    fn record(&self, encoder: &mut wgpu::CommandEncoder, y0: u32, w: u32, h: u32) {
+        encoder.copy_texture_to_buffer(
+            wgpu::TexelCopyTextureInfo {
+                texture: &self.source,
+                mip_level: 0,
+                origin: wgpu::Origin3d { x: 0, y: y0, z: 0 },
+                aspect: self.aspect,
             },
-        },
-        wgpu::Extent3d {
-            width: w,
-            height: h,
-            depth_or_array_layers: 1,
-        },
-    );
-    Readback {
-        buffer,
-        pitch,
-        texel,
+            wgpu::TexelCopyBufferInfo {
+                buffer: &self.buffer,
+                layout: wgpu::TexelCopyBufferLayout {
+                    offset: 0,
+                    bytes_per_row: Some(self.pitch),
+                    rows_per_image: Some(h),
+                },
+            },
+            wgpu::Extent3d {
+                width: w,
+                height: h,
+                depth_or_array_layers: 1,
+            },
+        );
     }
 }
 
@@ -864,6 +962,7 @@ fn input_texture(
     iface: &translate::Interface,
 ) -> Result<wgpu::Texture, GpuError> {
     let (w, h) = (draw.target_width, draw.target_height);
+    let large = w as usize * h as usize * 16 >= texture::PARALLEL_UPLOAD;
     let texture = gpu.device.create_texture(&wgpu::TextureDescriptor {
         label: Some("ps30 inputs"),
         size: wgpu::Extent3d {
@@ -875,17 +974,31 @@ fn input_texture(
         sample_count: 1,
         dimension: wgpu::TextureDimension::D2,
         format: wgpu::TextureFormat::Rgba32Float,
-        usage: wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
+        usage: match large {
+            true => {
+                wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST | inputs::USAGE
+            }
+            false => wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
+        },
         view_formats: &[],
     });
+    let values: Vec<emu::LinearInput> = iface
+        .inputs
+        .iter()
+        .map(|input| {
+            draw.inputs
+                .iter()
+                .find(|(v, _)| *v == input.register)
+                .map(|(_, value)| *value)
+                .unwrap_or_default()
+        })
+        .collect();
+    if large && inputs::fill(gpu, &texture, &values, (w, h))? {
+        phases::mark("draw: inputs made on the device");
+        return Ok(texture);
+    }
     let flush = draw.float_rules.flush_denormals();
-    for (layer, input) in iface.inputs.iter().enumerate() {
-        let value = draw
-            .inputs
-            .iter()
-            .find(|(v, _)| *v == input.register)
-            .map(|(_, value)| *value)
-            .unwrap_or_default();
+    for (layer, &value) in values.iter().enumerate() {
         let row = |y: usize, row: &mut [[f32; 4]]| {
             for (x, t) in row.iter_mut().enumerate() {
                 *t = value.at(x as f32, y as f32);
@@ -895,7 +1008,7 @@ fn input_texture(
             }
         };
         let size = (w, h, 1);
-        if w as usize * h as usize * 16 >= texture::PARALLEL_UPLOAD {
+        if large {
             texture::write_rows(gpu, &texture, 0, layer as u32, size, row)?;
         } else {
             let mut texels = vec![[0.0f32; 4]; w as usize * h as usize];
@@ -905,5 +1018,6 @@ fn input_texture(
             texture::write_texels(gpu, &texture, 0, layer as u32, size, &texels)?;
         }
     }
+    phases::mark("draw: inputs uploaded");
     Ok(texture)
 }

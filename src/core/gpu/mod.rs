@@ -32,17 +32,20 @@
 //! (the loader is opened at run time).
 
 mod draw;
+mod inputs;
 mod runtime_dir;
 mod sampler;
 mod texture;
 mod vertex;
 
-pub use draw::{prepare, prepare_with, run, GpuOutput, Prepared, TargetKind};
+pub use draw::{prepare, prepare_with, run, run_in_bands, GpuOutput, Prepared, TargetKind};
 pub use vertex::run_vertices;
 
 use crate::core::emu::EmuError;
+use crate::core::phases;
 use crate::core::translate::TranslateError;
 use std::fmt;
+use std::sync::{Arc, Mutex, OnceLock};
 
 /// What the device is, for reports.
 #[derive(Clone, Debug, PartialEq, serde::Serialize)]
@@ -85,6 +88,9 @@ pub struct Gpu {
     /// Large textures uploaded by earlier draws (`texture.rs`): the passes
     /// of one command sample the same image.
     pub(crate) textures: texture::Cache,
+    /// The compute pipeline that makes a large draw's inputs on the device
+    /// (`inputs.rs`), made by the first draw that needs it.
+    pub(crate) fill: OnceLock<Result<inputs::Fill, String>>,
     info: DeviceInfo,
 }
 
@@ -127,6 +133,76 @@ impl fmt::Display for GpuError {
 
 impl std::error::Error for GpuError {}
 
+impl GpuError {
+    /// The same error again, for a second caller of [`Opening::wait`]
+    /// (opening fails only with [`GpuError::NoAdapter`] or
+    /// [`GpuError::Device`]; anything else keeps its message).
+    fn again(&self) -> GpuError {
+        match self {
+            GpuError::NoAdapter(why) => GpuError::NoAdapter(why.clone()),
+            GpuError::Device(why) => GpuError::Device(why.clone()),
+            other => GpuError::Failed(other.to_string()),
+        }
+    }
+}
+
+/// A device being opened on a thread of its own: a GPU driver takes a large
+/// part of a second to start (0.15–0.2 s for NVIDIA's), so a command starts
+/// it first and does its CPU work — decoding the image, planning the passes,
+/// the f64 reference — meanwhile; the first draw waits for it
+/// ([`Opening::wait`]).
+pub struct Opening {
+    thread: Mutex<Option<std::thread::JoinHandle<Opened>>>,
+    opened: OnceLock<Opened>,
+}
+
+/// What opening a device gave.
+type Opened = Result<Arc<Gpu>, GpuError>;
+
+impl Opening {
+    /// Starts `open` on a new thread.
+    pub fn start(open: impl FnOnce() -> Opened + Send + 'static) -> Opening {
+        let thread = std::thread::Builder::new()
+            .name("gpu-open".into())
+            .spawn(open)
+            .map_err(|e| GpuError::Device(format!("no thread to open the device on: {e}")));
+        match thread {
+            Ok(t) => Opening {
+                thread: Mutex::new(Some(t)),
+                opened: OnceLock::new(),
+            },
+            Err(e) => Opening {
+                thread: Mutex::new(None),
+                opened: OnceLock::from(Err(e)),
+            },
+        }
+    }
+
+    /// The device, once opened (the first caller waits for the thread).
+    pub fn wait(&self) -> Result<&Arc<Gpu>, GpuError> {
+        let opened = self.opened.get_or_init(|| {
+            let thread = self.thread.lock().ok().and_then(|mut t| t.take());
+            let opened = match thread {
+                Some(t) => t.join().unwrap_or_else(|p| std::panic::resume_unwind(p)),
+                None => Err(GpuError::Device("the device was not opened".into())),
+            };
+            phases::mark("device ready for the first draw");
+            opened
+        });
+        opened.as_ref().map_err(GpuError::again)
+    }
+}
+
+impl Drop for Opening {
+    /// Waits for a device still opening: a process must not exit while a
+    /// thread is inside the driver's start-up.
+    fn drop(&mut self) {
+        if let Some(t) = self.thread.get_mut().ok().and_then(|t| t.take()) {
+            let _ = t.join();
+        }
+    }
+}
+
 /// Features used when the adapter has them: BORDER addressing with a
 /// colour, and linear filtering of 32-bit float textures (both exist on
 /// llvmpipe and on current desktop GPUs).
@@ -147,6 +223,7 @@ impl Gpu {
 
     /// `cpu`: wgpu's fallback adapter, a CPU device, is asked for.
     fn open_adapter(cpu: bool) -> Result<Gpu, GpuError> {
+        phases::mark("device: opening");
         runtime_dir::ensure();
         let instance = wgpu::Instance::new(wgpu::InstanceDescriptor {
             backends: wgpu::Backends::VULKAN,
@@ -159,6 +236,7 @@ impl Gpu {
             ..Default::default()
         }))
         .map_err(|e| GpuError::NoAdapter(e.to_string()))?;
+        phases::mark("device: adapter");
         let features = adapter.features() & WANTED;
         let limits = adapter.limits();
         let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
@@ -168,6 +246,7 @@ impl Gpu {
             ..Default::default()
         }))
         .map_err(|e| GpuError::Device(e.to_string()))?;
+        phases::mark("device: opened");
         let uncaptured = std::sync::Arc::new(std::sync::Mutex::new(None));
         let sink = uncaptured.clone();
         device.on_uncaptured_error(std::sync::Arc::new(move |e: wgpu::Error| {
@@ -183,6 +262,7 @@ impl Gpu {
             features,
             limits,
             textures: Default::default(),
+            fill: OnceLock::new(),
             info: DeviceInfo {
                 name: a.name,
                 backend: format!("{:?}", a.backend),

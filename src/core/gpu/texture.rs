@@ -229,6 +229,7 @@ pub(super) fn upload(
         (Some(TextureLevels::Single(t)), SamplerType::Tex2d) => Key::of(t),
         _ => None,
     };
+    crate::core::phases::mark("upload: texture hashed");
     if let Some(texture) = key.as_ref().and_then(|k| gpu.textures.get(k)) {
         return Ok(Uploaded {
             texture,
@@ -261,6 +262,7 @@ pub(super) fn upload(
     if let Some(key) = key {
         gpu.textures.keep(key, &texture);
     }
+    crate::core::phases::mark("upload: texture sent");
     Ok(Uploaded {
         texture,
         dimension: view_dimension(ty),
@@ -307,6 +309,14 @@ pub(super) fn write_texels(
     Ok(())
 }
 
+/// A run of rows of the staging memory, filled by one task.
+struct Run<'a>(wgpu::WriteOnly<'a, [u8]>);
+
+// SAFETY: a `WriteOnly<[u8]>` is an exclusive pointer to bytes, as `&mut
+// [u8]` is, which may be sent to another thread; wgpu's own `Send` impl
+// (`T: Send`) leaves out `?Sized`, so it does not cover a slice.
+unsafe impl Send for Run<'_> {}
+
 /// Uploads at least this many bytes go through a staging buffer that every
 /// core fills ([`write_rows`]): `write_texture` copies on one thread, which
 /// took 40 ms of a 3840×2160 frame's 133 MB on a 16-core machine.
@@ -314,8 +324,14 @@ pub(super) const PARALLEL_UPLOAD: usize = 1 << 22;
 
 /// Fills `level` of `texture` from layer or slice `z` (`w × h × d` texels)
 /// with the rows `row(r, texels)` writes (r counts rows slice after slice),
-/// the rows made in parallel straight into a mapped staging buffer, then
-/// copied on the device.
+/// the rows made in parallel straight into the queue's staging memory, then
+/// copied on the device into a buffer and from it into the texture.
+///
+/// The staging memory is the queue's (`write_buffer_with`) rather than a
+/// buffer mapped at creation: wgpu zeroes a buffer mapped at creation on
+/// one thread before handing it over, and on a GPU whose host-visible
+/// memory lies on the device (NVIDIA's with a resizable BAR) those zeros
+/// cross the bus — 133 MB of them for a 3840×2160 frame.
 pub(super) fn write_rows(
     gpu: &Gpu,
     texture: &wgpu::Texture,
@@ -329,37 +345,44 @@ pub(super) fn write_rows(
     let row_bytes = 16 * w as usize;
     let pitch = row_bytes.div_ceil(ALIGN) * ALIGN;
     let rows = h as usize * d as usize;
+    let size = (pitch * rows.max(1)) as u64;
     let buffer = gpu.device.create_buffer(&wgpu::BufferDescriptor {
         label: Some("ps30 upload"),
-        size: (pitch * rows.max(1)) as u64,
-        usage: wgpu::BufferUsages::MAP_WRITE | wgpu::BufferUsages::COPY_SRC,
-        mapped_at_creation: true,
+        size,
+        usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::COPY_SRC,
+        mapped_at_creation: false,
     });
     {
-        // Disjoint runs of rows, each mapped on its own and filled by one
-        // task.
+        let size = wgpu::BufferSize::new(size)
+            .ok_or_else(|| GpuError::Failed("an empty upload".into()))?;
+        let mut staging = gpu
+            .queue
+            .write_buffer_with(&buffer, 0, size)
+            .ok_or_else(|| {
+                GpuError::Failed(format!("no staging memory for a {size}-byte upload"))
+            })?;
+        // Disjoint runs of rows, each filled by one task.
         let per = rows.div_ceil(256).max(1);
         let mut runs = Vec::new();
+        let mut rest = staging.slice(..);
         let mut first = 0;
         while first < rows {
             let n = per.min(rows - first);
-            let range = (first * pitch) as u64..((first + n) * pitch) as u64;
-            let view = buffer
-                .get_mapped_range_mut(range)
-                .map_err(|e| GpuError::Failed(e.to_string()))?;
-            runs.push((first, n, view));
+            let (run, tail) = rest.split_at(n * pitch);
+            runs.push((first, n, Run(run)));
+            rest = tail;
             first += n;
         }
-        runs.into_par_iter().for_each(|(first, n, mut view)| {
+        runs.into_par_iter().for_each(|(first, n, Run(mut run))| {
             let mut texels = vec![[0.0f32; 4]; w as usize];
             for r in 0..n {
                 row(first + r, &mut texels);
-                view.slice(r * pitch..r * pitch + row_bytes)
+                run.slice(r * pitch..r * pitch + row_bytes)
                     .copy_from_slice(bytemuck::cast_slice(&texels));
             }
         });
     }
-    buffer.unmap();
+    crate::core::phases::mark("upload: staging filled");
     let mut encoder = gpu.device.create_command_encoder(&Default::default());
     encoder.copy_buffer_to_texture(
         wgpu::TexelCopyBufferInfo {

@@ -787,14 +787,23 @@ fn run_impl(
     // the run's threads.
     let (drawn, references) = emu::on_threads(s.threads.unwrap_or(0), || {
         rayon::join(
-            || run_pass1(image, &g, pass1, last, s),
-            || block_references(image, &g, s),
+            || {
+                let drawn = run_pass1(image, &g, pass1, last, s);
+                crate::core::phases::mark("luminance: pass 1 drawn");
+                drawn
+            },
+            || {
+                let references = block_references(image, &g, s);
+                crate::core::phases::mark("luminance: f64 reference");
+                references
+            },
         )
     })
     .map_err(|e| PipelineError::Draw(DrawError::Emu(e)))?;
     let (t1, pass1_cost, pass1_last) = drawn?;
     let (blocks, ill, true_ref) = check_blocks(&g, &t1, references?, s);
     let (pass2_cost, log_average, pass2_check, rel2) = run_pass2(&g, &t1, pass2, s)?;
+    crate::core::phases::mark("luminance: pass 2 drawn");
 
     // End to end: the emulated L̄w against the true L̄w of the image (every
     // pixel once, no padding). If the shaders are right, the difference

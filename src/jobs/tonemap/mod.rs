@@ -858,6 +858,7 @@ pub fn run_into(
         });
     }
     let (white, white_source) = white_point(image, settings.white);
+    crate::core::phases::mark("tonemap: white point");
     check_values(settings.key, Some(white))?;
     let op = Operator {
         key: settings.key,
@@ -874,6 +875,7 @@ pub fn run_into(
     let cost = emulate(image, &op, settings, progress, &mut |band| {
         let pixels = &image.pixels[done..done + band.len()];
         check.merge(crosscheck_from(&op, pixels, band, done, w));
+        crate::core::phases::mark("tonemap: band checked");
         done += band.len();
         sink(band).map_err(TonemapError::Output)
     })?;
@@ -936,7 +938,7 @@ pub fn emulate(
         (0, gpu) => gpu.band_rows(w, 1).min(h.div_ceil(GPU_BANDS).max(1)),
         (n, _) => n,
     };
-    let draw_band = |y0: u32, rows: u32| {
+    let band_draw = |y0: u32, rows: u32| {
         let mut draw = Draw::new(w, rows);
         draw.limits = settings.limits;
         draw.float_rules = settings.float_rules;
@@ -965,11 +967,14 @@ pub fn emulate(
         draw.samplers.push((0, image.as_texture().into(), clamp));
         draw.samplers
             .push((1, lw_target.as_texture().into(), clamp));
+        draw
+    };
+    let draw_band = |y0: u32, rows: u32| {
         crate::jobs::backend::draw(
             &settings.backend,
             &loaded.shader,
             &loaded.file,
-            &draw,
+            &band_draw(y0, rows),
             crate::core::gpu::TargetKind::Raw,
             settings.threads,
         )
@@ -1006,25 +1011,7 @@ pub fn emulate(
             take(y0, rows, draw_band(y0, rows)?)?;
         }
     } else {
-        // The device draws band k + 1 (on a thread of its own) while this
-        // thread checks band k and hands it on, in order.
-        std::thread::scope(|s| {
-            let (tx, rx) = std::sync::mpsc::sync_channel(1);
-            let (bands, draw_band) = (&bands, &draw_band);
-            s.spawn(move || {
-                for &(y0, rows) in bands {
-                    let drawn = draw_band(y0, rows);
-                    let failed = drawn.is_err();
-                    if tx.send((y0, rows, drawn)).is_err() || failed {
-                        break;
-                    }
-                }
-            });
-            for (y0, rows, drawn) in rx {
-                take(y0, rows, drawn?)?;
-            }
-            Ok::<(), TonemapError>(())
-        })?;
+        on_device(settings, &loaded, &band_draw, (w, h), band_rows, &mut take)?;
     }
     let cost = PassCost {
         shader: src.name().to_string(),
@@ -1037,6 +1024,58 @@ pub fn emulate(
         findings: Vec::new(),
     };
     Ok(cost)
+}
+
+/// [`emulate`] on a GPU: the device draws as much of the frame at once as it
+/// takes (all of a 3840×2160 one) and reads it back `band_rows` rows at a
+/// time, on a thread of its own, while this thread hands band k to `take`
+/// (which checks it), in order: one translation, one texture lookup, one set
+/// of inputs and one draw per device-sized part of the frame.
+fn on_device<'d>(
+    settings: &Settings,
+    loaded: &load::Loaded,
+    band_draw: &(dyn Fn(u32, u32) -> Draw<'d> + Sync),
+    (w, h): (u32, u32),
+    band_rows: u32,
+    take: &mut dyn FnMut(u32, u32, Drawn) -> Result<(), TonemapError>,
+) -> Result<(), TonemapError> {
+    let draw_rows = match settings.band_rows {
+        0 => settings.backend.band_rows(w, 1),
+        n => n,
+    };
+    std::thread::scope(|s| {
+        let (tx, rx) = std::sync::mpsc::sync_channel(1);
+        s.spawn(move || {
+            for y0 in (0..h).step_by(draw_rows.max(1) as usize) {
+                let part = band_draw(y0, draw_rows.min(h - y0));
+                let mut open = true;
+                let drawn = crate::jobs::backend::draw_in_bands(
+                    &settings.backend,
+                    &loaded.shader,
+                    &loaded.file,
+                    &part,
+                    crate::core::gpu::TargetKind::Raw,
+                    settings.threads,
+                    band_rows,
+                    &mut |y, drawn| {
+                        open = tx.send((y0 + y, drawn.height, Ok(drawn))).is_ok();
+                        open
+                    },
+                );
+                if let Err(e) = drawn {
+                    let _ = tx.send((y0, 0, Err(TonemapError::Draw(e))));
+                    break;
+                }
+                if !open {
+                    break;
+                }
+            }
+        });
+        for (y0, rows, drawn) in rx {
+            take(y0, rows, drawn?)?;
+        }
+        Ok(())
+    })
 }
 
 #[cfg(test)]
