@@ -239,9 +239,8 @@ pub fn run_on(
     float_rules: FloatRules,
     max_executed_per_vertex: u64,
 ) -> Result<VertexOutput, String> {
-    use crate::jobs::backend::Backend;
-    let gpu = match backend {
-        Backend::Emulator => {
+    let gpu = match backend.gpu().map_err(|e| e.to_string())? {
+        None => {
             return run(
                 shader,
                 constants,
@@ -252,7 +251,7 @@ pub fn run_on(
             )
             .map_err(|e| e.to_string())
         }
-        Backend::Gpu(g) => g,
+        Some(g) => g,
     };
     let env = crate::jobs::backend::environment(&constants);
     if let Ok(a) = cost::analyse(shader, file, &env, &cost::Profile::ps_3_0()) {
