@@ -240,15 +240,7 @@ impl Prepared<'_> {
     pub fn draw(&self) -> Result<GpuOutput, GpuError> {
         let (gpu, (w, h)) = (self.gpu, self.size);
         let device = &gpu.device;
-        let scopes = ErrorScopes::push(gpu);
-        let mut encoder = device.create_command_encoder(&Default::default());
-        record_pass(
-            &mut encoder,
-            &self.attachments,
-            self.depth.as_ref(),
-            &self.pipeline,
-            &self.bindings.group,
-        );
+        let (scopes, mut encoder) = self.begin();
         let readbacks = self
             .readbacks
             .get_or_init(|| readback_buffers(device, &self.attachments, self.depth.as_ref(), w, h));
@@ -258,16 +250,7 @@ impl Prepared<'_> {
         gpu.queue.submit([encoder.finish()]);
         read_all(gpu, readbacks)?;
         phases::mark("draw: drawn and mapped");
-        // Decoded straight from the mapped buffers: a 4K target is 132 MB.
-        let views = readbacks
-            .iter()
-            .map(|(_, r)| r.buffer.get_mapped_range(..))
-            .collect::<Result<Vec<_>, _>>()
-            .map_err(|e| GpuError::Failed(e.to_string()))?;
-        let data: Vec<&[u8]> = views.iter().map(|v| &v[..]).collect();
-        let out = assemble(w, h, &self.iface, self.targets, readbacks, &data);
-        drop(data);
-        drop(views);
+        let out = self.decode(h, readbacks)?;
         for (_, r) in readbacks {
             r.buffer.unmap();
         }
@@ -294,15 +277,7 @@ impl Prepared<'_> {
             Some(_) => h.max(1),
             None => rows.clamp(1, h.max(1)),
         };
-        let scopes = ErrorScopes::push(gpu);
-        let mut encoder = device.create_command_encoder(&Default::default());
-        record_pass(
-            &mut encoder,
-            &self.attachments,
-            self.depth.as_ref(),
-            &self.pipeline,
-            &self.bindings.group,
-        );
+        let (scopes, mut encoder) = self.begin();
         let bands: Vec<Band> = (0..h)
             .step_by(rows as usize)
             .map(|y0| {
@@ -320,21 +295,46 @@ impl Prepared<'_> {
         scopes.pop(gpu)?;
         for (y0, n, readbacks) in &bands {
             read_all(gpu, readbacks)?;
-            let views = readbacks
-                .iter()
-                .map(|(_, r)| r.buffer.get_mapped_range(..))
-                .collect::<Result<Vec<_>, _>>()
-                .map_err(|e| GpuError::Failed(e.to_string()))?;
-            let data: Vec<&[u8]> = views.iter().map(|v| &v[..]).collect();
-            let out = assemble(w, *n, &self.iface, self.targets, readbacks, &data);
-            drop(data);
-            drop(views);
+            let out = self.decode(*n, readbacks)?;
             phases::mark("draw: band read back");
             if !band(*y0, out) {
                 break;
             }
         }
         Ok(())
+    }
+
+    /// Opens the error scopes and records the draw into a new encoder.
+    fn begin(&self) -> (ErrorScopes, wgpu::CommandEncoder) {
+        let scopes = ErrorScopes::push(self.gpu);
+        let mut encoder = self.gpu.device.create_command_encoder(&Default::default());
+        record_pass(
+            &mut encoder,
+            &self.attachments,
+            self.depth.as_ref(),
+            &self.pipeline,
+            &self.bindings.group,
+        );
+        (scopes, encoder)
+    }
+
+    /// `rows` rows of the targets, decoded straight from the mapped
+    /// read-back buffers (a 4K target is 132 MB: no copy first).
+    fn decode(&self, rows: u32, readbacks: &[(Slot, Readback)]) -> Result<GpuOutput, GpuError> {
+        let views = readbacks
+            .iter()
+            .map(|(_, r)| r.buffer.get_mapped_range(..))
+            .collect::<Result<Vec<_>, _>>()
+            .map_err(|e| GpuError::Failed(e.to_string()))?;
+        let data: Vec<&[u8]> = views.iter().map(|v| &v[..]).collect();
+        Ok(assemble(
+            self.size.0,
+            rows,
+            &self.iface,
+            self.targets,
+            readbacks,
+            &data,
+        ))
     }
 }
 

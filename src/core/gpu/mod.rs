@@ -309,3 +309,18 @@ impl Gpu {
             .contains(wgpu::Features::ADDRESS_MODE_CLAMP_TO_BORDER)
     }
 }
+
+/// A buffer binding that compute shaders read (or write), in the layouts of
+/// the vertex stage and of the inputs made on the device.
+fn compute_buffer(binding: u32, ty: wgpu::BufferBindingType) -> wgpu::BindGroupLayoutEntry {
+    wgpu::BindGroupLayoutEntry {
+        binding,
+        visibility: wgpu::ShaderStages::COMPUTE,
+        ty: wgpu::BindingType::Buffer {
+            ty,
+            has_dynamic_offset: false,
+            min_binding_size: None,
+        },
+        count: None,
+    }
+}

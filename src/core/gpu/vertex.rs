@@ -118,16 +118,7 @@ fn dispatch(
     });
     // An explicit layout: a shader that reads no constant (or no input)
     // still binds all three buffers.
-    let buffer_entry = |binding, ty| wgpu::BindGroupLayoutEntry {
-        binding,
-        visibility: wgpu::ShaderStages::COMPUTE,
-        ty: wgpu::BindingType::Buffer {
-            ty,
-            has_dynamic_offset: false,
-            min_binding_size: None,
-        },
-        count: None,
-    };
+    let buffer_entry = super::compute_buffer;
     let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
         label: Some("ps30 vertex bindings"),
         entries: &[
