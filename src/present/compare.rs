@@ -76,12 +76,7 @@ pub fn draw_text(c: &DrawComparison) -> String {
                 ulp_text(w.ulp)
             ));
             if let Some(p) = c.worst_inputs.iter().find(|p| p.x == w.x && p.y == w.y) {
-                let inputs: Vec<String> = p
-                    .values
-                    .iter()
-                    .map(|(r, v)| format!("{r} = ({}, {}, {}, {})", v[0], v[1], v[2], v[3]))
-                    .collect();
-                s.push_str(&format!("; {}", inputs.join(", ")));
+                s.push_str(&inputs_text(&p.values));
             }
             s.push('\n');
         }
@@ -96,6 +91,15 @@ pub fn draw_text(c: &DrawComparison) -> String {
     ));
     s.push_str(&explanation_line(&c.explanation));
     s
+}
+
+/// `; v0 = (x, y, z, w), …`: the inputs of a worst pixel or vertex.
+fn inputs_text(values: &[(String, [f32; 4])]) -> String {
+    let inputs: Vec<String> = values
+        .iter()
+        .map(|(r, v)| format!("{r} = ({}, {}, {}, {})", v[0], v[1], v[2], v[3]))
+        .collect();
+    format!("; {}", inputs.join(", "))
 }
 
 /// The text of a vertex shader's comparison (`compare VS --vertices`):
@@ -117,12 +121,7 @@ pub fn vertices_text(c: &DrawComparison) -> String {
                 ulp_text(w.ulp)
             ));
             if let Some(p) = c.worst_inputs.iter().find(|p| p.x == w.x) {
-                let inputs: Vec<String> = p
-                    .values
-                    .iter()
-                    .map(|(r, v)| format!("{r} = ({}, {}, {}, {})", v[0], v[1], v[2], v[3]))
-                    .collect();
-                s.push_str(&format!("; {}", inputs.join(", ")));
+                s.push_str(&inputs_text(&p.values));
             }
             s.push('\n');
         }
