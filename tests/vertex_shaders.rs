@@ -190,6 +190,25 @@ fn profile_counts_each_vertex_as_the_cost_model_does() {
     assert_eq!(v["counts_agree"], true);
 }
 
+/// The cost model and the run see the same constants: an `i#` the command
+/// does not set is refused by name, never counted as if it were 0.
+#[test]
+fn profile_refuses_an_integer_constant_nobody_set() {
+    let root = super::common::bin::repo();
+    let o = ps30(
+        &[
+            "profile",
+            "tests/oracle/fixtures/hlsl/vertex/offsets.hlsl.fxo",
+            "--vertices",
+            "asm/vs/skin.json",
+            "--json",
+        ],
+        root,
+    );
+    assert_eq!(o.status.code(), Some(2), "{}", stdout(&o));
+    assert!(stderr(&o).contains("i0"), "{}", stderr(&o));
+}
+
 #[test]
 fn hostile_vertex_lists_are_refused_naming_the_field() {
     let dir = tempfile::tempdir().unwrap();

@@ -303,6 +303,13 @@ fn vertices(args: &Args, ui: &Ui, gpu: &Arc<Gpu>, path: &std::path::Path) -> sup
     }
     let resolved = args.constants.resolve(loaded.constants.as_ref())?;
     let inputs = read_inputs(args.inputs.as_deref())?;
+    // as `run --vertices` does: nothing runs on constants nobody set
+    audit(
+        ui,
+        &loaded,
+        &given_with(&resolved, &args.source, &inputs),
+        true,
+    )?;
     let (constants, textures) = with_inputs(&resolved, inputs);
     let draw = ps30::core::emu::vertex::VertexDraw {
         constants,

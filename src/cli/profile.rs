@@ -144,7 +144,15 @@ fn vertices(
 ) -> super::Result {
     let list = ps30::jobs::vertices::read(path).map_err(BadInput)?;
     let resolved = args.constants.resolve(loaded.constants.as_ref())?;
-    let (constants, textures) = with_inputs(&resolved, read_inputs(args.inputs.as_deref())?);
+    let inputs = read_inputs(args.inputs.as_deref())?;
+    // as `run --vertices` does: nothing is counted on constants nobody set
+    audit(
+        ui,
+        loaded,
+        &given_with(&resolved, &args.source, &inputs),
+        true,
+    )?;
+    let (constants, textures) = with_inputs(&resolved, inputs);
     let p = ps30::jobs::vertices::profile(
         &loaded.shader,
         &loaded.file,

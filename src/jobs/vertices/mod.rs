@@ -19,7 +19,7 @@
 //! vertex has every attribute; at most [`MAX_VERTICES`] vertices. Each
 //! refusal names the file and the field (`attributes.texcoord0[2]`).
 
-use crate::core::cost::{self, Environment, Range, Verdict};
+use crate::core::cost::{self, Range, Verdict};
 use crate::core::diag::SourceFile;
 use crate::core::emu::vertex::{self, Attribute, VertexDraw, VertexError, VertexOutput, Vertices};
 use crate::core::emu::{Constants, SamplerState};
@@ -308,20 +308,7 @@ pub fn profile(
     float_rules: FloatRules,
     max_executed_per_vertex: u64,
 ) -> Result<VertexProfile, String> {
-    let env = Environment {
-        ints: constants
-            .int
-            .iter()
-            .enumerate()
-            .map(|(i, v)| (i as u32, *v))
-            .collect(),
-        bools: constants
-            .bool
-            .iter()
-            .enumerate()
-            .map(|(i, v)| (i as u32, *v))
-            .collect(),
-    };
+    let env = crate::jobs::backend::environment(&constants);
     let analysis =
         cost::analyse(shader, file, &env, &cost::Profile::ps_3_0()).map_err(|e| e.to_string())?;
     let out = run(
