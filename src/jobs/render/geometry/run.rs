@@ -10,6 +10,8 @@
 //! before a triangle that covers a pixel already in it, so that blending
 //! sees every earlier triangle.
 
+mod gpu;
+
 use super::{DepthState, Geometry};
 use crate::core::emu::vertex::{self, Attribute, VertexDraw};
 use crate::core::emu::{self, Compiled, Draw, DrawOutput, EmuError, GradientSite};
@@ -42,6 +44,9 @@ pub(crate) struct Drawn {
     pub gradients: Vec<GradientSite>,
     /// Triangles that covered a pixel and ran the pixel shader.
     pub triangles: u64,
+    /// Pixels a GPU shaded (it counts no executed slots; the list's budget
+    /// is charged the cost model's longest path for each).
+    pub shaded: u64,
 }
 
 /// A pixel-shader input slot and where its components come from: the
@@ -95,6 +100,7 @@ fn vertex_stage(
     d: &DrawStep,
     float_rules: crate::core::float_rules::FloatRules,
     states: &[TargetState],
+    backend: &crate::jobs::backend::Backend,
 ) -> Result<Stage, DrawFailure> {
     let program = list.shaders[d.shader].loaded.shader.program();
     let wanted = pixel_semantics(program);
@@ -156,8 +162,12 @@ fn vertex_stage(
         float_rules,
         ..VertexDraw::default()
     };
-    let out = vertex::run(shader, &draw, &g.vertices)
-        .map_err(|e| DrawFailure::Message(format!("vertex shader: {e}")))?;
+    let out = match settings_gpu(backend)? {
+        Some(device) => crate::core::gpu::run_vertices(device, shader, &draw, &g.vertices)
+            .map_err(|e| DrawFailure::Message(format!("vertex shader: {e}")))?,
+        None => vertex::run(shader, &draw, &g.vertices)
+            .map_err(|e| DrawFailure::Message(format!("vertex shader: {e}")))?,
+    };
     let column = |a: &Attribute| {
         out.slots
             .iter()
@@ -369,16 +379,10 @@ pub(crate) fn draw(
     settings: &Settings,
     limits: emu::EmuLimits,
 ) -> Result<Drawn, DrawFailure> {
-    if !matches!(settings.backend, crate::jobs::backend::Backend::Emulator) {
-        return Err(DrawFailure::Message(
-            "draws of geometry run on the emulator only (the GPU backend draws full-screen quads)"
-                .into(),
-        ));
-    }
     let spec = &list.targets[d.target];
     let (width, height) = (spec.width, spec.height);
     let float_rules = d.pixel.float_rules.unwrap_or(settings.float_rules);
-    let stage = vertex_stage(list, g, d, float_rules, states)?;
+    let stage = vertex_stage(list, g, d, float_rules, states, &settings.backend)?;
     let viewport = g.viewport.unwrap_or_else(|| Viewport::whole(width, height));
     let tris = triangles(g, &stage, &viewport).map_err(DrawFailure::Message)?;
     let mut clip_rect = viewport.rect().intersect(Rect {
@@ -427,9 +431,18 @@ pub(crate) fn draw(
             },
             merged: MergeStats::default(),
         };
-        let drawn = shade_all(
-            list, compiled, d, &stage, &tris, clip_rect, &samplers, settings, limits, &mut pass,
-        )?;
+        let drawn = match settings_gpu(&settings.backend)? {
+            Some(device) => {
+                let shader = &list.shaders[d.shader].loaded.shader;
+                gpu::shade_all(
+                    device, shader, d, g, &stage, &viewport, clip_rect, &samplers, settings,
+                    height, &mut pass,
+                )?
+            }
+            None => shade_all(
+                list, compiled, d, &stage, &tris, clip_rect, &samplers, settings, limits, &mut pass,
+            )?,
+        };
         pass.flush()?;
         let merged = pass.merged;
         let depth = pass.depth.take();
@@ -450,6 +463,15 @@ pub(crate) fn draw(
     let (mut drawn, merged, _) = result?;
     drawn.merged = merged;
     Ok(drawn)
+}
+
+/// The device of a GPU backend (`None` for the emulator).
+fn settings_gpu(
+    backend: &crate::jobs::backend::Backend,
+) -> Result<Option<&std::sync::Arc<crate::core::gpu::Gpu>>, DrawFailure> {
+    backend
+        .gpu()
+        .map_err(|e| DrawFailure::Message(e.to_string()))
 }
 
 /// The state of a target, taken out of the list's (an empty target left
@@ -517,6 +539,7 @@ fn shade_all(
         total: 0,
         gradients: compiled.sites.clone(),
         triangles: 0,
+        shaded: 0,
     };
     let mut pixels_left = settings.budget.max_pixels;
     for (tri, provoking) in tris {
