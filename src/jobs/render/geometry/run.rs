@@ -12,6 +12,9 @@
 
 mod gpu;
 
+pub(crate) use gpu::coverage;
+pub use gpu::Coverage;
+
 use super::{DepthState, Geometry};
 use crate::core::emu::vertex::{self, Attribute, VertexDraw};
 use crate::core::emu::{self, Compiled, Draw, DrawOutput, EmuError, GradientSite};
@@ -200,14 +203,15 @@ fn vertex_stage(
     })
 }
 
-/// The screen triangles of the draw, each with its provoking vertex, in
-/// drawing order: assembled, clipped (positions in clip space), divided,
-/// mapped through the viewport, culled.
+/// The screen triangles of the draw, each with its provoking vertex and
+/// the index of the primitive it came from, in drawing order: assembled,
+/// clipped (positions in clip space), divided, mapped through the
+/// viewport, culled.
 fn triangles(
     g: &Geometry,
     stage: &Stage,
     viewport: &Viewport,
-) -> Result<Vec<(Triangle, usize)>, String> {
+) -> Result<Vec<(Triangle, usize, usize)>, String> {
     let order: Vec<usize> = match &g.indices {
         Some(ix) => ix.iter().map(|&i| i as usize).collect(),
         None => (0..stage.positions.len()).collect(),
@@ -228,7 +232,10 @@ fn triangles(
         }
     };
     let mut out = Vec::new();
-    for prim in raster::assemble(g.primitive, order.len())? {
+    for (index, prim) in raster::assemble(g.primitive, order.len())?
+        .into_iter()
+        .enumerate()
+    {
         let [a, b, c] = prim.corners.map(|i| order[i]);
         let provoking = order[prim.provoking];
         if g.primitive == raster::Primitive::PointList {
@@ -244,8 +251,8 @@ fn triangles(
                 ..centre.clone()
             };
             let (tl, tr, bl, br) = (corner(-h, -h), corner(h, -h), corner(-h, h), corner(h, h));
-            out.extend(Triangle::new(tl, tr.clone(), bl.clone()).map(|t| (t, provoking)));
-            out.extend(Triangle::new(tr, br, bl).map(|t| (t, provoking)));
+            out.extend(Triangle::new(tl, tr.clone(), bl.clone()).map(|t| (t, provoking, index)));
+            out.extend(Triangle::new(tr, br, bl).map(|t| (t, provoking, index)));
             continue;
         }
         let corners = [a, b, c].map(|i| ClipVertex {
@@ -268,7 +275,7 @@ fn triangles(
                 on_screen[i + 1].clone(),
             );
             if let Some(t) = t.filter(|t| !g.cull.drops(t.face)) {
-                out.push((t, provoking));
+                out.push((t, provoking, index));
             }
         }
     }
@@ -385,15 +392,7 @@ pub(crate) fn draw(
     let stage = vertex_stage(list, g, d, float_rules, states, &settings.backend)?;
     let viewport = g.viewport.unwrap_or_else(|| Viewport::whole(width, height));
     let tris = triangles(g, &stage, &viewport).map_err(DrawFailure::Message)?;
-    let mut clip_rect = viewport.rect().intersect(Rect {
-        left: 0,
-        top: 0,
-        right: width,
-        bottom: height,
-    });
-    if let Some(s) = g.scissor {
-        clip_rect = clip_rect.intersect(s);
-    }
+    let clip_rect = clip_rect(g, &viewport, width, height);
     // The targets this draw writes leave `states` while it runs, so that
     // the samplers may borrow the others (a draw never samples its own).
     let mut outs: Vec<Option<(usize, OutputState)>> = vec![Some((d.target, d.output))];
@@ -465,6 +464,21 @@ pub(crate) fn draw(
     Ok(drawn)
 }
 
+/// The pixels a draw may write: its viewport, the scissor rectangle and the
+/// `width × height` target together.
+fn clip_rect(g: &Geometry, viewport: &Viewport, width: u32, height: u32) -> Rect {
+    let rect = viewport.rect().intersect(Rect {
+        left: 0,
+        top: 0,
+        right: width,
+        bottom: height,
+    });
+    match g.scissor {
+        Some(s) => rect.intersect(s),
+        None => rect,
+    }
+}
+
 /// The device of a GPU backend (`None` for the emulator).
 fn settings_gpu(
     backend: &crate::jobs::backend::Backend,
@@ -520,7 +534,7 @@ fn shade_all(
     compiled: &Compiled,
     d: &DrawStep,
     stage: &Stage,
-    tris: &[(Triangle, usize)],
+    tris: &[(Triangle, usize, usize)],
     clip_rect: Rect,
     samplers: &[(u32, emu::TextureLevels<'_>, emu::SamplerState)],
     settings: &Settings,
@@ -542,7 +556,7 @@ fn shade_all(
         shaded: 0,
     };
     let mut pixels_left = settings.budget.max_pixels;
-    for (tri, provoking) in tris {
+    for (tri, provoking, _) in tris {
         if clip_rect.is_empty() {
             break;
         }

@@ -14,8 +14,10 @@ use crate::core::merge::MergeStats;
 use crate::core::raster::clip::{self, VIEW_VOLUME};
 use crate::core::raster::triangle::Window;
 use crate::core::raster::{self, Primitive, Rect, Viewport};
+use crate::jobs::backend::Backend;
 use crate::jobs::render::geometry::Geometry;
-use crate::jobs::render::{DrawFailure, DrawStep, Settings};
+use crate::jobs::render::{DrawFailure, DrawList, DrawStep, Settings, TargetState};
+use std::sync::Arc;
 
 /// The vertices and primitives the device draws: the stage's vertices in
 /// f32 (exactly the vertex stage's outputs), each point's corners after
@@ -60,6 +62,9 @@ fn setup(g: &Geometry, stage: &Stage, viewport: &Viewport) -> Result<Setup, Stri
         if g.primitive == Primitive::PointList {
             let p = stage.positions[a as usize];
             if !stage.transformed && !clip::inside(&planes, &p) {
+                // Not drawn; kept in place so that primitives keep their
+                // numbers.
+                s.primitives.push(Vec::new());
                 continue;
             }
             let first = s.positions.len() as u32;
@@ -127,38 +132,8 @@ pub(super) fn shade_all(
     height: u32,
     pass: &mut Pass,
 ) -> Result<Drawn, DrawFailure> {
-    let setup = setup(g, stage, viewport).map_err(DrawFailure::Message)?;
-    let mut draw = emu::Draw::new(pass.width, height);
-    draw.constants = d.constants.clone();
-    draw.float_rules = d.pixel.float_rules.unwrap_or(settings.float_rules);
-    draw.samplers = samplers.to_vec();
-    // The inputs arrive from the device's interpolators; the draw names
-    // them so that the emulator's checks of the draw see them supplied.
-    draw.inputs = stage
-        .slots
-        .iter()
-        .map(|s| (s.slot, emu::LinearInput::default()))
-        .collect();
-    let flat = stage.slots.iter().fold(0u64, |bits, s| {
-        (0..4)
-            .filter(|&c| s.flat[c] && s.slot < 16)
-            .fold(bits, |b, c| b | 1 << (4 * s.slot + c as u32))
-    });
-    let geometry = GeometryDraw {
-        pixel: &draw,
-        positions: setup.positions,
-        transformed: stage.transformed,
-        values: setup.values,
-        slots: stage.slots.iter().map(|s| s.slot).collect(),
-        flat,
-        primitives: setup.primitives,
-        viewport: *viewport,
-        clip: clip_rect,
-        cull: g.cull,
-        clip_planes: g.clip_planes.iter().map(|p| p.map(|x| x as f32)).collect(),
-    };
-    let shaded = gpu::draw_geometry(device, shader, &geometry)
-        .map_err(|e| DrawFailure::Message(e.to_string()))?;
+    let draw = pixel_draw(d, stage, samplers, settings, (pass.width, height));
+    let (primitives, shaded) = on_device(device, shader, g, stage, &draw, viewport, clip_rect)?;
     let mut drawn = Drawn {
         merged: MergeStats::default(),
         executed: None,
@@ -168,7 +143,7 @@ pub(super) fn shade_all(
         shaded: 0,
     };
     let mut pixels_left = settings.budget.max_pixels;
-    for (prim, s) in geometry.primitives.iter().zip(&shaded) {
+    for (prim, s) in primitives.iter().zip(&shaded) {
         if s.pixels.is_empty() {
             continue;
         }
@@ -186,6 +161,136 @@ pub(super) fn shade_all(
         pass.take(&window, &out, d.pixel.alpha_test)?;
     }
     Ok(drawn)
+}
+
+/// The pixel shader's draw for the device: constants, samplers and float
+/// rules of step `d` on a `size` target.
+fn pixel_draw<'s>(
+    d: &DrawStep,
+    stage: &Stage,
+    samplers: &[(u32, emu::TextureLevels<'s>, emu::SamplerState)],
+    settings: &Settings,
+    size: (u32, u32),
+) -> emu::Draw<'s> {
+    let mut draw = emu::Draw::new(size.0, size.1);
+    draw.constants = d.constants.clone();
+    draw.float_rules = d.pixel.float_rules.unwrap_or(settings.float_rules);
+    draw.samplers = samplers.to_vec();
+    // The inputs arrive from the device's interpolators; the draw names
+    // them so that the emulator's checks of the draw see them supplied.
+    draw.inputs = stage
+        .slots
+        .iter()
+        .map(|s| (s.slot, emu::LinearInput::default()))
+        .collect();
+    draw
+}
+
+/// Each primitive's triangles (vertex indices) and its shaded pixels.
+type OnDevice = (Vec<Vec<[u32; 3]>>, Vec<ShadedPrimitive>);
+
+/// Sets `g` up over `stage` and draws it on `device`.
+fn on_device(
+    device: &Gpu,
+    shader: &Shader,
+    g: &Geometry,
+    stage: &Stage,
+    draw: &emu::Draw,
+    viewport: &Viewport,
+    clip_rect: Rect,
+) -> Result<OnDevice, DrawFailure> {
+    let setup = setup(g, stage, viewport).map_err(DrawFailure::Message)?;
+    let flat = stage.slots.iter().fold(0u64, |bits, s| {
+        (0..4)
+            .filter(|&c| s.flat[c] && s.slot < 16)
+            .fold(bits, |b, c| b | 1 << (4 * s.slot + c as u32))
+    });
+    let geometry = GeometryDraw {
+        pixel: draw,
+        positions: setup.positions,
+        transformed: stage.transformed,
+        values: setup.values,
+        slots: stage.slots.iter().map(|s| s.slot).collect(),
+        flat,
+        primitives: setup.primitives,
+        viewport: *viewport,
+        clip: clip_rect,
+        cull: g.cull,
+        clip_planes: g.clip_planes.iter().map(|p| p.map(|x| x as f32)).collect(),
+    };
+    let shaded = gpu::draw_geometry(device, shader, &geometry)
+        .map_err(|e| DrawFailure::Message(e.to_string()))?;
+    Ok((geometry.primitives, shaded))
+}
+
+/// Which pixels each primitive of a draw of geometry covers on the
+/// emulator and on a device, for `compare`.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Coverage {
+    /// Per primitive (in drawing order), the pixels the emulator's set-up
+    /// covers, as indices y·width + x in row order.
+    pub emulator: Vec<Vec<u32>>,
+    /// Per primitive, the pixels the device covered.
+    pub gpu: Vec<Vec<u32>>,
+    /// Per primitive, the emulator's screen triangles after clipping and
+    /// culling (corners in pixels, centres on integers).
+    pub triangles: Vec<Vec<[[f64; 2]; 3]>>,
+}
+
+/// The coverage of step `d` (a draw of geometry) on both backends, its
+/// samplers bound from `states` (the targets as the step sees them).
+pub(crate) fn coverage(
+    list: &DrawList,
+    d: &DrawStep,
+    states: &[TargetState],
+    settings: &Settings,
+    device: &Arc<Gpu>,
+) -> Result<Coverage, DrawFailure> {
+    let Some(g) = d.geometry.as_deref() else {
+        return Ok(Coverage::default());
+    };
+    let spec = &list.targets[d.target];
+    let (width, height) = (spec.width, spec.height);
+    let float_rules = d.pixel.float_rules.unwrap_or(settings.float_rules);
+    let viewport = g.viewport.unwrap_or_else(|| Viewport::whole(width, height));
+    let clip_rect = super::clip_rect(g, &viewport, width, height);
+    let emulated = super::vertex_stage(list, g, d, float_rules, states, &Backend::Emulator)?;
+    let order = g
+        .indices
+        .as_ref()
+        .map_or(emulated.positions.len(), Vec::len);
+    let count = raster::assemble(g.primitive, order)
+        .map_err(DrawFailure::Message)?
+        .len();
+    let mut c = Coverage {
+        emulator: vec![Vec::new(); count],
+        gpu: Vec::new(),
+        triangles: vec![Vec::new(); count],
+    };
+    for (t, _, p) in super::triangles(g, &emulated, &viewport).map_err(DrawFailure::Message)? {
+        c.triangles[p].push(t.v.each_ref().map(|v| [v.x, v.y]));
+        let Some(b) = t.bounds(clip_rect) else {
+            continue;
+        };
+        for y in b.top..b.bottom {
+            for x in (b.left..b.right).filter(|&x| t.covers(f64::from(x), f64::from(y))) {
+                c.emulator[p].push(y * width + x);
+            }
+        }
+    }
+    for pixels in &mut c.emulator {
+        pixels.sort_unstable();
+        pixels.dedup();
+    }
+    let backend = Backend::Gpu(device.clone());
+    let stage = super::vertex_stage(list, g, d, float_rules, states, &backend)?;
+    let samplers = crate::jobs::render::bind_samplers(list, d, &d.samplers, states)?;
+    let draw = pixel_draw(d, &stage, &samplers, settings, (width, height));
+    let shader = &list.shaders[d.shader].loaded.shader;
+    let (_, shaded) = on_device(device, shader, g, &stage, &draw, &viewport, clip_rect)?;
+    c.gpu = shaded.into_iter().map(|s| s.pixels).collect();
+    c.gpu.resize(count, Vec::new());
+    Ok(c)
 }
 
 /// A primitive's shaded pixels as the emulator's window of them: the
