@@ -323,10 +323,11 @@ fn list(args: &Args, ui: &Ui, gpu: &Arc<Gpu>, path: &std::path::Path) -> super::
     if args.json {
         print_json(&show::list_json(gpu.info(), &c))?;
     } else {
-        say(
-            ui,
-            &format!("{}: {} draws\n", path.display(), c.steps.len()),
-        )?;
+        let draws = match c.steps.len() {
+            1 => "1 draw".to_string(),
+            n => format!("{n} draws"),
+        };
+        say(ui, &format!("{}: {draws}\n", path.display()))?;
         say(ui, &show::list_text(&c))?;
     }
     Ok(Outcome::from_ok(c.explained()))

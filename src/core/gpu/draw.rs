@@ -634,10 +634,16 @@ impl Readback {
 
 /// Maps every read-back buffer for reading.
 fn read_all(gpu: &Gpu, readbacks: &[(Slot, Readback)]) -> Result<(), GpuError> {
+    let buffers: Vec<&wgpu::Buffer> = readbacks.iter().map(|(_, r)| &r.buffer).collect();
+    map_read(gpu, &buffers)
+}
+
+/// Maps every buffer of `buffers` for reading, and waits for them.
+pub(super) fn map_read(gpu: &Gpu, buffers: &[&wgpu::Buffer]) -> Result<(), GpuError> {
     let (tx, rx) = std::sync::mpsc::channel();
-    for (i, (_, r)) in readbacks.iter().enumerate() {
+    for (i, buffer) in buffers.iter().enumerate() {
         let tx = tx.clone();
-        r.buffer.map_async(wgpu::MapMode::Read, .., move |res| {
+        buffer.map_async(wgpu::MapMode::Read, .., move |res| {
             let _ = tx.send((i, res));
         });
     }

@@ -447,7 +447,7 @@ fn draw_chunk(
     }
     gpu.queue.submit([encoder.finish()]);
     let buffers: Vec<&wgpu::Buffer> = readbacks.iter().flatten().map(|(b, _, _)| b).collect();
-    map_all(gpu, &buffers)?;
+    draw::map_read(gpu, &buffers)?;
     let shaded = decode(g, formats, &readbacks, prims.len())?;
     for b in &buffers {
         b.unmap();
@@ -503,25 +503,6 @@ fn record_primitive(
     pass.set_vertex_buffer(0, r.vertices.slice(..));
     pass.set_index_buffer(r.indices.slice(..), wgpu::IndexFormat::Uint32);
     pass.draw_indexed(indices, 0, 0..1);
-}
-
-/// Maps every buffer for reading.
-fn map_all(gpu: &Gpu, buffers: &[&wgpu::Buffer]) -> Result<(), GpuError> {
-    let (tx, rx) = std::sync::mpsc::channel();
-    for (i, b) in buffers.iter().enumerate() {
-        let tx = tx.clone();
-        b.map_async(wgpu::MapMode::Read, .., move |res| {
-            let _ = tx.send((i, res));
-        });
-    }
-    gpu.device
-        .poll(wgpu::PollType::wait_indefinitely())
-        .map_err(|e| GpuError::Failed(e.to_string()))?;
-    drop(tx);
-    for (i, res) in rx.iter() {
-        res.map_err(|e| GpuError::Failed(format!("reading attachment {i} back: {e}")))?;
-    }
-    Ok(())
 }
 
 /// Each primitive's covered pixels from the mapped read-back buffers.
