@@ -40,6 +40,10 @@ pub struct Args {
     /// --vertices` format) on both backends and compare every output component.
     #[arg(long, value_name = "FILE", conflicts_with_all = ["luminance", "tonemap", "all", "image", "target"])]
     vertices: Option<PathBuf>,
+    /// Run the draw list FILE (`ps30 render`'s format) on both backends and compare every
+    /// draw's targets after it; a draw of geometry also by the pixels each primitive covers.
+    #[arg(long, value_name = "FILE", conflicts_with_all = ["shader", "luminance", "tonemap", "all", "image", "target", "vertices", "inputs"])]
+    list: Option<PathBuf>,
     /// Compare the luminance pipeline on --image instead of one draw.
     #[arg(long, conflicts_with_all = ["shader", "tonemap", "all"])]
     luminance: bool,
@@ -103,9 +107,11 @@ pub struct Args {
 }
 
 pub fn run(args: Args, ui: &Ui) -> super::Result {
-    if !args.all && !args.luminance && !args.tonemap && args.shader.is_none() {
+    if !args.all && !args.luminance && !args.tonemap && args.shader.is_none() && args.list.is_none()
+    {
         return Err(BadInput(
-            "give a SHADER (with --image and --target), --luminance, --tonemap or --all".into(),
+            "give a SHADER (with --image and --target), --list, --luminance, --tonemap or --all"
+                .into(),
         ));
     }
     if args.all {
@@ -117,6 +123,9 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
     }
     if let Some(path) = &args.vertices {
         return vertices(&args, ui, &gpu, path);
+    }
+    if let Some(path) = &args.list {
+        return list(&args, ui, &gpu, path);
     }
     if (args.inputs.is_some() || !args.input_values.is_empty()) && args.image.is_none() {
         return one_draw(&args, ui, &gpu, None);
@@ -288,6 +297,40 @@ fn run_all(args: &Args, ui: &Ui) -> super::Result {
     Ok(Outcome::from_ok(
         ps30::jobs::compare::explain::all_explained(&result),
     ))
+}
+
+/// `compare --list FILE`: a draw list on both backends.
+fn list(args: &Args, ui: &Ui, gpu: &Arc<Gpu>, path: &std::path::Path) -> super::Result {
+    let limits = ps30::jobs::render::file::FileLimits {
+        max_input_bytes: args.input.max_input_bytes,
+        ..Default::default()
+    };
+    let loaded = ps30::jobs::render::file::read(path, &limits)?;
+    let settings = ps30::jobs::render::Settings {
+        limits: ps30::core::emu::EmuLimits {
+            max_executed_per_pixel: args.max_executed_per_pixel,
+            max_executed_total: args.max_executed_total,
+            ..Default::default()
+        },
+        float_rules: args.float_rules.into(),
+        ..Default::default()
+    };
+    let c = {
+        let _s = ui.spinner("running the list on both backends, and the probes");
+        let probes = compare::probe::run(gpu)?;
+        compare::draws::compare_list(gpu, &loaded.list, &settings, &probes)?
+    };
+    if args.json {
+        print_json(&show::list_json(gpu.info(), &c))?;
+    } else {
+        let draws = match c.steps.len() {
+            1 => "1 draw".to_string(),
+            n => format!("{n} draws"),
+        };
+        say(ui, &format!("{}: {draws}\n", path.display()))?;
+        say(ui, &show::list_text(&c))?;
+    }
+    Ok(Outcome::from_ok(c.explained()))
 }
 
 /// `compare VS --vertices FILE`: the vertex shader on both backends.

@@ -268,3 +268,60 @@ pub fn all_text(x: &CrossCheck) -> String {
     }
     s
 }
+
+/// The text of a draw list's comparison (`compare --list`): per draw, the
+/// targets' table, the coverage of a draw of geometry, the worst pixels
+/// and the explanation.
+pub fn list_text(c: &crate::jobs::compare::draws::ListComparison) -> String {
+    let mut s = String::new();
+    for step in &c.steps {
+        let d = &step.comparison;
+        s.push_str(&format!(
+            "steps[{}]: {} into a {}×{} {} target, float rules {}: emulator vs GPU\n",
+            step.index, d.shader, d.width, d.height, d.target, d.float_rules
+        ));
+        s.push_str(&channel_table(&d.channels));
+        if let Some(cov) = &step.coverage {
+            s.push_str(&format!(
+                "coverage: {} primitives; {} pixels covered on both, {} on the emulator only, {} on the GPU only\n",
+                thousands(cov.primitives as u64),
+                thousands(cov.both),
+                thousands(cov.emulator_only),
+                thousands(cov.gpu_only)
+            ));
+            for x in &cov.differences {
+                let distance = match x.distance {
+                    Some(v) => format!("{v:.4} pixel from its nearest edge"),
+                    None => "not drawn by the emulator".into(),
+                };
+                s.push_str(&format!(
+                    "  ({}, {}) primitive {}: {} only, {distance}\n",
+                    x.x, x.y, x.primitive, x.covered_by
+                ));
+            }
+        }
+        for ch in &d.channels {
+            for w in ch.worst.iter().take(2) {
+                s.push_str(&format!(
+                    "  worst {} at ({}, {}): emulator {:e}, GPU {:e} ({})\n",
+                    ch.channel,
+                    w.x,
+                    w.y,
+                    w.emulator,
+                    w.gpu,
+                    ulp_text(w.ulp)
+                ));
+            }
+        }
+        s.push_str(&explanation_line(&d.explanation));
+    }
+    s
+}
+
+/// `--json` of a draw list's comparison: the device and every draw.
+pub fn list_json(
+    device: &DeviceInfo,
+    c: &crate::jobs::compare::draws::ListComparison,
+) -> serde_json::Value {
+    serde_json::json!({ "device": device, "steps": c.steps, "explained": c.explained() })
+}

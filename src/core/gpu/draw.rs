@@ -206,7 +206,7 @@ fn ready<'g>(
     let (w, h) = (draw.target_width, draw.target_height);
     let device = &gpu.device;
     let scopes = ErrorScopes::push(gpu);
-    let bindings = Bindings::new(gpu, draw, &iface)?;
+    let bindings = Bindings::new(gpu, draw, &iface, true)?;
     phases::mark("draw: bound");
     let color_targets = color_targets(&iface, targets);
     let pipeline = render_pipeline(device, fragment, &bindings, &color_targets, draw, &iface)?;
@@ -371,7 +371,7 @@ impl ErrorScopes {
 
 /// Refuses what the emulator refuses ([`emu::check`]) and targets larger
 /// than the device's.
-fn refuse(gpu: &Gpu, shader: &Shader, draw: &Draw) -> Result<(), GpuError> {
+pub(super) fn refuse(gpu: &Gpu, shader: &Shader, draw: &Draw) -> Result<(), GpuError> {
     let compiled = emu::compile(shader).map_err(GpuError::Draw)?;
     emu::check(&compiled, draw).map_err(GpuError::Draw)?;
     let (w, h) = (draw.target_width, draw.target_height);
@@ -559,7 +559,7 @@ struct Readback {
     texel: u32,
 }
 
-fn target_texture(
+pub(super) fn target_texture(
     device: &wgpu::Device,
     w: u32,
     h: u32,
@@ -634,10 +634,16 @@ impl Readback {
 
 /// Maps every read-back buffer for reading.
 fn read_all(gpu: &Gpu, readbacks: &[(Slot, Readback)]) -> Result<(), GpuError> {
+    let buffers: Vec<&wgpu::Buffer> = readbacks.iter().map(|(_, r)| &r.buffer).collect();
+    map_read(gpu, &buffers)
+}
+
+/// Maps every buffer of `buffers` for reading, and waits for them.
+pub(super) fn map_read(gpu: &Gpu, buffers: &[&wgpu::Buffer]) -> Result<(), GpuError> {
     let (tx, rx) = std::sync::mpsc::channel();
-    for (i, (_, r)) in readbacks.iter().enumerate() {
+    for (i, buffer) in buffers.iter().enumerate() {
         let tx = tx.clone();
-        r.buffer.map_async(wgpu::MapMode::Read, .., move |res| {
+        buffer.map_async(wgpu::MapMode::Read, .., move |res| {
             let _ = tx.send((i, res));
         });
     }
@@ -723,13 +729,20 @@ fn texels<T: Send + Copy + Default>(
 }
 
 /// The bind group: constants, textures with their samplers, inputs.
-struct Bindings {
-    layout: wgpu::BindGroupLayout,
-    group: wgpu::BindGroup,
+pub(super) struct Bindings {
+    pub(super) layout: wgpu::BindGroupLayout,
+    pub(super) group: wgpu::BindGroup,
 }
 
 impl Bindings {
-    fn new(gpu: &Gpu, draw: &Draw, iface: &translate::Interface) -> Result<Bindings, GpuError> {
+    /// `per_pixel_inputs`: the inputs go up as a texture (`Entry::Draw`);
+    /// otherwise they arrive from a vertex stage.
+    pub(super) fn new(
+        gpu: &Gpu,
+        draw: &Draw,
+        iface: &translate::Interface,
+        per_pixel_inputs: bool,
+    ) -> Result<Bindings, GpuError> {
         let device = &gpu.device;
         let filterable = gpu.float32_filterable();
         let mut block = constant_block(draw);
@@ -761,7 +774,7 @@ impl Bindings {
                 }),
             ));
         }
-        let inputs = match iface.inputs.is_empty() {
+        let inputs = match iface.inputs.is_empty() || !per_pixel_inputs {
             true => None,
             false => Some(input_texture(gpu, draw, iface)?),
         };
@@ -903,7 +916,7 @@ fn mapped(
 /// each declared sampler carries only the emulation its state asks for,
 /// the float constants are the draw's, and the inputs arrive flushed where
 /// the float rules flush them ([`input_texture`] does it on the CPU).
-fn specialisation(
+pub(super) fn specialisation(
     gpu: &Gpu,
     shader: &Shader,
     draw: &Draw,

@@ -32,6 +32,7 @@
 //! (the loader is opened at run time).
 
 mod draw;
+mod geometry;
 mod inputs;
 mod runtime_dir;
 mod sampler;
@@ -39,6 +40,7 @@ mod texture;
 mod vertex;
 
 pub use draw::{prepare, prepare_with, run, run_in_bands, GpuOutput, Prepared, TargetKind};
+pub use geometry::{draw_geometry, GeometryDraw, ShadedPrimitive};
 pub use vertex::run_vertices;
 
 use crate::core::emu::EmuError;
@@ -204,10 +206,12 @@ impl Drop for Opening {
 }
 
 /// Features used when the adapter has them: BORDER addressing with a
-/// colour, and linear filtering of 32-bit float textures (both exist on
-/// llvmpipe and on current desktop GPUs).
-const WANTED: wgpu::Features =
-    wgpu::Features::ADDRESS_MODE_CLAMP_TO_BORDER.union(wgpu::Features::FLOAT32_FILTERABLE);
+/// colour, linear filtering of 32-bit float textures, and clip distances
+/// for the user clip planes of draws of geometry (all exist on llvmpipe
+/// and on current desktop GPUs).
+const WANTED: wgpu::Features = wgpu::Features::ADDRESS_MODE_CLAMP_TO_BORDER
+    .union(wgpu::Features::FLOAT32_FILTERABLE)
+    .union(wgpu::Features::CLIP_DISTANCES);
 
 impl Gpu {
     /// Opens the first Vulkan adapter (a real GPU is preferred to a CPU one).

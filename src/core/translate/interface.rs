@@ -51,6 +51,43 @@ pub const DRAW_INPUTS_BINDING: u32 = 40;
 /// colour outputs, so location 4 is free).
 pub const DRAW_KILLED_LOCATION: u32 = 4;
 
+/// Location of the flags output of the GPU backend's geometry entry point
+/// (`ps30_geometry`): bit 0 set for every pixel the primitive covers, bit 1
+/// where texkill killed it.
+pub const GEOMETRY_FLAGS_LOCATION: u32 = 4;
+/// Location of the geometry entry point's depth output: `oDepth` where the
+/// shader writes it, else the rasterised depth (`@builtin(position).z`),
+/// read back unclamped for the depth test done with the emulator's.
+pub const GEOMETRY_DEPTH_LOCATION: u32 = 5;
+
+/// Where the geometry entry point (`ps30_geometry`) reads each input:
+/// `(slot, smooth, flat)`, the locations its interpolated and its flat
+/// components arrive at. `flat` holds four bits per slot (bit `4·slot + c`:
+/// component c is flat-shaded, D3DSHADE_FLAT). A slot wholly interpolated
+/// or wholly flat arrives at its own location; one with both kinds of
+/// components arrives twice, flat at the next location after every slot.
+pub fn geometry_locations(inputs: &[Input], flat: u64) -> Vec<(u32, Option<u32>, Option<u32>)> {
+    let mut next = inputs.iter().map(|i| i.location + 1).max().unwrap_or(0);
+    inputs
+        .iter()
+        .map(|i| {
+            let bits = if i.register < 16 {
+                (flat >> (4 * i.register)) & 0xf
+            } else {
+                0
+            };
+            match bits {
+                0 => (i.register, Some(i.location), None),
+                0xf => (i.register, None, Some(i.location)),
+                _ => {
+                    next += 1;
+                    (i.register, Some(i.location), Some(next - 1))
+                }
+            }
+        })
+        .collect()
+}
+
 /// The texture binding of `s#`.
 pub fn texture_binding(sampler: u32) -> u32 {
     1 + 2 * sampler

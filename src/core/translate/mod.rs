@@ -171,6 +171,7 @@ impl Translation {
         match self.entry {
             Entry::Application => "main",
             Entry::Draw => "ps30_draw",
+            Entry::Geometry { .. } => "ps30_geometry",
         }
     }
 }

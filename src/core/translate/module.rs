@@ -412,6 +412,18 @@ pub enum Entry {
     /// inputs are bit-identical to the emulator's and killed pixels are
     /// reported as the emulator reports them.
     Draw,
+    /// `ps30_geometry`: the GPU backend's draw of geometry. Inputs arrive
+    /// from its vertex stage by `@location`, interpolated with perspective,
+    /// or flat where `flat` says (four bits per slot, laid out by
+    /// [`interface::geometry_locations`]); every covered pixel writes its
+    /// flags (covered, killed) to `@location(4)` and its depth (`oDepth`, or
+    /// the rasterised z) to `@location(5)`, so that the alpha test, the
+    /// depth test and the output merger run on the CPU as for every draw of
+    /// the GPU backend.
+    Geometry {
+        /// Flat-shaded components, bit `4·slot + c`.
+        flat: u64,
+    },
 }
 
 /// An output's location (no interpolation: it leaves the pipeline).
@@ -433,11 +445,12 @@ fn location(location: u32, centroid: bool, interpolate: bool) -> Binding {
         } else {
             Interpolation::Flat
         }),
-        sampling: Some(if centroid {
-            Sampling::Centroid
-        } else {
-            Sampling::Center
-        }),
+        // A flat input has no sampling point (naga refuses one).
+        sampling: match (interpolate, centroid) {
+            (false, _) => None,
+            (true, true) => Some(Sampling::Centroid),
+            (true, false) => Some(Sampling::Center),
+        },
         blend_src: None,
         per_primitive: false,
     }
@@ -456,6 +469,7 @@ pub(super) fn entry_point(
     let mut fb = Fb::new(match entry {
         Entry::Application => "main",
         Entry::Draw => "ps30_draw",
+        Entry::Geometry { .. } => "ps30_geometry",
     });
     let pos_ty = t.vec4;
     let mut args = vec![
@@ -470,14 +484,32 @@ pub(super) fn entry_point(
             Binding::BuiltIn(BuiltIn::FrontFacing),
         ),
     ];
+    let mut names = vec!["position".to_string(), "front_facing".to_string()];
     if entry == Entry::Application {
         for i in &iface.inputs {
             args.push(("v", t.vec4, location(i.location, i.centroid, true)));
+            names.push(format!("v{}", i.register));
         }
     }
-    for (k, (name, ty, binding)) in args.iter().enumerate() {
+    if let Entry::Geometry { flat } = entry {
+        for (i, (slot, smooth, flat)) in iface
+            .inputs
+            .iter()
+            .zip(interface::geometry_locations(&iface.inputs, flat))
+        {
+            if let Some(l) = smooth {
+                args.push(("v", t.vec4, location(l, i.centroid, true)));
+                names.push(format!("v{slot}"));
+            }
+            if let Some(l) = flat {
+                args.push(("v", t.vec4, location(l, false, false)));
+                names.push(format!("v{slot}_flat"));
+            }
+        }
+    }
+    for ((name, ty, binding), name_of) in args.iter().zip(&names) {
         let name = if *name == "v" {
-            format!("v{}", iface.inputs[k - 2].register)
+            name_of.clone()
         } else {
             name.to_string()
         };
@@ -529,6 +561,7 @@ pub(super) fn entry_point(
             }
         }
         Entry::Draw => draw_inputs(m, cx, iface, &mut fb, centre),
+        Entry::Geometry { flat } => geometry_inputs(cx, iface, &mut fb, flat),
     }
 
     fb.push(Statement::Call {
@@ -537,7 +570,7 @@ pub(super) fn entry_point(
         result: None,
     });
 
-    let result = outputs(m, cx, iface, &mut fb, entry);
+    let result = outputs(m, cx, iface, &mut fb, entry, position);
     fb.f.result = result.map(|ty| naga::FunctionResult { ty, binding: None });
     let function = fb.finish();
     m.entry_points.push(naga::EntryPoint {
@@ -561,6 +594,44 @@ fn entering(fb: &mut Fb, input: &interface::Input, value: Expr) -> Expr {
         fb.math(naga::MathFunction::Saturate, &[value])
     } else {
         value
+    }
+}
+
+/// `Entry::Geometry`'s inputs: each `v#` from its interpolated location,
+/// its flat components from its flat one (the arguments after position and
+/// facing, in [`interface::geometry_locations`]'s order).
+fn geometry_inputs(cx: &Ctx, iface: &Interface, fb: &mut Fb, flat: u64) {
+    let mut arg = 2u32;
+    for (i, (slot, smooth, flat_at)) in iface
+        .inputs
+        .iter()
+        .zip(interface::geometry_locations(&iface.inputs, flat))
+    {
+        let mut take = |present: Option<u32>| {
+            present.map(|_| {
+                arg += 1;
+                fb.add(Expression::FunctionArgument(arg - 1))
+            })
+        };
+        let (smooth, flat_value) = (take(smooth), take(flat_at));
+        let value = match (smooth, flat_value) {
+            (Some(s), Some(f)) => {
+                let bits = (flat >> (4 * slot)) & 0xf;
+                let components = (0..4)
+                    .map(|c| fb.index(if bits & (1 << c) != 0 { f } else { s }, c))
+                    .collect();
+                fb.add(Expression::Compose {
+                    ty: cx.t.vec4,
+                    components,
+                })
+            }
+            (Some(v), None) | (None, Some(v)) => v,
+            (None, None) => continue,
+        };
+        let value = entering(fb, i, value);
+        let v = cx.var(fb, cx.inputs);
+        let p = fb.index(v, i.register);
+        fb.store(p, value);
     }
 }
 
@@ -620,6 +691,7 @@ fn outputs(
     iface: &Interface,
     fb: &mut Fb,
     entry: Entry,
+    position: Expr,
 ) -> Option<Handle<Type>> {
     let t = &cx.t;
     let mut members = Vec::new();
@@ -636,7 +708,42 @@ fn outputs(
         let p = cx.var(fb, cx.outputs[k as usize]);
         values.push(fb.load(p));
     }
-    if iface.depth {
+    if let Entry::Geometry { .. } = entry {
+        let u32_ty = ty(m, None, TypeInner::Scalar(Scalar::U32));
+        members.push(StructMember {
+            name: Some("flags".into()),
+            ty: u32_ty,
+            binding: Some(output(interface::GEOMETRY_FLAGS_LOCATION)),
+            offset,
+        });
+        let covered = fb.u32(1);
+        let flags = match iface.kills {
+            true => {
+                let p = cx.var(fb, cx.killed);
+                let killed = fb.load(p);
+                let (yes, no) = (fb.u32(3), covered);
+                fb.select(killed, yes, no)
+            }
+            false => covered,
+        };
+        values.push(flags);
+        members.push(StructMember {
+            name: Some("depth".into()),
+            ty: t.f32,
+            binding: Some(output(interface::GEOMETRY_DEPTH_LOCATION)),
+            offset: offset + 4,
+        });
+        offset += 8;
+        let depth = match iface.depth {
+            true => {
+                let p = cx.var(fb, cx.depth);
+                let d = fb.load(p);
+                fb.index(d, 0)
+            }
+            false => fb.index(position, 2),
+        };
+        values.push(depth);
+    } else if iface.depth {
         members.push(StructMember {
             name: Some("oDepth".into()),
             ty: t.f32,
@@ -648,7 +755,7 @@ fn outputs(
         let d = fb.load(p);
         values.push(fb.index(d, 0));
     }
-    if iface.kills {
+    if iface.kills && !matches!(entry, Entry::Geometry { .. }) {
         let p = cx.var(fb, cx.killed);
         let killed = fb.load(p);
         match entry {
@@ -665,6 +772,7 @@ fn outputs(
                 let (yes, no) = (fb.u32(1), fb.u32(0));
                 values.push(fb.select(killed, yes, no));
             }
+            Entry::Geometry { .. } => {}
         }
     }
     if members.is_empty() {

@@ -12,6 +12,7 @@
 //! shader on the bundled images for `reports/gpu-crosscheck.md`.
 
 pub mod all;
+pub mod draws;
 pub mod explain;
 pub mod probe;
 pub mod stats;

@@ -633,6 +633,12 @@ fn geometry_draw(
     let drawn = geometry::run::draw(list, compiled, d, g, states, settings, limits)?;
     let executed_static = static_count(shader, &d.constants)?;
     let executed = drawn.executed.map(|(min, max)| Range { min, max });
+    // A GPU counts nothing: the list's budget is charged the cost model's
+    // longest path for every pixel it shaded, as for a full-screen draw.
+    let total = match settings.backend {
+        backend::Backend::Emulator => drawn.total,
+        _ => executed_static.max.saturating_mul(drawn.shaded),
+    };
     let summary = DrawOutput {
         width: 0,
         height: 0,
@@ -656,7 +662,7 @@ fn geometry_draw(
         Some(drawn.triangles),
         findings,
     );
-    Ok((detail, drawn.total))
+    Ok((detail, total))
 }
 
 /// A draw's report: its counts beside the cost model's, what it merged,

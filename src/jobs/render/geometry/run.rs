@@ -10,6 +10,11 @@
 //! before a triangle that covers a pixel already in it, so that blending
 //! sees every earlier triangle.
 
+mod gpu;
+
+pub(crate) use gpu::coverage;
+pub use gpu::Coverage;
+
 use super::{DepthState, Geometry};
 use crate::core::emu::vertex::{self, Attribute, VertexDraw};
 use crate::core::emu::{self, Compiled, Draw, DrawOutput, EmuError, GradientSite};
@@ -42,6 +47,9 @@ pub(crate) struct Drawn {
     pub gradients: Vec<GradientSite>,
     /// Triangles that covered a pixel and ran the pixel shader.
     pub triangles: u64,
+    /// Pixels a GPU shaded (it counts no executed slots; the list's budget
+    /// is charged the cost model's longest path for each).
+    pub shaded: u64,
 }
 
 /// A pixel-shader input slot and where its components come from: the
@@ -95,6 +103,7 @@ fn vertex_stage(
     d: &DrawStep,
     float_rules: crate::core::float_rules::FloatRules,
     states: &[TargetState],
+    backend: &crate::jobs::backend::Backend,
 ) -> Result<Stage, DrawFailure> {
     let program = list.shaders[d.shader].loaded.shader.program();
     let wanted = pixel_semantics(program);
@@ -156,8 +165,12 @@ fn vertex_stage(
         float_rules,
         ..VertexDraw::default()
     };
-    let out = vertex::run(shader, &draw, &g.vertices)
-        .map_err(|e| DrawFailure::Message(format!("vertex shader: {e}")))?;
+    let out = match settings_gpu(backend)? {
+        Some(device) => crate::core::gpu::run_vertices(device, shader, &draw, &g.vertices)
+            .map_err(|e| DrawFailure::Message(format!("vertex shader: {e}")))?,
+        None => vertex::run(shader, &draw, &g.vertices)
+            .map_err(|e| DrawFailure::Message(format!("vertex shader: {e}")))?,
+    };
     let column = |a: &Attribute| {
         out.slots
             .iter()
@@ -190,14 +203,15 @@ fn vertex_stage(
     })
 }
 
-/// The screen triangles of the draw, each with its provoking vertex, in
-/// drawing order: assembled, clipped (positions in clip space), divided,
-/// mapped through the viewport, culled.
+/// The screen triangles of the draw, each with its provoking vertex and
+/// the index of the primitive it came from, in drawing order: assembled,
+/// clipped (positions in clip space), divided, mapped through the
+/// viewport, culled.
 fn triangles(
     g: &Geometry,
     stage: &Stage,
     viewport: &Viewport,
-) -> Result<Vec<(Triangle, usize)>, String> {
+) -> Result<Vec<(Triangle, usize, usize)>, String> {
     let order: Vec<usize> = match &g.indices {
         Some(ix) => ix.iter().map(|&i| i as usize).collect(),
         None => (0..stage.positions.len()).collect(),
@@ -218,7 +232,10 @@ fn triangles(
         }
     };
     let mut out = Vec::new();
-    for prim in raster::assemble(g.primitive, order.len())? {
+    for (index, prim) in raster::assemble(g.primitive, order.len())?
+        .into_iter()
+        .enumerate()
+    {
         let [a, b, c] = prim.corners.map(|i| order[i]);
         let provoking = order[prim.provoking];
         if g.primitive == raster::Primitive::PointList {
@@ -234,8 +251,8 @@ fn triangles(
                 ..centre.clone()
             };
             let (tl, tr, bl, br) = (corner(-h, -h), corner(h, -h), corner(-h, h), corner(h, h));
-            out.extend(Triangle::new(tl, tr.clone(), bl.clone()).map(|t| (t, provoking)));
-            out.extend(Triangle::new(tr, br, bl).map(|t| (t, provoking)));
+            out.extend(Triangle::new(tl, tr.clone(), bl.clone()).map(|t| (t, provoking, index)));
+            out.extend(Triangle::new(tr, br, bl).map(|t| (t, provoking, index)));
             continue;
         }
         let corners = [a, b, c].map(|i| ClipVertex {
@@ -258,7 +275,7 @@ fn triangles(
                 on_screen[i + 1].clone(),
             );
             if let Some(t) = t.filter(|t| !g.cull.drops(t.face)) {
-                out.push((t, provoking));
+                out.push((t, provoking, index));
             }
         }
     }
@@ -369,27 +386,13 @@ pub(crate) fn draw(
     settings: &Settings,
     limits: emu::EmuLimits,
 ) -> Result<Drawn, DrawFailure> {
-    if !matches!(settings.backend, crate::jobs::backend::Backend::Emulator) {
-        return Err(DrawFailure::Message(
-            "draws of geometry run on the emulator only (the GPU backend draws full-screen quads)"
-                .into(),
-        ));
-    }
     let spec = &list.targets[d.target];
     let (width, height) = (spec.width, spec.height);
     let float_rules = d.pixel.float_rules.unwrap_or(settings.float_rules);
-    let stage = vertex_stage(list, g, d, float_rules, states)?;
+    let stage = vertex_stage(list, g, d, float_rules, states, &settings.backend)?;
     let viewport = g.viewport.unwrap_or_else(|| Viewport::whole(width, height));
     let tris = triangles(g, &stage, &viewport).map_err(DrawFailure::Message)?;
-    let mut clip_rect = viewport.rect().intersect(Rect {
-        left: 0,
-        top: 0,
-        right: width,
-        bottom: height,
-    });
-    if let Some(s) = g.scissor {
-        clip_rect = clip_rect.intersect(s);
-    }
+    let clip_rect = clip_rect(g, &viewport, width, height);
     // The targets this draw writes leave `states` while it runs, so that
     // the samplers may borrow the others (a draw never samples its own).
     let mut outs: Vec<Option<(usize, OutputState)>> = vec![Some((d.target, d.output))];
@@ -427,9 +430,18 @@ pub(crate) fn draw(
             },
             merged: MergeStats::default(),
         };
-        let drawn = shade_all(
-            list, compiled, d, &stage, &tris, clip_rect, &samplers, settings, limits, &mut pass,
-        )?;
+        let drawn = match settings_gpu(&settings.backend)? {
+            Some(device) => {
+                let shader = &list.shaders[d.shader].loaded.shader;
+                gpu::shade_all(
+                    device, shader, d, g, &stage, &viewport, clip_rect, &samplers, settings,
+                    height, &mut pass,
+                )?
+            }
+            None => shade_all(
+                list, compiled, d, &stage, &tris, clip_rect, &samplers, settings, limits, &mut pass,
+            )?,
+        };
         pass.flush()?;
         let merged = pass.merged;
         let depth = pass.depth.take();
@@ -450,6 +462,30 @@ pub(crate) fn draw(
     let (mut drawn, merged, _) = result?;
     drawn.merged = merged;
     Ok(drawn)
+}
+
+/// The pixels a draw may write: its viewport, the scissor rectangle and the
+/// `width × height` target together.
+fn clip_rect(g: &Geometry, viewport: &Viewport, width: u32, height: u32) -> Rect {
+    let rect = viewport.rect().intersect(Rect {
+        left: 0,
+        top: 0,
+        right: width,
+        bottom: height,
+    });
+    match g.scissor {
+        Some(s) => rect.intersect(s),
+        None => rect,
+    }
+}
+
+/// The device of a GPU backend (`None` for the emulator).
+fn settings_gpu(
+    backend: &crate::jobs::backend::Backend,
+) -> Result<Option<&std::sync::Arc<crate::core::gpu::Gpu>>, DrawFailure> {
+    backend
+        .gpu()
+        .map_err(|e| DrawFailure::Message(e.to_string()))
 }
 
 /// The state of a target, taken out of the list's (an empty target left
@@ -498,7 +534,7 @@ fn shade_all(
     compiled: &Compiled,
     d: &DrawStep,
     stage: &Stage,
-    tris: &[(Triangle, usize)],
+    tris: &[(Triangle, usize, usize)],
     clip_rect: Rect,
     samplers: &[(u32, emu::TextureLevels<'_>, emu::SamplerState)],
     settings: &Settings,
@@ -517,9 +553,10 @@ fn shade_all(
         total: 0,
         gradients: compiled.sites.clone(),
         triangles: 0,
+        shaded: 0,
     };
     let mut pixels_left = settings.budget.max_pixels;
-    for (tri, provoking) in tris {
+    for (tri, provoking, _) in tris {
         if clip_rect.is_empty() {
             break;
         }
