@@ -124,6 +124,22 @@ fn watched_pixel(list: &render::DrawList, text: &str) -> Result<render::history:
     Ok(render::history::Pixel { target, x, y })
 }
 
+/// The recorder of the `--pixel` pixels; `None` when there are none.
+fn recorder(
+    list: &render::DrawList,
+    pixels: &[String],
+) -> Result<Option<render::history::Recorder>, BadInput> {
+    if pixels.is_empty() {
+        return Ok(None);
+    }
+    let pixels = pixels
+        .iter()
+        .map(|p| watched_pixel(list, p))
+        .collect::<Result<Vec<_>, _>>()?;
+    let recorder = render::history::Recorder::new(list, &pixels).map_err(BadInput)?;
+    Ok(Some(recorder))
+}
+
 pub fn run(args: Args, ui: &Ui) -> super::Result {
     super::bound_threads(args.exec.threads())?;
     if let Some(dir) = &args.output {
@@ -187,16 +203,7 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
             )));
         }
     }
-    let pixels = args
-        .pixel
-        .iter()
-        .map(|p| watched_pixel(list, p))
-        .collect::<Result<Vec<_>, _>>()?;
-    let mut recorder = if pixels.is_empty() {
-        None
-    } else {
-        Some(render::history::Recorder::new(list, &pixels).map_err(BadInput)?)
-    };
+    let mut recorder = recorder(list, &args.pixel)?;
     let mut failure: Option<BadInput> = None;
     let bar = std::cell::RefCell::new(ui.bar("steps", list.steps.len() as u64));
     let mut observe = |r: &StepReport, states: &[TargetState]| {
@@ -217,10 +224,14 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
             let _ = say(ui, &show::step_line(list, r));
         }
         if let (true, Some(out), None) = (args.every_step, outputs.as_mut(), &failure) {
-            let t = list.target(&r.target).expect("the step's target exists");
-            let stem = format!("{:03}-{}", r.index, r.target);
-            if let Err(e) = out.target(&stem, &states[t].target) {
-                failure = Some(e);
+            // The step's target, and a draw's oC1–oC3 targets.
+            for t in render::changed_targets(&list.steps[r.index]) {
+                let name = &list.targets[t].name;
+                let stem = format!("{:03}-{name}", r.index);
+                if let Err(e) = out.target(&stem, &states[t].target) {
+                    failure = Some(e);
+                    break;
+                }
             }
         }
     };

@@ -465,7 +465,7 @@ impl Recorder {
                 .clip_planes
                 .iter()
                 .position(|p| p[0] + x as f32 * p[1] + y as f32 * p[2] < 0.0);
-            let killed = out.killed[i];
+            let killed = out.killed.get(i).copied().unwrap_or(false);
             let oc0 = out.color.first().and_then(|c| c.as_ref()).map(|c| c[i]);
             let alpha = match (killed || clip_plane.is_some(), w.alpha_test, oc0) {
                 (false, Some(a), Some(c)) => Some((c[3], a.passes(c[3]))),
@@ -475,12 +475,16 @@ impl Recorder {
                 .color
                 .get(w.output.unwrap_or(0))
                 .is_some_and(Option::is_some);
-            let fate = match () {
-                _ if killed => "killed",
-                _ if clip_plane.is_some() => "clipped",
-                _ if alpha.is_some_and(|(_, p)| !p) => "alpha_test",
-                _ if !written => "no_output",
-                _ => "written",
+            let fate = if killed {
+                "killed"
+            } else if clip_plane.is_some() {
+                "clipped"
+            } else if alpha.is_some_and(|(_, p)| !p) {
+                "alpha_test"
+            } else if !written {
+                "no_output"
+            } else {
+                "written"
             };
             w.merging = (fate == "written").then(|| w.fragments());
             let quad_covered = [(0, 0), (1, 0), (0, 1), (1, 1)]
@@ -495,7 +499,8 @@ impl Recorder {
                 quad_covered,
                 inputs,
                 outputs: outputs(out, i),
-                executed: Some(out.executed[i]),
+                // A GPU counts nothing.
+                executed: out.executed.get(i).copied(),
                 killed,
                 clip_plane,
                 alpha_test: alpha.map(|(a, passed)| alpha_verdict(w.alpha_test, a, passed)),
@@ -576,13 +581,17 @@ impl Recorder {
             let test = w.alpha_test;
             let passed = verdict.passed();
             let Some(f) = w.fragment() else { continue };
+            f.killed = verdict.killed;
             f.alpha_test = verdict.alpha.map(|(a, p)| alpha_verdict(test, a, p));
             f.depth = verdict.depth.clone();
-            f.fate = match () {
-                _ if verdict.killed => "killed",
-                _ if verdict.alpha.is_some_and(|(_, p)| !p) => "alpha_test",
-                _ if !passed => "depth_test",
-                _ => "written",
+            f.fate = if verdict.killed {
+                "killed"
+            } else if verdict.alpha.is_some_and(|(_, p)| !p) {
+                "alpha_test"
+            } else if !passed {
+                "depth_test"
+            } else {
+                "written"
             };
             let written = f.fate == "written";
             if written {

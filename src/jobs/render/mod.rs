@@ -235,12 +235,25 @@ pub fn pixel_work(list: &DrawList) -> u64 {
 /// (the EXR, uncompressed) and an 8-bit RGB preview (the PNG), plus 4 KiB of
 /// headers each.
 pub fn staged_bytes_every_step(list: &DrawList) -> u64 {
-    list.steps.iter().fold(0u64, |total, step| {
-        let t = &list.targets[step.target()];
-        let pixels = u64::from(t.width) * u64::from(t.height);
-        let channels = t.format.channels() as u64;
-        total.saturating_add(pixels * (4 * channels + 3) + 2 * 4096)
-    })
+    list.steps
+        .iter()
+        .flat_map(changed_targets)
+        .fold(0u64, |total, t| {
+            let t = &list.targets[t];
+            let pixels = u64::from(t.width) * u64::from(t.height);
+            let channels = t.format.channels() as u64;
+            total.saturating_add(pixels * (4 * channels + 3) + 2 * 4096)
+        })
+}
+
+/// The targets a step changes: the one it clears, reduces or draws into,
+/// and a draw's oC1–oC3 targets.
+pub fn changed_targets(step: &Step) -> Vec<usize> {
+    let mut out = vec![step.target()];
+    if let Step::Draw(d) = step {
+        out.extend(d.pixel.outputs.iter().flatten().map(|&(t, _)| t));
+    }
+    out
 }
 
 /// What one step did.
