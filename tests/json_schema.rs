@@ -344,6 +344,19 @@ fn every_command_matches_the_schema() {
         repo,
         &[0],
     );
+    // A pixel's history (`--pixel`) adds `pixels`.
+    check(
+        "render",
+        &[
+            "render",
+            "tests/pixel_history/blend.json",
+            "--pixel",
+            "1,1",
+            "--json",
+        ],
+        repo,
+        &[0],
+    );
     // The same kind of list with its shaders on a GPU: `executed_emulated`
     // is null there. Without a Vulkan device (outside CI) the run is bad
     // input, and there is no JSON to check.

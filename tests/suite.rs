@@ -37,6 +37,7 @@ mod lights;
 mod luminance;
 mod malformed;
 mod oracle;
+mod pixel_history;
 mod quads;
 mod reference_values;
 mod render;

@@ -25,6 +25,13 @@ pub struct Args {
     /// NNN-NAME.exr and NNN-NAME.png.
     #[arg(long, requires = "output")]
     every_step: bool,
+    /// The history of one pixel, `X,Y` or `TARGET:X,Y` (without a target,
+    /// the target of the list's last draw): every step that changes it,
+    /// each primitive that reaches it with the pixel shader's inputs and
+    /// outputs, texkill, the alpha and depth tests and the blend. May be
+    /// given more than once.
+    #[arg(long, value_name = "[TARGET:]X,Y")]
+    pixel: Vec<String>,
     /// Refuse a list with more steps than this.
     #[arg(long, value_name = "N", default_value_t = 10_000, value_parser = clap::value_parser!(u64).range(1..=1_000_000))]
     max_steps: u64,
@@ -77,6 +84,60 @@ impl Outputs<'_> {
             .extend([exr.display().to_string(), png.display().to_string()]);
         Ok(())
     }
+}
+
+/// `--pixel`'s `[TARGET:]X,Y` in `list`: without a target, the target of
+/// the list's last draw (its first target when it draws nothing).
+fn watched_pixel(list: &render::DrawList, text: &str) -> Result<render::history::Pixel, BadInput> {
+    let bad = |why: String| BadInput(format!("--pixel {text}: {why}"));
+    let (name, xy) = match text.rsplit_once(':') {
+        Some((n, xy)) => (Some(n), xy),
+        None => (None, text),
+    };
+    let target = match name {
+        Some(n) => list.target(n).ok_or_else(|| {
+            let names: Vec<&str> = list.targets.iter().map(|t| t.name.as_str()).collect();
+            bad(format!(
+                "no target named `{n}` (the list has {})",
+                ps30::core::numbers::list(&names)
+            ))
+        })?,
+        None => list
+            .steps
+            .iter()
+            .rev()
+            .find_map(|s| match s {
+                render::Step::Draw(d) => Some(d.target),
+                _ => None,
+            })
+            .unwrap_or(0),
+    };
+    let coords: Vec<Option<u32>> = xy.split(',').map(|c| c.trim().parse().ok()).collect();
+    let [Some(x), Some(y)] = coords[..] else {
+        return Err(bad(
+            "give the pixel as X,Y or TARGET:X,Y (column, row)".into()
+        ));
+    };
+    if list.targets.is_empty() {
+        return Err(bad("the list has no target".into()));
+    }
+    Ok(render::history::Pixel { target, x, y })
+}
+
+/// The recorder of the `--pixel` pixels; `None` when there are none.
+fn recorder(
+    list: &render::DrawList,
+    pixels: &[String],
+) -> Result<Option<render::history::Recorder>, BadInput> {
+    if pixels.is_empty() {
+        return Ok(None);
+    }
+    let pixels = pixels
+        .iter()
+        .map(|p| watched_pixel(list, p))
+        .collect::<Result<Vec<_>, _>>()?;
+    let recorder = render::history::Recorder::new(list, &pixels).map_err(BadInput)?;
+    Ok(Some(recorder))
 }
 
 pub fn run(args: Args, ui: &Ui) -> super::Result {
@@ -142,6 +203,7 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
             )));
         }
     }
+    let mut recorder = recorder(list, &args.pixel)?;
     let mut failure: Option<BadInput> = None;
     let bar = std::cell::RefCell::new(ui.bar("steps", list.steps.len() as u64));
     let mut observe = |r: &StepReport, states: &[TargetState]| {
@@ -162,14 +224,20 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
             let _ = say(ui, &show::step_line(list, r));
         }
         if let (true, Some(out), None) = (args.every_step, outputs.as_mut(), &failure) {
-            let t = list.target(&r.target).expect("the step's target exists");
-            let stem = format!("{:03}-{}", r.index, r.target);
-            if let Err(e) = out.target(&stem, &states[t].target) {
-                failure = Some(e);
+            // The step's target, and a draw's oC1–oC3 targets.
+            for t in render::changed_targets(&list.steps[r.index]) {
+                let name = &list.targets[t].name;
+                let stem = format!("{:03}-{name}", r.index);
+                if let Err(e) = out.target(&stem, &states[t].target) {
+                    failure = Some(e);
+                    break;
+                }
             }
         }
     };
-    let (reports, states) = render::run(list, &settings, &mut observe)?;
+    let (reports, states) =
+        render::run_with_history(list, &settings, &mut observe, recorder.as_mut())?;
+    let histories = recorder.map_or_else(Vec::new, |r| r.histories());
     drop(bar);
     if let Some(e) = failure {
         return Err(e);
@@ -187,16 +255,23 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         _ => true,
     });
     if args.exec.json {
-        print_json(&show::json(
+        let mut v = show::json(
             &name,
             loaded.description.as_deref(),
             list,
             &reports,
             &states,
             &written,
-        ))?;
+        );
+        if !histories.is_empty() {
+            v["pixels"] = ps30::present::history::json(&histories);
+        }
+        print_json(&v)?;
     } else {
         say(ui, &show::targets_text(list, &states))?;
+        for h in &histories {
+            say(ui, &ps30::present::history::text(h))?;
+        }
         if let (false, Some(dir)) = (ui.quiet || written.is_empty(), &args.output) {
             say(
                 ui,

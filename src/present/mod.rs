@@ -8,6 +8,7 @@ pub mod constants;
 pub mod corpus;
 pub mod decompile;
 pub mod disasm;
+pub mod history;
 pub mod json;
 pub mod luminance;
 pub mod plan;

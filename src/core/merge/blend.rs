@@ -283,6 +283,50 @@ impl BlendState {
     }
 }
 
+/// One blend of one texel, term by term: what [`BlendState::apply`]
+/// computes, kept for a person to read (`ps30 render --pixel`).
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
+pub struct Terms {
+    /// The source as the blender takes it (half-rounded, f32, or clamped
+    /// to [0, 1] for an 8-bit target).
+    pub source: [f64; 4],
+    /// The destination texel as the target stores it.
+    pub dest: [f64; 4],
+    /// Each channel's source factor (`None` for MIN and MAX, which take
+    /// none).
+    pub source_factor: [Option<f64>; 4],
+    /// Each channel's destination factor.
+    pub dest_factor: [Option<f64>; 4],
+    /// The blended texel, rounded as the target stores it (before the
+    /// write mask); equal to [`BlendState::apply`]'s.
+    pub result: [f32; 4],
+}
+
+impl BlendState {
+    /// [`BlendState::apply`] with its terms; `None` when blending is off
+    /// (the source replaces the texel).
+    pub fn terms(&self, format: TargetFormat, src: [f32; 4], dst: [f32; 4]) -> Option<Terms> {
+        if !self.enabled {
+            return None;
+        }
+        let p = Precision::of(format.encoding());
+        let s = src.map(|c| p.source(c));
+        let d = dst.map(f64::from);
+        let k = self.factor.map(|b| p.round(b as f64 / 255.0));
+        let factor = |f: fn(&Equation) -> BlendFactor, c: usize| {
+            let eq = self.equation(c);
+            (!matches!(eq.op, BlendOp::Min | BlendOp::Max)).then(|| p.factor(f(&eq), c, &s, &d, &k))
+        };
+        Some(Terms {
+            source: s,
+            dest: d,
+            source_factor: std::array::from_fn(|c| factor(|e| e.src, c)),
+            dest_factor: std::array::from_fn(|c| factor(|e| e.dest, c)),
+            result: self.apply(format, src, dst),
+        })
+    }
+}
+
 /// The arithmetic of one target encoding (see the module docs).
 #[derive(Clone, Copy, Debug)]
 enum Precision {

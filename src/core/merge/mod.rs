@@ -30,7 +30,7 @@
 
 pub mod blend;
 
-pub use blend::{BlendFactor, BlendOp, BlendState, Equation};
+pub use blend::{BlendFactor, BlendOp, BlendState, Equation, Terms};
 
 use crate::core::image::RenderTarget;
 

@@ -21,6 +21,7 @@
 pub mod file;
 mod floats;
 pub mod geometry;
+pub mod history;
 pub mod input_values;
 pub mod pixel_state;
 pub mod textures;
@@ -234,12 +235,25 @@ pub fn pixel_work(list: &DrawList) -> u64 {
 /// (the EXR, uncompressed) and an 8-bit RGB preview (the PNG), plus 4 KiB of
 /// headers each.
 pub fn staged_bytes_every_step(list: &DrawList) -> u64 {
-    list.steps.iter().fold(0u64, |total, step| {
-        let t = &list.targets[step.target()];
-        let pixels = u64::from(t.width) * u64::from(t.height);
-        let channels = t.format.channels() as u64;
-        total.saturating_add(pixels * (4 * channels + 3) + 2 * 4096)
-    })
+    list.steps
+        .iter()
+        .flat_map(changed_targets)
+        .fold(0u64, |total, t| {
+            let t = &list.targets[t];
+            let pixels = u64::from(t.width) * u64::from(t.height);
+            let channels = t.format.channels() as u64;
+            total.saturating_add(pixels * (4 * channels + 3) + 2 * 4096)
+        })
+}
+
+/// The targets a step changes: the one it clears, reduces or draws into,
+/// and a draw's oC1–oC3 targets.
+pub fn changed_targets(step: &Step) -> Vec<usize> {
+    let mut out = vec![step.target()];
+    if let Step::Draw(d) = step {
+        out.extend(d.pixel.outputs.iter().flatten().map(|&(t, _)| t));
+    }
+    out
 }
 
 /// What one step did.
@@ -364,6 +378,17 @@ pub fn run(
     settings: &Settings,
     observe: &mut dyn FnMut(&StepReport, &[TargetState]),
 ) -> Result<(Vec<StepReport>, Vec<TargetState>), RenderError> {
+    run_with_history(list, settings, observe, None)
+}
+
+/// [`run`], recording the history of the pixels `history` watches
+/// ([`history::Recorder`]) as the steps run.
+pub fn run_with_history(
+    list: &DrawList,
+    settings: &Settings,
+    observe: &mut dyn FnMut(&StepReport, &[TargetState]),
+    mut history: Option<&mut history::Recorder>,
+) -> Result<(Vec<StepReport>, Vec<TargetState>), RenderError> {
     let pixels = pixel_work(list);
     if pixels > settings.budget.max_pixels {
         return Err(RenderError::Budget(format!(
@@ -400,6 +425,9 @@ pub fn run(
         .collect::<Result<_, _>>()?;
     let mut reports = Vec::with_capacity(list.steps.len());
     for (index, step) in list.steps.iter().enumerate() {
+        if let Some(h) = history.as_deref_mut() {
+            h.begin_step(list, index, &states);
+        }
         let report = match step {
             Step::Clear { target, color } => {
                 let state = &mut states[*target];
@@ -429,9 +457,16 @@ pub fn run(
                 let mut limits = settings.limits;
                 let list_bound = limits.max_executed_total > executed_left;
                 limits.max_executed_total = limits.max_executed_total.min(executed_left);
-                let (detail, executed) =
-                    draw(list, compiled[d.shader].as_ref(), d, &mut states, settings, limits)
-                        .map_err(|e| match e {
+                let watch = history.as_deref_mut();
+                let (detail, executed) = draw(
+                    list,
+                    compiled[d.shader].as_ref(),
+                    d,
+                    &mut states,
+                    (settings, limits),
+                    watch,
+                )
+                .map_err(|e| match e {
                             DrawFailure::Emu(EmuError::TotalExecutedLimit { .. }) if list_bound => {
                                 RenderError::Budget(format!(
                                     "steps[{index}]: the list's draws execute more than {} instruction slots in all (raise it with --max-list-executed)",
@@ -444,6 +479,9 @@ pub fn run(
                 report(index, "draw", list, d.target, detail)
             }
         };
+        if let Some(h) = history.as_deref_mut() {
+            h.end_step(index, &states);
+        }
         observe(&report, &states);
         reports.push(report);
     }
@@ -487,8 +525,8 @@ fn draw(
     compiled: Option<&Compiled>,
     d: &DrawStep,
     states: &mut [TargetState],
-    settings: &Settings,
-    limits: emu::EmuLimits,
+    (settings, limits): (&Settings, emu::EmuLimits),
+    mut watch: Option<&mut history::Recorder>,
 ) -> Result<(StepDetail, u64), DrawFailure> {
     let threads = settings.threads;
     let spec = &list.targets[d.target];
@@ -500,7 +538,7 @@ fn draw(
         ))
     })?;
     if let Some(g) = &d.geometry {
-        return geometry_draw(list, compiled, d, g, states, settings, limits);
+        return geometry_draw(list, compiled, d, g, states, (settings, limits), watch);
     }
     let mut emu_draw = Draw::new(spec.width, spec.height);
     emu_draw.limits = limits;
@@ -525,6 +563,9 @@ fn draw(
         other => DrawFailure::Message(other.to_string()),
     })?;
     let counted = matches!(settings.backend, backend::Backend::Emulator);
+    if let Some(w) = watch.as_deref_mut() {
+        w.full_screen(shader.loaded.shader.program(), &emu_draw, &out, &d.pixel);
+    }
     let oc0 = out.color.first().and_then(|c| c.as_deref());
     let mut killed = out.killed.clone();
     d.pixel.apply(oc0, &mut killed, spec.width);
@@ -551,8 +592,17 @@ fn draw(
     drop(emu_draw);
     let state = &mut states[d.target];
     let merged = match out.color.first().and_then(|c| c.as_ref()) {
-        Some(colors) => merge::merge(&mut state.target, colors, &out.killed, &d.output)
-            .map_err(|e| DrawFailure::Message(e.to_string()))?,
+        Some(colors) => {
+            if let Some(w) = watch.as_deref_mut() {
+                w.before_merge(0, &state.target, colors);
+            }
+            let stats = merge::merge(&mut state.target, colors, &out.killed, &d.output)
+                .map_err(|e| DrawFailure::Message(e.to_string()))?;
+            if let Some(w) = watch.as_deref_mut() {
+                w.after_merge(0, &state.target);
+            }
+            stats
+        }
         // No oC0 written: the target is not updated.
         None => MergeStats {
             written: 0,
@@ -572,8 +622,14 @@ fn draw(
             blend: d.output.blend,
             write: *write,
         };
+        if let Some(w) = watch.as_deref_mut() {
+            w.before_merge(k + 1, &state.target, colors);
+        }
         merge::merge(&mut state.target, colors, &out.killed, &output)
             .map_err(|e| DrawFailure::Message(format!("oC{}: {e}", k + 1)))?;
+        if let Some(w) = watch.as_deref_mut() {
+            w.after_merge(k + 1, &state.target);
+        }
         state.mips = None;
     }
     let detail = draw_detail(shader, executed_static, executed, merged, None, findings);
@@ -626,11 +682,11 @@ fn geometry_draw(
     d: &DrawStep,
     g: &geometry::Geometry,
     states: &mut [TargetState],
-    settings: &Settings,
-    limits: emu::EmuLimits,
+    (settings, limits): (&Settings, emu::EmuLimits),
+    watch: Option<&mut history::Recorder>,
 ) -> Result<(StepDetail, u64), DrawFailure> {
     let shader = &list.shaders[d.shader];
-    let drawn = geometry::run::draw(list, compiled, d, g, states, settings, limits)?;
+    let drawn = geometry::run::draw(list, compiled, d, g, states, (settings, limits), watch)?;
     let executed_static = static_count(shader, &d.constants)?;
     let executed = drawn.executed.map(|(min, max)| Range { min, max });
     // A GPU counts nothing: the list's budget is charged the cost model's

@@ -24,6 +24,7 @@ use crate::core::merge::{self, MergeStats, OutputState};
 use crate::core::raster::clip::{self, ClipVertex, VIEW_VOLUME};
 use crate::core::raster::depth::DepthFormat;
 use crate::core::raster::{self, Rect, ScreenVertex, Triangle, Viewport};
+use crate::jobs::render::history::{self, Recorder, Verdict};
 use crate::jobs::render::{DrawFailure, DrawList, DrawStep, Settings, TargetState};
 
 /// A target's depth-stencil surface: one stored depth per pixel.
@@ -298,6 +299,8 @@ struct Pass<'t> {
     depth: Option<(DepthBuffer, DepthState)>,
     pending: Pending,
     merged: MergeStats,
+    /// The pixels whose history is being recorded, if any.
+    watch: Option<&'t mut Recorder>,
 }
 
 impl Pass<'_> {
@@ -309,8 +312,14 @@ impl Pass<'_> {
         let skip: Vec<bool> = self.pending.held.iter().map(|h| !h).collect();
         for (k, t) in self.targets.iter_mut().enumerate() {
             let Some((state, output)) = t else { continue };
+            if let Some(w) = self.watch.as_deref_mut() {
+                w.before_merge(k, &state.target, &self.pending.colors[k]);
+            }
             let stats = merge::merge(&mut state.target, &self.pending.colors[k], &skip, output)
                 .map_err(|e| DrawFailure::Message(format!("oC{k}: {e}")))?;
+            if let Some(w) = self.watch.as_deref_mut() {
+                w.after_merge(k, &state.target);
+            }
             if k == 0 {
                 self.merged.written += stats.written;
             }
@@ -340,29 +349,16 @@ impl Pass<'_> {
             self.flush()?;
         }
         for i in (0..window.depth.len()).filter(|&i| covered(i)) {
-            if out.killed[i] {
-                self.merged.killed += 1;
-                continue;
-            }
-            let oc0 = out.color.first().and_then(|c| c.as_ref()).map(|c| c[i]);
-            if let (Some(a), Some(c)) = (alpha, oc0) {
-                if !a.passes(c[3]) {
-                    continue;
-                }
-            }
             let t = index(i);
-            if let Some((buffer, state)) = &mut self.depth {
-                let z = out
-                    .depth
-                    .as_ref()
-                    .map_or(window.depth[i], |d| f64::from(d[i]));
-                let z = buffer.format.store(z);
-                if !state.func.passes(z, buffer.values[t]) {
-                    continue;
-                }
-                if state.write {
-                    buffer.values[t] = z;
-                }
+            let verdict = self.test(window, out, alpha, (i, t));
+            if let Some(w) = self.watch.as_deref_mut() {
+                w.verdict(t, &verdict);
+            }
+            if verdict.killed {
+                self.merged.killed += 1;
+            }
+            if !verdict.passed() {
+                continue;
             }
             for (k, colors) in out.color.iter().enumerate() {
                 if let Some(c) = colors {
@@ -376,6 +372,60 @@ impl Pass<'_> {
     }
 }
 
+impl Pass<'_> {
+    /// Pixel `i` of the window (`t` of the target) through `texkill`, the
+    /// alpha test and the depth test, in Direct3D 9's order, writing its
+    /// depth where it passes; the first test that fails ends it.
+    fn test(
+        &mut self,
+        window: &raster::triangle::Window,
+        out: &DrawOutput,
+        alpha: Option<super::super::pixel_state::AlphaTest>,
+        (i, t): (usize, usize),
+    ) -> Verdict {
+        let mut verdict = Verdict {
+            killed: out.killed[i],
+            alpha: None,
+            depth: None,
+        };
+        if verdict.killed {
+            return verdict;
+        }
+        let oc0 = out.color.first().and_then(|c| c.as_ref()).map(|c| c[i]);
+        if let (Some(a), Some(c)) = (alpha, oc0) {
+            verdict.alpha = Some((c[3], a.passes(c[3])));
+            if !a.passes(c[3]) {
+                return verdict;
+            }
+        }
+        if let Some((buffer, state)) = &mut self.depth {
+            let z = out
+                .depth
+                .as_ref()
+                .map_or(window.depth[i], |d| f64::from(d[i]));
+            let z = buffer.format.store(z);
+            let stored = buffer.values[t];
+            let passed = state.func.passes(z, stored);
+            if passed && state.write {
+                buffer.values[t] = z;
+            }
+            verdict.depth = Some(history::DepthVerdict {
+                z,
+                from: if out.depth.is_some() {
+                    "oDepth"
+                } else {
+                    "interpolated"
+                },
+                stored,
+                func: history::depth_func(state.func),
+                passed,
+                written: passed && state.write,
+            });
+        }
+        verdict
+    }
+}
+
 /// Runs draw `d` of geometry `g` and merges it into its targets.
 pub(crate) fn draw(
     list: &DrawList,
@@ -383,8 +433,8 @@ pub(crate) fn draw(
     d: &DrawStep,
     g: &Geometry,
     states: &mut [TargetState],
-    settings: &Settings,
-    limits: emu::EmuLimits,
+    (settings, limits): (&Settings, emu::EmuLimits),
+    mut watch: Option<&mut Recorder>,
 ) -> Result<Drawn, DrawFailure> {
     let spec = &list.targets[d.target];
     let (width, height) = (spec.width, spec.height);
@@ -393,6 +443,20 @@ pub(crate) fn draw(
     let viewport = g.viewport.unwrap_or_else(|| Viewport::whole(width, height));
     let tris = triangles(g, &stage, &viewport).map_err(DrawFailure::Message)?;
     let clip_rect = clip_rect(g, &viewport, width, height);
+    if let Some(w) = watch.as_deref_mut() {
+        // The triangles the cull mode dropped, to say why a pixel was missed.
+        let all = Geometry {
+            cull: raster::Cull::None,
+            ..g.clone()
+        };
+        let culled: Vec<Triangle> = triangles(&all, &stage, &viewport)
+            .map_err(DrawFailure::Message)?
+            .into_iter()
+            .map(|(t, _, _)| t)
+            .filter(|t| g.cull.drops(t.face))
+            .collect();
+        w.geometry(&tris, &culled, viewport.rect(), g.scissor);
+    }
     // The targets this draw writes leave `states` while it runs, so that
     // the samplers may borrow the others (a draw never samples its own).
     let mut outs: Vec<Option<(usize, OutputState)>> = vec![Some((d.target, d.output))];
@@ -429,6 +493,7 @@ pub(crate) fn draw(
                 any: false,
             },
             merged: MergeStats::default(),
+            watch,
         };
         let drawn = match settings_gpu(&settings.backend)? {
             Some(device) => {
@@ -556,7 +621,7 @@ fn shade_all(
         shaded: 0,
     };
     let mut pixels_left = settings.budget.max_pixels;
-    for (tri, provoking, _) in tris {
+    for (k, (tri, provoking, _)) in tris.iter().enumerate() {
         if clip_rect.is_empty() {
             break;
         }
@@ -607,6 +672,10 @@ fn shade_all(
             .total
             .saturating_add(out.quad_executed.iter().sum::<u64>());
         add_sites(&mut drawn.gradients, &out.gradients);
+        if let Some(w) = pass.watch.as_deref_mut() {
+            let program = list.shaders[d.shader].loaded.shader.program();
+            w.primitive(program, (k, tri, *provoking), &window, &out);
+        }
         pass.take(&window, &out, d.pixel.alpha_test)?;
     }
     Ok(drawn)
