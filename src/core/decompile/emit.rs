@@ -5,6 +5,7 @@
 
 use super::expr::{self, Ctx, Pending};
 use super::fold;
+use super::repeat;
 use super::DecompileError;
 use crate::core::ir::{Instruction, Shader};
 use crate::core::isa::{Opcode, RegFile, SamplerType};
@@ -56,7 +57,37 @@ pub(crate) fn statements(
     is_main: bool,
     body: &mut Body,
 ) -> Result<(), DecompileError> {
-    let end = range.end;
+    // blocks written out several times in a row are one loop (`repeat.rs`);
+    // values are folded within the code between them and within a block
+    let depth = body.reps + ctx.counters.len();
+    let mut at = range.start;
+    for r in repeat::find(ins, range.clone(), depth) {
+        straight(ctx, shader, ins, at..r.start, range.end, false, body)?;
+        let n = format!("n{}", body.reps);
+        body.reps += 1;
+        body.open(format!(
+            "[loop] for (int {n} = 0; {n} < {}; {n}++)",
+            r.count
+        ));
+        statements(ctx, shader, ins, r.block(), false, body)?;
+        body.reps -= 1;
+        body.close();
+        at = r.end();
+    }
+    straight(ctx, shader, ins, at..range.end, range.end, is_main, body)
+}
+
+/// Writes instructions `range`, folding values within it, where `end` is
+/// the end of the function's code (a `ret` there is implied).
+fn straight(
+    ctx: &mut Ctx,
+    shader: &Shader,
+    ins: &[Instruction],
+    range: std::ops::Range<usize>,
+    end: usize,
+    is_main: bool,
+    body: &mut Body,
+) -> Result<(), DecompileError> {
     let folds = fold::plan(shader, ins, range.clone(), is_main);
     for i in range {
         let x = &ins[i];

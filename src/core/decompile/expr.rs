@@ -521,6 +521,16 @@ fn matrix(ctx: &Ctx, ins: &Instruction, mask: &[usize]) -> Result<String, Decomp
     let a = ctx.operand(&ins.src[0], &rows)?;
     let n = matrix_rows(ins.op).unwrap_or(0);
     let m = ins.src[1];
+    if m.swizzle == super::matrix::CHAIN {
+        let (name, by_rows) = super::matrix::whole(ctx.names, m.reg.index, mask.len() as u8, n)
+            .ok_or_else(|| DecompileError::Unsupported("a sum of matrix registers".into()))?;
+        let a = if atomic(&a) { a } else { format!("({a})") };
+        return Ok(if by_rows {
+            format!("mul({a}, {name})")
+        } else {
+            format!("mul({name}, {a})")
+        });
+    }
     let whole =
         (m.reg.file == RegFile::Const && m.relative.is_none() && m.modifier == SrcMod::None)
             .then(|| super::matrix::whole(ctx.names, m.reg.index, rows.len() as u8, n))

@@ -22,6 +22,7 @@ mod fold;
 mod matrix;
 mod names;
 mod reduce;
+mod repeat;
 
 use crate::core::bytecode::ctab::ConstantTable;
 use crate::core::ir::{Instruction, Shader};

@@ -29,10 +29,10 @@ float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
             r3 = tex2Dlod(s3, r1);
             r2.y = dot(r0.xyz, c6.xyz);
             r2.xy = max(r2.xy, 0.0);
-            r2.y = r2.y * r2.y;
-            r2.y = r2.y * r2.y;
-            r2.y = r2.y * r2.y;
-            r2.y = (r2.y * r2.y) * r3.w;
+            [loop] for (int n0 = 0; n0 < 4; n0++) {
+                r2.y = r2.y * r2.y;
+            }
+            r2.y = r2.y * r3.w;
             r4.xyz = r3.xyz * r2.x + r2.y;
         }
     }

@@ -26,10 +26,10 @@ float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
             r3 = tex2D(s3, r1.xy);
             r2.y = dot(r0.xyz, float3(0.26504, 0.3313, 0.90554));
             r2.xy = max(r2.xy, 0.0);
-            r2.y = r2.y * r2.y;
-            r2.y = r2.y * r2.y;
-            r2.y = r2.y * r2.y;
-            r2.y = (r2.y * r2.y) * r3.w;
+            [loop] for (int n0 = 0; n0 < 4; n0++) {
+                r2.y = r2.y * r2.y;
+            }
+            r2.y = r2.y * r3.w;
             r4.xyz = r3.xyz * r2.x + r2.y;
         }
     }

@@ -6,14 +6,9 @@ float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1) : COLOR
 {
     float4 oC0 = 0;
     float4 r0 = 0, r1 = 0, r2 = 0;
-    r0.xyz = colBones[1]._m00_m10_m20 * texcoord0.x + (colBones[1]._m01_m11_m21 * texcoord0.y);
-    r0.xyz = colBones[1]._m03_m13_m23 * texcoord0.w + (colBones[1]._m02_m12_m22 * texcoord0.z + r0.xyz);
-    r1.xyz = colBones[0]._m02_m12_m22 * texcoord0.z + (colBones[0]._m00_m10_m20 * texcoord0.x + (colBones[0]._m01_m11_m21 * texcoord0.y));
-    r0.xyz = (colBones[0]._m03_m13_m23 * texcoord0.w + r1.xyz) * texcoord1.x + (r0.xyz * texcoord1.y);
-    r1.xyz = colBones[2]._m02_m12_m22 * texcoord0.z + (colBones[2]._m00_m10_m20 * texcoord0.x + (colBones[2]._m01_m11_m21 * texcoord0.y));
-    r0.xyz = (colBones[2]._m03_m13_m23 * texcoord0.w + r1.xyz) * texcoord1.z + r0.xyz;
-    r1.xyz = colBones[3]._m02_m12_m22 * texcoord0.z + (colBones[3]._m00_m10_m20 * texcoord0.x + (colBones[3]._m01_m11_m21 * texcoord0.y));
-    r0.xyz = (colBones[3]._m03_m13_m23 * texcoord0.w + r1.xyz) * texcoord1.w + r0.xyz;
+    r0.xyz = mul(colBones[0], texcoord0) * texcoord1.x + (mul(colBones[1], texcoord0) * texcoord1.y);
+    r0.xyz = mul(colBones[2], texcoord0) * texcoord1.z + r0.xyz;
+    r0.xyz = mul(colBones[3], texcoord0) * texcoord1.w + r0.xyz;
     r1.x = dot(rowBones[1][0], texcoord0);
     r1.y = dot(rowBones[1][1], texcoord0);
     r1.z = dot(rowBones[1][2], texcoord0);

@@ -13,11 +13,9 @@ float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
     float4 oC0 = 0;
     float4 r0 = 0, r1 = 0, r2 = 0;
-    r0 = texcoord0.x * Ident[0] + (Ident[1] * texcoord0.y);
-    r0 = texcoord0.w * Ident[3] + (texcoord0.z * Ident[2] + r0);
     r1.xyz = Pair.y * Colour;
     r1.w = Pair.y * Pair.x;
-    r0 = (r0 * Vec) * Scalar + r1;
+    r0 = (mul(texcoord0, Ident) * Vec) * Scalar + r1;
     r0 = -Count.x >= 0.0 ? r0 : (r0 + Table[0]);
     r2.x = -Count.x >= 0.0 ? 0.0 : 1.0;
     r2.y = r2.x - Count.x;

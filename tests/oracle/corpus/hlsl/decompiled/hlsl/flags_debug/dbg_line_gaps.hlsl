@@ -7,14 +7,10 @@ float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
     float4 r0 = 0, r1 = 0;
     r0 = k * texcoord0;
     r1 = r0 + k;
-    r0 = r0 * r1;
-    r1 = r1 + r0;
-    r0 = r0 * r1;
-    r1 = r1 + r0;
-    r0 = r0 * r1;
-    r1 = r1 + r0;
-    r0 = r0 * r1;
-    r1 = r1 + r0;
+    [loop] for (int n0 = 0; n0 < 4; n0++) {
+        r0 = r0 * r1;
+        r1 = r1 + r0;
+    }
     r0 = r0 * r1;
     oC0 = (r1 + r0);
     return oC0;

@@ -5,7 +5,7 @@ float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
     float4 oC0 = 0;
     float4 r0 = 0;
-    oC0.xyz = M._m02_m12_m22 * texcoord0.z + (M._m00_m10_m20 * texcoord0.x + (M._m01_m11_m21 * texcoord0.y));
+    oC0.xyz = mul(M, texcoord0.xyz);
     oC0.w = 1.0;
     return oC0;
 }

@@ -29,10 +29,7 @@ float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
     r0 = r0 + r2;
     r1 = (g_f1 + g_f2.xyxy) + g_h4;
     r2 = texcoord0.xyxx * float4(1.0, 1.0, 0.0, 0.0) + float4(0.0, 0.0, 1.0, 1.0);
-    r3.x = dot(g_R34[0], r2);
-    r3.y = dot(g_R34[1], r2);
-    r3.z = dot(g_R34[2], r2);
-    r0.xyz = r0.xyz + r3.xyz;
+    r0.xyz = r0.xyz + mul(g_R34, r2);
     r3.y = 0.0;
     r4.x = dot(texcoord0.xy, g_M22._m00_m10) + r3.y;
     r4.y = dot(texcoord0.xy, g_M22._m01_m11) + r3.y;

@@ -6,12 +6,8 @@ float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1) : COLOR
 {
     float4 oC0 = 0;
     float4 r0 = 0, r1 = 0;
-    r0.x = dot(normalMatrix._m00_m10_m20, texcoord1.xyz);
-    r0.y = dot(normalMatrix._m01_m11_m21, texcoord1.xyz);
-    r0.z = dot(normalMatrix._m02_m12_m22, texcoord1.xyz);
-    r1.xyz = normalize(r0.xyz);
-    r0.xyz = normalMatrix._m00_m10_m20 * texcoord1.x + (normalMatrix._m01_m11_m21 * texcoord1.y);
-    r0.xyz = (normalMatrix._m02_m12_m22 * texcoord1.z + r0.xyz) * r1.xyz;
+    r1.xyz = normalize(mul(texcoord1.xyz, normalMatrix));
+    r0.xyz = mul(normalMatrix, texcoord1.xyz) * r1.xyz;
     r1.x = dot(texcoord0.xyz, worldMatrix[0].xyz);
     r1.y = dot(texcoord0.xyz, worldMatrix[1].xyz);
     r1.z = dot(texcoord0.xyz, worldMatrix[2].xyz);

@@ -11,22 +11,10 @@ float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
     r0.zw = c0.z;
     r3.yzw = texcoord0.x * c1.zwz + c1.yzx;
     for (int n0 = 0; n0 < int4(36, 0, 0, 0).x; n0++) {
-        r3.x = tex2D(s0, r0.xy).x;
-        r0.xw = r0.xw + r3.wx;
-        r3.x = tex2D(s0, r0.xy).x;
-        r0.xw = r0.xw + r3.wx;
-        r3.x = tex2D(s0, r0.xy).x;
-        r0.xw = r0.xw + r3.wx;
-        r3.x = tex2D(s0, r0.xy).x;
-        r0.xw = r0.xw + r3.wx;
-        r3.x = tex2D(s0, r0.xy).x;
-        r0.xw = r0.xw + r3.wx;
-        r3.x = tex2D(s0, r0.xy).x;
-        r0.xw = r0.xw + r3.wx;
-        r3.x = tex2D(s0, r0.xy).x;
-        r0.xw = r0.xw + r3.wx;
-        r3.x = tex2D(s0, r0.xy).x;
-        r0.xw = r0.xw + r3.wx;
+        [loop] for (int n1 = 0; n1 < 8; n1++) {
+            r3.x = tex2D(s0, r0.xy).x;
+            r0.xw = r0.xw + r3.wx;
+        }
         r0.xy = r0.xy * c1.zw + r3.zy;
     }
     r0.x = r0.w * c0.x + c0.y;
