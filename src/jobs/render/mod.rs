@@ -364,16 +364,7 @@ pub fn run(
     settings: &Settings,
     observe: &mut dyn FnMut(&StepReport, &[TargetState]),
 ) -> Result<(Vec<StepReport>, Vec<TargetState>), RenderError> {
-    let pixels = pixel_work(list);
-    if pixels > settings.budget.max_pixels {
-        return Err(RenderError::Budget(format!(
-            "the list's steps touch {} pixels in all, over the budget of {} (raise it with --max-list-pixels {pixels})",
-            crate::core::numbers::thousands(pixels),
-            crate::core::numbers::thousands(settings.budget.max_pixels)
-        )));
-    }
-    let mut executed_left = settings.budget.max_executed;
-    let mut states: Vec<TargetState> = list
+    let states: Vec<TargetState> = list
         .targets
         .iter()
         .map(|t| TargetState {
@@ -382,6 +373,37 @@ pub fn run(
             depth: None,
         })
         .collect();
+    run_on(list, settings, states, observe)
+}
+
+/// [`run`] on targets that already hold something (one per
+/// [`DrawList::targets`], each of its size and format): the steps draw
+/// over them rather than over black, as a device's surfaces keep what
+/// earlier draws left (`ps30 shader-test` runs a file's draws this way).
+pub fn run_on(
+    list: &DrawList,
+    settings: &Settings,
+    mut states: Vec<TargetState>,
+    observe: &mut dyn FnMut(&StepReport, &[TargetState]),
+) -> Result<(Vec<StepReport>, Vec<TargetState>), RenderError> {
+    let pixels = pixel_work(list);
+    if pixels > settings.budget.max_pixels {
+        return Err(RenderError::Budget(format!(
+            "the list's steps touch {} pixels in all, over the budget of {} (raise it with --max-list-pixels {pixels})",
+            crate::core::numbers::thousands(pixels),
+            crate::core::numbers::thousands(settings.budget.max_pixels)
+        )));
+    }
+    let fits = states.len() == list.targets.len()
+        && states.iter().zip(&list.targets).all(|(s, t)| {
+            (s.target.width, s.target.height, s.target.format) == (t.width, t.height, t.format)
+        });
+    if !fits {
+        return Err(RenderError::Budget(
+            "the targets given do not match the draw list's".into(),
+        ));
+    }
+    let mut executed_left = settings.budget.max_executed;
     // Vertex shaders run in the vertex stage, through the IR.
     let compiled: Vec<Option<Compiled>> = list
         .shaders
