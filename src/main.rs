@@ -35,6 +35,7 @@ fn main() -> ExitCode {
         Command::Translate(args) => cli::translate::run(args, &ui),
         Command::Profile(args) => cli::profile::run(args, &ui),
         Command::Shaders(args) => cli::shaders::run(args, &ui),
+        Command::ShaderTest(args) => cli::shader_test::run(args, &ui),
         Command::Render(args) => cli::render::run(args, &ui),
         Command::Study(args) => cli::study::run(args, &ui),
         Command::Verify(args) => cli::verify::run(args, &ui),

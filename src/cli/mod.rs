@@ -27,6 +27,7 @@ pub mod plan;
 pub mod profile;
 pub mod render;
 pub mod run;
+pub mod shader_test;
 pub mod shaders;
 pub mod study;
 pub mod tonemap;
@@ -119,6 +120,11 @@ pub enum Command {
     )]
     Profile(profile::Args),
     /// List the shaders bundled in the binary, or print one.
+    #[command(
+        name = "shader-test",
+        after_help = "Runs vkd3d's .shader_test files as vkd3d's Direct3D 9 runner does: the lowest shader model\nthe file's [require] allows within 2.0-3.0, its HLSL compiled by Microsoft's compiler\n(tools/oracle/setup.sh installs it; PS30_ORACLE names its folder), its draws on the\nemulator, every probe checked with its ulps. docs/shader-test.md says what is run.\n\nExit codes: 0 every probe that ran passed; 1 a probe failed; 2 bad input or no compiler.\n\nExamples:\n  ps30 shader-test tests/shader_test/uniforms.shader_test\n  ps30 shader-test vkd3d/tests/hlsl --json"
+    )]
+    ShaderTest(shader_test::Args),
     #[command(
         after_help = "Every command that reads a shader takes a bundled name (family:variant) or a file path.\n\nExamples:\n  ps30 shaders\n  ps30 shaders article:loop\n  ps30 shaders --json"
     )]

@@ -14,6 +14,7 @@
 //! * `profile` → `scenes`, `luminance`
 //! * `studies` → `render`, `luminance`, `tonemap`, `scenes`
 //! * `render` → `scenes` (its synthetic textures)
+//! * `shader_test` → `render` (its draws)
 //! * `compare` → `luminance`, `tonemap`, `gen`, `scenes` (the shaders it draws twice)
 //!
 //! [`assets`] holds the bundled HDR images, compiled in like the shaders of
@@ -39,6 +40,7 @@ pub mod outputs;
 pub mod profile;
 pub mod render;
 pub mod scenes;
+pub mod shader_test;
 pub mod studies;
 pub mod tonemap;
 pub mod verify;

@@ -15,6 +15,7 @@ pub mod plan;
 pub mod profile;
 pub mod render;
 pub mod report;
+pub mod shader_test;
 pub mod shaders;
 pub mod study;
 pub mod tonemap;

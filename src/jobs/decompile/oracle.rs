@@ -68,19 +68,49 @@ impl Oracle {
     /// Compiles `hlsl` for `profile` with entry point `main` in a fresh
     /// folder under the system's temporary folder (removed afterwards).
     pub fn compile(&self, hlsl: &str, profile: &str) -> Result<Compiled, String> {
+        let mut all = self.compile_all(&[Job {
+            hlsl,
+            profile,
+            flags: &[],
+        }])?;
+        all.pop()
+            .ok_or_else(|| "the oracle's harness gave no answer".to_string())
+    }
+
+    /// Compiles every job in one run of the harness (Wine starts once), in
+    /// a fresh folder under the system's temporary folder (removed
+    /// afterwards); the answers in the jobs' order.
+    pub fn compile_all(&self, jobs: &[Job<'_>]) -> Result<Vec<Compiled>, String> {
         let dir = scratch()?;
-        let result = self.compile_in(&dir, hlsl, profile);
+        let result = self.compile_in(&dir, jobs);
         let _ = std::fs::remove_dir_all(&dir);
         result
     }
 
-    fn compile_in(&self, dir: &Path, hlsl: &str, profile: &str) -> Result<Compiled, String> {
-        let src = dir.join("decompiled.hlsl");
-        let text = format!("// oracle: target={profile} entry=main\n{hlsl}");
-        std::fs::write(&src, text).map_err(|e| format!("{}: {e}", src.display()))?;
-        let list = dir.join("list.txt");
-        std::fs::write(&list, format!("{}\r\n", windows(&src)))
-            .map_err(|e| format!("{}: {e}", list.display()))?;
+    fn compile_in(&self, dir: &Path, jobs: &[Job<'_>]) -> Result<Vec<Compiled>, String> {
+        let mut list = String::new();
+        for (n, job) in jobs.iter().enumerate() {
+            let src = dir.join(format!("{n}.hlsl"));
+            let flags = if job.flags.is_empty() {
+                String::new()
+            } else {
+                format!(" flags={}", job.flags.join("|"))
+            };
+            let text = format!(
+                "// oracle: target={} entry=main{flags}\n{}",
+                job.profile, job.hlsl
+            );
+            std::fs::write(&src, text).map_err(|e| format!("{}: {e}", src.display()))?;
+            // Each source answers into the folder under the name the
+            // compiler's messages give it.
+            list.push_str(&format!(
+                "{}\t{}\tdecompiled.hlsl\r\n",
+                windows(&src),
+                windows(dir)
+            ));
+        }
+        let list_path = dir.join("list.txt");
+        std::fs::write(&list_path, list).map_err(|e| format!("{}: {e}", list_path.display()))?;
         let dll = self
             .dir
             .canonicalize()
@@ -88,31 +118,46 @@ impl Oracle {
         let out = Command::new("wine")
             .arg(dll.join("harness.exe"))
             .arg("hlsl")
-            .arg(windows(&list))
+            .arg(windows(&list_path))
             .arg(windows(dir))
             .env("WINEPREFIX", dll.join("prefix"))
             .env("WINEDEBUG", "-all")
             .env("WINEDLLOVERRIDES", "d3dcompiler_47=n")
             .output()
             .map_err(|e| format!("cannot run wine: {e} (tools/oracle/setup.sh installs it)"))?;
-        let read = |ext: &str| std::fs::read(dir.join(format!("decompiled.hlsl.{ext}"))).ok();
-        let rc = read("rc").ok_or_else(|| {
-            format!(
-                "the oracle's harness gave no answer (exit {}): {}",
-                out.status,
-                String::from_utf8_lossy(&out.stderr).trim()
-            )
-        })?;
-        let hresult = u32::from_str_radix(String::from_utf8_lossy(&rc).trim(), 16)
-            .map_err(|_| "the harness wrote an unreadable .rc".to_string())?;
-        Ok(Compiled {
-            hresult,
-            messages: read("err")
-                .map(|b| String::from_utf8_lossy(&b).into_owned())
-                .unwrap_or_default(),
-            bytecode: read("fxo"),
-        })
+        (0..jobs.len())
+            .map(|n| {
+                let read = |ext: &str| std::fs::read(dir.join(format!("{n}.hlsl.{ext}"))).ok();
+                let rc = read("rc").ok_or_else(|| {
+                    format!(
+                        "the oracle's harness gave no answer (exit {}): {}",
+                        out.status,
+                        String::from_utf8_lossy(&out.stderr).trim()
+                    )
+                })?;
+                let hresult = u32::from_str_radix(String::from_utf8_lossy(&rc).trim(), 16)
+                    .map_err(|_| "the harness wrote an unreadable .rc".to_string())?;
+                Ok(Compiled {
+                    hresult,
+                    messages: read("err")
+                        .map(|b| String::from_utf8_lossy(&b).into_owned())
+                        .unwrap_or_default(),
+                    bytecode: read("fxo"),
+                })
+            })
+            .collect()
     }
+}
+
+/// One source for [`Oracle::compile_all`]: HLSL with entry point `main`.
+#[derive(Clone, Copy, Debug)]
+pub struct Job<'a> {
+    /// The HLSL.
+    pub hlsl: &'a str,
+    /// The profile (`ps_3_0`, `vs_2_0`, …).
+    pub profile: &'a str,
+    /// D3DCOMPILE_* flag names without the prefix (`PACK_MATRIX_ROW_MAJOR`).
+    pub flags: &'a [&'a str],
 }
 
 /// A Linux path as Wine's Z: drive names it.

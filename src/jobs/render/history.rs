@@ -518,7 +518,7 @@ impl Recorder {
     /// cull mode dropped, and the rectangles pixels must lie in.
     pub(crate) fn geometry(
         &mut self,
-        tris: &[(Triangle, usize)],
+        tris: &[(Triangle, usize, usize)],
         culled: &[Triangle],
         viewport: Rect,
         scissor: Option<Rect>,

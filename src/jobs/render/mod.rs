@@ -387,6 +387,30 @@ pub fn run_with_history(
     list: &DrawList,
     settings: &Settings,
     observe: &mut dyn FnMut(&StepReport, &[TargetState]),
+    history: Option<&mut history::Recorder>,
+) -> Result<(Vec<StepReport>, Vec<TargetState>), RenderError> {
+    let states: Vec<TargetState> = list
+        .targets
+        .iter()
+        .map(|t| TargetState {
+            target: RenderTarget::new(t.width, t.height, t.format),
+            mips: None,
+            depth: None,
+        })
+        .collect();
+    run_on(list, settings, states, observe, history)
+}
+
+/// [`run`] on targets that already hold something (one per
+/// [`DrawList::targets`], each of its size and format): the steps draw
+/// over them rather than over black, as a device's surfaces keep what
+/// earlier draws left (`ps30 shader-test` runs a file's draws this way),
+/// recording the history of the pixels `history` watches.
+pub fn run_on(
+    list: &DrawList,
+    settings: &Settings,
+    mut states: Vec<TargetState>,
+    observe: &mut dyn FnMut(&StepReport, &[TargetState]),
     mut history: Option<&mut history::Recorder>,
 ) -> Result<(Vec<StepReport>, Vec<TargetState>), RenderError> {
     let pixels = pixel_work(list);
@@ -397,16 +421,16 @@ pub fn run_with_history(
             crate::core::numbers::thousands(settings.budget.max_pixels)
         )));
     }
+    let fits = states.len() == list.targets.len()
+        && states.iter().zip(&list.targets).all(|(s, t)| {
+            (s.target.width, s.target.height, s.target.format) == (t.width, t.height, t.format)
+        });
+    if !fits {
+        return Err(RenderError::Budget(
+            "the targets given do not match the draw list's".into(),
+        ));
+    }
     let mut executed_left = settings.budget.max_executed;
-    let mut states: Vec<TargetState> = list
-        .targets
-        .iter()
-        .map(|t| TargetState {
-            target: RenderTarget::new(t.width, t.height, t.format),
-            mips: None,
-            depth: None,
-        })
-        .collect();
     // Vertex shaders run in the vertex stage, through the IR.
     let compiled: Vec<Option<Compiled>> = list
         .shaders
