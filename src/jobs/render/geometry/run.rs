@@ -10,6 +10,7 @@
 //! before a triangle that covers a pixel already in it, so that blending
 //! sees every earlier triangle.
 
+use super::state::{FillMode, StencilState};
 use super::{DepthState, Geometry};
 use crate::core::emu::vertex::{self, Attribute, VertexDraw};
 use crate::core::emu::{self, Compiled, Draw, DrawOutput, EmuError, GradientSite};
@@ -18,7 +19,8 @@ use crate::core::isa::RegFile;
 use crate::core::merge::{self, MergeStats, OutputState};
 use crate::core::raster::clip::{self, ClipVertex, VIEW_VOLUME};
 use crate::core::raster::depth::DepthFormat;
-use crate::core::raster::{self, Rect, ScreenVertex, Triangle, Viewport};
+use crate::core::raster::stencil::{self, StencilOutcome};
+use crate::core::raster::{self, Face, Rect, ScreenVertex, Shape, Triangle, Viewport};
 use crate::jobs::render::{DrawFailure, DrawList, DrawStep, Settings, TargetState};
 
 /// A target's depth-stencil surface: one stored depth per pixel.
@@ -28,6 +30,9 @@ pub struct DepthBuffer {
     pub format: DepthFormat,
     /// Stored depths, row-major.
     pub values: Vec<f64>,
+    /// Stored stencil values, row-major (D3DFMT_D24S8's eight bits; 0 in
+    /// a surface without stencil).
+    pub stencil: Vec<u8>,
 }
 
 /// What a geometry draw did, for its step's report.
@@ -80,9 +85,23 @@ fn pixel_semantics(program: &Program) -> Vec<(u32, Attribute)> {
 /// screen) positions and each input slot's value per vertex.
 struct Stage {
     positions: Vec<[f64; 4]>,
+    /// Each vertex's slot values, then one more: its own point size in x
+    /// (NaN where it gives none), carried through clipping with the rest.
     values: Vec<Vec<[f64; 4]>>,
     transformed: bool,
     slots: Vec<Slot>,
+    /// Whether each slot reads a texture coordinate (a point sprite
+    /// replaces those).
+    texcoord: Vec<bool>,
+    /// No vertex shader: the fixed-function pipeline transformed the
+    /// positions (point scaling applies).
+    fixed_function: bool,
+}
+
+/// `values` with the point-size column appended.
+fn with_size(mut values: Vec<[f64; 4]>, size: Option<f32>) -> Vec<[f64; 4]> {
+    values.push([size.map_or(f64::NAN, f64::from), 0.0, 0.0, 0.0]);
+    values
 }
 
 fn widen(v: [f32; 4]) -> [f64; 4] {
@@ -109,6 +128,11 @@ fn vertex_stage(
             },
         })
         .collect();
+    let texcoord: Vec<bool> = wanted.iter().map(|(_, a)| a.usage == "texcoord").collect();
+    let psize = Attribute {
+        usage: "psize".into(),
+        index: 0,
+    };
     let n = g.vertices.count;
     let find = |usage: &str| {
         g.vertices
@@ -134,12 +158,14 @@ fn vertex_stage(
                 .find(|(b, _)| b == a)
                 .map(|(_, v)| v)
         };
+        let sizes = attr(&psize);
         let values = (0..n)
             .map(|v| {
-                wanted
+                let values = wanted
                     .iter()
                     .map(|(_, a)| attr(a).map_or([0.0; 4], |vals| widen(vals[v])))
-                    .collect()
+                    .collect();
+                with_size(values, sizes.map(|s| s[v][0]))
             })
             .collect();
         return Ok(Stage {
@@ -147,6 +173,8 @@ fn vertex_stage(
             values,
             transformed,
             slots,
+            texcoord,
+            fixed_function: !transformed,
         });
     };
     let shader = &list.shaders[vs].loaded.shader;
@@ -173,96 +201,200 @@ fn vertex_stage(
         )
     })?;
     let columns: Vec<Option<usize>> = wanted.iter().map(|(_, a)| column(a)).collect();
+    let size_column = column(&psize);
     Ok(Stage {
         positions: out.values.iter().map(|v| widen(v[position])).collect(),
         values: out
             .values
             .iter()
             .map(|v| {
-                columns
+                let values = columns
                     .iter()
                     .map(|c| c.map_or([0.0; 4], |c| widen(v[c])))
-                    .collect()
+                    .collect();
+                with_size(values, size_column.map(|c| v[c][0]))
             })
             .collect(),
         transformed: false,
         slots,
+        texcoord,
+        fixed_function: false,
     })
 }
 
-/// The screen triangles of the draw, each with its provoking vertex, in
-/// drawing order: assembled, clipped (positions in clip space), divided,
-/// mapped through the viewport, culled.
-fn triangles(
+/// The primitives of the draw on screen, each with its provoking vertex,
+/// in drawing order: assembled, clipped (positions in clip space), divided,
+/// mapped through the viewport, culled; points as two triangles, lines
+/// with the pixels of `limit` they cover.
+fn shapes(
     g: &Geometry,
     stage: &Stage,
     viewport: &Viewport,
-) -> Result<Vec<(Triangle, usize)>, String> {
+    limit: Rect,
+) -> Result<Vec<(Shape, usize)>, String> {
     let order: Vec<usize> = match &g.indices {
         Some(ix) => ix.iter().map(|&i| i as usize).collect(),
         None => (0..stage.positions.len()).collect(),
     };
     let planes: Vec<[f64; 4]> = VIEW_VOLUME.iter().chain(&g.clip_planes).copied().collect();
-    let screen = |pos: [f64; 4], values: Vec<[f64; 4]>| {
-        let [x, y, z, rhw] = if stage.transformed {
-            pos
+    let at = Setup {
+        g,
+        stage,
+        viewport,
+        limit,
+    };
+    let mut out = Vec::new();
+    for prim in raster::assemble(g.primitive, order.len())? {
+        let [a, b, c] = prim.corners.map(|i| order[i]);
+        let provoking = order[prim.provoking];
+        let corner = |i: usize| ClipVertex {
+            pos: stage.positions[i],
+            values: stage.values[i].clone(),
+        };
+        if g.primitive == raster::Primitive::PointList {
+            let p = stage.positions[a];
+            if stage.transformed || clip::inside(&planes, &p) {
+                out.extend(at.point(corner(a)).into_iter().map(|t| (t, provoking)));
+            }
+            continue;
+        }
+        if g.primitive.is_line() {
+            out.extend(at.line(corner(a), corner(b)).map(|l| (l, provoking)));
+            continue;
+        }
+        let polygon = if stage.transformed {
+            vec![corner(a), corner(b), corner(c)]
         } else {
-            viewport.to_screen(pos)
+            clip::clip(vec![corner(a), corner(b), corner(c)], &planes)
+        };
+        for shape in at.polygon(polygon) {
+            out.push((shape, provoking));
+        }
+    }
+    Ok(out)
+}
+
+/// What the set-up of one primitive needs.
+struct Setup<'a> {
+    g: &'a Geometry,
+    stage: &'a Stage,
+    viewport: &'a Viewport,
+    limit: Rect,
+}
+
+impl Setup<'_> {
+    fn screen(&self, v: ClipVertex) -> ScreenVertex {
+        let [x, y, z, rhw] = if self.stage.transformed {
+            v.pos
+        } else {
+            self.viewport.to_screen(v.pos)
         };
         ScreenVertex {
             x,
             y,
             z,
             rhw,
-            values,
+            values: v.values,
         }
-    };
-    let mut out = Vec::new();
-    for prim in raster::assemble(g.primitive, order.len())? {
-        let [a, b, c] = prim.corners.map(|i| order[i]);
-        let provoking = order[prim.provoking];
-        if g.primitive == raster::Primitive::PointList {
-            let p = stage.positions[a];
-            if !stage.transformed && !clip::inside(&planes, &p) {
-                continue;
-            }
-            let centre = screen(p, stage.values[a].clone());
-            let h = g.point_size / 2.0;
-            let corner = |dx: f64, dy: f64| ScreenVertex {
+    }
+
+    /// A point: the square of its size about it, as two triangles, with a
+    /// sprite's texture coordinates at its corners.
+    fn point(&self, v: ClipVertex) -> Vec<Shape> {
+        let points = &self.g.state.points;
+        let own = v.values.last().map(|s| s[0]).filter(|s| !s.is_nan());
+        let eye = self.stage.fixed_function.then(|| {
+            (
+                [v.pos[0], v.pos[1], v.pos[2]],
+                f64::from(self.viewport.height),
+            )
+        });
+        let h = points.size_of(own, eye) / 2.0;
+        let centre = self.screen(v);
+        let corner = |k: usize, dx: f64, dy: f64| {
+            let mut c = ScreenVertex {
                 x: centre.x + dx,
                 y: centre.y + dy,
                 ..centre.clone()
             };
-            let (tl, tr, bl, br) = (corner(-h, -h), corner(h, -h), corner(-h, h), corner(h, h));
-            out.extend(Triangle::new(tl, tr.clone(), bl.clone()).map(|t| (t, provoking)));
-            out.extend(Triangle::new(tr, br, bl).map(|t| (t, provoking)));
-            continue;
-        }
-        let corners = [a, b, c].map(|i| ClipVertex {
-            pos: stage.positions[i],
-            values: stage.values[i].clone(),
-        });
-        let polygon = if stage.transformed {
-            corners.to_vec()
-        } else {
-            clip::clip(corners.to_vec(), &planes)
-        };
-        let on_screen: Vec<ScreenVertex> = polygon
-            .into_iter()
-            .map(|v| screen(v.pos, v.values))
-            .collect();
-        for i in 1..on_screen.len().saturating_sub(1) {
-            let t = Triangle::new(
-                on_screen[0].clone(),
-                on_screen[i].clone(),
-                on_screen[i + 1].clone(),
-            );
-            if let Some(t) = t.filter(|t| !g.cull.drops(t.face)) {
-                out.push((t, provoking));
+            if points.sprite {
+                for (value, _) in c
+                    .values
+                    .iter_mut()
+                    .zip(&self.stage.texcoord)
+                    .filter(|(_, t)| **t)
+                {
+                    *value = raster::points::SPRITE_CORNERS[k];
+                }
             }
+            c
+        };
+        let (tl, tr, bl, br) = (
+            corner(0, -h, -h),
+            corner(1, h, -h),
+            corner(2, -h, h),
+            corner(3, h, h),
+        );
+        [
+            Triangle::new(tl, tr.clone(), bl.clone()),
+            Triangle::new(tr, br, bl),
+        ]
+        .into_iter()
+        .flatten()
+        .map(Shape::Triangle)
+        .collect()
+    }
+
+    /// A line, clipped against z and the user planes (x and y are the
+    /// viewport's scissor: `core/raster`'s docs say why).
+    fn line(&self, a: ClipVertex, b: ClipVertex) -> Option<Shape> {
+        let (a, b) = if self.stage.transformed {
+            (a, b)
+        } else {
+            let planes: Vec<[f64; 4]> = VIEW_VOLUME[4..]
+                .iter()
+                .chain(&self.g.clip_planes)
+                .copied()
+                .collect();
+            clip::clip_segment(a, b, &planes)?
+        };
+        let (a, b) = (self.screen(a), self.screen(b));
+        if ![a.x, a.y, b.x, b.y].iter().all(|v| v.is_finite()) {
+            return None;
+        }
+        let last = self.g.state.last_pixel;
+        Some(Shape::Line(raster::Line::new(a, b, last, self.limit)))
+    }
+
+    /// A clipped polygon, culled, as the fill mode draws it: triangles of
+    /// a fan, its edges as lines, or its vertices as points.
+    fn polygon(&self, polygon: Vec<ClipVertex>) -> Vec<Shape> {
+        let on_screen: Vec<ScreenVertex> = polygon.iter().map(|v| self.screen(v.clone())).collect();
+        let tris: Vec<Triangle> = (1..on_screen.len().saturating_sub(1))
+            .filter_map(|i| {
+                Triangle::new(
+                    on_screen[0].clone(),
+                    on_screen[i].clone(),
+                    on_screen[i + 1].clone(),
+                )
+            })
+            .collect();
+        // The polygon's facing is its fan's (all alike).
+        if tris.first().is_none_or(|t| self.g.cull.drops(t.face)) {
+            return Vec::new();
+        }
+        let last = self.g.state.last_pixel;
+        match self.g.state.fill {
+            FillMode::Solid => tris.into_iter().map(Shape::Triangle).collect(),
+            FillMode::Wireframe => (0..on_screen.len())
+                .map(|i| {
+                    let (a, b) = (&on_screen[i], &on_screen[(i + 1) % on_screen.len()]);
+                    Shape::Line(raster::Line::new(a.clone(), b.clone(), last, self.limit))
+                })
+                .collect(),
+            FillMode::Point => polygon.into_iter().flat_map(|v| self.point(v)).collect(),
         }
     }
-    Ok(out)
 }
 
 /// Colours waiting to be merged: every output's full-target buffer and
@@ -279,6 +411,7 @@ struct Pass<'t> {
     /// The draw's targets, oC0 first (`None` where an output is unbound).
     targets: Vec<Option<(&'t mut TargetState, OutputState)>>,
     depth: Option<(DepthBuffer, DepthState)>,
+    stencil: Option<StencilState>,
     pending: Pending,
     merged: MergeStats,
 }
@@ -304,6 +437,43 @@ impl Pass<'_> {
         Ok(())
     }
 
+    /// The stencil and depth tests at target pixel `t` for a fragment of
+    /// depth `z` from a primitive of facing `face`, their writes done:
+    /// whether the fragment goes on to the output merger, and what the
+    /// stencil stage did (`None` without a stencil test).
+    fn depth_stencil(&mut self, t: usize, z: f64, face: Face) -> (bool, Option<StencilOutcome>) {
+        let Some((buffer, state)) = &mut self.depth else {
+            return (true, None);
+        };
+        let z = buffer.format.store(z);
+        let stored_z = buffer.values[t];
+        let depth_passes = || state.func.passes(z, stored_z);
+        let (survives, outcome) = match &self.stencil {
+            None => (depth_passes(), None),
+            Some(s) => {
+                let side = match (face, s.ccw) {
+                    (Face::Back, Some(ccw)) => ccw,
+                    _ => s.cw,
+                };
+                let o = stencil::run(
+                    buffer.stencil[t],
+                    |a, b| side.func.passes(a, b),
+                    depth_passes,
+                    &side.ops,
+                    s.reference,
+                    s.mask,
+                    s.write_mask,
+                );
+                buffer.stencil[t] = o.written;
+                (o.survives(), Some(o))
+            }
+        };
+        if survives && state.write {
+            buffer.values[t] = z;
+        }
+        (survives, outcome)
+    }
+
     /// Takes one triangle's shaded pixels through the alpha and depth
     /// tests into the pending colours.
     fn take(
@@ -311,6 +481,7 @@ impl Pass<'_> {
         window: &raster::triangle::Window,
         out: &DrawOutput,
         alpha: Option<super::super::pixel_state::AlphaTest>,
+        face: Face,
     ) -> Result<(), DrawFailure> {
         let (ox, oy) = window.inputs.origin;
         let covered = |i: usize| window.inputs.covered[i];
@@ -334,18 +505,12 @@ impl Pass<'_> {
                 }
             }
             let t = index(i);
-            if let Some((buffer, state)) = &mut self.depth {
-                let z = out
-                    .depth
-                    .as_ref()
-                    .map_or(window.depth[i], |d| f64::from(d[i]));
-                let z = buffer.format.store(z);
-                if !state.func.passes(z, buffer.values[t]) {
-                    continue;
-                }
-                if state.write {
-                    buffer.values[t] = z;
-                }
+            let z = out
+                .depth
+                .as_ref()
+                .map_or(window.depth[i], |d| f64::from(d[i]));
+            if !self.depth_stencil(t, z, face).0 {
+                continue;
             }
             for (k, colors) in out.color.iter().enumerate() {
                 if let Some(c) = colors {
@@ -380,7 +545,6 @@ pub(crate) fn draw(
     let float_rules = d.pixel.float_rules.unwrap_or(settings.float_rules);
     let stage = vertex_stage(list, g, d, float_rules, states)?;
     let viewport = g.viewport.unwrap_or_else(|| Viewport::whole(width, height));
-    let tris = triangles(g, &stage, &viewport).map_err(DrawFailure::Message)?;
     let mut clip_rect = viewport.rect().intersect(Rect {
         left: 0,
         top: 0,
@@ -390,6 +554,7 @@ pub(crate) fn draw(
     if let Some(s) = g.scissor {
         clip_rect = clip_rect.intersect(s);
     }
+    let tris = shapes(g, &stage, &viewport, clip_rect).map_err(DrawFailure::Message)?;
     // The targets this draw writes leave `states` while it runs, so that
     // the samplers may borrow the others (a draw never samples its own).
     let mut outs: Vec<Option<(usize, OutputState)>> = vec![Some((d.target, d.output))];
@@ -420,6 +585,7 @@ pub(crate) fn draw(
                 .map(|t| t.as_mut().map(|(s, o)| (s, *o)))
                 .collect(),
             depth,
+            stencil: g.state.stencil,
             pending: Pending {
                 colors: vec![vec![[0.0; 4]; n]; 4],
                 held: vec![false; n],
@@ -477,6 +643,7 @@ fn depth_buffer(
     let mut buffer = t.depth.take().unwrap_or(DepthBuffer {
         format: state.format,
         values: vec![1.0; n],
+        stencil: vec![0; n],
     });
     if buffer.format != state.format {
         return Err(DrawFailure::Message(format!(
@@ -488,6 +655,9 @@ fn depth_buffer(
     if let Some(z) = state.clear {
         buffer.values.fill(state.format.store(z));
     }
+    if let Some(v) = g.state.stencil.and_then(|s| s.clear) {
+        buffer.stencil.fill(v);
+    }
     Ok(Some((buffer, state)))
 }
 
@@ -498,7 +668,7 @@ fn shade_all(
     compiled: &Compiled,
     d: &DrawStep,
     stage: &Stage,
-    tris: &[(Triangle, usize)],
+    tris: &[(Shape, usize)],
     clip_rect: Rect,
     samplers: &[(u32, emu::TextureLevels<'_>, emu::SamplerState)],
     settings: &Settings,
@@ -545,7 +715,7 @@ fn shade_all(
         draw.record_lod = true;
         draw.constants = d.constants.clone();
         draw.float_rules = d.pixel.float_rules.unwrap_or(settings.float_rules);
-        draw.face = tri.face;
+        draw.face = tri.face();
         draw.samplers = samplers.to_vec();
         draw.pixels = Some(&window.inputs);
         let threads = settings.threads.unwrap_or(0);
@@ -570,7 +740,7 @@ fn shade_all(
             .total
             .saturating_add(out.quad_executed.iter().sum::<u64>());
         add_sites(&mut drawn.gradients, &out.gradients);
-        pass.take(&window, &out, d.pixel.alpha_test)?;
+        pass.take(&window, &out, d.pixel.alpha_test, tri.face())?;
     }
     Ok(drawn)
 }
