@@ -17,14 +17,14 @@
 use crate::common::bin::repo;
 use crate::d3d9_conformance::{render_file, Targets};
 
-type Rgba = [f32; 4];
+pub(crate) type Rgba = [f32; 4];
 
-const CLEAR: Rgba = [0.0; 4];
-const RED: Rgba = [1.0, 0.0, 0.0, 1.0];
-const GREEN: Rgba = [0.0, 1.0, 0.0, 1.0];
-const BLUE: Rgba = [0.0, 0.0, 1.0, 1.0];
+pub(crate) const CLEAR: Rgba = [0.0; 4];
+pub(crate) const RED: Rgba = [1.0, 0.0, 0.0, 1.0];
+pub(crate) const GREEN: Rgba = [0.0, 1.0, 0.0, 1.0];
+pub(crate) const BLUE: Rgba = [0.0, 0.0, 1.0, 1.0];
 
-fn draw(list: &str) -> Targets {
+pub(crate) fn draw(list: &str) -> Targets {
     render_file(
         &repo().join("tests/draw_conformance").join(list),
         "emulator",
@@ -33,12 +33,17 @@ fn draw(list: &str) -> Targets {
 }
 
 /// Every pixel of target `name` against `want(x, y)`, exactly.
-fn check(t: &Targets, name: &str, want: impl Fn(u32, u32) -> Rgba) {
+pub(crate) fn check(t: &Targets, name: &str, want: impl Fn(u32, u32) -> Rgba) {
     check_within(t, name, 0.0, want);
 }
 
 /// [`check`] within `tolerance` of each component.
-fn check_within(t: &Targets, name: &str, tolerance: f32, want: impl Fn(u32, u32) -> Rgba) {
+pub(crate) fn check_within(
+    t: &Targets,
+    name: &str,
+    tolerance: f32,
+    want: impl Fn(u32, u32) -> Rgba,
+) {
     let (width, pixels) = &t[name];
     for (i, got) in pixels.iter().enumerate() {
         let (x, y) = (i as u32 % width, i as u32 / width);
@@ -99,7 +104,7 @@ fn perspective(x: u32, y: u32) -> (f64, f64) {
 /// within 2^-53 relative), so the two f64 results differ by far less than
 /// an f32 ulp and can round apart only when the value lies that close to
 /// a rounding boundary — then by one ulp.
-fn near(got: f32, want: f64) -> bool {
+pub(crate) fn near(got: f32, want: f64) -> bool {
     let w = want as f32;
     got == w || (got - w).abs() <= f32::EPSILON * w.abs().max(f32::MIN_POSITIVE)
 }
@@ -340,8 +345,8 @@ fn bad_geometry_is_refused_with_its_place() {
     let verts = r#"{"attributes": {"positiont0": [[0, 0, 0, 1], [4, 0, 0, 1], [0, 4, 0, 1]]}}"#;
     for (geometry, want) in [
         (
-            format!(r#"{{"primitive": "line_list", "vertices": {verts}}}"#),
-            "steps[0].geometry.primitive: `line_list` is not one of",
+            format!(r#"{{"primitive": "line_loop", "vertices": {verts}}}"#),
+            "steps[0].geometry.primitive: `line_loop` is not one of",
         ),
         (
             format!(r#"{{"primitive": "triangle_list", "indices": [0, 1, 3], "vertices": {verts}}}"#),

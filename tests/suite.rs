@@ -25,6 +25,7 @@ mod damaged_inputs;
 mod decompile;
 mod docs;
 mod draw_conformance;
+mod draw_conformance_raster;
 mod draw_gpu;
 mod gen;
 mod gpu;

@@ -66,6 +66,7 @@ fn fate_text(f: &Fragment, output: usize) -> String {
             f.clip_plane.map_or(String::new(), |p| p.to_string())
         ),
         "alpha_test" => "discarded by the alpha test".into(),
+        "stencil_test" => "failed the stencil test".into(),
         "depth_test" => "failed the depth test".into(),
         "no_output" => format!("the shader wrote no oC{output}: the target is left alone"),
         other => other.to_string(),
@@ -81,15 +82,21 @@ fn fragment_text(out: &mut String, step: &StepHistory, f: &Fragment) {
                 .map(|c| format!("({}, {})", c[0], c[1]))
                 .collect();
             // 0 rather than −0 for a weight on an edge.
-            let w = p.weights.map(|w| w + 0.0);
+            let w: Vec<String> = p.weights[..p.corners.len()]
+                .iter()
+                .map(|w| (w + 0.0).to_string())
+                .collect();
+            let kind = if p.corners.len() == 2 {
+                "line"
+            } else {
+                "triangle"
+            };
             format!(
-                "triangle {} ({}; corners {}; weights {}, {}, {})",
+                "{kind} {} ({}; corners {}; weights {})",
                 p.index,
                 p.face,
                 corners.join(" "),
-                w[0],
-                w[1],
-                w[2]
+                w.join(", ")
             )
         }
         None => "full-screen quad".into(),
@@ -118,6 +125,15 @@ fn fragment_text(out: &mut String, step: &StepHistory, f: &Fragment) {
             a.func,
             a.reference,
             if a.passed { "passed" } else { "failed" }
+        ));
+    }
+    if let Some(st) = &f.stencil {
+        out.push_str(&format!(
+            "      stencil stored {}: {}; {:?} wrote {}\n",
+            st.stored,
+            if st.passed { "passed" } else { "failed" },
+            st.op,
+            st.written
         ));
     }
     if let Some(d) = &f.depth {

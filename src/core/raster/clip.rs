@@ -81,3 +81,33 @@ pub fn clip(polygon: Vec<ClipVertex>, planes: &[[f64; 4]]) -> Vec<ClipVertex> {
     }
     poly
 }
+
+/// The part of the segment `a`–`b` on the inner side of every plane, its
+/// ends blended linearly (`None` when nothing is); an end inside every
+/// plane comes back bit for bit.
+pub fn clip_segment(
+    a: ClipVertex,
+    b: ClipVertex,
+    planes: &[[f64; 4]],
+) -> Option<(ClipVertex, ClipVertex)> {
+    let (mut t0, mut t1) = (0.0f64, 1.0f64);
+    for plane in planes {
+        let (da, db) = (distance(plane, &a.pos), distance(plane, &b.pos));
+        match (da >= 0.0, db >= 0.0) {
+            (true, true) => {}
+            (false, false) => return None,
+            (false, true) => t0 = t0.max(da / (da - db)),
+            (true, false) => t1 = t1.min(da / (da - db)),
+        }
+    }
+    if t0 > t1 {
+        return None;
+    }
+    let start = if t0 > 0.0 {
+        lerp(&a, &b, t0)
+    } else {
+        a.clone()
+    };
+    let end = if t1 < 1.0 { lerp(&a, &b, t1) } else { b };
+    Some((start, end))
+}

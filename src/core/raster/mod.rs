@@ -53,11 +53,23 @@
 //!   (D3DRS_POINTSIZE, 1 by default) is the screen square (X ± S/2, Y ± S/2)
 //!   with the vertex's values at every corner, rasterised by the triangle
 //!   rules; a point whose z is outside the view volume is not drawn.
+//! * **Lines** ([`line`]): the diamond-exit rule of GDI lines, with
+//!   D3DRS_LASTPIXEL; a line is clipped against z and the user planes only
+//!   and scissored to the viewport, as guard-band hardware does (clipping
+//!   it at x = ±w would end it on the viewport's first column of centres,
+//!   whose pixel the exit rule then leaves out). A line list takes
+//!   vertices two at a time, a strip joins each vertex to the next; the
+//!   provoking vertex of flat shading is a line's first.
+//! * **Point sizes, sprites, stencil** ([`points`], [`stencil`]).
 
 pub mod clip;
 pub mod depth;
+pub mod line;
+pub mod points;
+pub mod stencil;
 pub mod triangle;
 
+pub use line::Line;
 pub use triangle::{ScreenVertex, Triangle};
 
 use serde::{Deserialize, Serialize};
@@ -68,6 +80,11 @@ use serde::{Deserialize, Serialize};
 pub enum Primitive {
     /// D3DPT_POINTLIST: every vertex one point.
     PointList,
+    /// D3DPT_LINELIST: every two vertices one line.
+    LineList,
+    /// D3DPT_LINESTRIP: each vertex after the first ends a line from the
+    /// one before it.
+    LineStrip,
     /// D3DPT_TRIANGLELIST: every three vertices one triangle.
     TriangleList,
     /// D3DPT_TRIANGLESTRIP: each vertex after the second closes a triangle
@@ -79,8 +96,10 @@ pub enum Primitive {
 
 impl Primitive {
     /// Every primitive type, with its name in draw lists.
-    pub const ALL: [(&'static str, Primitive); 4] = [
+    pub const ALL: [(&'static str, Primitive); 6] = [
         ("point_list", Primitive::PointList),
+        ("line_list", Primitive::LineList),
+        ("line_strip", Primitive::LineStrip),
         ("triangle_list", Primitive::TriangleList),
         ("triangle_strip", Primitive::TriangleStrip),
         ("triangle_fan", Primitive::TriangleFan),
@@ -214,11 +233,84 @@ impl Rect {
     }
 }
 
+impl Primitive {
+    /// Whether it draws lines.
+    pub fn is_line(self) -> bool {
+        matches!(self, Primitive::LineList | Primitive::LineStrip)
+    }
+}
+
+/// A primitive on screen, ready for the pixel shader: a triangle (points
+/// are two) or a line.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Shape {
+    /// A triangle after culling.
+    Triangle(Triangle),
+    /// A line with the pixels it covers.
+    Line(Line),
+}
+
+impl Shape {
+    /// Its facing, as `vFace` reports it (a line is front-facing).
+    pub fn face(&self) -> Face {
+        match self {
+            Shape::Triangle(t) => t.face,
+            Shape::Line(l) => l.face(),
+        }
+    }
+
+    /// The rectangle of pixels it may cover within `clip`.
+    pub fn bounds(&self, clip: Rect) -> Option<Rect> {
+        match self {
+            Shape::Triangle(t) => t.bounds(clip),
+            Shape::Line(l) => l.bounds(clip),
+        }
+    }
+
+    /// Whether the pixel centred at (x, y) is covered.
+    pub fn covers(&self, x: f64, y: f64) -> bool {
+        match self {
+            Shape::Triangle(t) => t.covers(x, y),
+            Shape::Line(l) => l.covers(x, y),
+        }
+    }
+
+    /// Its corners on screen: two for a line, three for a triangle.
+    pub fn corners(&self) -> &[ScreenVertex] {
+        match self {
+            Shape::Triangle(t) => triangle::Cover::corners(t),
+            Shape::Line(l) => triangle::Cover::corners(l),
+        }
+    }
+
+    /// The screen weights of its corners at (x, y), summing to 1 (a
+    /// line's third is 0).
+    pub fn weights(&self, x: f64, y: f64) -> [f64; 3] {
+        match self {
+            Shape::Triangle(t) => triangle::Cover::weights(t, x, y),
+            Shape::Line(l) => triangle::Cover::weights(l, x, y),
+        }
+    }
+
+    /// Its window of pixels for the pixel shader ([`Triangle::pixels`]).
+    pub fn pixels(
+        &self,
+        clip: Rect,
+        slots: &[(u32, usize, [bool; 4])],
+        provoking: &[[f64; 4]],
+    ) -> Option<triangle::Window> {
+        match self {
+            Shape::Triangle(t) => t.pixels(clip, slots, provoking),
+            Shape::Line(l) => l.pixels(clip, slots, provoking),
+        }
+    }
+}
+
 /// One primitive after assembly: vertex indices in winding order and the
 /// index of the vertex flat shading takes its colour from.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Assembled {
-    /// The vertices (a point repeats its one vertex).
+    /// The vertices (a point repeats its one vertex, a line its second).
     pub corners: [usize; 3],
     /// The provoking vertex (one of `corners`).
     pub provoking: usize,
@@ -230,6 +322,22 @@ pub fn assemble(primitive: Primitive, count: usize) -> Result<Vec<Assembled>, St
     let tri = |corners: [usize; 3], provoking| Assembled { corners, provoking };
     Ok(match primitive {
         Primitive::PointList => (0..count).map(|i| tri([i, i, i], i)).collect(),
+        Primitive::LineList => {
+            if !count.is_multiple_of(2) {
+                return Err(format!(
+                    "a line list needs a multiple of 2 vertices, not {count}"
+                ));
+            }
+            (0..count / 2)
+                .map(|l| tri([2 * l, 2 * l + 1, 2 * l + 1], 2 * l))
+                .collect()
+        }
+        Primitive::LineStrip if count < 2 => {
+            return Err(format!(
+                "a line strip needs at least 2 vertices, not {count}"
+            ))
+        }
+        Primitive::LineStrip => (0..count - 1).map(|i| tri([i, i + 1, i + 1], i)).collect(),
         Primitive::TriangleList => {
             if !count.is_multiple_of(3) {
                 return Err(format!(

@@ -181,7 +181,168 @@ fn assembly_of_every_primitive_type() {
         Primitive::from_name("D3DPT_TRIANGLEFAN"),
         Some(Primitive::TriangleFan)
     );
-    assert_eq!(Primitive::from_name("line_list"), None);
+    assert_eq!(
+        corners(Primitive::LineList, 4),
+        vec![([0, 1, 1], 0), ([2, 3, 3], 2)]
+    );
+    assert_eq!(
+        corners(Primitive::LineStrip, 3),
+        vec![([0, 1, 1], 0), ([1, 2, 2], 1)]
+    );
+    assert!(assemble(Primitive::LineList, 3).is_err());
+    assert!(assemble(Primitive::LineStrip, 1).is_err());
+    assert_eq!(
+        Primitive::from_name("D3DPT_LINESTRIP"),
+        Some(Primitive::LineStrip)
+    );
+    assert_eq!(Primitive::from_name("line_loop"), None);
+}
+
+fn line_pixels(a: (f64, f64), b: (f64, f64), last: bool) -> Vec<(u32, u32)> {
+    let limit = Rect {
+        left: 0,
+        top: 0,
+        right: 16,
+        bottom: 16,
+    };
+    let l = Line::new(sv(a.0, a.1, 1., 0.), sv(b.0, b.1, 1., 0.), last, limit);
+    (0..16u32)
+        .flat_map(|y| (0..16u32).map(move |x| (x, y)))
+        .filter(|&(x, y)| l.covers(f64::from(x), f64::from(y)))
+        .collect()
+}
+
+#[test]
+fn the_diamond_border_rule() {
+    // The border of the diamond round (0, 0): the lower edges and the
+    // bottom corner are inside; the upper edges and the top, left and right
+    // corners outside — except the right corner for a y-major line.
+    assert!(line::in_diamond(0.0, 0.5, false));
+    assert!(line::in_diamond(-0.25, 0.25, false));
+    assert!(line::in_diamond(0.25, 0.25, false));
+    assert!(!line::in_diamond(0.0, -0.5, false));
+    assert!(!line::in_diamond(0.25, -0.25, false));
+    assert!(!line::in_diamond(-0.5, 0.0, false));
+    assert!(!line::in_diamond(0.5, 0.0, false));
+    assert!(line::in_diamond(0.5, 0.0, true));
+    assert!(!line::in_diamond(-0.5, 0.0, true));
+}
+
+#[test]
+fn lines_by_the_diamond_exit_rule() {
+    // A horizontal line between centres: columns 1–4 left through their
+    // right corners, column 5 holds the end (drawn only with LASTPIXEL).
+    let row = |n: u32| (1..=n).map(|x| (x, 2)).collect::<Vec<_>>();
+    assert_eq!(line_pixels((1., 2.), (5., 2.), false), row(4));
+    assert_eq!(line_pixels((1., 2.), (5., 2.), true), row(5));
+    // Drawn the other way, the first pixel is the one left out.
+    let back = line_pixels((5., 2.), (1., 2.), false);
+    assert_eq!(back, (2..=5).map(|x| (x, 2)).collect::<Vec<_>>());
+    // A line wholly inside one diamond leaves none; with LASTPIXEL its
+    // pixel is drawn. A line of no length draws nothing either way.
+    assert!(line_pixels((3.1, 3.0), (3.3, 3.1), false).is_empty());
+    assert_eq!(line_pixels((3.1, 3.0), (3.3, 3.1), true), vec![(3, 3)]);
+    assert!(line_pixels((3., 3.), (3., 3.), true).is_empty());
+    // A horizontal line along the boundary between rows 2 and 3 (y = 2.5)
+    // runs through the bottom corners of row 2 (inside) and the top
+    // corners of row 3 (outside): row 2 only.
+    assert_eq!(
+        line_pixels((0.75, 2.5), (4.75, 2.5), false),
+        (1..=4).map(|x| (x, 2)).collect::<Vec<_>>()
+    );
+    // A vertical line along x = 2.5 (y-major): the right corners of column
+    // 2 are inside, the left corners of column 3 outside.
+    assert_eq!(
+        line_pixels((2.5, 0.75), (2.5, 4.75), false),
+        (1..=4).map(|y| (2, y)).collect::<Vec<_>>()
+    );
+}
+
+#[test]
+fn values_along_a_line_take_perspective() {
+    // Corner values 0 and 1, 1/w = 1 and ¼: at t = ½ the weights are
+    // ½·1 and ½·¼, so the value is (⅛)/(⅝) = 0.2 (affine: 0.5).
+    let limit = Rect {
+        left: 0,
+        top: 0,
+        right: 16,
+        bottom: 16,
+    };
+    let l = Line::new(sv(0., 0., 1., 0.), sv(8., 0., 0.25, 1.), true, limit);
+    let w = l.pixels(limit, &[(0, 0, [false; 4])], &[[0.0; 4]]).unwrap();
+    assert_eq!(w.inputs.values[0].1[4][0], 0.2);
+    assert_eq!(w.inputs.covered.iter().filter(|c| **c).count(), 9);
+}
+
+#[test]
+fn segments_clip_against_planes() {
+    // z ≥ 0 and z ≤ w on a segment from z = −1 to z = 3 (w = 1): kept from
+    // t = ¼ to ½, the values blended alike.
+    let v = |z: f64, value: f64| ClipVertex {
+        pos: [0.0, 0.0, z, 1.0],
+        values: vec![[value; 4]],
+    };
+    let (a, b) = clip::clip_segment(v(-1.0, 0.0), v(3.0, 4.0), &VIEW_VOLUME[4..]).unwrap();
+    assert_eq!((a.pos[2], b.pos[2]), (0.0, 1.0));
+    assert_eq!((a.values[0][0], b.values[0][0]), (1.0, 2.0));
+    assert!(clip::clip_segment(v(-2.0, 0.0), v(-1.0, 0.0), &VIEW_VOLUME[4..]).is_none());
+}
+
+#[test]
+fn stencil_ops_test_and_write_mask() {
+    use stencil::{run, StencilOp as Op, StencilOps};
+    // Every op on 5, 255 and 0 with reference 7, by hand.
+    let want = [
+        (Op::Keep, [5, 255, 0]),
+        (Op::Zero, [0, 0, 0]),
+        (Op::Replace, [7, 7, 7]),
+        (Op::IncrSat, [6, 255, 1]),
+        (Op::DecrSat, [4, 254, 0]),
+        (Op::Invert, [250, 0, 255]),
+        (Op::Incr, [6, 0, 1]),
+        (Op::Decr, [4, 254, 255]),
+    ];
+    for (op, out) in want {
+        for (stored, w) in [5u8, 255, 0].into_iter().zip(out) {
+            assert_eq!(op.apply(stored, 7), w, "{op:?} on {stored}");
+        }
+    }
+    assert_eq!(Op::from_name("d3dstencilop_incrsat"), Some(Op::IncrSat));
+    let ops = StencilOps {
+        fail: Op::Decr,
+        zfail: Op::Invert,
+        pass: Op::Incr,
+    };
+    let less = |a: u8, b: u8| a < b;
+    // The reference on the left: 3 < 5 passes.
+    let o = run(5, less, || true, &ops, 3, 0xFF, 0xFF);
+    assert_eq!((o.passed, o.depth_passed, o.written), (true, true, 6));
+    // Masked: (7 & 1) < (6 & 1) is 1 < 0, fails: DECR.
+    let o = run(6, less, || panic!("no depth test"), &ops, 7, 1, 0xFF);
+    assert_eq!((o.passed, o.op, o.written), (false, Op::Decr, 5));
+    // Depth fails: INVERT of 0x05 through write mask 0x0F: 0x0A.
+    let o = run(5, |_, _| true, || false, &ops, 0, 0xFF, 0x0F);
+    assert_eq!((o.survives(), o.written), (false, 0x0A));
+}
+
+#[test]
+fn point_sizes_clamp_and_scale() {
+    let p = points::PointState::default();
+    assert_eq!(p.size_of(None, None), 1.0);
+    assert_eq!(p.size_of(Some(100.0), None), 64.0);
+    assert_eq!(p.size_of(Some(0.25), None), 1.0);
+    // Scale (1, 0, 0) by default: Vh·Si.
+    let s = points::PointState {
+        scale: Some([1.0, 0.0, 0.0]),
+        ..p
+    };
+    assert_eq!(s.size_of(Some(0.125), Some(([3.0, 4.0, 0.0], 64.0))), 8.0);
+    // C = 1: Vh·Si/De with De = 5.
+    let s = points::PointState {
+        scale: Some([0.0, 0.0, 1.0]),
+        ..p
+    };
+    assert_eq!(s.size_of(Some(1.0), Some(([3.0, 4.0, 0.0], 40.0))), 8.0);
 }
 
 #[test]

@@ -105,20 +105,12 @@ impl Triangle {
     /// Value `k` at barycentrics `l`, with perspective: each corner weighs
     /// l·(1/w), normalised. `flat` components take `provoking` instead.
     pub fn value(&self, k: usize, l: [f64; 3], flat: [bool; 4], provoking: &[f64; 4]) -> [f32; 4] {
-        let p: [f64; 3] = std::array::from_fn(|i| l[i] * self.v[i].rhw);
-        let sum = p[0] + p[1] + p[2];
-        std::array::from_fn(|c| {
-            if flat[c] {
-                return provoking[c] as f32;
-            }
-            let v = (0..3).map(|i| p[i] * self.v[i].values[k][c]).sum::<f64>() / sum;
-            v as f32
-        })
+        value(&self.v, k, &l, flat, provoking)
     }
 
     /// Depth at barycentrics `l`: z is linear on screen.
     pub fn depth(&self, l: [f64; 3]) -> f64 {
-        (0..3).map(|i| l[i] * self.v[i].z).sum()
+        depth(&self.v, &l)
     }
 
     /// The rectangle of pixel centres the triangle's bounds hold, within
@@ -153,45 +145,117 @@ impl Triangle {
         slots: &[(u32, usize, [bool; 4])],
         provoking: &[[f64; 4]],
     ) -> Option<Window> {
-        let b = self.bounds(clip)?;
-        let origin = (b.left & !1, b.top & !1);
-        let (w, h) = (b.right - origin.0, b.bottom - origin.1);
-        let (gw, gh) = (PixelInputs::grid_width(w), PixelInputs::grid_width(h));
-        let mut covered = vec![false; w as usize * h as usize];
-        let mut depth = vec![f64::NAN; covered.len()];
-        let mut values: Vec<(u32, Vec<[f32; 4]>)> = slots
+        window(self, clip, slots, provoking)
+    }
+}
+
+impl Cover for Triangle {
+    fn corners(&self) -> &[ScreenVertex] {
+        &self.v
+    }
+    fn weights(&self, x: f64, y: f64) -> [f64; 3] {
+        self.barycentric(x, y)
+    }
+    fn covers(&self, x: f64, y: f64) -> bool {
+        Triangle::covers(self, x, y)
+    }
+    fn bounds(&self, clip: Rect) -> Option<Rect> {
+        Triangle::bounds(self, clip)
+    }
+}
+
+/// What a window of pixels needs of a primitive on screen (a triangle, or
+/// a line of `super::line`): its corners, the screen weights of the
+/// corners at a pixel centre, which centres it covers, and its bounds.
+pub(crate) trait Cover {
+    /// The corners (two for a line, three for a triangle).
+    fn corners(&self) -> &[ScreenVertex];
+    /// Screen weights of the corners at (x, y), summing to 1 (a line's
+    /// third is 0).
+    fn weights(&self, x: f64, y: f64) -> [f64; 3];
+    /// Whether the pixel centred at (x, y) is covered.
+    fn covers(&self, x: f64, y: f64) -> bool;
+    /// The covered pixels' rectangle within `clip`; `None` when empty.
+    fn bounds(&self, clip: Rect) -> Option<Rect>;
+}
+
+/// Value `k` of `corners` at screen weights `l`, with perspective: each
+/// corner weighs l·(1/w), normalised. `flat` components take `provoking`.
+pub(crate) fn value(
+    corners: &[ScreenVertex],
+    k: usize,
+    l: &[f64; 3],
+    flat: [bool; 4],
+    provoking: &[f64; 4],
+) -> [f32; 4] {
+    let p: Vec<f64> = corners.iter().zip(l).map(|(v, l)| l * v.rhw).collect();
+    let sum: f64 = p.iter().sum();
+    std::array::from_fn(|c| {
+        if flat[c] {
+            return provoking[c] as f32;
+        }
+        let v = corners
             .iter()
-            .map(|&(s, _, _)| (s, Vec::with_capacity(gw * gh)))
-            .collect();
-        let mut any = false;
-        for j in 0..gh {
-            for i in 0..gw {
-                let (x, y) = (origin.0 as usize + i, origin.1 as usize + j);
-                let (fx, fy) = (x as f64, y as f64);
-                let l = self.barycentric(fx, fy);
-                for ((_, k, flat), (_, out)) in slots.iter().zip(values.iter_mut()) {
-                    out.push(self.value(*k, l, *flat, &provoking[*k]));
-                }
-                let in_clip = (clip.left as usize..clip.right as usize).contains(&x)
-                    && (clip.top as usize..clip.bottom as usize).contains(&y);
-                if i < w as usize && j < h as usize && in_clip && self.covers(fx, fy) {
-                    covered[j * w as usize + i] = true;
-                    depth[j * w as usize + i] = self.depth(l);
-                    any = true;
-                }
+            .zip(&p)
+            .map(|(v, p)| p * v.values[k][c])
+            .sum::<f64>()
+            / sum;
+        v as f32
+    })
+}
+
+/// Depth of `corners` at screen weights `l`: z is linear on screen.
+pub(crate) fn depth(corners: &[ScreenVertex], l: &[f64; 3]) -> f64 {
+    corners.iter().zip(l).map(|(v, l)| l * v.z).sum()
+}
+
+/// The window of `shape` within `clip` ([`Triangle::pixels`] says what it
+/// holds).
+pub(crate) fn window(
+    shape: &impl Cover,
+    clip: Rect,
+    slots: &[(u32, usize, [bool; 4])],
+    provoking: &[[f64; 4]],
+) -> Option<Window> {
+    let b = shape.bounds(clip)?;
+    let origin = (b.left & !1, b.top & !1);
+    let (w, h) = (b.right - origin.0, b.bottom - origin.1);
+    let (gw, gh) = (PixelInputs::grid_width(w), PixelInputs::grid_width(h));
+    let mut covered = vec![false; w as usize * h as usize];
+    let mut depths = vec![f64::NAN; covered.len()];
+    let mut values: Vec<(u32, Vec<[f32; 4]>)> = slots
+        .iter()
+        .map(|&(s, _, _)| (s, Vec::with_capacity(gw * gh)))
+        .collect();
+    let corners = shape.corners();
+    let mut any = false;
+    for j in 0..gh {
+        for i in 0..gw {
+            let (x, y) = (origin.0 as usize + i, origin.1 as usize + j);
+            let (fx, fy) = (x as f64, y as f64);
+            let l = shape.weights(fx, fy);
+            for ((_, k, flat), (_, out)) in slots.iter().zip(values.iter_mut()) {
+                out.push(value(corners, *k, &l, *flat, &provoking[*k]));
+            }
+            let in_clip = (clip.left as usize..clip.right as usize).contains(&x)
+                && (clip.top as usize..clip.bottom as usize).contains(&y);
+            if i < w as usize && j < h as usize && in_clip && shape.covers(fx, fy) {
+                covered[j * w as usize + i] = true;
+                depths[j * w as usize + i] = depth(corners, &l);
+                any = true;
             }
         }
-        any.then_some(Window {
-            width: w,
-            height: h,
-            inputs: PixelInputs {
-                origin,
-                covered,
-                values,
-            },
-            depth,
-        })
     }
+    any.then_some(Window {
+        width: w,
+        height: h,
+        inputs: PixelInputs {
+            origin,
+            covered,
+            values,
+        },
+        depth: depths,
+    })
 }
 
 /// What [`Triangle::pixels`] gives the pixel shader and the depth test.

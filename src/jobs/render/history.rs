@@ -26,8 +26,9 @@ use crate::core::image::{unorm8, RenderTarget};
 use crate::core::ir::Program;
 use crate::core::isa::RegFile;
 use crate::core::merge::{OutputState, Terms};
+use crate::core::raster::stencil::StencilOutcome;
 use crate::core::raster::triangle::{Triangle, Window};
-use crate::core::raster::Rect;
+use crate::core::raster::{Face, Rect, Shape};
 use serde::Serialize;
 
 /// A pixel to watch: a target of the list and a pixel of it.
@@ -91,14 +92,17 @@ pub struct StepHistory {
 /// The primitive a fragment came from.
 #[derive(Clone, Debug, Serialize)]
 pub struct PrimitiveAt {
-    /// The triangle's index among those that reached the pixel shader
-    /// (after assembly, clipping and culling; a point is two), from 0.
+    /// The triangle's or line's index among those that reached the pixel
+    /// shader (after assembly, clipping and culling; a point is two
+    /// triangles), from 0.
     pub index: usize,
-    /// `front` (clockwise on screen) or `back`.
+    /// `front` (clockwise on screen) or `back`; a line is `front`.
     pub face: &'static str,
-    /// The corners on screen, clockwise: x, y, z and 1/w.
-    pub corners: [[f64; 4]; 3],
-    /// The pixel centre's screen barycentric weights of the corners.
+    /// The corners on screen (three for a triangle, clockwise; two for a
+    /// line, in drawing order): x, y, z and 1/w.
+    pub corners: Vec<[f64; 4]>,
+    /// The pixel centre's screen weights of the corners (a line's third
+    /// is 0).
     pub weights: [f64; 3],
     /// The vertex flat shading takes colours from.
     pub provoking: usize,
@@ -137,14 +141,16 @@ pub struct Fragment {
     pub clip_plane: Option<usize>,
     /// The alpha test (D3DRS_ALPHATESTENABLE), if on and reached.
     pub alpha_test: Option<AlphaVerdict>,
-    // A stencil verdict belongs here: Direct3D 9 tests stencil after the
-    // alpha test and before depth.
+    /// The stencil test (D3DRS_STENCILENABLE), if on and reached: the
+    /// value stored before, whether it passed, whether the depth test
+    /// then passed, the operation taken and the value written.
+    pub stencil: Option<StencilOutcome>,
     /// The depth test (D3DRS_ZENABLE), if on and reached.
     pub depth: Option<DepthVerdict>,
     /// The blend into the target, if the fragment got there.
     pub blend: Option<BlendVerdict>,
     /// Where it ended: `written`, `helper`, `killed`, `clipped`,
-    /// `alpha_test`, `depth_test`, `no_output` (the shader wrote nothing
+    /// `alpha_test`, `stencil_test`, `depth_test`, `no_output` (the shader wrote nothing
     /// to this target's output).
     pub fate: &'static str,
 }
@@ -201,7 +207,8 @@ pub(crate) struct Verdict {
     pub killed: bool,
     /// oC0's alpha and whether it passed the alpha test (`None`: not tested).
     pub alpha: Option<(f32, bool)>,
-    // A stencil result goes here, between the alpha and depth tests.
+    /// The stencil test and its write (`None`: not tested).
+    pub stencil: Option<StencilOutcome>,
     /// The depth test (`None`: not tested).
     pub depth: Option<DepthVerdict>,
 }
@@ -211,6 +218,7 @@ impl Verdict {
     pub fn passed(&self) -> bool {
         !self.killed
             && self.alpha.is_none_or(|(_, p)| p)
+            && self.stencil.is_none_or(|s| s.passed)
             && self.depth.as_ref().is_none_or(|d| d.passed)
     }
 }
@@ -504,6 +512,7 @@ impl Recorder {
                 killed,
                 clip_plane,
                 alpha_test: alpha.map(|(a, passed)| alpha_verdict(w.alpha_test, a, passed)),
+                stencil: None,
                 depth: None,
                 blend: None,
                 fate,
@@ -518,7 +527,7 @@ impl Recorder {
     /// cull mode dropped, and the rectangles pixels must lie in.
     pub(crate) fn geometry(
         &mut self,
-        tris: &[(Triangle, usize, usize)],
+        reached: usize,
         culled: &[Triangle],
         viewport: Rect,
         scissor: Option<Rect>,
@@ -538,8 +547,8 @@ impl Recorder {
                 format!("culled: the triangle over it is a {face} face")
             } else {
                 format!(
-                    "outside every triangle ({} reached the pixel shader)",
-                    tris.len()
+                    "outside every primitive ({} reached the pixel shader)",
+                    reached
                 )
             };
             if let Some(s) = w.step() {
@@ -553,13 +562,13 @@ impl Recorder {
     pub(crate) fn primitive(
         &mut self,
         program: &Program,
-        (index, tri, provoking): (usize, &Triangle, usize),
+        (index, shape, provoking): (usize, &Shape, usize),
         window: &Window,
         out: &DrawOutput,
     ) {
         for w in self.watches.iter_mut().filter(|w| w.output.is_some()) {
             let Some(fragment) =
-                fragment_at(program, w.pixel, (index, tri, provoking), window, out)
+                fragment_at(program, w.pixel, (index, shape, provoking), window, out)
             else {
                 continue;
             };
@@ -583,11 +592,14 @@ impl Recorder {
             let Some(f) = w.fragment() else { continue };
             f.killed = verdict.killed;
             f.alpha_test = verdict.alpha.map(|(a, p)| alpha_verdict(test, a, p));
+            f.stencil = verdict.stencil;
             f.depth = verdict.depth.clone();
             f.fate = if verdict.killed {
                 "killed"
             } else if verdict.alpha.is_some_and(|(_, p)| !p) {
                 "alpha_test"
+            } else if verdict.stencil.is_some_and(|s| !s.passed) {
+                "stencil_test"
             } else if !passed {
                 "depth_test"
             } else {
@@ -663,7 +675,7 @@ pub(crate) fn depth_func(f: CmpFunc) -> String {
 fn fragment_at(
     program: &Program,
     p: Pixel,
-    (index, tri, provoking): (usize, &Triangle, usize),
+    (index, shape, provoking): (usize, &Shape, usize),
     window: &Window,
     out: &DrawOutput,
 ) -> Option<Fragment> {
@@ -697,16 +709,20 @@ fn fragment_at(
             value: values[g],
         })
         .collect();
-    inputs.extend(position_and_face(program, p.x, p.y, tri.face.value()));
+    inputs.extend(position_and_face(program, p.x, p.y, shape.face().value()));
     let i = (wy * window.width + wx) as usize;
     let primitive = PrimitiveAt {
         index,
-        face: match tri.face {
-            crate::core::raster::Face::Front => "front",
-            crate::core::raster::Face::Back => "back",
+        face: match shape.face() {
+            Face::Front => "front",
+            Face::Back => "back",
         },
-        corners: tri.v.clone().map(|v| [v.x, v.y, v.z, v.rhw]),
-        weights: tri.barycentric(f64::from(p.x), f64::from(p.y)),
+        corners: shape
+            .corners()
+            .iter()
+            .map(|v| [v.x, v.y, v.z, v.rhw])
+            .collect(),
+        weights: shape.weights(f64::from(p.x), f64::from(p.y)),
         provoking,
     };
     Some(Fragment {
@@ -719,6 +735,7 @@ fn fragment_at(
         killed: false,
         clip_plane: None,
         alpha_test: None,
+        stencil: None,
         depth: None,
         blend: None,
         fate: if covered { "written" } else { "helper" },

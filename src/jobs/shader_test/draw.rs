@@ -13,7 +13,9 @@ use crate::core::emu::vertex::{Attribute, Vertices};
 use crate::core::emu::{Constants, SamplerState};
 use crate::core::load;
 use crate::core::merge::{self, ColorWrite, OutputState};
+use crate::core::raster::points::PointState;
 use crate::core::raster::{Cull, Primitive, Viewport};
+use crate::jobs::render::geometry::state::RasterState;
 use crate::jobs::render::geometry::Geometry;
 use crate::jobs::render::pixel_state::{AlphaTest, CmpFunc, PixelState};
 use crate::jobs::render::{
@@ -453,6 +455,15 @@ fn build(
             s.fixed.point_size[0].clamp(s.fixed.point_size[1], s.fixed.point_size[2]),
         ),
         depth: None,
+        state: RasterState {
+            points: PointState {
+                size: f64::from(s.fixed.point_size[0]),
+                min: f64::from(s.fixed.point_size[1]),
+                max: f64::from(s.fixed.point_size[2]),
+                ..PointState::default()
+            },
+            ..RasterState::default()
+        },
     };
     let step = DrawStep {
         target: main,

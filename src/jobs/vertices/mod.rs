@@ -14,7 +14,8 @@
 //! An attribute is named by its declaration usage and index (`position0`,
 //! `texcoord3`, `color1`; `normal` alone is `normal0`) and holds one to
 //! four numbers per vertex, filled as Direct3D 9 fills a short vertex
-//! format: (x, 0, 0, 1). Every value must be a JSON number that single
+//! format: (x, 0, 0, 1), or a D3DCOLOR `"0xAARRGGBB"` (D3DDECLTYPE_D3DCOLOR:
+//! the shader reads (R, G, B, A), each byte over 255). Every value must be a JSON number that single
 //! precision holds (no NaN, no infinity, nothing past ±3.4e38); every
 //! vertex has every attribute; at most [`MAX_VERTICES`] vertices. Each
 //! refusal names the file and the field (`attributes.texcoord0[2]`).
@@ -178,8 +179,11 @@ fn attribute(key: &str) -> Result<Attribute, String> {
 
 /// One to four finite single-precision numbers, filled to (x, 0, 0, 1).
 fn value(v: &Value) -> Result<[f32; 4], String> {
+    if let Value::String(text) = v {
+        return d3dcolor(text);
+    }
     let Value::Array(list) = v else {
-        return Err("expected an array of 1 to 4 numbers".into());
+        return Err("expected an array of 1 to 4 numbers, or a D3DCOLOR \"0xAARRGGBB\"".into());
     };
     if list.is_empty() || list.len() > 4 {
         return Err(format!(
@@ -199,6 +203,19 @@ fn value(v: &Value) -> Result<[f32; 4], String> {
         out[c] = f;
     }
     Ok(out)
+}
+
+/// A D3DCOLOR written as `"0xAARRGGBB"`, as D3DDECLTYPE_D3DCOLOR hands it
+/// to the shader: "expanded to (R, G, B, A)", each byte over 255.
+fn d3dcolor(text: &str) -> Result<[f32; 4], String> {
+    let hex = text
+        .strip_prefix("0x")
+        .or_else(|| text.strip_prefix("0X"))
+        .filter(|h| h.len() == 8)
+        .and_then(|h| u32::from_str_radix(h, 16).ok())
+        .ok_or_else(|| format!("`{text}` is not a D3DCOLOR \"0xAARRGGBB\""))?;
+    let byte = |shift: u32| ((hex >> shift) & 0xFF) as f32 / 255.0;
+    Ok([byte(16), byte(8), byte(0), byte(24)])
 }
 
 /// Runs a vertex shader over `vertices` with the application's constants

@@ -28,6 +28,7 @@
 //! fixed-function pipe passes texture coordinates and colours through.
 
 pub(crate) mod run;
+pub(crate) mod state;
 
 use super::floats::{constant4, FileFloat};
 use super::pixel_state::CmpFunc;
@@ -77,6 +78,9 @@ pub struct Geometry {
     pub point_size: f64,
     /// The depth test; `None`: D3DRS_ZENABLE off.
     pub depth: Option<DepthState>,
+    /// Lines, point sizes and sprites, the fill mode and the stencil test
+    /// (`state.rs`).
+    pub state: state::RasterState,
 }
 
 /// The depth buffer a draw tests and writes: the target's depth-stencil
@@ -112,6 +116,13 @@ pub(crate) struct FileGeometry {
     clip_planes: Option<Vec<[f64; 4]>>,
     point_size: Option<f64>,
     depth: Option<FileDepth>,
+    last_pixel: Option<bool>,
+    point_size_min: Option<f64>,
+    point_size_max: Option<f64>,
+    point_sprite: Option<bool>,
+    point_scale: Option<[f64; 3]>,
+    fill_mode: Option<String>,
+    stencil: Option<state::FileStencil>,
 }
 
 #[derive(Deserialize)]
@@ -180,11 +191,7 @@ pub(crate) fn read(
         let names: Vec<&str> = Primitive::ALL.iter().map(|(n, _)| *n).collect();
         problem(
             "primitive",
-            format!(
-                "`{}` is not one of {} (line lists and strips are not drawn yet)",
-                g.primitive,
-                names.join(", ")
-            ),
+            format!("`{}` is not one of {}", g.primitive, names.join(", ")),
         )
     })?;
     let cull = match g.cull.as_deref().map(str::to_ascii_lowercase).as_deref() {
@@ -233,6 +240,23 @@ pub(crate) fn read(
             "a size in pixels, above 0 and at most 8192",
         ));
     }
+    let state = state::read(&state::Fields {
+        last_pixel: g.last_pixel,
+        point_size,
+        point_size_min: g.point_size_min,
+        point_size_max: g.point_size_max,
+        point_sprite: g.point_sprite,
+        point_scale: g.point_scale,
+        fill_mode: g.fill_mode.as_deref(),
+        stencil: g.stencil.as_ref(),
+    })?;
+    let depth = g.depth.as_ref().map(depth).transpose()?;
+    if state.stencil.is_some() && depth.map(|d| d.format) != Some(DepthFormat::D24S8) {
+        return Err(problem(
+            "stencil",
+            "the stencil lives in a D3DFMT_D24S8 depth-stencil surface: give `depth` with format D24S8 (func ALWAYS and write false leave depth untested)",
+        ));
+    }
     let geometry = Geometry {
         vertices,
         indices: g.indices.clone(),
@@ -245,7 +269,8 @@ pub(crate) fn read(
         cull,
         clip_planes,
         point_size,
-        depth: g.depth.as_ref().map(depth).transpose()?,
+        depth,
+        state,
     };
     Ok((geometry, g.vertex_shader.clone()))
 }

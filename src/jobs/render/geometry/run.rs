@@ -15,6 +15,7 @@ mod gpu;
 pub(crate) use gpu::coverage;
 pub use gpu::Coverage;
 
+use super::state::{FillMode, StencilState};
 use super::{DepthState, Geometry};
 use crate::core::emu::vertex::{self, Attribute, VertexDraw};
 use crate::core::emu::{self, Compiled, Draw, DrawOutput, EmuError, GradientSite};
@@ -23,7 +24,8 @@ use crate::core::isa::RegFile;
 use crate::core::merge::{self, MergeStats, OutputState};
 use crate::core::raster::clip::{self, ClipVertex, VIEW_VOLUME};
 use crate::core::raster::depth::DepthFormat;
-use crate::core::raster::{self, Rect, ScreenVertex, Triangle, Viewport};
+use crate::core::raster::stencil::{self, StencilOutcome};
+use crate::core::raster::{self, Face, Rect, ScreenVertex, Shape, Triangle, Viewport};
 use crate::jobs::render::history::{self, Recorder, Verdict};
 use crate::jobs::render::{DrawFailure, DrawList, DrawStep, Settings, TargetState};
 
@@ -34,6 +36,9 @@ pub struct DepthBuffer {
     pub format: DepthFormat,
     /// Stored depths, row-major.
     pub values: Vec<f64>,
+    /// Stored stencil values, row-major (D3DFMT_D24S8's eight bits; 0 in
+    /// a surface without stencil).
+    pub stencil: Vec<u8>,
 }
 
 /// What a geometry draw did, for its step's report.
@@ -89,9 +94,23 @@ fn pixel_semantics(program: &Program) -> Vec<(u32, Attribute)> {
 /// screen) positions and each input slot's value per vertex.
 struct Stage {
     positions: Vec<[f64; 4]>,
+    /// Each vertex's slot values, then one more: its own point size in x
+    /// (NaN where it gives none), carried through clipping with the rest.
     values: Vec<Vec<[f64; 4]>>,
     transformed: bool,
     slots: Vec<Slot>,
+    /// Whether each slot reads a texture coordinate (a point sprite
+    /// replaces those).
+    texcoord: Vec<bool>,
+    /// No vertex shader: the fixed-function pipeline transformed the
+    /// positions (point scaling applies).
+    fixed_function: bool,
+}
+
+/// `values` with the point-size column appended.
+fn with_size(mut values: Vec<[f64; 4]>, size: Option<f32>) -> Vec<[f64; 4]> {
+    values.push([size.map_or(f64::NAN, f64::from), 0.0, 0.0, 0.0]);
+    values
 }
 
 fn widen(v: [f32; 4]) -> [f64; 4] {
@@ -119,6 +138,11 @@ fn vertex_stage(
             },
         })
         .collect();
+    let texcoord: Vec<bool> = wanted.iter().map(|(_, a)| a.usage == "texcoord").collect();
+    let psize = Attribute {
+        usage: "psize".into(),
+        index: 0,
+    };
     let n = g.vertices.count;
     let find = |usage: &str| {
         g.vertices
@@ -144,12 +168,14 @@ fn vertex_stage(
                 .find(|(b, _)| b == a)
                 .map(|(_, v)| v)
         };
+        let sizes = attr(&psize);
         let values = (0..n)
             .map(|v| {
-                wanted
+                let values = wanted
                     .iter()
                     .map(|(_, a)| attr(a).map_or([0.0; 4], |vals| widen(vals[v])))
-                    .collect()
+                    .collect();
+                with_size(values, sizes.map(|s| s[v][0]))
             })
             .collect();
         return Ok(Stage {
@@ -157,6 +183,8 @@ fn vertex_stage(
             values,
             transformed,
             slots,
+            texcoord,
+            fixed_function: !transformed,
         });
     };
     let shader = &list.shaders[vs].loaded.shader;
@@ -187,50 +215,47 @@ fn vertex_stage(
         )
     })?;
     let columns: Vec<Option<usize>> = wanted.iter().map(|(_, a)| column(a)).collect();
+    let size_column = column(&psize);
     Ok(Stage {
         positions: out.values.iter().map(|v| widen(v[position])).collect(),
         values: out
             .values
             .iter()
             .map(|v| {
-                columns
+                let values = columns
                     .iter()
                     .map(|c| c.map_or([0.0; 4], |c| widen(v[c])))
-                    .collect()
+                    .collect();
+                with_size(values, size_column.map(|c| v[c][0]))
             })
             .collect(),
         transformed: false,
         slots,
+        texcoord,
+        fixed_function: false,
     })
 }
 
-/// The screen triangles of the draw, each with its provoking vertex and
-/// the index of the primitive it came from, in drawing order: assembled,
-/// clipped (positions in clip space), divided, mapped through the
-/// viewport, culled.
-fn triangles(
+/// The primitives of the draw on screen, each with its provoking vertex
+/// and the index of the primitive it came from, in drawing order: assembled, clipped (positions in clip space), divided,
+/// mapped through the viewport, culled; points as two triangles, lines
+/// with the pixels of `limit` they cover.
+fn shapes(
     g: &Geometry,
     stage: &Stage,
     viewport: &Viewport,
-) -> Result<Vec<(Triangle, usize, usize)>, String> {
+    limit: Rect,
+) -> Result<Vec<(Shape, usize, usize)>, String> {
     let order: Vec<usize> = match &g.indices {
         Some(ix) => ix.iter().map(|&i| i as usize).collect(),
         None => (0..stage.positions.len()).collect(),
     };
     let planes: Vec<[f64; 4]> = VIEW_VOLUME.iter().chain(&g.clip_planes).copied().collect();
-    let screen = |pos: [f64; 4], values: Vec<[f64; 4]>| {
-        let [x, y, z, rhw] = if stage.transformed {
-            pos
-        } else {
-            viewport.to_screen(pos)
-        };
-        ScreenVertex {
-            x,
-            y,
-            z,
-            rhw,
-            values,
-        }
+    let at = Setup {
+        g,
+        stage,
+        viewport,
+        limit,
     };
     let mut out = Vec::new();
     for (index, prim) in raster::assemble(g.primitive, order.len())?
@@ -239,48 +264,162 @@ fn triangles(
     {
         let [a, b, c] = prim.corners.map(|i| order[i]);
         let provoking = order[prim.provoking];
-        if g.primitive == raster::Primitive::PointList {
-            let p = stage.positions[a];
-            if !stage.transformed && !clip::inside(&planes, &p) {
-                continue;
-            }
-            let centre = screen(p, stage.values[a].clone());
-            let h = g.point_size / 2.0;
-            let corner = |dx: f64, dy: f64| ScreenVertex {
-                x: centre.x + dx,
-                y: centre.y + dy,
-                ..centre.clone()
-            };
-            let (tl, tr, bl, br) = (corner(-h, -h), corner(h, -h), corner(-h, h), corner(h, h));
-            out.extend(Triangle::new(tl, tr.clone(), bl.clone()).map(|t| (t, provoking, index)));
-            out.extend(Triangle::new(tr, br, bl).map(|t| (t, provoking, index)));
-            continue;
-        }
-        let corners = [a, b, c].map(|i| ClipVertex {
+        let corner = |i: usize| ClipVertex {
             pos: stage.positions[i],
             values: stage.values[i].clone(),
-        });
-        let polygon = if stage.transformed {
-            corners.to_vec()
-        } else {
-            clip::clip(corners.to_vec(), &planes)
         };
-        let on_screen: Vec<ScreenVertex> = polygon
-            .into_iter()
-            .map(|v| screen(v.pos, v.values))
-            .collect();
-        for i in 1..on_screen.len().saturating_sub(1) {
-            let t = Triangle::new(
-                on_screen[0].clone(),
-                on_screen[i].clone(),
-                on_screen[i + 1].clone(),
-            );
-            if let Some(t) = t.filter(|t| !g.cull.drops(t.face)) {
-                out.push((t, provoking, index));
+        if g.primitive == raster::Primitive::PointList {
+            let p = stage.positions[a];
+            if stage.transformed || clip::inside(&planes, &p) {
+                out.extend(
+                    at.point(corner(a))
+                        .into_iter()
+                        .map(|t| (t, provoking, index)),
+                );
             }
+            continue;
+        }
+        if g.primitive.is_line() {
+            out.extend(at.line(corner(a), corner(b)).map(|l| (l, provoking, index)));
+            continue;
+        }
+        let polygon = if stage.transformed {
+            vec![corner(a), corner(b), corner(c)]
+        } else {
+            clip::clip(vec![corner(a), corner(b), corner(c)], &planes)
+        };
+        for shape in at.polygon(polygon) {
+            out.push((shape, provoking, index));
         }
     }
     Ok(out)
+}
+
+/// A point's size in pixels: D3DRS_POINTSIZE or the vertex's own
+/// (`oPts`/`psize`, the last value column), scaled where the fixed-function
+/// pipeline scales it, and clamped.
+fn point_size(g: &Geometry, stage: &Stage, viewport: &Viewport, v: &ClipVertex) -> f64 {
+    let own = v.values.last().map(|s| s[0]).filter(|s| !s.is_nan());
+    let eye = stage
+        .fixed_function
+        .then(|| ([v.pos[0], v.pos[1], v.pos[2]], f64::from(viewport.height)));
+    g.state.points.size_of(own, eye)
+}
+
+/// The values at corner `k` (top-left, top-right, bottom-left,
+/// bottom-right) of a point with `values`: a sprite's texture coordinates
+/// in place of the vertex's.
+fn point_values(g: &Geometry, stage: &Stage, values: &[[f64; 4]], k: usize) -> Vec<[f64; 4]> {
+    let mut out = values.to_vec();
+    if g.state.points.sprite {
+        for (value, _) in out.iter_mut().zip(&stage.texcoord).filter(|(_, t)| **t) {
+            *value = raster::points::SPRITE_CORNERS[k];
+        }
+    }
+    out
+}
+
+/// What the set-up of one primitive needs.
+struct Setup<'a> {
+    g: &'a Geometry,
+    stage: &'a Stage,
+    viewport: &'a Viewport,
+    limit: Rect,
+}
+
+impl Setup<'_> {
+    fn screen(&self, v: ClipVertex) -> ScreenVertex {
+        let [x, y, z, rhw] = if self.stage.transformed {
+            v.pos
+        } else {
+            self.viewport.to_screen(v.pos)
+        };
+        ScreenVertex {
+            x,
+            y,
+            z,
+            rhw,
+            values: v.values,
+        }
+    }
+
+    /// A point: the square of its size about it, as two triangles, with a
+    /// sprite's texture coordinates at its corners.
+    fn point(&self, v: ClipVertex) -> Vec<Shape> {
+        let h = point_size(self.g, self.stage, self.viewport, &v) / 2.0;
+        let centre = self.screen(v);
+        let corner = |k: usize, dx: f64, dy: f64| ScreenVertex {
+            x: centre.x + dx,
+            y: centre.y + dy,
+            values: point_values(self.g, self.stage, &centre.values, k),
+            ..centre.clone()
+        };
+        let (tl, tr, bl, br) = (
+            corner(0, -h, -h),
+            corner(1, h, -h),
+            corner(2, -h, h),
+            corner(3, h, h),
+        );
+        [
+            Triangle::new(tl, tr.clone(), bl.clone()),
+            Triangle::new(tr, br, bl),
+        ]
+        .into_iter()
+        .flatten()
+        .map(Shape::Triangle)
+        .collect()
+    }
+
+    /// A line, clipped against z and the user planes (x and y are the
+    /// viewport's scissor: `core/raster`'s docs say why).
+    fn line(&self, a: ClipVertex, b: ClipVertex) -> Option<Shape> {
+        let (a, b) = if self.stage.transformed {
+            (a, b)
+        } else {
+            let planes: Vec<[f64; 4]> = VIEW_VOLUME[4..]
+                .iter()
+                .chain(&self.g.clip_planes)
+                .copied()
+                .collect();
+            clip::clip_segment(a, b, &planes)?
+        };
+        let (a, b) = (self.screen(a), self.screen(b));
+        if ![a.x, a.y, b.x, b.y].iter().all(|v| v.is_finite()) {
+            return None;
+        }
+        let last = self.g.state.last_pixel;
+        Some(Shape::Line(raster::Line::new(a, b, last, self.limit)))
+    }
+
+    /// A clipped polygon, culled, as the fill mode draws it: triangles of
+    /// a fan, its edges as lines, or its vertices as points.
+    fn polygon(&self, polygon: Vec<ClipVertex>) -> Vec<Shape> {
+        let on_screen: Vec<ScreenVertex> = polygon.iter().map(|v| self.screen(v.clone())).collect();
+        let tris: Vec<Triangle> = (1..on_screen.len().saturating_sub(1))
+            .filter_map(|i| {
+                Triangle::new(
+                    on_screen[0].clone(),
+                    on_screen[i].clone(),
+                    on_screen[i + 1].clone(),
+                )
+            })
+            .collect();
+        // The polygon's facing is its fan's (all alike).
+        if tris.first().is_none_or(|t| self.g.cull.drops(t.face)) {
+            return Vec::new();
+        }
+        let last = self.g.state.last_pixel;
+        match self.g.state.fill {
+            FillMode::Solid => tris.into_iter().map(Shape::Triangle).collect(),
+            FillMode::Wireframe => (0..on_screen.len())
+                .map(|i| {
+                    let (a, b) = (&on_screen[i], &on_screen[(i + 1) % on_screen.len()]);
+                    Shape::Line(raster::Line::new(a.clone(), b.clone(), last, self.limit))
+                })
+                .collect(),
+            FillMode::Point => polygon.into_iter().flat_map(|v| self.point(v)).collect(),
+        }
+    }
 }
 
 /// Colours waiting to be merged: every output's full-target buffer and
@@ -297,6 +436,7 @@ struct Pass<'t> {
     /// The draw's targets, oC0 first (`None` where an output is unbound).
     targets: Vec<Option<(&'t mut TargetState, OutputState)>>,
     depth: Option<(DepthBuffer, DepthState)>,
+    stencil: Option<StencilState>,
     pending: Pending,
     merged: MergeStats,
     /// The pixels whose history is being recorded, if any.
@@ -330,6 +470,43 @@ impl Pass<'_> {
         Ok(())
     }
 
+    /// The stencil and depth tests at target pixel `t` for a fragment of
+    /// depth `z` from a primitive of facing `face`, their writes done:
+    /// whether the fragment goes on to the output merger, and what the
+    /// stencil stage did (`None` without a stencil test).
+    fn depth_stencil(&mut self, t: usize, z: f64, face: Face) -> (bool, Option<StencilOutcome>) {
+        let Some((buffer, state)) = &mut self.depth else {
+            return (true, None);
+        };
+        let z = buffer.format.store(z);
+        let stored_z = buffer.values[t];
+        let depth_passes = || state.func.passes(z, stored_z);
+        let (survives, outcome) = match &self.stencil {
+            None => (depth_passes(), None),
+            Some(s) => {
+                let side = match (face, s.ccw) {
+                    (Face::Back, Some(ccw)) => ccw,
+                    _ => s.cw,
+                };
+                let o = stencil::run(
+                    buffer.stencil[t],
+                    |a, b| side.func.passes(a, b),
+                    depth_passes,
+                    &side.ops,
+                    s.reference,
+                    s.mask,
+                    s.write_mask,
+                );
+                buffer.stencil[t] = o.written;
+                (o.survives(), Some(o))
+            }
+        };
+        if survives && state.write {
+            buffer.values[t] = z;
+        }
+        (survives, outcome)
+    }
+
     /// Takes one triangle's shaded pixels through the alpha and depth
     /// tests into the pending colours.
     fn take(
@@ -337,6 +514,7 @@ impl Pass<'_> {
         window: &raster::triangle::Window,
         out: &DrawOutput,
         alpha: Option<super::super::pixel_state::AlphaTest>,
+        face: Face,
     ) -> Result<(), DrawFailure> {
         let (ox, oy) = window.inputs.origin;
         let covered = |i: usize| window.inputs.covered[i];
@@ -350,7 +528,7 @@ impl Pass<'_> {
         }
         for i in (0..window.depth.len()).filter(|&i| covered(i)) {
             let t = index(i);
-            let verdict = self.test(window, out, alpha, (i, t));
+            let verdict = self.test(window, out, alpha, (i, t), face);
             if let Some(w) = self.watch.as_deref_mut() {
                 w.verdict(t, &verdict);
             }
@@ -373,19 +551,22 @@ impl Pass<'_> {
 }
 
 impl Pass<'_> {
-    /// Pixel `i` of the window (`t` of the target) through `texkill`, the
-    /// alpha test and the depth test, in Direct3D 9's order, writing its
-    /// depth where it passes; the first test that fails ends it.
+    /// Pixel `i` of the window (`t` of the target), from a primitive of
+    /// facing `face`, through `texkill`, the alpha test and the stencil and
+    /// depth tests, in Direct3D 9's order, writing its depth and stencil as
+    /// they say; the first test that fails ends it.
     fn test(
         &mut self,
         window: &raster::triangle::Window,
         out: &DrawOutput,
         alpha: Option<super::super::pixel_state::AlphaTest>,
         (i, t): (usize, usize),
+        face: Face,
     ) -> Verdict {
         let mut verdict = Verdict {
             killed: out.killed[i],
             alpha: None,
+            stencil: None,
             depth: None,
         };
         if verdict.killed {
@@ -398,28 +579,34 @@ impl Pass<'_> {
                 return verdict;
             }
         }
-        if let Some((buffer, state)) = &mut self.depth {
-            let z = out
-                .depth
-                .as_ref()
-                .map_or(window.depth[i], |d| f64::from(d[i]));
-            let z = buffer.format.store(z);
-            let stored = buffer.values[t];
-            let passed = state.func.passes(z, stored);
-            if passed && state.write {
-                buffer.values[t] = z;
-            }
+        let z = out
+            .depth
+            .as_ref()
+            .map_or(window.depth[i], |d| f64::from(d[i]));
+        let Some((buffer, state)) = &self.depth else {
+            return verdict;
+        };
+        let (stored_z, stored, func, write) = (
+            buffer.format.store(z),
+            buffer.values[t],
+            state.func,
+            state.write,
+        );
+        let (survives, stencil) = self.depth_stencil(t, z, face);
+        verdict.stencil = stencil;
+        // The depth test runs unless the stencil test failed first.
+        if stencil.is_none_or(|o| o.passed) {
             verdict.depth = Some(history::DepthVerdict {
-                z,
+                z: stored_z,
                 from: if out.depth.is_some() {
                     "oDepth"
                 } else {
                     "interpolated"
                 },
                 stored,
-                func: history::depth_func(state.func),
-                passed,
-                written: passed && state.write,
+                func: history::depth_func(func),
+                passed: func.passes(stored_z, stored),
+                written: survives && write,
             });
         }
         verdict
@@ -441,21 +628,23 @@ pub(crate) fn draw(
     let float_rules = d.pixel.float_rules.unwrap_or(settings.float_rules);
     let stage = vertex_stage(list, g, d, float_rules, states, &settings.backend)?;
     let viewport = g.viewport.unwrap_or_else(|| Viewport::whole(width, height));
-    let tris = triangles(g, &stage, &viewport).map_err(DrawFailure::Message)?;
     let clip_rect = clip_rect(g, &viewport, width, height);
+    let tris = shapes(g, &stage, &viewport, clip_rect).map_err(DrawFailure::Message)?;
     if let Some(w) = watch.as_deref_mut() {
         // The triangles the cull mode dropped, to say why a pixel was missed.
         let all = Geometry {
             cull: raster::Cull::None,
             ..g.clone()
         };
-        let culled: Vec<Triangle> = triangles(&all, &stage, &viewport)
+        let culled: Vec<Triangle> = shapes(&all, &stage, &viewport, clip_rect)
             .map_err(DrawFailure::Message)?
             .into_iter()
-            .map(|(t, _, _)| t)
-            .filter(|t| g.cull.drops(t.face))
+            .filter_map(|(s, _, _)| match s {
+                Shape::Triangle(t) if g.cull.drops(t.face) => Some(t),
+                _ => None,
+            })
             .collect();
-        w.geometry(&tris, &culled, viewport.rect(), g.scissor);
+        w.geometry(tris.len(), &culled, viewport.rect(), g.scissor);
     }
     // The targets this draw writes leave `states` while it runs, so that
     // the samplers may borrow the others (a draw never samples its own).
@@ -487,6 +676,7 @@ pub(crate) fn draw(
                 .map(|t| t.as_mut().map(|(s, o)| (s, *o)))
                 .collect(),
             depth,
+            stencil: g.state.stencil,
             pending: Pending {
                 colors: vec![vec![[0.0; 4]; n]; 4],
                 held: vec![false; n],
@@ -578,6 +768,7 @@ fn depth_buffer(
     let mut buffer = t.depth.take().unwrap_or(DepthBuffer {
         format: state.format,
         values: vec![1.0; n],
+        stencil: vec![0; n],
     });
     if buffer.format != state.format {
         return Err(DrawFailure::Message(format!(
@@ -589,6 +780,9 @@ fn depth_buffer(
     if let Some(z) = state.clear {
         buffer.values.fill(state.format.store(z));
     }
+    if let Some(v) = g.state.stencil.and_then(|s| s.clear) {
+        buffer.stencil.fill(v);
+    }
     Ok(Some((buffer, state)))
 }
 
@@ -599,7 +793,7 @@ fn shade_all(
     compiled: &Compiled,
     d: &DrawStep,
     stage: &Stage,
-    tris: &[(Triangle, usize, usize)],
+    tris: &[(Shape, usize, usize)],
     clip_rect: Rect,
     samplers: &[(u32, emu::TextureLevels<'_>, emu::SamplerState)],
     settings: &Settings,
@@ -647,7 +841,7 @@ fn shade_all(
         draw.record_lod = true;
         draw.constants = d.constants.clone();
         draw.float_rules = d.pixel.float_rules.unwrap_or(settings.float_rules);
-        draw.face = tri.face;
+        draw.face = tri.face();
         draw.samplers = samplers.to_vec();
         draw.pixels = Some(&window.inputs);
         let threads = settings.threads.unwrap_or(0);
@@ -676,7 +870,7 @@ fn shade_all(
             let program = list.shaders[d.shader].loaded.shader.program();
             w.primitive(program, (k, tri, *provoking), &window, &out);
         }
-        pass.take(&window, &out, d.pixel.alpha_test)?;
+        pass.take(&window, &out, d.pixel.alpha_test, tri.face())?;
     }
     Ok(drawn)
 }

@@ -13,7 +13,7 @@ use crate::core::ir::Shader;
 use crate::core::merge::MergeStats;
 use crate::core::raster::clip::{self, VIEW_VOLUME};
 use crate::core::raster::triangle::Window;
-use crate::core::raster::{self, Primitive, Rect, Viewport};
+use crate::core::raster::{self, Face, Primitive, Rect, Viewport};
 use crate::jobs::backend::Backend;
 use crate::jobs::render::geometry::Geometry;
 use crate::jobs::render::{DrawFailure, DrawList, DrawStep, Settings, TargetState};
@@ -26,6 +26,8 @@ struct Setup {
     positions: Vec<[f32; 4]>,
     values: Vec<Vec<[f32; 4]>>,
     primitives: Vec<Vec<[u32; 3]>>,
+    /// Each primitive's facing, for two-sided stencil (a point's is front).
+    faces: Vec<Face>,
 }
 
 /// Assembles `g`'s primitives over `stage`'s vertices.
@@ -42,6 +44,12 @@ fn setup(g: &Geometry, stage: &Stage, viewport: &Viewport) -> Result<Setup, Stri
             g.primitive
         ));
     }
+    if g.state.fill != super::FillMode::Solid {
+        return Err(
+            "the GPU backend draws solid fills; fill_mode wireframe and point are drawn on the emulator only"
+                .into(),
+        );
+    }
     let narrow = |v: &[f64; 4]| v.map(|x| x as f32);
     let mut s = Setup {
         positions: stage.positions.iter().map(narrow).collect(),
@@ -51,6 +59,7 @@ fn setup(g: &Geometry, stage: &Stage, viewport: &Viewport) -> Result<Setup, Stri
             .map(|v| v.iter().map(narrow).collect())
             .collect(),
         primitives: Vec::new(),
+        faces: Vec::new(),
     };
     let order: Vec<usize> = match &g.indices {
         Some(ix) => ix.iter().map(|&i| i as usize).collect(),
@@ -65,22 +74,25 @@ fn setup(g: &Geometry, stage: &Stage, viewport: &Viewport) -> Result<Setup, Stri
                 // Not drawn; kept in place so that primitives keep their
                 // numbers.
                 s.primitives.push(Vec::new());
+                s.faces.push(Face::Front);
                 continue;
             }
             let first = s.positions.len() as u32;
-            for (dx, dy) in [(-1.0, -1.0), (1.0, -1.0), (-1.0, 1.0), (1.0, 1.0)] {
-                s.positions.push(point_corner(
-                    p,
-                    dx,
-                    dy,
-                    g.point_size,
-                    stage.transformed,
-                    viewport,
-                ));
-                s.values.push(s.values[a as usize].clone());
+            let at = clip::ClipVertex {
+                pos: p,
+                values: stage.values[a as usize].clone(),
+            };
+            let size = super::point_size(g, stage, viewport, &at);
+            let corners = [(-1.0, -1.0), (1.0, -1.0), (-1.0, 1.0), (1.0, 1.0)];
+            for (k, (dx, dy)) in corners.into_iter().enumerate() {
+                s.positions
+                    .push(point_corner(p, dx, dy, size, stage.transformed, viewport));
+                let values = super::point_values(g, stage, &at.values, k);
+                s.values.push(values.iter().map(narrow).collect());
             }
             let [tl, tr, bl, br] = [first, first + 1, first + 2, first + 3];
             s.primitives.push(vec![[tl, tr, bl], [tr, br, bl]]);
+            s.faces.push(Face::Front);
             continue;
         }
         let provoking = order[prim.provoking] as u32;
@@ -90,8 +102,35 @@ fn setup(g: &Geometry, stage: &Stage, viewport: &Viewport) -> Result<Setup, Stri
             _ => [a, b, c],
         };
         s.primitives.push(vec![corners]);
+        s.faces.push(face(stage, [a, b, c]));
     }
     Ok(s)
+}
+
+/// The facing of the triangle of vertices `v` as the emulator's set-up
+/// finds it: clockwise on screen is front. On screen (X, Y) = (x/w·W/2 + …,
+/// −y/w·H/2 + …), so twice the signed screen area is −(W·H/4)·det/(w₀w₁w₂),
+/// det the determinant of the rows (x, y, w): with every w positive the
+/// triangle is front where det < 0, and det's sign holds for the part of
+/// the triangle in front of the eye whatever the signs of the w. A
+/// pre-transformed triangle's corners are on screen already.
+fn face(stage: &Stage, v: [u32; 3]) -> Face {
+    let [a, b, c] = v.map(|i| stage.positions[i as usize]);
+    let area = |a: [f64; 4], b: [f64; 4], c: [f64; 4]| {
+        (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
+    };
+    let front = if stage.transformed {
+        area(a, b, c) > 0.0
+    } else {
+        let det = a[0] * (b[1] * c[3] - b[3] * c[1]) - a[1] * (b[0] * c[3] - b[3] * c[0])
+            + a[3] * (b[0] * c[1] - b[1] * c[0]);
+        det < 0.0
+    };
+    if front {
+        Face::Front
+    } else {
+        Face::Back
+    }
 }
 
 /// A corner of the square of a point of side `size` pixels around `p`
@@ -133,7 +172,8 @@ pub(super) fn shade_all(
     pass: &mut Pass,
 ) -> Result<Drawn, DrawFailure> {
     let draw = pixel_draw(d, stage, samplers, settings, (pass.width, height));
-    let (primitives, shaded) = on_device(device, shader, g, stage, &draw, viewport, clip_rect)?;
+    let (primitives, faces, shaded) =
+        on_device(device, shader, g, stage, &draw, viewport, clip_rect)?;
     let mut drawn = Drawn {
         merged: MergeStats::default(),
         executed: None,
@@ -143,7 +183,7 @@ pub(super) fn shade_all(
         shaded: 0,
     };
     let mut pixels_left = settings.budget.max_pixels;
-    for (prim, s) in primitives.iter().zip(&shaded) {
+    for ((prim, &face), s) in primitives.iter().zip(&faces).zip(&shaded) {
         if s.pixels.is_empty() {
             continue;
         }
@@ -158,7 +198,7 @@ pub(super) fn shade_all(
         drawn.triangles += prim.len() as u64;
         drawn.shaded += s.pixels.len() as u64;
         let (window, out) = window(s, pass.width);
-        pass.take(&window, &out, d.pixel.alpha_test)?;
+        pass.take(&window, &out, d.pixel.alpha_test, face)?;
     }
     Ok(drawn)
 }
@@ -186,8 +226,8 @@ fn pixel_draw<'s>(
     draw
 }
 
-/// Each primitive's triangles (vertex indices) and its shaded pixels.
-type OnDevice = (Vec<Vec<[u32; 3]>>, Vec<ShadedPrimitive>);
+/// Each primitive's triangles (vertex indices), its facing and its shaded pixels.
+type OnDevice = (Vec<Vec<[u32; 3]>>, Vec<Face>, Vec<ShadedPrimitive>);
 
 /// Sets `g` up over `stage` and draws it on `device`.
 fn on_device(
@@ -200,6 +240,7 @@ fn on_device(
     clip_rect: Rect,
 ) -> Result<OnDevice, DrawFailure> {
     let setup = setup(g, stage, viewport).map_err(DrawFailure::Message)?;
+    let setup_faces = setup.faces;
     let flat = stage.slots.iter().fold(0u64, |bits, s| {
         (0..4)
             .filter(|&c| s.flat[c] && s.slot < 16)
@@ -220,7 +261,7 @@ fn on_device(
     };
     let shaded = gpu::draw_geometry(device, shader, &geometry)
         .map_err(|e| DrawFailure::Message(e.to_string()))?;
-    Ok((geometry.primitives, shaded))
+    Ok((geometry.primitives, setup_faces, shaded))
 }
 
 /// Which pixels each primitive of a draw of geometry covers on the
@@ -267,8 +308,11 @@ pub(crate) fn coverage(
         gpu: Vec::new(),
         triangles: vec![Vec::new(); count],
     };
-    for (t, _, p) in super::triangles(g, &emulated, &viewport).map_err(DrawFailure::Message)? {
-        c.triangles[p].push(t.v.each_ref().map(|v| [v.x, v.y]));
+    let shapes = super::shapes(g, &emulated, &viewport, clip_rect).map_err(DrawFailure::Message)?;
+    for (t, _, p) in shapes {
+        c.triangles[p].push(std::array::from_fn(|k| {
+            t.corners().get(k).map_or([0.0; 2], |v| [v.x, v.y])
+        }));
         let Some(b) = t.bounds(clip_rect) else {
             continue;
         };
@@ -287,7 +331,7 @@ pub(crate) fn coverage(
     let samplers = crate::jobs::render::bind_samplers(list, d, &d.samplers, states)?;
     let draw = pixel_draw(d, &stage, &samplers, settings, (width, height));
     let shader = &list.shaders[d.shader].loaded.shader;
-    let (_, shaded) = on_device(device, shader, g, &stage, &draw, &viewport, clip_rect)?;
+    let (_, _, shaded) = on_device(device, shader, g, &stage, &draw, &viewport, clip_rect)?;
     c.gpu = shaded.into_iter().map(|s| s.pixels).collect();
     c.gpu.resize(count, Vec::new());
     Ok(c)

@@ -1,0 +1,230 @@
+//! Whole draws of lines, sized points and point sprites, fill modes and the
+//! stencil test (tests/draw_conformance/, docs/draw.md), in the manner of
+//! `draw_conformance.rs`: each list drawn with `ps30 render` and every
+//! pixel compared with a value derived here — by hand from Direct3D 9's
+//! rules (cited beside each case) or in f64 — never from ps30.
+
+use crate::draw_conformance::{check, draw, near, Rgba, CLEAR, GREEN, RED};
+
+#[test]
+fn lines_follow_the_diamond_exit_rule_and_lastpixel() {
+    // "Rasterization Rules (Direct3D 9)": lines that are not antialiased
+    // follow GDI's rule, the diamond-exit rule (Direct3D 10's "Rasterization
+    // Rules" spell it out): a line covers a pixel when it leaves the
+    // diamond |dx| + |dy| < ½ round the pixel's centre; D3DRS_LASTPIXEL
+    // (TRUE by default) adds the pixel whose diamond holds the end.
+    let t = draw("lines.json");
+    // "h": (1,1)→(6,1) along row 1 through centres. It leaves the diamonds
+    // of columns 1–5 by their right corners (outside for an x-major line);
+    // column 6 holds its end: drawn with LASTPIXEL (row 1), not without
+    // (row 3, the same line). u runs 0 → 1 with t = (x − 1)/5 (w = 1 at
+    // both ends, so perspective changes nothing: one ulp as `near` allows).
+    let (width, pixels) = &t["h"];
+    for (i, got) in pixels.iter().enumerate() {
+        let (x, y) = (i as u32 % width, i as u32 / width);
+        let last = if y == 1 { 6 } else { 5 };
+        if (y == 1 || y == 3) && (1..=last).contains(&x) {
+            let u = f64::from(x - 1) / 5.0;
+            assert!(near(got[0], u), "h ({x}, {y}): {got:?} want u {u}");
+            assert_eq!((got[1], got[2], got[3]), (0.0, 0.0, 1.0), "h ({x}, {y})");
+        } else {
+            assert_eq!(*got, CLEAR, "h ({x}, {y})");
+        }
+    }
+    // "diag": (1,1)→(7,4), x-major with slope ½, red. At x = 2, 4, 6 it
+    // crosses y = 1.5, 2.5, 3.5: the bottom corner of the pixel above
+    // (inside for an x-major line: it touches, then leaves — drawn) and the
+    // top corner of the pixel below (outside: never entered). So (1,1),
+    // (2,1), (3,2), (4,2), (5,3), (6,3) and the last pixel (7,4).
+    // (9,1)→(12,7), y-major with dx/dy = ½, green: at y = 2, 4, 6 it
+    // crosses x = 9.5, 10.5, 11.5, the right corner of the pixel on the
+    // left (inside for a y-major line) and the left corner of the one on
+    // the right (outside): (9,1), (9,2), (10,3), (10,4), (11,5), (11,6),
+    // last (12,7).
+    let red = [(1, 1), (2, 1), (3, 2), (4, 2), (5, 3), (6, 3), (7, 4)];
+    let green = [(9, 1), (9, 2), (10, 3), (10, 4), (11, 5), (11, 6), (12, 7)];
+    check(&t, "diag", |x, y| {
+        if red.contains(&(x, y)) {
+            RED
+        } else if green.contains(&(x, y)) {
+            GREEN
+        } else {
+            CLEAR
+        }
+    });
+    // "strip": two strips of two lines each, blended ONE/ONE with
+    // (¼, 0, 0, ¼) so a pixel shows how many times it was drawn. Without
+    // LASTPIXEL, (1,1)→(4,1)→(4,4): the first line draws columns 1–3 and
+    // leaves (4,1), its end, to the second, which leaves (4,1) through its
+    // bottom corner (inside: it was in the diamond) — every pixel once:
+    // (1..=3, 1), (4, 1..=3). With LASTPIXEL, (9,1)→(12,1)→(12,4): (12,1)
+    // is the first line's last pixel and the second's first, drawn twice
+    // (½); (12,4) is the second's last pixel.
+    let once = [0.25, 0.0, 0.0, 0.25];
+    let twice = [0.5, 0.0, 0.0, 0.5];
+    check(&t, "strip", |x, y| match (x, y) {
+        (1..=3, 1) | (4, 1..=3) => once,
+        (9..=11, 1) | (12, 2..=4) => once,
+        (12, 1) => twice,
+        _ => CLEAR,
+    });
+}
+
+#[test]
+fn values_along_a_line_are_perspective_correct() {
+    // Clip-space A = (−1, ½, ½, 1) and B = (2.25, 1.5, 1.5, 3) on an 8×8
+    // viewport: screen x = (1 + x/w)·4 gives 0 and 7, y = (1 − y/w)·4 gives
+    // 2 for both; z/w = ½ at both, inside the view volume. Row 2, columns
+    // 0–7 (7 is the last pixel). At column x, t = x/7 along the major axis,
+    // and u = (t/3) / ((1 − t) + t/3) with perspective (affine would give
+    // t). Alpha is w = 1 at both ends: exactly 1.
+    let t = draw("lines.json");
+    let (width, pixels) = &t["persp"];
+    for (i, got) in pixels.iter().enumerate() {
+        let (x, y) = (i as u32 % width, i as u32 / width);
+        if y != 2 {
+            assert_eq!(*got, CLEAR, "persp ({x}, {y})");
+            continue;
+        }
+        let t = f64::from(x) / 7.0;
+        let u = (t / 3.0) / ((1.0 - t) + t / 3.0);
+        assert!(near(got[0], u), "persp ({x}, {y}): {got:?} want {u}");
+        assert_eq!(got[3], 1.0);
+    }
+    // Halfway along the screen (t = ½ would be column 3.5) the affine value
+    // would be ½; at column 7·¾ ≈ 5 perspective gives far less: u(5) =
+    // (5/21) / (2/7 + 5/21) = 5/11.
+    assert!(near(pixels[2 * 8 + 5][0], 5.0 / 11.0));
+}
+
+const BLUE: Rgba = [0.0, 0.0, 1.0, 1.0];
+
+#[test]
+fn point_sizes_come_from_the_vertex_clamped_and_scaled() {
+    // "Point Sprites (Direct3D 9)": a point is the square (X ± S/2, Y ± S/2)
+    // rasterised by the triangle rules (centres on its left and top edges
+    // kept, on its right and bottom edges dropped); S is the vertex's own
+    // size if it has one, else D3DRS_POINTSIZE, clamped to
+    // [D3DRS_POINTSIZE_MIN, D3DRS_POINTSIZE_MAX] (1 and, here, 4).
+    let t = draw("point_sizes.json");
+    // "sizes", through psize.vsh (vs_3_0 writing dcl_psize o2): size 3 at
+    // (4, 4) → (2.5, 5.5)², centres 3–5 (red); size 100 at (11, 4) →
+    // clamped to 4: (9, 13) × (2, 6), centres 9–12 × 2–5 (green); size ½ at
+    // (4, 11) → clamped to 1: (3.5, 4.5)², the one centre (4, 11) (blue).
+    check(&t, "sizes", |x, y| match (x, y) {
+        (3..=5, 3..=5) => RED,
+        (9..=12, 2..=5) => GREEN,
+        (4, 11) => BLUE,
+        _ => CLEAR,
+    });
+    // "ff": no vertex shader, the vertex's psize0 (D3DDECLUSAGE_PSIZE) 2 at
+    // (3, 3): (2, 4)², centres 2–3.
+    check(&t, "ff", |x, y| match (x, y) {
+        (2..=3, 2..=3) => RED,
+        _ => CLEAR,
+    });
+    // "scale": D3DRS_POINTSCALEENABLE with A = B = 0, C = 64 on the
+    // fixed-function vertex (0, 0, ½): De = ½, Ss = Vh·Si·√(1/(C·De²)) =
+    // 16·1·√(1/16) = 4, about screen (8, 8): centres 6–9.
+    check(&t, "scale", |x, y| match (x, y) {
+        (6..=9, 6..=9) => GREEN,
+        _ => CLEAR,
+    });
+}
+
+#[test]
+fn point_sprites_replace_texture_coordinates_across_the_point() {
+    // D3DRS_POINTSPRITEENABLE: the texture spans the point, (0, 0) at its
+    // top-left corner and (1, 1) at its bottom-right, the third and fourth
+    // components 0 and 1. Size 4 at (12, 12): corners 10 and 14, centres
+    // 10–13, u = (x − 10)/4 and v = (y − 10)/4 — quarters, exact. The same
+    // point at (4, 4) without sprites keeps the vertex's (½, ½, ½, ½)
+    // everywhere.
+    let t = draw("point_sizes.json");
+    check(&t, "sprite", |x, y| match (x, y) {
+        (10..=13, 10..=13) => [(x as f32 - 10.0) / 4.0, (y as f32 - 10.0) / 4.0, 0.0, 1.0],
+        (2..=5, 2..=5) => [0.5; 4],
+        _ => CLEAR,
+    });
+}
+
+#[test]
+fn fill_modes_draw_edges_as_lines_and_vertices_as_points() {
+    // D3DRS_FILLMODE on the triangle (1,1), (6,1), (1,6). Wireframe (red):
+    // its three edges as lines, each with its last pixel (D3DRS_LASTPIXEL
+    // is TRUE): (1,1)→(6,1) row 1, columns 1–6; (6,1)→(1,6) through the
+    // centres (6−k, 1+k), leaving each diamond by a lower-left edge, its
+    // end (1,6) the last pixel; (1,6)→(1,1) up column 1. Point (green, the
+    // same triangle 8 columns right): its vertices as 1-pixel points,
+    // (9,1), (14,1), (9,6).
+    let t = draw("point_sizes.json");
+    check(&t, "fill", |x, y| {
+        let edge = (y == 1 && (1..=6).contains(&x))
+            || (x + y == 7 && (1..=6).contains(&x))
+            || (x == 1 && (1..=6).contains(&y));
+        if edge {
+            RED
+        } else if [(9, 1), (14, 1), (9, 6)].contains(&(x, y)) {
+            GREEN
+        } else {
+            CLEAR
+        }
+    });
+}
+
+#[test]
+fn every_stencil_op_from_five_from_255_and_from_0() {
+    // D3DSTENCILOP with the reference 7 on stored 5 (rows 0–1), 255 (rows
+    // 2–3, written by REPLACE) and 0 (rows 4–5), one op per column, applied
+    // as the pass operation of an ALWAYS test; then, for each value v a
+    // pixel can hold, a draw with STENCILFUNC EQUAL and reference v writes
+    // (v, 0, 0, 1), so every pixel shows its stored value. KEEP keeps;
+    // ZERO 0; REPLACE 7; INCRSAT 6, 255 (clamped), 1; DECRSAT 4, 254, 0
+    // (clamped); INVERT 250, 0, 255; INCR 6, 0 (wrapped), 1; DECR 4, 254,
+    // 255 (wrapped).
+    let want: [[f32; 8]; 3] = [
+        [5.0, 0.0, 7.0, 6.0, 4.0, 250.0, 6.0, 4.0],
+        [255.0, 0.0, 7.0, 255.0, 254.0, 0.0, 0.0, 254.0],
+        [0.0, 0.0, 7.0, 1.0, 0.0, 255.0, 1.0, 255.0],
+    ];
+    let t = draw("stencil.json");
+    check(&t, "ops", |x, y| {
+        [want[y as usize / 2][x as usize], 0.0, 0.0, 1.0]
+    });
+}
+
+#[test]
+fn stencil_function_masks_depth_fail_two_sides_and_the_alpha_test() {
+    // Stored 5 everywhere; fail DECR, z-fail INVERT, pass INCR unless said:
+    // 0: LESS with reference 3 — "(StencilRef & StencilMask) CompFunc
+    //    (StencilBufferValue & StencilMask)", 3 < 5 passes: 6.
+    // 1: GREATER with 3: 3 > 5 fails: 4.
+    // 2: EQUAL with 21 and mask 15: 21 & 15 = 5 = 5 & 15, passes: 6.
+    // 3: REPLACE 250 through write mask 15: (5 & ~15) | (250 & 15) = 10.
+    // 4: depth 0.75 LESS the cleared 0.5 fails, the stencil passed: 250.
+    // 5: depth 0.25 passes: 6.
+    // 6: two-sided, D3DRS_CCW_STENCILPASS ZERO: row 0 drawn
+    //    counter-clockwise (ZERO: 0), row 1 clockwise (INCR: 6).
+    // 7: the alpha test (GREATER 0) drops alpha 0 before the stencil test:
+    //    5 stays.
+    let want = [6.0, 4.0, 6.0, 10.0, 250.0, 6.0, 0.0, 5.0];
+    let t = draw("stencil.json");
+    check(&t, "tests", |x, y| {
+        let v = if x == 6 && y == 1 {
+            6.0
+        } else {
+            want[x as usize]
+        };
+        [v, 0.0, 0.0, 1.0]
+    });
+}
+
+#[test]
+fn a_d3dcolor_vertex_reaches_the_shader_as_rgba() {
+    // D3DDECLTYPE_D3DCOLOR: the packed ARGB DWORD 0x80FF4000 is "expanded
+    // to (R, G, B, A)": (255, 64, 0, 128) / 255. Every vertex has the same
+    // colour, so interpolation returns it: the f64 weighted mean of one f32
+    // value rounds back to that value.
+    let t = draw("d3dcolor.json");
+    check(&t, "t", |_, _| [1.0, 64.0 / 255.0, 0.0, 128.0 / 255.0]);
+}
