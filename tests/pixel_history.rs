@@ -135,7 +135,7 @@ fn overdraw_with_a_depth_reject_and_every_way_to_miss() {
     assert!(missed(4).starts_with("scissored"), "{}", missed(4));
     // A quad over columns 2 and 3 only (its left edge at x = 2).
     assert!(
-        missed(5).starts_with("outside every triangle"),
+        missed(5).starts_with("outside every primitive"),
         "{}",
         missed(5)
     );

@@ -10,7 +10,7 @@
 //! and stored depths and whether it wrote, and the blend with its source,
 //! destination, factors and result — and why a draw that changed the
 //! target did not reach the pixel (outside the viewport, scissored,
-//! culled, outside every triangle).
+//! culled, outside every primitive).
 //!
 //! The runner ([`super::run_with_history`]) calls a [`Recorder`] at a few
 //! places: around each step, after a full-screen draw's shader, after

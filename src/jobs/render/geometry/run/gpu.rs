@@ -51,12 +51,15 @@ fn setup(g: &Geometry, stage: &Stage, viewport: &Viewport) -> Result<Setup, Stri
         );
     }
     let narrow = |v: &[f64; 4]| v.map(|x| x as f32);
+    // The stage's values end with each vertex's own point size, which
+    // sizes points here and is no input of the pixel shader.
+    let inputs = stage.slots.len();
     let mut s = Setup {
         positions: stage.positions.iter().map(narrow).collect(),
         values: stage
             .values
             .iter()
-            .map(|v| v.iter().map(narrow).collect())
+            .map(|v| v[..inputs].iter().map(narrow).collect())
             .collect(),
         primitives: Vec::new(),
         faces: Vec::new(),
@@ -88,7 +91,7 @@ fn setup(g: &Geometry, stage: &Stage, viewport: &Viewport) -> Result<Setup, Stri
                 s.positions
                     .push(point_corner(p, dx, dy, size, stage.transformed, viewport));
                 let values = super::point_values(g, stage, &at.values, k);
-                s.values.push(values.iter().map(narrow).collect());
+                s.values.push(values[..inputs].iter().map(narrow).collect());
             }
             let [tl, tr, bl, br] = [first, first + 1, first + 2, first + 3];
             s.primitives.push(vec![[tl, tr, bl], [tr, br, bl]]);
