@@ -256,3 +256,56 @@ fn fog_blends_the_colour_after_a_ps_2_0_shader() {
         assert_eq!((got[2], got[3]), (1.0, 1.0));
     }
 }
+
+#[test]
+fn bad_render_states_are_refused_by_field() {
+    let dir = tempfile::tempdir().unwrap();
+    let shader = crate::common::bin::repo().join("tests/draw_conformance/texcoord.psh");
+    let verts = r#"{"attributes": {"positiont0": [[0, 0, 0, 1], [4, 0, 0, 1], [0, 4, 0, 1]]}}"#;
+    for (extra, want) in [
+        (
+            r#""stencil": {"pass": "INCR"}"#,
+            "steps[0].geometry.stencil: the stencil lives in a D3DFMT_D24S8",
+        ),
+        (
+            r#""depth": {"format": "D16"}, "stencil": {}"#,
+            "steps[0].geometry.stencil:",
+        ),
+        (
+            r#""depth": {"format": "D24S8"}, "stencil": {"zfail": "INCREMENT"}"#,
+            "steps[0].geometry.stencil.zfail: `INCREMENT` is not a D3DSTENCILOP",
+        ),
+        (
+            r#""depth": {"format": "D24S8"}, "stencil": {"ccw": {"func": "SOMETIMES"}}"#,
+            "steps[0].geometry.stencil.ccw.func: `SOMETIMES` is not a D3DCMPFUNC",
+        ),
+        (
+            r#""depth": {"format": "D24S8"}, "stencil": {"ref": 256}"#,
+            "steps[0].geometry.stencil.ref: 256",
+        ),
+        (
+            r#""point_size_min": 8, "point_size_max": 4"#,
+            "steps[0].geometry.point_size_min: 8 is above point_size_max 4",
+        ),
+        (r#""fill_mode": "dots""#, "steps[0].geometry.fill_mode:"),
+        (r#""fog": {"mode": "fast"}"#, "steps[0].geometry.fog.mode:"),
+        (
+            r#""point_scale": [0, 0, 0]"#,
+            "steps[0].geometry.point_scale:",
+        ),
+    ] {
+        let list = format!(
+            r#"{{"targets": [{{"name": "t", "size": "4x4", "format": "A8R8G8B8"}}],
+                "steps": [{{"draw": "t", "shader": {shader:?}, "geometry": {{"primitive": "triangle_list", "vertices": {verts}, {extra}}}}}]}}"#
+        );
+        let path = dir.path().join("list.json");
+        std::fs::write(&path, list).unwrap();
+        let o = crate::common::bin::ps30(
+            &["render", path.to_str().unwrap()],
+            crate::common::bin::repo(),
+        );
+        assert_eq!(o.status.code(), Some(2), "{extra}");
+        let err = crate::common::bin::stderr(&o);
+        assert!(err.contains(want), "{extra}: {err}");
+    }
+}
