@@ -228,3 +228,84 @@ fn a_d3dcolor_vertex_reaches_the_shader_as_rgba() {
     let t = draw("d3dcolor.json");
     check(&t, "t", |_, _| [1.0, 64.0 / 255.0, 0.0, 128.0 / 255.0]);
 }
+
+#[test]
+fn fog_blends_the_colour_after_a_ps_2_0_shader() {
+    // A white quad over 8×2 whose depth runs from 0 at x = 0 to 1 at x = 8
+    // (pre-transformed z, linear on screen): pixel x has d = x/8. Fog
+    // colour blue; "Fog Blending": C = f·white + (1 − f)·blue, alpha kept.
+    // Linear table fog, start 0, end 1: f = 1 − x/8 (dyadic, exact). EXP
+    // with density 2: f = e^(−2x/8), in f64. Vertex fog from the specular
+    // (color1) alpha, 1 at the left and 0 at the right: the same 1 − x/8,
+    // interpolated (w = 1 everywhere). ps_3_0 has no fixed-function fog:
+    // white.
+    let t = draw("fog.json");
+    let fogged = |f: f64| [f as f32, f as f32, 1.0, 1.0];
+    let linear = |x: u32, _| fogged(1.0 - f64::from(x) / 8.0);
+    check(&t, "linear", linear);
+    check(&t, "vertex", linear);
+    check(&t, "ps3", |_, _| [1.0; 4]);
+    let (width, pixels) = &t["exp"];
+    for (i, got) in pixels.iter().enumerate() {
+        let x = i as u32 % width;
+        let f = (-2.0 * f64::from(x) / 8.0).exp();
+        assert!(
+            near(got[0], f) && near(got[1], f),
+            "exp ({x}): {got:?} want {f}"
+        );
+        assert_eq!((got[2], got[3]), (1.0, 1.0));
+    }
+}
+
+#[test]
+fn bad_render_states_are_refused_by_field() {
+    let dir = tempfile::tempdir().unwrap();
+    let shader = crate::common::bin::repo().join("tests/draw_conformance/texcoord.psh");
+    let verts = r#"{"attributes": {"positiont0": [[0, 0, 0, 1], [4, 0, 0, 1], [0, 4, 0, 1]]}}"#;
+    for (extra, want) in [
+        (
+            r#""stencil": {"pass": "INCR"}"#,
+            "steps[0].geometry.stencil: the stencil lives in a D3DFMT_D24S8",
+        ),
+        (
+            r#""depth": {"format": "D16"}, "stencil": {}"#,
+            "steps[0].geometry.stencil:",
+        ),
+        (
+            r#""depth": {"format": "D24S8"}, "stencil": {"zfail": "INCREMENT"}"#,
+            "steps[0].geometry.stencil.zfail: `INCREMENT` is not a D3DSTENCILOP",
+        ),
+        (
+            r#""depth": {"format": "D24S8"}, "stencil": {"ccw": {"func": "SOMETIMES"}}"#,
+            "steps[0].geometry.stencil.ccw.func: `SOMETIMES` is not a D3DCMPFUNC",
+        ),
+        (
+            r#""depth": {"format": "D24S8"}, "stencil": {"ref": 256}"#,
+            "steps[0].geometry.stencil.ref: 256",
+        ),
+        (
+            r#""point_size_min": 8, "point_size_max": 4"#,
+            "steps[0].geometry.point_size_min: 8 is above point_size_max 4",
+        ),
+        (r#""fill_mode": "dots""#, "steps[0].geometry.fill_mode:"),
+        (r#""fog": {"mode": "fast"}"#, "steps[0].geometry.fog.mode:"),
+        (
+            r#""point_scale": [0, 0, 0]"#,
+            "steps[0].geometry.point_scale:",
+        ),
+    ] {
+        let list = format!(
+            r#"{{"targets": [{{"name": "t", "size": "4x4", "format": "A8R8G8B8"}}],
+                "steps": [{{"draw": "t", "shader": {shader:?}, "geometry": {{"primitive": "triangle_list", "vertices": {verts}, {extra}}}}}]}}"#
+        );
+        let path = dir.path().join("list.json");
+        std::fs::write(&path, list).unwrap();
+        let o = crate::common::bin::ps30(
+            &["render", path.to_str().unwrap()],
+            crate::common::bin::repo(),
+        );
+        assert_eq!(o.status.code(), Some(2), "{extra}");
+        let err = crate::common::bin::stderr(&o);
+        assert!(err.contains(want), "{extra}: {err}");
+    }
+}

@@ -60,10 +60,11 @@
 //!   whose pixel the exit rule then leaves out). A line list takes
 //!   vertices two at a time, a strip joins each vertex to the next; the
 //!   provoking vertex of flat shading is a line's first.
-//! * **Point sizes, sprites, stencil** ([`points`], [`stencil`]).
+//! * **Point sizes, sprites, stencil, fog** ([`points`], [`stencil`], [`fog`]).
 
 pub mod clip;
 pub mod depth;
+pub mod fog;
 pub mod line;
 pub mod points;
 pub mod stencil;

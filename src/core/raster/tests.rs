@@ -405,3 +405,25 @@ fn a_window_sits_on_the_quad_grid_with_helper_values() {
     assert_eq!((w.inputs.origin, w.width), ((2, 0), 3));
     assert_eq!(w.inputs.covered.iter().filter(|&&c| c).count(), 3);
 }
+
+#[test]
+fn fog_factors_and_blend() {
+    use fog::{Fog, FogMode};
+    let f = |mode| Fog {
+        mode,
+        color: [0.0, 0.0, 1.0, 0.0],
+        start: 0.25,
+        end: 0.75,
+        density: 2.0,
+    };
+    // Linear: (0.75 − 0.5)/(0.75 − 0.25) = ½; clamped outside [start, end].
+    assert_eq!(f(FogMode::Linear).factor(0.5), 0.5);
+    assert_eq!(f(FogMode::Linear).factor(0.0), 1.0);
+    assert_eq!(f(FogMode::Linear).factor(1.0), 0.0);
+    assert_eq!(f(FogMode::Exp).factor(0.5), (-1.0f64).exp());
+    assert_eq!(f(FogMode::Exp2).factor(0.5), (-1.0f64).exp());
+    assert_eq!(f(FogMode::Vertex).factor(1.5), 1.0);
+    // Half fogged white: (½, ½, 1), alpha as written.
+    let c = f(FogMode::Vertex).blend([1.0, 1.0, 1.0, 0.25], 0.5);
+    assert_eq!(c, [0.5, 0.5, 1.0, 0.25]);
+}

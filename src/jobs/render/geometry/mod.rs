@@ -123,6 +123,7 @@ pub(crate) struct FileGeometry {
     point_scale: Option<[f64; 3]>,
     fill_mode: Option<String>,
     stencil: Option<state::FileStencil>,
+    fog: Option<state::FileFog>,
 }
 
 #[derive(Deserialize)]
@@ -249,6 +250,7 @@ pub(crate) fn read(
         point_scale: g.point_scale,
         fill_mode: g.fill_mode.as_deref(),
         stencil: g.stencil.as_ref(),
+        fog: g.fog.as_ref(),
     })?;
     let depth = g.depth.as_ref().map(depth).transpose()?;
     if state.stencil.is_some() && depth.map(|d| d.format) != Some(DepthFormat::D24S8) {

@@ -24,6 +24,7 @@ use crate::core::isa::RegFile;
 use crate::core::merge::{self, MergeStats, OutputState};
 use crate::core::raster::clip::{self, ClipVertex, VIEW_VOLUME};
 use crate::core::raster::depth::DepthFormat;
+use crate::core::raster::fog::{Fog, FogMode};
 use crate::core::raster::stencil::{self, StencilOutcome};
 use crate::core::raster::{self, Face, Rect, ScreenVertex, Shape, Triangle, Viewport};
 use crate::jobs::render::history::{self, Recorder, Verdict};
@@ -94,8 +95,9 @@ fn pixel_semantics(program: &Program) -> Vec<(u32, Attribute)> {
 /// screen) positions and each input slot's value per vertex.
 struct Stage {
     positions: Vec<[f64; 4]>,
-    /// Each vertex's slot values, then one more: its own point size in x
-    /// (NaN where it gives none), carried through clipping with the rest.
+    /// Each vertex's slot values, then two more: its own point size and
+    /// its fog factor in x (NaN where it gives none), carried through
+    /// clipping with the rest.
     values: Vec<Vec<[f64; 4]>>,
     transformed: bool,
     slots: Vec<Slot>,
@@ -105,11 +107,15 @@ struct Stage {
     /// No vertex shader: the fixed-function pipeline transformed the
     /// positions (point scaling applies).
     fixed_function: bool,
+    /// Whether the vertices give a fog factor (vertex fog reads it).
+    fog_given: bool,
 }
 
-/// `values` with the point-size column appended.
-fn with_size(mut values: Vec<[f64; 4]>, size: Option<f32>) -> Vec<[f64; 4]> {
-    values.push([size.map_or(f64::NAN, f64::from), 0.0, 0.0, 0.0]);
+/// `values` with the point-size and fog columns appended.
+fn with_size(mut values: Vec<[f64; 4]>, size: Option<f32>, fog: Option<f32>) -> Vec<[f64; 4]> {
+    let column = |v: Option<f32>| [v.map_or(f64::NAN, f64::from), 0.0, 0.0, 0.0];
+    values.push(column(size));
+    values.push(column(fog));
     values
 }
 
@@ -169,13 +175,18 @@ fn vertex_stage(
                 .map(|(_, v)| v)
         };
         let sizes = attr(&psize);
+        // Without a vertex shader vertex fog is the specular alpha.
+        let specular = attr(&Attribute {
+            usage: "color".into(),
+            index: 1,
+        });
         let values = (0..n)
             .map(|v| {
                 let values = wanted
                     .iter()
                     .map(|(_, a)| attr(a).map_or([0.0; 4], |vals| widen(vals[v])))
                     .collect();
-                with_size(values, sizes.map(|s| s[v][0]))
+                with_size(values, sizes.map(|s| s[v][0]), specular.map(|s| s[v][3]))
             })
             .collect();
         return Ok(Stage {
@@ -185,6 +196,7 @@ fn vertex_stage(
             slots,
             texcoord,
             fixed_function: !transformed,
+            fog_given: specular.is_some(),
         });
     };
     let shader = &list.shaders[vs].loaded.shader;
@@ -216,6 +228,10 @@ fn vertex_stage(
     })?;
     let columns: Vec<Option<usize>> = wanted.iter().map(|(_, a)| column(a)).collect();
     let size_column = column(&psize);
+    let fog_column = column(&Attribute {
+        usage: "fog".into(),
+        index: 0,
+    });
     Ok(Stage {
         positions: out.values.iter().map(|v| widen(v[position])).collect(),
         values: out
@@ -226,13 +242,18 @@ fn vertex_stage(
                     .iter()
                     .map(|c| c.map_or([0.0; 4], |c| widen(v[c])))
                     .collect();
-                with_size(values, size_column.map(|c| v[c][0]))
+                with_size(
+                    values,
+                    size_column.map(|c| v[c][0]),
+                    fog_column.map(|c| v[c][0]),
+                )
             })
             .collect(),
         transformed: false,
         slots,
         texcoord,
         fixed_function: false,
+        fog_given: fog_column.is_some(),
     })
 }
 
@@ -296,10 +317,16 @@ fn shapes(
 }
 
 /// A point's size in pixels: D3DRS_POINTSIZE or the vertex's own
-/// (`oPts`/`psize`, the last value column), scaled where the fixed-function
+/// (`oPts`/`psize`, the next-to-last value column), scaled where the fixed-function
 /// pipeline scales it, and clamped.
 fn point_size(g: &Geometry, stage: &Stage, viewport: &Viewport, v: &ClipVertex) -> f64 {
-    let own = v.values.last().map(|s| s[0]).filter(|s| !s.is_nan());
+    let own = v
+        .values
+        .iter()
+        .rev()
+        .nth(1)
+        .map(|s| s[0])
+        .filter(|s| !s.is_nan());
     let eye = stage
         .fixed_function
         .then(|| ([v.pos[0], v.pos[1], v.pos[2]], f64::from(viewport.height)));
@@ -687,6 +714,11 @@ pub(crate) fn draw(
         };
         let drawn = match settings_gpu(&settings.backend)? {
             Some(device) => {
+                if fog_state(list, d, &stage)?.is_some() {
+                    return Err(DrawFailure::Message(
+                        "geometry.fog: fog is drawn on the emulator only; the GPU backend refuses it".into(),
+                    ));
+                }
                 let shader = &list.shaders[d.shader].loaded.shader;
                 gpu::shade_all(
                     device, shader, d, g, &stage, &viewport, clip_rect, &samplers, settings,
@@ -800,12 +832,18 @@ fn shade_all(
     limits: emu::EmuLimits,
     pass: &mut Pass,
 ) -> Result<Drawn, DrawFailure> {
-    let slots: Vec<(u32, usize, [bool; 4])> = stage
+    let mut slots: Vec<(u32, usize, [bool; 4])> = stage
         .slots
         .iter()
         .enumerate()
         .map(|(k, s)| (s.slot, k, s.flat))
         .collect();
+    let fog = fog_state(list, d, stage)?;
+    if fog.is_some_and(|f| f.mode == FogMode::Vertex) {
+        // The fog factor rides along as one more input, taken out again
+        // before the pixel shader sees them.
+        slots.push((FOG_SLOT, stage.slots.len() + 1, [false; 4]));
+    }
     let mut drawn = Drawn {
         merged: MergeStats::default(),
         executed: None,
@@ -831,8 +869,12 @@ fn shade_all(
                 settings.budget.max_pixels
             ))
         })?;
-        let Some(window) = tri.pixels(clip_rect, &slots, &stage.values[*provoking]) else {
+        let Some(mut window) = tri.pixels(clip_rect, &slots, &stage.values[*provoking]) else {
             continue;
+        };
+        let fog_values = match slots.last() {
+            Some((FOG_SLOT, _, _)) => window.inputs.values.pop().map(|(_, v)| v),
+            _ => None,
         };
         drawn.triangles += 1;
         let mut draw = Draw::new(window.width, window.height);
@@ -845,7 +887,7 @@ fn shade_all(
         draw.samplers = samplers.to_vec();
         draw.pixels = Some(&window.inputs);
         let threads = settings.threads.unwrap_or(0);
-        let out = emu::run_with_threads(compiled, &draw, threads).map_err(|e| match e {
+        let mut out = emu::run_with_threads(compiled, &draw, threads).map_err(|e| match e {
             EmuError::TotalExecutedLimit { .. } => DrawFailure::Emu(EmuError::TotalExecutedLimit {
                 limit: limits.max_executed_total,
                 pixels: u64::from(list.targets[d.target].width)
@@ -870,9 +912,62 @@ fn shade_all(
             let program = list.shaders[d.shader].loaded.shader.program();
             w.primitive(program, (k, tri, *provoking), &window, &out);
         }
+        if let Some(f) = fog {
+            fog_pixels(&mut out, &window, fog_values.as_deref(), &f);
+        }
         pass.take(&window, &out, d.pixel.alpha_test, tri.face())?;
     }
     Ok(drawn)
+}
+
+/// The input slot number the fog factor borrows inside a window (no pixel
+/// shader has one so high).
+const FOG_SLOT: u32 = u32::MAX;
+
+/// The draw's fog, if its pixel shader takes fixed-function fog (below
+/// ps_3_0), or an error where vertex fog has no factor to read.
+fn fog_state(list: &DrawList, d: &DrawStep, stage: &Stage) -> Result<Option<Fog>, DrawFailure> {
+    let Some(geometry) = &d.geometry else {
+        return Ok(None);
+    };
+    let Some(fog) = geometry.state.fog else {
+        return Ok(None);
+    };
+    let profile = list.shaders[d.shader].loaded.shader.program().profile;
+    if profile == crate::core::profile::Profile::Ps3_0 {
+        return Ok(None);
+    }
+    if fog.mode == FogMode::Vertex && !stage.fog_given {
+        return Err(DrawFailure::Message(
+            "geometry.fog: vertex fog (mode \"vertex\") reads the vertex shader's oFog (dcl_fog), or without a vertex shader the vertices' color1 alpha, and the draw gives neither".into(),
+        ));
+    }
+    Ok(Some(fog))
+}
+
+/// Fogs oC0 of the window's covered pixels: by the interpolated vertex
+/// factor (`factors`, over the window's quad grid) or the pixel's depth.
+fn fog_pixels(
+    out: &mut DrawOutput,
+    window: &raster::triangle::Window,
+    factors: Option<&[[f32; 4]]>,
+    fog: &Fog,
+) {
+    let Some(Some(colors)) = out.color.first_mut() else {
+        return;
+    };
+    let grid = emu::PixelInputs::grid_width(window.width);
+    for (i, c) in colors.iter_mut().enumerate() {
+        if !window.inputs.covered[i] {
+            continue;
+        }
+        let (x, y) = (i % window.width as usize, i / window.width as usize);
+        let d = match factors {
+            Some(v) => f64::from(v[y * grid + x][0]),
+            None => window.depth[i],
+        };
+        *c = fog.blend(*c, fog.factor(d));
+    }
 }
 
 /// Adds one triangle's gradient sites to the draw's.

@@ -1,7 +1,8 @@
 //! The render states of a draw of geometry beyond the first set (`mod.rs`):
 //! lines (D3DRS_LASTPIXEL), point sizes and sprites (D3DRS_POINTSIZE_MIN,
 //! _MAX, D3DRS_POINTSPRITEENABLE, D3DRS_POINTSCALEENABLE with its A, B, C),
-//! the fill mode (D3DRS_FILLMODE) and the stencil test (D3DRS_STENCILENABLE
+//! the fill mode (D3DRS_FILLMODE), fog (D3DRS_FOGENABLE, FOGTABLEMODE,
+//! FOGCOLOR, FOGSTART, FOGEND, FOGDENSITY) and the stencil test (D3DRS_STENCILENABLE
 //! and the states it reads, two-sided included). This module reads their
 //! fields into a plain [`RasterState`]; the rules themselves live in
 //! `core/raster` (`line`, `points`, `stencil`).
@@ -17,6 +18,7 @@
 
 use super::super::pixel_state::CmpFunc;
 use super::Problem;
+use crate::core::raster::fog::{Fog, FogMode};
 use crate::core::raster::points::PointState;
 use crate::core::raster::stencil::{StencilOp, StencilOps};
 use serde::Deserialize;
@@ -72,6 +74,8 @@ pub struct RasterState {
     pub fill: FillMode,
     /// The stencil test; `None`: D3DRS_STENCILENABLE off.
     pub stencil: Option<StencilState>,
+    /// Fixed-function fog; `None`: D3DRS_FOGENABLE off.
+    pub fog: Option<Fog>,
 }
 
 impl Default for RasterState {
@@ -81,6 +85,7 @@ impl Default for RasterState {
             points: PointState::default(),
             fill: FillMode::Solid,
             stencil: None,
+            fog: None,
         }
     }
 }
@@ -121,6 +126,63 @@ pub(crate) struct Fields<'a> {
     pub point_scale: Option<[f64; 3]>,
     pub fill_mode: Option<&'a str>,
     pub stencil: Option<&'a FileStencil>,
+    pub fog: Option<&'a FileFog>,
+}
+
+/// `fog` as written.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct FileFog {
+    mode: Option<String>,
+    color: Option<Vec<f32>>,
+    start: Option<f64>,
+    end: Option<f64>,
+    density: Option<f64>,
+}
+
+fn fog(f: &FileFog) -> Result<Fog, Problem> {
+    let mode = match f.mode.as_deref().map(str::to_ascii_uppercase).as_deref() {
+        None | Some("VERTEX") | Some("NONE") | Some("D3DFOG_NONE") => FogMode::Vertex,
+        Some("LINEAR") | Some("D3DFOG_LINEAR") => FogMode::Linear,
+        Some("EXP") | Some("D3DFOG_EXP") => FogMode::Exp,
+        Some("EXP2") | Some("D3DFOG_EXP2") => FogMode::Exp2,
+        Some(_) => {
+            return Err(problem(
+                "fog.mode",
+                "\"vertex\" (D3DFOG_NONE), \"linear\", \"exp\" or \"exp2\"",
+            ))
+        }
+    };
+    let mut color = [0.0, 0.0, 0.0, 1.0];
+    match f.color.as_deref() {
+        None => {}
+        Some(c) if (3..=4).contains(&c.len()) && c.iter().all(|x| x.is_finite()) => {
+            color[..c.len()].copy_from_slice(c)
+        }
+        Some(_) => {
+            return Err(problem(
+                "fog.color",
+                "3 or 4 finite numbers (red, green, blue, alpha)",
+            ))
+        }
+    }
+    let fog = Fog {
+        mode,
+        color,
+        start: f.start.unwrap_or(0.0),
+        end: f.end.unwrap_or(1.0),
+        density: f.density.unwrap_or(1.0),
+    };
+    if ![fog.start, fog.end, fog.density]
+        .iter()
+        .all(|x| x.is_finite())
+    {
+        return Err(problem("fog", "start, end and density must be finite"));
+    }
+    if mode == FogMode::Linear && fog.start == fog.end {
+        return Err(problem("fog.end", "linear fog needs end ≠ start"));
+    }
+    Ok(fog)
 }
 
 fn problem(field: &str, message: impl Into<String>) -> Problem {
@@ -172,6 +234,7 @@ pub(crate) fn read(f: &Fields) -> Result<RasterState, Problem> {
         },
         fill,
         stencil: f.stencil.map(stencil).transpose()?,
+        fog: f.fog.map(fog).transpose()?,
     })
 }
 
