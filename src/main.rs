@@ -45,14 +45,17 @@ fn main() -> ExitCode {
         Command::Man(args) => cli::man::run(args, &ui),
     };
     ps30::core::phases::mark("command done");
-    match outcome {
-        Ok(Outcome::Ok) => ExitCode::SUCCESS,
-        Ok(Outcome::Problem) => ExitCode::from(1),
-        Ok(Outcome::Refused) => ExitCode::from(2),
-        Ok(Outcome::Unavailable) => ExitCode::from(3),
+    let code = match outcome {
+        Ok(Outcome::Ok) => 0,
+        Ok(Outcome::Problem) => 1,
+        Ok(Outcome::Refused) => 2,
+        Ok(Outcome::Unavailable) => 3,
         Err(BadInput(msg)) => {
             cli::io::eprint(&format!("error: {msg}\n"));
-            ExitCode::from(2)
+            2
         }
-    }
+    };
+    // Every write above was flushed as it was made (`cli::io`).
+    ps30::core::gpu::hand_off_at_exit(code);
+    ExitCode::from(code)
 }

@@ -129,9 +129,10 @@ pub fn draw_geometry(
         .map_err(GpuError::Translate)?;
     let iface = t.interface;
     let scopes = ErrorScopes::push(gpu);
-    let bindings = Bindings::new(gpu, draw, &iface, false)?;
+    let layout = draw::bind_group_layout(gpu, &iface, false);
+    let bindings = Bindings::new(gpu, draw, &iface, (&layout, false))?;
     let formats = attachment_formats(&iface);
-    let pipeline = pipeline(gpu, g, &iface, t.module, &bindings, &formats)?;
+    let pipeline = pipeline(gpu, g, &iface, t.module, &layout, &formats)?;
     let (vertices, indices) = buffers(gpu, g);
     let attachments: Vec<Option<wgpu::Texture>> = formats
         .iter()
@@ -279,7 +280,7 @@ fn pipeline(
     g: &GeometryDraw,
     iface: &translate::Interface,
     fragment: naga::Module,
-    bindings: &Bindings,
+    layout: &wgpu::BindGroupLayout,
     formats: &[Option<wgpu::TextureFormat>],
 ) -> Result<wgpu::RenderPipeline, GpuError> {
     let device = &gpu.device;
@@ -296,7 +297,7 @@ fn pipeline(
     });
     let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
         label: None,
-        bind_group_layouts: &[Some(&bindings.layout)],
+        bind_group_layouts: &[Some(layout)],
         immediate_size: 0,
     });
     let attributes: Vec<wgpu::VertexAttribute> = (0..=g.slots.len() as u32)

@@ -36,11 +36,13 @@ mod geometry;
 mod inputs;
 mod runtime_dir;
 mod sampler;
+mod teardown;
 mod texture;
 mod vertex;
 
 pub use draw::{prepare, prepare_with, run, run_in_bands, GpuOutput, Prepared, TargetKind};
 pub use geometry::{draw_geometry, GeometryDraw, ShadedPrimitive};
+pub use teardown::hand_off_at_exit;
 pub use vertex::run_vertices;
 
 use crate::core::emu::EmuError;
@@ -152,9 +154,12 @@ impl GpuError {
 /// part of a second to start (0.15–0.2 s for NVIDIA's), so a command starts
 /// it first and does its CPU work — decoding the image, planning the passes,
 /// the f64 reference — meanwhile; the first draw waits for it
-/// ([`Opening::wait`]).
+/// ([`Opening::wait`]). The thread hands the device over as soon as it is
+/// open and ends on its own: waiting for the thread's end instead (a
+/// join) cost 11 ms of the first draw on an NVIDIA H200, the driver's
+/// per-thread teardown (docs/speed.md).
 pub struct Opening {
-    thread: Mutex<Option<std::thread::JoinHandle<Opened>>>,
+    handed: Arc<(Mutex<Option<Opened>>, std::sync::Condvar)>,
     opened: OnceLock<Opened>,
 }
 
@@ -164,34 +169,59 @@ type Opened = Result<Arc<Gpu>, GpuError>;
 impl Opening {
     /// Starts `open` on a new thread.
     pub fn start(open: impl FnOnce() -> Opened + Send + 'static) -> Opening {
+        let handed = Arc::new((Mutex::new(None), std::sync::Condvar::new()));
+        let slot = handed.clone();
         let thread = std::thread::Builder::new()
             .name("gpu-open".into())
-            .spawn(open)
+            .spawn(move || {
+                // A panic inside the driver's start is reported as a failed open.
+                let opened = std::panic::catch_unwind(std::panic::AssertUnwindSafe(open))
+                    .unwrap_or_else(|_| {
+                        Err(GpuError::Device("opening the device panicked".into()))
+                    });
+                phases::mark("device: handed over");
+                let (result, ready) = &*slot;
+                if let Ok(mut r) = result.lock() {
+                    *r = Some(opened);
+                }
+                ready.notify_all();
+            })
             .map_err(|e| GpuError::Device(format!("no thread to open the device on: {e}")));
-        match thread {
-            Ok(t) => Opening {
-                thread: Mutex::new(Some(t)),
-                opened: OnceLock::new(),
-            },
-            Err(e) => Opening {
-                thread: Mutex::new(None),
-                opened: OnceLock::from(Err(e)),
-            },
+        let opening = Opening {
+            handed,
+            opened: OnceLock::new(),
+        };
+        if let Err(e) = thread {
+            let _ = opening.opened.set(Err(e));
         }
+        opening
     }
 
-    /// The device, once opened (the first caller waits for the thread).
+    /// The device, once opened (the first caller waits for it).
     pub fn wait(&self) -> Result<&Arc<Gpu>, GpuError> {
         let opened = self.opened.get_or_init(|| {
-            let thread = self.thread.lock().ok().and_then(|mut t| t.take());
-            let opened = match thread {
-                Some(t) => t.join().unwrap_or_else(|p| std::panic::resume_unwind(p)),
-                None => Err(GpuError::Device("the device was not opened".into())),
-            };
+            let opened = self.take();
             phases::mark("device ready for the first draw");
             opened
         });
         opened.as_ref().map_err(GpuError::again)
+    }
+
+    /// Waits for the opening thread's result and takes it.
+    fn take(&self) -> Opened {
+        let (result, ready) = &*self.handed;
+        let Ok(mut r) = result.lock() else {
+            return Err(GpuError::Device("the device was not opened".into()));
+        };
+        loop {
+            if let Some(opened) = r.take() {
+                return opened;
+            }
+            r = match ready.wait(r) {
+                Ok(r) => r,
+                Err(_) => return Err(GpuError::Device("the device was not opened".into())),
+            };
+        }
     }
 }
 
@@ -199,8 +229,8 @@ impl Drop for Opening {
     /// Waits for a device still opening: a process must not exit while a
     /// thread is inside the driver's start-up.
     fn drop(&mut self) {
-        if let Some(t) = self.thread.get_mut().ok().and_then(|t| t.take()) {
-            let _ = t.join();
+        if self.opened.get().is_none() {
+            let _ = self.take();
         }
     }
 }
@@ -259,6 +289,9 @@ impl Gpu {
             }
         }));
         let a = adapter.get_info();
+        if a.device_type != wgpu::DeviceType::Cpu {
+            teardown::note_hardware();
+        }
         Ok(Gpu {
             device,
             uncaptured,
