@@ -336,6 +336,9 @@ fn run_draw(s: &mut State<'_>, topology: Primitive, count: u32, vs: &[u8], ps: &
         (Ok(v), Ok(p)) => (v, p),
         (Err(e), _) | (_, Err(e)) => return e,
     };
+    if topology == Primitive::PointList && writes_point_size(&vs) {
+        return Last::Unsupported("per-vertex point size (PSIZE)".into());
+    }
     let list = match build(s, topology, count, vs, ps) {
         Ok(list) => list,
         Err(e) => return e,
@@ -441,6 +444,20 @@ pub(super) fn replay(
 /// A message without its numbers and places, for counting reasons.
 fn first_words(message: &str) -> String {
     message.chars().take(160).collect()
+}
+
+/// Whether a vertex shader writes a point size (`oPts`, or vs_3_0's
+/// `dcl_psize o#`), which the emulator's points do not read.
+fn writes_point_size(vs: &load::Loaded) -> bool {
+    let program = vs.shader.program();
+    program.instructions.iter().any(|i| {
+        i.dst
+            .as_ref()
+            .is_some_and(|d| d.reg.file == crate::core::isa::RegFile::PointSizeOut)
+    }) || program
+        .inputs
+        .iter()
+        .any(|d| d.usage == "psize" && d.reg.file == crate::core::isa::RegFile::Output)
 }
 
 /// The draw list of one draw.

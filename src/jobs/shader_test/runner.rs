@@ -267,12 +267,16 @@ impl<'a> State<'a> {
                     self.min_sm = self.min_sm.max(m);
                 }
             } else if c.word("options:") {
+                // vkd3d matches the names once each, in this order, each
+                // from where the last match ended: `column-major row-major`
+                // sets column-major alone.
                 for (word, flag) in [
+                    ("none", ""),
                     ("row-major", "PACK_MATRIX_ROW_MAJOR"),
                     ("column-major", "PACK_MATRIX_COLUMN_MAJOR"),
                     ("backcompat", "ENABLE_BACKWARDS_COMPATIBILITY"),
                 ] {
-                    if c.rest.split_whitespace().any(|w| w == word) {
+                    if c.word(word) && !flag.is_empty() {
                         self.flags.push(flag);
                     }
                 }
