@@ -44,6 +44,7 @@ mod reference_values;
 mod render;
 mod reports;
 mod roundtrip;
+mod shader_test;
 mod studies;
 mod textures;
 mod tonemap;

@@ -119,12 +119,13 @@ pub enum Command {
         after_help = "Examples:\n  ps30 profile lights:select --gbuffer 64x64\n  ps30 profile lights:texld --gbuffer 64x64\n  ps30 profile corrected:loop --image assets/hdr/courtyard_1280x1024.exr --target 10x8 \\\n      --int i1=8 --int i2=8 --const c1=0.00078125,0.0009765625,0,1 --const c3=0.27,0.67,0.06,0.01"
     )]
     Profile(profile::Args),
-    /// List the shaders bundled in the binary, or print one.
+    /// Run vkd3d's .shader_test files as its Direct3D 9 runner does, on the emulator.
     #[command(
         name = "shader-test",
         after_help = "Runs vkd3d's .shader_test files as vkd3d's Direct3D 9 runner does: the lowest shader model\nthe file's [require] allows within 2.0-3.0, its HLSL compiled by Microsoft's compiler\n(tools/oracle/setup.sh installs it; PS30_ORACLE names its folder), its draws on the\nemulator, every probe checked with its ulps. docs/shader-test.md says what is run.\n\nExit codes: 0 every probe that ran passed; 1 a probe failed; 2 bad input or no compiler.\n\nExamples:\n  ps30 shader-test tests/shader_test/uniforms.shader_test\n  ps30 shader-test vkd3d/tests/hlsl --json"
     )]
     ShaderTest(shader_test::Args),
+    /// List the shaders bundled in the binary, or print one.
     #[command(
         after_help = "Every command that reads a shader takes a bundled name (family:variant) or a file path.\n\nExamples:\n  ps30 shaders\n  ps30 shaders article:loop\n  ps30 shaders --json"
     )]

@@ -103,5 +103,9 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         out.push_str(&show::summary_text(&report));
         print(&out)?;
     }
+    if report.files.iter().any(|f| f.malformed) {
+        // Printed above: each such file's `stopped:` line names the place.
+        return Ok(Outcome::Refused);
+    }
     Ok(Outcome::from_ok(report.ok()))
 }

@@ -22,6 +22,9 @@ use crate::jobs::render::{
     self, DrawList, DrawStep, ShaderSpec, Source, Step, TargetSpec, TargetState, TextureData,
 };
 
+/// A sampler's binding: `s#`, what it reads, its state.
+type Bound = (u32, Source, SamplerState);
+
 /// `draw quad`'s vertex shader when the file has none.
 const QUAD_VS: &str = "float4 main(float4 pos : position) : sv_position\n{\n    return pos;\n}";
 
@@ -58,9 +61,7 @@ pub(super) fn directive(
     mut c: Cursor<'_>,
 ) -> Result<(), Stop> {
     if c.word("dispatch") {
-        return Err(
-            "compute shaders are not supported (vkd3d's Direct3D 9 runner stops here)".into(),
-        );
+        return Err(Stop::refused("compute shaders are not supported"));
     }
     if c.word("clear rtv") {
         let slot = c
@@ -68,22 +69,22 @@ pub(super) fn directive(
             .ok_or_else(|| format!("malformed rtv clear '{line}'"))?;
         let v: Vec<f32> = (0..4).map_while(|_| c.float()).collect();
         if v.len() < 4 {
-            return Err(format!("malformed rtv clear '{line}'"));
+            return Err(format!("malformed rtv clear '{line}'").into());
         }
         s.default_target();
-        let rtv = s.rtvs.get_mut(&slot).ok_or("resource not found")?;
+        if !s.rtvs.contains_key(&slot) {
+            return Err("resource not found".into());
+        }
         // ColorFill with a D3DCOLOR: each channel × 255, truncated.
         let byte = |x: f32| (x * 255.0).clamp(0.0, 255.0) as u8;
-        merge::clear(
-            &mut rtv.target,
+        s.pending.push(Op::Clear(
+            slot,
             [byte(v[0]), byte(v[1]), byte(v[2]), byte(v[3])],
-        );
+        ));
         return Ok(());
     }
     if c.word("clear dsv") || c.word("depth-bounds") {
-        return Err(
-            "depth-stencil views are not supported (vkd3d's Direct3D 9 runner stops here)".into(),
-        );
+        return Err(Stop::refused("depth-stencil views are not supported"));
     }
     if c.word("depth") || c.word("sample mask") {
         // Without a depth-stencil view or multisampling the Direct3D 9
@@ -107,9 +108,7 @@ pub(super) fn directive(
             .uint()
             .ok_or_else(|| format!("malformed vertex count '{line}'"))?;
         if c.uint().is_some_and(|i| i > 1) {
-            return Err(
-                "instanced draws are not supported (vkd3d's Direct3D 9 runner stops here)".into(),
-            );
+            return Err(Stop::refused("instanced draws are not supported"));
         }
         return draw(s, n, Some(topology), count);
     }
@@ -167,7 +166,7 @@ fn fixed(s: &mut State<'_>, line: &str, mut c: Cursor<'_>) -> Result<(), Stop> {
     } else if c.word("viewport") {
         s.fixed.viewports = true;
     } else {
-        return Err(format!("unknown test directive '{line}'"));
+        return Err(format!("unknown test directive '{line}'").into());
     }
     Ok(())
 }
@@ -199,12 +198,10 @@ fn uniform(s: &mut State<'_>, line: &str, mut c: Cursor<'_>) -> Result<(), Stop>
     } else if c.word("int") || c.word("uint") {
         words.push(c.uint().ok_or_else(bad)?);
     } else {
-        return Err(format!("unsupported uniform type '{line}'"));
+        return Err(format!("unsupported uniform type '{line}'").into());
     }
     if offset > 4096 {
-        return Err(format!(
-            "uniform offset {offset} is past the constant registers"
-        ));
+        return Err(format!("uniform offset {offset} is past the constant registers").into());
     }
     let end = offset + words.len();
     let count = s.uniforms.len().max(end).div_ceil(4) * 4;
@@ -266,7 +263,7 @@ fn hex(text: &str) -> Result<Vec<u8>, String> {
 /// A draw: `topology` `None` is `draw quad`.
 fn draw(s: &mut State<'_>, n: usize, topology: Option<Primitive>, count: u32) -> Result<(), Stop> {
     if s.fixed.viewports {
-        return Err("viewports are not supported (vkd3d's Direct3D 9 runner stops here)".into());
+        return Err(Stop::refused("viewports are not supported"));
     }
     s.default_target();
     if topology.is_none() {
@@ -341,39 +338,128 @@ fn run_draw(s: &mut State<'_>, topology: Primitive, count: u32, vs: &[u8], ps: &
         (Ok(v), Ok(p)) => (v, p),
         (Err(e), _) | (_, Err(e)) => return e,
     };
+    if topology == Primitive::PointList && writes_point_size(&vs) {
+        return Last::Unsupported("per-vertex point size (PSIZE)".into());
+    }
     let list = match build(s, topology, count, vs, ps) {
         Ok(list) => list,
         Err(e) => return e,
     };
+    if overwrites_everything(s, &list) {
+        s.pending.clear();
+    }
     let slots: Vec<u32> = s.rtvs.keys().copied().collect();
-    let states: Vec<TargetState> = slots
+    s.pending.push(Op::Draw(Box::new(list), slots));
+    Last::Ok
+}
+
+/// What the targets go through after the file made them: clears and draws
+/// in order. They run when a probe reads a target, each draw restricted to
+/// the probe's rectangle by the scissor test: Direct3D 9 computes a pixel
+/// from its own quad alone (helper pixels outside the rectangle still run
+/// for gradients), so the pixels probed are those of the whole draw, and a
+/// file's 640 × 480 draws cost what their probes read.
+#[derive(Clone, Debug)]
+pub(super) enum Op {
+    /// `clear rtv N`: the slot and its D3DCOLOR bytes.
+    Clear(u32, [u8; 4]),
+    /// A draw and the render-target slots it was drawn with, in the list's order.
+    Draw(Box<DrawList>, Vec<u32>),
+}
+
+/// Whether a draw replaces every pixel of every target, so that what came
+/// before it can never be read: `draw quad` with the default vertex shader
+/// into one target, without alpha test, clip planes or `texkill`.
+fn overwrites_everything(s: &State<'_>, list: &DrawList) -> bool {
+    let Some(Step::Draw(d)) = list.steps.first() else {
+        return false;
+    };
+    let quad = d.geometry.as_ref().is_some_and(|g| {
+        g.vertices.count == 3 && g.clip_planes.is_empty() && g.primitive == Primitive::TriangleList
+    });
+    let kills = list.shaders[0]
+        .loaded
+        .shader
+        .program()
+        .instructions
         .iter()
-        .map(|k| TargetState {
-            target: s.rtvs[k].target.clone(),
-            mips: None,
-            depth: None,
-        })
-        .collect();
+        .any(|i| i.op == crate::core::isa::Opcode::TexKill);
+    quad && !kills
+        && !s.shaders.contains_key("vertex")
+        && d.pixel.alpha_test.is_none()
+        && s.rtvs.len() == 1
+}
+
+/// The targets as the pending clears and draws leave them within `rect`
+/// (`[left, top, right, bottom]`; the rest of each target is stale).
+pub(super) fn replay(
+    s: &State<'_>,
+    rect: [u32; 4],
+) -> Result<std::collections::BTreeMap<u32, crate::core::image::RenderTarget>, String> {
+    let mut targets: std::collections::BTreeMap<u32, _> =
+        s.rtvs.iter().map(|(k, r)| (*k, r.target.clone())).collect();
     let settings = s.settings.map(|x| x.render.clone()).unwrap_or_default();
-    match render::run_on(&list, &settings, states, &mut |_, _| {}, None) {
-        Ok((_, after)) => {
-            for (k, st) in slots.iter().zip(after) {
-                if let Some(rtv) = s.rtvs.get_mut(k) {
-                    rtv.target = st.target;
+    for op in &s.pending {
+        match op {
+            Op::Clear(slot, color) => {
+                if let Some(t) = targets.get_mut(slot) {
+                    merge::clear(t, *color);
                 }
             }
-            Last::Ok
+            Op::Draw(list, slots) => {
+                let mut list = (**list).clone();
+                if let Some(Step::Draw(d)) = list.steps.first_mut() {
+                    if let Some(g) = d.geometry.as_mut() {
+                        g.scissor = Some(crate::core::raster::Rect {
+                            left: rect[0],
+                            top: rect[1],
+                            right: rect[2],
+                            bottom: rect[3],
+                        });
+                    }
+                }
+                let states: Vec<TargetState> = slots
+                    .iter()
+                    .filter_map(|k| targets.get(k))
+                    .map(|t| TargetState {
+                        target: t.clone(),
+                        mips: None,
+                        depth: None,
+                    })
+                    .collect();
+                let (_, after) = render::run_on(&list, &settings, states, &mut |_, _| {}, None)
+                    .map_err(|e| {
+                        format!(
+                            "the draw list refuses the draw: {}",
+                            first_words(&e.to_string())
+                        )
+                    })?;
+                for (k, st) in slots.iter().zip(after) {
+                    targets.insert(*k, st.target);
+                }
+            }
         }
-        Err(e) => Last::Unsupported(format!(
-            "the draw list refuses the draw: {}",
-            first_words(&e.to_string())
-        )),
     }
+    Ok(targets)
 }
 
 /// A message without its numbers and places, for counting reasons.
 fn first_words(message: &str) -> String {
     message.chars().take(160).collect()
+}
+
+/// Whether a vertex shader writes a point size (`oPts`, or vs_3_0's
+/// `dcl_psize o#`), which the emulator's points do not read.
+fn writes_point_size(vs: &load::Loaded) -> bool {
+    let program = vs.shader.program();
+    program.instructions.iter().any(|i| {
+        i.dst
+            .as_ref()
+            .is_some_and(|d| d.reg.file == crate::core::isa::RegFile::PointSizeOut)
+    }) || program
+        .inputs
+        .iter()
+        .any(|d| d.usage == "psize" && d.reg.file == crate::core::isa::RegFile::Output)
 }
 
 /// The draw list of one draw.
@@ -521,10 +607,7 @@ fn alpha_test(func: u32, reference: f32) -> Option<AlphaTest> {
 /// The file's textures the pixel shader declares a sampler for, with the
 /// sampler state of their slot: the file's `[sampler N]`, else Direct3D
 /// 9's defaults (WRAP, POINT, no mips).
-fn textures(
-    s: &State<'_>,
-    declared: &[u32],
-) -> Result<(Vec<TextureData>, Vec<(u32, Source, SamplerState)>), Last> {
+fn textures(s: &State<'_>, declared: &[u32]) -> Result<(Vec<TextureData>, Vec<Bound>), Last> {
     let mut textures = Vec::new();
     let mut samplers = Vec::new();
     for (slot, t) in s.srvs.iter().filter(|(k, _)| declared.contains(k)) {

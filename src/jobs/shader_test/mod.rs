@@ -98,6 +98,9 @@ pub struct FileReport {
     /// Why the file could not be read or stopped early (a line vkd3d's
     /// runner refuses too: its `fatal_error`).
     pub stopped: Option<String>,
+    /// Whether it stopped at a malformed line (bad input) rather than at
+    /// one the Direct3D 9 runner refuses.
+    pub malformed: bool,
 }
 
 impl FileReport {

@@ -32,8 +32,7 @@ pub(super) fn compare_float(f: f32, g: f32, ulps: u32) -> bool {
         (if i < 0 { i32::MIN.wrapping_sub(i) } else { i }) as u32
     };
     let (x, y) = (key(f), key(g));
-    let diff = if x > y { x - y } else { y - x };
-    diff <= ulps
+    x.abs_diff(y) <= ulps
 }
 
 fn list<'a, T>(c: &mut Cursor<'a>, read: impl Fn(&mut Cursor<'a>) -> Option<T>) -> Option<Vec<T>> {
@@ -150,10 +149,9 @@ pub(super) fn probe(s: &mut State<'_>, line: &str, mut c: Cursor<'_>) -> Result<
         0
     };
     let Some(rtv) = s.rtvs.get(&slot) else {
-        return Err(format!("no render target {slot} to probe"));
+        return Err(format!("no render target {slot} to probe").into());
     };
-    let t = &rtv.target;
-    let r = match rect(&mut c, t) {
+    let r = match rect(&mut c, &rtv.target) {
         Ok(r) => r,
         Err(v) => return Ok(v),
     };
@@ -161,7 +159,13 @@ pub(super) fn probe(s: &mut State<'_>, line: &str, mut c: Cursor<'_>) -> Result<
         Ok(e) => e,
         Err(v) => return Ok(v),
     };
-    Ok(check(t, r, &e))
+    let (w, h) = (rtv.target.width, rtv.target.height);
+    let inside = [r[0].min(w), r[1].min(h), r[2].min(w), r[3].min(h)];
+    let targets = match super::draw::replay(s, inside) {
+        Ok(t) => t,
+        Err(why) => return Ok(unsupported(&why)),
+    };
+    Ok(check(&targets[&slot], r, &e))
 }
 
 /// The 32-bit words of a target's row `y`, as the readback holds them.

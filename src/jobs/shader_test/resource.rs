@@ -12,6 +12,9 @@ const MAX_SIDE: u32 = 8192;
 /// The most data bytes a resource may hold.
 const MAX_DATA: usize = 64 << 20;
 
+/// One mip level as `MipChain::from_levels` takes it: width, height, texels.
+type Level = (u32, u32, Vec<[f32; 4]>);
+
 /// A texture ready for a draw list.
 #[derive(Clone, Debug)]
 pub(super) struct Texture {
@@ -215,7 +218,7 @@ impl ResourceText {
                 TextureFile::Volume(VolumeChain::from_levels(chain)?)
             }
             "cube" => {
-                let mut faces: Vec<Vec<(u32, u32, Vec<[f32; 4]>)>> = vec![Vec::new(); 6];
+                let mut faces: Vec<Vec<Level>> = vec![Vec::new(); 6];
                 for l in 0..levels {
                     let e = side(w, l);
                     for face in faces.iter_mut() {

@@ -34,7 +34,8 @@ pub(super) fn run(
     let mut s = State::new(Mode::Run(compiled), Some(settings));
     s.report.path = path.to_string();
     if let Err(stop) = s.walk(text) {
-        s.report.stopped = Some(stop);
+        s.report.stopped = Some(stop.message);
+        s.report.malformed = !stop.refused;
     }
     s.report
 }
@@ -91,8 +92,51 @@ pub(super) enum Last {
     Unsupported(String),
 }
 
-/// A line vkd3d's runner ends the whole run at (`fatal_error`).
-pub(super) type Stop = String;
+/// A line vkd3d's runner ends the whole run at (`fatal_error`): either
+/// something the Direct3D 9 runner refuses (UAVs, compute, viewports), or
+/// a line that is malformed (bad input).
+#[derive(Clone, Debug)]
+pub(super) struct Stop {
+    pub message: String,
+    /// The Direct3D 9 runner's own refusal rather than malformed input.
+    pub refused: bool,
+}
+
+impl Stop {
+    /// What vkd3d's Direct3D 9 runner refuses, by name.
+    pub fn refused(what: &str) -> Stop {
+        Stop {
+            message: format!("{what} (vkd3d's Direct3D 9 runner stops here)"),
+            refused: true,
+        }
+    }
+
+    /// The message with its line in front (once: the innermost line).
+    fn at(self, line: usize) -> Stop {
+        if self.message.starts_with("line ") {
+            return self;
+        }
+        Stop {
+            message: format!("line {line}: {}", self.message),
+            ..self
+        }
+    }
+}
+
+impl From<String> for Stop {
+    fn from(message: String) -> Stop {
+        Stop {
+            message,
+            refused: false,
+        }
+    }
+}
+
+impl From<&str> for Stop {
+    fn from(message: &str) -> Stop {
+        message.to_string().into()
+    }
+}
 
 pub(super) struct State<'a> {
     pub mode: Mode<'a>,
@@ -111,6 +155,8 @@ pub(super) struct State<'a> {
     pub layout: Vec<Element>,
     pub fixed: Fixed,
     pub last: Last,
+    /// Clears and draws not yet applied to `rtvs` ([`super::draw::replay`]).
+    pub pending: Vec<super::draw::Op>,
     pub report: FileReport,
 }
 
@@ -143,6 +189,7 @@ impl<'a> State<'a> {
                 viewports: false,
             },
             last: Last::Ok,
+            pending: Vec::new(),
             report: FileReport::default(),
         }
     }
@@ -154,11 +201,10 @@ impl<'a> State<'a> {
     fn walk(&mut self, text: &str) -> Result<(), Stop> {
         let (before, sections) = parse::sections(text);
         if let Some((n, l)) = before.first() {
-            return Err(format!("line {n}: '{l}' is outside any section"));
+            return Err(format!("line {n}: '{l}' is outside any section").into());
         }
         for section in &sections {
-            self.section(section)
-                .map_err(|e| format!("line {}: {e}", section.line))?;
+            self.section(section).map_err(|e| e.at(section.line))?;
         }
         Ok(())
     }
@@ -173,7 +219,7 @@ impl<'a> State<'a> {
                 self.layout.clear();
                 for (n, l) in &s.lines {
                     self.layout
-                        .push(element(l).map_err(|e| format!("line {n}: {e}"))?);
+                        .push(element(l).map_err(|e| Stop::from(e).at(*n))?);
                 }
                 Ok(())
             }
@@ -184,13 +230,12 @@ impl<'a> State<'a> {
                     }
                     self.report.ran = true;
                     self.report.model = Some(parse::MODELS[self.min_sm]);
-                    self.test_line(*n, l)
-                        .map_err(|e| format!("line {n}: {e}"))?;
+                    self.test_line(*n, l).map_err(|e| e.at(*n))?;
                 }
                 Ok(())
             }
             Kind::Preproc => Ok(()),
-            Kind::Unknown(h) => Err(format!("unknown section '{h}'")),
+            Kind::Unknown(h) => Err(format!("unknown section '{h}'").into()),
         }
     }
 
@@ -215,19 +260,23 @@ impl<'a> State<'a> {
                     .ok_or_else(|| format!("unknown shader model '{r}'"))?;
                 if less {
                     if m == 0 {
-                        return Err(format!("shader model < '{r}' is invalid"));
+                        return Err(format!("shader model < '{r}' is invalid").into());
                     }
                     self.max_sm = self.max_sm.min(m - 1);
                 } else {
                     self.min_sm = self.min_sm.max(m);
                 }
             } else if c.word("options:") {
+                // vkd3d matches the names once each, in this order, each
+                // from where the last match ended: `column-major row-major`
+                // sets column-major alone.
                 for (word, flag) in [
+                    ("none", ""),
                     ("row-major", "PACK_MATRIX_ROW_MAJOR"),
                     ("column-major", "PACK_MATRIX_COLUMN_MAJOR"),
                     ("backcompat", "ENABLE_BACKWARDS_COMPATIBILITY"),
                 ] {
-                    if c.rest.split_whitespace().any(|w| w == word) {
+                    if c.word(word) && !flag.is_empty() {
                         self.flags.push(flag);
                     }
                 }
@@ -249,7 +298,7 @@ impl<'a> State<'a> {
                         "wave-ops",
                     ];
                     if !KNOWN.contains(&cap) {
-                        return Err(format!("unknown require directive '{cap}'"));
+                        return Err(format!("unknown require directive '{cap}'").into());
                     }
                     missing = true;
                 }
@@ -273,7 +322,7 @@ impl<'a> State<'a> {
             } else if c.word("dxbc-tpf-hex") || c.word("dxbc-dxil-hex") {
                 foreign = true;
             } else {
-                return Err(format!("malformed shader header qualifiers '{qualifiers}'"));
+                return Err(format!("malformed shader header qualifiers '{qualifiers}'").into());
             }
         }
         self.fail_mask = fail;
@@ -299,7 +348,7 @@ impl<'a> State<'a> {
             ..SamplerState::default()
         };
         for (n, l) in &s.lines {
-            sampler_line(&mut state, l).map_err(|e| format!("line {n}: {e}"))?;
+            sampler_line(&mut state, l).map_err(|e| Stop::from(e).at(*n))?;
         }
         self.samplers.insert(slot, state);
         Ok(())
@@ -308,7 +357,7 @@ impl<'a> State<'a> {
     fn resource(&mut self, kind: &str, slot: u32, s: &Section) -> Result<(), Stop> {
         let mut r = resource::ResourceText::default();
         for (n, l) in &s.lines {
-            r.line(l).map_err(|e| format!("line {n}: {e}"))?;
+            r.line(l).map_err(|e| Stop::from(e).at(*n))?;
         }
         if self.skip {
             return Ok(());
@@ -321,11 +370,13 @@ impl<'a> State<'a> {
                     Some(f) => {
                         return Err(format!(
                             "render target format {f}: vkd3d's Direct3D 9 runner creates none"
-                        ))
+                        )
+                        .into())
                     }
                 };
                 let (w, h) = (r.width.max(1), r.height.max(1));
                 resource::check_size(w, h)?;
+                self.settle()?;
                 self.rtvs.insert(
                     slot,
                     Rtv {
@@ -339,13 +390,32 @@ impl<'a> State<'a> {
             "vb" => {
                 self.vbs.insert(slot, r.data);
             }
-            "uav" => {
-                return Err("UAVs are not supported (vkd3d's Direct3D 9 runner stops here)".into())
-            }
-            _ => {
-                return Err("DSVs are not supported (vkd3d's Direct3D 9 runner stops here)".into())
-            }
+            "uav" => return Err(Stop::refused("UAVs are not supported")),
+            _ => return Err(Stop::refused("DSVs are not supported")),
         }
+        Ok(())
+    }
+
+    /// Applies every pending clear and draw to the whole of each target
+    /// (before a target is replaced, which the pending draws drew into).
+    fn settle(&mut self) -> Result<(), Stop> {
+        if self.pending.is_empty() {
+            return Ok(());
+        }
+        let (w, h) = self.rtvs.values().fold((0, 0), |a, r| {
+            (a.0.max(r.target.width), a.1.max(r.target.height))
+        });
+        match super::draw::replay(self, [0, 0, w, h]) {
+            Ok(targets) => {
+                for (k, t) in targets {
+                    if let Some(r) = self.rtvs.get_mut(&k) {
+                        r.target = t;
+                    }
+                }
+            }
+            Err(e) => self.last = Last::Unsupported(e),
+        }
+        self.pending.clear();
         Ok(())
     }
 
