@@ -272,6 +272,10 @@ struct Pending {
     colors: Vec<Vec<[f32; 4]>>,
     held: Vec<bool>,
     any: bool,
+    /// The outputs the shader wrote: an output it never writes leaves its
+    /// target alone ("unwritten oCn → render target not updated", the
+    /// ps_3_0 output-register page), as in a full-screen draw.
+    wrote: [bool; 4],
 }
 
 /// The draw's state while its triangles run.
@@ -295,6 +299,9 @@ impl Pass<'_> {
         let skip: Vec<bool> = self.pending.held.iter().map(|h| !h).collect();
         for (k, t) in self.targets.iter_mut().enumerate() {
             let Some((state, output)) = t else { continue };
+            if !self.pending.wrote[k] {
+                continue;
+            }
             if let Some(w) = self.watch.as_deref_mut() {
                 w.before_merge(k, &state.target, &self.pending.colors[k]);
             }
@@ -346,6 +353,7 @@ impl Pass<'_> {
             for (k, colors) in out.color.iter().enumerate() {
                 if let Some(c) = colors {
                     self.pending.colors[k][t] = c[i];
+                    self.pending.wrote[k] = true;
                 }
             }
             self.pending.held[t] = true;
@@ -392,15 +400,11 @@ impl Pass<'_> {
             if passed && state.write {
                 buffer.values[t] = z;
             }
-            verdict.depth = Some(history::DepthVerdict {
+            verdict.depth = Some(history::DepthTest {
                 z,
-                from: if out.depth.is_some() {
-                    "oDepth"
-                } else {
-                    "interpolated"
-                },
+                odepth: out.depth.is_some(),
                 stored,
-                func: history::depth_func(state.func),
+                func: state.func,
                 passed,
                 written: passed && state.write,
             });
@@ -488,6 +492,7 @@ pub(crate) fn draw(
                 colors: vec![vec![[0.0; 4]; n]; 4],
                 held: vec![false; n],
                 any: false,
+                wrote: [false; 4],
             },
             merged: MergeStats::default(),
             watch,
