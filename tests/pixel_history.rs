@@ -333,3 +333,18 @@ fn every_step_writes_a_geometry_draws_targets_and_its_second_output() {
     assert_eq!(register(&f["outputs"], "oC1"), [0.5, 0.25, 0.75, 1.0]);
     assert_eq!(vec4(&f["blend"]["result"]), [0.5, 0.25, 0.0, 0.0]);
 }
+
+#[test]
+fn an_output_the_shader_does_not_write_leaves_its_target_alone() {
+    // all.psh writes oC0 only; b is bound to oC1 and cleared to blue. The
+    // ps_3_0 output-register page: an unwritten oCn does not update its
+    // render target — in a draw of geometry as in a full-screen one.
+    let h = &histories("unwritten.json", &["b:0,0"])[0];
+    for k in [1, 2] {
+        let step = &h["steps"][k];
+        assert_eq!(step["output"], 1);
+        assert_eq!(step["fragments"][0]["fate"], "no_output", "step {k}");
+        assert!(step["fragments"][0]["blend"].is_null());
+        assert_eq!(vec4(&step["after"]), [0.0, 0.0, 1.0, 1.0], "step {k}");
+    }
+}

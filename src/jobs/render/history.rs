@@ -210,7 +210,25 @@ pub(crate) struct Verdict {
     /// The stencil test and its write (`None`: not tested).
     pub stencil: Option<StencilOutcome>,
     /// The depth test (`None`: not tested).
-    pub depth: Option<DepthVerdict>,
+    pub depth: Option<DepthTest>,
+}
+
+/// A geometry draw's depth test at one pixel, as its loop computed it
+/// (plain data: the loop makes one per covered pixel).
+#[derive(Clone, Copy)]
+pub(crate) struct DepthTest {
+    /// The incoming depth as the format stores it.
+    pub z: f64,
+    /// It came from `oDepth` (else interpolated).
+    pub odepth: bool,
+    /// The depth stored before.
+    pub stored: f64,
+    /// D3DRS_ZFUNC.
+    pub func: CmpFunc,
+    /// Whether `z FUNC stored` held.
+    pub passed: bool,
+    /// Whether the depth was written.
+    pub written: bool,
 }
 
 impl Verdict {
@@ -219,7 +237,7 @@ impl Verdict {
         !self.killed
             && self.alpha.is_none_or(|(_, p)| p)
             && self.stencil.is_none_or(|s| s.passed)
-            && self.depth.as_ref().is_none_or(|d| d.passed)
+            && self.depth.is_none_or(|d| d.passed)
     }
 }
 
@@ -233,6 +251,8 @@ struct Watch {
     alpha_test: Option<AlphaTest>,
     /// The last fragment waits for a geometry draw's tests.
     testing: bool,
+    /// The running triangle's shader wrote the output reaching the target.
+    wrote: bool,
     /// The fragment (index in the running step's) waiting for its merge:
     /// a triangle's colours are merged when a later triangle reaches a
     /// pixel they hold, so the next one may already be under test.
@@ -353,6 +373,7 @@ impl Recorder {
                 output: None,
                 alpha_test: None,
                 testing: false,
+                wrote: false,
                 merging: None,
             });
         }
@@ -573,6 +594,9 @@ impl Recorder {
                 continue;
             };
             w.testing = !fragment.helper;
+            w.wrote = w
+                .output
+                .is_some_and(|k| out.color.get(k).is_some_and(Option::is_some));
             if let Some(s) = w.step() {
                 s.fragments.push(fragment);
             }
@@ -589,11 +613,19 @@ impl Recorder {
             w.testing = false;
             let test = w.alpha_test;
             let passed = verdict.passed();
+            let wrote = w.wrote;
             let Some(f) = w.fragment() else { continue };
             f.killed = verdict.killed;
             f.alpha_test = verdict.alpha.map(|(a, p)| alpha_verdict(test, a, p));
             f.stencil = verdict.stencil;
-            f.depth = verdict.depth.clone();
+            f.depth = verdict.depth.map(|d| DepthVerdict {
+                z: d.z,
+                from: if d.odepth { "oDepth" } else { "interpolated" },
+                stored: d.stored,
+                func: cmp_name(d.func),
+                passed: d.passed,
+                written: d.written,
+            });
             f.fate = if verdict.killed {
                 "killed"
             } else if verdict.alpha.is_some_and(|(_, p)| !p) {
@@ -602,6 +634,8 @@ impl Recorder {
                 "stencil_test"
             } else if !passed {
                 "depth_test"
+            } else if !wrote {
+                "no_output"
             } else {
                 "written"
             };
@@ -663,11 +697,6 @@ fn alpha_verdict(test: Option<AlphaTest>, alpha: f32, passed: bool) -> AlphaVerd
         reference: test.reference,
         passed,
     }
-}
-
-/// The depth verdict's function name (for the geometry draw's tests).
-pub(crate) fn depth_func(f: CmpFunc) -> String {
-    cmp_name(f)
 }
 
 /// The fragment a triangle's window holds at `p`, if a quad with a covered

@@ -455,6 +455,10 @@ struct Pending {
     colors: Vec<Vec<[f32; 4]>>,
     held: Vec<bool>,
     any: bool,
+    /// The outputs the shader wrote: an output it never writes leaves its
+    /// target alone ("unwritten oCn → render target not updated", the
+    /// ps_3_0 output-register page), as in a full-screen draw.
+    wrote: [bool; 4],
 }
 
 /// The draw's state while its triangles run.
@@ -479,6 +483,9 @@ impl Pass<'_> {
         let skip: Vec<bool> = self.pending.held.iter().map(|h| !h).collect();
         for (k, t) in self.targets.iter_mut().enumerate() {
             let Some((state, output)) = t else { continue };
+            if !self.pending.wrote[k] {
+                continue;
+            }
             if let Some(w) = self.watch.as_deref_mut() {
                 w.before_merge(k, &state.target, &self.pending.colors[k]);
             }
@@ -568,6 +575,7 @@ impl Pass<'_> {
             for (k, colors) in out.color.iter().enumerate() {
                 if let Some(c) = colors {
                     self.pending.colors[k][t] = c[i];
+                    self.pending.wrote[k] = true;
                 }
             }
             self.pending.held[t] = true;
@@ -623,15 +631,11 @@ impl Pass<'_> {
         verdict.stencil = stencil;
         // The depth test runs unless the stencil test failed first.
         if stencil.is_none_or(|o| o.passed) {
-            verdict.depth = Some(history::DepthVerdict {
+            verdict.depth = Some(history::DepthTest {
                 z: stored_z,
-                from: if out.depth.is_some() {
-                    "oDepth"
-                } else {
-                    "interpolated"
-                },
+                odepth: out.depth.is_some(),
                 stored,
-                func: history::depth_func(func),
+                func,
                 passed: func.passes(stored_z, stored),
                 written: survives && write,
             });
@@ -708,6 +712,7 @@ pub(crate) fn draw(
                 colors: vec![vec![[0.0; 4]; n]; 4],
                 held: vec![false; n],
                 any: false,
+                wrote: [false; 4],
             },
             merged: MergeStats::default(),
             watch,
