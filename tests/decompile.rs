@@ -27,19 +27,14 @@ const REFUSED: &[(&str, &str)] = &[];
 /// differ within the bound passes (the compiler regrouped a sum, split a
 /// `mad`); one beyond it that is not listed here fails the test, and so
 /// does a listed one that passes.
-const BEYOND_BOUND: &[(&str, &str)] = &[
-    (
-        "hlsl/lighting/oren_nayar.hlsl",
-        "max 4 ulp; tan(x) as sin(x)·rcp(cos(x)) near cos(x) = 0, where the bound of cos \
-         reaches |cos| and rcp's is not derived (the compiler changed cmp: 2 → 3, max: 3 → 2)",
-    ),
-    (
-        "hlsl/surface/water_gerstner_normal.hlsl",
-        "max 2 ulp; texCUBE at a computed reflection vector: a texture read at coordinates \
-         that carry a rounding bound has none derived (the compiler changed add: 2 → 3, \
-         mad: 12 → 11, mul: 25 → 26)",
-    ),
-];
+///
+/// None today. The last two, `lighting/oren_nayar` (4 ulp where `tan` as
+/// `sin·rcp(cos)` is near `cos = 0`, whose bound is unbounded) and
+/// `surface/water_gerstner_normal` (2 ulp in a cube map's coordinate), differed
+/// because the compiler regrouped the decompiled products and sums around
+/// literals; declared `precise`, the HLSL keeps the original's order and both
+/// run bit-identical.
+const BEYOND_BOUND: &[(&str, &str)] = &[];
 
 /// Decompiled shaders Microsoft's compiler refuses, with none today: the
 /// unrolled luminance shaders, refused while their 125 copies of one block

@@ -358,7 +358,14 @@ pub fn decompile(
         text.push_str(d);
         text.push('\n');
     }
-    let locals = locals(&s);
+    // `precise`: the compiler keeps the arithmetic as written (no regrouped
+    // sums or products); not where `lerp` is, which it then expands
+    let precise = if shader.instructions().iter().any(|x| x.op == Opcode::Lrp) {
+        ""
+    } else {
+        "precise "
+    };
+    let locals = locals(&s, precise);
     let mut statements = 0;
     if subroutines {
         text.push('\n');
@@ -409,10 +416,10 @@ pub fn decompile(
     if !single {
         let out = if subroutines { "out_" } else { "" };
         for &c in &s.colors {
-            sig.push(format!("out float4 {out}oC{c} : COLOR{c}"));
+            sig.push(format!("out {precise}float4 {out}oC{c} : COLOR{c}"));
         }
         if s.depth {
-            sig.push(format!("out float {out}oDepth : DEPTH"));
+            sig.push(format!("out {precise}float {out}oDepth : DEPTH"));
         }
     }
     let mut body = Body::new(1);
@@ -469,18 +476,18 @@ pub fn decompile(
 
 /// The declarations of the registers the body writes, each starting at 0
 /// (what the emulator, and Direct3D's reference rasteriser, give a register
-/// before its first write).
-fn locals(s: &Scan) -> Vec<String> {
+/// before its first write), `precise` (`"precise "`) or not (`""`).
+fn locals(s: &Scan, precise: &str) -> Vec<String> {
     let mut out = Vec::new();
     for &c in &s.colors {
-        out.push(format!("float4 oC{c} = 0;"));
+        out.push(format!("{precise}float4 oC{c} = 0;"));
     }
     if s.depth {
-        out.push("float oDepth = 0;".into());
+        out.push(format!("{precise}float oDepth = 0;"));
     }
     if !s.temps.is_empty() {
         let list: Vec<String> = s.temps.iter().map(|t| format!("r{t} = 0")).collect();
-        out.push(format!("float4 {};", list.join(", ")));
+        out.push(format!("{precise}float4 {};", list.join(", ")));
     }
     if s.predicate {
         out.push("bool4 p0 = false;".into());

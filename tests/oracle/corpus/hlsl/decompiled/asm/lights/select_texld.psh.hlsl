@@ -7,8 +7,8 @@ sampler2D s3 : register(s3);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0;
     r0 = tex2D(s0, texcoord0.xy);
     r1.xy = texcoord0.xy * c4.xy;
     r1.zw = 0.0;

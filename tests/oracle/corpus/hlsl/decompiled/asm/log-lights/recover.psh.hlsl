@@ -3,8 +3,8 @@ sampler2D s0 : register(s0);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
     r0 = tex2D(s0, texcoord0.xy);
     r1.x = log2(abs(r0.x));
     r1.y = log2(abs(r0.y));

@@ -4,8 +4,8 @@ sampler3D s0 : register(s0);
 
 float4 main() : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0;
     oC0 = tex3D(s0, c0.xyz);
     return oC0;
 }

@@ -7,8 +7,8 @@ sampler2D s1 : register(s1);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0;
     r0 = tex2D(s1, c2.xy);
     r0.y = (1.0 / r0.x) * c0.x;
     r1 = tex2D(s0, texcoord0.xy);

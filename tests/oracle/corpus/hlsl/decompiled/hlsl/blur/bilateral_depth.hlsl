@@ -6,8 +6,8 @@ sampler2D depthTex : register(s1);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0, r5 = 0, r6 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0, r5 = 0, r6 = 0;
     r0.xy = blurDir;
     r1 = r0.xyxy * float4(-4.0, -4.0, -3.0, -3.0) + texcoord0.xyxy;
     r2 = tex2D(aoTex, r1.zw);

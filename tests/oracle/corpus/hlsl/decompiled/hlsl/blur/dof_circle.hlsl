@@ -8,8 +8,8 @@ sampler2D depthSamp : register(s1);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0;
     r1.x = tex2D(depthSamp, texcoord0.xy).x - focusDist;
     r1.y = 1.0 / focusRange;
     r1.x = saturate(r1.y * abs(r1.x));

@@ -4,8 +4,8 @@ sampler2D Source : register(s0);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
     r0 = tex2D(Source, (SampleOffsetsWeights[1].xy + texcoord0.xy));
     r0 = SampleOffsetsWeights[0].z * tex2D(Source, (SampleOffsetsWeights[0].xy + texcoord0.xy)) + (r0 * SampleOffsetsWeights[1].z);
     r0 = SampleOffsetsWeights[2].z * tex2D(Source, (SampleOffsetsWeights[2].xy + texcoord0.xy)) + r0;

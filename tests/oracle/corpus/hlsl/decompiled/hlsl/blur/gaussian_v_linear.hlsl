@@ -4,8 +4,8 @@ sampler2D blurSrc : register(s0);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0;
     r1.xyz = float3(0.0, 1.3846154, 3.2307692);
     r2 = invSize.y * r1.xyxz + texcoord0.xyxy;
     r3 = tex2D(blurSrc, r2.xy);

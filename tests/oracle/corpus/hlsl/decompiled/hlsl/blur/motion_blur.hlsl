@@ -7,8 +7,8 @@ sampler2D depth : register(s1);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0;
     r1.xyw = texcoord0.xyx * float3(2.0, -2.0, 0.0) + float2(-1.0, 1.0).xyy;
     r1.z = tex2D(depth, texcoord0.xy).x;
     r0 = mul(r1, currInvViewProj);

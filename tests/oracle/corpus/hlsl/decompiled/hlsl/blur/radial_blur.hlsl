@@ -5,8 +5,8 @@ sampler2D sceneSampler : register(s0);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0;
     r0.xy = ((center - texcoord0.xy) * strength) * 0.083333336;
     r1 = 0.0;
     r0.zw = float2(1.0, 0.0);

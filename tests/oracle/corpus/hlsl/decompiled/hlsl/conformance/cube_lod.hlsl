@@ -4,7 +4,7 @@ samplerCUBE faces : register(s0);
 
 float4 main() : COLOR
 {
-    float4 oC0 = 0;
+    precise float4 oC0 = 0;
     oC0 = texCUBElod(faces, at);
     return oC0;
 }

@@ -5,8 +5,8 @@ float4 c : register(c2);
 
 float4 main() : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
     r0 = a;
     oC0.z = dot(r0.xyz, b.xyz);
     oC0.yw = r0.xw * b.xw + c.xw;

@@ -4,8 +4,8 @@ sampler2D image : register(s0);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
     r0 = (weights[0] + weights[1]) + weights[2];
     r0 = (r0 + weights[3]) + weights[4];
     r0 = (r0 + weights[5]) + weights[6];

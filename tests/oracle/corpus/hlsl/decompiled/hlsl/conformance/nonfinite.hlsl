@@ -3,8 +3,8 @@ float4 k : register(c0);
 
 float4 main() : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0;
     oC0.x = 1.0 / (1.0 / k.x);
     oC0.y = 1.0 / (1.0 / k.y);
     oC0.w = 1.0 / k.w;

@@ -4,7 +4,7 @@ sampler3D lut : register(s0);
 
 float4 main() : COLOR
 {
-    float4 oC0 = 0;
+    precise float4 oC0 = 0;
     oC0 = tex3Dlod(lut, at);
     return oC0;
 }

@@ -4,8 +4,8 @@ row_major float3x4 rowBones[4] : register(c16);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0;
     r0.xyz = mul(colBones[0], texcoord0) * texcoord1.x + (mul(colBones[1], texcoord0) * texcoord1.y);
     r0.xyz = mul(colBones[2], texcoord0) * texcoord1.z + r0.xyz;
     r0.xyz = mul(colBones[3], texcoord0) * texcoord1.w + r0.xyz;

@@ -6,8 +6,8 @@ sampler2D Image : register(s0);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
     r1.y = sin((W[1].x * texcoord0.x));
     r0 = tex2D(Image, ((r1.y * W[2].xy) * W[0].x + texcoord0.xy));
     r1.xyz = mul(r0.xyz, ColourMatrix);

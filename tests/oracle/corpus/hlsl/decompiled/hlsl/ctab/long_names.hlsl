@@ -6,8 +6,8 @@ sampler2D g_samplerDiffuseAlbedoWithAlpha : register(s0);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
     oC0 = tex2D(g_samplerDiffuseAlbedoWithAlpha, texcoord0.xy) * g_vMaterialDiffuseColorAndOpacity + (abcdefghijkl * x);
     return oC0;
 }

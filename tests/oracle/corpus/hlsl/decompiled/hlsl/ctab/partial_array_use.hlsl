@@ -5,8 +5,8 @@ float4 scalarArray[6] : register(c8); // the table's type: float[16]
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0;
     r0.x = dot(texcoord0, matArray[4]);
     r0.y = dot(texcoord0, matArray[5]);
     r0.z = dot(texcoord0, matArray[6]);

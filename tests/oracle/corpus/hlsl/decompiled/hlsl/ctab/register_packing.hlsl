@@ -12,8 +12,8 @@ float4x2 m42 : register(c4);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0;
     r0.x = a2 * a3;
     r0 = (texcoord0 * a1 + r0.x) - a4;
     r0.xy = b1_ * b2_ + r0.xy;

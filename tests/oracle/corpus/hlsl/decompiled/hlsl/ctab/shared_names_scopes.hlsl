@@ -5,8 +5,8 @@ float4 position : register(c3);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
     r0 = color * light[0] + ((position - texcoord0) * 0.1);
     oC0 = r0 + (light[1] - texcoord0);
     return oC0;

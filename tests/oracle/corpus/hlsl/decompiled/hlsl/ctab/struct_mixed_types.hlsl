@@ -3,8 +3,8 @@ float4 P[9] : register(c0); // the table's type: struct { bool enabled; int mode
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
     r0.xy = dot(P[5], texcoord0) * P[8].xy;
     r0.z = dot(P[4], texcoord0);
     r0.xy = P[7].xy * r0.z + r0.xy;

@@ -6,8 +6,8 @@ float4 iv2 : register(c1); // the table's type: int2
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
     r0 = texcoord0 * iv + iv2.xyxy;
     r0 = -bv.x >= 0.0 ? -r0 : r0;
     r0.xy = r0.xy + bv2.y;

@@ -5,8 +5,8 @@ int4 i1 : register(i1);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
     r0 = -lightOn[0].x >= 0.0 ? 0.0 : (lightCol[0] * texcoord0);
     r0 = -lightOn[1].x >= 0.0 ? r0 : (lightCol[1] * texcoord0 + r0);
     r0 = -lightOn[2].x >= 0.0 ? r0 : (lightCol[2] * texcoord0 + r0);

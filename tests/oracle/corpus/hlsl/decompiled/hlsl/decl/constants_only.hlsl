@@ -3,7 +3,7 @@ float4 Color : register(c0);
 
 float4 main() : COLOR
 {
-    float4 oC0 = 0;
+    precise float4 oC0 = 0;
     oC0 = Color;
     return oC0;
 }

@@ -2,7 +2,7 @@
 
 float4 main() : COLOR
 {
-    float4 oC0 = 0;
+    precise float4 oC0 = 0;
     oC0 = float4(1.0, 0.5, 0.25, 1.0);
     return oC0;
 }

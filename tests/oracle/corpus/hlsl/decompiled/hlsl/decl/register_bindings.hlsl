@@ -9,8 +9,8 @@ samplerCUBE Reflect : register(s7);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0;
     r0.xy = float2(0.0, 1.0);
     r0.y = -Taps.x >= 0.0 ? r0.x : r0.y;
     r1 = -Taps.x >= 0.0 ? r0.x : tex2D(Albedo, (Offsets[0].xy + texcoord0.xy));

@@ -7,8 +7,8 @@ sampler2D s3 : register(s3);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
     r0 = tex2D(s0, texcoord0.xy) * weights.x + (tex2D(s1, texcoord0.xy) * weights.y);
     r0 = tex2D(s2, texcoord0.xy) * weights.z + r0;
     oC0 = tex2D(s3, texcoord0.xy) * weights.w + r0;

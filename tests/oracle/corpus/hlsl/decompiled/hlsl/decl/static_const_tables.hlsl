@@ -2,8 +2,8 @@
 
 float4 main(float4 texcoord1 : TEXCOORD1) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
     r0.x = frac(texcoord1.x);
     r0.y = -r0.x >= 0.0 ? 0.0 : 1.0;
     r0.x = texcoord1.x - r0.x;

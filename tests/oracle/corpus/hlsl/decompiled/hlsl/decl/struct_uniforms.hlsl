@@ -3,8 +3,8 @@ float4 scene[8] : register(c0); // the table's type: struct { struct { float4 di
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0;
     r0.x = 1.0 / (scene[5].x - scene[4].x);
     r0.y = texcoord1.x - scene[4].x;
     r0.x = saturate(r0.x * r0.y);

@@ -5,8 +5,8 @@ sampler2D _img : register(s0);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
     oC0 = tex2D(_img, texcoord0.xy) * _scale + _bias;
     return oC0;
 }

@@ -4,8 +4,8 @@ sampler2D usedSampler : register(s0);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0;
     oC0 = tex2D(usedSampler, texcoord0.xy) * used;
     return oC0;
 }

@@ -6,9 +6,9 @@ sampler2D normals : register(s0);
 sampler2D albedo : register(s1);
 sampler2D ao : register(s2);
 
-void main(float4 texcoord0 : TEXCOORD0, out float4 oC0 : COLOR0, out float4 oC1 : COLOR1)
+void main(float4 texcoord0 : TEXCOORD0, out precise float4 oC0 : COLOR0, out precise float4 oC1 : COLOR1)
 {
-    float4 r0 = 0, r1 = 0;
+    precise float4 r0 = 0, r1 = 0;
     oC0 = 0;
     oC1 = 0;
     r0.xyz = tex2D(normals, texcoord0.xy).xyz * 2.0 - 1.0;

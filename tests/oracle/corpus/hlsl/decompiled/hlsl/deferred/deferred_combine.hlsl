@@ -7,8 +7,8 @@ sampler2D depthRT : register(s2);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0;
     r0.x = (-(tex2D(depthRT, texcoord0.xy).x) * fogDensity) * 1.442695;
     r0.x = 1.0 - exp2(r0.x);
     r1 = tex2D(albedoRT, texcoord0.xy);

@@ -8,8 +8,8 @@ sampler2D gDepth : register(s2);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0;
     r0.z = tex2D(gDepth, texcoord0.xy).x;
     r0.xyw = texcoord0.xyx * float3(2.0, -2.0, 0.0) + float3(-1.0, 1.0, 1.0);
     r2.x = dot(r0, invProj._m00_m10_m20_m30);

@@ -9,8 +9,8 @@ sampler2D ColorBuf : register(s2);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float2 vpos : VPOS) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0;
     r0.x = 1.0 / texcoord0.z;
     r0.yz = (0.5 + vpos) * ScreenSize.xy;
     r1 = tex2D(DepthBuf, r0.yz);

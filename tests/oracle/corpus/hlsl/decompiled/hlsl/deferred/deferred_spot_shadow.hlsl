@@ -12,8 +12,8 @@ sampler2D cookie : register(s3);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0;
     r0.xy = (1.0 / texcoord0.w) * texcoord0.xy;
     r1 = tex2D(gb_depth, r0.xy);
     r0.xyz = tex2D(gb_normal, r0.xy).xyz * 2.0 - 1.0;

@@ -3,9 +3,9 @@ float metalness : register(c1);
 float roughnessValue : register(c0);
 sampler2D albedoMap : register(s0);
 
-void main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1, out float4 oC0 : COLOR0, out float4 oC1 : COLOR1)
+void main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1, out precise float4 oC0 : COLOR0, out precise float4 oC1 : COLOR1)
 {
-    float4 r0 = 0, r1 = 0;
+    precise float4 r0 = 0, r1 = 0;
     oC0 = 0;
     oC1 = 0;
     r0.xyz = normalize(texcoord1.xyz);

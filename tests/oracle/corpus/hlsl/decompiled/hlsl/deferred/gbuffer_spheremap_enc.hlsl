@@ -2,9 +2,9 @@
 float4 gbufParams : register(c0);
 sampler2D diffuse_s : register(s0);
 
-void main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1, float4 texcoord2 : TEXCOORD2, out float4 oC0 : COLOR0, out float4 oC1 : COLOR1, out float4 oC2 : COLOR2)
+void main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1, float4 texcoord2 : TEXCOORD2, out precise float4 oC0 : COLOR0, out precise float4 oC1 : COLOR1, out precise float4 oC2 : COLOR2)
 {
-    float4 r0 = 0;
+    precise float4 r0 = 0;
     oC0 = 0;
     oC1 = 0;
     oC2 = 0;

@@ -4,9 +4,9 @@ sampler2D DiffuseTex : register(s0);
 sampler2D NormalTex : register(s1);
 sampler2D SpecTex : register(s2);
 
-void main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1, float4 texcoord2 : TEXCOORD2, float4 texcoord3 : TEXCOORD3, float4 texcoord4 : TEXCOORD4, out float4 oC0 : COLOR0, out float4 oC1 : COLOR1, out float4 oC2 : COLOR2, out float4 oC3 : COLOR3)
+void main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1, float4 texcoord2 : TEXCOORD2, float4 texcoord3 : TEXCOORD3, float4 texcoord4 : TEXCOORD4, out precise float4 oC0 : COLOR0, out precise float4 oC1 : COLOR1, out precise float4 oC2 : COLOR2, out precise float4 oC3 : COLOR3)
 {
-    float4 r0 = 0, r1 = 0;
+    precise float4 r0 = 0, r1 = 0;
     oC0 = 0;
     oC1 = 0;
     oC2 = 0;

@@ -8,8 +8,8 @@ samplerCUBE envMap : register(s1);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1, float4 texcoord2 : TEXCOORD2) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0;
     r0.xyz = tex2D(flakeNormals, (flakeScale * texcoord0.xy)).xyz * 2.0 - 1.0;
     r1.xyz = normalize(texcoord2.xyz);
     r2.xyz = normalize((r0.xyz * 0.2 + r1.xyz));

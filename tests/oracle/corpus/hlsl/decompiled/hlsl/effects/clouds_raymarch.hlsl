@@ -8,8 +8,8 @@ sampler3D noiseVol : register(s0);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0, r5 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0, r5 = 0;
     r1.xyz = normalize((texcoord0.xyz - camPos));
     r0.xy = slab - camPos.y;
     r0.z = 1.0 / r1.y;

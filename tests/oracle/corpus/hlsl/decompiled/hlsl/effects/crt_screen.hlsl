@@ -5,8 +5,8 @@ sampler2D frameBuf : register(s0);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float2 vpos : VPOS) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0;
     r0.xy = float2(1.0, 2.0) + vpos.x;
     r0.zw = frac(abs((r0.xy * 0.33333334)));
     r0.xy = r0.xy >= 0.0 ? r0.zw : -r0.zw;

@@ -7,8 +7,8 @@ sampler2D noiseMap : register(s1);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
     r0 = tex2D(noiseMap, texcoord0.xy).x - dissolveAmount;
     clip(r0);
     r0.x = 1.0 / edgeWidth;

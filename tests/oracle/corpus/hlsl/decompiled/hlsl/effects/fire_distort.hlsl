@@ -8,8 +8,8 @@ sampler2D noiseB : register(s2);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
     r0.yw = timeSec * scrollSpeeds.xy;
     r0.xz = 0.0;
     r0 = texcoord0.xyxy * float4(1.0, 2.0, 1.0, 3.0) - r0;

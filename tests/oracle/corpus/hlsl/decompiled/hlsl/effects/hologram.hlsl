@@ -6,8 +6,8 @@ float3 viewPosW : register(c3);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0;
     r1.xyz = normalize((viewPosW - texcoord0.xyz));
     r0.x = 1.0 - saturate(dot(normalize(texcoord1.xyz), r1.xyz));
     r0.x = dot(r0.xx, r0.xx) + 0.2;

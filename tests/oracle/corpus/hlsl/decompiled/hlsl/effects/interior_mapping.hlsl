@@ -4,8 +4,8 @@ samplerCUBE roomCube : register(s0);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0;
     r0.xyz = frac((roomScale * texcoord0.xyz)) * 2.0 - 1.0;
     r1.xyz = normalize(texcoord1.xyz);
     r2.x = 1.0 / r1.x;

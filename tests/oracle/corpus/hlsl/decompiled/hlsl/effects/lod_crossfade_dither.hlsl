@@ -4,8 +4,8 @@ sampler2D albedoMap : register(s0);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float2 vpos : VPOS) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
     r0.x = frac((dot(vpos, float2(0.25, 0.125)) + 0.0)) * 0.125;
     r0.yz = frac((0.5 * vpos));
     r0.x = dot(r0.yz, float2(0.5, 0.25)) + r0.x;

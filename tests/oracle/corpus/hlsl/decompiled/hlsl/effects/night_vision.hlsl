@@ -6,8 +6,8 @@ sampler2D noise : register(s1);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
     r0.xy = (texcoord0.xy - 0.5) * float2(1.6, 1.0);
     r0.x = dot(r0.xy, r0.xy) + 0.0;
     r0.x = 1.0 / rsqrt(abs(r0.x));

@@ -6,8 +6,8 @@ sampler2D selMask : register(s0);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0;
     r0.xy = float2(0.0, 1.0);
     r0.zw = r0.yx * thickness;
     r1.xy = r0.zw + float2(0.0, 1.0);

@@ -6,8 +6,8 @@ sampler2D src : register(s0);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0;
     r0.xy = (resolution * texcoord0.xy) * 0.125;
     r0.zw = frac(r0.xy);
     r0.xy = (r0.xy - r0.zw) + 0.5;

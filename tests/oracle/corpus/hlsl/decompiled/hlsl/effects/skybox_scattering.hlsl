@@ -7,8 +7,8 @@ samplerCUBE stars : register(s0);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0;
     r0.xz = float2(1.0, 2.0);
     r0.y = mieG * -mieG + r0.x;
     r0.zw = mieG * mieG + r0.zx;

@@ -6,8 +6,8 @@ sampler2D sceneDepth : register(s1);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1, float4 color0 : COLOR0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
     r0.x = (1.0 / texcoord1.w) * texcoord1.z;
     r0.y = nearFar.y - nearFar.x;
     r0.x = 1.0 / (r0.x * -r0.y + nearFar.y);

@@ -10,8 +10,8 @@ sampler2D texA : register(s3);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
     r0.xy = (tex2D(texCr, texcoord0.xy).x - consts.z) * tor.xy;
     r0.z = tex2D(texY, texcoord0.xy).x - consts.y;
     oC0.x = r0.z * consts.x + r0.x;

@@ -5,8 +5,8 @@ sampler2D b : register(s1);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0;
     r0.x = k - texcoord1.x;
     if (k < texcoord1.x) {
         r1 = tex2Dlod(a, (float4(1.0, 1.0, 0.0, 0.0) * texcoord0.xyxx));

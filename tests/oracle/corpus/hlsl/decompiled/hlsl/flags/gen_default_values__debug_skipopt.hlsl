@@ -11,8 +11,8 @@ bool Enabled : register(b0);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0;
     r0 = mul(texcoord0, Ident) * Vec;
     r1.xyz = Pair.y * Colour;
     r1.w = Pair.y * Pair.x;

@@ -11,8 +11,8 @@ float4 Vec : register(c11);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0;
     r1.xyz = Pair.y * Colour;
     r1.w = Pair.y * Pair.x;
     r0 = (mul(texcoord0, Ident) * Vec) * Scalar + r1;

@@ -8,8 +8,8 @@ sampler2D gDepth : register(s2);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0;
     r0.zw = (tex2D(gDepth, texcoord0.xy).x * float2(1.0, 0.0)) + float2(0.0, 1.0);
     r1.xy = 2.0 * texcoord0.xy;
     r0.x = r1.x - 1.0;

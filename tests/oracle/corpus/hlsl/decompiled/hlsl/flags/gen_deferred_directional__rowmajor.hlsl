@@ -8,8 +8,8 @@ sampler2D gDepth : register(s2);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
     r0 = (texcoord0.x * 2.0 - 1.0) * invProj[0] + ((texcoord0.y * -2.0 + 1.0) * invProj[1]);
     r0 = (tex2D(gDepth, texcoord0.xy).x * invProj[2] + r0) + invProj[3];
     r0.w = 1.0 / r0.w;

@@ -6,8 +6,8 @@ sampler2D tex : register(s0);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
     r0.x = 1.0 / rsqrt(abs(dot(texcoord1.xyz, texcoord1.xyz)));
     r0.y = r0.x * FogDensity;
     r0.x = -r0.x * FogDensity;

@@ -4,8 +4,8 @@ sampler2D inputTex : register(s0);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0;
     r1.x = texelWidth;
     r2 = r1.x * float4(1.0, 0.0, 2.0, 0.0) + texcoord0.xyxy;
     r3 = tex2D(inputTex, r2.xy);

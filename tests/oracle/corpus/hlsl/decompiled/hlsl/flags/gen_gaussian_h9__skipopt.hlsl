@@ -4,8 +4,8 @@ sampler2D inputTex : register(s0);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0;
     r0 = tex2D(inputTex, texcoord0.xy) * 0.22702703;
     r1.xy = float2(1.0, 0.0) * texelWidth;
     r2 = tex2D(inputTex, (r1.xy + texcoord0.xy));

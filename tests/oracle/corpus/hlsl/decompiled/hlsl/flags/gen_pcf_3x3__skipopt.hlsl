@@ -7,8 +7,8 @@ sampler2D ShadowMap : register(s1);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1, float4 texcoord2 : TEXCOORD2) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0;
     r0.x = 1.0 / texcoord1.w;
     r0.y = 1.0 / texcoord1.w;
     r0.xy = r0.xy * texcoord1.xy;

@@ -5,8 +5,8 @@ sampler2D BaseMap : register(s0);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1, float4 texcoord2 : TEXCOORD2) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0;
     r0.xyz = rsqrt(abs(dot(texcoord2.xyz, texcoord2.xyz))) * texcoord2.xyz;
     r1.xyz = (-texcoord1.xyz) + LightPosRange[0].xyz;
     r0.w = 1.0 / rsqrt(abs(dot(r1.xyz, r1.xyz)));

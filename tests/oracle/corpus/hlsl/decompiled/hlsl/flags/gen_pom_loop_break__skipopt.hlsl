@@ -7,8 +7,8 @@ sampler2D AlbedoSampler : register(s1);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1, float4 texcoord2 : TEXCOORD2) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0, r5 = 0, r6 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0, r5 = 0, r6 = 0;
     r0.xyz = rsqrt(abs(dot(texcoord1.xyz, texcoord1.xyz))) * texcoord1.xyz;
     r1.xy = ddx(texcoord0.xy);
     r1.zw = ddy(texcoord0.xy);

@@ -7,8 +7,8 @@ sampler2D RandomSampler : register(s1);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0;
     r0.xyz = tex2D(RandomSampler, (ScreenParams.xy * texcoord0.xy)).xyz * 2.0 - 1.0;
     r0.w = dot(float3(0.355512, -0.709318, -0.102371), r0.xyz);
     r0.w = r0.w + r0.w;

@@ -7,8 +7,8 @@ sampler2D RandomSampler : register(s1);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0, r5 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0, r5 = 0;
     r0.x = tex2D(DepthSampler, texcoord0.xy).x;
     r1 = tex2D(RandomSampler, (ScreenParams.xy * texcoord0.xy));
     r0.yzw = (r1.xyz * 2.0) - 1.0;

@@ -9,8 +9,8 @@ sampler2D emissiveMap : register(s2);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
     r0 = tex2D(diffuse, texcoord0.xy);
     if (useDetail) {
         r1 = tex2D(detail, (8.0 * texcoord0.xy));

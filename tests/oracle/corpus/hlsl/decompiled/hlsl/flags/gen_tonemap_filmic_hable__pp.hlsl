@@ -4,8 +4,8 @@ sampler2D sceneTex : register(s0);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0;
     r0.xyz = tex2D(sceneTex, texcoord0.xy).xyz * exposure;
     r1.xyz = r0.xyz * (r0.xyz * 0.15 + 0.05) + 0.004;
     r0.xyz = r0.xyz * (r0.xyz * 0.15 + 0.5) + 0.06;

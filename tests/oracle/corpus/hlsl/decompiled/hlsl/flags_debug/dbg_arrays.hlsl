@@ -3,8 +3,8 @@ float4 c[3] : register(c0);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0;
     r0.x = dot(texcoord0, c[0]);
     r0.y = dot(texcoord0, c[1]);
     r0.z = dot(texcoord0, c[2]);

@@ -3,8 +3,8 @@ float4 k : register(c0);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
     r0 = k * texcoord0;
     r1 = r0 + k;
     r0 = r0 * r1;

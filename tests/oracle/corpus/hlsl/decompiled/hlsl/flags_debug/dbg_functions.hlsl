@@ -3,8 +3,8 @@ float4 scale : register(c0);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
     r0.x = rsqrt(abs(dot(texcoord0.xyz, texcoord0.xyz)));
     r0.x = dot((r0.x * texcoord0.xyz), texcoord1.xyz);
     r0.y = r0.x - 0.0;

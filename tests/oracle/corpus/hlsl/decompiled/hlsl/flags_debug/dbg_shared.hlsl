@@ -3,7 +3,7 @@ float4 k : register(c0);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
+    precise float4 oC0 = 0;
     oC0.xyz = k.x * texcoord0.x;
     oC0.w = 1.0;
     return oC0;

@@ -1,9 +1,9 @@
 // ps_3_0 shader decompiled by ps30
 float4x4 xf : register(c0);
 
-void main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1, out float4 oC0 : COLOR0, out float4 oC1 : COLOR1, out float4 oC2 : COLOR2, out float4 oC3 : COLOR3, out float oDepth : DEPTH)
+void main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1, out precise float4 oC0 : COLOR0, out precise float4 oC1 : COLOR1, out precise float4 oC2 : COLOR2, out precise float4 oC3 : COLOR3, out precise float oDepth : DEPTH)
 {
-    float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0;
     oC0 = 0;
     oC1 = 0;
     oC2 = 0;

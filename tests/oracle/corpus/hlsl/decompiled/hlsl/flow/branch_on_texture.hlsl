@@ -5,8 +5,8 @@ sampler2D expensive : register(s1);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0;
     r0 = tex2D(maskS, texcoord0.xy);
     r0.y = 0.5 - r0.x;
     if (0.5 < r0.x) {

@@ -5,8 +5,8 @@ float sel : register(c8);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0;
     if (sel < texcoord0.w) {
         r0 = 0.0;
         r1.x = 0.0;

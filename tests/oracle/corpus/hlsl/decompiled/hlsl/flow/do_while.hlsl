@@ -3,8 +3,8 @@ float4 seed : register(c0);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0;
     r0.x = 1.618;
     r1 = frac((texcoord0 * r0.x + seed));
     r2 = r1;

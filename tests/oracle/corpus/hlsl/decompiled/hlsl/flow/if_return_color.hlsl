@@ -5,8 +5,8 @@ float threshold : register(c0);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
     r0.x = texcoord0.x - threshold;
     if (texcoord0.x < threshold) {
         r1 = colorA;

@@ -7,8 +7,8 @@ sampler2D s : register(s0);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 color0 : COLOR0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
     if (hasTexture) {
         r0 = tex2D(s, texcoord0.xy);
         r1 = r0 * color0;

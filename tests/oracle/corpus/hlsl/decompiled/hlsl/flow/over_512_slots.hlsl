@@ -3,8 +3,8 @@ float4 coeff[4] : register(c0);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0, r5 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0, r5 = 0;
     r0 = frac((texcoord0 * 0.15915494 + 0.25)) * 6.2831855 - 3.1415927;
     r0 = r0 * r0;
     r1 = r0 * (r0 * (r0 * -2.523985e-7 + 2.47609e-5) - 0.0013888397) + 0.04166664;

@@ -5,8 +5,8 @@ sampler2D t1 : register(s1);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0;
     r0.x = abs(texcoord1.x) - frac(abs(texcoord1.x));
     if (-r0.x >= 0.0) {
         oC0 = tex2D(t0, texcoord0.xy);

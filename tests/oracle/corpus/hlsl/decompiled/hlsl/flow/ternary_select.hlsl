@@ -4,8 +4,8 @@ float4 lo : register(c0);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0;
     r0 = texcoord1;
     r1 = max(r0, texcoord0);
     r0 = texcoord0 - r0;

@@ -9,8 +9,8 @@ sampler2D sceneColor : register(s0);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0;
     r0.x = (-cameraPosition.y * fogHeightFalloff) * 1.442695;
     r0.x = exp2(r0.x) * fogGlobalDensity;
     r0.yzw = texcoord1.xyz - cameraPosition;

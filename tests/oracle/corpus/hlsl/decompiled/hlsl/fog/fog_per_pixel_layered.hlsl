@@ -11,8 +11,8 @@ samplerCUBE skyCube : register(s3);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
     r0.xy = texcoord0.xy * fogParams.z + (fogParams.w * float2(0.01, 0.003));
     r0.x = tex2D(noiseTex, r0.xy).x * 0.4 + 0.8;
     r1 = tex2D(depthRT, texcoord0.xy);

@@ -6,8 +6,8 @@ sampler2D depthTexture : register(s0);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0;
     r0.xyz = eye - sphere.xyz;
     r0.w = sphere.w * -sphere.w + dot(r0.xyz, r0.xyz);
     r0.x = dot(r0.xyz, normalize((texcoord1.xyz - eye)));

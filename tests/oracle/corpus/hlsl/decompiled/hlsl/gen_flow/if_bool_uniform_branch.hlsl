@@ -4,7 +4,7 @@ bool on : register(b0);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
+    precise float4 oC0 = 0;
     if (on) {
         oC0 = x * texcoord0;
     } else {

@@ -4,8 +4,8 @@ float4 x : register(c1);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0;
     oC0 = -on.x >= 0.0 ? texcoord0 : (x * texcoord0);
     return oC0;
 }

@@ -3,8 +3,8 @@ float4 x : register(c0);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0;
     if (0.5 < texcoord0.z) {
         r0 = texcoord1.x;
         clip(r0);

@@ -4,8 +4,8 @@ float4 y : register(c1);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0;
     r0.x = texcoord1.x;
     if (r0.x < texcoord0.x) {
         oC0 = x * texcoord0;

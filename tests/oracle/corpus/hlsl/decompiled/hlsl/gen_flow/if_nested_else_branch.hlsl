@@ -5,8 +5,8 @@ float4 z : register(c2);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0;
     if (-texcoord0.x < 0.0) {
         if (-texcoord0.y < 0.0) {
             r0 = x;

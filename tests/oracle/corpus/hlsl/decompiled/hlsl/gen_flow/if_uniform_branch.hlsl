@@ -5,8 +5,8 @@ float4 y : register(c1);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0;
     r0.x = 0.5;
     if (r0.x < t) {
         r0 = x;

@@ -5,8 +5,8 @@ float4 y : register(c1);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
     oC0 = (0.5 - t) >= 0.0 ? texcoord0 : (x * texcoord0 + y);
     return oC0;
 }

@@ -3,8 +3,8 @@ float4 w[6] : register(c0);
 
 float4 main(float4 texcoord1 : TEXCOORD1) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0;
     r0.x = w[1].w - texcoord1.w;
     r1 = (w[0].w - texcoord1.w) >= 0.0 ? w[0] : 0.0;
     r0 = r0.x >= 0.0 ? (r1 + w[1]) : r1;

@@ -3,8 +3,8 @@ float4 w[3] : register(c0);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0;
     r0 = w[0] * texcoord0;
     r1 = w[1] * texcoord0 + r0;
     r2.x = (texcoord1.x - r1.x) >= 0.0 ? 0.0 : 1.0;

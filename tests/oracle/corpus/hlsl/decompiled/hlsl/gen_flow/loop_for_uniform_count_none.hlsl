@@ -4,8 +4,8 @@ int4 n : register(i0);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0;
     r0 = 0.0;
     r1.x = 0.0;
     for (int n0 = 0; n0 < n.x; n0++) {

@@ -4,8 +4,8 @@ float4 w[8] : register(c0);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0;
     r1.xy = float2(0.0, 1.0);
     r0 = -n.x >= 0.0 ? r1.x : (w[0] * texcoord0);
     r1.x = -n.x >= 0.0 ? r1.x : r1.y;

@@ -4,8 +4,8 @@ sampler2D s : register(s0);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0;
     r0 = tex2D(s, (d + texcoord0.xy)) + tex2D(s, texcoord0.xy);
     r1.xy = d;
     r0 = r0 + tex2D(s, (r1.xy * 2.0 + texcoord0.xy));

@@ -2,8 +2,8 @@
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0;
     r0.xyz = ((abs(texcoord0.xyz) * -0.0187293 + 0.074261) * abs(texcoord0.xyz) - 0.2121144) * abs(texcoord0.xyz) + 1.5707288;
     r1.xyz = 1.0 - abs(texcoord0.xyz);
     r2.x = 1.0 / rsqrt(abs(r1.x));

@@ -2,7 +2,7 @@
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1) : COLOR
 {
-    float4 oC0 = 0;
+    precise float4 oC0 = 0;
     clip(texcoord0);
     oC0 = texcoord1;
     return oC0;

@@ -2,8 +2,8 @@
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
     r0.xyz = frac((texcoord0.xyz * 0.15915494 + 0.5)) * 6.2831855 - 3.1415927;
     r0.xyz = r0.xyz * r0.xyz;
     r1.xyz = r0.xyz * (r0.xyz * (r0.xyz * -2.523985e-7 + 2.47609e-5) - 0.0013888397) + 0.04166664;

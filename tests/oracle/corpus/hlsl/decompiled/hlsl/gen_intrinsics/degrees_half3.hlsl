@@ -2,7 +2,7 @@
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
+    precise float4 oC0 = 0;
     oC0 = texcoord0.xyzx * float4(57.29578, 57.29578, 57.29578, 0.0) + float4(0.0, 0.0, 0.0, 1.0);
     return oC0;
 }

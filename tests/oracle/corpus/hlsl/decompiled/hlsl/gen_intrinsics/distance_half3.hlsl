@@ -2,8 +2,8 @@
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0;
     r0.xyz = texcoord0.xyz - texcoord1.xyz;
     r0.x = dot(r0.xyz, r0.xyz);
     oC0 = 1.0 / rsqrt(abs(r0.x));

@@ -2,7 +2,7 @@
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
+    precise float4 oC0 = 0;
     oC0.x = exp2(texcoord0.x);
     oC0.y = exp2(texcoord0.y);
     oC0.z = exp2(texcoord0.z);

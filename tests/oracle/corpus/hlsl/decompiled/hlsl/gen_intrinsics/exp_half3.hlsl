@@ -2,8 +2,8 @@
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0;
     r0.xyz = 1.442695 * texcoord0.xyz;
     oC0.x = exp2(r0.x);
     oC0.y = exp2(r0.y);

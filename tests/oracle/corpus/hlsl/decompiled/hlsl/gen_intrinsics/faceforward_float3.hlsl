@@ -2,8 +2,8 @@
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1, float4 texcoord2 : TEXCOORD2) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0;
     r0.x = dot(texcoord1.xyz, texcoord2.xyz);
     r0.yzw = -2.0 * texcoord0.xyz;
     oC0.xyz = (r0.x >= 0.0 ? r0.yzw : 0.0) + texcoord0.xyz;

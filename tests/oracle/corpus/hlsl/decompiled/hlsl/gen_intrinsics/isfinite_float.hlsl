@@ -2,7 +2,7 @@
 
 float4 main() : COLOR
 {
-    float4 oC0 = 0;
+    precise float4 oC0 = 0;
     oC0 = 1.0;
     return oC0;
 }

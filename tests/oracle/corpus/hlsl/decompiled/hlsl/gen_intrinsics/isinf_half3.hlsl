@@ -2,8 +2,8 @@
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0;
     r0.x = 1.0 / texcoord0.x;
     r0.y = 1.0 / texcoord0.y;
     r0.z = 1.0 / texcoord0.z;

@@ -2,7 +2,7 @@
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
+    precise float4 oC0 = 0;
     oC0.x = log2(abs(texcoord0.x));
     oC0.y = log2(abs(texcoord0.y));
     oC0.z = log2(abs(texcoord0.z));

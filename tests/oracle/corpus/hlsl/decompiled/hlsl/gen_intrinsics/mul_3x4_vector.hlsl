@@ -3,8 +3,8 @@ float3x4 M : register(c0);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0;
     oC0.xyz = mul(M, texcoord0);
     oC0.w = 1.0;
     return oC0;

@@ -4,8 +4,8 @@ float4x4 N : register(c4);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0, r5 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0, r5 = 0;
     r0 = M._m01_m11_m21_m31;
     r2 = M._m00_m10_m20_m30;
     r1 = r2 * N._m01 + (r0 * N._m11);

@@ -3,7 +3,7 @@ float4 V : register(c0);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
+    precise float4 oC0 = 0;
     oC0 = V * texcoord0.x;
     return oC0;
 }

@@ -2,8 +2,8 @@
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0;
     oC0 = rsqrt(abs((dot(texcoord0.xy, texcoord0.xy) + 0.0))) * texcoord0.xyxy;
     return oC0;
 }

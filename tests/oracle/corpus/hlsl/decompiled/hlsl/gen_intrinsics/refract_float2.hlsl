@@ -2,8 +2,8 @@
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1, float4 texcoord2 : TEXCOORD2) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
     r0.x = texcoord2.x * texcoord2.x;
     r0.y = dot(texcoord0.xy, texcoord1.xy) + 0.0;
     r0.z = r0.y * -r0.y + 1.0;

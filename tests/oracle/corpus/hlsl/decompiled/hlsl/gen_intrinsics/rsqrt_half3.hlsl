@@ -2,7 +2,7 @@
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
+    precise float4 oC0 = 0;
     oC0.x = rsqrt(abs(texcoord0.x));
     oC0.y = rsqrt(abs(texcoord0.y));
     oC0.z = rsqrt(abs(texcoord0.z));

@@ -2,8 +2,8 @@
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
     oC0.xyz = (-texcoord0.xyz >= 0.0 ? 0.0 : 1.0) + (texcoord0.xyz >= 0.0 ? -0.0 : -1.0);
     oC0.w = 1.0;
     return oC0;

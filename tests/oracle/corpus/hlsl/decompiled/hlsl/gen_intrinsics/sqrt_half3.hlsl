@@ -2,8 +2,8 @@
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0;
     oC0.x = 1.0 / rsqrt(abs(texcoord0.x));
     oC0.y = 1.0 / rsqrt(abs(texcoord0.y));
     oC0.z = 1.0 / rsqrt(abs(texcoord0.z));

@@ -2,8 +2,8 @@
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0;
     r0 = 1.442695 * texcoord0;
     r1.x = exp2(r0.x);
     r1.y = exp2(r0.y);

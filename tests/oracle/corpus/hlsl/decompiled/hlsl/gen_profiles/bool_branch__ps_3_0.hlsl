@@ -5,8 +5,8 @@ bool b_ : register(b0);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0;
     if (b_) {
         r0 = k * texcoord0;
     } else {

@@ -1,6 +1,6 @@
 // ps_3_0 shader decompiled by ps30
 
-void main(float4 texcoord0 : TEXCOORD0, float4 color0 : COLOR0, out float4 oC0 : COLOR0, out float4 oC1 : COLOR1, out float oDepth : DEPTH)
+void main(float4 texcoord0 : TEXCOORD0, float4 color0 : COLOR0, out precise float4 oC0 : COLOR0, out precise float4 oC1 : COLOR1, out precise float oDepth : DEPTH)
 {
     oC0 = 0;
     oC1 = 0;

@@ -3,8 +3,8 @@ sampler2D s : register(s0);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0;
     r0 = tex2D(s, tex2D(s, tex2D(s, texcoord0.xy).xy).xy);
     oC0 = tex2D(s, tex2D(s, r0.xy).xy);
     return oC0;

@@ -3,8 +3,8 @@ sampler2D s : register(s0);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0;
     r0 = texcoord1;
     oC0 = tex2Dgrad(s, texcoord0.xy, r0.xy, r0.zw);
     return oC0;

@@ -3,7 +3,7 @@ sampler2D s : register(s0);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
+    precise float4 oC0 = 0;
     oC0 = tex2D(s, texcoord0.xy);
     return oC0;
 }

@@ -4,8 +4,8 @@ sampler2D s : register(s5);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1, float4 texcoord2 : TEXCOORD2) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
     oC0 = tex2Dgrad(s, texcoord0.xy, texcoord1.xy, texcoord2.xy).zyxw * k.x;
     return oC0;
 }

@@ -3,7 +3,7 @@ sampler3D s : register(s0);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
+    precise float4 oC0 = 0;
     oC0 = tex3Dbias(s, texcoord0);
     return oC0;
 }

@@ -3,7 +3,7 @@ samplerCUBE s : register(s0);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
+    precise float4 oC0 = 0;
     oC0 = texCUBE(s, texcoord0.xyz);
     return oC0;
 }

@@ -4,8 +4,8 @@ samplerCUBE s : register(s5);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0;
     oC0 = texCUBElod(s, texcoord0).zyxw * k.x;
     return oC0;
 }

@@ -6,8 +6,8 @@ sampler2D highMip : register(s1);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0;
     r1 = (texel.xy * texel.z).xyxy * float4(0.0, -1.0, -1.0, 0.0) + texcoord0.xyxy;
     r2 = tex2D(lowMip, r1.xy);
     r0.xyz = r2.xyz * 2.0 + tex2D(lowMip, (texel.z * -texel.xy + texcoord0.xy)).xyz;

@@ -7,8 +7,8 @@ sampler2D LumSampler : register(s1);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0;
     r0.x = 1.0 / (tex2D(LumSampler, float2(0.5, 0.5)).x + 0.001);
     r0.xyz = (r0.x * MiddleGray) * tex2D(SceneSampler, texcoord0.xy).xyz;
     r2.x = max(r0.x, max(r0.y, r0.z));

@@ -4,8 +4,8 @@ sampler2D srcTex : register(s0);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
     r0 = tex2D(srcTex, (offsets[0] + texcoord0.xy)) + tex2D(srcTex, (offsets[1] + texcoord0.xy));
     r0 = r0 + tex2D(srcTex, (offsets[2] + texcoord0.xy));
     r0 = r0 + tex2D(srcTex, (offsets[3] + texcoord0.xy));

@@ -4,8 +4,8 @@ sampler2D Src : register(s0);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0;
     r0 = TexelSize.xyxy * float2(1.0, -1.0).xyyx + texcoord0.xyxy;
     r1 = tex2D(Src, r0.xy);
     r0 = tex2D(Src, r0.zw);

@@ -4,8 +4,8 @@ sampler2D lumTex : register(s0);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
     r0 = tex2D(lumTex, (sampleOffsets[0].xy + texcoord0.xy));
     r0.x = r0.x + tex2D(lumTex, (sampleOffsets[1].xy + texcoord0.xy)).x;
     r0.x = r0.x + tex2D(lumTex, (sampleOffsets[2].xy + texcoord0.xy)).x;

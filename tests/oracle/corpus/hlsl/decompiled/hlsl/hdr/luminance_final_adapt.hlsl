@@ -7,8 +7,8 @@ sampler2D prevLum : register(s1);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0;
     r0 = tex2D(curLum, (sampleOffsets[0].xy + texcoord0.xy));
     r0.x = r0.x + tex2D(curLum, (sampleOffsets[1].xy + texcoord0.xy)).x;
     r0.x = r0.x + tex2D(curLum, (sampleOffsets[2].xy + texcoord0.xy)).x;

@@ -5,8 +5,8 @@ sampler2D rgbmTex : register(s0);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
     r0 = tex2D(rgbmTex, texcoord0.xy);
     r0.xyz = r0.w * r0.xyz;
     r0.xyz = (r0.xyz * rgbmRange) * exposureScale;

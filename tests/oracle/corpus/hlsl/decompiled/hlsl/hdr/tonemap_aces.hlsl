@@ -4,8 +4,8 @@ sampler2D s_hdr : register(s0);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0;
     r0 = tex2D(s_hdr, texcoord0.xy);
     r0.w = exp2(g_Exposure);
     r0.xyz = r0.w * r0.xyz;

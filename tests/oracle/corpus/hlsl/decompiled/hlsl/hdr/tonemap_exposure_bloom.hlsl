@@ -8,8 +8,8 @@ sampler2D AdaptedLum : register(s2);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0;
     r0 = tex2D(AdaptedLum, float2(0.5, 0.5));
     r0.y = r0.x - 0.0001;
     r0.x = 1.0 / r0.x;

@@ -6,8 +6,8 @@ sampler2D avgLum : register(s1);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
     r0.x = 1.0 / (whitePoint * whitePoint);
     r0.y = 1.0 / (tex2D(avgLum, float2(0.5, 0.5)).x + 0.001);
     r1 = tex2D(hdrScene, texcoord0.xy);

@@ -9,8 +9,8 @@ sampler2D hairShift : register(s1);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1, float4 texcoord2 : TEXCOORD2) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0;
     r0.x = tex2D(hairShift, texcoord0.xy).x - 0.5;
     r0.y = -2.0;
     r0.y = primaryShift * r0.y + r0.x;

@@ -6,8 +6,8 @@ samplerCUBE EnvMap : register(s2);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1, float4 texcoord2 : TEXCOORD2) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0;
     r1.xyz = normalize((texcoord1.xyz - EyePosition));
     r0.xyz = normalize(texcoord2.xyz);
     r0.w = dot(r1.xyz, r0.xyz);

@@ -5,8 +5,8 @@ samplerCUBE envCube : register(s0);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0, r5 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0, r5 = 0;
     r0.xyz = etaRGB * etaRGB;
     r2.xyz = normalize((texcoord0.xyz - camPos));
     r1.xyz = normalize(texcoord1.xyz);

@@ -7,8 +7,8 @@ sampler2D OcclusionTexture : register(s1);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
     r0.x = rsqrt(abs(dot(texcoord1.xyz, texcoord1.xyz)));
     r0.x = (r0.x * texcoord1.y) * 0.5 + 0.5;
     r0.yzw = SkyColor - GroundColor;

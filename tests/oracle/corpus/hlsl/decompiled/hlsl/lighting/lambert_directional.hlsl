@@ -6,8 +6,8 @@ sampler2D DiffuseMap : register(s0);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1, float4 color0 : COLOR0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
     r0.xyz = LightColor * saturate(dot(normalize(texcoord1.xyz), LightDir)) + AmbientColor;
     r1 = tex2D(DiffuseMap, texcoord0.xy) * color0;
     oC0.xyz = r0.xyz * r1.xyz;

@@ -6,8 +6,8 @@ float Shininess : register(c3);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
     r1.xyz = normalize(texcoord0.xyz);
     r0.x = dot(r1.xyz, normalize(texcoord1.xyz));
     r0.y = dot(r1.xyz, LightDirection.xyz);

@@ -4,8 +4,8 @@ sampler2D diffuseMap : register(s1);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1, float4 texcoord2 : TEXCOORD2) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
     r0.xyz = normalize(texcoord2.xyz);
     r1.xy = tex2D(bumpMap, texcoord0.xy).wy * 2.0 - 1.0;
     r1.w = max((dot(r1.xy, -r1.xy) + 1.0), 0.0);

@@ -7,8 +7,8 @@ sampler2D NormalSampler : register(s1);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1, float4 texcoord2 : TEXCOORD2, float4 texcoord3 : TEXCOORD3) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0;
     r2.xyz = tex2D(NormalSampler, texcoord0.xy).xyz * 2.0 - 1.0;
     r0.xyz = r2.x * normalize(texcoord1.xyz) + (normalize(texcoord2.xyz) * r2.y);
     r0.xyz = r2.z * normalize(texcoord3.xyz) + r0.xyz;

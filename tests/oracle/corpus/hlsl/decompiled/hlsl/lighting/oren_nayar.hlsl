@@ -6,8 +6,8 @@ float3 viewDir : register(c1);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0;
     r0.xyz = normalize(texcoord0.xyz);
     r0.w = dot(r0.xyz, viewDir);
     r1.x = ((abs(r0.w) * -0.0187293 + 0.074261) * abs(r0.w) - 0.2121144) * abs(r0.w) + 1.5707288;

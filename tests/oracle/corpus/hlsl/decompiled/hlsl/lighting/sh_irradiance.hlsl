@@ -9,8 +9,8 @@ float4 cC : register(c6);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 color0 : COLOR0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0;
     r0.w = 1.0;
     r0.xyz = normalize(texcoord0.xyz);
     r1.x = dot(cAr, r0);

@@ -4,8 +4,8 @@ sampler2D g_Albedo : register(s0);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1, float4 texcoord2 : TEXCOORD2) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0;
     r0.x = 1.0 / (g_Spots[7].y - g_Spots[7].x);
     r1.xyz = normalize((g_Spots[4].xyz - texcoord1.xyz));
     r0.y = dot(-r1.xyz, g_Spots[5].xyz) - g_Spots[7].x;

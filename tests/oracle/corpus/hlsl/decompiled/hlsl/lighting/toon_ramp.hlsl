@@ -7,8 +7,8 @@ sampler2D colorTex : register(s1);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1, float4 texcoord2 : TEXCOORD2) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0;
     r1.xyz = normalize((viewPos - texcoord1.xyz));
     r0.xyz = normalize(texcoord2.xyz);
     r0.w = saturate(dot(r0.xyz, r1.xyz));

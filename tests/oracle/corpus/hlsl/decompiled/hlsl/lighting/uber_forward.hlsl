@@ -17,8 +17,8 @@ sampler2D s_Emissive : register(s5);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1, float4 texcoord2 : TEXCOORD2, float4 texcoord3 : TEXCOORD3, float4 texcoord4 : TEXCOORD4, float4 texcoord5 : TEXCOORD5) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0, r5 = 0, r6 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0, r5 = 0, r6 = 0;
     r0.x = 1.0 / texcoord5.w;
     r0.yz = r0.x * texcoord5.xy;
     r1.yzw = float3(-1.0, -0.5, 0.5);

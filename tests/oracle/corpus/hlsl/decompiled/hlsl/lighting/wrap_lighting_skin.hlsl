@@ -6,8 +6,8 @@ sampler2D skinTex : register(s0);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
     r0.x = dot(normalize(texcoord1.xyz), L) + wrap;
     r1.xw = float2(1.0, 2.0);
     r0.y = 1.0 / (r1.x + wrap);

@@ -4,8 +4,8 @@ bool bb_ : register(b0);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
     r0 = bb.x * texcoord0.xyxy;
     if (bb_) {
         r1.x = bb.x;

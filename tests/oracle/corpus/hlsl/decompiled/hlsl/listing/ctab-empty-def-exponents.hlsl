@@ -2,8 +2,8 @@
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0;
     oC0 = texcoord0.xyxy * (1.0e-10) + float4(1.0e20, -0.5, 123456790.0, 3.1415927);
     return oC0;
 }

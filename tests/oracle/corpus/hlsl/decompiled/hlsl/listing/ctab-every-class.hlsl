@@ -15,8 +15,8 @@ sampler2D s1d : register(s3);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1_centroid, float4 color0 : COLOR0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0;
     r0.x = frac(texcoord0.x);
     r0.y = -r0.x >= 0.0 ? 0.0 : 1.0;
     r0.x = texcoord0.x - r0.x;

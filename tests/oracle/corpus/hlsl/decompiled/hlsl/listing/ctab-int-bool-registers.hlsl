@@ -4,8 +4,8 @@ bool b1_ : register(b5);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0;
     r0 = 0.0;
     for (int n0 = 0; n0 < ii.x; n0++) {
         r0 = r0 + texcoord0.x;

@@ -4,8 +4,8 @@ float4 abcdefghijklm : register(c1);
 
 float4 main() : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0;
     oC0 = abcdefghijkl + abcdefghijklm;
     return oC0;
 }

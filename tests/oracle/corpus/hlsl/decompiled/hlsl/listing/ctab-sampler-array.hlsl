@@ -5,8 +5,8 @@ sampler2D t : register(s9);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
     r0 = tex2D(s0, texcoord0.xy) + tex2D(s3, texcoord0.xy);
     oC0 = r0 + tex2D(t, texcoord0.xy);
     return oC0;

@@ -17,8 +17,8 @@ sampler2D g_plain : register(s1);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0;
     r0 = g_O[0].xy.xyxy + g_O[2];
     r0 = (r0 + g_O[6].x) + (g_Lights[1] * g_Lights[5].x + g_Lights[6].xyzx);
     r1.xyz = texcoord0.xyx * float3(1.0, 1.0, 0.0) + float3(0.0, 0.0, 1.0);

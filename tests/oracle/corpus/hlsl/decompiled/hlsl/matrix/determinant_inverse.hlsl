@@ -3,8 +3,8 @@ float3x3 M : register(c0);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0, r5 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0, r5 = 0;
     r0.xyz = M._m01_m11_m21;
     r1.xyz = r0.zxy * M._m12_m22_m02;
     r0.x = dot((r0.yzx * M._m22_m02_m12 - r1.xyz), M._m00_m10_m20);

@@ -4,8 +4,8 @@ float4 worldMatrix[3] : register(c0); // the table's type: float4x4
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
     r1.xyz = normalize(mul(texcoord1.xyz, normalMatrix));
     r0.xyz = mul(normalMatrix, texcoord1.xyz) * r1.xyz;
     r1.x = dot(texcoord0.xyz, worldMatrix[0].xyz);

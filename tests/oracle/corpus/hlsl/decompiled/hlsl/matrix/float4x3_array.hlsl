@@ -3,8 +3,8 @@ float4x3 Bones[20] : register(c0);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1, float4 texcoord2 : TEXCOORD2) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0, r5 = 0, r6 = 0, r7 = 0, r8 = 0, r9 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0, r5 = 0, r6 = 0, r7 = 0, r8 = 0, r9 = 0;
     r0 = frac(texcoord2);
     r1 = -r0 >= 0.0 ? 0.0 : 1.0;
     r0 = (texcoord2 - r0) + (texcoord2 >= 0.0 ? 0.0 : r1);

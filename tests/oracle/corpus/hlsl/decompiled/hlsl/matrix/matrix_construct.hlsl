@@ -4,8 +4,8 @@ sampler2D decal : register(s0);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1, float4 texcoord2 : TEXCOORD2, float4 texcoord3 : TEXCOORD3) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
     r0.xy = float2(0.15915494, 0.5);
     r0.x = angle * r0.x + r0.y;
     r0.x = frac(r0.x) * 6.2831855 - 3.1415927;

@@ -4,8 +4,8 @@ row_major float3x4 rm3x4 : register(c4);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
     r0.x = proj._m20;
     r0.y = proj._m21;
     r0.z = proj._m22;

@@ -4,8 +4,8 @@ float4x4 World : register(c0);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
     r0.y = dot(texcoord0, World._m01_m11_m21_m31);
     r1 = r0.y * ViewProj._m01_m11_m21_m31;
     r0.x = dot(texcoord0, World._m00_m10_m20_m30);

@@ -4,8 +4,8 @@ sampler2D projTex : register(s0);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
     r0 = mul(texcoord0, projectorViewProj);
     r1 = r0 * float4(0.5, -0.5, 1.0, 1.0) + (r0.w * float4(0.5, 0.5, 0.0, 0.0));
     oC0 = -r0.w >= 0.0 ? 0.0 : tex2Dproj(projTex, r1);

@@ -4,8 +4,8 @@ float3 translation : register(c1);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0;
     r0.xyz = rotationQ.w * texcoord0.yzx + (rotationQ.zxy * texcoord0.xyz - (rotationQ.xyz * texcoord0.zxy));
     r1.xyz = r0.xyz * rotationQ.zxy;
     r0.xyz = (rotationQ.yzx * r0.yzx - r1.xyz) * 2.0 + texcoord0.xyz;

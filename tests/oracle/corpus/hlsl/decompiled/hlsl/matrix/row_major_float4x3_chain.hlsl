@@ -5,8 +5,8 @@ float4 tint : register(c7);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
     r0.xyz = mul(texcoord0, Bone);
     r0.xyw = r0.x * Rotation[0] + (r0.y * Rotation[1]);
     r0.xyz = r0.z * Rotation[2] + r0.xyw;

@@ -5,8 +5,8 @@ float4x4 C : register(c8);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0;
     r0 = mul(C, texcoord0);
     r1 = mul(A, texcoord0);
     oC0 = mul(C, r0) + mul(B, r1);

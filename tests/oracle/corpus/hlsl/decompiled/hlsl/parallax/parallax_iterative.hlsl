@@ -5,8 +5,8 @@ sampler2D dMap : register(s1);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
     r0 = tex2D(hMap, texcoord0.xy);
     r0.x = (r0.w - 0.5) * heightScale;
     r0.x = r0.z * r0.x;

@@ -7,8 +7,8 @@ sampler2D heightMap : register(s2);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0;
     r0.xy = rsqrt(abs(dot(texcoord1.xyz, texcoord1.xyz))) * texcoord1.xy;
     r0.z = tex2D(heightMap, texcoord0.xy).x * scaleBias.x + scaleBias.y;
     r0.xy = r0.z * r0.xy + texcoord0.xy;

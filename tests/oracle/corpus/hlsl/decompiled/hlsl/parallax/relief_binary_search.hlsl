@@ -6,8 +6,8 @@ sampler2D texmap : register(s1);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0;
     r0.xyz = normalize(texcoord1.xyz);
     r0.xy = r0.xy * depth;
     r0.z = 1.0 / r0.z;

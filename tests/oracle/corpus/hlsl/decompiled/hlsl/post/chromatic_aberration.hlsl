@@ -8,8 +8,8 @@ sampler2D grain : register(s1);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float2 vpos : VPOS) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0;
     r0.xy = float2(0.37, 0.71) * frame;
     r0.xy = vpos * 0.015625 + frac(r0.xy);
     r0.x = tex2D(grain, r0.xy).x - 0.5;

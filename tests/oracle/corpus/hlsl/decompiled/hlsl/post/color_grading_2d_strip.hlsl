@@ -4,8 +4,8 @@ sampler2D lutStrip : register(s1);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0;
     r0 = saturate(tex2D(src, texcoord0.xy));
     r1.x = r0.z * 15.0;
     r1.y = frac(r1.x);

@@ -6,8 +6,8 @@ sampler3D gradingLUT : register(s1);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0;
     r0.x = lutSize - 1.0;
     r0.y = 1.0 / lutSize;
     r0.x = r0.y * r0.x;

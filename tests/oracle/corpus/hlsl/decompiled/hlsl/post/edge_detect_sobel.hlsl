@@ -6,8 +6,8 @@ sampler2D normalDepth : register(s0);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0, r5 = 0, r6 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0, r5 = 0, r6 = 0;
     r0 = tex2D(normalDepth, (texcoord0.xy - texel));
     r1.xyz = float3(0.0, -1.0, 1.0);
     r2 = texel.xyxy * r1.xyzy + texcoord0.xyxy;

@@ -4,8 +4,8 @@ sampler2D tex : register(s0);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0;
     r0.x = dot(tex2D(tex, (texcoord0.xy - rcpFrame)).xyz, float3(0.299, 0.587, 0.114));
     r1 = rcpFrame.xyxy * float4(1.0, -1.0, -1.0, 1.0) + texcoord0.xyxy;
     r2 = tex2D(tex, r1.xy);

@@ -4,8 +4,8 @@ sampler2D linearScene : register(s0);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float2 vpos : VPOS) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0;
     r0.xy = frac(abs((0.25 * vpos)));
     r0.xy = vpos >= 0.0 ? r0.xy : -r0.xy;
     r0.zw = r0.xy * 4.0;

@@ -6,8 +6,8 @@ sampler2D maskTex : register(s2);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
     r0.x = params.z * texcoord0.x;
     r0.y = texcoord0.y * params.z + params.y;
     r0.xy = tex2D(bumpTex, r0.xy).xy * 2.0 - 1.0;

@@ -6,8 +6,8 @@ sampler2D frameTex : register(s0);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0;
     r0.xy = float2(1.0, 0.0);
     r1 = px.xxxy * r0.xyyx + texcoord0.xyxy;
     r2 = tex2D(frameTex, r1.xy);

@@ -10,8 +10,8 @@ sampler2D noise : register(s2);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0, r5 = 0, r6 = 0, r7 = 0, r8 = 0, r9 = 0, r10 = 0, r11 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0, r5 = 0, r6 = 0, r7 = 0, r8 = 0, r9 = 0, r10 = 0, r11 = 0;
     r0 = tex2D(posVS, texcoord0.xy);
     r2.xyz = normalize(tex2D(nrmVS, texcoord0.xy).xyz);
     r1 = tex2D(noise, (noiseScale * texcoord0.xy));

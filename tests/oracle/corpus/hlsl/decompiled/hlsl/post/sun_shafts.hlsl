@@ -8,8 +8,8 @@ sampler2D occlusionMask : register(s0);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0;
     r0.xy = (texcoord0.xy - sunScreenPos) * density;
     r0.zw = r0.xy * -0.041666668 + texcoord0.xy;
     r1.xy = r0.xy * -0.041666668 + r0.zw;

@@ -6,8 +6,8 @@ sampler2D cascadeAtlas : register(s4);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0;
     r0.y = 0.5;
     r0.zw = texcoord1.x - cascadeSplits.yx;
     r0.z = r0.z >= 0.0 ? 2.0 : 1.0;

@@ -5,8 +5,8 @@ sampler2D shadowDepth : register(s0);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0, r5 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0, r5 = 0;
     r0.x = 1.0 / texcoord0.w;
     r0.yzw = r0.x * texcoord0.xyz;
     r1.x = (texcoord0.z * r0.x - nearPlane) * lightSizeUV;

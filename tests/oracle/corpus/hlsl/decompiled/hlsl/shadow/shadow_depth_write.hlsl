@@ -5,8 +5,8 @@ sampler2D alphaTex : register(s0);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0;
     r0 = tex2D(alphaTex, texcoord0.xy).w - alphaRef;
     clip(r0);
     r0.x = invFar * texcoord1.x;

@@ -5,8 +5,8 @@ sampler2D smap : register(s0);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0;
     r0.x = spread;
     r1.xy = (r0.x * jitter[0]) * texcoord0.w;
     r1.zw = 0.0;

@@ -5,8 +5,8 @@ sampler2D momentsMap : register(s0);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
     r0.x = 1.0 / texcoord0.w;
     r1 = tex2D(momentsMap, (r0.x * texcoord0.xy));
     r0.y = texcoord0.z * r0.x - r1.x;

@@ -7,8 +7,8 @@ sampler2D leafTex : register(s0);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1, float vface : VFACE) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
     r0 = tex2D(leafTex, texcoord0.xy);
     r1 = r0.w - cutoff;
     r0.xyz = r0.xyz * sunCol;

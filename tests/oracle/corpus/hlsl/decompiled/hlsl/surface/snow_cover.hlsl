@@ -7,8 +7,8 @@ sampler2D normTex : register(s2);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0;
     r0.xyz = tex2D(normTex, texcoord0.xy).xyz - 0.5;
     r0.x = dot(normalize((r0.xyz * 0.3 + texcoord1.xyz)), upWS);
     r0.y = 1.0 - snowAmount;

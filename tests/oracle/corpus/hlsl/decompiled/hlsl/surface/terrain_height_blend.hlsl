@@ -6,8 +6,8 @@ sampler2D maskTex : register(s2);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0;
     r0 = tex2D(maskTex, texcoord1.xy);
     r1 = tex2D(rockTex, texcoord0.xy);
     r0.y = (r1.w - r0.x) + 1.0;

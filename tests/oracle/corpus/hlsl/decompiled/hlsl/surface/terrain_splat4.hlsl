@@ -8,8 +8,8 @@ sampler2D Layer3 : register(s4);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0;
     r0 = LayerTiling.xxyy * texcoord0.xyxy;
     r1 = tex2D(Layer1, r0.zw);
     r0 = tex2D(Layer0, r0.xy);

@@ -5,8 +5,8 @@ sampler2D cliff : register(s0);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0;
     r0.xyz = normalize(texcoord1.xyz);
     r1.x = log2(abs(r0.x));
     r1.y = log2(abs(r0.y));

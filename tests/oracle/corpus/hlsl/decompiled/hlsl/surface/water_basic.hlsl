@@ -12,8 +12,8 @@ sampler2D RefractionRT : register(s2);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1, float4 texcoord2 : TEXCOORD2) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0, r5 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0, r5 = 0;
     r0.x = Time;
     r0.yzw = tex2D(WaveNormals, (WaveDir0 * r0.x + texcoord0.xy)).xzy * 2.0 - 1.0;
     r1.xy = texcoord0.xy * 1.7 + (r0.x * WaveDir1);

@@ -9,8 +9,8 @@ sampler2D foamTex : register(s1);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1, float4 texcoord2 : TEXCOORD2) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
     r0.x = 0.05 * time;
     r0 = tex2D(foamTex, (texcoord0.xy * 4.0 + r0.x));
     r0.y = 1.0 / foamEdge;

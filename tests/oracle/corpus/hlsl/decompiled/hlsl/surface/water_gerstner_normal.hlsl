@@ -6,8 +6,8 @@ samplerCUBE sky : register(s0);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0;
     r0.z = 0.0;
     r0.x = dot(waves[1].xy, waves[1].xy) + r0.z;
     r0.xy = rsqrt(abs(r0.x)) * waves[1].xy;

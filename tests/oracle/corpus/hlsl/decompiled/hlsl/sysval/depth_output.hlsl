@@ -3,9 +3,9 @@ float3 lightVS : register(c5);
 float4x4 proj : register(c0);
 float4 sphereVS : register(c4);
 
-void main(float4 texcoord0 : TEXCOORD0, out float4 oC0 : COLOR0, out float oDepth : DEPTH)
+void main(float4 texcoord0 : TEXCOORD0, out precise float4 oC0 : COLOR0, out precise float oDepth : DEPTH)
 {
-    float4 r0 = 0, r1 = 0, r2 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0;
     oC0 = 0;
     oDepth = 0;
     r0.x = sphereVS.w * -sphereVS.w + dot(sphereVS.xyz, sphereVS.xyz);

@@ -2,9 +2,9 @@
 float depthBias : register(c0);
 sampler2D decalTex : register(s0);
 
-void main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1, out float4 oC0 : COLOR0, out float oDepth : DEPTH)
+void main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1, out precise float4 oC0 : COLOR0, out precise float oDepth : DEPTH)
 {
-    float4 r0 = 0;
+    precise float4 r0 = 0;
     oC0 = 0;
     oDepth = 0;
     oC0 = tex2D(decalTex, texcoord0.xy);

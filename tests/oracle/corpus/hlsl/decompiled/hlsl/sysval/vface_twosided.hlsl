@@ -4,8 +4,8 @@ sampler2D backTex : register(s1);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float vface : VFACE) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
     oC0 = vface.xxxx >= 0.0 ? tex2D(frontTex, texcoord0.xy) : tex2D(backTex, texcoord0.xy);
     return oC0;
 }

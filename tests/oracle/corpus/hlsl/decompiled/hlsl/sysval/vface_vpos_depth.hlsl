@@ -3,9 +3,9 @@ float4 colBack : register(c1);
 float4 colFront : register(c0);
 sampler2D stipple : register(s0);
 
-void main(float4 texcoord0 : TEXCOORD0, float vface : VFACE, float2 vpos : VPOS, out float4 oC0 : COLOR0, out float oDepth : DEPTH)
+void main(float4 texcoord0 : TEXCOORD0, float vface : VFACE, float2 vpos : VPOS, out precise float4 oC0 : COLOR0, out precise float oDepth : DEPTH)
 {
-    float4 r0 = 0, r1 = 0;
+    precise float4 r0 = 0, r1 = 0;
     oC0 = 0;
     oDepth = 0;
     r0 = tex2D(stipple, (0.125 * vpos)).x - 0.5;

@@ -5,8 +5,8 @@ sampler2D scene : register(s0);
 
 float4 main(float2 vpos : VPOS) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
     r0.xy = (1.0 / cell) * vpos;
     r0.zw = frac(r0.xy);
     r0.xy = r0.xy - r0.zw;

@@ -5,8 +5,8 @@ sampler2D spriteTex : register(s0);
 
 float4 main(float4 texcoord0 : TEXCOORD0, float4 color0 : COLOR0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
     r0 = tex2D(spriteTex, texcoord0.xy) * color0;
     r1 = r0.w * tint.w - alphaCutoff;
     oC0 = (r0 * tint);

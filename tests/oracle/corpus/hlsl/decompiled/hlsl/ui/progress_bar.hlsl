@@ -7,8 +7,8 @@ float4 fullColor : register(c2);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
     r0 = emptyColor;
     r0 = fill * (fullColor - r0) + r0;
     r1.x = fill - texcoord0.x;

@@ -5,8 +5,8 @@ sampler2D buttonTex : register(s0);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r2 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0;
     r0 = tex2D(buttonTex, texcoord0.xy);
     r1.x = dot(r0.xyz, float3(0.3, 0.59, 0.11));
     oC0.w = r0.w;

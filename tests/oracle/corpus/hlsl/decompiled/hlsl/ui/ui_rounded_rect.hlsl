@@ -5,8 +5,8 @@ float4 rectSize : register(c0);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
     r0.xy = (abs(texcoord0.xy) - rectSize.xy) + rectSize.z;
     r1.xy = max(r0.xy, 0.0);
     r0.x = min(max(r0.x, r0.y), 0.0);

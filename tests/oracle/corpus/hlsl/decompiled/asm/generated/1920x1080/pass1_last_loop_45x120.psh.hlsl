@@ -6,8 +6,8 @@ sampler2D s0 : register(s0);
 
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r3 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r3 = 0;
     r0.xy = texcoord0.xy;
     r0.zw = c0.z;
     r1.w = c3.w;
