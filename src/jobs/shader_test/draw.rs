@@ -7,7 +7,7 @@
 //! list runs on the emulator.
 
 use super::parse::{self, Cursor};
-use super::runner::{Last, State, Stop};
+use super::state::{Element, Last, Mode, Op, State, Stop};
 use super::CompileJob;
 use crate::core::emu::vertex::{Attribute, Vertices};
 use crate::core::emu::{Constants, SamplerState};
@@ -119,13 +119,6 @@ pub(super) fn directive(
         );
         return Ok(());
     }
-    if c.word("probe") {
-        if !s.planning() {
-            let verdict = super::probe::probe(s, line, c)?;
-            s.probe(n, line, verdict);
-        }
-        return Ok(());
-    }
     if c.word("uniform") {
         return uniform(s, line, c);
     }
@@ -232,11 +225,11 @@ fn shader(s: &mut State<'_>, stage: &str, fallback: Option<&str>) -> Result<Opti
         flags: s.flags.clone(),
     };
     match &mut s.mode {
-        super::runner::Mode::Plan(jobs) => {
+        Mode::Plan(jobs) => {
             jobs.push(job);
             Ok(None)
         }
-        super::runner::Mode::Run(done) => match done.get(&job) {
+        Mode::Run(done) => match done.get(&job) {
             Some(Ok(bytes)) => Ok(Some(bytes.clone())),
             Some(Err(e)) => Err(Last::Failed(format!(
                 "the {} shader does not compile: {e}",
@@ -268,7 +261,7 @@ fn draw(s: &mut State<'_>, n: usize, topology: Option<Primitive>, count: u32) ->
     s.default_target();
     if topology.is_none() {
         // The quad replaces the input layout and vertex buffer 0.
-        s.layout = vec![super::runner::Element {
+        s.layout = vec![Element {
             slot: 0,
             format: "r32g32-float".into(),
             size: 8,
@@ -351,20 +344,6 @@ fn run_draw(s: &mut State<'_>, topology: Primitive, count: u32, vs: &[u8], ps: &
     let slots: Vec<u32> = s.rtvs.keys().copied().collect();
     s.pending.push(Op::Draw(Box::new(list), slots));
     Last::Ok
-}
-
-/// What the targets go through after the file made them: clears and draws
-/// in order. They run when a probe reads a target, each draw restricted to
-/// the probe's rectangle by the scissor test: Direct3D 9 computes a pixel
-/// from its own quad alone (helper pixels outside the rectangle still run
-/// for gradients), so the pixels probed are those of the whole draw, and a
-/// file's 640 × 480 draws cost what their probes read.
-#[derive(Clone, Debug)]
-pub(super) enum Op {
-    /// `clear rtv N`: the slot and its D3DCOLOR bytes.
-    Clear(u32, [u8; 4]),
-    /// A draw and the render-target slots it was drawn with, in the list's order.
-    Draw(Box<DrawList>, Vec<u32>),
 }
 
 /// Whether a draw replaces every pixel of every target, so that what came

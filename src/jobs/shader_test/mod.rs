@@ -30,6 +30,7 @@ pub mod parse;
 mod probe;
 mod resource;
 mod runner;
+mod state;
 
 use serde::Serialize;
 use std::collections::{BTreeMap, HashMap};

@@ -7,7 +7,7 @@
 //! `x × size` within the row.
 
 use super::parse::Cursor;
-use super::runner::{Last, State, Stop};
+use super::state::{Last, State, Stop};
 use super::Verdict;
 use crate::core::image::RenderTarget;
 

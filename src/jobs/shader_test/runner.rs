@@ -5,7 +5,8 @@
 //! which shaders its draws compile ([`plan`]), once to run it ([`run`]).
 
 use super::parse::{self, qualifier_args, Cursor, Kind, Section};
-use super::resource::{self, Texture};
+use super::resource;
+use super::state::{Element, Fixed, Last, Mode, Rtv, Source, State, Stop};
 use super::{CompileJob, FileReport, Probe, Settings, Verdict};
 use crate::core::emu::{Address, Filter, MipFilter, SamplerState};
 use crate::core::image::{RenderTarget, TargetFormat};
@@ -38,126 +39,6 @@ pub(super) fn run(
         s.report.malformed = !stop.refused;
     }
     s.report
-}
-
-pub(super) enum Mode<'a> {
-    Plan(Vec<CompileJob>),
-    Run(&'a HashMap<CompileJob, Result<Vec<u8>, String>>),
-}
-
-/// A shader section's source.
-#[derive(Clone, Debug)]
-pub(super) struct Source {
-    pub text: String,
-    /// `d3dbc-hex`: bytecode written as hexadecimal words.
-    pub hex: bool,
-    /// `dxbc-tpf-hex`/`dxbc-dxil-hex`: bytecode of shader model 4 and above.
-    pub foreign: bool,
-}
-
-/// A render target of the file (`[rtv N]` or the default one).
-pub(super) struct Rtv {
-    pub target: RenderTarget,
-}
-
-/// One `[input layout]` line.
-#[derive(Clone, Debug)]
-pub(super) struct Element {
-    pub slot: u32,
-    pub format: String,
-    pub size: u32,
-    pub name: String,
-    pub index: u32,
-}
-
-/// The fixed-function state test lines set.
-#[derive(Clone, Debug)]
-pub(super) struct Fixed {
-    pub alpha_func: u32,
-    pub alpha_ref: f32,
-    pub flat: bool,
-    pub clip_mask: u8,
-    pub clip_planes: [[f32; 4]; 8],
-    pub point_size: [f32; 3],
-    pub point_sprite: bool,
-    pub fog: bool,
-    pub viewports: bool,
-}
-
-/// How the last draw ended; probes after it inherit a failure.
-#[derive(Clone, Debug)]
-pub(super) enum Last {
-    Ok,
-    Failed(String),
-    Unsupported(String),
-}
-
-/// A line vkd3d's runner ends the whole run at (`fatal_error`): either
-/// something the Direct3D 9 runner refuses (UAVs, compute, viewports), or
-/// a line that is malformed (bad input).
-#[derive(Clone, Debug)]
-pub(super) struct Stop {
-    pub message: String,
-    /// The Direct3D 9 runner's own refusal rather than malformed input.
-    pub refused: bool,
-}
-
-impl Stop {
-    /// What vkd3d's Direct3D 9 runner refuses, by name.
-    pub fn refused(what: &str) -> Stop {
-        Stop {
-            message: format!("{what} (vkd3d's Direct3D 9 runner stops here)"),
-            refused: true,
-        }
-    }
-
-    /// The message with its line in front (once: the innermost line).
-    fn at(self, line: usize) -> Stop {
-        if self.message.starts_with("line ") {
-            return self;
-        }
-        Stop {
-            message: format!("line {line}: {}", self.message),
-            ..self
-        }
-    }
-}
-
-impl From<String> for Stop {
-    fn from(message: String) -> Stop {
-        Stop {
-            message,
-            refused: false,
-        }
-    }
-}
-
-impl From<&str> for Stop {
-    fn from(message: &str) -> Stop {
-        message.to_string().into()
-    }
-}
-
-pub(super) struct State<'a> {
-    pub mode: Mode<'a>,
-    pub settings: Option<&'a Settings>,
-    pub min_sm: usize,
-    max_sm: usize,
-    skip: bool,
-    pub flags: Vec<&'static str>,
-    pub shaders: BTreeMap<String, Source>,
-    fail_mask: u32,
-    pub uniforms: Vec<u32>,
-    pub rtvs: BTreeMap<u32, Rtv>,
-    pub srvs: BTreeMap<u32, Result<Texture, String>>,
-    pub vbs: BTreeMap<u32, Vec<u8>>,
-    pub samplers: BTreeMap<u32, SamplerState>,
-    pub layout: Vec<Element>,
-    pub fixed: Fixed,
-    pub last: Last,
-    /// Clears and draws not yet applied to `rtvs` ([`super::draw::replay`]).
-    pub pending: Vec<super::draw::Op>,
-    pub report: FileReport,
 }
 
 impl<'a> State<'a> {
@@ -461,6 +342,13 @@ impl<'a> State<'a> {
             if before == c.rest {
                 break;
             }
+        }
+        if c.word("probe") {
+            if !self.planning() {
+                let verdict = super::probe::probe(self, line, c)?;
+                self.probe(n, line, verdict);
+            }
+            return Ok(());
         }
         super::draw::directive(self, n, line, c)
     }
