@@ -516,9 +516,6 @@ fn build(
             .filter(|i| s.fixed.clip_mask & (1 << i) != 0)
             .map(|i| s.fixed.clip_planes[i].map(f64::from))
             .collect(),
-        point_size: f64::from(
-            s.fixed.point_size[0].clamp(s.fixed.point_size[1], s.fixed.point_size[2]),
-        ),
         depth: None,
         state: RasterState {
             points: PointState {

@@ -74,8 +74,6 @@ pub struct Geometry {
     /// Enabled user clip planes (a, b, c, d) in clip space; a point is
     /// kept where a·x + b·y + c·z + d·w ≥ 0.
     pub clip_planes: Vec<[f64; 4]>,
-    /// D3DRS_POINTSIZE, in pixels (1 by default).
-    pub point_size: f64,
     /// The depth test; `None`: D3DRS_ZENABLE off.
     pub depth: Option<DepthState>,
     /// Lines, point sizes and sprites, the fill mode and the stencil test
@@ -270,7 +268,6 @@ pub(crate) fn read(
         scissor,
         cull,
         clip_planes,
-        point_size,
         depth,
         state,
     };
