@@ -99,16 +99,6 @@ impl GpuOutput {
     }
 }
 
-/// The full-screen triangle: vertices (−1, −1), (3, −1), (−1, 3),
-/// counter-clockwise in WebGPU's normalised coordinates; the pipeline's
-/// `front_face` makes it front- or back-facing as [`Draw::face`] asks.
-const VERTEX_WGSL: &str =
-    "@vertex fn vs(@builtin(vertex_index) i: u32) -> @builtin(position) vec4<f32> {
-    let x = f32(i32(i & 1u) * 4 - 1);
-    let y = f32(i32(i >> 1u) * 4 - 1);
-    return vec4<f32>(x, y, 0.0, 1.0);
-}";
-
 const ROW_ALIGN: u32 = wgpu::COPY_BYTES_PER_ROW_ALIGNMENT;
 
 /// Runs `draw` of `shader` on the device; `targets` chooses the colour
@@ -471,8 +461,7 @@ fn render_pipeline(
     fragment: naga::Module,
     state: &PipelineState,
 ) -> Result<wgpu::RenderPipeline, GpuError> {
-    let vertex = naga::front::wgsl::parse_str(VERTEX_WGSL)
-        .map_err(|e| GpuError::Failed(format!("vertex shader: {e}")))?;
+    let vertex = crate::core::translate::fixed::full_screen_triangle();
     let vs = device.create_shader_module(wgpu::ShaderModuleDescriptor {
         label: Some("ps30 full-screen triangle"),
         source: wgpu::ShaderSource::Naga(Cow::Owned(vertex)),

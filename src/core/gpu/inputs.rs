@@ -58,26 +58,9 @@ pub(crate) struct Fill {
     layout: wgpu::BindGroupLayout,
 }
 
-const FILL_WGSL: &str = "
-struct Size { w: u32, h: u32, layers: u32, unused: u32 }
-@group(0) @binding(0) var<uniform> size: Size;
-@group(0) @binding(1) var<storage, read> columns: array<vec4<f32>>;
-@group(0) @binding(2) var<storage, read> rows: array<vec4<f32>>;
-@group(0) @binding(3) var inputs: texture_storage_2d_array<rgba32float, write>;
-
-@compute @workgroup_size(16, 16, 1)
-fn fill(@builtin(global_invocation_id) id: vec3<u32>) {
-    if (id.x >= size.w || id.y >= size.h) {
-        return;
-    }
-    let v = columns[id.z * size.w + id.x] + rows[id.z * size.h + id.y];
-    textureStore(inputs, vec2<u32>(id.x, id.y), id.z, v);
-}";
-
 impl Fill {
     fn new(device: &wgpu::Device) -> Result<Fill, GpuError> {
-        let fill = naga::front::wgsl::parse_str(FILL_WGSL)
-            .map_err(|e| GpuError::Failed(format!("the inputs' shader: {e}")))?;
+        let fill = crate::core::translate::fixed::inputs_fill();
         let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
             label: Some("ps30 inputs"),
             source: wgpu::ShaderSource::Naga(std::borrow::Cow::Owned(fill)),

@@ -41,6 +41,7 @@
 
 mod builder;
 mod cube;
+pub mod fixed;
 mod flow;
 pub mod header;
 pub mod interface;
