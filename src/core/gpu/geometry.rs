@@ -50,7 +50,6 @@ use crate::core::phases;
 use crate::core::raster::{Cull, Face, Rect, Viewport};
 use crate::core::translate::{self, interface, Entry};
 use std::borrow::Cow;
-use std::fmt::Write as _;
 
 /// A draw of geometry as the device takes it: vertices after the vertex
 /// stage and primitives after assembly.
@@ -191,89 +190,26 @@ fn pitch(w: u32, format: &wgpu::TextureFormat) -> u32 {
     (w * texel).div_ceil(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT) * wgpu::COPY_BYTES_PER_ROW_ALIGNMENT
 }
 
-/// A float as a WGSL expression holding exactly its bits.
-fn lit(x: f32) -> String {
-    format!("bitcast<f32>({}u)", x.to_bits())
-}
-
-/// The vertex stage's WGSL: the position placed as the module docs say,
-/// the user planes' distances, and each value at its locations.
-fn vertex_wgsl(g: &GeometryDraw, iface: &translate::Interface) -> String {
+/// The vertex stage: the position placed as the module docs say, the user
+/// planes' distances, and each value at its locations.
+fn vertex_stage(g: &GeometryDraw, iface: &translate::Interface) -> naga::Module {
     let locations = interface::geometry_locations(&iface.inputs, g.flat);
-    let mut s = String::new();
-    if !g.clip_planes.is_empty() {
-        s.push_str("enable clip_distances;\n");
-    }
-    s.push_str("struct Out {\n  @builtin(position) position: vec4<f32>,\n");
-    for (slot, smooth, flat) in &locations {
-        if let Some(l) = smooth {
-            let _ = writeln!(
-                s,
-                "  @location({l}) @interpolate(perspective, center) v{slot}: vec4<f32>,"
-            );
-        }
-        if let Some(l) = flat {
-            let _ = writeln!(
-                s,
-                "  @location({l}) @interpolate(flat) v{slot}_flat: vec4<f32>,"
-            );
-        }
-    }
-    if !g.clip_planes.is_empty() {
-        let _ = writeln!(
-            s,
-            "  @builtin(clip_distances) clip: array<f32, {}>,",
-            g.clip_planes.len()
-        );
-    }
-    s.push_str("}\n@vertex fn vs(@location(0) p: vec4<f32>");
-    for k in 0..g.slots.len() {
-        let _ = write!(s, ", @location({}) a{k}: vec4<f32>", k + 1);
-    }
-    s.push_str(") -> Out {\n  var o: Out;\n");
-    let (fx, fy) = if g.transformed {
-        let (tw, th) = (g.pixel.target_width as f32, g.pixel.target_height as f32);
-        let _ = writeln!(
-            s,
-            "  let w = 1.0 / p.w;\n  let c = vec4<f32>((p.x * {} - 1.0) * w, (1.0 - p.y * {}) * w, p.z * w, w);",
-            lit(2.0 / tw),
-            lit(2.0 / th)
-        );
-        (1.0 / tw, 1.0 / th)
-    } else {
-        s.push_str("  let c = p;\n");
-        (
-            1.0 / g.viewport.width as f32,
-            1.0 / g.viewport.height as f32,
-        )
-    };
-    let _ = writeln!(
-        s,
-        "  o.position = vec4<f32>(c.x + c.w * {}, c.y - c.w * {}, c.z, c.w);",
-        lit(fx),
-        lit(fy)
-    );
-    for (i, plane) in g.clip_planes.iter().enumerate() {
-        let [a, b, c, d] = plane.map(lit);
-        let _ = writeln!(s, "  o.clip[{i}] = dot(vec4<f32>({a}, {b}, {c}, {d}), c);");
-    }
-    for (slot, smooth, flat) in &locations {
-        let value = match g.slots.iter().position(|s| s == slot) {
-            Some(k) => format!("a{k}"),
-            None => "vec4<f32>(0.0)".into(),
-        };
-        if smooth.is_some() {
-            let _ = writeln!(s, "  o.v{slot} = {value};");
-        }
-        if flat.is_some() {
-            let _ = writeln!(s, "  o.v{slot}_flat = {value};");
-        }
-    }
-    s.push_str("  return o;\n}\n");
-    s
+    let (tw, th) = (g.pixel.target_width as f32, g.pixel.target_height as f32);
+    let (vw, vh) = (g.viewport.width as f32, g.viewport.height as f32);
+    translate::fixed::geometry_vertex(&translate::fixed::GeometryStage {
+        locations: &locations,
+        slots: &g.slots,
+        screen: g.transformed.then_some((2.0 / tw, 2.0 / th)),
+        offset: if g.transformed {
+            (1.0 / tw, 1.0 / th)
+        } else {
+            (1.0 / vw, 1.0 / vh)
+        },
+        clip_planes: &g.clip_planes,
+    })
 }
 
-/// The render pipeline: the vertex stage of [`vertex_wgsl`] and the
+/// The render pipeline: the vertex stage of [`vertex_stage`] and the
 /// translated pixel shader.
 fn pipeline(
     gpu: &Gpu,
@@ -284,9 +220,7 @@ fn pipeline(
     formats: &[Option<wgpu::TextureFormat>],
 ) -> Result<wgpu::RenderPipeline, GpuError> {
     let device = &gpu.device;
-    let source = vertex_wgsl(g, iface);
-    let vertex = naga::front::wgsl::parse_str(&source)
-        .map_err(|e| GpuError::Failed(format!("vertex stage: {}", e.emit_to_string(&source))))?;
+    let vertex = vertex_stage(g, iface);
     let vs = device.create_shader_module(wgpu::ShaderModuleDescriptor {
         label: Some("ps30 geometry vertex stage"),
         source: wgpu::ShaderSource::Naga(Cow::Owned(vertex)),

@@ -197,6 +197,199 @@ pub fn inputs_fill() -> Module {
     m
 }
 
+/// What the vertex stage of a draw of geometry is made of (the caller
+/// derives each part: `core/gpu/geometry.rs`).
+pub struct GeometryStage<'a> {
+    /// Each pixel-shader input: its register and its smooth and flat
+    /// locations ([`super::interface::geometry_locations`]).
+    pub locations: &'a [(u32, Option<u32>, Option<u32>)],
+    /// The register each vertex attribute after the position carries
+    /// (attribute k + 1 holds `slots[k]`).
+    pub slots: &'a [u32],
+    /// For pre-transformed positions, 2/W and 2/H of the target: the
+    /// position is screen x, y, z and 1/w, turned back into clip space.
+    pub screen: Option<(f32, f32)>,
+    /// The half-pixel move, in clip units per w: x += w·dx, y −= w·dy.
+    pub offset: (f32, f32),
+    /// The user clip planes, each dotted with the clip-space position.
+    pub clip_planes: &'a [[f32; 4]],
+}
+
+/// The vertex stage of a draw of geometry. For a 128×64 target of
+/// pre-transformed positions, one smooth input `v0` from attribute 1, one
+/// flat input `v1` nobody writes and one clip plane, it is:
+///
+/// ```wgsl
+/// enable clip_distances;
+/// struct Out {
+///     @builtin(position) position: vec4<f32>,
+///     @location(0) @interpolate(perspective, center) v0: vec4<f32>,
+///     @location(1) @interpolate(flat) v1_flat: vec4<f32>,
+///     @builtin(clip_distances) clip: array<f32, 1>,
+/// }
+/// @vertex fn vs(@location(0) p: vec4<f32>, @location(1) a0: vec4<f32>) -> Out {
+///     var o: Out;
+///     let w = 1.0 / p.w;
+///     let c = vec4<f32>((p.x * 0.015625 - 1.0) * w, (1.0 - p.y * 0.03125) * w, p.z * w, w);
+///     o.position = vec4<f32>(c.x + c.w * 0.0078125, c.y - c.w * 0.015625, c.z, c.w);
+///     o.clip[0] = dot(vec4<f32>(1.0, 0.0, 0.0, 0.5), c);
+///     o.v0 = a0;
+///     o.v1_flat = vec4<f32>(0.0);
+///     return o;
+/// }
+/// ```
+pub fn geometry_vertex(stage: &GeometryStage) -> Module {
+    let mut m = Module::default();
+    let f32_ty = ty(&mut m, None, TypeInner::Scalar(Scalar::F32));
+    let vec4 = vec(&mut m, VectorSize::Quad, Scalar::F32);
+    let mut members = vec![StructMember {
+        name: Some("position".into()),
+        ty: vec4,
+        binding: Some(Binding::BuiltIn(BuiltIn::Position { invariant: false })),
+        offset: 0,
+    }];
+    // The members' indices, as (register, smooth, flat).
+    let mut outputs = Vec::new();
+    for &(register, smooth, flat) in stage.locations {
+        let mut member = |name: String, location: u32, interpolate: bool| {
+            members.push(StructMember {
+                name: Some(name),
+                ty: vec4,
+                binding: Some(super::module::location(location, false, interpolate)),
+                offset: 16 * members.len() as u32,
+            });
+            members.len() as u32 - 1
+        };
+        let smooth = smooth.map(|l| member(format!("v{register}"), l, true));
+        let flat = flat.map(|l| member(format!("v{register}_flat"), l, false));
+        outputs.push((register, smooth, flat));
+    }
+    let planes = stage.clip_planes.len() as u32;
+    let clip = (planes > 0).then(|| {
+        let array = super::module::array(&mut m, f32_ty, planes, 4);
+        members.push(StructMember {
+            name: Some("clip".into()),
+            ty: array,
+            binding: Some(Binding::BuiltIn(BuiltIn::ClipDistances)),
+            offset: 16 * members.len() as u32,
+        });
+        members.len() as u32 - 1
+    });
+    let span = members.last().map_or(0, |last| match clip {
+        Some(_) => last.offset + 4 * planes,
+        None => last.offset + 16,
+    });
+    let out_ty = ty(&mut m, Some("Out"), TypeInner::Struct { members, span });
+
+    let mut fb = Fb::new("vs");
+    let attribute = |name: String, location: u32| naga::FunctionArgument {
+        name: Some(name),
+        ty: vec4,
+        binding: Some(Binding::Location {
+            location,
+            interpolation: None,
+            sampling: None,
+            blend_src: None,
+            per_primitive: false,
+        }),
+    };
+    fb.f.arguments.push(attribute("p".into(), 0));
+    for k in 0..stage.slots.len() as u32 {
+        fb.f.arguments.push(attribute(format!("a{k}"), k + 1));
+    }
+    let o = fb.local("o", out_ty);
+    let p = fb.add(Expression::FunctionArgument(0));
+    let c = match stage.screen {
+        Some(scale) => clip_space(&mut fb, vec4, p, scale),
+        None => p,
+    };
+    let (cx, cy, cz, cw) = (
+        fb.index(c, 0),
+        fb.index(c, 1),
+        fb.index(c, 2),
+        fb.index(c, 3),
+    );
+    let moved = |fb: &mut Fb, op, along, by: f32| {
+        let by = fb.f32(by);
+        let step = fb.binary(BinaryOperator::Multiply, cw, by);
+        fb.binary(op, along, step)
+    };
+    let x = moved(&mut fb, BinaryOperator::Add, cx, stage.offset.0);
+    let y = moved(&mut fb, BinaryOperator::Subtract, cy, stage.offset.1);
+    let position = fb.add(Expression::Compose {
+        ty: vec4,
+        components: vec![x, y, cz, cw],
+    });
+    let field = fb.index(o, 0);
+    fb.store(field, position);
+    if let Some(member) = clip {
+        for (i, plane) in stage.clip_planes.iter().enumerate() {
+            let components = plane.iter().map(|&v| fb.f32(v)).collect();
+            let plane = fb.add(Expression::Compose {
+                ty: vec4,
+                components,
+            });
+            let distance = fb.math(naga::MathFunction::Dot, &[plane, c]);
+            let array = fb.index(o, member);
+            let element = fb.index(array, i as u32);
+            fb.store(element, distance);
+        }
+    }
+    for &(register, smooth, flat) in &outputs {
+        for member in [smooth, flat].into_iter().flatten() {
+            let value = match stage.slots.iter().position(|&s| s == register) {
+                Some(k) => fb.add(Expression::FunctionArgument(k as u32 + 1)),
+                None => {
+                    let zero = fb.f32(0.0);
+                    fb.splat(zero, VectorSize::Quad)
+                }
+            };
+            let field = fb.index(o, member);
+            fb.store(field, value);
+        }
+    }
+    let value = fb.load(o);
+    fb.push(Statement::Return { value: Some(value) });
+    fb.f.result = Some(naga::FunctionResult {
+        ty: out_ty,
+        binding: None,
+    });
+    entry(&mut m, fb, ShaderStage::Vertex, [0; 3]);
+    m
+}
+
+/// A pre-transformed position (screen x, y, z and 1/w) back in clip space
+/// against a viewport of the whole target with depth 0 to 1:
+/// `w = 1/p.w`, `((p.x·sx − 1)·w, (1 − p.y·sy)·w, p.z·w, w)`.
+fn clip_space(fb: &mut Fb, vec4: naga::Handle<naga::Type>, p: Expr, (sx, sy): (f32, f32)) -> Expr {
+    let (px, py, pz, pw) = (
+        fb.index(p, 0),
+        fb.index(p, 1),
+        fb.index(p, 2),
+        fb.index(p, 3),
+    );
+    let one = fb.f32(1.0);
+    let w = fb.binary(BinaryOperator::Divide, one, pw);
+    fb.f.named_expressions.insert(w, "w".into());
+    let sx = fb.f32(sx);
+    let x = fb.binary(BinaryOperator::Multiply, px, sx);
+    let one = fb.f32(1.0);
+    let x = fb.binary(BinaryOperator::Subtract, x, one);
+    let x = fb.binary(BinaryOperator::Multiply, x, w);
+    let one = fb.f32(1.0);
+    let sy = fb.f32(sy);
+    let y = fb.binary(BinaryOperator::Multiply, py, sy);
+    let y = fb.binary(BinaryOperator::Subtract, one, y);
+    let y = fb.binary(BinaryOperator::Multiply, y, w);
+    let z = fb.binary(BinaryOperator::Multiply, pz, w);
+    let c = fb.add(Expression::Compose {
+        ty: vec4,
+        components: vec![x, y, z, w],
+    });
+    fb.f.named_expressions.insert(c, "c".into());
+    c
+}
+
 fn vec(m: &mut Module, size: VectorSize, scalar: Scalar) -> naga::Handle<naga::Type> {
     ty(m, None, TypeInner::Vector { size, scalar })
 }
@@ -286,8 +479,16 @@ mod tests {
     #[test]
     fn each_module_is_the_wgsl_its_comment_gives() {
         let wgsl = documented_wgsl();
-        assert_eq!(wgsl.len(), 2, "{wgsl:?}");
-        for (built, text) in [full_screen_triangle(), inputs_fill()].iter().zip(&wgsl) {
+        assert_eq!(wgsl.len(), 3, "{wgsl:?}");
+        let geometry = geometry_vertex(&GeometryStage {
+            locations: &[(0, Some(0), None), (1, None, Some(1))],
+            slots: &[0],
+            screen: Some((2.0 / 128.0, 2.0 / 64.0)),
+            offset: (1.0 / 128.0, 1.0 / 64.0),
+            clip_planes: &[[1.0, 0.0, 0.0, 0.5]],
+        });
+        let built = [full_screen_triangle(), inputs_fill(), geometry];
+        for (built, text) in built.iter().zip(&wgsl) {
             let parsed = naga::front::wgsl::parse_str(text).expect("the comment's WGSL parses");
             assert_eq!(written(built), written(&parsed), "{text}");
         }

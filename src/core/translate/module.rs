@@ -437,7 +437,7 @@ fn output(location: u32) -> Binding {
     }
 }
 
-fn location(location: u32, centroid: bool, interpolate: bool) -> Binding {
+pub(super) fn location(location: u32, centroid: bool, interpolate: bool) -> Binding {
     Binding::Location {
         location,
         interpolation: Some(if interpolate {
