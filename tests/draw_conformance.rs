@@ -236,6 +236,54 @@ fn clipping_against_near_far_and_user_planes() {
 }
 
 #[test]
+fn a_dense_grid_covers_every_pixel_once_with_borders_clipped_by_the_guard_band() {
+    // grid.json: vertex (i, j) is on screen at (4i − 7.5, 4j − 7.5), so
+    // cell (i, j) spans x ∈ (4i − 7.5, 4i − 3.5), y likewise; its triangles
+    // are A B C (upper left, colour (i, j, 0, 1)) and B D C (lower right,
+    // (i, j, 1, 1)), flat. Every screen coordinate is a small dyadic
+    // number (clip position = NDC × w with w ∈ {1, 1.5, 3, 0.75}, exact).
+    // No pixel centre lies on a cell's sides (they are at odd halves); the
+    // diagonal B→C is u + v = 4 (u, v the centre's offsets in the cell),
+    // through integer centres: it runs up in B D C (a left edge, kept)
+    // and down in A B C (dropped), so u + v ≥ 4 is the lower-right
+    // triangle's. The cells across the left and top borders (and the right
+    // and bottom ones) are drawn whole and scissored: every one of the
+    // 32×32 pixels is covered exactly once.
+    let t = draw("grid.json");
+    check(&t, "grid", |x, y| {
+        let (sx, sy) = (f64::from(x) + 7.5, f64::from(y) + 7.5);
+        let (i, j) = ((sx / 4.0).floor(), (sy / 4.0).floor());
+        let (u, v) = (sx - 4.0 * i, sy - 4.0 * j);
+        let lower = if u + v >= 4.0 { 1.0 } else { 0.0 };
+        [i as f32, j as f32, lower, 1.0]
+    });
+}
+
+#[test]
+fn inputs_nothing_writes_read_direct3d_9s_defaults() {
+    // Wine's test_uninitialized_varyings and vkd3d's uninitialized-varyings
+    // (both recorded on Windows): behind a vs_2_0 that writes only oPos,
+    // ps_2_0's colour v0 reads (1, 1, 1, 1) and t0 reads 0 (xyz; w is 0
+    // or 1 by vendor, 0 here); writing only oD0.x = oT0.x = 0.5 gives
+    // (0.5, 1, 1, 1) and (0.5, 0, 0, 0). ps_3_0's colour behind a vs_3_0
+    // without one reads 0 (drivers disagree). Without a vertex shader a
+    // vertex without color0 is white, and its texcoord0 0.
+    let t = draw("unwritten.json");
+    let cases: [(&str, Rgba); 7] = [
+        ("color_none", [1.0; 4]),
+        ("texcoord_none", [0.0; 4]),
+        ("color_x", [0.5, 1.0, 1.0, 1.0]),
+        ("texcoord_x", [0.5, 0.0, 0.0, 0.0]),
+        ("ps3_color_none", [0.0; 4]),
+        ("fixed_color", [1.0; 4]),
+        ("fixed_texcoord", [0.0; 4]),
+    ];
+    for (name, want) in cases {
+        check(&t, name, |_, _| want);
+    }
+}
+
+#[test]
 fn vertex_shaders_feed_the_pixel_shader_by_semantic() {
     // vs_3_0 halves x and y (c0 = (0.5, 0.5, 1, 1)): the quad covers screen
     // 2–6 on 8×8, pixels 2–5 in each direction; pixel i sees scaled clip
@@ -420,8 +468,8 @@ fn overlapping_triangles_of_one_draw_blend_in_draw_order() {
 #[test]
 fn a_pixel_failing_the_alpha_test_writes_no_depth() {
     // Draw 1 (z 0.25, ALPHAFUNC GREATEREQUAL, ALPHAREF 128): red with
-    // alpha 0 (code 0 < 128: discarded) over columns 0–1, alpha 1 (code
-    // 255: kept) over columns 2–3. Draw 2 (z 0.5, LESSEQUAL, no alpha
+    // alpha 0 (0 < 128/255 on this float target: discarded) over columns
+    // 0–1, alpha 1 (kept) over columns 2–3. Draw 2 (z 0.5, LESSEQUAL, no alpha
     // test): green everywhere. Where the alpha test discarded, the depth
     // is still the clear's 1 and 0.5 passes; where red was drawn, 0.25 is
     // stored and 0.5 fails.
@@ -447,7 +495,7 @@ fn two_targets_take_oc0_and_oc1_and_share_the_alpha_test() {
         }
     });
     // The alpha test reads oC0's alpha and discards the pixel in every
-    // target: two quads, oC0 red with alpha 0 (code 0 < ALPHAREF 128:
+    // target: two quads, oC0 red with alpha 0 (0 < ALPHAREF 128/255:
     // discarded) over columns 0–1 and alpha 1 (kept) over columns 2–3,
     // oC1 blue throughout. Only columns 2–3 are written, in both targets.
     check(&t, "a0", |x, _| if x < 2 { CLEAR } else { RED });

@@ -14,8 +14,9 @@ use crate::d3d9_conformance::render_file;
 /// are constants, flat or pre-transformed positions where nothing is
 /// interpolated across a varying w with a rounding (fill rule, facing,
 /// vPos, the fan's flat colours, blending, depth written from constant z,
-/// two targets, points).
-const BIT_IDENTICAL: [&str; 10] = [
+/// two targets, points, the dense grid's flat colours with its borders
+/// scissored, unwritten inputs' defaults).
+const BIT_IDENTICAL: [&str; 12] = [
     "alpha_depth.json",
     "blend.json",
     "depth.json",
@@ -23,8 +24,10 @@ const BIT_IDENTICAL: [&str; 10] = [
     "face_cull.json",
     "fan_scissor.json",
     "fill_rule.json",
+    "grid.json",
     "mrt.json",
     "points.json",
+    "unwritten.json",
     "vpos.json",
 ];
 

@@ -143,20 +143,24 @@ fn vertex_probes_on_the_gpu_agree_with_the_emulator_or_are_explained() {
 }
 
 #[test]
-fn mova_rounds_halves_away_from_zero_on_the_gpu() {
+fn mova_rounds_halves_to_even_on_the_gpu() {
     // c[a0.x] with c_k = (k, 0, 0, 0): oPos.x is the register a0.x picked,
-    // and 0 where it lies outside c0–c255. Rounded to nearest, halves away
-    // from zero (docs/vertex-shaders.md): 0.5 → 1, 3.5 → 4, 2.49999 → 2,
-    // −0.5 → −1 (outside: 0). llvmpipe once gave 3 for 3.5, the emulator 4.
-    let Some(g) = gpu("mova_rounds_halves_away_from_zero_on_the_gpu") else {
+    // and 0 where it lies outside c0–c255. Rounded to nearest, halves to
+    // even (docs/vertex-shaders.md, Windows' results in vkd3d's
+    // non-const-indexing test): 0.5 → 0, 1.5 → 2, 2.5 → 2, 3.5 → 4,
+    // 4.5 → 4, 7.5 → 8, 2.49999 → 2, 3.51 → 4, −0.5 → 0 (−0),
+    // 0.49999997 → 0, 5.5 → 6, 6.5 → 6.
+    let Some(g) = gpu("mova_rounds_halves_to_even_on_the_gpu") else {
         return;
     };
     let src = "vs_2_0\ndcl_position v0\nmova a0.x, v0.x\nmov oPos, c[a0.x]\n";
     let l = load::load_str("mova.vsh", src, &Options::default()).unwrap();
     let xs = [
-        0.5f32, 1.5, 2.5, 3.5, 4.5, 7.5, 2.49999, 3.51, -0.5, 0.49999997,
+        0.5f32, 1.5, 2.5, 3.5, 4.5, 7.5, 2.49999, 3.51, -0.5, 0.49999997, 5.5, 6.5,
     ];
-    let want = [1.0f32, 2.0, 3.0, 4.0, 5.0, 8.0, 2.0, 4.0, 0.0, 0.0];
+    let want = [
+        0.0f32, 2.0, 2.0, 4.0, 4.0, 8.0, 2.0, 4.0, 0.0, 0.0, 6.0, 6.0,
+    ];
     let list = Vertices {
         count: xs.len(),
         attributes: vec![(

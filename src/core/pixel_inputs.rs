@@ -16,6 +16,22 @@
 //! they enter the shader (NaN reads 0, as `_sat` gives), in both backends;
 //! [`clamped`] names those slots. ps_3_0's `v#` are general interpolators
 //! and are not clamped.
+//!
+//! An input component nothing upstream writes — the vertex shader writes
+//! no such output, or not that component of it — reads what Direct3D 9
+//! gives it ([`unwritten`]): (1, 1, 1, 1) in ps_2_0/ps_2_x's colour `v0`,
+//! 0 everywhere else. Wine's `test_uninitialized_varyings`
+//! (dlls/d3d9/tests/visual.c, run on Windows drivers) finds a vs_2_0 that
+//! writes only `oPos` giving ps_2_0's `v0` white (0xffffffff) and one that
+//! writes only `oD0.x` giving (x, 1, 1, 1); colour 1 and the texture
+//! coordinates read 0 in r, g, b (x, y, z) with w 0 on some drivers and 1
+//! on others (AMD's and NVIDIA's differ); ps_3_0's colours read no
+//! consistent value. vkd3d's `uninitialized-varyings.shader_test`
+//! (recorded on Windows) has the same: ps_2_0 `color0` (1, 1, 1, 1),
+//! `texcoord0.xyz`, `texcoord3.xy`, `texcoord1.yz` 0. ps30 reads 0 where
+//! drivers disagree. Without a vertex shader, a vertex without a diffuse
+//! colour is white (the fixed-function pipeline's default diffuse), in
+//! every profile.
 
 use crate::core::ir::Program;
 use crate::core::isa::RegFile;
@@ -43,6 +59,20 @@ pub fn slot(profile: Profile, file: RegFile, index: u32) -> Option<u32> {
         (true, RegFile::Input) if index < TEXCOORD_BASE => Some(index),
         (true, RegFile::Texture) if index < 8 => Some(TEXCOORD_BASE + index),
         _ => None,
+    }
+}
+
+/// The value a pixel shader of `profile` reads in a component of the input
+/// of semantic `usage``index` that nothing upstream writes (the module docs
+/// give the sources): 1 in ps_2_0/ps_2_x's `color0`, and in `color0` of any
+/// profile when `fixed_function` (no vertex shader: the default diffuse is
+/// white); 0 otherwise.
+pub fn unwritten(profile: Profile, usage: &str, index: u32, fixed_function: bool) -> f32 {
+    let color0 = usage.eq_ignore_ascii_case("color") && index == 0;
+    if color0 && (legacy(profile) || fixed_function) {
+        1.0
+    } else {
+        0.0
     }
 }
 

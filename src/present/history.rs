@@ -119,7 +119,7 @@ fn fragment_text(out: &mut String, step: &StepHistory, f: &Fragment) {
     }
     if let Some(a) = &f.alpha_test {
         out.push_str(&format!(
-            "      alpha   {} (code {}) {} {}: {}\n",
+            "      alpha   {} (compared as {}) {} {}: {}\n",
             a.alpha,
             a.code,
             a.func,

@@ -131,6 +131,21 @@ pub fn pow(a: f32, b: f32) -> f32 {
     a.abs().powf(b)
 }
 
+/// `mova`: the address register's integer, x rounded to the nearest
+/// integer with halves to even (0.5 → 0, 1.5 → 2, 2.5 → 2, −0.5 → 0,
+/// −1.5 → −2), then converted saturating, NaN to 0 (Rust's `as`). The one
+/// statement of the rule: the vertex stage computes by it and the
+/// translation (`translate/vertex.rs`) emits naga's `round` (WGSL's and
+/// SPIR-V's RoundEven) before the same conversion. Microsoft's `mova` page
+/// says only "rounded to nearest" for vs_2_0 and later; vkd3d's
+/// `non-const-indexing.shader_test`, recorded on Windows, indexes a
+/// constant array by `mova` of 0.5 (element 0), 1.4 (element 1) and 1.5
+/// (element 2), which rounding halves away from zero (1 for 0.5) and
+/// truncation (1 for 1.5) both contradict and round-half-to-even fits.
+pub fn mova(x: f32) -> i32 {
+    x.round_ties_even() as i32
+}
+
 /// `frc`: x - floor(x), "result in [0,1)" (MS `frc---ps`). For tiny negative x
 /// the f32 subtraction rounds to 1.0; we return the largest f32 below 1.0 so
 /// the documented range holds.

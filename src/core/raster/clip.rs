@@ -24,6 +24,29 @@ pub const VIEW_VOLUME: [[f64; 4]; 6] = [
     [0.0, 0.0, -1.0, 1.0],
 ];
 
+/// How far past the viewport the guard band reaches, in half-widths of
+/// the viewport: |x|, |y| ≤ 1024·w.
+pub const GUARD: f64 = 1024.0;
+
+/// The planes a triangle is clipped against before the user's: near and
+/// far (0 ≤ z ≤ w, which also keeps w ≥ 0) and a guard band of
+/// [`GUARD`] viewports in x and y. Guard-band hardware clips only these
+/// and scissors to the viewport: clipping at x = ±w or y = ±w would make
+/// edges on the viewport's border, on which a row or column of pixel
+/// centres lies exactly, and the clipped vertex, rounded, lands that edge
+/// a hair inside or outside those centres. The guard band's own edges lie
+/// a thousand viewports out, where no pixel is drawn; they keep the
+/// perspective divide finite (a vertex at w = 0 is outside them unless it
+/// is the origin).
+pub const GUARD_BAND: [[f64; 4]; 6] = [
+    [0.0, 0.0, 1.0, 0.0],
+    [0.0, 0.0, -1.0, 1.0],
+    [1.0, 0.0, 0.0, GUARD],
+    [-1.0, 0.0, 0.0, GUARD],
+    [0.0, 1.0, 0.0, GUARD],
+    [0.0, -1.0, 0.0, GUARD],
+];
+
 fn distance(plane: &[f64; 4], p: &[f64; 4]) -> f64 {
     plane[0] * p[0] + plane[1] * p[1] + plane[2] * p[2] + plane[3] * p[3]
 }

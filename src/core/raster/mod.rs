@@ -20,14 +20,20 @@
 //! * **Clipping** ("Viewports and Clipping (Direct3D 9)"): a vertex is in
 //!   the view volume when −w ≤ x ≤ w, −w ≤ y ≤ w and 0 ≤ z ≤ w; each
 //!   enabled user plane (SetClipPlane, in clip space when a vertex shader
-//!   runs) keeps dot(plane, position) ≥ 0. Triangles are clipped against
-//!   all of them ([`clip`]); attributes are linear in clip space, so a
-//!   vertex made on a plane takes the linear blend of the two it lies
-//!   between. Hardware with a guard band clips only z and the user planes
-//!   and scissors x and y to the viewport: the pixels and the values are
-//!   the same, because a clipped edge lies on the viewport's border, where
-//!   the top-left rule keeps the left and top border's pixel centres and
-//!   drops the right and bottom one's — exactly the viewport's pixels.
+//!   runs) keeps dot(plane, position) ≥ 0. Attributes are linear in clip
+//!   space, so a vertex made on a plane takes the linear blend of the two
+//!   it lies between. Triangles are clipped as guard-band hardware clips
+//!   them ([`clip::GUARD_BAND`]): against near and far (0 ≤ z ≤ w), the
+//!   user planes and a guard band a thousand viewports wide, then
+//!   scissored to the viewport. Clipping at x = ±w and y = ±w instead
+//!   would put an edge on the viewport's border, and with the half-pixel
+//!   offset a row or column of pixel centres lies exactly on it (y/w = 1
+//!   is row 0's centres): the clipped vertex, rounded, lands the edge a
+//!   hair inside or outside them, and a border row or column of pixels is
+//!   lost or kept by rounding. Scissoring keeps exactly the viewport's
+//!   pixels, as every guard-band part does (D3DCAPS9's GuardBandLeft …
+//!   GuardBandBottom describe the band; "Viewports and Clipping" the
+//!   volume).
 //! * **Viewport** (D3DVIEWPORT9, "Viewports and Clipping"): screen x =
 //!   X + (1 + x/w)·Width/2, y = Y + (1 − y/w)·Height/2, z = MinZ +
 //!   (z/w)·(MaxZ − MinZ); pre-transformed vertices (D3DFVF_XYZRHW) give

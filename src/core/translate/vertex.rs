@@ -7,10 +7,9 @@
 //! `ps_main`; what only vertex shaders have is here:
 //!
 //! * the address register `a0` (an `ivec4`) written by `mova`, rounded to
-//!   the nearest integer with halves away from zero, as `emu/vertex` rounds
-//!   it (`trunc`, then one step away from zero where the fraction is at
-//!   least ½ — `floor(x + 0.5)` would round 0.49999997 up, since the sum
-//!   rounds to 1), converted saturating, NaN to 0, as Rust's `as` does;
+//!   the nearest integer with halves to even by naga's `round` (WGSL's
+//!   `round`, SPIR-V's RoundEven), converted saturating, NaN to 0, as
+//!   `emu::math::mova` states the rule;
 //! * relative reads `c[a0.x + n]`, `c[aL + n]` (c0–c255 in the constant
 //!   block) and `v[aL + n]` (v0–v15), zeros past the file, and the relative
 //!   write `o[aL + n]`, dropped past o11 — the emulator's choices, both in
@@ -306,9 +305,8 @@ impl Lower<'_> {
         Ok(self.fb.add(Expression::Access { base, index: row }))
     }
 
-    /// `mova a0.mask, x` after `_sat` and the flush: each component rounded
-    /// to nearest, halves away from zero, and converted as Rust's `as i32`
-    /// converts (saturating, NaN to 0); predication as for any write.
+    /// `mova a0.mask, x` after `_sat` and the flush: each component as
+    /// `emu::math::mova` computes it; predication as for any write.
     pub(super) fn write_address(
         &mut self,
         ins: &Instruction,
@@ -335,24 +333,11 @@ impl Lower<'_> {
         Ok(())
     }
 
-    /// `x.round() as i32`, in naga.
+    /// `emu::math::mova(x)` in naga: rounded to nearest, halves to even
+    /// (naga's `Round` is WGSL's `round` and SPIR-V's RoundEven), then
+    /// converted as Rust's `as i32` converts.
     fn round_to_int(&mut self, x: Expr) -> Expr {
-        let t = self.fb.math(M::Trunc, &[x]);
-        // Exact: |x − trunc(x)| < 1 and both share their exponent range.
-        // The two signs are tested apart: written as |x − t| ≥ ½ with
-        // `sign(x)`, llvmpipe rounded 3.5 to 3 (its compiler took the
-        // pattern for a round-to-even).
-        let frac = self.fb.binary(B::Subtract, x, t);
-        let (half, minus_half) = (self.fb.f32(0.5), self.fb.f32(-0.5));
-        let up = self.fb.binary(B::GreaterEqual, frac, half);
-        let down = self.fb.binary(B::LessEqual, frac, minus_half);
-        let one = self.fb.f32(1.0);
-        let (above, below) = (
-            self.fb.binary(B::Add, t, one),
-            self.fb.binary(B::Subtract, t, one),
-        );
-        let r = self.fb.select(down, below, t);
-        let r = self.fb.select(up, above, r);
+        let r = self.fb.math(M::Round, &[x]);
         // i32's range: −2^31 is a float, 2147483520 the largest below 2^31.
         let (lo, hi) = (self.fb.f32(-2_147_483_648.0), self.fb.f32(2_147_483_520.0));
         let clamped = self.fb.math(M::Clamp, &[r, lo, hi]);

@@ -784,8 +784,14 @@ impl Resolver {
                 Source::Texture(_) => None,
             })
             .collect();
-        let pixel = super::pixel_state::read(&fields, &target_of, (target, w, h), &sampled)
-            .map_err(|(field, m)| self.err(&format!("{at}.{field}"), m))?;
+        let pixel = super::pixel_state::read(
+            &fields,
+            &target_of,
+            (target, w, h),
+            targets[target].format,
+            &sampled,
+        )
+        .map_err(|(field, m)| self.err(&format!("{at}.{field}"), m))?;
         let geometry = match &s.geometry {
             None => None,
             Some(g) => {

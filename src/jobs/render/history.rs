@@ -22,7 +22,7 @@
 use super::pixel_state::{AlphaTest, CmpFunc, PixelState};
 use super::{DrawList, Step, TargetState};
 use crate::core::emu::{Draw, DrawOutput, PixelInputs};
-use crate::core::image::{unorm8, RenderTarget};
+use crate::core::image::RenderTarget;
 use crate::core::ir::Program;
 use crate::core::isa::RegFile;
 use crate::core::merge::{OutputState, Terms};
@@ -160,8 +160,9 @@ pub struct Fragment {
 pub struct AlphaVerdict {
     /// oC0's alpha.
     pub alpha: f32,
-    /// As the 8-bit code compared.
-    pub code: u8,
+    /// The alpha as the test compared it: at the target's precision (an
+    /// integer on 8-bit and half targets, the float itself on 32-bit ones).
+    pub code: f64,
     /// D3DRS_ALPHAFUNC.
     pub func: String,
     /// D3DRS_ALPHAREF.
@@ -689,10 +690,11 @@ fn alpha_verdict(test: Option<AlphaTest>, alpha: f32, passed: bool) -> AlphaVerd
     let test = test.unwrap_or(AlphaTest {
         func: CmpFunc::Always,
         reference: 0,
+        precision: super::pixel_state::AlphaPrecision::Fixed(8),
     });
     AlphaVerdict {
         alpha,
-        code: unorm8(alpha),
+        code: f64::from(test.compared(alpha).0),
         func: cmp_name(test.func),
         reference: test.reference,
         passed,

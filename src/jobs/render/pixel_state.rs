@@ -38,18 +38,24 @@
 //! alpha and discards the pixel in every target. An output the shader does
 //! not write leaves its target unchanged.
 //!
-//! The alpha test compares oC0's alpha, converted to an 8-bit code as an
-//! 8-bit target stores it (NaN → 0, clamp, ×255, round half up:
-//! `image::unorm8`), with ALPHAREF (0–255) by D3DCMPFUNC, and discards the
-//! pixel when the comparison fails, before blending. Comparing codes
-//! rather than floats is what fixed-point alpha-test hardware does; Wine's
-//! wined3d compares the float alpha with ALPHAREF/255 instead, which
-//! differs only for an alpha strictly between two codes' midpoint and the
-//! code itself.
+//! The alpha test compares oC0's alpha, unclamped, with ALPHAREF at the
+//! precision of the draw target's format ([`AlphaPrecision`]), and discards
+//! the pixel when the comparison fails, before blending. On a target of 8
+//! bits per channel the alpha is scaled by 255 and rounded to the nearest
+//! integer, halves to even, and compared with ALPHAREF (0–255); on a
+//! half-float target at 15 bits (alpha × 32767 against ALPHAREF widened by
+//! repeating its bits, `ref << 7 | ref >> 1`); on a 32-bit float target
+//! the float alpha itself is compared with ALPHAREF/255. Nothing clamps the
+//! alpha first: 1.5 passes GREATER 255 and fails EQUAL 255, and −0.5 passes
+//! LESS 0 (vkd3d's `alpha-test.shader_test`, recorded on Windows with a
+//! 32-bit float target; DXVK's alpha test, which widens the comparison by
+//! the same table of formats to match NVIDIA's Direct3D 9 driver; Wine's
+//! wined3d compares the unclamped float with (ALPHAREF & 0xff)/255). A
+//! NaN alpha fails every comparison but NOTEQUAL (and ALWAYS).
 
 use crate::core::emu::LinearInput;
 use crate::core::float_rules::FloatRules;
-use crate::core::image::unorm8;
+use crate::core::image::{Encoding, TargetFormat};
 use crate::core::ir::Program;
 use crate::core::isa::RegFile;
 use crate::core::merge::ColorWrite;
@@ -179,12 +185,63 @@ pub struct AlphaTest {
     pub func: CmpFunc,
     /// D3DRS_ALPHAREF, 0–255.
     pub reference: u8,
+    /// The precision of the comparison (the draw target's format's).
+    pub precision: AlphaPrecision,
+}
+
+/// The precision the alpha test compares at, which the draw target's
+/// format sets (the module docs give the rule and its sources).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum AlphaPrecision {
+    /// An integer of this many bits: alpha × (2^bits − 1), rounded halves
+    /// to even, against ALPHAREF widened to as many bits.
+    Fixed(u32),
+    /// The float alpha against ALPHAREF/255.
+    Float,
+}
+
+impl AlphaPrecision {
+    /// The precision of the alpha test on a target of `format`: 8 bits for
+    /// 8-bit UNORM, 15 for half floats, the float itself for 32-bit floats.
+    pub fn of(format: TargetFormat) -> AlphaPrecision {
+        match format.encoding() {
+            Encoding::Unorm8 => AlphaPrecision::Fixed(8),
+            Encoding::Half => AlphaPrecision::Fixed(15),
+            Encoding::Float => AlphaPrecision::Float,
+        }
+    }
 }
 
 impl AlphaTest {
+    /// The test of `func` against `reference` on a target of `format`.
+    pub fn new(func: CmpFunc, reference: u8, format: TargetFormat) -> AlphaTest {
+        AlphaTest {
+            func,
+            reference,
+            precision: AlphaPrecision::of(format),
+        }
+    }
+
+    /// The two numbers the test compares for an oC0 alpha of `alpha`: the
+    /// alpha and ALPHAREF, both at the test's precision (computed in f32,
+    /// as the shader a driver appends computes them).
+    pub fn compared(self, alpha: f32) -> (f32, f32) {
+        match self.precision {
+            AlphaPrecision::Float => (alpha, f32::from(self.reference) / 255.0),
+            AlphaPrecision::Fixed(bits) => {
+                let extra = bits.clamp(8, 16) - 8;
+                let r = u32::from(self.reference);
+                let reference = (r << extra) | (r >> (8 - extra));
+                let scale = ((256u32 << extra) - 1) as f32;
+                ((alpha * scale).round_ties_even(), reference as f32)
+            }
+        }
+    }
+
     /// Whether a pixel whose oC0 alpha is `alpha` survives the test.
     pub fn passes(self, alpha: f32) -> bool {
-        self.func.passes(unorm8(alpha), self.reference)
+        let (a, r) = self.compared(alpha);
+        self.func.passes(a, r)
     }
 }
 
@@ -327,11 +384,13 @@ fn outputs(
 /// The step's pixel state from its `float_rules`, `alpha_test` and
 /// `outputs` fields; an error names the field (relative to the step) and
 /// the problem. `target_of` finds a target by name as (index, width,
-/// height); `draw` is the draw's own target as the same triple.
+/// height); `draw` is the draw's own target as the same triple and
+/// `format` its format (the alpha test's precision).
 pub(crate) fn read(
     f: &FileFields<'_>,
     target_of: TargetOf<'_>,
     draw: (usize, u32, u32),
+    format: TargetFormat,
     sampled: &[usize],
 ) -> Result<PixelState, (String, String)> {
     let (float_rules, alpha_test) = (f.float_rules, f.alpha_test);
@@ -351,15 +410,16 @@ pub(crate) fn read(
     };
     let alpha_test = match alpha_test {
         None => None,
-        Some(a) => Some(AlphaTest {
-            func: CmpFunc::from_name(&a.func).ok_or_else(|| {
+        Some(a) => Some(AlphaTest::new(
+            CmpFunc::from_name(&a.func).ok_or_else(|| {
                 (
                     "alpha_test.func".to_string(),
                     format!("`{}` is not a D3DCMPFUNC (NEVER, LESS, EQUAL, LESSEQUAL, GREATER, NOTEQUAL, GREATEREQUAL, ALWAYS)", a.func),
                 )
             })?,
-            reference: a.reference,
-        }),
+            a.reference,
+            format,
+        )),
     };
     let flat = match f.shade {
         None | Some("gouraud") => false,
@@ -404,21 +464,24 @@ mod tests {
 
     #[test]
     fn alpha_test_at_the_reference_boundary() {
-        // 128/255 = 0.50196…: the code of 0.5 is floor(127.5 + 0.5) = 128.
-        let t = AlphaTest {
-            func: CmpFunc::GreaterEqual,
-            reference: 128,
-        };
+        // 8-bit target: 0.5 × 255 = 127.5, halves to even: 128.
+        let t = AlphaTest::new(CmpFunc::GreaterEqual, 128, TargetFormat::A8R8G8B8);
         assert!(t.passes(0.5));
         assert!(t.passes(128.0 / 255.0));
-        // 127.49/255 rounds to code 127: fails.
+        // 127.49/255 × 255 rounds to 127: fails.
         assert!(!t.passes(127.49 / 255.0));
-        let eq = AlphaTest {
-            func: CmpFunc::Equal,
-            reference: 0,
-        };
-        assert!(eq.passes(f32::NAN), "NaN converts to code 0");
-        assert!(eq.passes(-1.0));
+        // 1.5/255 × 255 = 1.5 (to within an ulp of 1.5: 1.5/255 rounds to
+        // f32 and back, 1.5 exactly here) → 2; 2.5 → 2, not 3.
+        let eq2 = AlphaTest::new(CmpFunc::Equal, 2, TargetFormat::A8R8G8B8);
+        assert_eq!(eq2.compared(1.5 / 255.0), (2.0, 2.0));
+        assert_eq!(eq2.compared(2.5 / 255.0), (2.0, 2.0));
+        // NaN fails every comparison but NOTEQUAL.
+        let eq0 = AlphaTest::new(CmpFunc::Equal, 0, TargetFormat::A8R8G8B8);
+        assert!(!eq0.passes(f32::NAN));
+        assert!(AlphaTest::new(CmpFunc::NotEqual, 0, TargetFormat::A8R8G8B8).passes(f32::NAN));
+        // Nothing clamps: −1 → −255, which is not 0 and is LESS than 0.
+        assert!(!eq0.passes(-1.0));
+        assert!(AlphaTest::new(CmpFunc::Less, 0, TargetFormat::A8R8G8B8).passes(-0.5));
         assert_eq!(CmpFunc::from_name("D3DCMP_LESS"), Some(CmpFunc::Less));
         let mut killed = vec![false, false];
         PixelState {
@@ -431,5 +494,38 @@ mod tests {
             2,
         );
         assert_eq!(killed, vec![false, true]);
+    }
+
+    #[test]
+    fn alpha_test_is_unclamped_at_every_precision() {
+        // vkd3d's alpha-test.shader_test (Windows, A32B32G32R32F target,
+        // ALPHAREF = 1.0 × 255): alphas 0.5, 1.0, 1.5 against 1.0.
+        let float = |f: &str| {
+            AlphaTest::new(
+                CmpFunc::from_name(f).unwrap(),
+                255,
+                TargetFormat::A32B32G32R32F,
+            )
+        };
+        let row = |f: &str| [0.5f32, 1.0, 1.5].map(|a| float(f).passes(a));
+        assert_eq!(row("EQUAL"), [false, true, false]);
+        assert_eq!(row("NOTEQUAL"), [true, false, true]);
+        assert_eq!(row("GREATER"), [false, false, true]);
+        assert_eq!(row("GREATEREQUAL"), [false, true, true]);
+        assert_eq!(row("LESSEQUAL"), [true, true, false]);
+        assert_eq!(row("LESS"), [true, false, false]);
+        // The same on 8-bit and half targets: 1.5 × 255 = 382.5 → 382
+        // (even) > 255; 1.5 × 32767 = 49150.5 → 49150 > 255·128 + 127 =
+        // 32767.
+        for format in [TargetFormat::A8R8G8B8, TargetFormat::Rgba16F] {
+            let t = AlphaTest::new(CmpFunc::Greater, 255, format);
+            assert!(t.passes(1.5) && !t.passes(1.0), "{format:?}");
+        }
+        let half = AlphaTest::new(CmpFunc::Equal, 255, TargetFormat::Rgba16F);
+        assert_eq!(half.compared(1.5), (49150.0, 32767.0));
+        // ALPHAREF 128 on a half target: 128·128 + 64 = 16448, and alpha
+        // 16448/32767 compares equal.
+        let h = AlphaTest::new(CmpFunc::Equal, 128, TargetFormat::Rgba16F);
+        assert_eq!(h.compared(16448.0 / 32767.0), (16448.0, 16448.0));
     }
 }

@@ -11,6 +11,7 @@ use super::state::{Element, Last, Mode, Op, State, Stop};
 use super::CompileJob;
 use crate::core::emu::vertex::{Attribute, Vertices};
 use crate::core::emu::{Constants, SamplerState};
+use crate::core::image::TargetFormat;
 use crate::core::load;
 use crate::core::merge::{self, ColorWrite, OutputState};
 use crate::core::raster::points::PointState;
@@ -494,7 +495,7 @@ fn build(
             outputs[*k as usize - 1] = Some((i, ColorWrite::ALL));
         }
     }
-    let alpha = alpha_test(s.fixed.alpha_func, s.fixed.alpha_ref);
+    let alpha = alpha_test(s.fixed.alpha_func, s.fixed.alpha_ref, targets[main].format);
     let geometry = Geometry {
         vertices,
         indices: None,
@@ -559,9 +560,9 @@ fn build(
     })
 }
 
-/// D3DRS_ALPHAFUNC and D3DRS_ALPHAREF = (DWORD)(ref × 255.0); ALWAYS is
-/// the same as no test.
-fn alpha_test(func: u32, reference: f32) -> Option<AlphaTest> {
+/// D3DRS_ALPHAFUNC and D3DRS_ALPHAREF = (DWORD)(ref × 255.0) on a target
+/// of `format`; ALWAYS is the same as no test.
+fn alpha_test(func: u32, reference: f32, format: TargetFormat) -> Option<AlphaTest> {
     let name = [
         "NEVER",
         "LESS",
@@ -574,10 +575,8 @@ fn alpha_test(func: u32, reference: f32) -> Option<AlphaTest> {
     ]
     .get(func.checked_sub(1)? as usize)?;
     let func = CmpFunc::from_name(name)?;
-    (func != CmpFunc::Always).then(|| AlphaTest {
-        func,
-        reference: (f64::from(reference) * 255.0).clamp(0.0, 255.0) as u8,
-    })
+    let reference = (f64::from(reference) * 255.0).clamp(0.0, 255.0) as u8;
+    (func != CmpFunc::Always).then(|| AlphaTest::new(func, reference, format))
 }
 
 /// The file's textures the pixel shader declares a sampler for, with the

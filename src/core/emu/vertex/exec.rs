@@ -301,8 +301,7 @@ impl<'s, 'a> State<'s, 'a> {
             let slot = match d.reg.file {
                 RegFile::Temp => g.r.get_mut(index as usize),
                 RegFile::Address => {
-                    // mova: rounded to nearest, halves away from zero
-                    g.a0[c] = v.round() as i32;
+                    g.a0[c] = math::mova(v);
                     continue;
                 }
                 RegFile::Predicate => {

@@ -21,10 +21,11 @@
 //! Two choices where Direct3D 9 leaves the result open, both in
 //! `docs/vertex-shaders.md`:
 //!
-//! * `mova` rounds to the nearest integer, halves away from zero: Microsoft's
-//!   `mova` page says the value is rounded to nearest for vs_2_0 and later
-//!   (vs_1_1 floors), and Wine's wined3d writes it as
-//!   `floor(abs(x) + 0.5) * sign(x)` (`shader_glsl_mov`);
+//! * `mova` rounds to the nearest integer, halves to even
+//!   (`emu/math.rs`'s `mova`, with the evidence): Microsoft's `mova` page
+//!   says only "rounded to nearest" for vs_2_0 and later (vs_1_1 floors);
+//!   Windows' own results (vkd3d's `non-const-indexing.shader_test`) settle
+//!   the halves;
 //! * a relative read past the register file (`c[a0.x + n]` outside c0–c255,
 //!   `v[aL + n]` outside v0–v15) reads (0, 0, 0, 0), and a relative write
 //!   past o0–o11 is dropped. Direct3D 9 leaves such reads undefined; Wine
@@ -216,6 +217,40 @@ pub fn runs(profile: Profile) -> bool {
 /// the fixed registers vs_2_0/vs_2_x write.
 pub fn output_slots(shader: &Shader) -> Vec<OutputSlot> {
     outputs(shader).into_iter().map(|(_, s)| s).collect()
+}
+
+/// The components of each of [`output_slots`] that some instruction writes
+/// (a mask, bit 0 = x), in the same order: a component no instruction
+/// writes is one the pixel shader reads Direct3D 9's default in
+/// (`core::pixel_inputs::unwritten`). A relative write `o[aL + n]` may
+/// reach any `o#`, so it counts as writing every component of each.
+pub fn written(shader: &Shader) -> Vec<u8> {
+    let p = shader.program();
+    let relative = p
+        .instructions
+        .iter()
+        .filter_map(|i| i.dst)
+        .any(|d| d.relative.is_some() && d.reg.file == RegFile::Output);
+    outputs(shader)
+        .into_iter()
+        .map(|(row, _)| {
+            p.instructions
+                .iter()
+                .filter_map(|i| i.dst)
+                .filter(|d| {
+                    (relative && d.reg.file == RegFile::Output)
+                        || (d.relative.is_none()
+                            && exec::output_row(d.reg.file, d.reg.index) == Some(row))
+                })
+                .fold(0u8, |m, d| {
+                    if d.relative.is_some() {
+                        m | 0b1111
+                    } else {
+                        m | d.mask.0
+                    }
+                })
+        })
+        .collect()
 }
 
 /// [`output_slots`] with each slot's row in the executor's output block

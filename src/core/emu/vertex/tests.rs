@@ -41,20 +41,38 @@ fn first(out: &VertexOutput) -> Vec<[f32; 4]> {
 }
 
 #[test]
-fn mova_rounds_halves_away_from_zero_and_indexes_constants() {
-    // c_k = (k, 0, 0, 0): reading c[a0.x] gives the index a0.x itself.
+fn mova_rounds_halves_to_even_and_indexes_constants() {
+    // c_k = (k, 0, 0, 0): reading c[a0.x + 2] gives a0.x + 2.
     let consts: Vec<[f32; 4]> = (0..8).map(|k| [k as f32, 0.0, 0.0, 1.0]).collect();
     let text = "vs_2_0\ndcl_position v0\nmova a0.x, v0.x\nmov oPos, c[a0.x + 2]\n";
-    let xs = [
-        [0.5, 0.0, 0.0, 1.0],
-        [1.49, 0.0, 0.0, 1.0],
-        [2.5, 0.0, 0.0, 1.0],
-        [-1.5, 0.0, 0.0, 1.0],
-    ];
-    let out = run_text(text, &consts, &xs);
-    // 0.5 -> 1, +2 = 3; 1.49 -> 1, = 3; 2.5 -> 3, = 5; -1.5 -> -2, = 0.
+    let xs = [0.5, 1.49, 2.5, -1.5, 1.5, -0.5, -2.5, 3.5];
+    let rows: Vec<[f32; 4]> = xs.iter().map(|&x| [x, 0.0, 0.0, 1.0]).collect();
+    let out = run_text(text, &consts, &rows);
+    // Halves to even: 0.5 → 0, 1.49 → 1, 2.5 → 2, −1.5 → −2, 1.5 → 2,
+    // −0.5 → 0, −2.5 → −2, 3.5 → 4; each + 2.
     let got: Vec<f32> = first(&out).iter().map(|v| v[0]).collect();
-    assert_eq!(got, [3.0, 3.0, 5.0, 0.0]);
+    assert_eq!(got, [2.0, 3.0, 4.0, 0.0, 4.0, 2.0, 0.0, 6.0]);
+}
+
+#[test]
+fn mova_rule_at_exact_halves() {
+    use crate::core::emu::math::mova;
+    let cases = [
+        (0.5, 0),
+        (-0.5, 0),
+        (1.5, 2),
+        (-1.5, -2),
+        (2.5, 2),
+        (-2.5, -2),
+        (0.49999997, 0),
+        (2.5000002, 3),
+        (f32::NAN, 0),
+        (3e9, i32::MAX),
+        (-3e9, i32::MIN),
+    ];
+    for (x, want) in cases {
+        assert_eq!(mova(x), want, "mova({x})");
+    }
 }
 
 #[test]

@@ -22,7 +22,8 @@ use crate::core::emu::{self, Compiled, Draw, DrawOutput, EmuError, GradientSite}
 use crate::core::ir::Program;
 use crate::core::isa::RegFile;
 use crate::core::merge::{self, MergeStats, OutputState};
-use crate::core::raster::clip::{self, ClipVertex, VIEW_VOLUME};
+use crate::core::pixel_inputs::unwritten;
+use crate::core::raster::clip::{self, ClipVertex, GUARD_BAND, VIEW_VOLUME};
 use crate::core::raster::depth::DepthFormat;
 use crate::core::raster::fog::{Fog, FogMode};
 use crate::core::raster::stencil::{self, StencilOutcome};
@@ -180,11 +181,13 @@ fn vertex_stage(
             usage: "color".into(),
             index: 1,
         });
+        let unset =
+            |a: &Attribute| [f64::from(unwritten(program.profile, &a.usage, a.index, true)); 4];
         let values = (0..n)
             .map(|v| {
                 let values = wanted
                     .iter()
-                    .map(|(_, a)| attr(a).map_or([0.0; 4], |vals| widen(vals[v])))
+                    .map(|(_, a)| attr(a).map_or(unset(a), |vals| widen(vals[v])))
                     .collect();
                 with_size(values, sizes.map(|s| s[v][0]), specular.map(|s| s[v][3]))
             })
@@ -227,6 +230,7 @@ fn vertex_stage(
         )
     })?;
     let columns: Vec<Option<usize>> = wanted.iter().map(|(_, a)| column(a)).collect();
+    let defaults = unwritten_values(program, shader, &wanted, &columns);
     let size_column = column(&psize);
     let fog_column = column(&Attribute {
         usage: "fog".into(),
@@ -240,7 +244,11 @@ fn vertex_stage(
             .map(|v| {
                 let values = columns
                     .iter()
-                    .map(|c| c.map_or([0.0; 4], |c| widen(v[c])))
+                    .zip(&defaults)
+                    .map(|(c, d)| {
+                        let given = c.map_or([0.0; 4], |c| widen(v[c]));
+                        std::array::from_fn(|k| if d[k].is_nan() { given[k] } else { d[k] })
+                    })
                     .collect();
                 with_size(
                     values,
@@ -255,6 +263,33 @@ fn vertex_stage(
         fixed_function: false,
         fog_given: fog_column.is_some(),
     })
+}
+
+/// Per pixel-shader input, each component's value where the vertex shader
+/// `vs` never writes it (NaN where it does), by `pixel_inputs::unwritten`;
+/// `columns` are the vertex outputs feeding `wanted`.
+fn unwritten_values(
+    program: &Program,
+    vs: &crate::core::ir::Shader,
+    wanted: &[(u32, Attribute)],
+    columns: &[Option<usize>],
+) -> Vec<[f64; 4]> {
+    let masks = vertex::written(vs);
+    wanted
+        .iter()
+        .zip(columns)
+        .map(|((_, a), c)| {
+            let mask = c.map_or(0, |c| masks[c]);
+            let value = f64::from(unwritten(program.profile, &a.usage, a.index, false));
+            std::array::from_fn(|k| {
+                if mask & (1 << k) == 0 {
+                    value
+                } else {
+                    f64::NAN
+                }
+            })
+        })
+        .collect()
 }
 
 /// The primitives of the draw on screen, each with its provoking vertex
@@ -272,6 +307,7 @@ fn shapes(
         None => (0..stage.positions.len()).collect(),
     };
     let planes: Vec<[f64; 4]> = VIEW_VOLUME.iter().chain(&g.clip_planes).copied().collect();
+    let guard_band: Vec<[f64; 4]> = GUARD_BAND.iter().chain(&g.clip_planes).copied().collect();
     let at = Setup {
         g,
         stage,
@@ -307,7 +343,7 @@ fn shapes(
         let polygon = if stage.transformed {
             vec![corner(a), corner(b), corner(c)]
         } else {
-            clip::clip(vec![corner(a), corner(b), corner(c)], &planes)
+            clip::clip(vec![corner(a), corner(b), corner(c)], &guard_band)
         };
         for shape in at.polygon(polygon) {
             out.push((shape, provoking, index));
@@ -422,6 +458,14 @@ impl Setup<'_> {
     /// a fan, its edges as lines, or its vertices as points.
     fn polygon(&self, polygon: Vec<ClipVertex>) -> Vec<Shape> {
         let on_screen: Vec<ScreenVertex> = polygon.iter().map(|v| self.screen(v.clone())).collect();
+        if on_screen
+            .iter()
+            .any(|v| !(v.x.is_finite() && v.y.is_finite()))
+        {
+            // Only a vertex at the origin of clip space gets here (w = 0
+            // and every guard-band plane through it): nothing to draw.
+            return Vec::new();
+        }
         let tris: Vec<Triangle> = (1..on_screen.len().saturating_sub(1))
             .filter_map(|i| {
                 Triangle::new(
