@@ -370,6 +370,7 @@ pub(super) fn write_rows(
     (w, h, d): (u32, u32, u32),
     row: impl Fn(usize, &mut [[f32; 4]]) + Sync,
 ) -> Result<(), GpuError> {
+    use rayon::prelude::*;
     const ALIGN: usize = wgpu::COPY_BYTES_PER_ROW_ALIGNMENT as usize;
     let row_bytes = 16 * w as usize;
     let pitch = row_bytes.div_ceil(ALIGN) * ALIGN;
@@ -402,24 +403,12 @@ pub(super) fn write_rows(
             rest = tail;
             first += n;
         }
-        // Threads of the upload's own, as many as the draw's pool has,
-        // taking runs in turn: the uploads of the luminance passes run
-        // beside the f64 reference, which keeps every thread of the pool
-        // busy, and rayon's tasks would wait for idle threads there.
-        let queue = std::sync::Mutex::new(runs.into_iter());
-        let next = || queue.lock().ok().and_then(|mut q| q.next());
-        std::thread::scope(|s| {
-            for _ in 0..rayon::current_num_threads().max(1) {
-                s.spawn(|| {
-                    let mut texels = vec![[0.0f32; 4]; w as usize];
-                    while let Some((first, n, Run(mut run))) = next() {
-                        for r in 0..n {
-                            row(first + r, &mut texels);
-                            run.slice(r * pitch..r * pitch + row_bytes)
-                                .copy_from_slice(bytemuck::cast_slice(&texels));
-                        }
-                    }
-                });
+        runs.into_par_iter().for_each(|(first, n, Run(mut run))| {
+            let mut texels = vec![[0.0f32; 4]; w as usize];
+            for r in 0..n {
+                row(first + r, &mut texels);
+                run.slice(r * pitch..r * pitch + row_bytes)
+                    .copy_from_slice(bytemuck::cast_slice(&texels));
             }
         });
     }
