@@ -161,7 +161,8 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
     }
     // A non-finite L̄w is a problem even when the reference agrees; so is a
     // pass over the limits, and a bound too wide to tell anything.
-    Ok(Outcome::from_ok(
-        run.all_agree() && run.finite() && run.within_limits() && run.fit(),
-    ))
+    let ok = run.all_agree() && run.finite() && run.within_limits() && run.fit();
+    // After a GPU's draws, the decoded image is freed after the command ends.
+    ps30::core::gpu::leave_at_exit(img);
+    Ok(Outcome::from_ok(ok))
 }

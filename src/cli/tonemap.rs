@@ -71,8 +71,9 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
         })
         .map_err(|e| opening_failed(&settings.backend, e))?
     };
-    // The image is not needed any more: the PNG is encoded without it.
-    drop(img);
+    // The image is not needed any more: the PNG is encoded without it (after
+    // a GPU's draws it is freed after the command ends).
+    ps30::core::gpu::leave_at_exit(img);
     let written = match (output, &args.output) {
         (Some(out), Some(path)) => {
             out.finish(path, result.width, result.height)?;

@@ -158,6 +158,25 @@ fn device(backend: &Backend) -> Result<&Arc<Gpu>, DrawError> {
     }
 }
 
+/// The device of a GPU backend and `draw`'s translation for it, made
+/// before waiting for a device still opening ([`gpu::translate_ahead`]):
+/// the translation then runs while the driver starts. A device not yet
+/// open is taken to have BORDER addressing, as NVIDIA's, AMD's, Intel's
+/// and llvmpipe's do; where it has not, the draw is translated again.
+fn device_translated<'b>(
+    backend: &'b Backend,
+    shader: &Shader,
+    draw: &Draw,
+) -> Result<(&'b Arc<Gpu>, gpu::Translated), DrawError> {
+    let border = match backend {
+        Backend::Gpu(g) => g.clamp_to_border(),
+        Backend::Opening(o) => o.ready().is_none_or(|g| g.clamp_to_border()),
+        Backend::Emulator => true,
+    };
+    let ahead = gpu::translate_ahead(shader, draw, border);
+    Ok((device(backend)?, ahead))
+}
+
 /// Holds a GPU draw to the emulator's per-pixel cap, by the cost model's
 /// longest path (an upper bound on every pixel's count).
 fn gpu_cap(shader: &Shader, file: &SourceFile, draw: &Draw) -> Result<(), DrawError> {
@@ -209,8 +228,9 @@ pub fn draw(
         }
         Backend::Gpu(_) | Backend::Opening(_) => {
             gpu_cap(shader, file, draw)?;
-            let g = device(backend)?;
-            let out = gpu::run(g, shader, draw, target).map_err(DrawError::Gpu)?;
+            let (g, ahead) = device_translated(backend, shader, draw)?;
+            let out =
+                gpu::run_translated(g, shader, draw, target, ahead).map_err(DrawError::Gpu)?;
             Ok(Drawn {
                 width: out.width,
                 height: out.height,
@@ -245,8 +265,8 @@ pub fn draw_in_bands(
         return Ok(());
     }
     gpu_cap(shader, file, draw)?;
-    let g = device(backend)?;
-    gpu::run_in_bands(g, shader, draw, target, rows, &mut |y0, out| {
+    let (g, ahead) = device_translated(backend, shader, draw)?;
+    gpu::run_in_bands_translated(g, shader, draw, (target, ahead), rows, &mut |y0, out| {
         band(
             y0,
             Drawn {

@@ -39,6 +39,15 @@ impl TargetKind {
         }
     }
 
+    /// Whether a texel is four little-endian 32-bit floats in the order of
+    /// [`GpuOutput`]'s: then [`decode`](TargetKind::decode) is a copy.
+    fn four_floats(self) -> bool {
+        matches!(
+            self,
+            TargetKind::Raw | TargetKind::Format(TargetFormat::A32B32G32R32F)
+        )
+    }
+
     /// A stored texel as four floats; channels the format does not store
     /// read back as 1, the D3D9 default (as [`TargetFormat::round`]).
     fn decode(self, b: &[u8]) -> [f32; 4] {
@@ -112,6 +121,18 @@ pub fn run(
     prepare(gpu, shader, draw, targets)?.draw()
 }
 
+/// [`run`] from a translation made before the device was open
+/// ([`translate_ahead`]; made again if it assumed the wrong device).
+pub fn run_translated(
+    gpu: &Gpu,
+    shader: &Shader,
+    draw: &Draw,
+    targets: TargetKind,
+    ahead: Translated,
+) -> Result<GpuOutput, GpuError> {
+    prepare_from(gpu, shader, draw, targets, Some(ahead))?.draw()
+}
+
 /// [`run`], the targets read back `rows` rows at a time
 /// ([`Prepared::draw_in_bands`]).
 pub fn run_in_bands(
@@ -123,6 +144,44 @@ pub fn run_in_bands(
     band: &mut dyn FnMut(u32, GpuOutput) -> bool,
 ) -> Result<(), GpuError> {
     prepare(gpu, shader, draw, targets)?.draw_in_bands(rows, band)
+}
+
+/// [`run_in_bands`] from a translation made before the device was open
+/// ([`run_translated`]).
+pub fn run_in_bands_translated(
+    gpu: &Gpu,
+    shader: &Shader,
+    draw: &Draw,
+    (targets, ahead): (TargetKind, Translated),
+    rows: u32,
+    band: &mut dyn FnMut(u32, GpuOutput) -> bool,
+) -> Result<(), GpuError> {
+    prepare_from(gpu, shader, draw, targets, Some(ahead))?.draw_in_bands(rows, band)
+}
+
+/// The part of [`prepare`] that needs no device, made while one is still
+/// opening ([`translate_ahead`]): the emulator's refusals and the
+/// translation specialised to the draw, for a device with or without
+/// BORDER addressing (the one thing of the device the translation
+/// depends on). For the article's pass 1 on a 3840×2160 frame it is 5 ms
+/// that no longer wait for NVIDIA's driver to start (docs/speed.md).
+pub struct Translated {
+    border: bool,
+    /// `Err` where the emulator refuses the draw (nothing translated then).
+    made: Result<Result<translate::Translation, GpuError>, GpuError>,
+}
+
+/// Translates `draw` of `shader` for a device that has (`border`) or lacks
+/// BORDER addressing ([`Gpu::clamp_to_border`]), before the device is there.
+pub fn translate_ahead(shader: &Shader, draw: &Draw, border: bool) -> Translated {
+    let made = refuse_draw(shader, draw).map(|()| {
+        let spec = specialisation_for(border, shader, draw)?;
+        let t = translate::translate_specialised(shader, draw.float_rules, Entry::Draw, &spec)
+            .map_err(GpuError::Translate);
+        phases::mark("draw: translated");
+        t
+    });
+    Translated { border, made }
 }
 
 /// A draw made ready on the device: the shader translated and its pipeline
@@ -153,12 +212,28 @@ pub fn prepare<'g>(
     draw: &Draw,
     targets: TargetKind,
 ) -> Result<Prepared<'g>, GpuError> {
+    prepare_from(gpu, shader, draw, targets, None)
+}
+
+/// [`prepare`], from `ahead` where it was made for a device like `gpu`.
+fn prepare_from<'g>(
+    gpu: &'g Gpu,
+    shader: &Shader,
+    draw: &Draw,
+    targets: TargetKind,
+    ahead: Option<Translated>,
+) -> Result<Prepared<'g>, GpuError> {
     phases::mark("draw: preparing");
-    refuse(gpu, shader, draw)?;
-    let spec = specialisation(gpu, shader, draw)?;
-    let t = translate::translate_specialised(shader, draw.float_rules, Entry::Draw, &spec)
-        .map_err(GpuError::Translate)?;
-    phases::mark("draw: translated");
+    let border = gpu.clamp_to_border();
+    let ahead = match ahead {
+        Some(t) if t.border == border => t,
+        _ => translate_ahead(shader, draw, border),
+    };
+    // The refusals in the order they always came: the emulator's, the
+    // device's size, then the translation's.
+    let translation = ahead.made?;
+    refuse_size(gpu, draw)?;
+    let t = translation?;
     ready(gpu, draw, targets, t.interface, t.module)
 }
 
@@ -414,8 +489,18 @@ impl ErrorScopes {
 /// Refuses what the emulator refuses ([`emu::check`]) and targets larger
 /// than the device's.
 pub(super) fn refuse(gpu: &Gpu, shader: &Shader, draw: &Draw) -> Result<(), GpuError> {
+    refuse_draw(shader, draw)?;
+    refuse_size(gpu, draw)
+}
+
+/// What the emulator refuses ([`emu::check`]).
+fn refuse_draw(shader: &Shader, draw: &Draw) -> Result<(), GpuError> {
     let compiled = emu::compile(shader).map_err(GpuError::Draw)?;
-    emu::check(&compiled, draw).map_err(GpuError::Draw)?;
+    emu::check(&compiled, draw).map_err(GpuError::Draw)
+}
+
+/// Targets larger than the device's.
+fn refuse_size(gpu: &Gpu, draw: &Draw) -> Result<(), GpuError> {
     let (w, h) = (draw.target_width, draw.target_height);
     let max = gpu.limits.max_texture_dimension_2d;
     if w > max || h > max {
@@ -720,6 +805,9 @@ fn assemble(
     };
     for ((slot, r), &bytes) in readbacks.iter().zip(data) {
         match *slot {
+            Slot::Color(k) if k < 4 && targets.four_floats() => {
+                out.color[k] = Some(four_floats(w, h, r, bytes));
+            }
             Slot::Color(k) if k < 4 => {
                 out.color[k] = Some(texels(w, h, r, bytes, |b| targets.decode(b)));
             }
@@ -768,6 +856,24 @@ fn texels<T: Send + Copy + Default>(
             for (t, b) in row.iter_mut().zip(src.chunks_exact(texel)) {
                 *t = decode(b);
             }
+        });
+    out
+}
+
+/// [`texels`] of a target of four 32-bit floats ([`TargetKind::four_floats`]):
+/// each row's bytes copied as they are, the rows in parallel, instead of
+/// decoded channel by channel (a 3840×2160 frame is 133 MB: docs/speed.md).
+fn four_floats(w: u32, h: u32, r: &Readback, bytes: &[u8]) -> Vec<[f32; 4]> {
+    if cfg!(target_endian = "big") {
+        return texels(w, h, r, bytes, |b| TargetKind::Raw.decode(b));
+    }
+    let (pitch, width) = (r.pitch as usize, w as usize);
+    let mut out = vec![[0.0f32; 4]; width * h as usize];
+    out.par_chunks_mut(width.max(1))
+        .enumerate()
+        .for_each(|(y, row)| {
+            let src = &bytes[y * pitch..][..16 * row.len()];
+            bytemuck::cast_slice_mut::<[f32; 4], u8>(row).copy_from_slice(src);
         });
     out
 }
@@ -961,14 +1067,14 @@ fn bound<'d>(draw: &'d Draw, register: u32) -> (Option<emu::TextureLevels<'d>>, 
 /// Sampler `register` (declared `ty`): its state mapped for the device,
 /// for a texture of its bound levels.
 fn mapped(
-    gpu: &Gpu,
+    border: bool,
     draw: &Draw,
     register: u32,
     ty: SamplerType,
 ) -> Result<sampler::Mapped, GpuError> {
     let (levels, state) = bound(draw, register);
     let count = levels.map_or(1, |l| l.len()) as u32;
-    sampler::map(&state, count, register, ty, gpu.clamp_to_border())
+    sampler::map(&state, count, register, ty, border)
 }
 
 /// What the translation may assume of the draw (`translate::specialise`):
@@ -980,9 +1086,19 @@ pub(super) fn specialisation(
     shader: &Shader,
     draw: &Draw,
 ) -> Result<translate::Specialisation, GpuError> {
+    specialisation_for(gpu.clamp_to_border(), shader, draw)
+}
+
+/// [`specialisation`] for a device that has (`border`) or lacks BORDER
+/// addressing.
+fn specialisation_for(
+    border: bool,
+    shader: &Shader,
+    draw: &Draw,
+) -> Result<translate::Specialisation, GpuError> {
     let mut spec = translate::Specialisation::general();
     for d in &shader.program().samplers {
-        spec.set(d.index, mapped(gpu, draw, d.index, d.ty)?.spec);
+        spec.set(d.index, mapped(border, draw, d.index, d.ty)?.spec);
     }
     spec.set_constants(
         draw.constants
@@ -1006,7 +1122,7 @@ fn bind_sampler(
     block: &mut [u8],
 ) -> Result<(wgpu::TextureView, wgpu::Sampler), GpuError> {
     let (levels, _) = bound(draw, register);
-    let mapped = mapped(gpu, draw, register, ty)?;
+    let mapped = mapped(gpu.clamp_to_border(), draw, register, ty)?;
     if mapped.filtering && !gpu.float32_filterable() {
         return Err(GpuError::Unsupported(format!(
             "s{register} filters linearly and the device cannot filter 32-bit float textures (FLOAT32_FILTERABLE)"

@@ -40,9 +40,12 @@ mod teardown;
 mod texture;
 mod vertex;
 
-pub use draw::{prepare, prepare_with, run, run_in_bands, GpuOutput, Prepared, TargetKind};
+pub use draw::{
+    prepare, prepare_with, run, run_in_bands, run_in_bands_translated, run_translated,
+    translate_ahead, GpuOutput, Prepared, TargetKind, Translated,
+};
 pub use geometry::{draw_geometry, GeometryDraw, ShadedPrimitive};
-pub use teardown::hand_off_at_exit;
+pub use teardown::{hand_off_at_exit, leave_at_exit};
 pub use vertex::run_vertices;
 
 use crate::core::emu::EmuError;
@@ -205,6 +208,11 @@ impl Opening {
             opened
         });
         opened.as_ref().map_err(GpuError::again)
+    }
+
+    /// The device if it was opened and waited for already; never waits.
+    pub fn ready(&self) -> Option<&Arc<Gpu>> {
+        self.opened.get().and_then(|o| o.as_ref().ok())
     }
 
     /// Waits for the opening thread's result and takes it.
