@@ -11,6 +11,7 @@
 //! sees every earlier triangle.
 
 mod gpu;
+mod one_pass;
 
 pub(crate) use gpu::coverage;
 pub use gpu::Coverage;

@@ -1,10 +1,11 @@
 //! A draw of geometry on the GPU backend: the primitives assembled here by
 //! `core/raster`'s rules (lists, strips rewound, fans around vertex 0, the
 //! provoking vertex moved first), points set up as the emulator sets them
-//! up, and each primitive rasterised and shaded by the device
-//! (`core::gpu::draw_geometry`); its pixels then take the same path as the
-//! emulator's triangles — `texkill`, the alpha test, the depth test, the
-//! output merger — in drawing order.
+//! up, and either the whole draw run on the device in one pass
+//! (`one_pass.rs` says when) or each primitive rasterised and shaded by the
+//! device (`core::gpu::draw_geometry`), its pixels then taking the same
+//! path as the emulator's triangles — `texkill`, the alpha test, the depth
+//! test, the output merger — in drawing order.
 
 use super::{Drawn, Pass, Stage};
 use crate::core::emu::{self, DrawOutput, PixelInputs};
@@ -175,8 +176,20 @@ pub(super) fn shade_all(
     pass: &mut Pass,
 ) -> Result<Drawn, DrawFailure> {
     let draw = pixel_draw(d, stage, samplers, settings, (pass.width, height));
-    let (primitives, faces, shaded) =
-        on_device(device, shader, g, stage, &draw, viewport, clip_rect)?;
+    let (geometry, faces) = geometry_draw(g, stage, &draw, viewport, clip_rect)?;
+    let refusal = super::one_pass::refusal(device, d, g, pass);
+    crate::core::phases::mark(&format!(
+        "geometry: {}",
+        refusal
+            .as_deref()
+            .map_or("in one pass".into(), |r| format!("per primitive ({r})"))
+    ));
+    if refusal.is_none() {
+        return super::one_pass::draw(device, shader, &geometry, g, settings, pass);
+    }
+    let primitives = &geometry.primitives;
+    let shaded = gpu::draw_geometry(device, shader, &geometry)
+        .map_err(|e| DrawFailure::Message(e.to_string()))?;
     let mut drawn = Drawn {
         merged: MergeStats::default(),
         executed: None,
@@ -229,19 +242,15 @@ fn pixel_draw<'s>(
     draw
 }
 
-/// Each primitive's triangles (vertex indices), its facing and its shaded pixels.
-type OnDevice = (Vec<Vec<[u32; 3]>>, Vec<Face>, Vec<ShadedPrimitive>);
-
-/// Sets `g` up over `stage` and draws it on `device`.
-fn on_device(
-    device: &Gpu,
-    shader: &Shader,
+/// Sets `g` up over `stage` as the device draws it: the draw and each
+/// primitive's facing.
+fn geometry_draw<'d>(
     g: &Geometry,
     stage: &Stage,
-    draw: &emu::Draw,
+    draw: &'d emu::Draw<'d>,
     viewport: &Viewport,
     clip_rect: Rect,
-) -> Result<OnDevice, DrawFailure> {
+) -> Result<(GeometryDraw<'d>, Vec<Face>), DrawFailure> {
     let setup = setup(g, stage, viewport).map_err(DrawFailure::Message)?;
     let setup_faces = setup.faces;
     let flat = stage.slots.iter().fold(0u64, |bits, s| {
@@ -262,9 +271,7 @@ fn on_device(
         cull: g.cull,
         clip_planes: g.clip_planes.iter().map(|p| p.map(|x| x as f32)).collect(),
     };
-    let shaded = gpu::draw_geometry(device, shader, &geometry)
-        .map_err(|e| DrawFailure::Message(e.to_string()))?;
-    Ok((geometry.primitives, setup_faces, shaded))
+    Ok((geometry, setup_faces))
 }
 
 /// Which pixels each primitive of a draw of geometry covers on the
@@ -334,7 +341,9 @@ pub(crate) fn coverage(
     let samplers = crate::jobs::render::bind_samplers(list, d, &d.samplers, states)?;
     let draw = pixel_draw(d, &stage, &samplers, settings, (width, height));
     let shader = &list.shaders[d.shader].loaded.shader;
-    let (_, _, shaded) = on_device(device, shader, g, &stage, &draw, &viewport, clip_rect)?;
+    let (geometry, _) = geometry_draw(g, &stage, &draw, &viewport, clip_rect)?;
+    let shaded = gpu::draw_geometry(device, shader, &geometry)
+        .map_err(|e| DrawFailure::Message(e.to_string()))?;
     c.gpu = shaded.into_iter().map(|s| s.pixels).collect();
     c.gpu.resize(count, Vec::new());
     Ok(c)
