@@ -165,7 +165,7 @@ pub fn draw_geometry(
 
 /// What a draw of geometry must have before anything is made: a shader
 /// and draw the device can run, and the clip distances its planes need.
-fn check(gpu: &Gpu, shader: &Shader, g: &GeometryDraw) -> Result<(), GpuError> {
+pub(super) fn check(gpu: &Gpu, shader: &Shader, g: &GeometryDraw) -> Result<(), GpuError> {
     draw::refuse(gpu, shader, g.pixel)?;
     if !g.clip_planes.is_empty() && !gpu.features.contains(wgpu::Features::CLIP_DISTANCES) {
         return Err(GpuError::Unsupported(

@@ -211,6 +211,14 @@ pub fn draw_one_pass(
     }
     let (w, h) = (g.pixel.target_width, g.pixel.target_height);
     let triangles: usize = g.primitives.iter().map(Vec::len).sum();
+    if g.clip.is_empty() || triangles == 0 {
+        // Nothing to draw: the surface and targets stay as they are.
+        geometry::check(gpu, shader, g)?;
+        return Ok(OnePass {
+            counts: vec![[0, 0]; triangles],
+            ..Default::default()
+        });
+    }
     let scopes = ErrorScopes::push(gpu);
     let tests = DeviceTests {
         depth: surface.map(|s| s.store),

@@ -25,12 +25,11 @@
 //!   [0, 1] first, as the CPU's store does.
 
 use super::builder::{Expr, Fb};
-use super::interface::{self, Interface};
-use super::module::{ty, Ctx};
+use super::interface;
 use naga::{
     AddressSpace, ArraySize, BinaryOperator, Binding, Expression, GlobalVariable, Handle,
     MathFunction, Module, ResourceBinding, Scalar, Span, Statement, StorageAccess, StructMember,
-    TypeInner,
+    Type, TypeInner,
 };
 
 /// The bind group of the counters.
@@ -58,16 +57,13 @@ pub struct DeviceTests {
 
 /// The counters' global: `array<atomic<u32>>` in storage.
 pub(super) fn counts(m: &mut Module) -> Handle<GlobalVariable> {
-    let atomic = ty(m, None, TypeInner::Atomic(Scalar::U32));
-    let array = ty(
-        m,
-        None,
-        TypeInner::Array {
-            base: atomic,
-            size: ArraySize::Dynamic,
-            stride: 4,
-        },
-    );
+    let mut ty = |inner| m.types.insert(Type { name: None, inner }, Span::UNDEFINED);
+    let atomic = ty(TypeInner::Atomic(Scalar::U32));
+    let array = ty(TypeInner::Array {
+        base: atomic,
+        size: ArraySize::Dynamic,
+        stride: 4,
+    });
     m.global_variables.append(
         GlobalVariable {
             name: Some("ps30_counts".into()),
@@ -86,14 +82,14 @@ pub(super) fn counts(m: &mut Module) -> Handle<GlobalVariable> {
     )
 }
 
-/// After `ps_main`: counts the pixel for triangle `primitive` and, killed,
-/// counts it again and discards it.
+/// After `ps_main`: counts the pixel for triangle `primitive` and, where
+/// the shader's `killed` flag (if it kills) is set, counts it again and
+/// discards it.
 pub(super) fn count_and_kill(
     fb: &mut Fb,
-    cx: &Ctx,
     counts: Handle<GlobalVariable>,
     primitive: Expr,
-    kills: bool,
+    killed: Option<Handle<GlobalVariable>>,
 ) {
     let add = |fb: &mut Fb, second: bool| {
         let base = fb.add(Expression::GlobalVariable(counts));
@@ -116,8 +112,8 @@ pub(super) fn count_and_kill(
         });
     };
     add(fb, false);
-    if kills {
-        let p = cx.var(fb, cx.killed);
+    if let Some(k) = killed {
+        let p = fb.add(Expression::GlobalVariable(k));
         let killed = fb.load(p);
         fb.if_then(killed, |fb| {
             add(fb, true);
@@ -163,18 +159,18 @@ pub(super) fn stored_depth(fb: &mut Fb, z: Expr, store: DepthStore) -> Expr {
 /// `@location(4)` = 1.0, a pixel the device wrote, and the depth as
 /// `tests` stores it in `@builtin(frag_depth)` (`oDepth` where written,
 /// else the rasterised z).
+/// `odepth` is the shader's `oDepth` variable, if it writes one; `f32` the
+/// module's float type.
 pub(super) fn outputs(
-    cx: &Ctx,
-    iface: &Interface,
     fb: &mut Fb,
-    tests: DeviceTests,
+    (tests, f32, odepth): (DeviceTests, Handle<Type>, Option<Handle<GlobalVariable>>),
     position: Expr,
     (members, values): (&mut Vec<StructMember>, &mut Vec<Expr>),
     mut offset: u32,
 ) -> u32 {
     members.push(StructMember {
         name: Some("written".into()),
-        ty: cx.t.f32,
+        ty: f32,
         binding: Some(Binding::Location {
             location: interface::GEOMETRY_FLAGS_LOCATION,
             interpolation: None,
@@ -187,17 +183,17 @@ pub(super) fn outputs(
     values.push(fb.f32(1.0));
     offset += 4;
     if let Some(store) = tests.depth {
-        let z = match iface.depth {
-            true => {
-                let p = cx.var(fb, cx.depth);
+        let z = match odepth {
+            Some(o) => {
+                let p = fb.add(Expression::GlobalVariable(o));
                 let d = fb.load(p);
                 fb.index(d, 0)
             }
-            false => fb.index(position, 2),
+            None => fb.index(position, 2),
         };
         members.push(StructMember {
             name: Some("depth".into()),
-            ty: cx.t.f32,
+            ty: f32,
             binding: Some(Binding::BuiltIn(naga::BuiltIn::FragDepth)),
             offset,
         });

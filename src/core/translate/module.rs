@@ -591,7 +591,8 @@ pub(super) fn entry_point(
     if tests.is_some() {
         let counts = super::device_tests::counts(m);
         let primitive = fb.add(Expression::FunctionArgument(args.len() as u32 - 1));
-        super::device_tests::count_and_kill(&mut fb, cx, counts, primitive, iface.kills);
+        let killed = iface.kills.then_some(cx.killed);
+        super::device_tests::count_and_kill(&mut fb, counts, primitive, killed);
     }
 
     let result = outputs(m, cx, iface, &mut fb, entry, position);
@@ -736,11 +737,10 @@ fn outputs(
         tests: Some(tests), ..
     } = entry
     {
+        let odepth = iface.depth.then_some(cx.depth);
         offset = super::device_tests::outputs(
-            cx,
-            iface,
             fb,
-            tests,
+            (tests, t.f32, odepth),
             position,
             (&mut members, &mut values),
             offset,

@@ -13,6 +13,7 @@ use crate::core::gpu::{self, GeometryDraw, Gpu, ShadedPrimitive};
 use crate::core::ir::Shader;
 use crate::core::merge::MergeStats;
 use crate::core::raster::clip::{self, VIEW_VOLUME};
+use crate::core::raster::fog::{Fog, FogMode};
 use crate::core::raster::triangle::Window;
 use crate::core::raster::{self, Face, Primitive, Rect, Viewport};
 use crate::jobs::backend::Backend;
@@ -160,24 +161,59 @@ fn point_corner(
     out.map(|v| v as f32)
 }
 
+/// What a draw on the device needs besides its step and geometry.
+pub(super) struct Context<'c, 's> {
+    pub viewport: &'c Viewport,
+    /// The pixels the draw may write.
+    pub clip_rect: Rect,
+    pub samplers: &'c [(u32, emu::TextureLevels<'s>, emu::SamplerState)],
+    pub settings: &'c Settings,
+    /// The target's height.
+    pub height: u32,
+    /// Fixed-function fog after a ps_2_0/ps_2_x shader.
+    pub fog: Option<Fog>,
+}
+
+/// Refuses, by name, the fog the GPU backend does not draw: vertex fog
+/// (the device does not carry the interpolated fog factor to its pixels)
+/// and table fog after a shader that writes `oDepth` (the device's pixels
+/// bring back `oDepth`, not the interpolated z table fog reads). Table fog
+/// otherwise runs on the CPU from each pixel's rasterised z, as the
+/// emulator's does from its own.
+pub(super) fn refuse_fog(shader: &Shader, fog: Option<&Fog>) -> Result<(), DrawFailure> {
+    let Some(fog) = fog else {
+        return Ok(());
+    };
+    let odepth = shader.program().instructions.iter().any(|i| {
+        i.dst
+            .as_ref()
+            .is_some_and(|d| d.reg.file == crate::core::isa::RegFile::DepthOut)
+    });
+    let why = match (fog.mode, odepth) {
+        (FogMode::Vertex, _) => "vertex fog (mode \"vertex\") is drawn on the emulator only: the GPU backend does not carry the interpolated fog factor to its pixels",
+        (_, true) => "table fog after a shader that writes oDepth is drawn on the emulator only: the GPU backend's pixels bring back oDepth, not the interpolated z that fog reads",
+        _ => return Ok(()),
+    };
+    Err(DrawFailure::Message(format!("geometry.fog: {why}")))
+}
+
 /// Every primitive of `g` drawn on `device` and taken into `pass`.
-#[allow(clippy::too_many_arguments)]
 pub(super) fn shade_all(
     device: &Gpu,
     shader: &Shader,
     d: &DrawStep,
     g: &Geometry,
     stage: &Stage,
-    viewport: &Viewport,
-    clip_rect: Rect,
-    samplers: &[(u32, emu::TextureLevels<'_>, emu::SamplerState)],
-    settings: &Settings,
-    height: u32,
+    c: &Context,
     pass: &mut Pass,
 ) -> Result<Drawn, DrawFailure> {
-    let draw = pixel_draw(d, stage, samplers, settings, (pass.width, height));
+    let (viewport, clip_rect, settings) = (c.viewport, c.clip_rect, c.settings);
+    let draw = pixel_draw(d, stage, c.samplers, settings, (pass.width, c.height));
     let (geometry, faces) = geometry_draw(g, stage, &draw, viewport, clip_rect)?;
-    let refusal = super::one_pass::refusal(device, d, g, pass);
+    let refusal = match c.fog {
+        Some(_) => Some("fog runs on the CPU".into()),
+        None => super::one_pass::refusal(device, d, g, pass),
+    };
     crate::core::phases::mark(&format!(
         "geometry: {}",
         refusal
@@ -213,7 +249,16 @@ pub(super) fn shade_all(
             })?;
         drawn.triangles += prim.len() as u64;
         drawn.shaded += s.pixels.len() as u64;
-        let (window, out) = window(s, pass.width);
+        let (window, mut out) = window(s, pass.width);
+        if let (Some(f), Some(Some(colors))) = (&c.fog, out.color.first_mut()) {
+            // Table fog from each pixel's rasterised z (`s.depth`: the
+            // shader writes no oDepth, `refuse_fog` says).
+            for (i, color) in colors.iter_mut().enumerate() {
+                if window.inputs.covered[i] {
+                    *color = f.blend(*color, f.factor(window.depth[i]));
+                }
+            }
+        }
         pass.take(&window, &out, d.pixel.alpha_test, face)?;
     }
     Ok(drawn)
