@@ -368,3 +368,45 @@ fn vertex_texture_fetch_filters_and_borders_as_the_emulator() {
         }
     }
 }
+
+#[test]
+fn points_are_never_culled_on_the_device() {
+    // points.json under D3DCULL_CW: D3DRS_CULLMODE culls triangles only, so
+    // a point's square (clockwise on screen) is drawn on both backends.
+    let dir = repo().join("tests/draw_conformance");
+    let text = std::fs::read_to_string(dir.join("points.json")).unwrap();
+    let mut list: serde_json::Value = serde_json::from_str(&text).unwrap();
+    for s in list["steps"].as_array_mut().unwrap() {
+        if let Some(shader) = s["shader"].as_str() {
+            s["shader"] = dir.join(shader).to_str().unwrap().into();
+        }
+        if !s["geometry"].is_null() {
+            s["geometry"]["cull"] = "cw".into();
+        }
+    }
+    let tmp = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("points_cw.json");
+    std::fs::write(&tmp, serde_json::to_string(&list).unwrap()).unwrap();
+    let o = ps30(
+        &["compare", "--list", tmp.to_str().unwrap(), "--json", "-q"],
+        repo(),
+    );
+    let err = stderr(&o);
+    if o.status.code() == Some(2)
+        && err.contains("no GPU adapter")
+        && std::env::var_os("CI").is_none()
+    {
+        eprintln!("points on the GPU: skipped: {err}");
+        return;
+    }
+    let json: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap_or_default();
+    assert_eq!(o.status.code(), Some(0), "{err}\n{json}");
+    for step in json["steps"].as_array().unwrap() {
+        for ch in step["comparison"]["channels"].as_array().unwrap() {
+            assert_eq!(ch["identical"], ch["pixels"], "{ch}");
+        }
+        if let Some(cov) = step.get("coverage") {
+            assert_eq!(cov["emulator_only"], 0, "{cov}");
+            assert_eq!(cov["gpu_only"], 0, "{cov}");
+        }
+    }
+}

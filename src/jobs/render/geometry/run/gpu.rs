@@ -313,7 +313,12 @@ fn geometry_draw<'d>(
         primitives: setup.primitives,
         viewport: *viewport,
         clip: clip_rect,
-        cull: g.cull,
+        // D3DRS_CULLMODE culls triangles; a point's square (clockwise, so
+        // front) is never culled, as the emulator's points are not.
+        cull: match g.primitive {
+            Primitive::PointList => raster::Cull::None,
+            _ => g.cull,
+        },
         clip_planes: g.clip_planes.iter().map(|p| p.map(|x| x as f32)).collect(),
     };
     Ok((geometry, setup_faces))
