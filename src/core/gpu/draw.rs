@@ -943,7 +943,8 @@ impl Bindings {
         let mut views = Vec::new();
         let mut samplers = Vec::new();
         for s in &iface.samplers {
-            let (view, sampler) = bind_sampler(gpu, draw, s.register, s.ty, &mut block)?;
+            let records = &mut block[interface::SAMPLERS_OFFSET as usize..];
+            let (view, sampler) = bind_sampler(gpu, draw, s.register, s.ty, records)?;
             views.push((s.texture_binding, view));
             samplers.push((s.sampler_binding, sampler));
         }
@@ -1008,7 +1009,10 @@ fn entry(binding: u32, ty: wgpu::BindingType) -> wgpu::BindGroupLayoutEntry {
 }
 
 /// A float texture binding of `view_dimension` (a 2D array: the draw's inputs).
-fn texture_type(filterable: bool, view_dimension: wgpu::TextureViewDimension) -> wgpu::BindingType {
+pub(super) fn texture_type(
+    filterable: bool,
+    view_dimension: wgpu::TextureViewDimension,
+) -> wgpu::BindingType {
     wgpu::BindingType::Texture {
         sample_type: wgpu::TextureSampleType::Float { filterable },
         view_dimension,
@@ -1113,13 +1117,14 @@ fn specialisation_for(
 
 /// Sampler `register`: its texture uploaded, its D3D9 state mapped to a
 /// wgpu sampler and view, and what the shader applies itself written into
-/// `block`'s record for it.
-fn bind_sampler(
+/// its record of `records` (the constant block's sampler records, s0's
+/// first: a pixel and a vertex block place them apart).
+pub(super) fn bind_sampler(
     gpu: &Gpu,
     draw: &Draw,
     register: u32,
     ty: SamplerType,
-    block: &mut [u8],
+    records: &mut [u8],
 ) -> Result<(wgpu::TextureView, wgpu::Sampler), GpuError> {
     let (levels, _) = bound(draw, register);
     let mapped = mapped(gpu.clamp_to_border(), draw, register, ty)?;
@@ -1128,7 +1133,7 @@ fn bind_sampler(
             "s{register} filters linearly and the device cannot filter 32-bit float textures (FLOAT32_FILTERABLE)"
         )));
     }
-    block[interface::SAMPLERS_OFFSET as usize + 64 * register as usize..][..64]
+    records[interface::SAMPLER_STATE_SIZE as usize * register as usize..][..64]
         .copy_from_slice(&mapped.block);
     let up = texture::upload(gpu, levels, ty, register)?;
     let view = up.texture.create_view(&wgpu::TextureViewDescriptor {

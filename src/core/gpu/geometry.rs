@@ -36,11 +36,13 @@
 //! * **Points** come as two triangles each, their corners set up by the
 //!   caller as the emulator sets them up.
 //!
-//! Each primitive is drawn in a render pass of its own and read back, so
-//! that the caller can take its pixels through the alpha test, the depth
-//! test and the output merger in drawing order, as the emulator does with
-//! its own: the device decides coverage, interpolation and the shader's
-//! results, the CPU what every GPU-backend draw leaves to it.
+//! Here each primitive is drawn in a render pass of its own and read back,
+//! so that the caller can take its pixels through the alpha test, the
+//! depth test and the output merger in drawing order, as the emulator does
+//! with its own: the device decides coverage, interpolation and the
+//! shader's results, the CPU the rest. A draw whose tests the device can
+//! run itself goes to [`super::draw_one_pass`] instead, on the same
+//! pipeline set-up.
 
 use super::draw::{self, Bindings, ErrorScopes};
 use super::{Gpu, GpuError};
@@ -107,31 +109,28 @@ pub fn draw_geometry(
     g: &GeometryDraw,
 ) -> Result<Vec<ShadedPrimitive>, GpuError> {
     phases::mark("geometry: preparing");
-    let draw = g.pixel;
-    draw::refuse(gpu, shader, draw)?;
-    if !g.clip_planes.is_empty() && !gpu.features.contains(wgpu::Features::CLIP_DISTANCES) {
-        return Err(GpuError::Unsupported(
-            "user clip planes need the device feature CLIP_DISTANCES, which this device lacks"
-                .into(),
-        ));
-    }
-    let (w, h) = (draw.target_width, draw.target_height);
+    let (w, h) = (g.pixel.target_width, g.pixel.target_height);
     if g.clip.is_empty() || g.primitives.is_empty() {
+        check(gpu, shader, g)?;
         return Ok(vec![ShadedPrimitive::default(); g.primitives.len()]);
     }
-    let mut spec = draw::specialisation(gpu, shader, draw)?;
-    // Interpolated inputs arrive as the device made them: the shader
-    // flushes them itself where the float rules flush.
-    spec.set_inputs_flushed(false);
-    let entry = Entry::Geometry { flat: g.flat };
-    let t = translate::translate_specialised(shader, draw.float_rules, entry, &spec)
-        .map_err(GpuError::Translate)?;
-    let iface = t.interface;
     let scopes = ErrorScopes::push(gpu);
-    let layout = draw::bind_group_layout(gpu, &iface, false);
-    let bindings = Bindings::new(gpu, draw, &iface, (&layout, false))?;
+    let Fragment {
+        iface,
+        module,
+        layout,
+        bindings,
+    } = fragment_stage(gpu, shader, g, None)?;
     let formats = attachment_formats(&iface);
-    let pipeline = pipeline(gpu, g, &iface, t.module, &layout, &formats)?;
+    let targets: Vec<Option<wgpu::ColorTargetState>> =
+        formats.iter().map(|f| f.map(Into::into)).collect();
+    let stages = Stages {
+        fragment: module,
+        layouts: &[&layout],
+        targets: &targets,
+        depth_stencil: None,
+    };
+    let pipeline = pipeline(gpu, g, &iface, stages)?;
     let (vertices, indices) = buffers(gpu, g);
     let attachments: Vec<Option<wgpu::Texture>> = formats
         .iter()
@@ -163,13 +162,65 @@ pub fn draw_geometry(
     Ok(out)
 }
 
+/// What a draw of geometry must have before anything is made: a shader
+/// and draw the device can run, and the clip distances its planes need.
+pub(super) fn check(gpu: &Gpu, shader: &Shader, g: &GeometryDraw) -> Result<(), GpuError> {
+    draw::refuse(gpu, shader, g.pixel)?;
+    if !g.clip_planes.is_empty() && !gpu.features.contains(wgpu::Features::CLIP_DISTANCES) {
+        return Err(GpuError::Unsupported(
+            "user clip planes need the device feature CLIP_DISTANCES, which this device lacks"
+                .into(),
+        ));
+    }
+    Ok(())
+}
+
+/// The translated pixel shader and its group-0 bindings, uploaded.
+pub(super) struct Fragment {
+    pub iface: translate::Interface,
+    pub module: naga::Module,
+    pub layout: wgpu::BindGroupLayout,
+    pub bindings: Bindings,
+}
+
+/// Checks `g`, translates `shader` as its fragment stage (`tests` as
+/// [`Entry::Geometry`] takes them) and uploads what it binds.
+pub(super) fn fragment_stage(
+    gpu: &Gpu,
+    shader: &Shader,
+    g: &GeometryDraw,
+    tests: Option<translate::device_tests::DeviceTests>,
+) -> Result<Fragment, GpuError> {
+    check(gpu, shader, g)?;
+    let draw = g.pixel;
+    let mut spec = draw::specialisation(gpu, shader, draw)?;
+    // Interpolated inputs arrive as the device made them: the shader
+    // flushes them itself where the float rules flush.
+    spec.set_inputs_flushed(false);
+    let entry = Entry::Geometry {
+        flat: g.flat,
+        tests,
+    };
+    let t = translate::translate_specialised(shader, draw.float_rules, entry, &spec)
+        .map_err(GpuError::Translate)?;
+    let iface = t.interface;
+    let layout = draw::bind_group_layout(gpu, &iface, false);
+    let bindings = Bindings::new(gpu, draw, &iface, (&layout, false))?;
+    Ok(Fragment {
+        iface,
+        module: t.module,
+        layout,
+        bindings,
+    })
+}
+
 /// The pipeline's objects one chunk of primitives is drawn with.
-struct Resources<'r> {
-    pipeline: &'r wgpu::RenderPipeline,
-    group: &'r wgpu::BindGroup,
-    vertices: &'r wgpu::Buffer,
-    indices: &'r wgpu::Buffer,
-    attachments: &'r [Option<wgpu::Texture>],
+pub(super) struct Resources<'r> {
+    pub pipeline: &'r wgpu::RenderPipeline,
+    pub group: &'r wgpu::BindGroup,
+    pub vertices: &'r wgpu::Buffer,
+    pub indices: &'r wgpu::Buffer,
+    pub attachments: &'r [Option<wgpu::Texture>],
 }
 
 /// The colour attachments by location: `oC#` unrounded, the flags, the
@@ -185,7 +236,7 @@ fn attachment_formats(iface: &translate::Interface) -> Vec<Option<wgpu::TextureF
 }
 
 /// Bytes per read-back row of a `w`-texel row of `format`.
-fn pitch(w: u32, format: &wgpu::TextureFormat) -> u32 {
+pub(super) fn pitch(w: u32, format: &wgpu::TextureFormat) -> u32 {
     let texel = format.block_copy_size(None).unwrap_or(16);
     (w * texel).div_ceil(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT) * wgpu::COPY_BYTES_PER_ROW_ALIGNMENT
 }
@@ -209,16 +260,32 @@ fn vertex_stage(g: &GeometryDraw, iface: &translate::Interface) -> naga::Module 
     })
 }
 
+/// What a geometry pipeline is made of besides its vertex stage.
+pub(super) struct Stages<'s> {
+    /// The translated pixel shader.
+    pub fragment: naga::Module,
+    /// The bind-group layouts, group 0 first.
+    pub layouts: &'s [&'s wgpu::BindGroupLayout],
+    /// The colour targets by location.
+    pub targets: &'s [Option<wgpu::ColorTargetState>],
+    /// The depth-stencil state, where the device tests.
+    pub depth_stencil: Option<wgpu::DepthStencilState>,
+}
+
 /// The render pipeline: the vertex stage of [`vertex_stage`] and the
 /// translated pixel shader.
-fn pipeline(
+pub(super) fn pipeline(
     gpu: &Gpu,
     g: &GeometryDraw,
     iface: &translate::Interface,
-    fragment: naga::Module,
-    layout: &wgpu::BindGroupLayout,
-    formats: &[Option<wgpu::TextureFormat>],
+    stages: Stages,
 ) -> Result<wgpu::RenderPipeline, GpuError> {
+    let Stages {
+        fragment,
+        layouts,
+        targets,
+        depth_stencil,
+    } = stages;
     let device = &gpu.device;
     let vertex = vertex_stage(g, iface);
     let vs = device.create_shader_module(wgpu::ShaderModuleDescriptor {
@@ -231,7 +298,7 @@ fn pipeline(
     });
     let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
         label: None,
-        bind_group_layouts: &[Some(layout)],
+        bind_group_layouts: &layouts.iter().map(|l| Some(*l)).collect::<Vec<_>>(),
         immediate_size: 0,
     });
     let attributes: Vec<wgpu::VertexAttribute> = (0..=g.slots.len() as u32)
@@ -242,8 +309,6 @@ fn pipeline(
         })
         .collect();
     let stride = 16 * (1 + g.slots.len() as u64);
-    let targets: Vec<Option<wgpu::ColorTargetState>> =
-        formats.iter().map(|f| f.map(Into::into)).collect();
     let cull_mode = match (g.cull.drops(Face::Front), g.cull.drops(Face::Back)) {
         (true, _) => Some(wgpu::Face::Front),
         (_, true) => Some(wgpu::Face::Back),
@@ -269,13 +334,13 @@ fn pipeline(
                 cull_mode,
                 ..Default::default()
             },
-            depth_stencil: None,
+            depth_stencil,
             multisample: Default::default(),
             fragment: Some(wgpu::FragmentState {
                 module: &fs,
                 entry_point: Some("ps30_geometry"),
                 compilation_options: Default::default(),
-                targets: &targets,
+                targets,
             }),
             multiview_mask: None,
             cache: None,
@@ -285,7 +350,7 @@ fn pipeline(
 
 /// The vertex buffer (position then each value, per vertex) and the index
 /// buffer (every primitive's triangles in order).
-fn buffers(gpu: &Gpu, g: &GeometryDraw) -> (wgpu::Buffer, wgpu::Buffer) {
+pub(super) fn buffers(gpu: &Gpu, g: &GeometryDraw) -> (wgpu::Buffer, wgpu::Buffer) {
     let mut bytes: Vec<u8> = Vec::new();
     for (p, values) in g.positions.iter().zip(&g.values) {
         for v in std::iter::once(p).chain(values) {
@@ -419,6 +484,12 @@ fn record_primitive(
         color_attachments: &color_attachments,
         ..Default::default()
     });
+    bind_pass(&mut pass, g, r);
+    pass.draw_indexed(indices, 0, 0..1);
+}
+
+/// Sets the pass's viewport, scissor, pipeline and buffers for `g`.
+pub(super) fn bind_pass(pass: &mut wgpu::RenderPass, g: &GeometryDraw, r: &Resources) {
     let v = match g.transformed {
         true => Viewport::whole(g.pixel.target_width, g.pixel.target_height),
         false => g.viewport,
@@ -437,7 +508,6 @@ fn record_primitive(
     pass.set_bind_group(0, r.group, &[]);
     pass.set_vertex_buffer(0, r.vertices.slice(..));
     pass.set_index_buffer(r.indices.slice(..), wgpu::IndexFormat::Uint32);
-    pass.draw_indexed(indices, 0, 0..1);
 }
 
 /// Each primitive's covered pixels from the mapped read-back buffers.

@@ -34,6 +34,7 @@
 mod draw;
 mod geometry;
 mod inputs;
+mod one_pass;
 mod runtime_dir;
 mod sampler;
 mod teardown;
@@ -45,6 +46,9 @@ pub use draw::{
     translate_ahead, GpuOutput, Prepared, TargetKind, Translated,
 };
 pub use geometry::{draw_geometry, GeometryDraw, ShadedPrimitive};
+pub use one_pass::{
+    draw_one_pass, one_pass_lacks, Compare, DepthSurface, OnePass, StencilSide, StencilTest,
+};
 pub use teardown::{hand_off_at_exit, leave_at_exit};
 pub use vertex::run_vertices;
 
@@ -244,12 +248,17 @@ impl Drop for Opening {
 }
 
 /// Features used when the adapter has them: BORDER addressing with a
-/// colour, linear filtering of 32-bit float textures, and clip distances
-/// for the user clip planes of draws of geometry (all exist on llvmpipe
-/// and on current desktop GPUs).
+/// colour, linear filtering of 32-bit float textures, clip distances
+/// for the user clip planes of draws of geometry, and for a draw of
+/// geometry in one pass the primitive index, blending into 32-bit floats
+/// and a 32-bit float depth with stencil (all exist on llvmpipe and on
+/// current desktop GPUs).
 const WANTED: wgpu::Features = wgpu::Features::ADDRESS_MODE_CLAMP_TO_BORDER
     .union(wgpu::Features::FLOAT32_FILTERABLE)
-    .union(wgpu::Features::CLIP_DISTANCES);
+    .union(wgpu::Features::CLIP_DISTANCES)
+    .union(wgpu::Features::PRIMITIVE_INDEX)
+    .union(wgpu::Features::FLOAT32_BLENDABLE)
+    .union(wgpu::Features::DEPTH32FLOAT_STENCIL8);
 
 impl Gpu {
     /// Opens the first Vulkan adapter (a real GPU is preferred to a CPU one).

@@ -13,12 +13,12 @@
 use super::{Gpu, GpuError};
 use crate::core::emu::vertex::{self, VertexDraw, VertexOutput, Vertices};
 use crate::core::ir::Shader;
+use crate::core::translate::interface;
 use crate::core::translate::vertex as tv;
 use std::borrow::Cow;
 
-/// Runs `shader` over `vertices` on `gpu` with `draw`'s constants: what
-/// [`vertex::run`] computes, with `executed` empty. vs_3_0's `texldl` is
-/// refused (the translation does not lower it yet).
+/// Runs `shader` over `vertices` on `gpu` with `draw`'s constants and
+/// vertex textures: what [`vertex::run`] computes, with `executed` empty.
 pub fn run_vertices(
     gpu: &Gpu,
     shader: &Shader,
@@ -58,13 +58,9 @@ pub fn run_vertices(
         input.extend(vertex::vertex_inputs(&bound, vertices, v));
     }
     let scopes = super::draw::ErrorScopes::push(gpu);
-    let out = dispatch(
-        gpu,
-        t.module,
-        &constant_block(shader, draw),
-        &input,
-        out_bytes,
-    )?;
+    let mut block = constant_block(shader, draw);
+    let textures = textures(gpu, shader, draw, &mut block)?;
+    let out = dispatch(gpu, t.module, (&block, &textures), &input, out_bytes)?;
     scopes.pop(gpu)?;
     let values = (0..count)
         .map(|v| {
@@ -102,11 +98,79 @@ fn constant_block(shader: &Shader, draw: &VertexDraw) -> Vec<u8> {
     bytes
 }
 
+/// A declared sampler's view and sampler, with its texture and sampler
+/// bindings.
+struct Bound {
+    register: u32,
+    view: wgpu::TextureView,
+    sampler: wgpu::Sampler,
+    dimension: wgpu::TextureViewDimension,
+}
+
+/// Every sampler `shader` declares (`texldl`'s vertex textures): uploaded
+/// and mapped as a pixel shader's are (`draw::bind_sampler`), each
+/// record written into `block`.
+fn textures(
+    gpu: &Gpu,
+    shader: &Shader,
+    draw: &VertexDraw,
+    block: &mut [u8],
+) -> Result<Vec<Bound>, GpuError> {
+    let mut pixel = crate::core::emu::Draw::new(1, 1);
+    pixel.samplers = draw.samplers.clone();
+    pixel.float_rules = draw.float_rules;
+    let records = &mut block[tv::SAMPLERS_OFFSET as usize..];
+    shader
+        .program()
+        .samplers
+        .iter()
+        .map(|d| {
+            let (view, sampler) = super::draw::bind_sampler(gpu, &pixel, d.index, d.ty, records)?;
+            Ok(Bound {
+                register: d.index,
+                view,
+                sampler,
+                dimension: super::texture::view_dimension(d.ty),
+            })
+        })
+        .collect()
+}
+
+/// The layout entries of `textures`, seen by the compute stage.
+fn texture_entries(gpu: &Gpu, textures: &[Bound]) -> Vec<wgpu::BindGroupLayoutEntry> {
+    let filterable = gpu.float32_filterable();
+    let entry = |binding, ty| wgpu::BindGroupLayoutEntry {
+        binding,
+        visibility: wgpu::ShaderStages::COMPUTE,
+        ty,
+        count: None,
+    };
+    textures
+        .iter()
+        .flat_map(|b| {
+            let kind = match filterable {
+                true => wgpu::SamplerBindingType::Filtering,
+                false => wgpu::SamplerBindingType::NonFiltering,
+            };
+            [
+                entry(
+                    interface::texture_binding(b.register),
+                    super::draw::texture_type(filterable, b.dimension),
+                ),
+                entry(
+                    interface::sampler_binding(b.register),
+                    wgpu::BindingType::Sampler(kind),
+                ),
+            ]
+        })
+        .collect()
+}
+
 /// Compiles `module`, runs it over the inputs and reads the output rows back.
 fn dispatch(
     gpu: &Gpu,
     module: naga::Module,
-    constants: &[u8],
+    (constants, textures): (&[u8], &[Bound]),
     input: &[[f32; 4]],
     out_bytes: u64,
 ) -> Result<Vec<[f32; 4]>, GpuError> {
@@ -119,22 +183,24 @@ fn dispatch(
     // An explicit layout: a shader that reads no constant (or no input)
     // still binds all three buffers.
     let buffer_entry = super::compute_buffer;
+    let mut entries = vec![
+        buffer_entry(
+            interface::CONSTANTS_BINDING,
+            wgpu::BufferBindingType::Uniform,
+        ),
+        buffer_entry(
+            tv::INPUTS_BINDING,
+            wgpu::BufferBindingType::Storage { read_only: true },
+        ),
+        buffer_entry(
+            tv::OUTPUTS_BINDING,
+            wgpu::BufferBindingType::Storage { read_only: false },
+        ),
+    ];
+    entries.extend(texture_entries(gpu, textures));
     let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
         label: Some("ps30 vertex bindings"),
-        entries: &[
-            buffer_entry(
-                crate::core::translate::interface::CONSTANTS_BINDING,
-                wgpu::BufferBindingType::Uniform,
-            ),
-            buffer_entry(
-                tv::INPUTS_BINDING,
-                wgpu::BufferBindingType::Storage { read_only: true },
-            ),
-            buffer_entry(
-                tv::OUTPUTS_BINDING,
-                wgpu::BufferBindingType::Storage { read_only: false },
-            ),
-        ],
+        entries: &entries,
     });
     let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
         label: Some("ps30 vertices"),
@@ -178,17 +244,25 @@ fn dispatch(
         usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
         mapped_at_creation: false,
     });
+    let mut group_entries = vec![
+        bind_entry(interface::CONSTANTS_BINDING, &uniform),
+        bind_entry(tv::INPUTS_BINDING, &inputs),
+        bind_entry(tv::OUTPUTS_BINDING, &outputs),
+    ];
+    for b in textures {
+        group_entries.push(wgpu::BindGroupEntry {
+            binding: interface::texture_binding(b.register),
+            resource: wgpu::BindingResource::TextureView(&b.view),
+        });
+        group_entries.push(wgpu::BindGroupEntry {
+            binding: interface::sampler_binding(b.register),
+            resource: wgpu::BindingResource::Sampler(&b.sampler),
+        });
+    }
     let bind = device.create_bind_group(&wgpu::BindGroupDescriptor {
         label: None,
         layout: &layout,
-        entries: &[
-            bind_entry(
-                crate::core::translate::interface::CONSTANTS_BINDING,
-                &uniform,
-            ),
-            bind_entry(tv::INPUTS_BINDING, &inputs),
-            bind_entry(tv::OUTPUTS_BINDING, &outputs),
-        ],
+        entries: &group_entries,
     });
     let vertices = input.len() as u32 / tv::INPUT_ROWS;
     let mut encoder = device.create_command_encoder(&Default::default());

@@ -41,6 +41,7 @@
 
 mod builder;
 mod cube;
+pub mod device_tests;
 pub mod fixed;
 mod flow;
 pub mod header;
@@ -319,18 +320,23 @@ fn divergent_derivative(shader: &Shader) -> Option<usize> {
 const MAIN: u32 = u32::MAX;
 
 fn validate(module: &naga::Module) -> Result<naga::valid::ModuleInfo, String> {
-    Validator::new(ValidationFlags::all(), Capabilities::default())
-        .validate(module)
-        .map_err(|e| {
-            let mut s = e.to_string();
-            let mut source = std::error::Error::source(e.as_inner());
-            while let Some(inner) = source {
-                s.push_str(": ");
-                s.push_str(&inner.to_string());
-                source = inner.source();
-            }
-            s
-        })
+    // PRIMITIVE_INDEX: the one-pass geometry entry point counts per
+    // triangle (`device_tests`); no other entry point reads it.
+    Validator::new(
+        ValidationFlags::all(),
+        Capabilities::default() | Capabilities::PRIMITIVE_INDEX,
+    )
+    .validate(module)
+    .map_err(|e| {
+        let mut s = e.to_string();
+        let mut source = std::error::Error::source(e.as_inner());
+        while let Some(inner) = source {
+            s.push_str(": ");
+            s.push_str(&inner.to_string());
+            source = inner.source();
+        }
+        s
+    })
 }
 
 fn derivative_uniformity_off(module: &mut naga::Module) {

@@ -423,6 +423,12 @@ pub enum Entry {
     Geometry {
         /// Flat-shaded components, bit `4·slot + c`.
         flat: u64,
+        /// `Some` for a whole draw in one render pass
+        /// ([`super::device_tests`]): texkill discards, the depth is
+        /// written as the surface stores it, covered and killed pixels are
+        /// counted per triangle, and `@location(4)` holds 1.0 (no depth at
+        /// `@location(5)`).
+        tests: Option<super::device_tests::DeviceTests>,
     },
 }
 
@@ -491,7 +497,7 @@ pub(super) fn entry_point(
             names.push(format!("v{}", i.register));
         }
     }
-    if let Entry::Geometry { flat } = entry {
+    if let Entry::Geometry { flat, .. } = entry {
         for (i, (slot, smooth, flat)) in iface
             .inputs
             .iter()
@@ -506,6 +512,19 @@ pub(super) fn entry_point(
                 names.push(format!("v{slot}_flat"));
             }
         }
+    }
+    let tests = match entry {
+        Entry::Geometry { tests, .. } => tests,
+        _ => None,
+    };
+    if tests.is_some() {
+        let u32_ty = ty(m, None, TypeInner::Scalar(Scalar::U32));
+        args.push((
+            "primitive_index",
+            u32_ty,
+            Binding::BuiltIn(BuiltIn::PrimitiveIndex),
+        ));
+        names.push("primitive_index".into());
     }
     for ((name, ty, binding), name_of) in args.iter().zip(&names) {
         let name = if *name == "v" {
@@ -561,7 +580,7 @@ pub(super) fn entry_point(
             }
         }
         Entry::Draw => draw_inputs(m, cx, iface, &mut fb, centre),
-        Entry::Geometry { flat } => geometry_inputs(cx, iface, &mut fb, flat),
+        Entry::Geometry { flat, .. } => geometry_inputs(cx, iface, &mut fb, flat),
     }
 
     fb.push(Statement::Call {
@@ -569,6 +588,12 @@ pub(super) fn entry_point(
         arguments: Vec::new(),
         result: None,
     });
+    if tests.is_some() {
+        let counts = super::device_tests::counts(m);
+        let primitive = fb.add(Expression::FunctionArgument(args.len() as u32 - 1));
+        let killed = iface.kills.then_some(cx.killed);
+        super::device_tests::count_and_kill(&mut fb, counts, primitive, killed);
+    }
 
     let result = outputs(m, cx, iface, &mut fb, entry, position);
     fb.f.result = result.map(|ty| naga::FunctionResult { ty, binding: None });
@@ -708,7 +733,19 @@ fn outputs(
         let p = cx.var(fb, cx.outputs[k as usize]);
         values.push(fb.load(p));
     }
-    if let Entry::Geometry { .. } = entry {
+    if let Entry::Geometry {
+        tests: Some(tests), ..
+    } = entry
+    {
+        let odepth = iface.depth.then_some(cx.depth);
+        offset = super::device_tests::outputs(
+            fb,
+            (tests, t.f32, odepth),
+            position,
+            (&mut members, &mut values),
+            offset,
+        );
+    } else if let Entry::Geometry { .. } = entry {
         let u32_ty = ty(m, None, TypeInner::Scalar(Scalar::U32));
         members.push(StructMember {
             name: Some("flags".into()),

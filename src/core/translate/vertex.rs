@@ -47,9 +47,12 @@ pub use super::module::{VertexVars, VERTEX_FLOATS as FLOATS};
 pub const INTS_OFFSET: u32 = FLOATS * 16;
 /// Byte offset of `b0` in a vertex shader's constant block.
 pub const BOOLS_OFFSET: u32 = INTS_OFFSET + 16 * 16;
-/// Bytes of a vertex shader's constant block (the sampler records after
-/// the booleans included, as in the pixel block).
-pub const CONSTANTS_SIZE: u32 = BOOLS_OFFSET + 16 * 16 + 16 * super::interface::SAMPLER_STATE_SIZE;
+/// Byte offset of `s0`'s sampler record (after the booleans, as in the
+/// pixel block).
+pub const SAMPLERS_OFFSET: u32 = BOOLS_OFFSET + 16 * 16;
+/// Bytes of a vertex shader's constant block (the sampler records
+/// included).
+pub const CONSTANTS_SIZE: u32 = SAMPLERS_OFFSET + 16 * super::interface::SAMPLER_STATE_SIZE;
 /// Binding of the input storage buffer: 16 `vec4<f32>` per vertex.
 pub const INPUTS_BINDING: u32 = 41;
 /// Binding of the output storage buffer: [`ROWS`] `vec4<f32>` per vertex.
@@ -66,7 +69,9 @@ pub const ENTRY: &str = "ps30_vertices";
 /// Lowers a vertex shader into a module with the compute entry point
 /// [`ENTRY`], validated. Every constant is read from the constant block at
 /// run time (its `def`s as literals where read directly; the block holds
-/// them too, for relative reads). vs_3_0's `texldl` is not lowered yet.
+/// them too, for relative reads). vs_3_0's `texldl` samples `s0`–`s3` at
+/// its explicit level, each sampler's state read from its record in the
+/// block as a pixel shader's general translation reads it.
 pub fn translate_vertex(shader: &Shader, rules: FloatRules) -> Result<Translation, TranslateError> {
     let profile = shader.program().profile;
     if !crate::core::emu::vertex::runs(profile) {
@@ -74,19 +79,10 @@ pub fn translate_vertex(shader: &Shader, rules: FloatRules) -> Result<Translatio
             "a {profile} shader as a vertex shader: ps30 translates vs_2_0, vs_2_x and vs_3_0"
         )));
     }
-    if let Some(i) = shader
-        .instructions()
-        .iter()
-        .position(|x| x.op == Opcode::TexLdL)
-    {
-        return Err(TranslateError::Unsupported(format!(
-            "`texldl` in a vertex shader (instruction {}): vertex texture fetch runs on the emulator only",
-            i + 1
-        )));
-    }
     let spec = Specialisation::general();
     let mut module = naga::Module::default();
-    let cx = Ctx::new(&mut module, shader, &spec)?;
+    let mut cx = Ctx::new(&mut module, shader, &spec)?;
+    cx.border = super::texture::add_border_function(&mut module, shader, &cx.t, &spec);
     let functions = super::lower_functions(&mut module, &cx, shader, rules)?;
     let main = *functions
         .get(&super::MAIN)

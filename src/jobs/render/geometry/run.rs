@@ -11,6 +11,7 @@
 //! sees every earlier triangle.
 
 mod gpu;
+mod one_pass;
 
 pub(crate) use gpu::coverage;
 pub use gpu::Coverage;
@@ -763,16 +764,18 @@ pub(crate) fn draw(
         };
         let drawn = match settings_gpu(&settings.backend)? {
             Some(device) => {
-                if fog_state(list, d, &stage)?.is_some() {
-                    return Err(DrawFailure::Message(
-                        "geometry.fog: fog is drawn on the emulator only; the GPU backend refuses it".into(),
-                    ));
-                }
                 let shader = &list.shaders[d.shader].loaded.shader;
-                gpu::shade_all(
-                    device, shader, d, g, &stage, &viewport, clip_rect, &samplers, settings,
-                    height, &mut pass,
-                )?
+                let fog = fog_state(list, d, &stage)?;
+                gpu::refuse_fog(shader, fog.as_ref())?;
+                let context = gpu::Context {
+                    viewport: &viewport,
+                    clip_rect,
+                    samplers: &samplers,
+                    settings,
+                    height,
+                    fog,
+                };
+                gpu::shade_all(device, shader, d, g, &stage, &context, &mut pass)?
             }
             None => shade_all(
                 list, compiled, d, &stage, &tris, clip_rect, &samplers, settings, limits, &mut pass,

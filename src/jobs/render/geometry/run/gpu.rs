@@ -1,10 +1,11 @@
 //! A draw of geometry on the GPU backend: the primitives assembled here by
 //! `core/raster`'s rules (lists, strips rewound, fans around vertex 0, the
 //! provoking vertex moved first), points set up as the emulator sets them
-//! up, and each primitive rasterised and shaded by the device
-//! (`core::gpu::draw_geometry`); its pixels then take the same path as the
-//! emulator's triangles — `texkill`, the alpha test, the depth test, the
-//! output merger — in drawing order.
+//! up, and either the whole draw run on the device in one pass
+//! (`one_pass.rs` says when) or each primitive rasterised and shaded by the
+//! device (`core::gpu::draw_geometry`), its pixels then taking the same
+//! path as the emulator's triangles — `texkill`, the alpha test, the depth
+//! test, the output merger — in drawing order.
 
 use super::{Drawn, Pass, Stage};
 use crate::core::emu::{self, DrawOutput, PixelInputs};
@@ -12,6 +13,7 @@ use crate::core::gpu::{self, GeometryDraw, Gpu, ShadedPrimitive};
 use crate::core::ir::Shader;
 use crate::core::merge::MergeStats;
 use crate::core::raster::clip::{self, VIEW_VOLUME};
+use crate::core::raster::fog::{Fog, FogMode};
 use crate::core::raster::triangle::Window;
 use crate::core::raster::{self, Face, Primitive, Rect, Viewport};
 use crate::jobs::backend::Backend;
@@ -159,24 +161,71 @@ fn point_corner(
     out.map(|v| v as f32)
 }
 
+/// What a draw on the device needs besides its step and geometry.
+pub(super) struct Context<'c, 's> {
+    pub viewport: &'c Viewport,
+    /// The pixels the draw may write.
+    pub clip_rect: Rect,
+    pub samplers: &'c [(u32, emu::TextureLevels<'s>, emu::SamplerState)],
+    pub settings: &'c Settings,
+    /// The target's height.
+    pub height: u32,
+    /// Fixed-function fog after a ps_2_0/ps_2_x shader.
+    pub fog: Option<Fog>,
+}
+
+/// Refuses, by name, the fog the GPU backend does not draw: vertex fog
+/// (the device does not carry the interpolated fog factor to its pixels)
+/// and table fog after a shader that writes `oDepth` (the device's pixels
+/// bring back `oDepth`, not the interpolated z table fog reads). Table fog
+/// otherwise runs on the CPU from each pixel's rasterised z, as the
+/// emulator's does from its own.
+pub(super) fn refuse_fog(shader: &Shader, fog: Option<&Fog>) -> Result<(), DrawFailure> {
+    let Some(fog) = fog else {
+        return Ok(());
+    };
+    let odepth = shader.program().instructions.iter().any(|i| {
+        i.dst
+            .as_ref()
+            .is_some_and(|d| d.reg.file == crate::core::isa::RegFile::DepthOut)
+    });
+    let why = match (fog.mode, odepth) {
+        (FogMode::Vertex, _) => "vertex fog (mode \"vertex\") is drawn on the emulator only: the GPU backend does not carry the interpolated fog factor to its pixels",
+        (_, true) => "table fog after a shader that writes oDepth is drawn on the emulator only: the GPU backend's pixels bring back oDepth, not the interpolated z that fog reads",
+        _ => return Ok(()),
+    };
+    Err(DrawFailure::Message(format!("geometry.fog: {why}")))
+}
+
 /// Every primitive of `g` drawn on `device` and taken into `pass`.
-#[allow(clippy::too_many_arguments)]
 pub(super) fn shade_all(
     device: &Gpu,
     shader: &Shader,
     d: &DrawStep,
     g: &Geometry,
     stage: &Stage,
-    viewport: &Viewport,
-    clip_rect: Rect,
-    samplers: &[(u32, emu::TextureLevels<'_>, emu::SamplerState)],
-    settings: &Settings,
-    height: u32,
+    c: &Context,
     pass: &mut Pass,
 ) -> Result<Drawn, DrawFailure> {
-    let draw = pixel_draw(d, stage, samplers, settings, (pass.width, height));
-    let (primitives, faces, shaded) =
-        on_device(device, shader, g, stage, &draw, viewport, clip_rect)?;
+    let (viewport, clip_rect, settings) = (c.viewport, c.clip_rect, c.settings);
+    let draw = pixel_draw(d, stage, c.samplers, settings, (pass.width, c.height));
+    let (geometry, faces) = geometry_draw(g, stage, &draw, viewport, clip_rect)?;
+    let refusal = match c.fog {
+        Some(_) => Some("fog runs on the CPU".into()),
+        None => super::one_pass::refusal(device, d, g, pass),
+    };
+    crate::core::phases::mark(&format!(
+        "geometry: {}",
+        refusal
+            .as_deref()
+            .map_or("in one pass".into(), |r| format!("per primitive ({r})"))
+    ));
+    if refusal.is_none() {
+        return super::one_pass::draw(device, shader, &geometry, g, settings, pass);
+    }
+    let primitives = &geometry.primitives;
+    let shaded = gpu::draw_geometry(device, shader, &geometry)
+        .map_err(|e| DrawFailure::Message(e.to_string()))?;
     let mut drawn = Drawn {
         merged: MergeStats::default(),
         executed: None,
@@ -200,7 +249,16 @@ pub(super) fn shade_all(
             })?;
         drawn.triangles += prim.len() as u64;
         drawn.shaded += s.pixels.len() as u64;
-        let (window, out) = window(s, pass.width);
+        let (window, mut out) = window(s, pass.width);
+        if let (Some(f), Some(Some(colors))) = (&c.fog, out.color.first_mut()) {
+            // Table fog from each pixel's rasterised z (`s.depth`: the
+            // shader writes no oDepth, `refuse_fog` says).
+            for (i, color) in colors.iter_mut().enumerate() {
+                if window.inputs.covered[i] {
+                    *color = f.blend(*color, f.factor(window.depth[i]));
+                }
+            }
+        }
         pass.take(&window, &out, d.pixel.alpha_test, face)?;
     }
     Ok(drawn)
@@ -229,19 +287,15 @@ fn pixel_draw<'s>(
     draw
 }
 
-/// Each primitive's triangles (vertex indices), its facing and its shaded pixels.
-type OnDevice = (Vec<Vec<[u32; 3]>>, Vec<Face>, Vec<ShadedPrimitive>);
-
-/// Sets `g` up over `stage` and draws it on `device`.
-fn on_device(
-    device: &Gpu,
-    shader: &Shader,
+/// Sets `g` up over `stage` as the device draws it: the draw and each
+/// primitive's facing.
+fn geometry_draw<'d>(
     g: &Geometry,
     stage: &Stage,
-    draw: &emu::Draw,
+    draw: &'d emu::Draw<'d>,
     viewport: &Viewport,
     clip_rect: Rect,
-) -> Result<OnDevice, DrawFailure> {
+) -> Result<(GeometryDraw<'d>, Vec<Face>), DrawFailure> {
     let setup = setup(g, stage, viewport).map_err(DrawFailure::Message)?;
     let setup_faces = setup.faces;
     let flat = stage.slots.iter().fold(0u64, |bits, s| {
@@ -259,12 +313,15 @@ fn on_device(
         primitives: setup.primitives,
         viewport: *viewport,
         clip: clip_rect,
-        cull: g.cull,
+        // D3DRS_CULLMODE culls triangles; a point's square (clockwise, so
+        // front) is never culled, as the emulator's points are not.
+        cull: match g.primitive {
+            Primitive::PointList => raster::Cull::None,
+            _ => g.cull,
+        },
         clip_planes: g.clip_planes.iter().map(|p| p.map(|x| x as f32)).collect(),
     };
-    let shaded = gpu::draw_geometry(device, shader, &geometry)
-        .map_err(|e| DrawFailure::Message(e.to_string()))?;
-    Ok((geometry.primitives, setup_faces, shaded))
+    Ok((geometry, setup_faces))
 }
 
 /// Which pixels each primitive of a draw of geometry covers on the
@@ -334,7 +391,9 @@ pub(crate) fn coverage(
     let samplers = crate::jobs::render::bind_samplers(list, d, &d.samplers, states)?;
     let draw = pixel_draw(d, &stage, &samplers, settings, (width, height));
     let shader = &list.shaders[d.shader].loaded.shader;
-    let (_, _, shaded) = on_device(device, shader, g, &stage, &draw, &viewport, clip_rect)?;
+    let (geometry, _) = geometry_draw(g, &stage, &draw, &viewport, clip_rect)?;
+    let shaded = gpu::draw_geometry(device, shader, &geometry)
+        .map_err(|e| DrawFailure::Message(e.to_string()))?;
     c.gpu = shaded.into_iter().map(|s| s.pixels).collect();
     c.gpu.resize(count, Vec::new());
     Ok(c)
