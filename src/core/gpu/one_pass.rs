@@ -395,18 +395,6 @@ fn padded(data: &[u8], (w, h): (u32, u32), bytes_per_texel: u32) -> (Vec<u8>, u3
     (out, pitch as u32)
 }
 
-/// The WGSL of the pass that draws the stored depths into the surface.
-const LOAD_DEPTH: &str = "
-@group(0) @binding(0) var stored: texture_2d<f32>;
-@vertex fn vs(@builtin(vertex_index) i: u32) -> @builtin(position) vec4<f32> {
-  return vec4<f32>(f32(i & 1u) * 4.0 - 1.0, f32(i >> 1u) * 4.0 - 1.0, 0.0, 1.0);
-}
-struct Out { @builtin(frag_depth) depth: f32 }
-@fragment fn fs(@builtin(position) p: vec4<f32>) -> Out {
-  return Out(textureLoad(stored, vec2<i32>(p.xy), 0).x);
-}
-";
-
 /// Records what puts `s`'s stored values in `texture`: the stencil values
 /// copied, the depths drawn by a full-target pass.
 fn load_surface(
@@ -461,8 +449,7 @@ fn load_surface(
         },
         size,
     );
-    let module = naga::front::wgsl::parse_str(LOAD_DEPTH)
-        .map_err(|e| GpuError::Failed(format!("depth load: {}", e.emit_to_string(LOAD_DEPTH))))?;
+    let module = crate::core::translate::fixed::depth_load();
     let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
         label: Some("ps30 depth load"),
         source: wgpu::ShaderSource::Naga(Cow::Owned(module)),

@@ -28,8 +28,14 @@ use naga::{
 /// ```
 pub fn full_screen_triangle() -> Module {
     let mut m = Module::default();
-    let u32_ty = ty(&mut m, None, TypeInner::Scalar(Scalar::U32));
-    let vec4 = vec(&mut m, VectorSize::Quad, Scalar::F32);
+    add_full_screen_triangle(&mut m);
+    m
+}
+
+/// Adds [`full_screen_triangle`]'s entry point `vs` to `m`.
+fn add_full_screen_triangle(m: &mut Module) {
+    let u32_ty = ty(m, None, TypeInner::Scalar(Scalar::U32));
+    let vec4 = vec(m, VectorSize::Quad, Scalar::F32);
     let mut fb = Fb::new("vs");
     fb.f.arguments.push(naga::FunctionArgument {
         name: Some("i".into()),
@@ -57,7 +63,87 @@ pub fn full_screen_triangle() -> Module {
         ty: vec4,
         binding: Some(Binding::BuiltIn(BuiltIn::Position { invariant: false })),
     });
-    entry(&mut m, fb, ShaderStage::Vertex, [0; 3]);
+    entry(m, fb, ShaderStage::Vertex, [0; 3]);
+}
+
+/// The pass that draws stored depths into a depth surface: the full-screen
+/// triangle, and each pixel's depth read from a texture of the same size:
+///
+/// ```wgsl
+/// @group(0) @binding(0) var stored: texture_2d<f32>;
+/// struct Out { @builtin(frag_depth) depth: f32 }
+/// @vertex fn vs(@builtin(vertex_index) i: u32) -> @builtin(position) vec4<f32> {
+///     let x = f32(i32(i & 1u) * 4 - 1);
+///     let y = f32(i32(i >> 1u) * 4 - 1);
+///     return vec4<f32>(x, y, 0.0, 1.0);
+/// }
+/// @fragment fn fs(@builtin(position) p: vec4<f32>) -> Out {
+///     return Out(textureLoad(stored, vec2<i32>(p.xy), 0).x);
+/// }
+/// ```
+pub fn depth_load() -> Module {
+    let mut m = Module::default();
+    let image_ty = ty(
+        &mut m,
+        None,
+        TypeInner::Image {
+            dim: naga::ImageDimension::D2,
+            arrayed: false,
+            class: naga::ImageClass::Sampled {
+                kind: ScalarKind::Float,
+                multi: false,
+            },
+        },
+    );
+    let stored = global(&mut m, "stored", AddressSpace::Handle, Some(0), image_ty);
+    let f32_ty = ty(&mut m, None, TypeInner::Scalar(Scalar::F32));
+    let members = vec![StructMember {
+        name: Some("depth".into()),
+        ty: f32_ty,
+        binding: Some(Binding::BuiltIn(BuiltIn::FragDepth)),
+        offset: 0,
+    }];
+    let out_ty = ty(&mut m, Some("Out"), TypeInner::Struct { members, span: 4 });
+    add_full_screen_triangle(&mut m);
+    let vec4 = vec(&mut m, VectorSize::Quad, Scalar::F32);
+    let mut fb = Fb::new("fs");
+    fb.f.arguments.push(naga::FunctionArgument {
+        name: Some("p".into()),
+        ty: vec4,
+        binding: Some(Binding::BuiltIn(BuiltIn::Position { invariant: false })),
+    });
+    let p = fb.add(Expression::FunctionArgument(0));
+    let xy = fb.add(Expression::Swizzle {
+        size: VectorSize::Bi,
+        vector: p,
+        pattern: [
+            naga::SwizzleComponent::X,
+            naga::SwizzleComponent::Y,
+            naga::SwizzleComponent::X,
+            naga::SwizzleComponent::X,
+        ],
+    });
+    let coordinate = cast(&mut fb, xy, ScalarKind::Sint);
+    let image = fb.add(Expression::GlobalVariable(stored));
+    let level = fb.i32(0);
+    let texel = fb.add(Expression::ImageLoad {
+        image,
+        coordinate,
+        array_index: None,
+        sample: None,
+        level: Some(level),
+    });
+    let depth = fb.index(texel, 0);
+    let out = fb.add(Expression::Compose {
+        ty: out_ty,
+        components: vec![depth],
+    });
+    fb.push(Statement::Return { value: Some(out) });
+    fb.f.result = Some(naga::FunctionResult {
+        ty: out_ty,
+        binding: None,
+    });
+    entry(&mut m, fb, ShaderStage::Fragment, [0; 3]);
     m
 }
 
@@ -479,7 +565,7 @@ mod tests {
     #[test]
     fn each_module_is_the_wgsl_its_comment_gives() {
         let wgsl = documented_wgsl();
-        assert_eq!(wgsl.len(), 3, "{wgsl:?}");
+        assert_eq!(wgsl.len(), 4, "{wgsl:?}");
         let geometry = geometry_vertex(&GeometryStage {
             locations: &[(0, Some(0), None), (1, None, Some(1))],
             slots: &[0],
@@ -487,7 +573,12 @@ mod tests {
             offset: (1.0 / 128.0, 1.0 / 64.0),
             clip_planes: &[[1.0, 0.0, 0.0, 0.5]],
         });
-        let built = [full_screen_triangle(), inputs_fill(), geometry];
+        let built = [
+            full_screen_triangle(),
+            depth_load(),
+            inputs_fill(),
+            geometry,
+        ];
         for (built, text) in built.iter().zip(&wgsl) {
             let parsed = naga::front::wgsl::parse_str(text).expect("the comment's WGSL parses");
             assert_eq!(written(built), written(&parsed), "{text}");
