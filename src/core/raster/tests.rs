@@ -415,6 +415,7 @@ fn fog_factors_and_blend() {
         start: 0.25,
         end: 0.75,
         density: 2.0,
+        w: false,
     };
     // Linear: (0.75 − 0.5)/(0.75 − 0.25) = ½; clamped outside [start, end].
     assert_eq!(f(FogMode::Linear).factor(0.5), 0.5);

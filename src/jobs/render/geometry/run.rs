@@ -180,13 +180,20 @@ fn vertex_stage(
             usage: "color".into(),
             index: 1,
         });
+        let fog = |v: usize| match fog_from_w(g) {
+            // A pre-transformed vertex holds 1/w ("Direct3D takes the
+            // reciprocal of the RHW element ... to reproduce true w").
+            true if transformed => Some(1.0 / pos[v][3]),
+            true => Some(pos[v][3]),
+            false => specular.map(|s| s[v][3]),
+        };
         let values = (0..n)
             .map(|v| {
                 let values = wanted
                     .iter()
                     .map(|(_, a)| attr(a).map_or([0.0; 4], |vals| widen(vals[v])))
                     .collect();
-                with_size(values, sizes.map(|s| s[v][0]), specular.map(|s| s[v][3]))
+                with_size(values, sizes.map(|s| s[v][0]), fog(v))
             })
             .collect();
         return Ok(Stage {
@@ -196,7 +203,7 @@ fn vertex_stage(
             slots,
             texcoord,
             fixed_function: !transformed,
-            fog_given: specular.is_some(),
+            fog_given: specular.is_some() || fog_from_w(g),
         });
     };
     let shader = &list.shaders[vs].loaded.shader;
@@ -228,10 +235,27 @@ fn vertex_stage(
     })?;
     let columns: Vec<Option<usize>> = wanted.iter().map(|(_, a)| column(a)).collect();
     let size_column = column(&psize);
-    let fog_column = column(&Attribute {
-        usage: "fog".into(),
-        index: 0,
-    });
+    // Vertex fog reads oFog; a vertex shader that writes none but writes
+    // the specular colour (oD1) gives its alpha, as the fixed-function
+    // pipeline's vertex fog does (vkd3d's fog.shader_test, recorded on
+    // native Direct3D 9: `specular = float4(0, 0, 0, 0.3)` fogs by 0.3).
+    // Table fog from w reads the position's own w.
+    let fog_column = if fog_from_w(g) {
+        Some((position, 3))
+    } else {
+        column(&Attribute {
+            usage: "fog".into(),
+            index: 0,
+        })
+        .map(|c| (c, 0))
+        .or_else(|| {
+            column(&Attribute {
+                usage: "color".into(),
+                index: 1,
+            })
+            .map(|c| (c, 3))
+        })
+    };
     Ok(Stage {
         positions: out.values.iter().map(|v| widen(v[position])).collect(),
         values: out
@@ -245,7 +269,7 @@ fn vertex_stage(
                 with_size(
                     values,
                     size_column.map(|c| v[c][0]),
-                    fog_column.map(|c| v[c][0]),
+                    fog_column.map(|(c, k)| v[c][k]),
                 )
             })
             .collect(),
@@ -255,6 +279,14 @@ fn vertex_stage(
         fixed_function: false,
         fog_given: fog_column.is_some(),
     })
+}
+
+/// Whether the draw's fog is table fog from w, read like vertex fog from a
+/// column the vertex stage fills.
+fn fog_from_w(g: &Geometry) -> bool {
+    g.state
+        .fog
+        .is_some_and(|f| f.w && f.mode != FogMode::Vertex)
 }
 
 /// The primitives of the draw on screen, each with its provoking vertex
@@ -844,9 +876,9 @@ fn shade_all(
         .map(|(k, s)| (s.slot, k, s.flat))
         .collect();
     let fog = fog_state(list, d, stage)?;
-    if fog.is_some_and(|f| f.mode == FogMode::Vertex) {
-        // The fog factor rides along as one more input, taken out again
-        // before the pixel shader sees them.
+    if fog.is_some_and(|f| f.mode == FogMode::Vertex || f.w) {
+        // The fog factor (or table fog's w) rides along as one more input,
+        // taken out again before the pixel shader sees them.
         slots.push((FOG_SLOT, stage.slots.len() + 1, [false; 4]));
     }
     let mut drawn = Drawn {
@@ -944,14 +976,14 @@ fn fog_state(list: &DrawList, d: &DrawStep, stage: &Stage) -> Result<Option<Fog>
     }
     if fog.mode == FogMode::Vertex && !stage.fog_given {
         return Err(DrawFailure::Message(
-            "geometry.fog: vertex fog (mode \"vertex\") reads the vertex shader's oFog (dcl_fog), or without a vertex shader the vertices' color1 alpha, and the draw gives neither".into(),
+            "geometry.fog: vertex fog (mode \"vertex\") reads the vertex shader's oFog (dcl_fog) or else its specular alpha (oD1.w), or without a vertex shader the vertices' color1 alpha, and the draw gives none of them".into(),
         ));
     }
     Ok(Some(fog))
 }
 
 /// Fogs oC0 of the window's covered pixels: by the interpolated vertex
-/// factor (`factors`, over the window's quad grid) or the pixel's depth.
+/// factor or w (`factors`, over the window's quad grid) or the pixel's z.
 fn fog_pixels(
     out: &mut DrawOutput,
     window: &raster::triangle::Window,
