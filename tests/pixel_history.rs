@@ -348,3 +348,125 @@ fn an_output_the_shader_does_not_write_leaves_its_target_alone() {
         assert_eq!(vec4(&step["after"]), [0.0, 0.0, 1.0, 1.0], "step {k}");
     }
 }
+
+/// `clipped[k]` of a step: its kind, index, vertices, planes and position.
+fn clipped(step: &Value, k: usize) -> (String, u64, Vec<u64>, Vec<String>, [f64; 4]) {
+    let c = &step["clipped"][k];
+    (
+        c["kind"].as_str().unwrap().to_string(),
+        c["primitive"].as_u64().unwrap(),
+        c["vertices"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|v| v.as_u64().unwrap())
+            .collect(),
+        c["planes"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|p| p.as_str().unwrap().to_string())
+            .collect(),
+        vec4(&c["position"]),
+    )
+}
+
+/// Whether two clip-space positions agree to f64 rounding: the position
+/// over the pixel solves a 3×3 system of small exact numbers (Cramer's
+/// rule, a few dozen operations on values ≤ 9), so 1e-12 is thousands of
+/// times the worst rounding and far below any difference that matters.
+fn same(a: [f64; 4], b: [f64; 4]) -> bool {
+    a.iter().zip(&b).all(|(x, y)| (x - y).abs() <= 1e-12)
+}
+
+#[test]
+fn clipping_that_removed_a_primitive_over_the_pixel_is_named() {
+    // tests/pixel_history/clipped.json: an 8×4 target, vertices in clip
+    // space (no vertex shader: identity transforms). Pixel (1, 1)'s centre
+    // is at normalised (u, v) = (2·1/8 − 1, 1 − 2·1/4) = (−0.75, 0.5).
+    // "Viewports and Clipping (Direct3D 9)": the view volume keeps
+    // 0 ≤ z ≤ w, and a user clip plane keeps a·x + b·y + c·z + d·w ≥ 0.
+    let both = histories("clipped.json", &["1,1", "7,1"]);
+    let steps = both[0]["steps"].as_array().unwrap();
+    assert_eq!(steps.len(), 6);
+    let near = "near plane (z < 0)".to_string();
+    // Step 1: the triangle (−1,−1), (−1,3), (3,−1) covers the viewport;
+    // its z equals its x (w = 1), so over the pixel it is at
+    // (−0.75, 0.5, −0.75, 1): beyond the near plane, nothing drawn.
+    let s = &steps[1];
+    assert!(s["fragments"].as_array().unwrap().is_empty());
+    assert_eq!(
+        s["missed"],
+        "clipped: triangle 0 lies over it beyond the near plane (z < 0)"
+    );
+    let (kind, index, vertices, planes, at) = clipped(s, 0);
+    assert_eq!(
+        (kind.as_str(), index, vertices),
+        ("triangle", 0, vec![0, 1, 2])
+    );
+    assert_eq!(planes, vec![near.clone()]);
+    assert!(same(at, [-0.75, 0.5, -0.75, 1.0]), "{at:?}");
+    // Step 2: z = 0.5 everywhere, user plane (1, 0, 0, 0) keeps x ≥ 0;
+    // x = −0.75 there.
+    let s = &steps[2];
+    assert!(s["fragments"].as_array().unwrap().is_empty());
+    let (_, _, _, planes, at) = clipped(s, 0);
+    assert_eq!(planes, vec!["user clip plane 0".to_string()]);
+    assert!(same(at, [-0.75, 0.5, 0.5, 1.0]), "{at:?}");
+    // Step 3: the same triangle at z = 1.5 (beyond the far plane z ≤ w),
+    // then at z = 0.5 in blue: the second is drawn (the first reached
+    // triangle), the first is named as clipped.
+    let s = &steps[3];
+    assert_eq!(s["fragments"].as_array().unwrap().len(), 1);
+    assert!(s["missed"].is_null());
+    let (_, index, vertices, planes, at) = clipped(s, 0);
+    assert_eq!((index, vertices), (0, vec![0, 1, 2]));
+    assert_eq!(planes, vec!["far plane (z > w)".to_string()]);
+    assert!(same(at, [-0.75, 0.5, 1.5, 1.0]), "{at:?}");
+    assert_eq!(s["clipped"].as_array().unwrap().len(), 1);
+    assert_eq!(vec4(&s["after"]), [0.0, 0.0, 1.0, 1.0]);
+    // Step 4: one point far from (1, 1): nothing clipped there.
+    assert!(steps[4]["clipped"].is_null());
+    assert_eq!(
+        steps[4]["missed"],
+        "outside every primitive (0 reached the pixel shader)"
+    );
+    // Step 5: a line along row 1 from (−1, 0.5, −1, 1) to (1, 0.5, 1, 1):
+    // on screen from x = 0 to 8 through the centres of row 1 (the
+    // diamond-exit rule covers (1, 1)); at x = 1 its parameter is 1/8 (w
+    // = 1: no perspective), so it is at (−0.75, 0.5, −0.75, 1).
+    let s = &steps[5];
+    let (kind, index, vertices, planes, at) = clipped(s, 0);
+    assert_eq!((kind.as_str(), index, vertices), ("line", 0, vec![0, 1]));
+    assert_eq!(planes, vec![near]);
+    assert!(same(at, [-0.75, 0.5, -0.75, 1.0]), "{at:?}");
+    // Pixel (7, 1), step 4: the point at (1.125, 0.5, 0.5, 1) is on
+    // screen at ((1 + 1.125)·4, (1 − 0.5)·2) = (8.5, 1); size 4 covers
+    // centres with 6.5 ≤ x < 10.5, so (7, 1) — but its vertex lies right
+    // of the view volume (x > w), and a point is drawn whole or not at
+    // all by its vertex.
+    let s = &both[1]["steps"][4];
+    assert!(s["fragments"].as_array().unwrap().is_empty());
+    let (kind, index, vertices, planes, at) = clipped(s, 0);
+    assert_eq!((kind.as_str(), index, vertices), ("point", 0, vec![0]));
+    assert_eq!(planes, vec!["right plane (x > w)".to_string()]);
+    assert_eq!(at, [1.125, 0.5, 0.5, 1.0]);
+    // The text names them too.
+    let o = in_repo(&[
+        "render",
+        "tests/pixel_history/clipped.json",
+        "--pixel",
+        "1,1",
+    ]);
+    let text = stdout(&o);
+    assert!(
+        text.contains(
+            "    not covered: clipped: triangle 0 lies over it beyond the near plane (z < 0)\n"
+        ),
+        "{text}"
+    );
+    assert!(
+        text.contains("    clipped triangle 0 (vertices 0, 1, 2) at (-0.75, 0.5, 1.5, 1): beyond the far plane (z > w)\n"),
+        "{text}"
+    );
+}

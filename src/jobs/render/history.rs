@@ -10,7 +10,9 @@
 //! and stored depths and whether it wrote, and the blend with its source,
 //! destination, factors and result — and why a draw that changed the
 //! target did not reach the pixel (outside the viewport, scissored,
-//! culled, outside every primitive).
+//! clipped by the view volume or a user clip plane, culled, outside every
+//! primitive); a primitive clipping removed over the pixel is named even
+//! where others reached it.
 //!
 //! The runner ([`super::run_with_history`]) calls a [`Recorder`] at a few
 //! places: around each step, after a full-screen draw's shader, after
@@ -83,6 +85,10 @@ pub struct StepHistory {
     /// Why a draw reached the pixel with no primitive, when the set-up
     /// knows (`None` otherwise, and for clears and reductions).
     pub missed: Option<String>,
+    /// The draw's primitives that lie over the pixel where clipping (the
+    /// view volume or a user clip plane) removed them.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub clipped: Vec<ClippedAt>,
     /// The pixel before the step.
     pub before: [f32; 4],
     /// The pixel after it.
@@ -106,6 +112,27 @@ pub struct PrimitiveAt {
     pub weights: [f64; 3],
     /// The vertex flat shading takes colours from.
     pub provoking: usize,
+}
+
+/// A primitive that would have covered the pixel, but clipping removed
+/// its part over the pixel.
+#[derive(Clone, Debug, Serialize)]
+pub struct ClippedAt {
+    /// `triangle`, `line` or `point`.
+    pub kind: &'static str,
+    /// Its index among the draw's primitives as assembled (before
+    /// clipping and culling), from 0.
+    pub primitive: usize,
+    /// Its vertices, by their index in the vertex buffer.
+    pub vertices: Vec<usize>,
+    /// The clip-space (x, y, z, w) of its point over the pixel (a point's
+    /// own vertex).
+    pub position: [f64; 4],
+    /// The planes that point lies beyond: `near plane (z < 0)`, `far plane
+    /// (z > w)`, `user clip plane K` (K counts the draw's `clip_planes`),
+    /// and for a point, dropped whole by its vertex, the `left`, `right`,
+    /// `bottom` and `top` planes.
+    pub planes: Vec<String>,
 }
 
 /// A register's value.
@@ -440,6 +467,7 @@ impl Recorder {
                 merger,
                 fragments: Vec::new(),
                 missed: None,
+                clipped: Vec::new(),
                 before,
                 after: before,
             });
@@ -545,21 +573,31 @@ impl Recorder {
     }
 
     /// A draw of geometry is set up: its triangles in order, the ones its
-    /// cull mode dropped, and the rectangles pixels must lie in.
+    /// cull mode dropped, the rectangles pixels must lie in, and what
+    /// clipping removed over a pixel.
     pub(crate) fn geometry(
         &mut self,
         reached: usize,
         culled: &[Triangle],
-        viewport: Rect,
-        scissor: Option<Rect>,
+        (viewport, scissor): (Rect, Option<Rect>),
+        clipped: &dyn Fn(u32, u32) -> Vec<ClippedAt>,
     ) {
         for w in self.watches.iter_mut().filter(|w| w.output.is_some()) {
             let (x, y) = (w.pixel.x, w.pixel.y);
             let (fx, fy) = (f64::from(x), f64::from(y));
+            let within = inside(&viewport, x, y) && scissor.is_none_or(|s| inside(&s, x, y));
+            let lost = if within { clipped(x, y) } else { Vec::new() };
             let missed = if !inside(&viewport, x, y) {
                 format!("outside the viewport {}", rect_text(&viewport))
             } else if let Some(s) = scissor.filter(|s| !inside(s, x, y)) {
                 format!("scissored (the rectangle is {})", rect_text(&s))
+            } else if let Some(c) = lost.first() {
+                format!(
+                    "clipped: {} {} lies over it beyond the {}",
+                    c.kind,
+                    c.primitive,
+                    c.planes.join(" and the ")
+                )
             } else if let Some(t) = culled.iter().find(|t| t.covers(fx, fy)) {
                 let face = match t.face {
                     crate::core::raster::Face::Front => "front (clockwise)",
@@ -574,6 +612,7 @@ impl Recorder {
             };
             if let Some(s) = w.step() {
                 s.missed = Some(missed);
+                s.clipped = lost;
             }
         }
     }

@@ -10,6 +10,7 @@
 //! before a triangle that covers a pixel already in it, so that blending
 //! sees every earlier triangle.
 
+mod clipped;
 mod gpu;
 
 pub(crate) use gpu::coverage;
@@ -707,7 +708,8 @@ pub(crate) fn draw(
                 _ => None,
             })
             .collect();
-        w.geometry(tris.len(), &culled, viewport.rect(), g.scissor);
+        let clipped = |x, y| clipped::at(g, &stage, &viewport, clip_rect, (x, y));
+        w.geometry(tris.len(), &culled, (viewport.rect(), g.scissor), &clipped);
     }
     // The targets this draw writes leave `states` while it runs, so that
     // the samplers may borrow the others (a draw never samples its own).
