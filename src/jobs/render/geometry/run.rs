@@ -236,27 +236,7 @@ fn vertex_stage(
     })?;
     let columns: Vec<Option<usize>> = wanted.iter().map(|(_, a)| column(a)).collect();
     let size_column = column(&psize);
-    // Vertex fog reads oFog; a vertex shader that writes none but writes
-    // the specular colour (oD1) gives its alpha, as the fixed-function
-    // pipeline's vertex fog does (vkd3d's fog.shader_test, recorded on
-    // native Direct3D 9: `specular = float4(0, 0, 0, 0.3)` fogs by 0.3).
-    // Table fog from w reads the position's own w.
-    let fog_column = if fog_from_w(g) {
-        Some((position, 3))
-    } else {
-        column(&Attribute {
-            usage: "fog".into(),
-            index: 0,
-        })
-        .map(|c| (c, 0))
-        .or_else(|| {
-            column(&Attribute {
-                usage: "color".into(),
-                index: 1,
-            })
-            .map(|c| (c, 3))
-        })
-    };
+    let fog_column = shader_fog_column(g, position, &column);
     Ok(Stage {
         positions: out.values.iter().map(|v| widen(v[position])).collect(),
         values: out
@@ -280,6 +260,29 @@ fn vertex_stage(
         fixed_function: false,
         fog_given: fog_column.is_some(),
     })
+}
+
+/// The output column and component a vertex shader's fog factor comes
+/// from. Vertex fog reads oFog; a vertex shader that writes none but writes
+/// the specular colour (oD1) gives its alpha, as the fixed-function
+/// pipeline's vertex fog does (vkd3d's fog.shader_test, recorded on native
+/// Direct3D 9: `specular = float4(0, 0, 0, 0.3)` fogs by 0.3). Table fog
+/// from w reads the position's own w.
+fn shader_fog_column(
+    g: &Geometry,
+    position: usize,
+    column: &dyn Fn(&Attribute) -> Option<usize>,
+) -> Option<(usize, usize)> {
+    if fog_from_w(g) {
+        return Some((position, 3));
+    }
+    let attribute = |usage: &str, index| Attribute {
+        usage: usage.into(),
+        index,
+    };
+    column(&attribute("fog", 0))
+        .map(|c| (c, 0))
+        .or_else(|| column(&attribute("color", 1)).map(|c| (c, 3)))
 }
 
 /// Whether the draw's fog is table fog from w, read like vertex fog from a
