@@ -21,6 +21,7 @@
 //! pixels only, so a run with no pixel watched (`None`) does no more than
 //! test an `Option` per step, triangle and covered pixel.
 
+use super::costs::DrawCosts;
 use super::pixel_state::{AlphaTest, CmpFunc, PixelState};
 use super::{DrawList, Step, TargetState};
 use crate::core::emu::{Draw, DrawOutput, PixelInputs};
@@ -309,11 +310,13 @@ impl Watch {
     }
 }
 
-/// Records the history of watched pixels while a list runs.
+/// Records the history of watched pixels while a list runs, and, asked
+/// to, what one draw's pixel shader cost ([`Recorder::with_costs`]).
 pub struct Recorder {
     watches: Vec<Watch>,
     /// Steps the watched targets saw begun and not yet ended.
     open: bool,
+    costs: Option<DrawCosts>,
 }
 
 /// vPos and vFace as the set-up gives them, where `program` declares them.
@@ -407,7 +410,20 @@ impl Recorder {
         Ok(Recorder {
             watches,
             open: false,
+            costs: None,
         })
+    }
+
+    /// Also gathers the costs of draw step `step`'s pixel shader over
+    /// every primitive's quads (`ps30 profile --list`).
+    pub fn with_costs(mut self, step: usize) -> Recorder {
+        self.costs = Some(DrawCosts::new(step));
+        self
+    }
+
+    /// The costs gathered ([`Recorder::with_costs`]).
+    pub fn costs(&self) -> Option<&DrawCosts> {
+        self.costs.as_ref()
     }
 
     /// The histories, one per watched pixel in the order given.
@@ -417,6 +433,9 @@ impl Recorder {
 
     /// Step `index` is about to run over `states`.
     pub(crate) fn begin_step(&mut self, list: &DrawList, index: usize, states: &[TargetState]) {
+        if let Some(c) = &mut self.costs {
+            c.active = c.step == index;
+        }
         let step = &list.steps[index];
         for w in &mut self.watches {
             let t = w.pixel.target;
@@ -477,6 +496,9 @@ impl Recorder {
 
     /// The step begun last has run; `states` are the targets after it.
     pub(crate) fn end_step(&mut self, index: usize, states: &[TargetState]) {
+        if let Some(c) = &mut self.costs {
+            c.active = false;
+        }
         if !self.open {
             return;
         }
@@ -505,6 +527,9 @@ impl Recorder {
         out: &DrawOutput,
         pixel: &PixelState,
     ) {
+        if let Some(c) = self.costs.as_mut().filter(|c| c.active) {
+            c.add(None, out);
+        }
         for w in self.watches.iter_mut().filter(|w| w.output.is_some()) {
             let (x, y) = (w.pixel.x, w.pixel.y);
             let i = w.index();
@@ -626,6 +651,9 @@ impl Recorder {
         window: &Window,
         out: &DrawOutput,
     ) {
+        if let Some(c) = self.costs.as_mut().filter(|c| c.active) {
+            c.add(Some(&window.inputs.covered), out);
+        }
         for w in self.watches.iter_mut().filter(|w| w.output.is_some()) {
             let Some(fragment) =
                 fragment_at(program, w.pixel, (index, shape, provoking), window, out)

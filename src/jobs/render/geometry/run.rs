@@ -949,7 +949,7 @@ fn shade_all(
         drawn.total = drawn
             .total
             .saturating_add(out.quad_executed.iter().sum::<u64>());
-        add_sites(&mut drawn.gradients, &out.gradients);
+        crate::jobs::render::costs::add_sites(&mut drawn.gradients, &out.gradients);
         if let Some(w) = pass.watch.as_deref_mut() {
             let program = list.shaders[d.shader].loaded.shader.program();
             w.primitive(program, (k, tri, *provoking), &window, &out);
@@ -1009,18 +1009,5 @@ fn fog_pixels(
             None => window.depth[i],
         };
         *c = fog.blend(*c, fog.factor(d));
-    }
-}
-
-/// Adds one triangle's gradient sites to the draw's.
-fn add_sites(into: &mut [GradientSite], from: &[GradientSite]) {
-    for (g, b) in into.iter_mut().zip(from) {
-        g.quads += b.quads;
-        g.divergent_quads += b.divergent_quads;
-        g.executions += b.executions;
-        g.divergent_executions += b.divergent_executions;
-        if let Some((lo, hi)) = b.lod {
-            g.lod = Some(g.lod.map_or((lo, hi), |(a, c)| (a.min(lo), c.max(hi))));
-        }
     }
 }
