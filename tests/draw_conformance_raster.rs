@@ -312,7 +312,7 @@ fn bad_render_states_are_refused_by_field() {
     for (extra, want) in [
         (
             r#""stencil": {"pass": "INCR"}"#,
-            "steps[0].geometry.stencil: the stencil lives in a D3DFMT_D24S8",
+            "steps[0].geometry.stencil: the stencil lives in a depth-stencil surface with stencil bits",
         ),
         (
             r#""depth": {"format": "D16"}, "stencil": {}"#,
@@ -327,8 +327,8 @@ fn bad_render_states_are_refused_by_field() {
             "steps[0].geometry.stencil.ccw.func: `SOMETIMES` is not a D3DCMPFUNC",
         ),
         (
-            r#""depth": {"format": "D24S8"}, "stencil": {"ref": 256}"#,
-            "steps[0].geometry.stencil.ref: 256",
+            r#""depth": {"format": "D24X4S4"}, "stencil": {"ref": 16}"#,
+            "steps[0].geometry.stencil.ref: 16: D3DFMT_D24X4S4's stencil holds 0 to 15",
         ),
         (
             r#""point_size_min": 8, "point_size_max": 4"#,

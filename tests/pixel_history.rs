@@ -470,3 +470,55 @@ fn clipping_that_removed_a_primitive_over_the_pixel_is_named() {
         "{text}"
     );
 }
+
+#[test]
+fn the_other_depth_formats_store_depth_and_stencil_as_their_bits() {
+    // depth_formats.json: a triangle at z = 0.375 (= 3/8) over (0, 0) of
+    // each 2×2 target, func ALWAYS. D3DFORMAT: D16_LOCKABLE "a 16-bit
+    // z-buffer bit depth", D15S1 "15 bits for the depth channel", D32 "a
+    // 32-bit z-buffer bit depth", D24X4S4 "24 bits for the depth channel";
+    // an n-bit UNORM stores round(z·(2ⁿ − 1))/(2ⁿ − 1). 0.375·(2ⁿ − 1) ends
+    // in .625 for every n here, so it rounds up whatever the last bit of the
+    // interpolated z: 24576/65535, 12288/32767, 1610612736/4294967295 and
+    // 6291456/16777215.
+    let want = [
+        ("d16l", 24576.0 / 65535.0),
+        ("d15s1", 12288.0 / 32767.0),
+        ("d32", 1610612736.0 / 4294967295.0),
+        ("d24x4s4", 6291456.0 / 16777215.0),
+    ];
+    let pixels: Vec<String> = want.iter().map(|(t, _)| format!("{t}:0,0")).collect();
+    let refs: Vec<&str> = pixels.iter().map(String::as_str).collect();
+    let h = histories("depth_formats.json", &refs);
+    for ((t, z), h) in want.iter().zip(&h) {
+        let d = &h["steps"][0]["fragments"][0]["depth"];
+        assert_eq!(d["z"].as_f64(), Some(*z), "{t}: {d}");
+        assert_eq!(d["written"], true, "{t}");
+    }
+    // The stencil: D3DSTENCILOP's INCRSAT clamps "to the maximum value",
+    // INCR wraps "to zero if the new value exceeds the maximum value", DECR
+    // "to the maximum value if the new value is less than zero"; the
+    // maximum of n bits is 2ⁿ − 1, 15 in D24X4S4 and 1 in D15S1. INVERT
+    // flips the n bits.
+    let stencil = |target: &str| -> Vec<(u64, u64)> {
+        let h = &histories("depth_formats.json", &[&format!("{target}:0,0")])[0];
+        h["steps"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|s| {
+                let st = &s["fragments"][0]["stencil"];
+                (
+                    st["stored"].as_u64().unwrap(),
+                    st["written"].as_u64().unwrap(),
+                )
+            })
+            .collect()
+    };
+    // D24X4S4: clear 14, INCRSAT → 15; INCRSAT at 15 stays 15 (8 bits
+    // would give 16); clear 0, DECR → 15; INVERT of 15 (1111) → 0.
+    assert_eq!(stencil("s4"), [(14, 15), (15, 15), (0, 15), (15, 0)]);
+    // D15S1: clear 1, INCR → 0 (wraps past 1); INVERT of 0 → 1; INCRSAT
+    // at 1 stays 1.
+    assert_eq!(stencil("s1"), [(1, 0), (0, 1), (1, 1)]);
+}

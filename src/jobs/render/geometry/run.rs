@@ -38,7 +38,7 @@ pub struct DepthBuffer {
     pub format: DepthFormat,
     /// Stored depths, row-major.
     pub values: Vec<f64>,
-    /// Stored stencil values, row-major (D3DFMT_D24S8's eight bits; 0 in
+    /// Stored stencil values, row-major (the format's stencil bits; 0 in
     /// a surface without stencil).
     pub stencil: Vec<u8>,
 }
@@ -566,6 +566,7 @@ impl Pass<'_> {
                     s.reference,
                     s.mask,
                     s.write_mask,
+                    buffer.format.stencil_max(),
                 );
                 buffer.stencil[t] = o.written;
                 (o.survives(), Some(o))
