@@ -405,8 +405,8 @@ fn bad_geometry_is_refused_with_its_place() {
             "steps[0].geometry.viewport: the rectangle must lie within the 4x4 target",
         ),
         (
-            format!(r#"{{"primitive": "triangle_list", "vertices": {verts}, "depth": {{"format": "D15S1"}}}}"#),
-            "steps[0].geometry.depth.format: `D15S1` is not one of D16, D24X8, D24S8, D32F_LOCKABLE",
+            format!(r#"{{"primitive": "triangle_list", "vertices": {verts}, "depth": {{"format": "D24FS8"}}}}"#),
+            "steps[0].geometry.depth.format: `D24FS8` is not one of D16, D16_LOCKABLE, D15S1, D24X8, D24S8, D24X4S4, D32, D32F_LOCKABLE",
         ),
         (
             format!(r#"{{"primitive": "triangle_list", "vertices": {verts}, "vertex_samplers": {{"s4": {{"texture": "t"}}}}}}"#),

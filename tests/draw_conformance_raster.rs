@@ -257,6 +257,53 @@ fn fog_blends_the_colour_after_a_ps_2_0_shader() {
     }
 }
 
+/// The spacing of f32 values at `x` (one ulp).
+fn ulp(x: f64) -> f64 {
+    let f = x.abs() as f32;
+    f64::from(f32::from_bits(f.to_bits() + 1) - f)
+}
+
+#[test]
+fn table_fog_from_w_and_vertex_fog_from_a_shaders_specular_alpha() {
+    // "w": table fog from eye-relative depth ("Eye-Relative vs. Z-Based
+    // Depth": used when the projection matrix's fourth column is not
+    // [0, 0, 0, 1]; the list says so with "depth": "w"). A strip over 8×2
+    // whose clip w is 1 at the left edge and 3 at the right: 1/w is linear
+    // on screen, so at pixel x (screen weight t = x/8) w = 1/(1 − 2t/3) =
+    // 12/(12 − x). Linear fog from 0 to 4: f = 1 − w/4, fog colour blue over
+    // white: (f, f, 1, 1). w = 1, 1.5, 2 at x = 0, 4, 6 (exact). Elsewhere
+    // w reaches the fog stage rounded to f32 (interpolated values are
+    // f32): |Δw| ≤ ulp(w)/2, so |Δf| ≤ ulp(w)/8, and f is rounded to f32
+    // once more, ½ ulp(f).
+    let t = draw("fog_w.json");
+    let (width, pixels) = &t["w"];
+    for (i, got) in pixels.iter().enumerate() {
+        let x = f64::from(i as u32 % width);
+        let w = 12.0 / (12.0 - x);
+        let f = 1.0 - w / 4.0;
+        let bound = if [0.0, 4.0, 6.0].contains(&x) {
+            0.0
+        } else {
+            ulp(w) / 8.0 + ulp(f) / 2.0
+        };
+        for c in 0..2 {
+            assert!(
+                (f64::from(got[c]) - f).abs() <= bound,
+                "w ({x}): {got:?} want {f} within {bound}"
+            );
+        }
+        assert_eq!((got[2], got[3]), (1.0, 1.0), "w ({x})");
+    }
+    // "spec": a vs_2_0 that writes no oFog but writes oD1: vertex fog reads
+    // the specular alpha (vkd3d's fog.shader_test, recorded on native
+    // Direct3D 9, fogs by `specular.a`). Alpha 1 at the left, 0 at the
+    // right, w = 1: f = 1 − x/8 (dyadic, exact).
+    check(&t, "spec", |x, _| {
+        let f = 1.0 - x as f32 / 8.0;
+        [f, f, 1.0, 1.0]
+    });
+}
+
 #[test]
 fn bad_render_states_are_refused_by_field() {
     let dir = tempfile::tempdir().unwrap();
@@ -265,7 +312,7 @@ fn bad_render_states_are_refused_by_field() {
     for (extra, want) in [
         (
             r#""stencil": {"pass": "INCR"}"#,
-            "steps[0].geometry.stencil: the stencil lives in a D3DFMT_D24S8",
+            "steps[0].geometry.stencil: the stencil lives in a depth-stencil surface with stencil bits",
         ),
         (
             r#""depth": {"format": "D16"}, "stencil": {}"#,
@@ -280,8 +327,8 @@ fn bad_render_states_are_refused_by_field() {
             "steps[0].geometry.stencil.ccw.func: `SOMETIMES` is not a D3DCMPFUNC",
         ),
         (
-            r#""depth": {"format": "D24S8"}, "stencil": {"ref": 256}"#,
-            "steps[0].geometry.stencil.ref: 256",
+            r#""depth": {"format": "D24X4S4"}, "stencil": {"ref": 16}"#,
+            "steps[0].geometry.stencil.ref: 16: D3DFMT_D24X4S4's stencil holds 0 to 15",
         ),
         (
             r#""point_size_min": 8, "point_size_max": 4"#,
@@ -289,6 +336,14 @@ fn bad_render_states_are_refused_by_field() {
         ),
         (r#""fill_mode": "dots""#, "steps[0].geometry.fill_mode:"),
         (r#""fog": {"mode": "fast"}"#, "steps[0].geometry.fog.mode:"),
+        (
+            r#""fog": {"mode": "vertex", "depth": "w"}"#,
+            "steps[0].geometry.fog.depth: vertex fog reads no depth",
+        ),
+        (
+            r#""fog": {"mode": "linear", "depth": "eye"}"#,
+            "steps[0].geometry.fog.depth:",
+        ),
         (
             r#""point_scale": [0, 0, 0]"#,
             "steps[0].geometry.point_scale:",

@@ -319,6 +319,18 @@ fn every_command_matches_the_schema() {
         repo,
         &[0],
     );
+    let v = check(
+        "profile_list",
+        &[
+            "profile",
+            "--list",
+            "tests/profile_list/strip.json",
+            "--json",
+        ],
+        repo,
+        &[0],
+    );
+    assert_eq!(v["vertex_shader"]["runs"], 4);
     check("shaders", &["shaders", "--json"], repo, &[0]);
     check(
         "plan",

@@ -349,3 +349,177 @@ fn an_output_the_shader_does_not_write_leaves_its_target_alone() {
         assert_eq!(vec4(&step["after"]), [0.0, 0.0, 1.0, 1.0], "step {k}");
     }
 }
+
+/// `clipped[k]` of a step: its kind, index, vertices, planes and position.
+fn clipped(step: &Value, k: usize) -> (String, u64, Vec<u64>, Vec<String>, [f64; 4]) {
+    let c = &step["clipped"][k];
+    (
+        c["kind"].as_str().unwrap().to_string(),
+        c["primitive"].as_u64().unwrap(),
+        c["vertices"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|v| v.as_u64().unwrap())
+            .collect(),
+        c["planes"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|p| p.as_str().unwrap().to_string())
+            .collect(),
+        vec4(&c["position"]),
+    )
+}
+
+/// Whether two clip-space positions agree to f64 rounding: the position
+/// over the pixel solves a 3×3 system of small exact numbers (Cramer's
+/// rule, a few dozen operations on values ≤ 9), so 1e-12 is thousands of
+/// times the worst rounding and far below any difference that matters.
+fn same(a: [f64; 4], b: [f64; 4]) -> bool {
+    a.iter().zip(&b).all(|(x, y)| (x - y).abs() <= 1e-12)
+}
+
+#[test]
+fn clipping_that_removed_a_primitive_over_the_pixel_is_named() {
+    // tests/pixel_history/clipped.json: an 8×4 target, vertices in clip
+    // space (no vertex shader: identity transforms). Pixel (1, 1)'s centre
+    // is at normalised (u, v) = (2·1/8 − 1, 1 − 2·1/4) = (−0.75, 0.5).
+    // "Viewports and Clipping (Direct3D 9)": the view volume keeps
+    // 0 ≤ z ≤ w, and a user clip plane keeps a·x + b·y + c·z + d·w ≥ 0.
+    let both = histories("clipped.json", &["1,1", "7,1"]);
+    let steps = both[0]["steps"].as_array().unwrap();
+    assert_eq!(steps.len(), 6);
+    let near = "near plane (z < 0)".to_string();
+    // Step 1: the triangle (−1,−1), (−1,3), (3,−1) covers the viewport;
+    // its z equals its x (w = 1), so over the pixel it is at
+    // (−0.75, 0.5, −0.75, 1): beyond the near plane, nothing drawn.
+    let s = &steps[1];
+    assert!(s["fragments"].as_array().unwrap().is_empty());
+    assert_eq!(
+        s["missed"],
+        "clipped: triangle 0 lies over it beyond the near plane (z < 0)"
+    );
+    let (kind, index, vertices, planes, at) = clipped(s, 0);
+    assert_eq!(
+        (kind.as_str(), index, vertices),
+        ("triangle", 0, vec![0, 1, 2])
+    );
+    assert_eq!(planes, vec![near.clone()]);
+    assert!(same(at, [-0.75, 0.5, -0.75, 1.0]), "{at:?}");
+    // Step 2: z = 0.5 everywhere, user plane (1, 0, 0, 0) keeps x ≥ 0;
+    // x = −0.75 there.
+    let s = &steps[2];
+    assert!(s["fragments"].as_array().unwrap().is_empty());
+    let (_, _, _, planes, at) = clipped(s, 0);
+    assert_eq!(planes, vec!["user clip plane 0".to_string()]);
+    assert!(same(at, [-0.75, 0.5, 0.5, 1.0]), "{at:?}");
+    // Step 3: the same triangle at z = 1.5 (beyond the far plane z ≤ w),
+    // then at z = 0.5 in blue: the second is drawn (the first reached
+    // triangle), the first is named as clipped.
+    let s = &steps[3];
+    assert_eq!(s["fragments"].as_array().unwrap().len(), 1);
+    assert!(s["missed"].is_null());
+    let (_, index, vertices, planes, at) = clipped(s, 0);
+    assert_eq!((index, vertices), (0, vec![0, 1, 2]));
+    assert_eq!(planes, vec!["far plane (z > w)".to_string()]);
+    assert!(same(at, [-0.75, 0.5, 1.5, 1.0]), "{at:?}");
+    assert_eq!(s["clipped"].as_array().unwrap().len(), 1);
+    assert_eq!(vec4(&s["after"]), [0.0, 0.0, 1.0, 1.0]);
+    // Step 4: one point far from (1, 1): nothing clipped there.
+    assert!(steps[4]["clipped"].is_null());
+    assert_eq!(
+        steps[4]["missed"],
+        "outside every primitive (0 reached the pixel shader)"
+    );
+    // Step 5: a line along row 1 from (−1, 0.5, −1, 1) to (1, 0.5, 1, 1):
+    // on screen from x = 0 to 8 through the centres of row 1 (the
+    // diamond-exit rule covers (1, 1)); at x = 1 its parameter is 1/8 (w
+    // = 1: no perspective), so it is at (−0.75, 0.5, −0.75, 1).
+    let s = &steps[5];
+    let (kind, index, vertices, planes, at) = clipped(s, 0);
+    assert_eq!((kind.as_str(), index, vertices), ("line", 0, vec![0, 1]));
+    assert_eq!(planes, vec![near]);
+    assert!(same(at, [-0.75, 0.5, -0.75, 1.0]), "{at:?}");
+    // Pixel (7, 1), step 4: the point at (1.125, 0.5, 0.5, 1) is on
+    // screen at ((1 + 1.125)·4, (1 − 0.5)·2) = (8.5, 1); size 4 covers
+    // centres with 6.5 ≤ x < 10.5, so (7, 1) — but its vertex lies right
+    // of the view volume (x > w), and a point is drawn whole or not at
+    // all by its vertex.
+    let s = &both[1]["steps"][4];
+    assert!(s["fragments"].as_array().unwrap().is_empty());
+    let (kind, index, vertices, planes, at) = clipped(s, 0);
+    assert_eq!((kind.as_str(), index, vertices), ("point", 0, vec![0]));
+    assert_eq!(planes, vec!["right plane (x > w)".to_string()]);
+    assert_eq!(at, [1.125, 0.5, 0.5, 1.0]);
+    // The text names them too.
+    let o = in_repo(&[
+        "render",
+        "tests/pixel_history/clipped.json",
+        "--pixel",
+        "1,1",
+    ]);
+    let text = stdout(&o);
+    assert!(
+        text.contains(
+            "    not covered: clipped: triangle 0 lies over it beyond the near plane (z < 0)\n"
+        ),
+        "{text}"
+    );
+    assert!(
+        text.contains("    clipped triangle 0 (vertices 0, 1, 2) at (-0.75, 0.5, 1.5, 1): beyond the far plane (z > w)\n"),
+        "{text}"
+    );
+}
+
+#[test]
+fn the_other_depth_formats_store_depth_and_stencil_as_their_bits() {
+    // depth_formats.json: a triangle at z = 0.375 (= 3/8) over (0, 0) of
+    // each 2×2 target, func ALWAYS. D3DFORMAT: D16_LOCKABLE "a 16-bit
+    // z-buffer bit depth", D15S1 "15 bits for the depth channel", D32 "a
+    // 32-bit z-buffer bit depth", D24X4S4 "24 bits for the depth channel";
+    // an n-bit UNORM stores round(z·(2ⁿ − 1))/(2ⁿ − 1). 0.375·(2ⁿ − 1) ends
+    // in .625 for every n here, so it rounds up whatever the last bit of the
+    // interpolated z: 24576/65535, 12288/32767, 1610612736/4294967295 and
+    // 6291456/16777215.
+    let want = [
+        ("d16l", 24576.0 / 65535.0),
+        ("d15s1", 12288.0 / 32767.0),
+        ("d32", 1610612736.0 / 4294967295.0),
+        ("d24x4s4", 6291456.0 / 16777215.0),
+    ];
+    let pixels: Vec<String> = want.iter().map(|(t, _)| format!("{t}:0,0")).collect();
+    let refs: Vec<&str> = pixels.iter().map(String::as_str).collect();
+    let h = histories("depth_formats.json", &refs);
+    for ((t, z), h) in want.iter().zip(&h) {
+        let d = &h["steps"][0]["fragments"][0]["depth"];
+        assert_eq!(d["z"].as_f64(), Some(*z), "{t}: {d}");
+        assert_eq!(d["written"], true, "{t}");
+    }
+    // The stencil: D3DSTENCILOP's INCRSAT clamps "to the maximum value",
+    // INCR wraps "to zero if the new value exceeds the maximum value", DECR
+    // "to the maximum value if the new value is less than zero"; the
+    // maximum of n bits is 2ⁿ − 1, 15 in D24X4S4 and 1 in D15S1. INVERT
+    // flips the n bits.
+    let stencil = |target: &str| -> Vec<(u64, u64)> {
+        let h = &histories("depth_formats.json", &[&format!("{target}:0,0")])[0];
+        h["steps"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|s| {
+                let st = &s["fragments"][0]["stencil"];
+                (
+                    st["stored"].as_u64().unwrap(),
+                    st["written"].as_u64().unwrap(),
+                )
+            })
+            .collect()
+    };
+    // D24X4S4: clear 14, INCRSAT → 15; INCRSAT at 15 stays 15 (8 bits
+    // would give 16); clear 0, DECR → 15; INVERT of 15 (1111) → 0.
+    assert_eq!(stencil("s4"), [(14, 15), (15, 15), (0, 15), (15, 0)]);
+    // D15S1: clear 1, INCR → 0 (wraps past 1); INVERT of 0 → 1; INCRSAT
+    // at 1 stays 1.
+    assert_eq!(stencil("s1"), [(1, 0), (0, 1), (1, 1)]);
+}

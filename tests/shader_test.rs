@@ -52,9 +52,20 @@ fn the_projects_own_files_pass_probe_by_probe() {
     let v: Value = serde_json::from_str(&stdout(&o)).unwrap();
     // (file, probe lines that run): `if(sm>=4)` and the lines after a
     // shader that fails to compile do not run.
-    let want: [(&str, &[u64]); 5] = [
+    let want: [(&str, &[u64]); 7] = [
+        (
+            "fog",
+            &[42, 46, 47, 51, 52, 53, 54, 62, 67, 82, 104, 105, 106, 109],
+        ),
         ("geometry", &[37, 38, 39, 51, 52]),
         ("models", &[20, 21, 23, 54]),
+        (
+            "points",
+            &[
+                39, 40, 41, 42, 43, 44, 49, 50, 51, 59, 60, 61, 62, 90, 91, 92, 93, 94, 95, 101,
+                102, 103, 104, 105, 106,
+            ],
+        ),
         ("state", &[24, 29, 30, 33, 35, 36]),
         ("textures", &[35, 53]),
         ("uniforms", &[22, 26, 31]),
@@ -74,7 +85,7 @@ fn the_projects_own_files_pass_probe_by_probe() {
         }
         assert!(f["stopped"].is_null(), "{name}: {}", f["stopped"]);
     }
-    assert_eq!(v["passed"], 20);
+    assert_eq!(v["passed"], 59);
     assert_eq!(v["failed"], 0);
 }
 
@@ -105,18 +116,19 @@ fn what_ps30_cannot_draw_is_named_and_not_failed() {
     if !oracle_installed("what_ps30_cannot_draw_is_named_and_not_failed") {
         return;
     }
+    // A fifth render target: Direct3D 9 has four.
     let path = scratch(
-        "fog.shader_test",
-        "[require]\nfog\n\n[pixel shader]\nfloat4 main() : sv_target\n{\n    return 1.0;\n}\n\n[rtv 0]\nsize (2d, 2, 2)\n\n[test]\nfog linear 0.0 1.0\ndraw quad\nprobe (0, 0) rgba (1.0, 1.0, 1.0, 1.0)\nfog disable\ndraw quad\nprobe (0, 0) rgba (1.0, 1.0, 1.0, 1.0)\n",
+        "rtv4.shader_test",
+        "[pixel shader]\nfloat4 main() : sv_target\n{\n    return 1.0;\n}\n\n[rtv 0]\nsize (2d, 2, 2)\n\n[test]\ndraw quad\nprobe (0, 0) rgba (1.0, 1.0, 1.0, 1.0)\n\n[rtv 4]\nsize (2d, 2, 2)\n\n[test]\ndraw quad\nprobe (0, 0) rgba (1.0, 1.0, 1.0, 1.0)\n",
     );
     let o = in_repo(&["shader-test", path.to_str().unwrap(), "--json"]);
     assert_eq!(o.status.code(), Some(0), "{}{}", stdout(&o), stderr(&o));
     let v: Value = serde_json::from_str(&stdout(&o)).unwrap();
     let probes = &v["files"][0]["probes"];
-    assert_eq!(probes[0]["verdict"], "unsupported");
-    assert_eq!(probes[0]["reason"], "fixed-function fog");
-    assert_eq!(probes[1]["verdict"], "pass");
-    assert_eq!(v["unsupported_reasons"][0][0], "fixed-function fog");
+    assert_eq!(probes[0]["verdict"], "pass");
+    assert_eq!(probes[1]["verdict"], "unsupported");
+    assert_eq!(probes[1]["reason"], "render targets past slot 3");
+    assert_eq!(v["unsupported_reasons"][0][0], "render targets past slot 3");
 }
 
 #[test]

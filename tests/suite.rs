@@ -39,6 +39,7 @@ mod luminance;
 mod malformed;
 mod oracle;
 mod pixel_history;
+mod profile_list;
 mod quads;
 mod reference_values;
 mod render;

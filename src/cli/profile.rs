@@ -18,11 +18,18 @@ use ps30::present::profile::{text, to_json};
 pub struct Args {
     /// The shader: a file (assembly or bytecode), `-` for standard input, or a
     /// bundled name such as lights:select (`ps30 shaders` lists them).
-    #[arg(value_name = "SHADER")]
-    shader: String,
+    #[arg(value_name = "SHADER", required_unless_present = "list")]
+    shader: Option<String>,
     /// Run on the synthetic G-buffer of the light-model shaders (asm/lights/), WxH pixels.
-    #[arg(long, value_name = "WxH", value_parser = parse_size, conflicts_with_all = ["image", "target"], required_unless_present_any = ["image", "vertices"])]
+    #[arg(long, value_name = "WxH", value_parser = parse_size, conflicts_with_all = ["image", "target"], required_unless_present_any = ["image", "vertices", "list"])]
     gbuffer: Option<(u32, u32)>,
+    /// Profile a draw of this draw list (see `ps30 render --help`) as the list draws it:
+    /// its pixel shader over every primitive's 2×2 quads, and its vertex shader's runs.
+    #[arg(long, value_name = "LIST", conflicts_with_all = ["shader", "image", "gbuffer", "vertices", "inputs"])]
+    list: Option<std::path::PathBuf>,
+    /// With --list: the step to profile (from 0; a draw). The list's last draw by default.
+    #[arg(long, value_name = "N", requires = "list")]
+    step: Option<usize>,
     /// Run a vertex shader over the vertices of this JSON file (see `ps30 run --vertices`):
     /// its slots, and each vertex's executed count against the cost model's.
     #[arg(long, value_name = "FILE", conflicts_with_all = ["image", "gbuffer"])]
@@ -102,9 +109,16 @@ impl Args {
 /// found a problem.
 pub fn run(args: Args, ui: &Ui) -> super::Result {
     super::bound_threads(args.exec.threads())?;
-    let loaded = load_shader(ui, &args.shader, &args.source, &args.input)?;
+    if let Some(path) = &args.list {
+        return list(&args, path, ui);
+    }
+    let shader = args
+        .shader
+        .as_deref()
+        .ok_or_else(|| BadInput("give a SHADER, or --list LIST".into()))?;
+    let loaded = load_shader(ui, shader, &args.source, &args.input)?;
     if let Some(path) = &args.vertices {
-        return vertices(&args, path, &loaded, ui);
+        return vertices(&args, shader, path, &loaded, ui);
     }
     let input = args.input()?;
     let resolved = args.constants.resolve(loaded.constants.as_ref())?;
@@ -135,9 +149,49 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
     Ok(Outcome::from_ok(!r.problem()))
 }
 
+/// `--list`: one draw of a draw list, as the list draws it.
+fn list(args: &Args, path: &std::path::Path, ui: &Ui) -> super::Result {
+    let limits = ps30::jobs::render::file::FileLimits {
+        max_pixels: args.exec.max_pixels,
+        max_input_bytes: args.input.max_input_bytes,
+        ..Default::default()
+    };
+    let loaded = ps30::jobs::render::file::read(path, &limits)?;
+    if !ui.quiet {
+        for w in &loaded.warnings {
+            super::io::eprint(&format!("warning: {w}\n"));
+        }
+    }
+    let settings = ps30::jobs::render::Settings {
+        threads: args.exec.threads(),
+        limits: args.exec.limits(),
+        budget: Default::default(),
+        float_rules: args.float_rules.into(),
+        backend: ps30::jobs::backend::Backend::Emulator,
+    };
+    let name = path.display().to_string();
+    let p = {
+        let _spinner = ui.spinner("running the list");
+        ps30::jobs::profile::list::profile_list(
+            &loaded.list,
+            args.step,
+            &settings,
+            args.bins as usize,
+        )
+        .map_err(|e| BadInput(format!("{name}: {e}")))?
+    };
+    if args.exec.json {
+        print_json(&ps30::present::profile::list_json(&name, &p))?;
+    } else {
+        say(ui, &ps30::present::profile::list_text(&name, &p))?;
+    }
+    Ok(Outcome::from_ok(!p.problem()))
+}
+
 /// `--vertices`: a vertex shader's costs over a vertex list.
 fn vertices(
     args: &Args,
+    shader: &str,
     path: &std::path::Path,
     loaded: &ps30::core::load::Loaded,
     ui: &Ui,
@@ -162,11 +216,11 @@ fn vertices(
         args.float_rules.into(),
         args.exec.limits().max_executed_per_pixel,
     )
-    .map_err(|e| BadInput(format!("{}: {e}", args.shader)))?;
+    .map_err(|e| BadInput(format!("{shader}: {e}")))?;
     if args.exec.json {
-        print_json(&ps30::present::vertices::profile_json(&args.shader, &p))?;
+        print_json(&ps30::present::vertices::profile_json(shader, &p))?;
     } else {
-        say(ui, &ps30::present::vertices::profile_text(&args.shader, &p))?;
+        say(ui, &ps30::present::vertices::profile_text(shader, &p))?;
     }
     Ok(Outcome::from_ok(p.within_limits && p.counts_agree))
 }

@@ -190,6 +190,22 @@ pub fn text(h: &History) -> String {
                         s.missed.as_deref().unwrap_or("no primitive reached it")
                     ));
                 }
+                for c in &s.clipped {
+                    let vertices: Vec<String> = c.vertices.iter().map(|v| v.to_string()).collect();
+                    let noun = if vertices.len() == 1 {
+                        "vertex"
+                    } else {
+                        "vertices"
+                    };
+                    out.push_str(&format!(
+                        "    clipped {} {} ({noun} {}) at {}: beyond the {}\n",
+                        c.kind,
+                        c.primitive,
+                        vertices.join(", "),
+                        vec4(&c.position),
+                        c.planes.join(" and the ")
+                    ));
+                }
                 for f in &s.fragments {
                     fragment_text(&mut out, s, f);
                 }

@@ -3,8 +3,10 @@
 
 use crate::core::audit;
 use crate::core::emu::findings::diagnostic;
+use crate::core::emu::findings::{Finding, SiteSummary};
 use crate::core::numbers::{decimal, thousands};
-use crate::jobs::profile::{CostStats, ProfileRun};
+use crate::jobs::profile::list::ListProfile;
+use crate::jobs::profile::{CostStats, ProfileRun, QuadCosts};
 use crate::present::json;
 use serde_json::{json, Value};
 
@@ -31,26 +33,8 @@ fn histogram_text(s: &mut String, title: &str, stats: &CostStats) {
     }
 }
 
-/// The text form of `ps30 profile` (findings rendered as warnings).
-pub fn text(r: &ProfileRun) -> String {
-    let c = &r.costs;
-    let mut s = format!("{} on {}\n", r.file.name, r.input);
-    s.push_str(&format!(
-        "static paths (cost model): shortest {}, longest {} executed slots per pixel; emulated {}–{}{}\n",
-        thousands(r.static_executed.min),
-        thousands(r.static_executed.max),
-        thousands(c.per_pixel.min),
-        thousands(c.per_pixel.max),
-        if r.counts_agree { " (within)" } else { " (OUTSIDE the static range)" }
-    ));
-    if !r.within_limits {
-        let p = crate::core::cost::Profile::ps_3_0();
-        s.push_str(&format!(
-            "OVER the ps_3_0 limits of {} slots and {} executed per pixel (ps30 check says where)\n",
-            thousands(p.max_slots),
-            thousands(p.max_executed)
-        ));
-    }
+/// The cost table, the divergence line and the per-quad histogram.
+fn costs_text(s: &mut String, c: &QuadCosts) {
     s.push_str(&format!(
         "{:<22}{:>10}{:>12}{:>10}\n",
         "executed slots", "min", "mean", "max"
@@ -75,7 +59,42 @@ pub fn text(r: &ProfileRun) -> String {
             String::new()
         }
     ));
-    histogram_text(&mut s, "slots per quad   quads", &c.per_quad);
+    histogram_text(s, "slots per quad   quads", &c.per_quad);
+}
+
+/// The findings as warnings, or the line saying there are none.
+fn findings_text(s: &mut String, file: &crate::core::diag::SourceFile, findings: &[Finding]) {
+    if findings.is_empty() {
+        s.push_str("gradients: no gradient of a temporary ran in a divergent quad; no LOD far from level 0\n");
+    } else {
+        let all: Vec<_> = findings.iter().map(diagnostic).collect();
+        for d in crate::core::diag::group(&all) {
+            s.push_str(&d.render(file));
+        }
+    }
+}
+
+/// The text form of `ps30 profile` (findings rendered as warnings).
+pub fn text(r: &ProfileRun) -> String {
+    let c = &r.costs;
+    let mut s = format!("{} on {}\n", r.file.name, r.input);
+    s.push_str(&format!(
+        "static paths (cost model): shortest {}, longest {} executed slots per pixel; emulated {}–{}{}\n",
+        thousands(r.static_executed.min),
+        thousands(r.static_executed.max),
+        thousands(c.per_pixel.min),
+        thousands(c.per_pixel.max),
+        if r.counts_agree { " (within)" } else { " (OUTSIDE the static range)" }
+    ));
+    if !r.within_limits {
+        let p = crate::core::cost::Profile::ps_3_0();
+        s.push_str(&format!(
+            "OVER the ps_3_0 limits of {} slots and {} executed per pixel (ps30 check says where)\n",
+            thousands(p.max_slots),
+            thousands(p.max_executed)
+        ));
+    }
+    costs_text(&mut s, c);
     if let Some(m) = &r.models {
         let all: u64 = m.iter().map(|x| x.0).sum();
         let ok: u64 = m.iter().map(|x| x.1).sum();
@@ -86,14 +105,7 @@ pub fn text(r: &ProfileRun) -> String {
             m[0].1, m[0].0, m[1].1, m[1].0, m[2].1, m[2].0
         ));
     }
-    if r.findings.is_empty() {
-        s.push_str("gradients: no gradient of a temporary ran in a divergent quad; no LOD far from level 0\n");
-    } else {
-        let all: Vec<_> = r.findings.iter().map(diagnostic).collect();
-        for d in crate::core::diag::group(&all) {
-            s.push_str(&d.render(&r.file));
-        }
-    }
+    findings_text(&mut s, &r.file, &r.findings);
     s
 }
 
@@ -122,18 +134,7 @@ pub fn to_json(r: &ProfileRun, found: &[audit::Finding]) -> Value {
         "divergent_quads": r.costs.divergent_quads,
         "lockstep_efficiency": json::real(r.costs.lockstep_efficiency),
         "divergent_efficiency": json::real(r.costs.divergent_efficiency),
-        "gradients": r.gradients.iter().map(|g| json!({
-            "line": g.line,
-            "column": g.column,
-            "op": g.op,
-            "sampler": g.sampler,
-            "temp_source": g.temp_source,
-            "quads": g.quads,
-            "divergent_quads": g.divergent_quads,
-            "executions": g.executions,
-            "divergent_executions": g.divergent_executions,
-            "lod": g.lod.map(|(lo, hi)| json!({"min": json::real32(lo), "max": json::real32(hi)})),
-        })).collect::<Vec<_>>(),
+        "gradients": sites_json(&r.gradients),
         "models": r.models.map(|m| m.iter().map(|&(n, ok)| json!({"pixels": n, "match": ok})).collect::<Vec<_>>()),
         "problem": r.problem(),
         "diagnostics": diagnostics,
@@ -147,5 +148,121 @@ fn stats_json(s: &CostStats) -> Value {
         "mean": json::real(s.mean),
         "max": s.max,
         "histogram": s.histogram,
+    })
+}
+
+fn sites_json(sites: &[SiteSummary]) -> Value {
+    sites
+        .iter()
+        .map(|g| {
+            json!({
+                "line": g.line,
+                "column": g.column,
+                "op": g.op,
+                "sampler": g.sampler,
+                "temp_source": g.temp_source,
+                "quads": g.quads,
+                "divergent_quads": g.divergent_quads,
+                "executions": g.executions,
+                "divergent_executions": g.divergent_executions,
+                "lod": g.lod.map(|(lo, hi)| json!({"min": json::real32(lo), "max": json::real32(hi)})),
+            })
+        })
+        .collect()
+}
+
+/// The text form of `ps30 profile --list`: the draw, its pixel shader's
+/// costs over every primitive's quads, its gradients, its vertex shader's
+/// runs.
+pub fn list_text(list: &str, p: &ListProfile) -> String {
+    let c = &p.costs;
+    let what = if p.geometry {
+        crate::core::numbers::plural(p.primitives, "primitive", "primitives")
+    } else {
+        "a full-screen quad".to_string()
+    };
+    let mut s = format!(
+        "{list}: step {}, {} over {what} ({} covered pixels in {} quads)\n",
+        p.step,
+        p.shader,
+        thousands(c.per_pixel.count),
+        thousands(c.quads)
+    );
+    s.push_str(&format!(
+        "static paths (cost model): shortest {}, longest {} executed slots per pixel; emulated {}–{}{}\n",
+        thousands(p.static_executed.min),
+        thousands(p.static_executed.max),
+        thousands(c.per_pixel.min),
+        thousands(c.per_pixel.max),
+        if p.counts_agree { " (within)" } else { " (OUTSIDE the static range)" }
+    ));
+    if !p.within_limits {
+        s.push_str("OVER the shader's limits (ps30 check says where)\n");
+    }
+    costs_text(&mut s, c);
+    s.push_str(&format!(
+        "quads at primitive edges: {} of {}, with {} helper lanes (run for gradients only)\n",
+        thousands(p.edge_quads),
+        thousands(c.quads),
+        thousands(p.helper_lanes)
+    ));
+    findings_text(&mut s, &p.file, &p.findings);
+    match &p.vertex {
+        None => {}
+        Some((name, Err(e))) => s.push_str(&format!("vertex shader {name}: not profiled: {e}\n")),
+        Some((name, Ok(v))) => {
+            let lo = v.executed.iter().min().copied().unwrap_or(0);
+            let hi = v.executed.iter().max().copied().unwrap_or(0);
+            let total: u64 = v.executed.iter().sum();
+            s.push_str(&format!(
+                "vertex shader {name} ({}): {} runs, {lo}–{hi} executed slots each ({} in all); the cost model: {}–{}{}\n",
+                v.profile,
+                thousands(v.executed.len() as u64),
+                thousands(total),
+                v.model.min,
+                v.model.max,
+                match (v.within_limits, v.counts_agree) {
+                    (true, true) => " (within)",
+                    (false, _) => ", OVER a limit",
+                    (true, false) => " (a vertex OUTSIDE the model's range)",
+                }
+            ));
+        }
+    }
+    s
+}
+
+/// The JSON form of `ps30 profile --list`.
+pub fn list_json(list: &str, p: &ListProfile) -> Value {
+    let vertex = p.vertex.as_ref().map(|(name, v)| match v {
+        Ok(v) => {
+            let mut j = crate::present::vertices::profile_json(name, v);
+            j["runs"] = json!(v.executed.len());
+            j
+        }
+        Err(e) => json!({"shader": name, "error": e}),
+    });
+    json!({
+        "list": list,
+        "step": p.step,
+        "shader": p.shader,
+        "geometry": p.geometry,
+        "primitives": p.primitives,
+        "executed": json::range(p.static_executed),
+        "executed_emulated": {"min": p.costs.per_pixel.min, "max": p.costs.per_pixel.max},
+        "counts_agree": p.counts_agree,
+        "within_limits": p.within_limits,
+        "per_pixel": stats_json(&p.costs.per_pixel),
+        "per_quad": stats_json(&p.costs.per_quad),
+        "quads": p.costs.quads,
+        "divergent_quads": p.costs.divergent_quads,
+        "lockstep_efficiency": json::real(p.costs.lockstep_efficiency),
+        "divergent_efficiency": json::real(p.costs.divergent_efficiency),
+        "edge_quads": p.edge_quads,
+        "helper_lanes": p.helper_lanes,
+        "gradients": sites_json(&p.gradients),
+        "diagnostics": json::findings(&p.file.name, &p.findings),
+        "vertex_shader": vertex,
+        "problem": p.problem(),
     })
 }

@@ -8,6 +8,14 @@
 //! * LINEAR, EXP and EXP2 are pixel (table) fog from the pixel's depth d (the
 //!   interpolated z, as "Pixel Fog" computes it from z): f = (end − d)/(end −
 //!   start), 1/e^(d·density), 1/e^((d·density)²).
+//! * Table fog's d is the pixel's z unless the projection matrix is a
+//!   perspective one: "Direct3D checks the fourth column of the projection
+//!   matrix. If the coefficients are [0,0,0,1] (for an affine projection)
+//!   the system will use z-based depth values for fog"; otherwise it uses
+//!   eye-relative depth, w ("Eye-Relative vs. Z-Based Depth"), interpolated
+//!   with perspective (which gives the pixel's own w). The projection
+//!   matrix matters to a shader's draw only for this choice, so a draw
+//!   states it as the choice ([`Fog::w`]).
 //! * f is clamped to [0, 1] and blends the colour: C = f·Cᵢ + (1 − f)·C_fog
 //!   on red, green and blue; alpha is left as the shader wrote it.
 //! * Only shaders below ps_3_0 are fogged: ps_3_0 has no fixed-function fog
@@ -42,6 +50,9 @@ pub struct Fog {
     pub end: f64,
     /// D3DRS_FOGDENSITY (1 by default).
     pub density: f64,
+    /// Table fog from the pixel's w (eye-relative depth: D3DTS_PROJECTION's
+    /// fourth column is not [0, 0, 0, 1]) rather than its z.
+    pub w: bool,
 }
 
 impl Fog {

@@ -10,9 +10,11 @@
 //!   target (and its depth, with D3DRS_ZWRITEENABLE).
 //! * The new value reaches the buffer through D3DRS_STENCILWRITEMASK:
 //!   `(old & ~mask) | (new & mask)`.
-//! * INCRSAT and DECRSAT clamp to 0 and 2⁸ − 1 (D3DFMT_D24S8's eight
-//!   bits); INCR and DECR wrap; INVERT flips every bit; REPLACE writes the
-//!   reference.
+//! * INCRSAT and DECRSAT clamp to 0 and 2ⁿ − 1, n the format's stencil
+//!   bits ("clamping to the maximum value"); INCR and DECR wrap ("wrapping
+//!   to zero if the new value exceeds the maximum value", "to the maximum
+//!   value if the new value is less than zero"); INVERT flips the n bits;
+//!   REPLACE writes the reference.
 //! * Two-sided stencil (D3DRS_TWOSIDEDSTENCILMODE): counter-clockwise
 //!   triangles (back faces under D3D9's clockwise front) take the
 //!   D3DRS_CCW_STENCILFUNC, _STENCILFAIL, _STENCILZFAIL and _STENCILPASS
@@ -69,17 +71,18 @@ impl StencilOp {
         Self::ALL.iter().find(|(k, _)| *k == n).map(|&(_, op)| op)
     }
 
-    /// The value the operation makes of `stored`, before the write mask.
-    pub fn apply(self, stored: u8, reference: u8) -> u8 {
+    /// The value the operation makes of `stored`, before the write mask,
+    /// in a stencil whose largest value is `max` (2ⁿ − 1).
+    pub fn apply(self, stored: u8, reference: u8, max: u8) -> u8 {
         match self {
             StencilOp::Keep => stored,
             StencilOp::Zero => 0,
-            StencilOp::Replace => reference,
-            StencilOp::IncrSat => stored.saturating_add(1),
+            StencilOp::Replace => reference & max,
+            StencilOp::IncrSat => stored.saturating_add(1).min(max),
             StencilOp::DecrSat => stored.saturating_sub(1),
-            StencilOp::Invert => !stored,
-            StencilOp::Incr => stored.wrapping_add(1),
-            StencilOp::Decr => stored.wrapping_sub(1),
+            StencilOp::Invert => !stored & max,
+            StencilOp::Incr => stored.wrapping_add(1) & max,
+            StencilOp::Decr => stored.wrapping_sub(1) & max,
         }
     }
 }
@@ -122,7 +125,9 @@ impl StencilOutcome {
 /// The stencil stage at one pixel whose stored value is `stored`:
 /// `test(a, b)` is the comparison function's `a FUNC b`, `depth` runs the
 /// depth test (only when the stencil test passes), and the chosen
-/// operation's value is written through `write_mask`.
+/// operation's value is written through `write_mask`; `max` is the
+/// stencil's largest value (2ⁿ − 1 for its n bits).
+#[allow(clippy::too_many_arguments)]
 pub fn run(
     stored: u8,
     test: impl Fn(u8, u8) -> bool,
@@ -131,6 +136,7 @@ pub fn run(
     reference: u8,
     mask: u8,
     write_mask: u8,
+    max: u8,
 ) -> StencilOutcome {
     let passed = test(reference & mask, stored & mask);
     let depth_passed = passed && depth();
@@ -139,12 +145,12 @@ pub fn run(
         (true, false) => ops.zfail,
         (true, true) => ops.pass,
     };
-    let new = op.apply(stored, reference);
+    let new = op.apply(stored, reference, max);
     StencilOutcome {
         stored,
         passed,
         depth_passed,
         op,
-        written: (stored & !write_mask) | (new & write_mask),
+        written: ((stored & !write_mask) | (new & write_mask)) & max,
     }
 }

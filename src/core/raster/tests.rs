@@ -304,7 +304,7 @@ fn stencil_ops_test_and_write_mask() {
     ];
     for (op, out) in want {
         for (stored, w) in [5u8, 255, 0].into_iter().zip(out) {
-            assert_eq!(op.apply(stored, 7), w, "{op:?} on {stored}");
+            assert_eq!(op.apply(stored, 7, 255), w, "{op:?} on {stored}");
         }
     }
     assert_eq!(Op::from_name("d3dstencilop_incrsat"), Some(Op::IncrSat));
@@ -315,14 +315,22 @@ fn stencil_ops_test_and_write_mask() {
     };
     let less = |a: u8, b: u8| a < b;
     // The reference on the left: 3 < 5 passes.
-    let o = run(5, less, || true, &ops, 3, 0xFF, 0xFF);
+    let o = run(5, less, || true, &ops, 3, 0xFF, 0xFF, 0xFF);
     assert_eq!((o.passed, o.depth_passed, o.written), (true, true, 6));
     // Masked: (7 & 1) < (6 & 1) is 1 < 0, fails: DECR.
-    let o = run(6, less, || panic!("no depth test"), &ops, 7, 1, 0xFF);
+    let o = run(6, less, || panic!("no depth test"), &ops, 7, 1, 0xFF, 0xFF);
     assert_eq!((o.passed, o.op, o.written), (false, Op::Decr, 5));
     // Depth fails: INVERT of 0x05 through write mask 0x0F: 0x0A.
-    let o = run(5, |_, _| true, || false, &ops, 0, 0xFF, 0x0F);
+    let o = run(5, |_, _| true, || false, &ops, 0, 0xFF, 0x0F, 0xFF);
     assert_eq!((o.survives(), o.written), (false, 0x0A));
+    // Four stencil bits (D3DFMT_D24X4S4, largest value 15): INCR of 15
+    // wraps to 0, INVERT of 5 (0101) is 10 (1010), not 250.
+    let o = run(15, |_, _| true, || true, &ops, 0, 0xFF, 0xFF, 15);
+    assert_eq!(o.written, 0);
+    let o = run(5, |_, _| true, || false, &ops, 0, 0xFF, 0xFF, 15);
+    assert_eq!(o.written, 10);
+    assert_eq!(Op::IncrSat.apply(15, 0, 15), 15);
+    assert_eq!(Op::Decr.apply(0, 0, 1), 1);
 }
 
 #[test]
@@ -415,6 +423,7 @@ fn fog_factors_and_blend() {
         start: 0.25,
         end: 0.75,
         density: 2.0,
+        w: false,
     };
     // Linear: (0.75 − 0.5)/(0.75 − 0.25) = ½; clamped outside [start, end].
     assert_eq!(f(FogMode::Linear).factor(0.5), 0.5);

@@ -40,7 +40,10 @@ use crate::core::emu::{self, Constants, Draw, DrawOutput, MipChain, SamplerState
 use crate::core::image::HdrImage;
 use crate::core::load::{self, Options};
 use crate::core::numbers::thousands;
+use crate::jobs::render::costs::QuadRun;
 use serde::Serialize;
+
+pub mod list;
 
 /// Min, mean, max and a histogram of a list of slot counts.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -141,24 +144,36 @@ pub struct QuadCosts {
 pub fn quad_costs(out: &DrawOutput, bins: usize) -> QuadCosts {
     let (w, h) = (out.width as u64, out.height as u64);
     let qx = out.quads_x as u64;
-    let mut own = vec![0u64; out.quad_executed.len()];
-    let mut pixels = vec![0u64; out.quad_executed.len()];
+    let mut quads: Vec<QuadRun> = out
+        .quad_executed
+        .iter()
+        .zip(&out.quad_divergent)
+        .map(|(&executed, &divergent)| QuadRun {
+            executed,
+            own: 0,
+            pixels: 0,
+            divergent,
+        })
+        .collect();
     for y in 0..h {
         for x in 0..w {
-            let q = ((y / 2) * qx + x / 2) as usize;
-            if let (Some(o), Some(p)) = (own.get_mut(q), pixels.get_mut(q)) {
-                *o += out.executed[(y * w + x) as usize];
-                *p += 1;
+            if let Some(q) = quads.get_mut(((y / 2) * qx + x / 2) as usize) {
+                q.own += out.executed[(y * w + x) as usize];
+                q.pixels += 1;
             }
         }
     }
-    let ratio = |pick: &dyn Fn(usize) -> bool| {
+    costs_of(&out.executed, &quads, bins)
+}
+
+/// The costs of `pixels`' own executed slots and the `quads` they ran in,
+/// with `bins` histogram bins.
+pub fn costs_of(pixels: &[u64], quads: &[QuadRun], bins: usize) -> QuadCosts {
+    let ratio = |pick: &dyn Fn(&QuadRun) -> bool| {
         let (mut num, mut den) = (0u128, 0u128);
-        for (q, &cost) in out.quad_executed.iter().enumerate() {
-            if pick(q) {
-                num += own[q] as u128;
-                den += cost as u128 * pixels[q] as u128;
-            }
+        for q in quads.iter().filter(|q| pick(q)) {
+            num += q.own as u128;
+            den += q.executed as u128 * q.pixels as u128;
         }
         if den == 0 {
             1.0
@@ -166,13 +181,14 @@ pub fn quad_costs(out: &DrawOutput, bins: usize) -> QuadCosts {
             num as f64 / den as f64
         }
     };
+    let executed: Vec<u64> = quads.iter().map(|q| q.executed).collect();
     QuadCosts {
-        per_pixel: CostStats::of(&out.executed, bins),
-        per_quad: CostStats::of(&out.quad_executed, bins),
-        quads: out.quad_executed.len() as u64,
-        divergent_quads: out.quad_divergent.iter().filter(|&&d| d).count() as u64,
+        per_pixel: CostStats::of(pixels, bins),
+        per_quad: CostStats::of(&executed, bins),
+        quads: quads.len() as u64,
+        divergent_quads: quads.iter().filter(|q| q.divergent).count() as u64,
         lockstep_efficiency: ratio(&|_| true),
-        divergent_efficiency: ratio(&|q| out.quad_divergent[q]),
+        divergent_efficiency: ratio(&|q| q.divergent),
     }
 }
 

@@ -10,7 +10,9 @@
 //! and stored depths and whether it wrote, and the blend with its source,
 //! destination, factors and result — and why a draw that changed the
 //! target did not reach the pixel (outside the viewport, scissored,
-//! culled, outside every primitive).
+//! clipped by the view volume or a user clip plane, culled, outside every
+//! primitive); a primitive clipping removed over the pixel is named even
+//! where others reached it.
 //!
 //! The runner ([`super::run_with_history`]) calls a [`Recorder`] at a few
 //! places: around each step, after a full-screen draw's shader, after
@@ -19,6 +21,7 @@
 //! pixels only, so a run with no pixel watched (`None`) does no more than
 //! test an `Option` per step, triangle and covered pixel.
 
+use super::costs::DrawCosts;
 use super::pixel_state::{AlphaTest, CmpFunc, PixelState};
 use super::{DrawList, Step, TargetState};
 use crate::core::emu::{Draw, DrawOutput, PixelInputs};
@@ -83,6 +86,10 @@ pub struct StepHistory {
     /// Why a draw reached the pixel with no primitive, when the set-up
     /// knows (`None` otherwise, and for clears and reductions).
     pub missed: Option<String>,
+    /// The draw's primitives that lie over the pixel where clipping (the
+    /// view volume or a user clip plane) removed them.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub clipped: Vec<ClippedAt>,
     /// The pixel before the step.
     pub before: [f32; 4],
     /// The pixel after it.
@@ -106,6 +113,27 @@ pub struct PrimitiveAt {
     pub weights: [f64; 3],
     /// The vertex flat shading takes colours from.
     pub provoking: usize,
+}
+
+/// A primitive that would have covered the pixel, but clipping removed
+/// its part over the pixel.
+#[derive(Clone, Debug, Serialize)]
+pub struct ClippedAt {
+    /// `triangle`, `line` or `point`.
+    pub kind: &'static str,
+    /// Its index among the draw's primitives as assembled (before
+    /// clipping and culling), from 0.
+    pub primitive: usize,
+    /// Its vertices, by their index in the vertex buffer.
+    pub vertices: Vec<usize>,
+    /// The clip-space (x, y, z, w) of its point over the pixel (a point's
+    /// own vertex).
+    pub position: [f64; 4],
+    /// The planes that point lies beyond: `near plane (z < 0)`, `far plane
+    /// (z > w)`, `user clip plane K` (K counts the draw's `clip_planes`),
+    /// and for a point, dropped whole by its vertex, the `left`, `right`,
+    /// `bottom` and `top` planes.
+    pub planes: Vec<String>,
 }
 
 /// A register's value.
@@ -283,11 +311,13 @@ impl Watch {
     }
 }
 
-/// Records the history of watched pixels while a list runs.
+/// Records the history of watched pixels while a list runs, and, asked
+/// to, what one draw's pixel shader cost ([`Recorder::with_costs`]).
 pub struct Recorder {
     watches: Vec<Watch>,
     /// Steps the watched targets saw begun and not yet ended.
     open: bool,
+    costs: Option<DrawCosts>,
 }
 
 /// vPos and vFace as the set-up gives them, where `program` declares them.
@@ -381,7 +411,20 @@ impl Recorder {
         Ok(Recorder {
             watches,
             open: false,
+            costs: None,
         })
+    }
+
+    /// Also gathers the costs of draw step `step`'s pixel shader over
+    /// every primitive's quads (`ps30 profile --list`).
+    pub fn with_costs(mut self, step: usize) -> Recorder {
+        self.costs = Some(DrawCosts::new(step));
+        self
+    }
+
+    /// The costs gathered ([`Recorder::with_costs`]).
+    pub fn costs(&self) -> Option<&DrawCosts> {
+        self.costs.as_ref()
     }
 
     /// The histories, one per watched pixel in the order given.
@@ -391,6 +434,9 @@ impl Recorder {
 
     /// Step `index` is about to run over `states`.
     pub(crate) fn begin_step(&mut self, list: &DrawList, index: usize, states: &[TargetState]) {
+        if let Some(c) = &mut self.costs {
+            c.active = c.step == index;
+        }
         let step = &list.steps[index];
         for w in &mut self.watches {
             let t = w.pixel.target;
@@ -441,6 +487,7 @@ impl Recorder {
                 merger,
                 fragments: Vec::new(),
                 missed: None,
+                clipped: Vec::new(),
                 before,
                 after: before,
             });
@@ -450,6 +497,9 @@ impl Recorder {
 
     /// The step begun last has run; `states` are the targets after it.
     pub(crate) fn end_step(&mut self, index: usize, states: &[TargetState]) {
+        if let Some(c) = &mut self.costs {
+            c.active = false;
+        }
         if !self.open {
             return;
         }
@@ -478,6 +528,9 @@ impl Recorder {
         out: &DrawOutput,
         pixel: &PixelState,
     ) {
+        if let Some(c) = self.costs.as_mut().filter(|c| c.active) {
+            c.add(None, out);
+        }
         for w in self.watches.iter_mut().filter(|w| w.output.is_some()) {
             let (x, y) = (w.pixel.x, w.pixel.y);
             let i = w.index();
@@ -546,21 +599,31 @@ impl Recorder {
     }
 
     /// A draw of geometry is set up: its triangles in order, the ones its
-    /// cull mode dropped, and the rectangles pixels must lie in.
+    /// cull mode dropped, the rectangles pixels must lie in, and what
+    /// clipping removed over a pixel.
     pub(crate) fn geometry(
         &mut self,
         reached: usize,
         culled: &[Triangle],
-        viewport: Rect,
-        scissor: Option<Rect>,
+        (viewport, scissor): (Rect, Option<Rect>),
+        clipped: &dyn Fn(u32, u32) -> Vec<ClippedAt>,
     ) {
         for w in self.watches.iter_mut().filter(|w| w.output.is_some()) {
             let (x, y) = (w.pixel.x, w.pixel.y);
             let (fx, fy) = (f64::from(x), f64::from(y));
+            let within = inside(&viewport, x, y) && scissor.is_none_or(|s| inside(&s, x, y));
+            let lost = if within { clipped(x, y) } else { Vec::new() };
             let missed = if !inside(&viewport, x, y) {
                 format!("outside the viewport {}", rect_text(&viewport))
             } else if let Some(s) = scissor.filter(|s| !inside(s, x, y)) {
                 format!("scissored (the rectangle is {})", rect_text(&s))
+            } else if let Some(c) = lost.first() {
+                format!(
+                    "clipped: {} {} lies over it beyond the {}",
+                    c.kind,
+                    c.primitive,
+                    c.planes.join(" and the ")
+                )
             } else if let Some(t) = culled.iter().find(|t| t.covers(fx, fy)) {
                 let face = match t.face {
                     crate::core::raster::Face::Front => "front (clockwise)",
@@ -575,6 +638,7 @@ impl Recorder {
             };
             if let Some(s) = w.step() {
                 s.missed = Some(missed);
+                s.clipped = lost;
             }
         }
     }
@@ -588,6 +652,9 @@ impl Recorder {
         window: &Window,
         out: &DrawOutput,
     ) {
+        if let Some(c) = self.costs.as_mut().filter(|c| c.active) {
+            c.add(Some(&window.inputs.covered), out);
+        }
         for w in self.watches.iter_mut().filter(|w| w.output.is_some()) {
             let Some(fragment) =
                 fragment_at(program, w.pixel, (index, shape, provoking), window, out)

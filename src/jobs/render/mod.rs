@@ -18,6 +18,7 @@
 //! finishes, with the targets as they are then, so a caller can write every
 //! intermediate target without the runner keeping copies.
 
+pub mod costs;
 pub mod file;
 mod floats;
 pub mod geometry;

@@ -14,6 +14,7 @@ use crate::core::emu::{Constants, SamplerState};
 use crate::core::image::TargetFormat;
 use crate::core::load;
 use crate::core::merge::{self, ColorWrite, OutputState};
+use crate::core::raster::fog::{Fog, FogMode};
 use crate::core::raster::points::PointState;
 use crate::core::raster::{Cull, Primitive, Viewport};
 use crate::jobs::render::geometry::state::RasterState;
@@ -155,14 +156,72 @@ fn fixed(s: &mut State<'_>, line: &str, mut c: Cursor<'_>) -> Result<(), Stop> {
     } else if c.word("point-sprite") {
         s.fixed.point_sprite = c.word("on");
     } else if c.word("fog") {
-        s.fixed.fog = !c.word("disable");
+        fog(s, line, c)?;
     } else if c.word("fog-colour") {
+        let v: Vec<f32> = (0..4).map_while(|_| c.float()).collect();
+        s.fixed.fog_colour = v
+            .try_into()
+            .map_err(|_| format!("malformed float4 constant '{line}'"))?;
     } else if c.word("viewport") {
         s.fixed.viewports = true;
     } else {
         return Err(format!("unknown test directive '{line}'").into());
     }
     Ok(())
+}
+
+/// `fog MODE [ortho|non-ortho] CONSTANTS`, read as vkd3d reads it: the
+/// mode (`disable`, `none`, `linear`, `exp`, `exp2`), the projection's
+/// kind (kept from the line before when not given), then FOGSTART and
+/// FOGEND for linear fog or FOGDENSITY for exp and exp2.
+fn fog(s: &mut State<'_>, line: &str, mut c: Cursor<'_>) -> Result<(), Stop> {
+    if c.word("disable") {
+        s.fixed.fog = None;
+        return Ok(());
+    }
+    let mode = [
+        ("none", FogMode::Vertex),
+        ("linear", FogMode::Linear),
+        ("exp", FogMode::Exp),
+        ("exp2", FogMode::Exp2),
+    ]
+    .into_iter()
+    .find(|(w, _)| c.word(w))
+    .map(|m| m.1)
+    .ok_or_else(|| format!("invalid fog mode '{}'", c.rest))?;
+    s.fixed.fog = Some(mode);
+    if c.word("ortho") {
+        s.fixed.ortho_fog = true;
+    }
+    if c.word("non-ortho") {
+        s.fixed.ortho_fog = false;
+    }
+    let bad = || format!("malformed fog constants '{line}'");
+    match mode {
+        FogMode::Linear => {
+            s.fixed.fog_start = c.float().ok_or_else(bad)?;
+            s.fixed.fog_end = c.float().ok_or_else(bad)?;
+        }
+        FogMode::Exp | FogMode::Exp2 => s.fixed.fog_density = c.float().ok_or_else(bad)?,
+        FogMode::Vertex => {}
+    }
+    Ok(())
+}
+
+/// The draw's fog: D3DRS_FOGENABLE with D3DRS_FOGTABLEMODE as the file
+/// set it (D3DRS_FOGVERTEXMODE stays D3DFOG_NONE, so `none` is the vertex
+/// shader's own fog), D3DRS_FOGCOLOR as a D3DCOLOR, and table fog from w
+/// unless the runner's projection matrix is the identity (`ortho`).
+fn fog_state(s: &State<'_>) -> Option<Fog> {
+    let byte = |x: f32| f32::from((x * 255.0).clamp(0.0, 255.0) as u8) / 255.0;
+    s.fixed.fog.map(|mode| Fog {
+        mode,
+        color: s.fixed.fog_colour.map(byte),
+        start: f64::from(s.fixed.fog_start),
+        end: f64::from(s.fixed.fog_end),
+        density: f64::from(s.fixed.fog_density),
+        w: !s.fixed.ortho_fog && mode != FogMode::Vertex,
+    })
 }
 
 /// `uniform N TYPE values`: raw 32-bit words at word offset N; words the
@@ -310,31 +369,14 @@ fn loaded(name: &str, bytes: &[u8]) -> Result<load::Loaded, Last> {
     })
 }
 
-/// What the fixed-function state asks that ps30 cannot draw.
-fn unsupported_state(s: &State<'_>, topology: Primitive) -> Option<String> {
-    if s.fixed.fog {
-        return Some("fixed-function fog".into());
-    }
-    if s.fixed.point_sprite && topology == Primitive::PointList {
-        return Some("point sprites".into());
-    }
-    if s.rtvs.keys().any(|&k| k > 3) {
-        return Some("render targets past slot 3".into());
-    }
-    None
-}
-
 fn run_draw(s: &mut State<'_>, topology: Primitive, count: u32, vs: &[u8], ps: &[u8]) -> Last {
-    if let Some(why) = unsupported_state(s, topology) {
-        return Last::Unsupported(why);
+    if s.rtvs.keys().any(|&k| k > 3) {
+        return Last::Unsupported("render targets past slot 3".into());
     }
     let (vs, ps) = match (loaded("vertex shader", vs), loaded("pixel shader", ps)) {
         (Ok(v), Ok(p)) => (v, p),
         (Err(e), _) | (_, Err(e)) => return e,
     };
-    if topology == Primitive::PointList && writes_point_size(&vs) {
-        return Last::Unsupported("per-vertex point size (PSIZE)".into());
-    }
     let list = match build(s, topology, count, vs, ps) {
         Ok(list) => list,
         Err(e) => return e,
@@ -428,20 +470,6 @@ fn first_words(message: &str) -> String {
     message.chars().take(160).collect()
 }
 
-/// Whether a vertex shader writes a point size (`oPts`, or vs_3_0's
-/// `dcl_psize o#`), which the emulator's points do not read.
-fn writes_point_size(vs: &load::Loaded) -> bool {
-    let program = vs.shader.program();
-    program.instructions.iter().any(|i| {
-        i.dst
-            .as_ref()
-            .is_some_and(|d| d.reg.file == crate::core::isa::RegFile::PointSizeOut)
-    }) || program
-        .inputs
-        .iter()
-        .any(|d| d.usage == "psize" && d.reg.file == crate::core::isa::RegFile::Output)
-}
-
 /// The draw list of one draw.
 fn build(
     s: &State<'_>,
@@ -523,8 +551,10 @@ fn build(
                 size: f64::from(s.fixed.point_size[0]),
                 min: f64::from(s.fixed.point_size[1]),
                 max: f64::from(s.fixed.point_size[2]),
-                ..PointState::default()
+                sprite: s.fixed.point_sprite,
+                scale: None,
             },
+            fog: fog_state(s),
             ..RasterState::default()
         },
     };

@@ -7,6 +7,7 @@ use super::resource::Texture;
 use super::{CompileJob, FileReport, Settings};
 use crate::core::emu::SamplerState;
 use crate::core::image::RenderTarget;
+use crate::core::raster::fog::FogMode;
 use crate::jobs::render::DrawList;
 use std::collections::{BTreeMap, HashMap};
 
@@ -50,7 +51,18 @@ pub(super) struct Fixed {
     pub clip_planes: [[f32; 4]; 8],
     pub point_size: [f32; 3],
     pub point_sprite: bool,
-    pub fog: bool,
+    /// `fog MODE`: D3DRS_FOGTABLEMODE (`none` is vertex fog); `None`:
+    /// `fog disable` (D3DRS_FOGENABLE off).
+    pub fog: Option<FogMode>,
+    /// `fog-colour`: D3DRS_FOGCOLOR's channels (a D3DCOLOR: × 255, truncated).
+    pub fog_colour: [f32; 4],
+    /// D3DRS_FOGSTART, D3DRS_FOGEND, D3DRS_FOGDENSITY.
+    pub fog_start: f32,
+    pub fog_end: f32,
+    pub fog_density: f32,
+    /// `ortho`: the runner's projection matrix is the identity (z fog);
+    /// `non-ortho` (the start) sets its _44 to 1.01, which gives w fog.
+    pub ortho_fog: bool,
     pub viewports: bool,
 }
 

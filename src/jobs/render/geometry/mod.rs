@@ -153,6 +153,34 @@ struct FileDepth {
 /// A problem: the field under `geometry` and what is wrong.
 type Problem = (String, String);
 
+/// A stencil test needs a depth-stencil format with stencil bits, and its
+/// reference and clear value must fit in them.
+fn check_stencil(state: &state::RasterState, format: Option<DepthFormat>) -> Result<(), Problem> {
+    let Some(s) = &state.stencil else {
+        return Ok(());
+    };
+    let max = format.map_or(0, DepthFormat::stencil_max);
+    if max == 0 {
+        return Err(problem(
+            "stencil",
+            "the stencil lives in a depth-stencil surface with stencil bits: give `depth` with format D24S8, D24X4S4 or D15S1 (func ALWAYS and write false leave depth untested)",
+        ));
+    }
+    let name = format.map_or("", DepthFormat::name);
+    for (field, v) in [
+        ("stencil.ref", Some(s.reference)),
+        ("stencil.clear", s.clear),
+    ] {
+        if let Some(v) = v.filter(|&v| v > max) {
+            return Err(problem(
+                field,
+                format!("{v}: D3DFMT_{name}'s stencil holds 0 to {max}"),
+            ));
+        }
+    }
+    Ok(())
+}
+
 fn problem(field: &str, message: impl Into<String>) -> Problem {
     (field.to_string(), message.into())
 }
@@ -251,12 +279,7 @@ pub(crate) fn read(
         fog: g.fog.as_ref(),
     })?;
     let depth = g.depth.as_ref().map(depth).transpose()?;
-    if state.stencil.is_some() && depth.map(|d| d.format) != Some(DepthFormat::D24S8) {
-        return Err(problem(
-            "stencil",
-            "the stencil lives in a D3DFMT_D24S8 depth-stencil surface: give `depth` with format D24S8 (func ALWAYS and write false leave depth untested)",
-        ));
-    }
+    check_stencil(&state, depth.map(|d| d.format))?;
     let geometry = Geometry {
         vertices,
         indices: g.indices.clone(),

@@ -10,6 +10,7 @@
 //! before a triangle that covers a pixel already in it, so that blending
 //! sees every earlier triangle.
 
+mod clipped;
 mod gpu;
 mod one_pass;
 
@@ -39,7 +40,7 @@ pub struct DepthBuffer {
     pub format: DepthFormat,
     /// Stored depths, row-major.
     pub values: Vec<f64>,
-    /// Stored stencil values, row-major (D3DFMT_D24S8's eight bits; 0 in
+    /// Stored stencil values, row-major (the format's stencil bits; 0 in
     /// a surface without stencil).
     pub stencil: Vec<u8>,
 }
@@ -184,13 +185,20 @@ fn vertex_stage(
         });
         let unset =
             |a: &Attribute| [f64::from(unwritten(program.profile, &a.usage, a.index, true)); 4];
+        let fog = |v: usize| match fog_from_w(g) {
+            // A pre-transformed vertex holds 1/w ("Direct3D takes the
+            // reciprocal of the RHW element ... to reproduce true w").
+            true if transformed => Some(1.0 / pos[v][3]),
+            true => Some(pos[v][3]),
+            false => specular.map(|s| s[v][3]),
+        };
         let values = (0..n)
             .map(|v| {
                 let values = wanted
                     .iter()
                     .map(|(_, a)| attr(a).map_or(unset(a), |vals| widen(vals[v])))
                     .collect();
-                with_size(values, sizes.map(|s| s[v][0]), specular.map(|s| s[v][3]))
+                with_size(values, sizes.map(|s| s[v][0]), fog(v))
             })
             .collect();
         return Ok(Stage {
@@ -200,7 +208,7 @@ fn vertex_stage(
             slots,
             texcoord,
             fixed_function: !transformed,
-            fog_given: specular.is_some(),
+            fog_given: specular.is_some() || fog_from_w(g),
         });
     };
     let shader = &list.shaders[vs].loaded.shader;
@@ -233,10 +241,7 @@ fn vertex_stage(
     let columns: Vec<Option<usize>> = wanted.iter().map(|(_, a)| column(a)).collect();
     let defaults = unwritten_values(program, shader, &wanted, &columns);
     let size_column = column(&psize);
-    let fog_column = column(&Attribute {
-        usage: "fog".into(),
-        index: 0,
-    });
+    let fog_column = shader_fog_column(g, position, &column);
     Ok(Stage {
         positions: out.values.iter().map(|v| widen(v[position])).collect(),
         values: out
@@ -254,7 +259,7 @@ fn vertex_stage(
                 with_size(
                     values,
                     size_column.map(|c| v[c][0]),
-                    fog_column.map(|c| v[c][0]),
+                    fog_column.map(|(c, k)| v[c][k]),
                 )
             })
             .collect(),
@@ -291,6 +296,37 @@ fn unwritten_values(
             })
         })
         .collect()
+}
+
+/// The output column and component a vertex shader's fog factor comes
+/// from. Vertex fog reads oFog; a vertex shader that writes none but writes
+/// the specular colour (oD1) gives its alpha, as the fixed-function
+/// pipeline's vertex fog does (vkd3d's fog.shader_test, recorded on native
+/// Direct3D 9: `specular = float4(0, 0, 0, 0.3)` fogs by 0.3). Table fog
+/// from w reads the position's own w.
+fn shader_fog_column(
+    g: &Geometry,
+    position: usize,
+    column: &dyn Fn(&Attribute) -> Option<usize>,
+) -> Option<(usize, usize)> {
+    if fog_from_w(g) {
+        return Some((position, 3));
+    }
+    let attribute = |usage: &str, index| Attribute {
+        usage: usage.into(),
+        index,
+    };
+    column(&attribute("fog", 0))
+        .map(|c| (c, 0))
+        .or_else(|| column(&attribute("color", 1)).map(|c| (c, 3)))
+}
+
+/// Whether the draw's fog is table fog from w, read like vertex fog from a
+/// column the vertex stage fills.
+fn fog_from_w(g: &Geometry) -> bool {
+    g.state
+        .fog
+        .is_some_and(|f| f.w && f.mode != FogMode::Vertex)
 }
 
 /// The primitives of the draw on screen, each with its provoking vertex
@@ -575,6 +611,7 @@ impl Pass<'_> {
                     s.reference,
                     s.mask,
                     s.write_mask,
+                    buffer.format.stencil_max(),
                 );
                 buffer.stencil[t] = o.written;
                 (o.survives(), Some(o))
@@ -720,7 +757,8 @@ pub(crate) fn draw(
                 _ => None,
             })
             .collect();
-        w.geometry(tris.len(), &culled, viewport.rect(), g.scissor);
+        let clipped = |x, y| clipped::at(g, &stage, &viewport, clip_rect, (x, y));
+        w.geometry(tris.len(), &culled, (viewport.rect(), g.scissor), &clipped);
     }
     // The targets this draw writes leave `states` while it runs, so that
     // the samplers may borrow the others (a draw never samples its own).
@@ -891,9 +929,9 @@ fn shade_all(
         .map(|(k, s)| (s.slot, k, s.flat))
         .collect();
     let fog = fog_state(list, d, stage)?;
-    if fog.is_some_and(|f| f.mode == FogMode::Vertex) {
-        // The fog factor rides along as one more input, taken out again
-        // before the pixel shader sees them.
+    if fog.is_some_and(|f| f.mode == FogMode::Vertex || f.w) {
+        // The fog factor (or table fog's w) rides along as one more input,
+        // taken out again before the pixel shader sees them.
         slots.push((FOG_SLOT, stage.slots.len() + 1, [false; 4]));
     }
     let mut drawn = Drawn {
@@ -959,7 +997,7 @@ fn shade_all(
         drawn.total = drawn
             .total
             .saturating_add(out.quad_executed.iter().sum::<u64>());
-        add_sites(&mut drawn.gradients, &out.gradients);
+        crate::jobs::render::costs::add_sites(&mut drawn.gradients, &out.gradients);
         if let Some(w) = pass.watch.as_deref_mut() {
             let program = list.shaders[d.shader].loaded.shader.program();
             w.primitive(program, (k, tri, *provoking), &window, &out);
@@ -991,14 +1029,14 @@ fn fog_state(list: &DrawList, d: &DrawStep, stage: &Stage) -> Result<Option<Fog>
     }
     if fog.mode == FogMode::Vertex && !stage.fog_given {
         return Err(DrawFailure::Message(
-            "geometry.fog: vertex fog (mode \"vertex\") reads the vertex shader's oFog (dcl_fog), or without a vertex shader the vertices' color1 alpha, and the draw gives neither".into(),
+            "geometry.fog: vertex fog (mode \"vertex\") reads the vertex shader's oFog (dcl_fog) or else its specular alpha (oD1.w), or without a vertex shader the vertices' color1 alpha, and the draw gives none of them".into(),
         ));
     }
     Ok(Some(fog))
 }
 
 /// Fogs oC0 of the window's covered pixels: by the interpolated vertex
-/// factor (`factors`, over the window's quad grid) or the pixel's depth.
+/// factor or w (`factors`, over the window's quad grid) or the pixel's z.
 fn fog_pixels(
     out: &mut DrawOutput,
     window: &raster::triangle::Window,
@@ -1019,18 +1057,5 @@ fn fog_pixels(
             None => window.depth[i],
         };
         *c = fog.blend(*c, fog.factor(d));
-    }
-}
-
-/// Adds one triangle's gradient sites to the draw's.
-fn add_sites(into: &mut [GradientSite], from: &[GradientSite]) {
-    for (g, b) in into.iter_mut().zip(from) {
-        g.quads += b.quads;
-        g.divergent_quads += b.divergent_quads;
-        g.executions += b.executions;
-        g.divergent_executions += b.divergent_executions;
-        if let Some((lo, hi)) = b.lod {
-            g.lod = Some(g.lod.map_or((lo, hi), |(a, c)| (a.min(lo), c.max(hi))));
-        }
     }
 }

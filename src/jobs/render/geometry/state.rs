@@ -138,6 +138,7 @@ pub(crate) struct FileFog {
     start: Option<f64>,
     end: Option<f64>,
     density: Option<f64>,
+    depth: Option<String>,
 }
 
 fn fog(f: &FileFog) -> Result<Fog, Problem> {
@@ -172,6 +173,17 @@ fn fog(f: &FileFog) -> Result<Fog, Problem> {
         start: f.start.unwrap_or(0.0),
         end: f.end.unwrap_or(1.0),
         density: f.density.unwrap_or(1.0),
+        w: match f.depth.as_deref().map(str::to_ascii_lowercase).as_deref() {
+            None | Some("z") => false,
+            Some("w") if mode != FogMode::Vertex => true,
+            Some("w") => return Err(problem("fog.depth", "vertex fog reads no depth")),
+            Some(_) => {
+                return Err(problem(
+                    "fog.depth",
+                    "\"z\" or \"w\" (w where the projection matrix's fourth column is not [0, 0, 0, 1])",
+                ))
+            }
+        },
     };
     if ![fog.start, fog.end, fog.density]
         .iter()

@@ -191,6 +191,7 @@ pub(super) fn refuse_fog(shader: &Shader, fog: Option<&Fog>) -> Result<(), DrawF
     });
     let why = match (fog.mode, odepth) {
         (FogMode::Vertex, _) => "vertex fog (mode \"vertex\") is drawn on the emulator only: the GPU backend does not carry the interpolated fog factor to its pixels",
+        (_, _) if fog.w => "table fog from w (depth \"w\") is drawn on the emulator only: the GPU backend applies table fog from each pixel's rasterised z",
         (_, true) => "table fog after a shader that writes oDepth is drawn on the emulator only: the GPU backend's pixels bring back oDepth, not the interpolated z that fog reads",
         _ => return Ok(()),
     };
