@@ -1,0 +1,13 @@
+// oracle: target=ps_2_a
+// ps_2_x shader decompiled by ps30 (HLSL for ps_2_a)
+sampler2D s : register(s0);
+
+float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
+{
+    float4 oC0 = 0;
+    float4 r0 = 0;
+    r0 = tex2D(s, tex2D(s, texcoord0.xy).xy);
+    r0 = tex2D(s, tex2D(s, r0.xy).xy);
+    oC0 = tex2D(s, r0.xy);
+    return oC0;
+}
