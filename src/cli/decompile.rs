@@ -1,6 +1,7 @@
-//! `ps30 decompile`: a ps_3_0 shader (bytecode or assembly) as HLSL, and
-//! with `--verify` the proof that the HLSL means what the shader meant:
-//! Microsoft's compiler compiles it and both run in the emulator on the
+//! `ps30 decompile`: a ps_2_0, ps_2_x, ps_3_0, vs_2_0, vs_2_x or vs_3_0
+//! shader (bytecode or assembly) as HLSL, and with `--verify` the proof
+//! that the HLSL means what the shader meant: Microsoft's compiler
+//! compiles it and both run in the emulator (pixel or vertex stage) on the
 //! same inputs.
 
 use super::args::{InputArgs, SourceArgs};
@@ -16,7 +17,8 @@ use std::path::PathBuf;
 
 #[derive(clap::Args)]
 pub struct Args {
-    /// Shader: ps_3_0 bytecode or assembly, a bundled name, or `-` for standard input.
+    /// Shader: ps_2_0, ps_2_x, ps_3_0, vs_2_0, vs_2_x or vs_3_0 bytecode or assembly, a
+    /// bundled name, or `-` for standard input (ps_1_x is refused: no HLSL target remains).
     /// Several, or a directory (walked recursively for .psh, .asm, .dis, .fxo, .cso and .pso
     /// files): corpus mode, one line per file and a summary.
     #[arg(required = true, num_args = 1..)]
@@ -30,11 +32,12 @@ pub struct Args {
     output: Option<PathBuf>,
     /// Compile the HLSL with Microsoft's compiler (tools/oracle/setup.sh installs it into
     /// target/oracle, or name its folder with PS30_ORACLE) and run both shaders in the
-    /// emulator on the same random and edge-case inputs. Exit 1 when they differ, 3 when the
+    /// emulator (vertex shaders in the vertex stage) on the same random and edge-case inputs. Exit 1 when they differ, 3 when the
     /// compiler is not installed. One shader at a time (not in corpus mode).
     #[arg(long)]
     verify: bool,
-    /// Pixels per verification draw (the side of a square target).
+    /// Pixels per verification draw (the side of a square target); a vertex shader's draws
+    /// have its square of vertices.
     #[arg(long, default_value_t = 64, value_parser = clap::value_parser!(u32).range(2..=512))]
     verify_size: u32,
     /// Print JSON (the HLSL, its counts, and with --verify the verdict) instead of the HLSL.

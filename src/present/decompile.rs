@@ -17,8 +17,11 @@ pub fn verdict_text(v: &Verdict) -> String {
             return out;
         }
         Kind::Identical => out.push_str(&format!(
-            "// verify: identical: {} values of {} draws of {} pixels, bit for bit\n",
-            v.values, v.draws, v.pixels
+            "// verify: identical: {} values of {} draws of {} {}, bit for bit\n",
+            v.values,
+            v.draws,
+            v.pixels,
+            unit(v)
         )),
         Kind::WithinBound => {
             out.push_str(&format!(
@@ -29,7 +32,7 @@ pub fn verdict_text(v: &Verdict) -> String {
                 ulps(v.max_ulp)
             ));
             if let Some(w) = &v.worst {
-                out.push_str(&divergence(w));
+                out.push_str(&divergence(w, v));
             }
         }
         Kind::Different => {
@@ -44,11 +47,11 @@ pub fn verdict_text(v: &Verdict) -> String {
             if let Some(w) = &v.first_unexplained {
                 out.push_str(&format!(
                     "//   first beyond the bound: {}",
-                    &divergence(w)[5..]
+                    &divergence(w, v)[5..]
                 ));
             }
             if let Some(w) = &v.worst {
-                out.push_str(&format!("//   largest: {}", &divergence(w)[5..]));
+                out.push_str(&format!("//   largest: {}", &divergence(w, v)[5..]));
             }
         }
     }
@@ -65,21 +68,33 @@ pub fn verdict_text(v: &Verdict) -> String {
 }
 
 /// One differing value as a comment line.
-fn divergence(w: &crate::jobs::decompile::Divergence) -> String {
+fn divergence(w: &crate::jobs::decompile::Divergence, v: &Verdict) -> String {
     let bound = match w.bound {
         Some(e) => format!("bound {e:e}"),
         None => "no bound derived".into(),
     };
+    let at = if v.stage == crate::core::profile::Stage::Vertex {
+        format!("vertex {}", w.x)
+    } else {
+        format!("pixel ({}, {})", w.x, w.y)
+    };
     format!(
-        "//   draw {} pixel ({}, {}) {}: original {:e}, recompiled {:e}, difference {:e}, {bound}\n",
+        "//   draw {} {at} {}: original {:e}, recompiled {:e}, difference {:e}, {bound}\n",
         w.draw,
-        w.x,
-        w.y,
         w.output,
         w.original,
         w.recompiled,
         (w.original - w.recompiled).abs()
     )
+}
+
+/// What a draw is made of: pixels, or vertices.
+fn unit(v: &Verdict) -> &'static str {
+    if v.stage == crate::core::profile::Stage::Vertex {
+        "vertices"
+    } else {
+        "pixels"
+    }
 }
 
 fn ulps(n: u64) -> String {

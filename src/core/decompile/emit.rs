@@ -136,7 +136,11 @@ fn flow_or_value(
         Opcode::Nop | Opcode::Label => {}
         Opcode::Ret if last => {}
         Opcode::Ret => body.line("return;"),
-        Opcode::If | Opcode::Ifc => body.open(format!("if ({})", ctx.condition(x)?)),
+        Opcode::If | Opcode::Ifc => body.open(format!(
+            "{}if ({})",
+            super::profiles::branch(shader, x),
+            ctx.condition(x)?
+        )),
         Opcode::Else => {
             body.depth = body.depth.saturating_sub(1);
             body.line("} else {");
@@ -161,7 +165,16 @@ fn flow_or_value(
             body.reps += 1;
             body.open(format!("for (int {n} = 0; {n} < {count}.x; {n}++)"));
         }
-        Opcode::Loop => loop_header(ctx, x, body)?,
+        Opcode::Loop => {
+            let counter = COUNTERS.get(ctx.counters.len()).copied();
+            match super::vertex::uniform_loop(shader, x, &ctx.names.ints, counter)? {
+                Some((head, name)) => {
+                    ctx.counters.push(name);
+                    body.open(head);
+                }
+                None => loop_header(ctx, x, body)?,
+            }
+        }
         Opcode::TexKill => {
             let d = x.dst.ok_or_else(|| {
                 DecompileError::Unsupported("texkill without its register".into())
@@ -296,7 +309,10 @@ fn destination(reg: crate::core::ir::Reg, comps: &[u8]) -> Result<String, Decomp
         RegFile::ColorOut => format!("oC{}", reg.index),
         RegFile::DepthOut => return Ok("oDepth".into()),
         RegFile::Predicate => "p0".into(),
-        _ => return Err(DecompileError::Unsupported(format!("writing {reg}"))),
+        _ => match super::vertex::variable(reg) {
+            Some(name) => name,
+            None => return Err(DecompileError::Unsupported(format!("writing {reg}"))),
+        },
     };
     Ok(if comps.len() == 4 {
         base

@@ -7,7 +7,7 @@
 
 use super::names::{literal, FloatName, Names};
 use super::DecompileError;
-use crate::core::ir::{Instruction, Reg, Src, SrcMod};
+use crate::core::ir::{Instruction, Reg, RelIndex, Src, SrcMod};
 use crate::core::isa::{Compare, Opcode, RegFile, SamplerType};
 use std::cell::RefCell;
 use std::collections::BTreeMap;
@@ -67,6 +67,8 @@ pub(crate) struct Ctx<'a> {
     pub names: &'a Names,
     /// Input register → parameter name.
     pub inputs: BTreeMap<u32, String>,
+    /// ps_2_0/ps_2_x texture coordinate `t#` → parameter name.
+    pub texcoords: BTreeMap<u32, String>,
     /// Inputs read as `v[aL + n]`, declared as arrays.
     pub input_arrays: Vec<super::InputArray>,
     /// The loop counters of the enclosing `loop`s, innermost last.
@@ -191,7 +193,7 @@ impl Ctx<'_> {
     /// Source `s` read at swizzle positions `positions`, with its modifier.
     pub(crate) fn operand(&self, s: &Src, positions: &[usize]) -> Result<String, DecompileError> {
         let comps: Vec<u8> = positions.iter().map(|&p| s.swizzle.0[p]).collect();
-        self.register(s.reg, s.relative.is_some(), s.modifier, &comps)
+        self.register_at(s.reg, s.relative, s.modifier, &comps)
     }
 
     /// [`Ctx::operand`] of a component-wise operation, where a source that
@@ -204,12 +206,13 @@ impl Ctx<'_> {
     ) -> Result<String, DecompileError> {
         let comps: Vec<u8> = positions.iter().map(|&p| s.swizzle.0[p]).collect();
         if comps.len() > 1 && comps.iter().all(|&c| c == comps[0]) {
-            return self.register(s.reg, s.relative.is_some(), s.modifier, &comps[..1]);
+            return self.register_at(s.reg, s.relative, s.modifier, &comps[..1]);
         }
-        self.register(s.reg, s.relative.is_some(), s.modifier, &comps)
+        self.register_at(s.reg, s.relative, s.modifier, &comps)
     }
 
-    /// Register `reg` read at components `comps`, with modifier `m`.
+    /// Register `reg` read at components `comps`, with modifier `m`
+    /// (`relative`: indexed by the loop counter).
     pub(crate) fn register(
         &self,
         reg: Reg,
@@ -217,6 +220,18 @@ impl Ctx<'_> {
         m: SrcMod,
         comps: &[u8],
     ) -> Result<String, DecompileError> {
+        self.register_at(reg, relative.then_some(RelIndex::Loop), m, comps)
+    }
+
+    /// [`Ctx::register`] indexed by `index` (`aL`, or a component of `a0`).
+    pub(crate) fn register_at(
+        &self,
+        reg: Reg,
+        index: Option<RelIndex>,
+        m: SrcMod,
+        comps: &[u8],
+    ) -> Result<String, DecompileError> {
+        let relative = index.is_some();
         let unsupported = |what: &str| Err(DecompileError::Unsupported(what.to_string()));
         let text = match reg.file {
             RegFile::Const if relative => {
@@ -228,8 +243,12 @@ impl Ctx<'_> {
                 else {
                     return unsupported("relative read outside an array");
                 };
-                let Some(counter) = self.counters.last() else {
-                    return unsupported("c[aL] outside a loop");
+                let counter = match index {
+                    Some(RelIndex::Addr(c)) => format!("a0.{}", AXES[c as usize & 3]),
+                    _ => match self.counters.last() {
+                        Some(counter) => counter.clone(),
+                        None => return unsupported("c[aL] outside a loop"),
+                    },
                 };
                 let offset = reg.index - first;
                 let index = if offset == 0 {
@@ -300,6 +319,11 @@ impl Ctx<'_> {
             RegFile::Face if comps.len() == 1 => "vface".into(),
             RegFile::Face => format!("vface.{}", "x".repeat(comps.len())),
             RegFile::ColorOut => swizzled(&format!("oC{}", reg.index), 4, comps),
+            RegFile::Texture => match self.texcoords.get(&reg.index) {
+                Some(name) => swizzled(name, 4, comps),
+                None => return unsupported("a texture coordinate read without its declaration"),
+            },
+            RegFile::Address => swizzled("a0", 4, comps),
             RegFile::Predicate => swizzled("p0", 4, comps),
             _ => return unsupported(&format!("reading {reg} at .{}", swizzle_text(comps))),
         };
@@ -436,6 +460,18 @@ pub(crate) fn value(
                 .compare
                 .ok_or_else(|| DecompileError::Unsupported("setp without a comparison".into()))?;
             return Ok(format!("{} {} {}", src(0)?, compare(c), src(1)?));
+        }
+        op if super::vertex::handles(op) => {
+            let operand = |k: usize, positions: &[usize]| {
+                let s = ins.src.get(k).ok_or_else(|| {
+                    DecompileError::Unsupported(format!(
+                        "{} without source {k}",
+                        op.info().mnemonic
+                    ))
+                })?;
+                ctx.operand(s, positions)
+            };
+            super::vertex::value(ins, &mask, &operand, atomic)?
         }
         op => {
             return Err(DecompileError::Unsupported(format!(

@@ -37,6 +37,10 @@ fn reads(shader: &Shader, ins: &Instruction) -> BTreeMap<(RegFile, u32), u8> {
         for r in 0..rows {
             *out.entry((s.reg.file, s.reg.index + r)).or_default() |= bits;
         }
+        // `c[a0.x + n]` reads a0 too: a value must not move past a `mova`
+        if let Some(crate::core::ir::RelIndex::Addr(c)) = s.relative {
+            *out.entry((RegFile::Address, 0)).or_default() |= 1 << c;
+        }
     }
     if ins.op == Opcode::TexKill {
         if let Some(d) = ins.dst {

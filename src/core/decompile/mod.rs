@@ -16,22 +16,27 @@
 //! another profile is another row there (its output semantics and
 //! input spellings), with the same expressions.
 
+mod arrays;
 mod emit;
 mod expr;
 mod fold;
 mod matrix;
 mod names;
+mod profiles;
 mod reduce;
 mod repeat;
+mod vertex;
 
 use crate::core::bytecode::ctab::ConstantTable;
 use crate::core::ir::{Instruction, Shader};
 use crate::core::isa::{Opcode, RegFile};
 use emit::Body;
 use names::{Names, Uses};
+pub use profiles::semantic as input_semantic;
 use serde::Serialize;
 use std::collections::{BTreeMap, BTreeSet};
 use std::fmt;
+pub use vertex::{Halves, HALVES};
 
 /// A profile the decompiler writes HLSL for.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
@@ -114,6 +119,8 @@ struct Scan {
     colors: BTreeSet<u32>,
     depth: bool,
     predicate: bool,
+    /// `mova` writes `a0` (vertex shaders).
+    address: bool,
 }
 
 fn scan(shader: &Shader, instructions: &[Instruction]) -> Scan {
@@ -171,6 +178,7 @@ fn scan(shader: &Shader, instructions: &[Instruction]) -> Scan {
                 }
                 RegFile::DepthOut => s.depth = true,
                 RegFile::Predicate => s.predicate = true,
+                RegFile::Address => s.address = true,
                 _ => {}
             }
         }
@@ -246,16 +254,29 @@ fn input_runs(shader: &Shader) -> Vec<(u32, u32)> {
 }
 
 /// The parameters of `main` for the shader's input declarations, the
-/// register → name map expressions read, and the input arrays.
-type Inputs = (Vec<Param>, BTreeMap<u32, String>, Vec<InputArray>);
+/// register → name maps expressions read (`v#`; ps_2_0's `t#`), and the
+/// input arrays.
+type Inputs = (
+    Vec<Param>,
+    BTreeMap<u32, String>,
+    BTreeMap<u32, String>,
+    Vec<InputArray>,
+);
 
 /// [`Inputs`] of `shader`.
 fn inputs(shader: &Shader, taken: &mut BTreeSet<String>) -> Result<Inputs, DecompileError> {
     let mut params = Vec::new();
     let mut map = BTreeMap::new();
+    let mut texcoords = BTreeMap::new();
     let runs = input_runs(shader);
     let mut arrays = Vec::new();
-    for d in &shader.program().inputs {
+    // vs_3_0's output declarations are the output struct's (`vertex.rs`)
+    for d in shader
+        .program()
+        .inputs
+        .iter()
+        .filter(|d| d.reg.file != RegFile::Output)
+    {
         let run = runs.iter().find(|(f, n)| {
             d.reg.file == RegFile::Input && d.reg.index >= *f && d.reg.index < f + n
         });
@@ -284,16 +305,20 @@ fn inputs(shader: &Shader, taken: &mut BTreeSet<String>) -> Result<Inputs, Decom
             RegFile::Position => ("float2", "vpos".to_string(), "VPOS".to_string()),
             RegFile::Face => ("float", "vface".to_string(), "VFACE".to_string()),
             _ => {
-                let usage = d.usage.to_ascii_lowercase();
-                let name = names::identifier(&format!("{usage}{}", d.usage_index), taken);
+                let (usage, usage_index) = profiles::semantic(d);
+                let usage = usage.to_ascii_lowercase();
+                let name = names::identifier(&format!("{usage}{usage_index}"), taken);
                 let centroid = if d.centroid { "_centroid" } else { "" };
                 (
                     "float4",
                     name,
-                    format!("{}{}{centroid}", usage.to_ascii_uppercase(), d.usage_index),
+                    format!("{}{usage_index}{centroid}", usage.to_ascii_uppercase()),
                 )
             }
         };
+        if d.reg.file == RegFile::Texture {
+            texcoords.insert(d.reg.index, name.clone());
+        }
         if d.reg.file == RegFile::Input && map.insert(d.reg.index, name.clone()).is_some() {
             return Err(DecompileError::Unsupported(format!(
                 "v{} is declared twice (packed inputs)",
@@ -305,7 +330,7 @@ fn inputs(shader: &Shader, taken: &mut BTreeSet<String>) -> Result<Inputs, Decom
             name,
         });
     }
-    Ok((params, map, arrays))
+    Ok((params, map, texcoords, arrays))
 }
 
 /// How many of the constant table's uniforms are declared by name.
@@ -323,16 +348,29 @@ fn named_uniforms(table: Option<&ConstantTable>, names: &Names) -> usize {
     })
 }
 
-/// Decompiles `shader` (ps_3_0) with the names of its constant table.
+/// Decompiles `shader` (ps_2_0, ps_2_x, ps_3_0, vs_2_0, vs_2_x or vs_3_0)
+/// with the names of its constant table.
 pub fn decompile(
     shader: &Shader,
     table: Option<&ConstantTable>,
 ) -> Result<Decompiled, DecompileError> {
     // sin and cos read as the calls the compiler lowered (`reduce.rs`)
     let ins = reduce::read_back(shader);
-    let s = scan(shader, &ins);
-    let mut taken: BTreeSet<String> = BTreeSet::new();
-    let (params, input_map, input_arrays) = inputs(shader, &mut taken)?;
+    let mut s = scan(shader, &ins);
+    // the compiler takes colour outputs only from COLOR0 on (X4538): the
+    // ones below the highest written are written too, as zeros
+    if let Some(&last) = s.colors.last() {
+        s.colors.extend(0..last);
+    }
+    let mut taken: BTreeSet<String> = BTreeSet::from([vertex::ROUND.to_string()]);
+    let target = profiles::target(shader.program().profile)?;
+    let vertex = shader.program().profile.stage() == crate::core::profile::Stage::Vertex;
+    let fields = if vertex {
+        vertex::fields(shader)?
+    } else {
+        Vec::new()
+    };
+    let (params, input_map, texcoords, input_arrays) = inputs(shader, &mut taken)?;
     let names = Names::new(shader.program(), table, &s.uses, &mut taken)?;
     // runs of dot products over a whole matrix read as `mul` (`matrix.rs`)
     let ins = matrix::group(ins, &names);
@@ -340,6 +378,7 @@ pub fn decompile(
     let mut ctx = expr::Ctx {
         names: &names,
         inputs: input_map,
+        texcoords,
         input_arrays,
         counters: Vec::new(),
         pending: Default::default(),
@@ -350,22 +389,17 @@ pub fn decompile(
     let labels: Vec<(u32, usize)> = info.labels.iter().map(|(&l, &i)| (l, i as usize)).collect();
     let subroutines = !labels.is_empty();
     let mut text = String::new();
-    text.push_str(&format!(
-        "// {} shader decompiled by ps30\n",
-        PS_3_0.profile
-    ));
+    text.push_str(&profiles::header(shader.program().profile, target));
     for d in &names.decls {
         text.push_str(d);
         text.push('\n');
     }
-    // `precise`: the compiler keeps the arithmetic as written (no regrouped
-    // sums or products); not where `lerp` is, which it then expands
-    let precise = if shader.instructions().iter().any(|x| x.op == Opcode::Lrp) {
-        ""
-    } else {
-        "precise "
-    };
-    let locals = locals(&s, precise);
+    if vertex {
+        text.push_str(&vertex::rounding(shader));
+        text.push_str(&vertex::declaration(&fields));
+    }
+    let precise = if imprecise(shader) { "" } else { "precise " };
+    let locals = locals(&s, &fields, precise);
     let mut statements = 0;
     if subroutines {
         text.push('\n');
@@ -401,27 +435,8 @@ pub fn decompile(
             text.push_str("}\n");
         }
     }
-    let single = s.colors.iter().copied().eq([0]) && !s.depth;
-    let mut sig: Vec<String> = params
-        .iter()
-        .map(|p| {
-            if subroutines {
-                p.decl
-                    .replacen(&format!(" {}", p.name), &format!(" in_{}", p.name), 1)
-            } else {
-                p.decl.clone()
-            }
-        })
-        .collect();
-    if !single {
-        let out = if subroutines { "out_" } else { "" };
-        for &c in &s.colors {
-            sig.push(format!("out {precise}float4 {out}oC{c} : COLOR{c}"));
-        }
-        if s.depth {
-            sig.push(format!("out {precise}float {out}oDepth : DEPTH"));
-        }
-    }
+    let single = !vertex && s.colors.iter().copied().eq([0]) && !s.depth;
+    let sig = signature(&params, &s, single, subroutines, precise);
     let mut body = Body::new(1);
     if subroutines {
         for p in &params {
@@ -447,7 +462,11 @@ pub fn decompile(
     let head = body.lines.len();
     emit::statements(&mut ctx, shader, &ins, 0..main_end, true, &mut body)?;
     statements += body.lines.len() - head;
-    if single {
+    if vertex {
+        vertex::epilogue(&fields)
+            .into_iter()
+            .for_each(|l| body.line(l));
+    } else if single {
         body.line("return oC0;");
     } else if subroutines {
         for &c in &s.colors {
@@ -457,7 +476,11 @@ pub fn decompile(
             body.line("out_oDepth = oDepth;");
         }
     }
-    let ret = if single { "float4" } else { "void" };
+    let ret = match (vertex, single) {
+        (true, _) => vertex::STRUCT,
+        (_, true) => "float4",
+        _ => "void",
+    };
     let semantic = if single { " : COLOR" } else { "" };
     text.push_str(&format!("\n{ret} main({}){semantic}\n{{\n", sig.join(", ")));
     for line in body.lines {
@@ -466,7 +489,7 @@ pub fn decompile(
     }
     text.push_str("}\n");
     Ok(Decompiled {
-        target: PS_3_0,
+        target,
         hlsl: text,
         instructions: n,
         statements,
@@ -474,11 +497,63 @@ pub fn decompile(
     })
 }
 
+/// Whether the variables go without `precise`. `precise` makes the
+/// compiler keep the arithmetic as written (no regrouped sums or
+/// products), but not where `lerp` is, which it then expands; and in
+/// vs_2_0 a shader with a `precise` variable and a loop over an `int`
+/// uniform is refused (X4509: the compiler wants the int bound to a `c`
+/// register too, measured).
+fn imprecise(shader: &Shader) -> bool {
+    let p = shader.program();
+    let uniform_loop = |x: &Instruction| {
+        x.op == Opcode::Loop
+            && x.src
+                .iter()
+                .any(|s| s.reg.file == RegFile::ConstInt && p.int_def(s.reg.index).is_none())
+    };
+    shader.instructions().iter().any(|x| x.op == Opcode::Lrp)
+        || p.profile == crate::core::profile::Profile::Vs2_0
+            && shader.instructions().iter().any(uniform_loop)
+}
+
+/// The parameters of `main`: the inputs (`in_` copies where subroutines
+/// share them as globals) and, unless `oC0` alone is returned, an `out`
+/// parameter per output (`precise` as the locals are).
+fn signature(
+    params: &[Param],
+    s: &Scan,
+    single: bool,
+    subroutines: bool,
+    precise: &str,
+) -> Vec<String> {
+    let mut sig: Vec<String> = params
+        .iter()
+        .map(|p| {
+            if subroutines {
+                p.decl
+                    .replacen(&format!(" {}", p.name), &format!(" in_{}", p.name), 1)
+            } else {
+                p.decl.clone()
+            }
+        })
+        .collect();
+    if !single {
+        let out = if subroutines { "out_" } else { "" };
+        for &c in &s.colors {
+            sig.push(format!("out {precise}float4 {out}oC{c} : COLOR{c}"));
+        }
+        if s.depth {
+            sig.push(format!("out {precise}float {out}oDepth : DEPTH"));
+        }
+    }
+    sig
+}
+
 /// The declarations of the registers the body writes, each starting at 0
 /// (what the emulator, and Direct3D's reference rasteriser, give a register
 /// before its first write), `precise` (`"precise "`) or not (`""`).
-fn locals(s: &Scan, precise: &str) -> Vec<String> {
-    let mut out = Vec::new();
+fn locals(s: &Scan, fields: &[vertex::Field], precise: &str) -> Vec<String> {
+    let mut out = vertex::locals(fields, s.address, precise);
     for &c in &s.colors {
         out.push(format!("{precise}float4 oC{c} = 0;"));
     }

@@ -111,6 +111,12 @@ const RESERVED: &[&str] = &[
     "compile",
     "asm",
     "decl",
+    "a0",
+    "oPos",
+    "oFog",
+    "oPts",
+    "result",
+    "VS_OUTPUT",
 ];
 
 /// A valid HLSL identifier made from a constant table's name, different
@@ -140,7 +146,10 @@ fn is_register_name(s: &str) -> bool {
     let prefix = &s[..s.len() - digits.len()];
     !digits.is_empty()
         && digits.chars().all(|c| c.is_ascii_digit())
-        && ["r", "c", "i", "b", "s", "oC", "label", "n", "v"].contains(&prefix)
+        && [
+            "r", "c", "i", "b", "s", "oC", "label", "n", "v", "o", "oD", "oT",
+        ]
+        .contains(&prefix)
 }
 
 /// The HLSL spelling of an f32 that reads back as the same bits.
@@ -207,13 +216,8 @@ impl Names {
             }
             named.extend(first..end);
         }
-        for &r in &uses.relative {
-            if !named.contains(&r) {
-                return Err(DecompileError::Unsupported(format!(
-                    "c[aL + {r}] is read, and no array of the constant table covers c{r}"
-                )));
-            }
-        }
+        // relative reads outside the table's arrays (`arrays.rs`)
+        self.unnamed_arrays(program, consts, uses, &named, taken)?;
         for (&reg, _) in uses.floats.iter() {
             if !self.floats.contains_key(&reg) {
                 let name = format!("c{reg}");

@@ -157,7 +157,8 @@ fn only_sincos_reads(shader: &Shader, ins: &[Instruction], at: usize, d: Dst) ->
         if reads_lanes(x, d.reg.index) & live != 0 {
             let s = &x.src[0];
             let sincos = x.op == Opcode::SinCos
-                && x.src.len() == 1
+                // ps_2_x and vs_2_x name their macro's constants (any registers)
+                && x.src[1..].iter().all(|c| c.reg.file == RegFile::Const)
                 && s.modifier == SrcMod::None
                 && s.relative.is_none();
             if !sincos {

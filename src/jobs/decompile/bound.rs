@@ -46,7 +46,11 @@
 //!   in between), 1 otherwise (both results lie in [0, 1));
 //! * texture reads: 0 when the coordinates (and, in the quad, the
 //!   neighbours' coordinates that make the level of detail) carry no error,
-//!   since both shaders then sample at the same bits; unbounded otherwise;
+//!   since both shaders then sample at the same bits; unbounded otherwise
+//!   (vertex shaders' `texldl`: 0 at exact coordinates and level, no quad);
+//! * `slt`/`sge` (vertex shaders; 0 or 1): 0 unless `|a − b| ≤ e_a + e_b`
+//!   (and that bound is not 0), where the other shader may have chosen the
+//!   other value: 1; `sgn` (−1, 0 or 1): 0 unless `|a| ≤ e_a`, then 2;
 //! * `dsx`/`dsy`: `u·|d|` when the quad's operand carries no error,
 //!   unbounded otherwise;
 //! * a branch (`if_comp`, `break_comp`), `setp` or `texkill` whose operands
@@ -62,11 +66,24 @@
 //! factor (1+u)ᴺ < 1 + 2⁻¹⁰ of the exact one: [`SLACK`] covers it.
 //!
 //! The registers: the original's temporaries keep their numbers, outputs
-//! become temporaries 32–36, each value register `t` has its bound in
-//! `40 + t`, and 80–84 are scratch; the emulator runs temporaries up to
-//! 127 for this. Three free constant registers (from c223 down) hold the
-//! literals.
+//! become temporaries from 32 on (a pixel shader's `oC0`–`oC3` and `oDepth`
+//! 32–36; a vertex shader's by their row in the vertex stage's output
+//! block, 32–56), each value register `t` has its bound in `60 + t`, and
+//! 120–124 are scratch; both emulators run temporaries up to 127 for this
+//! (and the vertex stage runs `cmp` for it). Three free constant registers
+//! (from c223 down) hold the literals. A vertex shader that reads
+//! constants at a run-time index (`c[a0.x + n]`) could read those three,
+//! so it gets no bound shader (nor one that writes `o[aL]`): its
+//! verification stays bit for bit.
+//!
+//! The same derivation holds for vertex shaders, which compute in the same
+//! f32 arithmetic in the emulator (`emu::vertex` shares `emu::math`); only
+//! the quad is missing. `m4x4` and its kind are `dp4`s in a row, and get
+//! no bound: the compiler writes them as `dp4`s itself, so they do not
+//! appear in recompiled shaders, and an original with one keeps them
+//! unbounded (bit for bit).
 
+use crate::core::emu::vertex::output_row;
 use crate::core::ir::{
     Dst, Info, Instruction, Origin, Program, Reg, Shader, Slots, Src, SrcMod, Swizzle, WriteMask,
 };
@@ -83,12 +100,12 @@ pub const UNBOUNDED: f32 = 1.267_650_6e30;
 pub const SLACK: f32 = 1.0 + 1.0 / 1024.0;
 
 const OUT_BASE: u32 = 32;
-const ERR_BASE: u32 = 40;
-const RES: u32 = 80;
-const ERR: u32 = 81;
-const T: u32 = 82;
-const T2: u32 = 83;
-const POISON: u32 = 84;
+const ERR_BASE: u32 = 60;
+const RES: u32 = 120;
+const ERR: u32 = 121;
+const T: u32 = 122;
+const T2: u32 = 123;
+const POISON: u32 = 124;
 
 /// The literal registers: `k[0]` = (0, 1, 2, UNBOUNDED), `k[1]` = (u, 2u,
 /// 3u, 4u), `k[2]` = (5u, 6u, 1/ln 2 rounded up, 0).
@@ -137,19 +154,23 @@ fn lane(r: u32) -> Src {
     src(temp(r), Swizzle::IDENTITY)
 }
 
-/// The register a value of the original lives in inside the bound shader.
+/// The register a value of the original lives in inside the bound shader
+/// (a vertex output by its row in the vertex stage's output block, 0–24).
 fn value_reg(reg: Reg) -> Option<u32> {
     match reg.file {
         RegFile::Temp => Some(reg.index),
         RegFile::ColorOut => Some(OUT_BASE + reg.index),
         RegFile::DepthOut => Some(OUT_BASE + 4),
-        _ => None,
+        f => output_row(f, reg.index).map(|r| OUT_BASE + r as u32),
     }
 }
 
 /// Builds the bound shader's instruction list.
 struct Builder {
     k: K,
+    /// A vertex shader's: no quads (texture reads at exact coordinates
+    /// only, no gradients).
+    vertex: bool,
     out: Vec<Instruction>,
     slots: Vec<Slots>,
 }
@@ -264,31 +285,39 @@ fn free_constants(shader: &Shader) -> Option<K> {
 }
 
 /// The bound shader of `shader`: its outputs are the bounds of the
-/// original's outputs, pixel for pixel. `None` for a shader the analysis
-/// does not cover (vertex shaders, no free constant registers).
+/// original's outputs, pixel for pixel (vertex for vertex). `None` for a
+/// shader the analysis does not cover: no free constant registers, or a
+/// vertex shader that reads constants at a run-time index (`c[a0.x]`,
+/// which could reach the bound shader's literals) or writes an output at
+/// one (`o[aL]`, which has no shadow register).
 pub fn bound_shader(shader: &Shader) -> Option<Shader> {
     let p = shader.program();
-    if p.profile.stage() != crate::core::profile::Stage::Pixel {
+    let vertex = p.profile.stage() == crate::core::profile::Stage::Vertex;
+    let relative = |x: &Instruction| {
+        x.src
+            .iter()
+            .any(|s| s.relative.is_some() && s.reg.file == RegFile::Const)
+            || x.dst.is_some_and(|d| d.relative.is_some())
+    };
+    if vertex && p.instructions.iter().any(relative) {
         return None;
     }
     let k = free_constants(shader)?;
     let mut b = Builder {
         k,
+        vertex,
         out: Vec::new(),
         slots: Vec::new(),
     };
     let info = shader.info();
     let main_end = info.main_end as usize;
-    let mut outputs: BTreeSet<u32> = BTreeSet::new();
-    for x in &p.instructions {
-        if let Some(d) = x.dst {
-            match d.reg.file {
-                RegFile::ColorOut => outputs.insert(d.reg.index),
-                RegFile::DepthOut => outputs.insert(4),
-                _ => false,
-            };
-        }
-    }
+    let outputs: BTreeSet<(u32, Reg)> = p
+        .instructions
+        .iter()
+        .filter_map(|x| x.dst)
+        .filter(|d| d.reg.file != RegFile::Temp)
+        .filter_map(|d| value_reg(d.reg).map(|v| (v, d.reg)))
+        .collect();
     for (i, x) in p.instructions.iter().enumerate() {
         let slots = info.slots.get(i).copied().unwrap_or_default();
         let ends_main = i == main_end || (x.op == Opcode::Ret && i < main_end);
@@ -320,13 +349,14 @@ pub fn bound_shader(shader: &Shader) -> Option<Shader> {
     Some(Shader::new_validated(program, info))
 }
 
-/// Writes each output's bound (plus the poison of uncertain decisions).
-fn finish(b: &mut Builder, outputs: &BTreeSet<u32>) {
-    for &o in outputs {
-        let (file, index, mask) = if o == 4 {
-            (RegFile::DepthOut, 0, WriteMask(1))
+/// Writes each output's bound (plus the poison of uncertain decisions):
+/// `outputs` holds each output register with its shadow register.
+fn finish(b: &mut Builder, outputs: &BTreeSet<(u32, Reg)>) {
+    for &(v, reg) in outputs {
+        let mask = if reg.file == RegFile::DepthOut {
+            WriteMask(1)
         } else {
-            (RegFile::ColorOut, o, WriteMask::ALL)
+            WriteMask::ALL
         };
         b.out.push(Instruction {
             op: Opcode::Add,
@@ -336,11 +366,11 @@ fn finish(b: &mut Builder, outputs: &BTreeSet<u32>) {
             compare: None,
             predicate: None,
             dst: Some(Dst {
-                reg: Reg { file, index },
+                reg,
                 relative: None,
                 mask,
             }),
-            src: vec![lane(ERR_BASE + OUT_BASE + o), at(POISON, 0)],
+            src: vec![lane(ERR_BASE + v), at(POISON, 0)],
             origin: Origin::default(),
         });
         b.slots.push(Slots::default());
@@ -574,7 +604,26 @@ fn error_of(b: &mut Builder, x: &Instruction, m: WriteMask) {
                     b.emit(Add, t, WriteMask(1), vec![at(t, 0), at(t2, 0)]);
                 }
             }
-            quad_exact(b, m, true, vec![]);
+            if b.vertex {
+                // texldl at explicit levels: no quad, no gradients
+                let big = b.konst(0, 3);
+                b.emit(Cmp, e, m, vec![neg(at(t, 0)), b.zero(), big]);
+            } else {
+                quad_exact(b, m, true, vec![]);
+            }
+        }
+        Slt | Sge => {
+            // 0 or 1: exact unless a and b lie within their bounds of
+            // each other, where the other shader may choose the other one
+            b.emit(Add, t2, m, vec![a, neg(bb)]);
+            b.emit(Add, t, m, vec![ea, eb]);
+            uncertain(b, m, 1);
+        }
+        Sgn => {
+            // −1, 0 or 1: exact unless |a| ≤ e_a
+            b.emit(Mov, t2, m, vec![a]);
+            b.emit(Mov, t, m, vec![ea]);
+            uncertain(b, m, 2);
         }
         Dsx | Dsy => {
             b.emit(Mov, t, m, vec![ea]);
@@ -588,6 +637,16 @@ fn error_of(b: &mut Builder, x: &Instruction, m: WriteMask) {
     if scalar {
         b.emit(Mov, e, wide, vec![at(e, 0)]);
     }
+}
+
+/// `ERR` (lanes of `m`) = `jump` where the value in `T2` lies within its
+/// bound in `T` of 0 (and that bound is not 0), 0 elsewhere: the bound of
+/// a step function whose values are `jump` apart.
+fn uncertain(b: &mut Builder, m: WriteMask, jump: u8) {
+    use Opcode::*;
+    b.emit(Add, T2, m, vec![lane(T), neg(abs(&lane(T2)))]);
+    b.emit(Cmp, ERR, m, vec![lane(T2), b.konst(0, jump), b.zero()]);
+    b.emit(Cmp, ERR, m, vec![neg(lane(T)), b.zero(), lane(ERR)]);
 }
 
 /// The bound of a dot product (`dp2add`'s third term included).

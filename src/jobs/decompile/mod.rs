@@ -10,6 +10,7 @@
 
 pub mod bound;
 pub mod oracle;
+pub mod vertex;
 
 pub use oracle::Oracle;
 
@@ -20,7 +21,7 @@ use crate::core::emu::{
 };
 use crate::core::image::{Texture, VolumeLevel};
 use crate::core::ir::Shader;
-use crate::core::isa::{RegFile, SamplerType};
+use crate::core::isa::SamplerType;
 use crate::core::load;
 use crate::jobs::compare::stats::ulp_distance;
 use serde::Serialize;
@@ -37,8 +38,11 @@ pub struct Verdict {
     pub compiler_messages: String,
     /// Draws run (each on both shaders).
     pub draws: u32,
-    /// Pixels per draw.
+    /// Pixels per draw (vertices, for a vertex shader).
     pub pixels: u64,
+    /// Which stage ran: `pixel`, or `vertex` (then `pixels` counts vertices
+    /// and a divergence's `x` is the vertex).
+    pub stage: crate::core::profile::Stage,
     /// Output values compared (pixels × written components, over all draws).
     pub values: u64,
     /// Values whose bits differ (NaN counts as equal to NaN).
@@ -140,6 +144,7 @@ fn refused(messages: String) -> Verdict {
         compiler_messages: messages,
         draws: 0,
         pixels: 0,
+        stage: crate::core::profile::Stage::Pixel,
         values: 0,
         differing: 0,
         within_bound: 0,
@@ -175,12 +180,16 @@ pub fn equivalence_of_bytes(
     equivalence(original, &loaded.shader, size)
 }
 
-/// Runs both shaders on the same draws and compares every written value.
+/// Runs both shaders on the same draws and compares every written value
+/// (vertex shaders: over `size`² vertices, [`vertex::equivalence`]).
 pub fn equivalence(
     original: &Shader,
     recompiled: &Shader,
     size: u32,
 ) -> Result<Verdict, VerifyError> {
+    if original.program().profile.stage() == crate::core::profile::Stage::Vertex {
+        return vertex::equivalence(original, recompiled, (size * size) as usize);
+    }
     let a = emu::compile(original).map_err(|e| VerifyError(format!("the original: {e}")))?;
     let b =
         emu::compile(recompiled).map_err(|e| VerifyError(format!("the recompiled shader: {e}")))?;
@@ -305,39 +314,8 @@ fn compare(p: &Pair, draw: u32, v: &mut Verdict, worst_key: &mut (u64, bool)) {
     let w = oa.width;
     let mut note =
         |i: usize, output: String, x: f32, y: f32, bound: Option<f32>, v: &mut Verdict| {
-            v.values += 1;
-            let same = x.to_bits() == y.to_bits() || (x.is_nan() && y.is_nan());
-            if same {
-                return;
-            }
-            v.differing += 1;
-            let ulp = ulp_distance(x, y);
-            let within =
-                x.is_finite() && y.is_finite() && bound.is_some_and(|e| (x - y).abs() <= e);
-            let here = Divergence {
-                draw,
-                x: i as u32 % w,
-                y: i as u32 / w,
-                output,
-                original: x,
-                recompiled: y,
-                ulp,
-                bound,
-            };
-            if within {
-                v.within_bound += 1;
-            } else {
-                v.unexplained += 1;
-                if v.first_unexplained.is_none() {
-                    v.first_unexplained = Some(here.clone());
-                }
-            }
-            let key = (ulp.unwrap_or(u64::MAX), true);
-            v.max_ulp = v.max_ulp.max(ulp.unwrap_or(u64::MAX));
-            if key.0 > worst_key.0 || !worst_key.1 {
-                *worst_key = key;
-                v.worst = Some(here);
-            }
+            let at = (draw, i as u32 % w, i as u32 / w);
+            note_value(v, worst_key, at, output, [x, y], bound);
         };
     for i in 0..oa.killed.len() {
         let (ka, kb) = (oa.killed[i], ob.killed.get(i).copied().unwrap_or(false));
@@ -372,6 +350,50 @@ fn compare(p: &Pair, draw: u32, v: &mut Verdict, worst_key: &mut (u64, bool)) {
         if let (Some(da), Some(db)) = (&oa.depth, &ob.depth) {
             note(i, "oDepth".into(), da[i], db[i], p.bound(i, 4, 0), v);
         }
+    }
+}
+
+/// One compared value, at `(draw, x, y)`: counted, and when its bits
+/// differ, recorded as within its bound or not (NaN equals NaN).
+fn note_value(
+    v: &mut Verdict,
+    worst_key: &mut (u64, bool),
+    (draw, px, py): (u32, u32, u32),
+    output: String,
+    [x, y]: [f32; 2],
+    bound: Option<f32>,
+) {
+    v.values += 1;
+    let same = x.to_bits() == y.to_bits() || (x.is_nan() && y.is_nan());
+    if same {
+        return;
+    }
+    v.differing += 1;
+    let ulp = ulp_distance(x, y);
+    let within = x.is_finite() && y.is_finite() && bound.is_some_and(|e| (x - y).abs() <= e);
+    let here = Divergence {
+        draw,
+        x: px,
+        y: py,
+        output,
+        original: x,
+        recompiled: y,
+        ulp,
+        bound,
+    };
+    if within {
+        v.within_bound += 1;
+    } else {
+        v.unexplained += 1;
+        if v.first_unexplained.is_none() {
+            v.first_unexplained = Some(here.clone());
+        }
+    }
+    let key = (ulp.unwrap_or(u64::MAX), true);
+    v.max_ulp = v.max_ulp.max(ulp.unwrap_or(u64::MAX));
+    if key.0 > worst_key.0 || !worst_key.1 {
+        *worst_key = key;
+        v.worst = Some(here);
     }
 }
 
@@ -516,17 +538,23 @@ impl Inputs {
         let mut d = Draw::new(size, size);
         d.constants = self.constants.clone();
         d.face = if draw == 1 { Face::Back } else { Face::Front };
-        for dcl in shader
-            .program()
-            .inputs
-            .iter()
-            .filter(|i| i.reg.file == RegFile::Input)
-        {
-            d.inputs.push((
-                dcl.reg.index,
-                interpolant(&dcl.usage, dcl.usage_index, draw),
-            ));
+        let profile = shader.program().profile;
+        for dcl in &shader.program().inputs {
+            // ps_2_0's t# and v# by the semantics the HLSL gives them
+            let Some(slot) = crate::core::pixel_inputs::slot(profile, dcl.reg.file, dcl.reg.index)
+            else {
+                continue;
+            };
+            let (usage, index) = crate::core::decompile::input_semantic(dcl);
+            d.inputs.push((slot, interpolant(&usage, index, draw)));
         }
+        d.samplers = self.samplers(shader);
+        d
+    }
+
+    /// The textures bound to the samplers `shader` declares, each filtered
+    /// linearly (mipmaps too) and wrapped on every axis.
+    fn samplers(&self, shader: &Shader) -> Vec<(u32, TextureLevels<'_>, SamplerState)> {
         let state = SamplerState {
             mag_filter: Filter::Linear,
             min_filter: Filter::Linear,
@@ -536,6 +564,7 @@ impl Inputs {
             address_w: Address::Wrap,
             ..SamplerState::default()
         };
+        let mut out = Vec::new();
         for s in &shader.program().samplers {
             let levels = match self.textures.get(&s.index) {
                 Some(Texture3::Flat(c)) => TextureLevels::Chain(c),
@@ -543,9 +572,9 @@ impl Inputs {
                 Some(Texture3::Volume(v)) => TextureLevels::Volume(v),
                 None => continue,
             };
-            d.samplers.push((s.index, levels, state));
+            out.push((s.index, levels, state));
         }
-        d
+        out
     }
 }
 

@@ -43,9 +43,15 @@ pub(super) struct State<'s, 'a> {
     limit: u64,
 }
 
+/// Temporaries a vertex runs with: more than any profile allows (vs_3_0
+/// has 32, which validation holds shaders to), for the bound shader of
+/// `ps30 decompile --verify` (`jobs/decompile/bound.rs`), whose shadow
+/// registers reach r127, as the pixel emulator's do.
+const TEMPS: usize = 128;
+
 /// One vertex's registers.
 struct Regs {
-    r: [[f32; 4]; 32],
+    r: [[f32; 4]; TEMPS],
     v: [[f32; 4]; 16],
     o: [[f32; 4]; OUTPUT_ROWS],
     a0: [i32; 4],
@@ -97,7 +103,7 @@ impl<'s, 'a> State<'s, 'a> {
             v.iter_mut().flatten().for_each(|x| *x = flush(*x));
         }
         let mut g = Regs {
-            r: [[0.0; 4]; 32],
+            r: [[0.0; 4]; TEMPS],
             v,
             o: [[0.0; 4]; OUTPUT_ROWS],
             a0: [0; 4],
@@ -431,6 +437,12 @@ impl<'s, 'a> State<'s, 'a> {
                 )
             }
             Opcode::TexLdL => (self.texldl(src(0), &x.src[1]), 15),
+            // no vertex profile has cmp; the bound shader of `ps30
+            // decompile --verify` (`jobs/decompile/bound.rs`) selects with it
+            Opcode::Cmp => {
+                let (a, b, c) = (src(0), src(1), src(2));
+                (std::array::from_fn(|k| math::cmp(a[k], b[k], c[k])), 15)
+            }
             _ => return Ok(()),
         };
         self.write(g, x, &d, value, mask);

@@ -1,0 +1,13 @@
+// oracle: target=ps_2_0
+// ps_2_0 shader decompiled by ps30
+sampler2D s : register(s0);
+
+float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
+{
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
+    r0 = texcoord0.z;
+    clip(r0);
+    oC0 = (tex2Dproj(s, texcoord0) + tex2Dbias(s, texcoord0));
+    return oC0;
+}

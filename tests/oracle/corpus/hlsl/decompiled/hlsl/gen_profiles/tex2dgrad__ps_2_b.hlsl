@@ -1,0 +1,13 @@
+// oracle: target=ps_2_a
+// ps_2_x shader decompiled by ps30 (HLSL for ps_2_a)
+sampler2D s : register(s0);
+
+float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1) : COLOR
+{
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0;
+    r0.x = texcoord1.z;
+    r0.y = texcoord1.w;
+    oC0 = tex2Dgrad(s, texcoord0.xy, texcoord1.xy, r0.xy);
+    return oC0;
+}

@@ -1,0 +1,17 @@
+// oracle: target=vs_2_a
+// vs_2_x shader decompiled by ps30 (HLSL for vs_2_a)
+float4x4 wvp : register(c0);
+
+struct VS_OUTPUT
+{
+    float4 position0 : POSITION0;
+};
+
+VS_OUTPUT main(float4 position0 : POSITION0)
+{
+    precise float4 oPos = 0;
+    oPos = mul(position0, wvp);
+    VS_OUTPUT result;
+    result.position0 = oPos;
+    return result;
+}

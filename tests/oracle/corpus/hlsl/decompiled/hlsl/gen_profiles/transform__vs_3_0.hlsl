@@ -1,0 +1,17 @@
+// oracle: target=vs_3_0
+// vs_3_0 shader decompiled by ps30
+float4x4 wvp : register(c0);
+
+struct VS_OUTPUT
+{
+    float4 position0 : POSITION0;
+};
+
+VS_OUTPUT main(float4 position0 : POSITION0)
+{
+    precise float4 o0 = 0;
+    o0 = mul(position0, wvp);
+    VS_OUTPUT result;
+    result.position0 = o0;
+    return result;
+}

@@ -1,0 +1,17 @@
+// oracle: target=ps_2_0
+// ps_2_0 shader decompiled by ps30
+float4 c28 : register(c28);
+float4 c29 : register(c29);
+float4 c30 : register(c30);
+float4 c31 : register(c31);
+
+float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
+{
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0;
+    r0 = float4(1.0, 0.5, 0.25, 2.0);
+    r1 = float4(1.0, 0.5, 0.25, 2.0);
+    r2 = float4(1.0, 0.5, 0.25, 2.0);
+    oC0 = float4(dot(texcoord0, c28), dot(texcoord0, c29), dot(texcoord0, c30), dot(texcoord0, c31));
+    return oC0;
+}

@@ -1,0 +1,11 @@
+// oracle: target=ps_2_0
+// ps_2_0 shader decompiled by ps30
+
+float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
+{
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0;
+    r0 = float4(1.0, 0.5, 0.25, 2.0);
+    oC0 = dot(float4(1.0, 0.5, 0.25, 2.0), float4(1.0, 0.5, 0.25, 2.0)).xxxx;
+    return oC0;
+}

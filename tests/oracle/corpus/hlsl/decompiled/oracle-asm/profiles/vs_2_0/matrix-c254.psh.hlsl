@@ -1,0 +1,24 @@
+// oracle: target=vs_2_0
+// vs_2_0 shader decompiled by ps30
+float4 c254 : register(c254);
+float4 c255 : register(c255);
+float4 c256 : register(c256);
+float4 c257 : register(c257);
+
+struct VS_OUTPUT
+{
+    float4 position0 : POSITION0;
+};
+
+VS_OUTPUT main(float4 position0 : POSITION0)
+{
+    precise float4 oPos = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0;
+    r0 = float4(1.0, 0.5, 0.25, 2.0);
+    r1 = float4(1.0, 0.5, 0.25, 2.0);
+    r2 = float4(1.0, 0.5, 0.25, 2.0);
+    oPos = float4(dot(position0, c254), dot(position0, c255), dot(position0, c256), dot(position0, c257));
+    VS_OUTPUT result;
+    result.position0 = oPos;
+    return result;
+}

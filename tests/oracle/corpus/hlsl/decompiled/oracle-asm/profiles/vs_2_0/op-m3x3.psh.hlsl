@@ -1,0 +1,23 @@
+// oracle: target=vs_2_0
+// vs_2_0 shader decompiled by ps30
+float4 c1 : register(c1);
+float4 c2 : register(c2);
+
+struct VS_OUTPUT
+{
+    float4 position0 : POSITION0;
+};
+
+VS_OUTPUT main(float4 position0 : POSITION0)
+{
+    precise float4 oPos = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0;
+    r0 = float4(1.0, 0.5, 0.25, 2.0);
+    r1 = float4(1.0, 0.5, 0.25, 2.0);
+    r2 = float4(1.0, 0.5, 0.25, 2.0);
+    r0.xyz = float3(dot(r1.xyz, float3(1.0, 0.5, 0.25)), dot(r1.xyz, c1.xyz), dot(r1.xyz, c2.xyz));
+    oPos = r0;
+    VS_OUTPUT result;
+    result.position0 = oPos;
+    return result;
+}

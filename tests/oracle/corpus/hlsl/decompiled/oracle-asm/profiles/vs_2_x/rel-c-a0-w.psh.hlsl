@@ -1,0 +1,32 @@
+// oracle: target=vs_2_a
+// vs_2_x shader decompiled by ps30 (HLSL for vs_2_a)
+float4 cr[217] : register(c7);
+
+// mova's rounding: to the nearest integer, halves away from zero
+float4 mova_round(float4 x)
+{
+    float4 a = abs(x);
+    float4 f = frac(a);
+    float4 r = a - f;
+    return sign(x) * (r + (f >= 0.5 ? 1 : 0));
+}
+
+struct VS_OUTPUT
+{
+    float4 position0 : POSITION0;
+};
+
+VS_OUTPUT main(float4 position0 : POSITION0)
+{
+    precise float4 oPos = 0;
+    float4 a0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0;
+    r0 = float4(1.0, 0.5, 0.25, 2.0);
+    r1 = float4(1.0, 0.5, 0.25, 2.0);
+    r2 = float4(1.0, 0.5, 0.25, 2.0);
+    a0 = mova_round(r1);
+    oPos = (r1 * cr[a0.w].y);
+    VS_OUTPUT result;
+    result.position0 = oPos;
+    return result;
+}

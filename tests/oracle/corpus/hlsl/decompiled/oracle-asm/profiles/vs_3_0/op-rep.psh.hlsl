@@ -1,0 +1,23 @@
+// oracle: target=vs_3_0
+// vs_3_0 shader decompiled by ps30
+
+struct VS_OUTPUT
+{
+    float4 position0 : POSITION0;
+};
+
+VS_OUTPUT main(float4 position0 : POSITION0)
+{
+    precise float4 o0 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0;
+    r0 = float4(1.0, 0.5, 0.25, 2.0);
+    r1 = float4(1.0, 0.5, 0.25, 2.0);
+    r2 = float4(1.0, 0.5, 0.25, 2.0);
+    for (int n0 = 0; n0 < int4(2, 0, 0, 0).x; n0++) {
+        r0 = r0 + r1;
+    }
+    o0 = r0;
+    VS_OUTPUT result;
+    result.position0 = o0;
+    return result;
+}
