@@ -46,7 +46,7 @@ pub enum Halves {
 /// (`emu::vertex`), so that the original and the recompiled shader index
 /// the same registers (`tests/decompile.rs` runs `mova` at ±0.5, 1.5 and
 /// 2.5 in the emulator and fails when the two part).
-pub const HALVES: Halves = Halves::AwayFromZero;
+pub const HALVES: Halves = Halves::ToEven;
 
 /// The name of the HLSL rounding function.
 pub(crate) const ROUND: &str = "mova_round";

@@ -3,13 +3,13 @@
 float4 bones[60] : register(c0); // the table's type: float4x3[20]
 float4x4 vp : register(c60);
 
-// mova's rounding: to the nearest integer, halves away from zero
+// mova's rounding: to the nearest integer, halves to even
 float mova_round(float x)
 {
     float a = abs(x);
     float f = frac(a);
     float r = a - f;
-    return sign(x) * (r + (f >= 0.5 ? 1 : 0));
+    return sign(x) * (r + (f > 0.5 || f == 0.5 && frac(r * 0.5) != 0 ? 1 : 0));
 }
 
 struct VS_OUTPUT

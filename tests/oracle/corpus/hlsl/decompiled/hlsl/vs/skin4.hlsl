@@ -3,13 +3,13 @@
 float4 palette[72] : register(c0); // the table's type: float4x3[24]
 float4x4 viewProj : register(c72);
 
-// mova's rounding: to the nearest integer, halves away from zero
+// mova's rounding: to the nearest integer, halves to even
 float4 mova_round(float4 x)
 {
     float4 a = abs(x);
     float4 f = frac(a);
     float4 r = a - f;
-    return sign(x) * (r + (f >= 0.5 ? 1 : 0));
+    return sign(x) * (r + (f > 0.5 || f == 0.5 && frac(r * 0.5) != 0 ? 1 : 0));
 }
 
 struct VS_OUTPUT

@@ -1,13 +1,13 @@
 // oracle: target=vs_2_0
 // vs_2_0 shader decompiled by ps30
 
-// mova's rounding: to the nearest integer, halves away from zero
+// mova's rounding: to the nearest integer, halves to even
 float mova_round(float x)
 {
     float a = abs(x);
     float f = frac(a);
     float r = a - f;
-    return sign(x) * (r + (f >= 0.5 ? 1 : 0));
+    return sign(x) * (r + (f > 0.5 || f == 0.5 && frac(r * 0.5) != 0 ? 1 : 0));
 }
 
 struct VS_OUTPUT

@@ -2,13 +2,13 @@
 // vs_2_0 shader decompiled by ps30
 float4 cr[223] : register(c1);
 
-// mova's rounding: to the nearest integer, halves away from zero
+// mova's rounding: to the nearest integer, halves to even
 float2 mova_round(float2 x)
 {
     float2 a = abs(x);
     float2 f = frac(a);
     float2 r = a - f;
-    return sign(x) * (r + (f >= 0.5 ? 1 : 0));
+    return sign(x) * (r + (f > 0.5 || f == 0.5 && frac(r * 0.5) != 0 ? 1 : 0));
 }
 
 struct VS_OUTPUT

@@ -2,13 +2,13 @@
 // vs_2_x shader decompiled by ps30 (HLSL for vs_2_a)
 float4 cr[217] : register(c7);
 
-// mova's rounding: to the nearest integer, halves away from zero
+// mova's rounding: to the nearest integer, halves to even
 float4 mova_round(float4 x)
 {
     float4 a = abs(x);
     float4 f = frac(a);
     float4 r = a - f;
-    return sign(x) * (r + (f >= 0.5 ? 1 : 0));
+    return sign(x) * (r + (f > 0.5 || f == 0.5 && frac(r * 0.5) != 0 ? 1 : 0));
 }
 
 struct VS_OUTPUT
