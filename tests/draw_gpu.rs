@@ -346,31 +346,11 @@ fn vertex_texture_fetch_filters_and_borders_as_the_emulator() {
         s0["address"] = "border".into();
         s0["border"] = serde_json::json!([0.25, 0.5, 0.75, 0.125]);
     }
-    let tmp = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("vertex_fetch_border.json");
-    std::fs::write(&tmp, serde_json::to_string(&list).unwrap()).unwrap();
-    let o = ps30(
-        &["compare", "--list", tmp.to_str().unwrap(), "--json", "-q"],
-        repo(),
+    compare_bit_identical(
+        &list,
+        "vertex_fetch_border.json",
+        "vertex textures on the GPU",
     );
-    let err = stderr(&o);
-    if o.status.code() == Some(2)
-        && err.contains("no GPU adapter")
-        && std::env::var_os("CI").is_none()
-    {
-        eprintln!("vertex textures on the GPU: skipped: {err}");
-        return;
-    }
-    let json: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap_or_default();
-    assert_eq!(o.status.code(), Some(0), "{err}\n{json}");
-    for step in json["steps"].as_array().unwrap() {
-        for ch in step["comparison"]["channels"].as_array().unwrap() {
-            assert_eq!(ch["identical"], ch["pixels"], "{ch}");
-        }
-        if let Some(cov) = step.get("coverage") {
-            assert_eq!(cov["emulator_only"], 0, "{cov}");
-            assert_eq!(cov["gpu_only"], 0, "{cov}");
-        }
-    }
 }
 
 #[test]
@@ -388,8 +368,15 @@ fn points_are_never_culled_on_the_device() {
             s["geometry"]["cull"] = "cw".into();
         }
     }
-    let tmp = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("points_cw.json");
-    std::fs::write(&tmp, serde_json::to_string(&list).unwrap()).unwrap();
+    compare_bit_identical(&list, "points_cw.json", "points on the GPU");
+}
+
+/// Writes `list` as `name` in the tests' scratch folder and asserts that
+/// `compare --list` finds every draw bit-identical with no coverage
+/// difference (skipped, saying `what`, where no adapter exists outside CI).
+fn compare_bit_identical(list: &serde_json::Value, name: &str, what: &str) {
+    let tmp = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join(name);
+    std::fs::write(&tmp, serde_json::to_string(list).unwrap()).unwrap();
     let o = ps30(
         &["compare", "--list", tmp.to_str().unwrap(), "--json", "-q"],
         repo(),
@@ -399,7 +386,7 @@ fn points_are_never_culled_on_the_device() {
         && err.contains("no GPU adapter")
         && std::env::var_os("CI").is_none()
     {
-        eprintln!("points on the GPU: skipped: {err}");
+        eprintln!("{what}: skipped: {err}");
         return;
     }
     let json: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap_or_default();

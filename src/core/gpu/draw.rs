@@ -612,20 +612,7 @@ fn record_pass(
         .map(|a| a.as_ref().map(|(t, _)| t.create_view(&Default::default())))
         .collect();
     let depth_view = depth.map(|t| t.create_view(&Default::default()));
-    let color_attachments: Vec<Option<wgpu::RenderPassColorAttachment>> = views
-        .iter()
-        .map(|v| {
-            v.as_ref().map(|view| wgpu::RenderPassColorAttachment {
-                view,
-                depth_slice: None,
-                resolve_target: None,
-                ops: wgpu::Operations {
-                    load: wgpu::LoadOp::Clear(wgpu::Color::TRANSPARENT),
-                    store: wgpu::StoreOp::Store,
-                },
-            })
-        })
-        .collect();
+    let color_attachments = super::cleared_attachments(&views);
     let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
         label: Some("ps30 draw"),
         color_attachments: &color_attachments,

@@ -465,20 +465,7 @@ fn record_primitive(
     views: &[Option<wgpu::TextureView>],
     indices: std::ops::Range<u32>,
 ) {
-    let color_attachments: Vec<Option<wgpu::RenderPassColorAttachment>> = views
-        .iter()
-        .map(|v| {
-            v.as_ref().map(|view| wgpu::RenderPassColorAttachment {
-                view,
-                depth_slice: None,
-                resolve_target: None,
-                ops: wgpu::Operations {
-                    load: wgpu::LoadOp::Clear(wgpu::Color::TRANSPARENT),
-                    store: wgpu::StoreOp::Store,
-                },
-            })
-        })
-        .collect();
+    let color_attachments = super::cleared_attachments(views);
     let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
         label: Some("ps30 primitive"),
         color_attachments: &color_attachments,

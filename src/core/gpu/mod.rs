@@ -364,6 +364,28 @@ impl Gpu {
     }
 }
 
+/// Colour attachments of `views` (a target per location, or none), each
+/// cleared to transparent black and stored (every pass of the backend's
+/// draws starts from cleared targets).
+fn cleared_attachments(
+    views: &[Option<wgpu::TextureView>],
+) -> Vec<Option<wgpu::RenderPassColorAttachment<'_>>> {
+    views
+        .iter()
+        .map(|v| {
+            v.as_ref().map(|view| wgpu::RenderPassColorAttachment {
+                view,
+                depth_slice: None,
+                resolve_target: None,
+                ops: wgpu::Operations {
+                    load: wgpu::LoadOp::Clear(wgpu::Color::TRANSPARENT),
+                    store: wgpu::StoreOp::Store,
+                },
+            })
+        })
+        .collect()
+}
+
 /// A buffer binding that compute shaders read (or write), in the layouts of
 /// the vertex stage and of the inputs made on the device.
 fn compute_buffer(binding: u32, ty: wgpu::BufferBindingType) -> wgpu::BindGroupLayoutEntry {

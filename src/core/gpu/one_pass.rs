@@ -528,20 +528,7 @@ fn record(
         .iter()
         .map(|a| a.as_ref().map(|t| t.create_view(&Default::default())))
         .collect();
-    let color_attachments: Vec<Option<wgpu::RenderPassColorAttachment>> = views
-        .iter()
-        .map(|v| {
-            v.as_ref().map(|view| wgpu::RenderPassColorAttachment {
-                view,
-                depth_slice: None,
-                resolve_target: None,
-                ops: wgpu::Operations {
-                    load: wgpu::LoadOp::Clear(wgpu::Color::TRANSPARENT),
-                    store: wgpu::StoreOp::Store,
-                },
-            })
-        })
-        .collect();
+    let color_attachments = super::cleared_attachments(&views);
     let depth_view = depth.map(|(t, _)| t.create_view(&Default::default()));
     let load = wgpu::Operations {
         load: wgpu::LoadOp::Load,
