@@ -2,6 +2,7 @@
 //! histograms, divergence, gradient sites and findings, as text and JSON.
 
 use crate::core::audit;
+use crate::core::cost::Range;
 use crate::core::emu::findings::diagnostic;
 use crate::core::emu::findings::{Finding, SiteSummary};
 use crate::core::numbers::{decimal, thousands};
@@ -120,25 +121,43 @@ pub fn to_json(r: &ProfileRun, found: &[audit::Finding]) -> Value {
             .map(|f| json::diagnostic(f.kind.name(), f.span.map(|_| &r.file), &f.diagnostic())),
     );
     diagnostics.extend(json::findings(&r.file.name, &r.findings));
-    json!({
+    let mut j = json!({
         "shader": r.file.name,
         "input": r.input,
         "target": [r.width, r.height],
-        "executed": json::range(r.static_executed),
-        "executed_emulated": {"min": r.costs.per_pixel.min, "max": r.costs.per_pixel.max},
-        "counts_agree": r.counts_agree,
-        "within_limits": r.within_limits,
-        "per_pixel": stats_json(&r.costs.per_pixel),
-        "per_quad": stats_json(&r.costs.per_quad),
-        "quads": r.costs.quads,
-        "divergent_quads": r.costs.divergent_quads,
-        "lockstep_efficiency": json::real(r.costs.lockstep_efficiency),
-        "divergent_efficiency": json::real(r.costs.divergent_efficiency),
         "gradients": sites_json(&r.gradients),
         "models": r.models.map(|m| m.iter().map(|&(n, ok)| json!({"pixels": n, "match": ok})).collect::<Vec<_>>()),
         "problem": r.problem(),
         "diagnostics": diagnostics,
-    })
+    });
+    add_costs(
+        &mut j,
+        r.static_executed,
+        (r.counts_agree, r.within_limits),
+        &r.costs,
+    );
+    j
+}
+
+/// The cost fields `profile` and `profile --list` share, added to `j`:
+/// the static and emulated executed counts, whether they agree and fit
+/// the limits, and the per-pixel and per-quad statistics.
+fn add_costs(j: &mut Value, executed: Range, (agree, within): (bool, bool), costs: &QuadCosts) {
+    let fields = json!({
+        "executed": json::range(executed),
+        "executed_emulated": {"min": costs.per_pixel.min, "max": costs.per_pixel.max},
+        "counts_agree": agree,
+        "within_limits": within,
+        "per_pixel": stats_json(&costs.per_pixel),
+        "per_quad": stats_json(&costs.per_quad),
+        "quads": costs.quads,
+        "divergent_quads": costs.divergent_quads,
+        "lockstep_efficiency": json::real(costs.lockstep_efficiency),
+        "divergent_efficiency": json::real(costs.divergent_efficiency),
+    });
+    if let (Some(j), Value::Object(fields)) = (j.as_object_mut(), fields) {
+        j.extend(fields);
+    }
 }
 
 fn stats_json(s: &CostStats) -> Value {
@@ -242,27 +261,24 @@ pub fn list_json(list: &str, p: &ListProfile) -> Value {
         }
         Err(e) => json!({"shader": name, "error": e}),
     });
-    json!({
+    let mut j = json!({
         "list": list,
         "step": p.step,
         "shader": p.shader,
         "geometry": p.geometry,
         "primitives": p.primitives,
-        "executed": json::range(p.static_executed),
-        "executed_emulated": {"min": p.costs.per_pixel.min, "max": p.costs.per_pixel.max},
-        "counts_agree": p.counts_agree,
-        "within_limits": p.within_limits,
-        "per_pixel": stats_json(&p.costs.per_pixel),
-        "per_quad": stats_json(&p.costs.per_quad),
-        "quads": p.costs.quads,
-        "divergent_quads": p.costs.divergent_quads,
-        "lockstep_efficiency": json::real(p.costs.lockstep_efficiency),
-        "divergent_efficiency": json::real(p.costs.divergent_efficiency),
         "edge_quads": p.edge_quads,
         "helper_lanes": p.helper_lanes,
         "gradients": sites_json(&p.gradients),
         "diagnostics": json::findings(&p.file.name, &p.findings),
         "vertex_shader": vertex,
         "problem": p.problem(),
-    })
+    });
+    add_costs(
+        &mut j,
+        p.static_executed,
+        (p.counts_agree, p.within_limits),
+        &p.costs,
+    );
+    j
 }
