@@ -241,15 +241,30 @@ impl Ctx<'_> {
                     .iter()
                     .find(|(f, n, _)| reg.index >= *f && reg.index < f + n)
                 else {
-                    return unsupported("relative read outside an array");
+                    return Err(DecompileError::Unsupported(if reg.index >= 8192 {
+                        format!(
+                            "c[{} + {}] (a matrix row) is past c8191, the last constant \
+                             register Microsoft's compiler binds (X4507: \"maximum constant \
+                             register index (8192) exceeded\")",
+                            index.map(|i| i.to_string()).unwrap_or_default(),
+                            reg.index
+                        )
+                    } else {
+                        "relative read outside an array".to_string()
+                    }));
                 };
-                let counter = match index {
-                    Some(RelIndex::Addr(c)) => format!("a0.{}", AXES[c as usize & 3]),
-                    _ => match self.counters.last() {
-                        Some(counter) => counter.clone(),
-                        None => return unsupported("c[aL] outside a loop"),
-                    },
-                };
+                let counter =
+                    match index {
+                        Some(RelIndex::Addr(c)) => format!("a0.{}", AXES[c as usize & 3]),
+                        _ => match self.counters.last() {
+                            Some(counter) => counter.clone(),
+                            None => return unsupported(
+                                "c[aL] outside a loop (in a subroutine, the caller's counter): \
+                                 the HLSL function would take the counter as a parameter, \
+                                 which the decompiler does not write yet",
+                            ),
+                        },
+                    };
                 let offset = reg.index - first;
                 let index = if offset == 0 {
                     counter.clone()

@@ -127,16 +127,17 @@ pub(crate) struct Field {
 /// fields of its output struct, in register order.
 pub(crate) fn fields(shader: &Shader) -> Result<Vec<Field>, DecompileError> {
     let p = shader.program();
-    // a vertex shader has 256 float constants: a read past them is 0 in the
-    // emulator, and no HLSL uniform binds there
-    if let Some(c) = p
-        .instructions
-        .iter()
-        .flat_map(|i| i.src.iter())
-        .find(|s| s.reg.file == RegFile::Const && s.reg.index >= 256)
-    {
+    // a vertex shader has 256 float constants: a read past them is
+    // (0, 0, 0, 0) in the emulator, whose constants drop a `def` there too;
+    // HLSL binds a uniform there (`register(c256)`, which reads the same
+    // zeros) but writes a `def` as its literal
+    if let Some(c) = p.instructions.iter().flat_map(|i| i.src.iter()).find(|s| {
+        s.reg.file == RegFile::Const && s.reg.index >= 256 && p.float_def(s.reg.index).is_some()
+    }) {
         return Err(DecompileError::Unsupported(format!(
-            "c{} is read: past the 256 constants of a vertex shader",
+            "def c{0} is read: past the 256 constants of a vertex shader the def is \
+             dropped and the read is (0, 0, 0, 0), while HLSL would write the def as its \
+             literal (Direct3D 9's runtime refuses a def past the device's constants)",
             c.reg.index
         )));
     }
@@ -153,7 +154,10 @@ pub(crate) fn fields(shader: &Shader) -> Result<Vec<Field>, DecompileError> {
         if let Some(d) = ins.dst.filter(|d| is_output(d.reg.file)) {
             if d.relative.is_some() {
                 return Err(DecompileError::Unsupported(format!(
-                    "o[{} + {}] is written: an output chosen at run time",
+                    "o[{} + {}] is written: an output chosen at run time, which HLSL \
+                     cannot write (an output array indexed at run time is X3500, \"array \
+                     reference cannot be used as an l-value; not natively addressable\", \
+                     and X3531 in a [loop]; measured)",
                     d.relative.map(|r| r.to_string()).unwrap_or_default(),
                     d.reg.index
                 )));

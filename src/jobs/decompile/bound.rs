@@ -41,6 +41,24 @@
 //!   product's `e_P = |b|·e_L + |L|·e_b + e_L·e_b`, then the `exp` bound;
 //! * `nrm`: `‖x/‖x‖ − y/‖y‖‖ ≤ 2‖x − y‖/‖x‖`, with `‖x − y‖ ≤ Σ eᵢ`, plus
 //!   `6u` for the emulator's dot, `rsq` and product;
+//! * `expp`, `logp` (vertex shaders): the `exp` and `log` rules. Both
+//!   shaders' are full-precision `exp`/`log` in the emulator (which
+//!   computes the partial-precision instructions in full, as Microsoft's
+//!   `expp`/`logp` pages allow), and the compiler writes the decompiled
+//!   `exp2`/`log2` as `exp`/`log`;
+//! * `dst` (`(1, a.y·b.y, a.z, b.w)`): 0, the `mul` rule, `e_az`, `e_bw`;
+//! * `lit` (`(1, max(a.x, 0), a.x > 0 ∧ a.y > 0 ? a.y^w : 0, 1)` with `w`
+//!   the clamp of `a.w` to ±127.9961): 0 for x and w, `e_ax` for y
+//!   (`max(·, 0)` is 1-Lipschitz); for z the `pow` rule with `|a.w|` and
+//!   `e_aw` (the clamp is 1-Lipschitz and shrinks) where `a.x` and `a.y`
+//!   are farther than their bounds from 0 and positive, 0 where one is
+//!   farther than its bound below 0 (or exactly 0 with no bound), and
+//!   unbounded where a condition could go either way. The compiler writes
+//!   the decompiled `lit(x, y, w)` as `lit` again (the corpus's `lit` shaders);
+//! * `m4x4`, `m4x3`, `m3x4`, `m3x3`, `m3x2`: row `k` is a `dp4` (`dp3`) of
+//!   the vector with the `k`-th register of the matrix, so each row takes
+//!   the dot product's rule; the compiler writes them back as `dp4`s
+//!   (`mul`), which take the same rule;
 //! * `sincos`: both functions are 1-Lipschitz: `e_a + 2u`;
 //! * `frc`: `e_a` when `a` is farther than `e_a` from every integer (no jump
 //!   in between), 1 otherwise (both results lie in [0, 1));
@@ -71,17 +89,18 @@
 //! block, 32–56), each value register `t` has its bound in `60 + t`, and
 //! 120–124 are scratch; both emulators run temporaries up to 127 for this
 //! (and the vertex stage runs `cmp` for it). Three free constant registers
-//! (from c223 down) hold the literals. A vertex shader that reads
-//! constants at a run-time index (`c[a0.x + n]`) could read those three,
-//! so it gets no bound shader (nor one that writes `o[aL]`): its
-//! verification stays bit for bit.
+//! (from c223 down, read and defined by neither shader) hold the
+//! literals. A vertex shader that reads constants at a run-time index
+//! (`c[a0.x + n]`) could read those three: its verification's draws hold
+//! the same literals at those registers ([`literals`]), so the original,
+//! the recompiled shader and both bound shaders read the same values
+//! wherever the index lands. One that writes `o[aL]` gets no bound shader
+//! (the output has no shadow register): its verification stays bit for
+//! bit.
 //!
 //! The same derivation holds for vertex shaders, which compute in the same
 //! f32 arithmetic in the emulator (`emu::vertex` shares `emu::math`); only
-//! the quad is missing. `m4x4` and its kind are `dp4`s in a row, and get
-//! no bound: the compiler writes them as `dp4`s itself, so they do not
-//! appear in recompiled shaders, and an original with one keeps them
-//! unbounded (bit for bit).
+//! the quad is missing. Register 125 is the `lit` rule's scratch.
 
 use crate::core::emu::vertex::output_row;
 use crate::core::ir::{
@@ -106,6 +125,7 @@ const ERR: u32 = 121;
 const T: u32 = 122;
 const T2: u32 = 123;
 const POISON: u32 = 124;
+const SCRATCH: u32 = 125;
 
 /// The literal registers: `k[0]` = (0, 1, 2, UNBOUNDED), `k[1]` = (u, 2u,
 /// 3u, 4u), `k[2]` = (5u, 6u, 1/ln 2 rounded up, 0).
@@ -263,15 +283,17 @@ fn pick(s: &Src, c: usize) -> Src {
     }
 }
 
-/// Three constant registers the shader neither defines nor reads.
-fn free_constants(shader: &Shader) -> Option<K> {
-    let p = shader.program();
-    let mut used: BTreeSet<u32> = p.float_defs.iter().map(|d| d.index).collect();
-    for x in &p.instructions {
-        for s in &x.src {
-            if s.reg.file == RegFile::Const {
-                for r in 0..4 {
-                    used.insert(s.reg.index + r);
+/// Three constant registers none of `shaders` defines or reads directly.
+pub fn free_constants(shaders: &[&Shader]) -> Option<[u32; 3]> {
+    let mut used: BTreeSet<u32> = BTreeSet::new();
+    for p in shaders.iter().map(|s| s.program()) {
+        used.extend(p.float_defs.iter().map(|d| d.index));
+        for x in &p.instructions {
+            for s in &x.src {
+                if s.reg.file == RegFile::Const {
+                    for r in 0..4 {
+                        used.insert(s.reg.index + r);
+                    }
                 }
             }
         }
@@ -281,28 +303,42 @@ fn free_constants(shader: &Shader) -> Option<K> {
         .filter(|r| !used.contains(r))
         .take(3)
         .collect();
-    (free.len() == 3).then(|| K([free[0], free[1], free[2]]))
+    (free.len() == 3).then(|| [free[0], free[1], free[2]])
+}
+
+/// The literals a bound shader defines at the registers `k`
+/// ([`free_constants`]): a vertex shader's draw sets the same values there,
+/// so that a run-time index reaching one reads the same in the original
+/// and its bound shader.
+pub fn literals(k: [u32; 3]) -> [(u32, [f32; 4]); 3] {
+    let kv = [
+        [0.0, 1.0, 2.0, UNBOUNDED],
+        [U, 2.0 * U, 3.0 * U, 4.0 * U],
+        [5.0 * U, 6.0 * U, 1.442_695_1, 0.0],
+    ];
+    [0, 1, 2].map(|i| (k[i], kv[i]))
 }
 
 /// The bound shader of `shader`: its outputs are the bounds of the
 /// original's outputs, pixel for pixel (vertex for vertex). `None` for a
 /// shader the analysis does not cover: no free constant registers, or a
-/// vertex shader that reads constants at a run-time index (`c[a0.x]`,
-/// which could reach the bound shader's literals) or writes an output at
-/// one (`o[aL]`, which has no shadow register).
+/// vertex shader that writes an output at a run-time index (`o[aL]`,
+/// which has no shadow register).
 pub fn bound_shader(shader: &Shader) -> Option<Shader> {
+    bound_shader_at(shader, free_constants(&[shader])?)
+}
+
+/// [`bound_shader`] with its literals at the registers `k`. A vertex
+/// shader that reads constants at a run-time index (`c[a0.x + n]`) may
+/// reach them: its draws must hold [`literals`] there.
+pub fn bound_shader_at(shader: &Shader, k: [u32; 3]) -> Option<Shader> {
     let p = shader.program();
     let vertex = p.profile.stage() == crate::core::profile::Stage::Vertex;
-    let relative = |x: &Instruction| {
-        x.src
-            .iter()
-            .any(|s| s.relative.is_some() && s.reg.file == RegFile::Const)
-            || x.dst.is_some_and(|d| d.relative.is_some())
-    };
+    let relative = |x: &Instruction| x.dst.is_some_and(|d| d.relative.is_some());
     if vertex && p.instructions.iter().any(relative) {
         return None;
     }
-    let k = free_constants(shader)?;
+    let k = K(k);
     let mut b = Builder {
         k,
         vertex,
@@ -333,15 +369,10 @@ pub fn bound_shader(shader: &Shader) -> Option<Shader> {
         instructions: b.out,
         ..p.clone()
     };
-    let kv = [
-        [0.0, 1.0, 2.0, UNBOUNDED],
-        [U, 2.0 * U, 3.0 * U, 4.0 * U],
-        [5.0 * U, 6.0 * U, 1.442_695_1, 0.0],
-    ];
-    for (r, v) in b.k.0.iter().zip(kv) {
+    for (index, value) in literals(b.k.0) {
         program.float_defs.push(crate::core::ir::FloatDef {
-            index: *r,
-            value: v,
+            index,
+            value,
             origin: Origin::default(),
         });
     }
@@ -511,7 +542,7 @@ fn error_of(b: &mut Builder, x: &Instruction, m: WriteMask) {
     // A scalar instruction reads its sources' first swizzle component and
     // writes one value to every lane: its bound is worked out at x and then
     // copied to the lanes written.
-    let scalar = matches!(x.op, Rcp | Rsq | Log | Exp | Pow | SinCos);
+    let scalar = matches!(x.op, Rcp | Rsq | Log | Logp | Exp | Expp | Pow | SinCos);
     let wide = m;
     let m = if scalar {
         a = pick(&a, 0);
@@ -552,29 +583,17 @@ fn error_of(b: &mut Builder, x: &Instruction, m: WriteMask) {
             b.emit(Cmp, t, m, vec![lane(t2), lane(t), lane(e)]);
             b.emit(Cmp, e, m, vec![neg(ea), lane(e), lane(t)]);
         }
-        Rcp | Rsq | Log => {
-            // δ/(1−δ) = e_a/(|a| − e_a); negative (→ unbounded) when e_a > |a|
-            b.emit(Add, t, m, vec![abs(&a), neg(ea)]);
-            b.emit(Rcp, t, m, vec![lane(t)]);
-            b.emit(Mul, t, m, vec![ea, lane(t)]);
-            if x.op == Log {
-                b.emit(Mul, e, m, vec![lane(t), b.konst(2, 2)]);
-                b.emit(Mad, e, m, vec![d, b.u(2), lane(e)]);
-            } else {
-                b.emit(Mul, e, m, vec![lane(t), d]);
-                let n = if x.op == Rcp { 1 } else { 2 };
-                b.emit(Mad, e, m, vec![d, b.u(n), lane(e)]);
-            }
-            let big = b.konst(0, 3);
-            b.emit(Cmp, e, m, vec![lane(t), lane(e), big]);
-        }
-        Exp => {
+        Rcp | Rsq | Log | Logp => relative(b, x.op, a, d, m),
+        Exp | Expp => {
             b.emit(Mov, t, m, vec![ea]);
             exp_factor(b, m);
             b.emit(Mul, e, m, vec![d, lane(t)]);
             b.emit(Mad, e, m, vec![d, b.u(2), lane(e)]);
         }
-        Pow => pow(b, a, bb, m),
+        Pow => pow(b, a, bb, d, m),
+        Dst => dst(b, a, bb, m),
+        Lit => lit(b, a, m),
+        M4x4 | M4x3 | M3x4 | M3x3 | M3x2 => matrix(b, x.op, a, bb, m),
         Lrp => lrp(b, [a, bb, c], m),
         Frc => {
             // distance to the nearest integer, less e_a: > 0 means no jump
@@ -729,11 +748,123 @@ fn exp_factor(b: &mut Builder, m: WriteMask) {
     b.emit(Cmp, T, m, vec![lane(ERR), lane(T), lane(T2)]);
 }
 
-/// The bound of `pow a, b` (see the module text).
-fn pow(b: &mut Builder, a: Src, e: Src, m: WriteMask) {
+/// The bound of `rcp`, `rsq`, `log` and `logp` from the relative error of
+/// their operand (see the module text); `d` is the result's magnitude.
+fn relative(b: &mut Builder, op: Opcode, a: Src, d: Src, m: WriteMask) {
+    use Opcode::*;
+    let (ea, e, t) = (b.err(&a), ERR, T);
+    // δ/(1−δ) = e_a/(|a| − e_a); negative (→ unbounded) when e_a > |a|
+    b.emit(Add, t, m, vec![abs(&a), neg(ea)]);
+    b.emit(Rcp, t, m, vec![lane(t)]);
+    b.emit(Mul, t, m, vec![ea, lane(t)]);
+    if matches!(op, Log | Logp) {
+        b.emit(Mul, e, m, vec![lane(t), b.konst(2, 2)]);
+        b.emit(Mad, e, m, vec![d, b.u(2), lane(e)]);
+    } else {
+        b.emit(Mul, e, m, vec![lane(t), d]);
+        let n = if op == Rcp { 1 } else { 2 };
+        b.emit(Mad, e, m, vec![d, b.u(n), lane(e)]);
+    }
+    let big = b.konst(0, 3);
+    b.emit(Cmp, e, m, vec![lane(t), lane(e), big]);
+}
+
+/// The bound of `dst a, b` = (1, a.y·b.y, a.z, b.w): 0, the product rule
+/// with one rounding, and the two copied operands' bounds.
+fn dst(b: &mut Builder, a: Src, bb: Src, m: WriteMask) {
+    use Opcode::*;
+    let (ea, eb) = (b.err(&a), b.err(&bb));
+    let lanes = |k: u8| WriteMask(m.0 & k);
+    let (x, y, z, w) = (lanes(1), lanes(2), lanes(4), lanes(8));
+    let e = ERR;
+    if x.0 != 0 {
+        b.emit(Mov, e, x, vec![b.zero()]);
+    }
+    if y.0 != 0 {
+        b.emit(Mad, e, y, vec![ea, eb, b.zero()]);
+        b.emit(Mad, e, y, vec![abs(&a), eb, lane(e)]);
+        b.emit(Mad, e, y, vec![abs(&bb), ea, lane(e)]);
+        b.emit(Mad, e, y, vec![abs(&lane(RES)), b.u(1), lane(e)]);
+    }
+    if z.0 != 0 {
+        b.emit(Mov, e, z, vec![ea]);
+    }
+    if w.0 != 0 {
+        b.emit(Mov, e, w, vec![eb]);
+    }
+}
+
+/// The bound of `lit a` = (1, max(a.x, 0), a.x > 0 && a.y > 0 ?
+/// a.y^clamp(a.w) : 0, 1): 0 for x and w; `e_ax` for y (`max(·, 0)` is
+/// 1-Lipschitz); for z the `pow` rule where both conditions are certain
+/// (each operand farther than its bound from 0, or exact), 0 where the
+/// result is 0 for certain, and unbounded where a condition could go
+/// either way (the clamp of the exponent to ±127.9961 is 1-Lipschitz and
+/// only shrinks it, so `|a.w|` and `e_aw` bound the exponent and its error).
+fn lit(b: &mut Builder, a: Src, m: WriteMask) {
+    use Opcode::*;
+    let (sx, sy, sw) = (pick(&a, 0), pick(&a, 1), pick(&a, 3));
+    let (ex, ey) = (b.err(&sx), b.err(&sy));
+    let one = WriteMask(1);
+    if m.has(2) {
+        pow(b, sy, sw, abs(&at(RES, 2)), one);
+        b.emit(Mov, SCRATCH, one, vec![at(ERR, 0)]);
+        // z's bound where certainly positive (min(a.x − e, a.y − e) > 0)
+        b.emit(Add, T, one, vec![sx, neg(ex)]);
+        b.emit(Add, T2, one, vec![sy, neg(ey)]);
+        b.emit(Min, T, one, vec![at(T, 0), at(T2, 0)]);
+        b.emit(
+            Cmp,
+            SCRATCH,
+            one,
+            vec![neg(at(T, 0)), b.zero(), at(SCRATCH, 0)],
+        );
+        for (s, e) in [(sx, ex), (sy, ey)] {
+            b.emit(Mov, T2, one, vec![s]);
+            b.emit(Mov, T, one, vec![e]);
+            uncertain(b, one, 3);
+            b.emit(Max, SCRATCH, one, vec![at(SCRATCH, 0), at(ERR, 0)]);
+        }
+        b.emit(Mov, ERR, WriteMask(4), vec![at(SCRATCH, 0)]);
+    }
+    let ends = WriteMask(m.0 & 0b1001);
+    if ends.0 != 0 {
+        b.emit(Mov, ERR, ends, vec![b.zero()]);
+    }
+    if m.has(1) {
+        b.emit(Mov, ERR, WriteMask(2), vec![ex]);
+    }
+}
+
+/// The bound of `m4x4` and its kind: row `k` of the result is a `dp4`
+/// (`dp3` for `m3x#`) of `a` with the register `k` after `rows`, and gets
+/// the dot product's rule. The compiler writes the same rows as `dp4`s
+/// (`mul(M, v)`: `skin.vsh`'s `m4x4` comes back as four), which get the
+/// same rule each.
+fn matrix(b: &mut Builder, op: Opcode, a: Src, rows: Src, m: WriteMask) {
+    let (n, dims) = op.matrix_shape().unwrap_or((4, 4));
+    let each = if dims == 4 { Opcode::Dp4 } else { Opcode::Dp3 };
+    for k in 0..n {
+        let lane_k = WriteMask(m.0 & (1 << k));
+        if lane_k.0 == 0 {
+            continue;
+        }
+        let row = Src {
+            reg: Reg {
+                index: rows.reg.index + k,
+                ..rows.reg
+            },
+            ..rows
+        };
+        dot(b, each, [a, row, b.zero()], lane_k);
+    }
+}
+
+/// The bound of `pow a, b` (see the module text); `d` is the result's
+/// magnitude.
+fn pow(b: &mut Builder, a: Src, e: Src, d: Src, m: WriteMask) {
     use Opcode::*;
     let (ea, eb) = (b.err(&a), b.err(&e));
-    let d = abs(&lane(RES));
     // e_L = e_a / (|a| − e_a) / ln 2, unbounded when e_a ≥ |a|
     b.emit(Add, T, m, vec![abs(&a), neg(ea)]);
     b.emit(Rcp, T2, m, vec![lane(T)]);

@@ -41,6 +41,9 @@ pub fn equivalence(
     v.pixels = count as u64;
     v.stage = crate::core::profile::Stage::Vertex;
     let mut worst_key = (0u64, false);
+    // the bound shaders' literals, at registers neither shader reads
+    // directly; the draws hold them too (`bound::literals`)
+    let k = bound::free_constants(&[original, recompiled]);
     // the bound shaders, made when some value differs
     let mut bounds: Option<[Option<Shader>; 2]> = None;
     for draw in 0..DRAWS {
@@ -54,6 +57,9 @@ pub fn equivalence(
                 .float_def(r)
                 .unwrap_or_else(|| std::array::from_fn(|_| constant(&mut rng, draw)));
             constants.float.push(value);
+        }
+        for (r, value) in k.map(bound::literals).into_iter().flatten() {
+            constants.float[r as usize] = value;
         }
         let d = VertexDraw {
             constants,
@@ -79,7 +85,7 @@ pub fn equivalence(
         };
         let differ = bits(&oa) != bits(&ob);
         if differ && bounds.is_none() {
-            bounds = Some([original, recompiled].map(bound::bound_shader));
+            bounds = Some([original, recompiled].map(|s| bound::bound_shader_at(s, k?)));
         }
         let errors = [0, 1].map(|k| {
             if !differ {
