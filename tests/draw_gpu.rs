@@ -14,11 +14,12 @@ use std::process::{Command, Output};
 /// Lists whose every draw's targets come out bit-identical: their values
 /// are constants, flat or pre-transformed positions where nothing is
 /// interpolated across a varying w with a rounding (fill rule, facing,
-/// vPos, the fan's flat colours, blending, depth written from constant z,
+/// vPos, the fan's flat colours, the alpha test's boundaries, blending, depth written from constant z,
 /// two targets, points, the dense grid's flat colours with its borders
 /// scissored, unwritten inputs' defaults, vertex texture fetch).
-const BIT_IDENTICAL: [&str; 13] = [
+const BIT_IDENTICAL: [&str; 14] = [
     "alpha_depth.json",
+    "alpha_rounding.json",
     "blend.json",
     "depth.json",
     "depth_funcs.json",
@@ -206,6 +207,7 @@ fn a_draw_in_one_pass_leaves_what_the_per_primitive_path_leaves() {
     let mut one_pass = Vec::new();
     for list in [
         "alpha_depth",
+        "alpha_rounding",
         "blend",
         "clipping",
         "d3dcolor",
@@ -251,9 +253,20 @@ fn a_draw_in_one_pass_leaves_what_the_per_primitive_path_leaves() {
             assert!(x == y, "{name}: {file:?} differs");
         }
     }
-    // The depth, stencil and two-target lists go to the device whole; the
-    // blending ones do not.
-    for list in ["depth", "depth_funcs", "stencil", "mrt", "points"] {
+    // The depth, stencil, alpha-test and two-target lists go to the device
+    // whole; the blending ones do not. alpha_rounding.json puts every
+    // alpha next to a rounding boundary of its target's comparison (8-bit,
+    // half and float targets, every D3DCMP function), so that the device's
+    // discard and the CPU's test must agree on each pixel.
+    for list in [
+        "depth",
+        "depth_funcs",
+        "stencil",
+        "mrt",
+        "points",
+        "alpha_depth",
+        "alpha_rounding",
+    ] {
         assert!(
             one_pass.contains(&list),
             "{list} not in one pass: {one_pass:?}"
@@ -399,5 +412,82 @@ fn compare_bit_identical(list: &serde_json::Value, name: &str, what: &str) {
             assert_eq!(cov["emulator_only"], 0, "{cov}");
             assert_eq!(cov["gpu_only"], 0, "{cov}");
         }
+    }
+}
+
+#[test]
+fn the_alpha_test_compares_at_each_targets_precision_on_both_backends() {
+    // alpha_rounding.json: one pixel per alpha a (column i), one row per
+    // D3DCMP function, ALPHAREF 128, on an 8-bit, a half and a float
+    // target; a pixel is written (red 0.25 ≠ 0) exactly where `x func r`
+    // holds for the numbers Direct3D 9 compares at the target's precision
+    // (docs/pixel-rules.md): 8-bit x = roundeven(a·255 in f32), r = 128;
+    // half x = roundeven(a·32767 in f32), r = 128·2⁷ + 128/2 = 16448;
+    // float x = a, r = 128/255 in f32. The alphas sit on and beside each
+    // of these boundaries, so a device that rounded differently, compared
+    // in another precision or flushed a subnormal would miss pixels. The
+    // GPU backend draws the list in one pass (the alpha test as a discard).
+    let path = repo().join("tests/draw_conformance/alpha_rounding.json");
+    let list: serde_json::Value = serde_json::from_slice(&std::fs::read(&path).unwrap()).unwrap();
+    let funcs = [
+        "NEVER",
+        "LESS",
+        "EQUAL",
+        "LESSEQUAL",
+        "GREATER",
+        "NOTEQUAL",
+        "GREATEREQUAL",
+        "ALWAYS",
+    ];
+    for backend in ["emulator", "gpu"] {
+        let Some(t) = render_file(&path, backend) else {
+            return;
+        };
+        let (mut passed, mut failed) = (0, 0);
+        for step in list["steps"].as_array().unwrap() {
+            let Some(name) = step["draw"].as_str() else {
+                continue;
+            };
+            let func = step["alpha_test"]["func"].as_str().unwrap();
+            let row = funcs.iter().position(|f| *f == func).unwrap();
+            let colours = step["geometry"]["vertices"]["attributes"]["color0"]
+                .as_array()
+                .unwrap();
+            let (width, pixels) = &t[name];
+            for (i, c) in colours.iter().step_by(4).enumerate() {
+                let a = c[3].as_f64().unwrap() as f32;
+                let (x, r) = match name {
+                    "u8" => ((a * 255.0).round_ties_even(), 128.0),
+                    "h" => ((a * 32767.0).round_ties_even(), 16448.0),
+                    _ => (a, 128.0f32 / 255.0),
+                };
+                let pass = match func {
+                    "NEVER" => false,
+                    "LESS" => x < r,
+                    "EQUAL" => x == r,
+                    "LESSEQUAL" => x <= r,
+                    "GREATER" => x > r,
+                    "NOTEQUAL" => x != r,
+                    "GREATEREQUAL" => x >= r,
+                    _ => true,
+                };
+                let got = pixels[row * *width as usize + i];
+                assert_eq!(
+                    got[0] > 0.0,
+                    pass,
+                    "{backend}: {name} {func} alpha {a:e} ({:#x}): {got:?}",
+                    a.to_bits()
+                );
+                if pass {
+                    passed += 1;
+                } else {
+                    failed += 1;
+                }
+            }
+        }
+        assert!(
+            passed > 100 && failed > 100,
+            "{passed} passed, {failed} failed"
+        );
     }
 }

@@ -7,10 +7,15 @@
 //! ([`super::draw_geometry`]).
 //!
 //! The results are those of the per-primitive path exactly, for the draws
-//! the caller sends here (the caller decides which: no blending, no alpha
-//! test — what is left of the CPU's work is then a function of the last
-//! fragment to pass at each pixel):
+//! the caller sends here (the caller decides which: no blending — what is
+//! left of the CPU's work is then a function of the last fragment to pass
+//! at each pixel):
 //!
+//! * **The alpha test** runs in the shader before the depth and stencil
+//!   tests, as in Direct3D 9: a pixel whose oC0 fails it is discarded, so
+//!   that it neither writes nor changes depth or stencil, nor counts as
+//!   killed (`translate::device_tests::AlphaDiscard`, the CPU's arithmetic
+//!   operation for operation).
 //! * **Depth** is compared in the surface's stored form
 //!   (`translate::device_tests`): the fragment writes the stored integer
 //!   scaled by a power of two into a 32-bit float surface, and the surface
@@ -38,7 +43,7 @@ use super::{Gpu, GpuError};
 use crate::core::ir::Shader;
 use crate::core::phases;
 use crate::core::raster::stencil::StencilOp;
-use crate::core::translate::device_tests::{DepthStore, DeviceTests, COUNTS_BINDING};
+use crate::core::translate::device_tests::{AlphaDiscard, DepthStore, DeviceTests, COUNTS_BINDING};
 use crate::core::translate::interface;
 use std::borrow::Cow;
 
@@ -197,13 +202,14 @@ fn depth_format(surface: &DepthSurface) -> wgpu::TextureFormat {
     }
 }
 
-/// Draws every primitive of `g` in one render pass, the depth and stencil
-/// tests of `surface` on the device.
+/// Draws every primitive of `g` in one render pass, the alpha test
+/// `alpha` and the depth and stencil tests of `surface` on the device.
 pub fn draw_one_pass(
     gpu: &Gpu,
     shader: &Shader,
     g: &GeometryDraw,
     surface: Option<&DepthSurface>,
+    alpha: Option<AlphaDiscard>,
 ) -> Result<OnePass, GpuError> {
     phases::mark("geometry (one pass): preparing");
     if let Some(why) = one_pass_lacks(gpu, surface.is_some_and(|s| s.stencil.is_some())) {
@@ -222,6 +228,7 @@ pub fn draw_one_pass(
     let scopes = ErrorScopes::push(gpu);
     let tests = DeviceTests {
         depth: surface.map(|s| s.store),
+        alpha,
     };
     let Fragment {
         iface,

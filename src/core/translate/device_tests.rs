@@ -53,6 +53,86 @@ pub struct DeviceTests {
     /// The depth surface's stored form, where the draw has one: the entry
     /// point writes `@builtin(frag_depth)` in it.
     pub depth: Option<DepthStore>,
+    /// The alpha test, where the draw has one that can fail.
+    pub alpha: Option<AlphaDiscard>,
+}
+
+/// The alpha test as the entry point runs it on oC0's alpha `a`: `x = a`
+/// (float targets) or `x = roundEven(a · scale)` in f32 (fixed-point
+/// ones), then `x func reference`, and a discard where that fails. This is
+/// `AlphaTest::compared` and `CmpFunc::passes` of the draw list's pixel
+/// state, operation for operation: f32 multiplication is correctly rounded
+/// on Vulkan (1.3, "Precision and Operation of SPIR-V Instructions") and
+/// `round` is WGSL's half-to-even. The comparison is made on integers,
+/// not floats, so that a device that treats subnormals as zero in float
+/// comparisons, or a compiler that rewrites `!(x < r)` as `x ≥ r`, cannot
+/// change it: for floats that are not NaN, `key(x) = ±(bits(x) & 0x7fffffff)`
+/// (the sign taken from the sign bit) orders exactly as the floats do,
+/// −0 = +0 included; a NaN `x` passes only `NOTEQUAL`, as an unordered
+/// comparison does on the CPU.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct AlphaDiscard {
+    /// The scale of a fixed-point comparison (255 or 32767), `None` for
+    /// the float alpha itself.
+    pub scale: Option<u32>,
+    /// The bits of the f32 the alpha is compared against.
+    pub reference: u32,
+    /// The comparison that passes (`x op reference`); `None` for
+    /// D3DCMP_NEVER, which no pixel passes.
+    pub func: Option<BinaryOperator>,
+}
+
+/// [`AlphaDiscard`]'s order key of the f32 with bits `bits`.
+pub fn order_key(bits: u32) -> i32 {
+    let magnitude = (bits & 0x7fff_ffff) as i32;
+    if bits >> 31 == 1 {
+        -magnitude
+    } else {
+        magnitude
+    }
+}
+
+/// After the counts: discards a pixel whose oC0 (`oc0`, the shader's
+/// output variable) fails `alpha` ([`AlphaDiscard`] gives the arithmetic).
+pub(super) fn alpha_discard(fb: &mut Fb, oc0: Handle<GlobalVariable>, alpha: AlphaDiscard) {
+    let Some(op) = alpha.func else {
+        fb.push(Statement::Kill);
+        return;
+    };
+    let p = fb.add(Expression::GlobalVariable(oc0));
+    let colour = fb.load(p);
+    let mut x = fb.index(colour, 3);
+    if let Some(scale) = alpha.scale {
+        let scale = fb.f32(scale as f32);
+        let scaled = fb.binary(BinaryOperator::Multiply, x, scale);
+        x = fb.math(MathFunction::Round, &[scaled]);
+    }
+    let bits = fb.add(Expression::As {
+        expr: x,
+        kind: naga::ScalarKind::Uint,
+        convert: None,
+    });
+    let mask = fb.u32(0x7fff_ffff);
+    let magnitude = fb.binary(BinaryOperator::And, bits, mask);
+    let infinity = fb.u32(0x7f80_0000);
+    let nan = fb.binary(BinaryOperator::Greater, magnitude, infinity);
+    let sign_mask = fb.u32(0x8000_0000);
+    let sign = fb.binary(BinaryOperator::And, bits, sign_mask);
+    let zero = fb.u32(0);
+    let negative = fb.binary(BinaryOperator::NotEqual, sign, zero);
+    let signed = fb.add(Expression::As {
+        expr: magnitude,
+        kind: naga::ScalarKind::Sint,
+        convert: None,
+    });
+    let minus = fb.negate(signed);
+    let key = fb.select(negative, minus, signed);
+    let reference = fb.i32(order_key(alpha.reference));
+    let ordered = fb.binary(op, key, reference);
+    let unordered = fb.bool(op == BinaryOperator::NotEqual);
+    let passes = fb.select(nan, unordered, ordered);
+    let fails = fb.not(passes);
+    fb.if_then(fails, |fb| fb.push(Statement::Kill));
 }
 
 /// The counters' global: `array<atomic<u32>>` in storage.
@@ -205,6 +285,35 @@ pub(super) fn outputs(
 
 #[cfg(test)]
 mod tests {
+    /// [`super::order_key`] orders every pair of non-NaN floats as `<`,
+    /// `==` and `>` do, signed zeros, subnormals and infinities included.
+    #[test]
+    fn the_alpha_tests_integer_key_orders_as_the_floats() {
+        let v = [
+            f32::NEG_INFINITY,
+            -3e38,
+            -1.0,
+            -1e-40,
+            -f32::from_bits(1),
+            -0.0,
+            0.0,
+            f32::from_bits(1),
+            1e-40,
+            f32::MIN_POSITIVE,
+            128.0 / 255.0,
+            1.0,
+            16448.0,
+            3e38,
+            f32::INFINITY,
+        ];
+        for a in v {
+            for b in v {
+                let (ka, kb) = (super::order_key(a.to_bits()), super::order_key(b.to_bits()));
+                assert_eq!(ka.cmp(&kb), a.partial_cmp(&b).unwrap(), "{a:e} vs {b:e}");
+            }
+        }
+    }
+
     /// [`super::stored_depth`]'s arithmetic, step for step in f32.
     fn shader_k(z: f32, bits: i32) -> f32 {
         let z = if z.is_nan() { 0.0 } else { z.clamp(0.0, 1.0) };

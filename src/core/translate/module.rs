@@ -424,8 +424,8 @@ pub enum Entry {
         /// Flat-shaded components, bit `4·slot + c`.
         flat: u64,
         /// `Some` for a whole draw in one render pass
-        /// ([`super::device_tests`]): texkill discards, the depth is
-        /// written as the surface stores it, covered and killed pixels are
+        /// ([`super::device_tests`]): texkill and a failed alpha test
+        /// discard, the depth is written as the surface stores it, covered and killed pixels are
         /// counted per triangle, and `@location(4)` holds 1.0 (no depth at
         /// `@location(5)`).
         tests: Option<super::device_tests::DeviceTests>,
@@ -593,6 +593,12 @@ pub(super) fn entry_point(
         let primitive = fb.add(Expression::FunctionArgument(args.len() as u32 - 1));
         let killed = iface.kills.then_some(cx.killed);
         super::device_tests::count_and_kill(&mut fb, counts, primitive, killed);
+    }
+    // The alpha test reads oC0 and leaves a pixel without one alone.
+    if let Some(alpha) = tests.and_then(|t| t.alpha) {
+        if iface.outputs.contains(&0) {
+            super::device_tests::alpha_discard(&mut fb, cx.outputs[0], alpha);
+        }
     }
 
     let result = outputs(m, cx, iface, &mut fb, entry, position);

@@ -232,9 +232,18 @@ impl AlphaTest {
                 let extra = bits.clamp(8, 16) - 8;
                 let r = u32::from(self.reference);
                 let reference = (r << extra) | (r >> (8 - extra));
-                let scale = ((256u32 << extra) - 1) as f32;
+                let scale = self.scale().unwrap_or(255) as f32;
                 ((alpha * scale).round_ties_even(), reference as f32)
             }
+        }
+    }
+
+    /// The integer scale of a fixed-point comparison (2^bits − 1 for
+    /// 8 to 16 bits), `None` where the float alpha is compared.
+    pub fn scale(self) -> Option<u32> {
+        match self.precision {
+            AlphaPrecision::Float => None,
+            AlphaPrecision::Fixed(bits) => Some((256u32 << (bits.clamp(8, 16) - 8)) - 1),
         }
     }
 

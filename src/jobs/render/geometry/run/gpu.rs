@@ -222,7 +222,7 @@ pub(super) fn shade_all(
             .map_or("in one pass".into(), |r| format!("per primitive ({r})"))
     ));
     if refusal.is_none() {
-        return super::one_pass::draw(device, shader, &geometry, g, settings, pass);
+        return super::one_pass::draw(device, shader, (d, &geometry, g), settings, pass);
     }
     let primitives = &geometry.primitives;
     let shaded = gpu::draw_geometry(device, shader, &geometry)

@@ -1,8 +1,9 @@
 //! A draw of geometry on the GPU backend in one render pass
 //! (`core::gpu::draw_one_pass`), where what the CPU would do after the
-//! device is a function of the last pixel to pass each test: no alpha
-//! test, no blending, no pixel history, and a depth surface of a format
-//! whose stored values the device can hold exactly. Every other draw
+//! device is a function of the last pixel to pass each test: no blending,
+//! no pixel history, and a depth surface of a format whose stored values
+//! the device can hold exactly. The alpha test runs on the device, by the
+//! CPU's arithmetic ([`alpha`]). Every other draw
 //! takes the per-primitive path, and [`refusal`] says why.
 //!
 //! The draw's results are the per-primitive path's: the device's depth
@@ -18,7 +19,7 @@ use crate::core::gpu::{self, Compare, DepthSurface, GeometryDraw, Gpu, StencilSi
 use crate::core::ir::Shader;
 use crate::core::merge::{self, MergeStats};
 use crate::core::raster::depth::DepthFormat;
-use crate::core::translate::device_tests::DepthStore;
+use crate::core::translate::device_tests::{AlphaDiscard, DepthStore};
 use crate::jobs::render::geometry::Geometry;
 use crate::jobs::render::pixel_state::CmpFunc;
 use crate::jobs::render::{DrawFailure, DrawStep, Settings};
@@ -31,9 +32,6 @@ pub(super) fn refusal(device: &Gpu, d: &DrawStep, g: &Geometry, pass: &Pass) -> 
     }
     if pass.watch.is_some() {
         return Some("the pixel history records every primitive's tests".into());
-    }
-    if d.pixel.alpha_test.is_some() {
-        return Some("the alpha test runs on the CPU".into());
     }
     if d.output.blend.enabled {
         return Some(
@@ -91,6 +89,29 @@ fn from_device(store: DepthStore, d: f32) -> f64 {
     }
 }
 
+/// The draw's alpha test as the device runs it (`None` where every pixel
+/// passes it: no test, or D3DCMP_ALWAYS).
+fn alpha(d: &DrawStep) -> Option<AlphaDiscard> {
+    use naga::BinaryOperator as B;
+    let test = d.pixel.alpha_test?;
+    let func = match test.func {
+        CmpFunc::Always => return None,
+        CmpFunc::Never => None,
+        CmpFunc::Less => Some(B::Less),
+        CmpFunc::Equal => Some(B::Equal),
+        CmpFunc::LessEqual => Some(B::LessEqual),
+        CmpFunc::Greater => Some(B::Greater),
+        CmpFunc::NotEqual => Some(B::NotEqual),
+        CmpFunc::GreaterEqual => Some(B::GreaterEqual),
+    };
+    Some(AlphaDiscard {
+        scale: test.scale(),
+        // The reference as the CPU compares it (it does not depend on the alpha).
+        reference: test.compared(0.0).1.to_bits(),
+        func,
+    })
+}
+
 fn compare(f: CmpFunc) -> Compare {
     match f {
         CmpFunc::Never => Compare::Never,
@@ -139,13 +160,12 @@ fn surface(g: &Geometry, pass: &Pass) -> Option<DepthSurface> {
 pub(super) fn draw(
     device: &Gpu,
     shader: &Shader,
-    geometry: &GeometryDraw,
-    g: &Geometry,
+    (d, geometry, g): (&DrawStep, &GeometryDraw, &Geometry),
     settings: &Settings,
     pass: &mut Pass,
 ) -> Result<Drawn, DrawFailure> {
     let surface = surface(g, pass);
-    let out = gpu::draw_one_pass(device, shader, geometry, surface.as_ref())
+    let out = gpu::draw_one_pass(device, shader, geometry, surface.as_ref(), alpha(d))
         .map_err(|e| DrawFailure::Message(e.to_string()))?;
     let mut drawn = Drawn {
         merged: MergeStats::default(),
