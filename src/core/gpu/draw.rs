@@ -555,6 +555,7 @@ fn render_pipeline(
         label: Some("ps30 translated shader"),
         source: wgpu::ShaderSource::Naga(Cow::Owned(fragment)),
     });
+    phases::mark("draw: shader module made");
     let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
         label: None,
         bind_group_layouts: &[Some(state.layout)],

@@ -382,6 +382,7 @@ pub(super) fn write_rows(
         usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::COPY_SRC,
         mapped_at_creation: false,
     });
+    crate::core::phases::mark("upload: texture and buffer made");
     {
         let size = wgpu::BufferSize::new(size)
             .ok_or_else(|| GpuError::Failed("an empty upload".into()))?;
@@ -391,6 +392,7 @@ pub(super) fn write_rows(
             .ok_or_else(|| {
                 GpuError::Failed(format!("no staging memory for a {size}-byte upload"))
             })?;
+        crate::core::phases::mark("upload: staging memory allocated");
         // Disjoint runs of rows, each filled by one task.
         let per = rows.div_ceil(256).max(1);
         let mut runs = Vec::new();
