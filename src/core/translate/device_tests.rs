@@ -170,10 +170,8 @@ pub(super) fn count_and_kill(
     fb: &mut Fb,
     counts: Handle<GlobalVariable>,
     primitive: Expr,
-    (killed, alpha): (
-        Option<Handle<GlobalVariable>>,
-        Option<(Handle<GlobalVariable>, AlphaDiscard)>,
-    ),
+    killed: Option<Handle<GlobalVariable>>,
+    alpha: Option<(Handle<GlobalVariable>, AlphaDiscard)>,
 ) {
     let add = |fb: &mut Fb, second: bool| {
         let base = fb.add(Expression::GlobalVariable(counts));

@@ -595,7 +595,7 @@ pub(super) fn entry_point(
         // The alpha test reads oC0 and leaves a pixel without one alone.
         let oc0 = iface.outputs.contains(&0).then_some(cx.outputs[0]);
         let alpha = oc0.zip(t.alpha);
-        super::device_tests::count_and_kill(&mut fb, counts, primitive, (killed, alpha));
+        super::device_tests::count_and_kill(&mut fb, counts, primitive, killed, alpha);
     }
 
     let result = outputs(m, cx, iface, &mut fb, entry, position);
