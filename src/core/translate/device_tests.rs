@@ -94,7 +94,7 @@ pub fn order_key(bits: u32) -> i32 {
 
 /// After the counts: discards a pixel whose oC0 (`oc0`, the shader's
 /// output variable) fails `alpha` ([`AlphaDiscard`] gives the arithmetic).
-pub(super) fn alpha_discard(fb: &mut Fb, oc0: Handle<GlobalVariable>, alpha: AlphaDiscard) {
+fn alpha_discard(fb: &mut Fb, oc0: Handle<GlobalVariable>, alpha: AlphaDiscard) {
     let Some(op) = alpha.func else {
         fb.push(Statement::Kill);
         return;
@@ -164,12 +164,14 @@ pub(super) fn counts(m: &mut Module) -> Handle<GlobalVariable> {
 
 /// After `ps_main`: counts the pixel for triangle `primitive` and, where
 /// the shader's `killed` flag (if it kills) is set, counts it again and
-/// discards it.
+/// discards it; then discards it where its oC0 (the variable, where the
+/// shader writes one) fails the alpha test ([`alpha_discard`]).
 pub(super) fn count_and_kill(
     fb: &mut Fb,
     counts: Handle<GlobalVariable>,
     primitive: Expr,
     killed: Option<Handle<GlobalVariable>>,
+    alpha: Option<(Handle<GlobalVariable>, AlphaDiscard)>,
 ) {
     let add = |fb: &mut Fb, second: bool| {
         let base = fb.add(Expression::GlobalVariable(counts));
@@ -199,6 +201,9 @@ pub(super) fn count_and_kill(
             add(fb, true);
             fb.push(Statement::Kill);
         });
+    }
+    if let Some((oc0, a)) = alpha {
+        alpha_discard(fb, oc0, a);
     }
 }
 

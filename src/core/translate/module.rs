@@ -588,17 +588,14 @@ pub(super) fn entry_point(
         arguments: Vec::new(),
         result: None,
     });
-    if tests.is_some() {
+    if let Some(t) = tests {
         let counts = super::device_tests::counts(m);
         let primitive = fb.add(Expression::FunctionArgument(args.len() as u32 - 1));
         let killed = iface.kills.then_some(cx.killed);
-        super::device_tests::count_and_kill(&mut fb, counts, primitive, killed);
-    }
-    // The alpha test reads oC0 and leaves a pixel without one alone.
-    if let Some(alpha) = tests.and_then(|t| t.alpha) {
-        if iface.outputs.contains(&0) {
-            super::device_tests::alpha_discard(&mut fb, cx.outputs[0], alpha);
-        }
+        // The alpha test reads oC0 and leaves a pixel without one alone.
+        let oc0 = iface.outputs.contains(&0).then_some(cx.outputs[0]);
+        let alpha = oc0.zip(t.alpha);
+        super::device_tests::count_and_kill(&mut fb, counts, primitive, killed, alpha);
     }
 
     let result = outputs(m, cx, iface, &mut fb, entry, position);
