@@ -161,3 +161,150 @@ fn a_step_that_is_not_a_draw_is_bad_input() {
         stderr(&o)
     );
 }
+
+/// The `lines` of a profile as (line, slots, runs, helpers, quads,
+/// divergent), checking on the way that each line's executed and lockstep
+/// slots are its runs and quad runs times its slots.
+fn lines(v: &Value) -> Vec<[u64; 6]> {
+    v.as_array()
+        .unwrap_or_else(|| panic!("{v} is not a list of lines"))
+        .iter()
+        .map(|l| {
+            let slots = u(&l["slots"]);
+            assert_eq!(u(&l["executed"]), u(&l["runs"]) * slots, "{l}");
+            assert_eq!(u(&l["lockstep"]), u(&l["quads"]) * slots, "{l}");
+            [
+                u(&l["line"]),
+                slots,
+                u(&l["runs"]),
+                u(&l["helpers"]),
+                u(&l["quads"]),
+                u(&l["divergent"]),
+            ]
+        })
+        .collect()
+}
+
+#[test]
+fn per_line_counts_at_a_triangle_edge_with_a_branch_that_splits_quads() {
+    // divergent.json, as derived above: 36 covered pixels in 10 quads, the
+    // 4 quads on the hypotenuse (qx + qy = 3) with one helper lane each, at
+    // their bottom-right corner (2qx + 1, 2qy + 1), where x + y = 8. A
+    // helper runs as its quad does, with texcoord0.x = 1.1·x/8 extended
+    // past the edge: the helper of quad (0, 3) has x = 1 and takes the
+    // branch; those of quads (1, 2), (2, 1), (3, 0) have x = 3, 5, 7 and
+    // do not. Every lane runs lines 5, 6 (the `if_lt` is paid by every lane
+    // that reaches it), 9 and 10: 36 runs, 4 helper runs, 10 quad runs, none
+    // split. Lines 7 and 8 run in the branch: columns 0–2, 21 covered
+    // pixels and that one helper; quads of columns 0–1 (4) and of columns
+    // 2–3 (3, rows 0–5) — the latter split, column 3 idle: 7 quad runs, 3
+    // divergent. Slots are Microsoft's count (`ps30 check`): mov 1,
+    // if_lt 3, dsx 2, endif 1.
+    let (_, v) = profile(&["--list", "tests/profile_list/divergent.json"]);
+    assert_eq!(
+        lines(&v["lines"]),
+        vec![
+            [5, 1, 36, 4, 10, 0],
+            [6, 3, 36, 4, 10, 0],
+            [7, 2, 21, 1, 7, 3],
+            [8, 1, 21, 1, 7, 3],
+            [9, 1, 36, 4, 10, 0],
+            [10, 1, 36, 4, 10, 0],
+        ]
+    );
+    // The lines add up to the pixels' and the quads' own totals.
+    let sum = |key: &str| -> u64 {
+        v["lines"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|l| u(&l[key]))
+            .sum()
+    };
+    let pixels = v["per_pixel"]["mean"].as_f64().unwrap() * 36.0;
+    let quads = v["per_quad"]["mean"].as_f64().unwrap() * 10.0;
+    assert_eq!(sum("executed") as f64, pixels.round());
+    assert_eq!(sum("lockstep") as f64, quads.round());
+    // The text table under --lines.
+    let o = in_repo(&[
+        "profile",
+        "--list",
+        "tests/profile_list/divergent.json",
+        "--lines",
+    ]);
+    let text = stdout(&o);
+    assert!(
+        text.contains("\n    7  dsx r1, r0            2         21         42          1          7          3         14\n"),
+        "{text}"
+    );
+}
+
+#[test]
+fn per_line_counts_of_both_shaders_of_a_strip() {
+    // strip.json: color.psh's one line runs on the 16 pixels, in 6 quad
+    // runs with 8 helper lanes (derived above), none split; pass.vsh's
+    // three lines run once per vertex, 4 runs each, 1 slot each.
+    let (_, v) = profile(&["--list", "tests/profile_list/strip.json"]);
+    assert_eq!(lines(&v["lines"]), vec![[4, 1, 16, 8, 6, 0]]);
+    assert_eq!(
+        lines(&v["vertex_shader"]["lines"]),
+        vec![[6, 1, 4, 0, 0, 0], [7, 1, 4, 0, 0, 0], [8, 1, 4, 0, 0, 0]]
+    );
+}
+
+#[test]
+fn multisampling_and_antialiased_lines_are_refused_by_name() {
+    let dir = tempfile::tempdir().unwrap();
+    let shader = crate::common::bin::repo().join("tests/profile_list/color.psh");
+    let verts = r#"{"attributes": {"positiont0": [[0, 0, 0, 1], [4, 0, 0, 1], [0, 4, 0, 1]], "texcoord0": [[0, 0, 0, 0], [0, 0, 0, 0], [0, 0, 0, 0]]}}"#;
+    let run = |target: &str, geometry: &str| {
+        let list = format!(
+            r#"{{"targets": [{{"name": "t", "size": "4x4", "format": "A8R8G8B8"{target}}}],
+                "steps": [{{"draw": "t", "shader": {shader:?},
+                            "geometry": {{"primitive": "line_strip", "vertices": {verts}{geometry}}}}}]}}"#
+        );
+        let path = dir.path().join("list.json");
+        std::fs::write(&path, list).unwrap();
+        crate::common::bin::ps30(
+            &[
+                "render",
+                path.to_str().unwrap(),
+                "-o",
+                dir.path().to_str().unwrap(),
+            ],
+            dir.path(),
+        )
+    };
+    // One sample per pixel and aliased lines are what ps30 draws.
+    let o = run(
+        r#", "multisample": "D3DMULTISAMPLE_NONE", "multisample_quality": 0"#,
+        r#", "antialiased_lines": false"#,
+    );
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    for (target, geometry, want) in [
+        (
+            r#", "multisample": "D3DMULTISAMPLE_4_SAMPLES""#,
+            "",
+            "targets[0].multisample: D3DMULTISAMPLE_4_SAMPLES is not drawn: Direct3D 9 leaves the sample positions to the hardware",
+        ),
+        (
+            r#", "multisample": 1"#,
+            "",
+            "targets[0].multisample: D3DMULTISAMPLE_NONMASKABLE is not drawn",
+        ),
+        (
+            r#", "multisample_quality": 2"#,
+            "",
+            "targets[0].multisample_quality: quality 2 needs a multisampled target",
+        ),
+        (
+            "",
+            r#", "antialiased_lines": true"#,
+            "steps[0].geometry.antialiased_lines: D3DRS_ANTIALIASEDLINEENABLE is not drawn: Direct3D 9 leaves an antialiased line's coverage to the hardware",
+        ),
+    ] {
+        let o = run(target, geometry);
+        assert_eq!(o.status.code(), Some(2), "{target}{geometry}");
+        assert!(stderr(&o).contains(want), "{}", stderr(&o));
+    }
+}

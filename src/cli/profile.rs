@@ -12,7 +12,7 @@ use super::{BadInput, Outcome};
 use ps30::core::emu::SamplerState;
 use ps30::core::image;
 use ps30::jobs::profile::{floats_set_by, profile_loaded, Input, Setup};
-use ps30::present::profile::{text, to_json};
+use ps30::present::profile::{lines_text, text, then, to_json};
 
 #[derive(clap::Args)]
 pub struct Args {
@@ -69,6 +69,12 @@ pub struct Args {
     /// Histogram bins.
     #[arg(long, value_name = "N", default_value_t = 12, value_parser = clap::value_parser!(u64).range(1..=1000))]
     bins: u64,
+    /// Also print what each source line cost: its runs and executed slots,
+    /// and for a pixel shader its helper-lane runs, its runs by 2×2 quads
+    /// in lockstep and how many of those split the quad (`--json` always
+    /// gives them, as `lines`)
+    #[arg(long)]
+    lines: bool,
     #[command(flatten)]
     exec: ExecArgs,
     #[command(flatten)]
@@ -144,7 +150,11 @@ pub fn run(args: Args, ui: &Ui) -> super::Result {
     if args.exec.json {
         print_json(&to_json(&r, &found))?;
     } else {
-        say(ui, &text(&r))?;
+        let mut out = text(&r);
+        if args.lines {
+            out = then(&out, &lines_text(&r.file.name, &r.lines, true));
+        }
+        say(ui, &out)?;
     }
     Ok(Outcome::from_ok(!r.problem()))
 }
@@ -183,7 +193,11 @@ fn list(args: &Args, path: &std::path::Path, ui: &Ui) -> super::Result {
     if args.exec.json {
         print_json(&ps30::present::profile::list_json(&name, &p))?;
     } else {
-        say(ui, &ps30::present::profile::list_text(&name, &p))?;
+        let mut out = ps30::present::profile::list_text(&name, &p);
+        if args.lines {
+            out = then(&out, &ps30::present::profile::list_lines_text(&p));
+        }
+        say(ui, &out)?;
     }
     Ok(Outcome::from_ok(!p.problem()))
 }
@@ -220,7 +234,11 @@ fn vertices(
     if args.exec.json {
         print_json(&ps30::present::vertices::profile_json(shader, &p))?;
     } else {
-        say(ui, &ps30::present::vertices::profile_text(shader, &p))?;
+        let mut out = ps30::present::vertices::profile_text(shader, &p);
+        if args.lines {
+            out = then(&out, &lines_text(shader, &p.lines, false));
+        }
+        say(ui, &out)?;
     }
     Ok(Outcome::from_ok(p.within_limits && p.counts_agree))
 }

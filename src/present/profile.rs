@@ -1,10 +1,12 @@
 //! What `ps30 profile` prints: costs per pixel and per quad with
-//! histograms, divergence, gradient sites and findings, as text and JSON.
+//! histograms, divergence, gradient sites and findings, and (`--lines`)
+//! what each source line cost, as text and JSON.
 
 use crate::core::audit;
 use crate::core::cost::Range;
 use crate::core::emu::findings::diagnostic;
 use crate::core::emu::findings::{Finding, SiteSummary};
+use crate::core::emu::lines::LineRuns;
 use crate::core::numbers::{decimal, thousands};
 use crate::jobs::profile::list::ListProfile;
 use crate::jobs::profile::{CostStats, ProfileRun, QuadCosts};
@@ -61,6 +63,75 @@ fn costs_text(s: &mut String, c: &QuadCosts) {
         }
     ));
     histogram_text(s, "slots per quad   quads", &c.per_quad);
+}
+
+/// What each source line cost (`profile --lines`), under a heading that
+/// names the shader: `quads` adds the columns of a pixel shader's helper
+/// lanes and 2×2 quads, which a vertex shader has not.
+pub fn lines_text(heading: &str, lines: &[LineRuns], quads: bool) -> String {
+    let mut s = format!("{heading}, per source line:\n");
+    if lines.is_empty() {
+        s.push_str("  (not counted)\n");
+        return s;
+    }
+    let width = lines
+        .iter()
+        .map(|l| l.text.chars().count())
+        .max()
+        .unwrap_or(6)
+        .clamp(6, 40);
+    let mut row = |cells: [&str; 9]| {
+        let [line, text, slots, runs, executed, helpers, quad, divergent, lockstep] = cells;
+        s.push_str(&format!(
+            "{line:>5}  {text:<width$}  {slots:>5}  {runs:>9}  {executed:>9}"
+        ));
+        if quads {
+            s.push_str(&format!(
+                "  {helpers:>9}  {quad:>9}  {divergent:>9}  {lockstep:>9}"
+            ));
+        }
+        s.push('\n');
+    };
+    row([
+        "line",
+        "source",
+        "slots",
+        "runs",
+        "executed",
+        "helpers",
+        "quads",
+        "divergent",
+        "lockstep",
+    ]);
+    for l in lines {
+        let text: String = l.text.chars().take(width).collect();
+        row([
+            &l.line.to_string(),
+            &text,
+            &thousands(l.slots),
+            &thousands(l.runs),
+            &thousands(l.executed),
+            &thousands(l.helpers),
+            &thousands(l.quads),
+            &thousands(l.divergent),
+            &thousands(l.lockstep),
+        ]);
+    }
+    s.push_str(if quads { PIXEL_LINES } else { VERTEX_LINES });
+    s.push('\n');
+    s
+}
+
+/// What the columns of a pixel shader's lines count.
+const PIXEL_LINES: &str = "(runs: by the pixels drawn; executed: runs × slots; helpers: runs by helper lanes; quads: runs by 2×2 quads in lockstep, divergent: with only part of the quad; lockstep: quads × slots)";
+
+/// What the columns of a vertex shader's lines count.
+const VERTEX_LINES: &str = "(runs: by the vertices; executed: runs × slots)";
+
+/// `text` and then, a blank line apart, `more`.
+pub fn then(text: &str, more: &str) -> String {
+    let gap = if text.ends_with("\n\n") { "" } else { "\n" };
+    format!("{text}{gap}{more}")
 }
 
 /// The findings as warnings, or the line saying there are none.
@@ -126,6 +197,7 @@ pub fn to_json(r: &ProfileRun, found: &[audit::Finding]) -> Value {
         "input": r.input,
         "target": [r.width, r.height],
         "gradients": sites_json(&r.gradients),
+        "lines": r.lines,
         "models": r.models.map(|m| m.iter().map(|&(n, ok)| json!({"pixels": n, "match": ok})).collect::<Vec<_>>()),
         "problem": r.problem(),
         "diagnostics": diagnostics,
@@ -251,6 +323,16 @@ pub fn list_text(list: &str, p: &ListProfile) -> String {
     s
 }
 
+/// `ps30 profile --list --lines`' tables: the pixel shader's lines over
+/// every primitive's quads, then the vertex shader's over its runs.
+pub fn list_lines_text(p: &ListProfile) -> String {
+    let mut s = lines_text(&p.shader, &p.lines, true);
+    if let Some((name, Ok(v))) = &p.vertex {
+        s = then(&s, &lines_text(name, &v.lines, false));
+    }
+    s
+}
+
 /// The JSON form of `ps30 profile --list`.
 pub fn list_json(list: &str, p: &ListProfile) -> Value {
     let vertex = p.vertex.as_ref().map(|(name, v)| match v {
@@ -270,6 +352,7 @@ pub fn list_json(list: &str, p: &ListProfile) -> Value {
         "edge_quads": p.edge_quads,
         "helper_lanes": p.helper_lanes,
         "gradients": sites_json(&p.gradients),
+        "lines": p.lines,
         "diagnostics": json::findings(&p.file.name, &p.findings),
         "vertex_shader": vertex,
         "problem": p.problem(),

@@ -122,5 +122,6 @@ pub fn profile_json(shader: &str, p: &VertexProfile) -> Value {
         "executed_emulated": p.executed,
         "within_limits": p.within_limits,
         "counts_agree": p.counts_agree,
+        "lines": p.lines,
     })
 }

@@ -31,7 +31,7 @@ use super::compile::{Cond, DstOp, Op, Pc, SamplerOp, SrcOp};
 use super::math;
 use super::planes::Planes;
 use super::quad::{quads_all, quads_any, SiteBatch};
-use super::{EmuError, RunCtx, LANES};
+use super::{EmuError, InstructionCount, RunCtx, LANES};
 use crate::core::isa::Compare;
 
 /// A flow-control construct in progress.
@@ -79,6 +79,8 @@ pub(crate) struct BatchOut {
     pub executed: u64,
     /// What each gradient site saw ([`super::Compiled`]'s site order).
     pub sites: Vec<SiteBatch>,
+    /// What ran each instruction (`Draw::count_instructions`; else empty).
+    pub instructions: Vec<InstructionCount>,
 }
 
 /// Per-thread executor state, reused across batches (nothing is allocated
@@ -113,6 +115,10 @@ pub(crate) struct Worker<'c, 'a> {
     uniform: u64,
     /// Upper bound of `counts` (for a cheap executed-limit check).
     bound: u64,
+    /// Count what runs each instruction (`Draw::count_instructions`).
+    counting: bool,
+    /// This batch's counts per instruction, while `counting`.
+    tally: Vec<InstructionCount>,
     stack: Vec<Frame>,
     calls: u32,
     pub(super) al: i32,
@@ -212,6 +218,8 @@ impl<'c, 'a> Worker<'c, 'a> {
             pixel: [0; LANES],
             uniform: 0,
             bound: 0,
+            counting: ctx.count_instructions,
+            tally: Vec::new(),
             stack: Vec::with_capacity(16),
             calls: 0,
             al: 0,
@@ -294,6 +302,9 @@ impl<'c, 'a> Worker<'c, 'a> {
         self.sites.fill(SiteBatch::default());
         self.uniform = 0;
         self.bound = 0;
+        if self.counting {
+            self.tally = vec![InstructionCount::default(); ctx.compiled.ops.len()];
+        }
         self.stack.clear();
         self.calls = 0;
         self.al = 0;
@@ -320,6 +331,7 @@ impl<'c, 'a> Worker<'c, 'a> {
             written: self.written,
             executed: self.counts.iter().fold(0u64, |a, &e| a.saturating_add(e)),
             sites,
+            instructions: std::mem::take(&mut self.tally),
         })
     }
 
@@ -334,11 +346,14 @@ impl<'c, 'a> Worker<'c, 'a> {
 
     // ----- counting -------------------------------------------------------
 
-    /// Charges `slots` to every lane of `mask`, and once to every quad with
-    /// a lane in `mask`; a quad with some but not all four lanes in `mask`
-    /// has diverged.
+    /// Charges `slots` of instruction `at` to every lane of `mask`, and
+    /// once to every quad with a lane in `mask`; a quad with some but not
+    /// all four lanes in `mask` has diverged.
     #[inline(always)]
-    pub(super) fn charge(&mut self, mask: u64, slots: u8) {
+    pub(super) fn charge(&mut self, mask: u64, slots: u8, at: usize) {
+        if self.counting {
+            self.count(mask, at);
+        }
         if mask == self.live {
             self.uniform += slots as u64;
         } else if mask != 0 {
@@ -355,13 +370,28 @@ impl<'c, 'a> Worker<'c, 'a> {
         }
     }
 
-    /// Charges the executing lanes; false if there are none (skip the op).
+    /// Counts the lanes and quads of `mask` running instruction `at`
+    /// (kept out of line: only draws that count instructions call it).
+    #[inline(never)]
+    fn count(&mut self, mask: u64, at: usize) {
+        let target = self.target;
+        if let Some(c) = self.tally.get_mut(at).filter(|_| mask != 0) {
+            let any = quads_any(mask);
+            c.pixels += u64::from((mask & target).count_ones());
+            c.helpers += u64::from((mask & !target).count_ones());
+            c.quads += u64::from(any.count_ones());
+            c.divergent += u64::from((any & !quads_all(mask)).count_ones());
+        }
+    }
+
+    /// Charges the executing lanes with instruction `at`'s `slots`; false
+    /// if there are none (skip the op).
     #[inline(always)]
-    pub(super) fn begin(&mut self, slots: u8) -> bool {
+    pub(super) fn begin(&mut self, slots: u8, at: usize) -> bool {
         if self.exec == 0 {
             return false;
         }
-        self.charge(self.exec, slots);
+        self.charge(self.exec, slots, at);
         true
     }
 
@@ -622,7 +652,7 @@ impl<'c, 'a> Worker<'c, 'a> {
             let s = m.slots;
             match m.op {
                 Op::Nop => {
-                    self.begin(s);
+                    self.begin(s, at);
                 }
                 Op::TexD {
                     d,
@@ -630,7 +660,7 @@ impl<'c, 'a> Worker<'c, 'a> {
                     s: smp,
                     grads,
                 } => {
-                    if self.begin(s) {
+                    if self.begin(s, at) {
                         self.texldd_at(at, d, a, smp, grads)?
                     }
                 }
@@ -671,7 +701,7 @@ impl<'c, 'a> Worker<'c, 'a> {
                 }
                 // ----- arithmetic and texld ---------------------------------
                 op => {
-                    if self.begin(s) {
+                    if self.begin(s, at) {
                         self.compute(op);
                     }
                 }
@@ -730,7 +760,7 @@ impl<'c, 'a> Worker<'c, 'a> {
     /// `taken`; returns the next pc.
     #[inline(always)]
     fn enter_if(&mut self, entry: u64, taken: u64, slots: u8, pc: usize, target: usize) -> usize {
-        self.charge(entry, slots);
+        self.charge(entry, slots, pc - 1);
         self.stack.push(Frame::If {
             pending: entry & !taken,
         });
@@ -765,7 +795,7 @@ impl<'c, 'a> Worker<'c, 'a> {
         *pending = self.exec;
         let then_side = self.exec;
         self.exec = other;
-        self.charge(then_side | other, slots);
+        self.charge(then_side | other, slots, at);
         Ok(if self.exec == 0 { target.get() } else { pc })
     }
 
@@ -776,7 +806,7 @@ impl<'c, 'a> Worker<'c, 'a> {
             return Err(malformed(at, "endif without if"));
         };
         self.exec |= pending;
-        self.charge(self.exec, slots);
+        self.charge(self.exec, slots, at);
         Ok(())
     }
 
@@ -791,7 +821,7 @@ impl<'c, 'a> Worker<'c, 'a> {
         if entry == 0 {
             return end.get() + 1;
         }
-        self.charge(entry, slots);
+        self.charge(entry, slots, pc - 1);
         // Checked at draw setup: count and start 0..=255, step
         // -128..=127.
         let i = self.ctx.ints[int as usize & 15];
@@ -826,7 +856,7 @@ impl<'c, 'a> Worker<'c, 'a> {
         else {
             return Err(malformed(at, "endrep/endloop without rep/loop"));
         };
-        self.charge(self.exec, slots);
+        self.charge(self.exec, slots, at);
         if remaining > 0 && self.exec != 0 {
             self.check_limit(false)?;
             if let Some(Frame::Loop { remaining, .. }) = self.stack.last_mut() {
@@ -841,7 +871,7 @@ impl<'c, 'a> Worker<'c, 'a> {
                 .ops
                 .get(start.get())
                 .ok_or_else(|| malformed(at, "loop start out of range"))?;
-            self.charge(self.exec, head.slots);
+            self.charge(self.exec, head.slots, start.get());
             Ok(start.get() + 1)
         } else {
             self.stack.pop();
@@ -863,7 +893,7 @@ impl<'c, 'a> Worker<'c, 'a> {
         at: usize,
         leaving: impl FnOnce(&Self) -> u64,
     ) -> Result<usize, EmuError> {
-        if !self.begin(slots) {
+        if !self.begin(slots, at) {
             return Ok(pc);
         }
         let leaving = self.exec & leaving(self);
@@ -919,7 +949,7 @@ impl<'c, 'a> Worker<'c, 'a> {
         pc: usize,
         at: usize,
     ) -> Result<usize, EmuError> {
-        if !self.begin(slots) {
+        if !self.begin(slots, at) {
             return Ok(pc);
         }
         let calling = self.exec & cond;
@@ -933,7 +963,7 @@ impl<'c, 'a> Worker<'c, 'a> {
     /// live), in a subroutine they return; returns the next pc.
     #[inline(always)]
     fn ret_op(&mut self, slots: u8, pc: usize, planes: &Planes) -> Result<Option<usize>, EmuError> {
-        self.charge(self.exec, slots);
+        self.charge(self.exec, slots, pc - 1);
         if self.calls == 0 {
             // ret in main ends the shader for these lanes.
             self.retire(self.exec, planes);

@@ -80,6 +80,7 @@ mod compile;
 mod exec;
 pub mod findings;
 mod layered;
+pub mod lines;
 mod math;
 mod planes;
 mod quad;
@@ -368,6 +369,11 @@ pub struct Draw<'a> {
     /// every execution costs about 9% of the instructions of a texture-bound
     /// shader such as the luminance pass. Divergence counts are always kept.
     pub record_lod: bool,
+    /// Count, per instruction, the lanes and quads that ran it
+    /// ([`DrawOutput::instructions`]), for `ps30 profile`'s costs per
+    /// source line. Off by default: a draw that does not ask pays one
+    /// predictable branch per executed op.
+    pub count_instructions: bool,
     /// The special values of the arithmetic (`ps30 … --float-rules`),
     /// shared with the translation that `core/gpu` draws.
     pub float_rules: crate::core::float_rules::FloatRules,
@@ -450,6 +456,7 @@ impl<'a> Draw<'a> {
             samplers: Vec::new(),
             limits: EmuLimits::default(),
             record_lod: false,
+            count_instructions: false,
             float_rules: crate::core::float_rules::FloatRules::Hardware,
             face: Face::Front,
             pixels: None,
@@ -484,6 +491,41 @@ pub struct DrawOutput {
     /// What the quads saw at each gradient instruction (dsx, dsy, texld,
     /// texldp, texldb), one entry per source statement.
     pub gradients: Vec<GradientSite>,
+    /// What ran each instruction of the program (by its index), over
+    /// every batch; empty unless [`Draw::count_instructions`].
+    pub instructions: Vec<InstructionCount>,
+}
+
+/// What ran one instruction over a draw ([`Draw::count_instructions`]).
+///
+/// Each time the executor charges the instruction's slots — an `if`'s
+/// lanes as they enter, `else` by the lanes of both sides, a `rep` or
+/// `loop` again on each further iteration, as the cost model counts it —
+/// the lanes charged are counted here, so that Σ `pixels` × slots over
+/// the instructions is the covered pixels' executed slots and Σ `quads` ×
+/// slots the quads' lockstep slots.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct InstructionCount {
+    /// Runs by lanes the draw reports (pixels inside the target, or
+    /// covered by the primitive).
+    pub pixels: u64,
+    /// Runs by helper lanes (the rest of their quads).
+    pub helpers: u64,
+    /// Runs by 2×2 quads in lockstep: each time a quad ran it with at
+    /// least one lane.
+    pub quads: u64,
+    /// Of those, the runs with some but not all four lanes of the quad.
+    pub divergent: u64,
+}
+
+impl InstructionCount {
+    /// Adds `other`'s counts to these.
+    pub fn add(&mut self, other: &InstructionCount) {
+        self.pixels += other.pixels;
+        self.helpers += other.helpers;
+        self.quads += other.quads;
+        self.divergent += other.divergent;
+    }
 }
 
 /// One gradient-using source statement and what the quads did there.
@@ -711,6 +753,8 @@ pub(crate) struct RunCtx<'c, 'a> {
     pub batch_quads: u64,
     pub cap: u64,
     pub record_lod: bool,
+    /// [`Draw::count_instructions`].
+    pub count_instructions: bool,
     /// The value of every component of `vFace`.
     pub face: f32,
     /// The draw's float rules.
@@ -787,6 +831,7 @@ impl<'c, 'a> RunCtx<'c, 'a> {
             batch_quads: batch_quads(quads, threads),
             cap: draw.limits.max_executed_per_pixel,
             record_lod: draw.record_lod,
+            count_instructions: draw.count_instructions,
             face: draw.face.value(),
             rules: draw.float_rules,
             pixels: draw.pixels,
@@ -1009,10 +1054,15 @@ pub fn run_with_threads(
         quad_executed: filled(q, 0)?,
         quad_divergent: filled(q, false)?,
         gradients: compiled.sites.clone(),
+        instructions: Vec::new(),
     };
+    if draw.count_instructions {
+        out.instructions = filled(compiled.ops.len(), InstructionCount::default())?;
+    }
     let batches = ctx.batches();
     let mut total = Total::new(&ctx, draw.limits.max_executed_total);
     let mut gradients = std::mem::take(&mut out.gradients);
+    let mut instructions = std::mem::take(&mut out.instructions);
     let planes = Planes::new(&mut out);
     let all = || -> Result<u8, EmuError> {
         let mut written = 0u8;
@@ -1050,6 +1100,9 @@ pub fn run_with_threads(
                         total.add(&r)?;
                         written |= r.written;
                         merge_sites(&mut gradients, &r);
+                        for (c, b) in instructions.iter_mut().zip(&r.instructions) {
+                            c.add(b);
+                        }
                     }
                     Some(Err(e)) => return Err(e),
                     // Skipped: only after a failure or over the limit.
@@ -1062,6 +1115,7 @@ pub fn run_with_threads(
     };
     let written = on_threads(threads, all)??;
     out.gradients = gradients;
+    out.instructions = instructions;
     for (i, c) in out.color.iter_mut().enumerate() {
         if written & (1 << i) == 0 {
             *c = None;

@@ -104,6 +104,7 @@ impl GpuOutput {
             quad_executed: Vec::new(),
             quad_divergent: Vec::new(),
             gradients: Vec::new(),
+            instructions: Vec::new(),
         }
     }
 }

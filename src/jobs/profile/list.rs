@@ -6,9 +6,11 @@
 //! 2×2 quad a primitive reached — helpers included, so a quad on a
 //! triangle's edge pays for the lanes outside it — and the gradient sites,
 //! from which come the divergent quads, the lockstep efficiency and the
-//! divergent-gradient findings of a full-screen profile. A draw of geometry
-//! through a vertex shader also gets the vertex shader's runs: each
-//! vertex's executed slots against the cost model.
+//! divergent-gradient findings of a full-screen profile, and what each
+//! source line cost over every primitive's quads ([`crate::core::emu::lines`]). A
+//! draw of geometry through a vertex shader also gets the vertex shader's
+//! runs: each vertex's executed slots against the cost model, and its
+//! costs per source line.
 
 use super::{costs_of, QuadCosts};
 use crate::core::cost::{self, Range};
@@ -40,6 +42,8 @@ pub struct ListProfile {
     pub counts_agree: bool,
     /// Per-pixel and per-quad costs over every primitive's quads.
     pub costs: QuadCosts,
+    /// What each source line of the pixel shader cost over them.
+    pub lines: Vec<crate::core::emu::lines::LineRuns>,
     /// Quads with fewer than four covered pixels (at a primitive's edges).
     pub edge_quads: u64,
     /// Their lanes that ran as helpers only (4 − covered, summed).
@@ -127,6 +131,7 @@ pub fn profile_list(
         quad_executed: Vec::new(),
         quad_divergent: Vec::new(),
         gradients: gathered.gradients.clone(),
+        instructions: Vec::new(),
     };
     let found = findings(&out, &Draw::new(1, 1), file);
     Ok(ListProfile {
@@ -139,6 +144,7 @@ pub fn profile_list(
         within_limits: analysis.verdict == cost::Verdict::Within,
         counts_agree,
         costs,
+        lines: crate::core::emu::lines::pixel_lines(shader, file, &gathered.instructions),
         edge_quads: gathered.quads.iter().filter(|q| q.pixels < 4).count() as u64,
         helper_lanes: gathered.quads.iter().map(|q| 4 - q.pixels.min(4)).sum(),
         gradients: gathered

@@ -12,6 +12,9 @@
 //!   and the *lockstep efficiency*: the pixels' own slots as a share of what
 //!   their quads executed, Σ pixel slots / Σ (quad slots × pixels of the
 //!   quad in the target);
+//! * what each source line cost: its runs by pixels and by helper lanes,
+//!   by quads in lockstep and how many of those split the quad
+//!   ([`crate::core::emu::lines`], from the emulator's counts per instruction);
 //! * findings:
 //!   - **divergent gradient**: a `dsx`/`dsy` of a temporary, or a
 //!     `texld`/`texldp`/`texldb` with a temporary coordinate, that some quad
@@ -278,6 +281,8 @@ pub struct ProfileRun {
     pub counts_agree: bool,
     /// Per-pixel and per-quad costs, with lockstep efficiency.
     pub costs: QuadCosts,
+    /// What each source line cost ([`emu::lines`]).
+    pub lines: Vec<emu::lines::LineRuns>,
     /// Every instruction that takes a gradient, with how often quads ran it
     /// divergently.
     pub gradients: Vec<SiteSummary>,
@@ -400,6 +405,7 @@ pub fn profile_loaded(loaded: load::Loaded, setup: &Setup) -> Result<ProfileRun,
         .iter()
         .map(|g| SiteSummary::new(g, &loaded.file))
         .collect();
+    let lines = emu::lines::pixel_lines(&loaded.shader, &loaded.file, &out.instructions);
     Ok(ProfileRun {
         input,
         width: out.width,
@@ -408,6 +414,7 @@ pub fn profile_loaded(loaded: load::Loaded, setup: &Setup) -> Result<ProfileRun,
         within_limits: analysis.verdict == cost::Verdict::Within,
         counts_agree,
         costs,
+        lines,
         gradients,
         findings: found,
         warnings: loaded.warnings,
@@ -439,6 +446,7 @@ fn gbuffer_draw<'s>(
         .map_err(|e| format!("{name}: not a light-model shader for the G-buffer scene: {e}"))?;
     let mut draw = scene.draw();
     draw.record_lod = true;
+    draw.count_instructions = true;
     draw.limits = setup.limits;
     draw.float_rules = setup.float_rules;
     // The command line's constants, except c4, which the scene sets.
@@ -478,6 +486,7 @@ fn image_draw<'i>(
     }
     draw.constants = setup.constants.clone();
     draw.record_lod = true;
+    draw.count_instructions = true;
     draw.limits = setup.limits;
     draw.float_rules = setup.float_rules;
     if loaded.shader.program().sampler_type(0).is_some() {

@@ -5,9 +5,10 @@
 //! other lanes run as helpers — with what it executed in lockstep, whether
 //! it diverged, and the gradient sites summed over the primitives. A quad
 //! two primitives share is counted once per primitive, as hardware runs it
-//! once per primitive.
+//! once per primitive. What ran each instruction is summed over the
+//! primitives too, for the costs per source line.
 
-use crate::core::emu::{DrawOutput, GradientSite};
+use crate::core::emu::{DrawOutput, GradientSite, InstructionCount};
 
 /// One quad a primitive (or a full-screen draw) ran.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -35,6 +36,9 @@ pub struct DrawCosts {
     pub gradients: Vec<GradientSite>,
     /// Primitives that ran the shader (a full-screen draw is one).
     pub primitives: u64,
+    /// What ran each instruction of the shader (by its index), summed
+    /// over the primitives.
+    pub instructions: Vec<InstructionCount>,
     /// The step is running.
     pub(crate) active: bool,
 }
@@ -91,6 +95,13 @@ impl DrawCosts {
             self.gradients = out.gradients.clone();
         } else {
             add_sites(&mut self.gradients, &out.gradients);
+        }
+        if self.instructions.len() < out.instructions.len() {
+            self.instructions
+                .resize(out.instructions.len(), InstructionCount::default());
+        }
+        for (c, b) in self.instructions.iter_mut().zip(&out.instructions) {
+            c.add(b);
         }
         self.primitives += 1;
     }

@@ -130,6 +130,9 @@ struct FileTarget {
     name: String,
     size: String,
     format: String,
+    /// Refused beyond one sample (`super::multisample`).
+    multisample: Option<serde_json::Value>,
+    multisample_quality: Option<u32>,
 }
 
 #[derive(Deserialize)]
@@ -523,6 +526,16 @@ impl Resolver {
         let at = format!("targets[{i}]");
         self.name_free(&format!("{at}.name"), &t.name)?;
         let (width, height) = size(&t.size).map_err(|m| self.err(&format!("{at}.size"), m))?;
+        super::multisample::check_target(t.multisample.as_ref(), t.multisample_quality).map_err(
+            |(quality, m)| {
+                let field = if quality {
+                    "multisample_quality"
+                } else {
+                    "multisample"
+                };
+                self.err(&format!("{at}.{field}"), m)
+            },
+        )?;
         let format = TargetFormat::from_name(&t.format).ok_or_else(|| {
             let known: Vec<&str> = TargetFormat::ALL.iter().map(|f| f.d3d_name()).collect();
             self.err(

@@ -422,6 +422,13 @@ impl Recorder {
         self
     }
 
+    /// Whether the step running now is the one whose costs are gathered:
+    /// its draws count what ran each instruction
+    /// ([`crate::core::emu::Draw::count_instructions`]).
+    pub fn counts_instructions(&self) -> bool {
+        self.costs.as_ref().is_some_and(|c| c.active)
+    }
+
     /// The costs gathered ([`Recorder::with_costs`]).
     pub fn costs(&self) -> Option<&DrawCosts> {
         self.costs.as_ref()

@@ -24,6 +24,7 @@ mod floats;
 pub mod geometry;
 pub mod history;
 pub mod input_values;
+mod multisample;
 pub mod pixel_state;
 pub mod textures;
 
@@ -568,6 +569,9 @@ fn draw(
     let mut emu_draw = Draw::new(spec.width, spec.height);
     emu_draw.limits = limits;
     emu_draw.record_lod = true;
+    emu_draw.count_instructions = watch
+        .as_deref()
+        .is_some_and(history::Recorder::counts_instructions);
     emu_draw.inputs = d.inputs.clone();
     if d.pixel.flat {
         pixel_state::flatten_inputs(shader.loaded.shader.program(), &mut emu_draw.inputs);
@@ -731,6 +735,7 @@ fn geometry_draw(
         quad_executed: Vec::new(),
         quad_divergent: Vec::new(),
         gradients: drawn.gradients,
+        instructions: Vec::new(),
     };
     let mut draw = Draw::new(1, 1);
     draw.samplers = bind_samplers(list, d, &d.samplers, states)?;

@@ -218,6 +218,24 @@ fn d3dcolor(text: &str) -> Result<[f32; 4], String> {
     Ok([byte(16), byte(8), byte(0), byte(24)])
 }
 
+/// The vertex draw of `constants` and `textures` (vs_3_0's `s0`–`s3`).
+fn vertex_draw(
+    constants: Constants,
+    textures: &[(u32, TextureFile, SamplerState)],
+    float_rules: FloatRules,
+    max_executed_per_vertex: u64,
+) -> VertexDraw<'_> {
+    VertexDraw {
+        constants,
+        samplers: textures
+            .iter()
+            .map(|(s, t, state)| (*s, t.into(), *state))
+            .collect(),
+        float_rules,
+        max_executed_per_vertex,
+    }
+}
+
 /// Runs a vertex shader over `vertices` with the application's constants
 /// and vs_3_0's vertex textures (`s0`–`s3`, for `texldl`).
 pub fn run(
@@ -228,15 +246,7 @@ pub fn run(
     float_rules: FloatRules,
     max_executed_per_vertex: u64,
 ) -> Result<VertexOutput, VertexError> {
-    let draw = VertexDraw {
-        constants,
-        samplers: textures
-            .iter()
-            .map(|(s, t, state)| (*s, t.into(), *state))
-            .collect(),
-        float_rules,
-        max_executed_per_vertex,
-    };
+    let draw = vertex_draw(constants, textures, float_rules, max_executed_per_vertex);
     vertex::run(shader, &draw, vertices)
 }
 
@@ -280,15 +290,7 @@ pub fn run_on(
             ));
         }
     }
-    let draw = VertexDraw {
-        constants,
-        samplers: textures
-            .iter()
-            .map(|(s, t, state)| (*s, t.into(), *state))
-            .collect(),
-        float_rules,
-        max_executed_per_vertex,
-    };
+    let draw = vertex_draw(constants, textures, float_rules, max_executed_per_vertex);
     crate::core::gpu::run_vertices(gpu, shader, &draw, vertices).map_err(|e| e.to_string())
 }
 
@@ -312,6 +314,8 @@ pub struct VertexProfile {
     pub within_limits: bool,
     /// Whether every vertex's count lies in the model's range.
     pub counts_agree: bool,
+    /// What each source line cost over the vertices.
+    pub lines: Vec<crate::core::emu::lines::LineRuns>,
 }
 
 /// [`run`], with the cost model's analysis under the same integer and
@@ -328,15 +332,8 @@ pub fn profile(
     let env = crate::jobs::backend::environment(&constants);
     let analysis =
         cost::analyse(shader, file, &env, &cost::Profile::ps_3_0()).map_err(|e| e.to_string())?;
-    let out = run(
-        shader,
-        constants,
-        textures,
-        vertices,
-        float_rules,
-        max_executed_per_vertex,
-    )
-    .map_err(|e| e.to_string())?;
+    let draw = vertex_draw(constants, textures, float_rules, max_executed_per_vertex);
+    let (out, runs) = vertex::run_counted(shader, &draw, vertices).map_err(|e| e.to_string())?;
     let model = analysis.executed;
     Ok(VertexProfile {
         profile: analysis.profile.name.clone(),
@@ -350,6 +347,7 @@ pub fn profile(
             .all(|&e| model.min <= e && e <= model.max),
         executed: out.executed,
         within_limits: analysis.verdict == Verdict::Within,
+        lines: crate::core::emu::lines::vertex_lines(shader, file, &runs),
     })
 }
 

@@ -93,12 +93,20 @@ impl<'s, 'a> State<'s, 'a> {
     }
 
     /// Runs vertex `vertex` with inputs `v`: its output rows and executed
-    /// slots.
+    /// slots. Each time an instruction's slots are charged, its entry of
+    /// `runs` (by instruction index) counts one; an empty `runs` counts
+    /// nothing.
     pub(super) fn run_vertex(
         &self,
         vertex: usize,
         mut v: [[f32; 4]; 16],
+        runs: &mut [u64],
     ) -> Result<([[f32; 4]; OUTPUT_ROWS], u64), VertexError> {
+        let mut ran = |i: usize| {
+            if let Some(n) = runs.get_mut(i) {
+                *n += 1;
+            }
+        };
         if self.rules.flush_denormals() {
             v.iter_mut().flatten().for_each(|x| *x = flush(*x));
         }
@@ -120,6 +128,7 @@ impl<'s, 'a> State<'s, 'a> {
             let x = &ins[pc];
             let slots = u64::from(info.slots(pc, SlotTable::default()));
             if x.op != Opcode::Label {
+                ran(pc);
                 executed += slots;
                 if executed > self.limit {
                     return Err(VertexError::ExecutedLimit {
@@ -164,6 +173,7 @@ impl<'s, 'a> State<'s, 'a> {
                         (true, _) => pc + 1,
                         // the else-branch passes its `else`, which is charged
                         (false, Some(Opcode::Else)) => {
+                            ran(target);
                             executed += u64::from(info.slots(target, SlotTable::default()));
                             target + 1
                         }
@@ -197,6 +207,7 @@ impl<'s, 'a> State<'s, 'a> {
                     if f.left > 0 {
                         g.al = g.al.wrapping_add(f.step);
                         // the next iteration's rep/loop is charged with it
+                        ran(f.start - 1);
                         executed += u64::from(info.slots(f.start - 1, SlotTable::default()));
                         f.start
                     } else {

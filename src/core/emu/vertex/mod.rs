@@ -313,23 +313,61 @@ pub fn run(
     draw: &VertexDraw,
     vertices: &Vertices,
 ) -> Result<VertexOutput, VertexError> {
+    run_with(shader, draw, vertices, false).map(|(out, _)| out)
+}
+
+/// [`run`], also counting the runs of each instruction (by its index in
+/// the program) over every vertex: each time its slots are charged, as
+/// the cost model counts them (`else` by the lanes of both sides, a `rep`
+/// or `loop` again on each further iteration).
+pub fn run_counted(
+    shader: &Shader,
+    draw: &VertexDraw,
+    vertices: &Vertices,
+) -> Result<(VertexOutput, Vec<u64>), VertexError> {
+    run_with(shader, draw, vertices, true)
+}
+
+fn run_with(
+    shader: &Shader,
+    draw: &VertexDraw,
+    vertices: &Vertices,
+    count: bool,
+) -> Result<(VertexOutput, Vec<u64>), VertexError> {
     let bound = check(shader, draw, vertices)?;
     let samplers = bind_samplers(draw)?;
     let state = exec::State::new(shader, draw, samplers);
     let (rows, slots): (Vec<usize>, Vec<OutputSlot>) = outputs(shader).into_iter().unzip();
+    let n = if count {
+        shader.instructions().len()
+    } else {
+        0
+    };
     let results = (0..vertices.count)
         .into_par_iter()
         .map(|v| {
-            let (out, executed) = state.run_vertex(v, vertex_inputs(&bound, vertices, v))?;
-            Ok((rows.iter().map(|&r| out[r]).collect::<Vec<_>>(), executed))
+            let mut runs = vec![0u64; n];
+            let (out, executed) =
+                state.run_vertex(v, vertex_inputs(&bound, vertices, v), &mut runs)?;
+            let values = rows.iter().map(|&r| out[r]).collect::<Vec<_>>();
+            Ok((values, executed, runs))
         })
         .collect::<Result<Vec<_>, VertexError>>()?;
-    let (values, executed) = results.into_iter().unzip();
-    Ok(VertexOutput {
+    let mut runs = vec![0u64; n];
+    let (mut values, mut executed) = (Vec::new(), Vec::new());
+    for (v, e, r) in results {
+        values.push(v);
+        executed.push(e);
+        for (total, k) in runs.iter_mut().zip(r) {
+            *total += k;
+        }
+    }
+    let out = VertexOutput {
         slots,
         values,
         executed,
-    })
+    };
+    Ok((out, runs))
 }
 
 /// Vertex `v`'s input registers v0–v15 from the bindings [`check`] made

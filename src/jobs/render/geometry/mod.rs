@@ -122,6 +122,8 @@ pub(crate) struct FileGeometry {
     fill_mode: Option<String>,
     stencil: Option<state::FileStencil>,
     fog: Option<state::FileFog>,
+    /// D3DRS_ANTIALIASEDLINEENABLE: refused when on (`render/multisample.rs`).
+    antialiased_lines: Option<bool>,
 }
 
 #[derive(Deserialize)]
@@ -278,6 +280,10 @@ pub(crate) fn read(
         stencil: g.stencil.as_ref(),
         fog: g.fog.as_ref(),
     })?;
+    // D3DRS_ANTIALIASEDLINEENABLE applies to lines and wireframe triangles.
+    let lines = primitive.is_line() || state.fill == state::FillMode::Wireframe;
+    super::multisample::check_lines(g.antialiased_lines.filter(|_| lines))
+        .map_err(|m| problem("antialiased_lines", m))?;
     let depth = g.depth.as_ref().map(depth).transpose()?;
     check_stencil(&state, depth.map(|d| d.format))?;
     let geometry = Geometry {

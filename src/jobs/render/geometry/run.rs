@@ -971,6 +971,10 @@ fn shade_all(
         draw.limits = limits;
         draw.limits.max_executed_total = limits.max_executed_total.saturating_sub(drawn.total);
         draw.record_lod = true;
+        draw.count_instructions = pass
+            .watch
+            .as_deref()
+            .is_some_and(Recorder::counts_instructions);
         draw.constants = d.constants.clone();
         draw.float_rules = d.pixel.float_rules.unwrap_or(settings.float_rules);
         draw.face = tri.face();

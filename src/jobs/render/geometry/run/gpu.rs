@@ -451,6 +451,7 @@ pub(crate) fn window(s: &ShadedPrimitive, width: u32) -> (Window, DrawOutput) {
         quad_executed: Vec::new(),
         quad_divergent: Vec::new(),
         gradients: Vec::new(),
+        instructions: Vec::new(),
     };
     (window, out)
 }
