@@ -35,7 +35,7 @@ fn read_files(args: &Args) -> Result<Vec<(String, String)>, BadInput> {
                 .map(|e| e.into_path())
                 .filter(|q| q.extension().is_some_and(|e| e == "shader_test"))
                 .collect();
-            found.sort();
+            found.sort_unstable();
             paths.extend(found);
         } else {
             paths.push(p.clone());

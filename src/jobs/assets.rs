@@ -11,9 +11,12 @@
 //! `sunset.pfm.planes.deflate`, its pixel bytes regrouped into four planes
 //! (byte 0 of every float, then byte 1, …), planes 1–3 stored as the
 //! difference from the same byte three floats back (the previous pixel's
-//! same channel), and deflated (2.0 MB), and
-//! `forest.hdr` (1.9 MB of run-length RGBE) deflated as `forest.hdr.deflate`
-//! (1.6 MB). A test holds the rebuilt bytes equal to the files'.
+//! same channel), and deflated (2.0 MB), and `forest.hdr` (1.9 MB of
+//! run-length RGBE) as `forest.hdr.planes.deflate` (1.4 MB): the file's run
+//! and literal counts in order, then its pixels as planes (G; R − G and B − G,
+//! each as the difference from the pixel before; E), deflated, from which the
+//! file's scanlines are written again packet for packet. A test holds the
+//! rebuilt bytes equal to the files'.
 
 use crate::core::image::{self, HdrImage, ImageError, ImageLimits};
 use std::path::Path;
@@ -27,11 +30,13 @@ pub const DIR: &str = "assets/hdr";
 enum Stored {
     /// The file's bytes as they are.
     Plain(&'static [u8]),
-    /// The file's bytes, deflated (raw deflate, no zlib header).
-    Deflated(&'static [u8]),
     /// A PFM: its header, then its pixel bytes as four byte planes (planes
     /// 1–3 as differences from three bytes back), deflated.
     Planes(&'static [u8], &'static [u8]),
+    /// A Radiance RGBE file of run-length-encoded scanlines, `[width,
+    /// height]` pixels: its header, then, deflated, the count byte of every
+    /// packet in file order and the pixels as four planes (`rle_scanlines`).
+    Rgbe(&'static [u8], [usize; 2], &'static [u8]),
 }
 
 /// Each bundled image's file name and how its bytes are stored (made by
@@ -55,7 +60,11 @@ const FILES: [(&str, Stored); 7] = [
     ),
     (
         "forest.hdr",
-        Stored::Deflated(include_bytes!("../../assets/hdr/forest.hdr.deflate")),
+        Stored::Rgbe(
+            b"#?RADIANCE\n# PFStools writer to Radiance RGBE format\nFORMAT=32-bit_rle_rgbe\n\n-Y 512 +X 1024\n",
+            [1024, 512],
+            include_bytes!("../../assets/hdr/forest.hdr.planes.deflate"),
+        ),
     ),
     (
         "sunset.exr",
@@ -80,7 +89,6 @@ fn file_bytes(i: usize) -> &'static [u8] {
     };
     match FILES[i].1 {
         Stored::Plain(b) => b,
-        Stored::Deflated(d) => REBUILT[i].get_or_init(|| inflate(d)),
         Stored::Planes(header, d) => REBUILT[i].get_or_init(|| {
             let mut planes = inflate(d);
             let n = planes.len() / 4;
@@ -96,6 +104,58 @@ fn file_bytes(i: usize) -> &'static [u8] {
             out.extend((0..planes.len()).map(|k| planes[(k % 4) * n + k / 4]));
             out
         }),
+        Stored::Rgbe(header, size, d) => REBUILT[i].get_or_init(|| {
+            let mut out = header.to_vec();
+            rle_scanlines(&inflate(d), size, &mut out);
+            out
+        }),
+    }
+}
+
+/// Writes the run-length-encoded scanlines of a `Stored::Rgbe` image after
+/// its header: `stored` is the packets' count bytes, then the pixels'
+/// planes (G; R − G and B − G as differences from the pixel before; E).
+/// Each scanline is its 4-byte start (2, 2, width), then its R, G, B and E
+/// bytes, each as packets: a count over 128 repeats one byte `count − 128`
+/// times, a count up to 128 is followed by that many bytes.
+fn rle_scanlines(stored: &[u8], [width, height]: [usize; 2], out: &mut Vec<u8>) {
+    // The four planes are the last bytes; the counts come before them.
+    let pixels = width * height;
+    let (counts, planes) = stored.split_at(stored.len() - 4 * pixels);
+    let g = &planes[..pixels];
+    // A running sum undoes the differences from the pixel before; G is
+    // added back after it.
+    let from_g = |plane: &[u8]| -> Vec<u8> {
+        let mut sum = 0u8;
+        let undo = |(d, g): (&u8, &u8)| {
+            sum = sum.wrapping_add(*d);
+            sum.wrapping_add(*g)
+        };
+        plane.iter().zip(g).map(undo).collect()
+    };
+    let r = from_g(&planes[pixels..2 * pixels]);
+    let b = from_g(&planes[2 * pixels..3 * pixels]);
+    let channels = [&r[..], g, &b[..], &planes[3 * pixels..]];
+    // At most: each scanline's start, a count per packet, every pixel byte.
+    out.reserve(4 * height + counts.len() + 4 * pixels);
+    let mut counts = counts.iter().copied();
+    for y in 0..height {
+        out.extend_from_slice(&[2, 2, (width >> 8) as u8, width as u8]);
+        for channel in channels {
+            let row = &channel[y * width..(y + 1) * width];
+            let mut x = 0;
+            while x < width {
+                let count = usize::from(counts.next().expect("a count per packet"));
+                out.push(count as u8);
+                if count > 128 {
+                    out.push(row[x]);
+                    x += count - 128;
+                } else {
+                    out.extend_from_slice(&row[x..x + count]);
+                    x += count;
+                }
+            }
+        }
     }
 }
 

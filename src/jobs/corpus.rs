@@ -276,7 +276,7 @@ impl Summary {
     /// Picks the most frequent diagnostics once every file is counted.
     pub fn finish(&mut self) {
         let mut all: Vec<(String, u64)> = self.counts.drain().collect();
-        all.sort_by(|a, b| b.1.cmp(&a.1).then_with(|| a.0.cmp(&b.0)));
+        all.sort_unstable_by(|a, b| b.1.cmp(&a.1).then_with(|| a.0.cmp(&b.0)));
         all.truncate(TOP_DIAGNOSTICS);
         self.most_frequent = all;
     }

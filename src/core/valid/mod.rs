@@ -1153,7 +1153,7 @@ impl Checker<'_, '_> {
             .iter()
             .map(|(&l, &i)| (i, Some(l)))
             .collect();
-        routines.sort();
+        routines.sort_unstable();
         routines.insert(0, (0, None));
         for &(_, routine) in routines.iter().rev() {
             let mut deepest = self.own_loops.get(&routine).copied().unwrap_or(0);

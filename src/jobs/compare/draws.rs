@@ -291,7 +291,7 @@ pub fn compare_list(
             .iter()
             .flat_map(|s| vertices::probed_ops(s))
             .collect();
-        opcodes.sort();
+        opcodes.sort_unstable();
         opcodes.dedup();
         let mut comparison = DrawComparison {
             shader: list.shaders[d.shader].name.clone(),

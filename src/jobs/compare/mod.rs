@@ -257,7 +257,7 @@ pub fn opcodes(shaders: &[&crate::core::ir::Shader]) -> Vec<String> {
         .iter()
         .flat_map(|s| s.instructions().iter().map(|i| i.op.to_string()))
         .collect();
-    v.sort();
+    v.sort_unstable();
     v.dedup();
     v
 }

@@ -169,7 +169,7 @@ impl ChannelStats {
             }
         }
         // Largest first; ties by position, so the list is deterministic.
-        ranked.sort_by(|a, b| b.0.cmp(&a.0).then(a.1.cmp(&b.1)));
+        ranked.sort_unstable_by(|a, b| b.0.cmp(&a.0).then(a.1.cmp(&b.1)));
         s.worst = ranked
             .iter()
             .take(5)

@@ -36,7 +36,7 @@ pub fn probed_ops(shader: &Shader) -> Vec<String> {
         })
         .collect();
     ops.extend(extra.into_iter().map(String::from));
-    ops.sort();
+    ops.sort_unstable();
     ops.dedup();
     ops
 }

@@ -138,7 +138,7 @@ impl Suite {
             .filter_map(|e| e.ok().map(|e| e.path()))
             .filter(|p| p.join("cases.json").is_file())
             .collect();
-        dirs.sort();
+        dirs.sort_unstable();
         dirs.iter().map(|d| Suite::load(d)).collect()
     }
 
@@ -357,7 +357,7 @@ impl DrawSetUp {
             .filter(|d| d.reg.file == RegFile::Input)
             .map(|d| d.reg.index)
             .collect();
-        registers.sort();
+        registers.sort_unstable();
         registers.dedup();
         let flat = registers
             .iter()

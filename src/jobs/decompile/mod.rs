@@ -408,7 +408,7 @@ fn changed(a: &Shader, b: &Shader) -> Vec<String> {
     };
     let (ca, cb) = (count(a), count(b));
     let mut keys: Vec<&&str> = ca.keys().chain(cb.keys()).collect();
-    keys.sort();
+    keys.sort_unstable();
     keys.dedup();
     keys.into_iter()
         .filter(|k| ca.get(**k) != cb.get(**k))

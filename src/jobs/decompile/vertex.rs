@@ -163,7 +163,7 @@ fn vertices(shaders: &[&Shader], draw: u32, count: usize) -> Vertices {
             }
         }
     }
-    attributes.sort();
+    attributes.sort_unstable();
     let columns = attributes
         .into_iter()
         .map(|a| {

@@ -913,7 +913,7 @@ pub fn generated_set() -> Result<GeneratedSet, GenError> {
         }
         frames.push((frame, bundle, p));
     }
-    files.sort();
+    files.sort_unstable();
     Ok(GeneratedSet { files, frames })
 }
 
@@ -1001,7 +1001,7 @@ pub fn existing_psh(dir: &Path) -> Vec<String> {
             }
         }
     }
-    out.sort();
+    out.sort_unstable();
     out
 }
 

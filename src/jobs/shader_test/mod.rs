@@ -163,7 +163,7 @@ pub fn run_files(
     for (_, text) in files {
         jobs.extend(runner::plan(text));
     }
-    jobs.sort();
+    jobs.sort_unstable();
     jobs.dedup();
     let answers = if jobs.is_empty() {
         Vec::new()
@@ -194,7 +194,7 @@ fn summarise(files: Vec<FileReport>) -> Report {
         }
     }
     let mut unsupported_reasons: Vec<(String, usize)> = reasons.into_iter().collect();
-    unsupported_reasons.sort_by(|a, b| b.1.cmp(&a.1).then_with(|| a.0.cmp(&b.0)));
+    unsupported_reasons.sort_unstable_by(|a, b| b.1.cmp(&a.1).then_with(|| a.0.cmp(&b.0)));
     Report {
         total_files: files.len(),
         files_run: files.iter().filter(|f| f.ran).count(),
