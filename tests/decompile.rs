@@ -36,11 +36,6 @@ const REFUSED: &[(&str, &str)] = &[
     ("*/rel-c-a0-unset.psh", "which the shader defines (def)"),
     ("*/rel-c-if.psh", "which the shader defines (def)"),
     ("*/rel-c-texldl.psh", "which the shader defines (def)"),
-    // c[aL] in a subroutine: the function would take the caller's counter
-    (
-        "*/rel-c-aL-subroutine.psh",
-        "c[aL] outside a loop (in a subroutine",
-    ),
     // an output register chosen at run time: X3500 / X3531 in HLSL
     ("*/rel-o-aL.psh", "X3500"),
     ("*/rel-o-aL-2049.psh", "X3500"),

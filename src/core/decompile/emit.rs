@@ -157,8 +157,17 @@ fn flow_or_value(
         }
         Opcode::Break => body.line("break;"),
         Opcode::BreakC | Opcode::BreakP => body.line(format!("if ({}) break;", ctx.condition(x)?)),
-        Opcode::Call => body.line(format!("label{}();", label(x)?)),
-        Opcode::CallNz => body.line(format!("if ({}) label{}();", ctx.condition(x)?, label(x)?)),
+        Opcode::Call | Opcode::CallNz => {
+            // the callee reads this loop's counter through the global
+            if let (true, Some(counter)) = (ctx.caller_counter, ctx.counters.last()) {
+                body.line(format!("{} = {counter};", super::expr::CALLER_COUNTER));
+            }
+            let call = format!("label{}();", label(x)?);
+            match x.op {
+                Opcode::CallNz => body.line(format!("if ({}) {call}", ctx.condition(x)?)),
+                _ => body.line(call),
+            }
+        }
         Opcode::Rep => {
             let count = int_register(ctx, x, 0)?;
             let n = format!("n{}", body.reps);

@@ -61,6 +61,9 @@ pub(crate) fn matrix_rows(op: Opcode) -> Option<u32> {
     }
 }
 
+/// The global through which a subroutine reads its caller's loop counter.
+pub(crate) const CALLER_COUNTER: &str = "aL";
+
 /// What expressions are spelled with: the names of registers.
 pub(crate) struct Ctx<'a> {
     /// Constants, samplers and their declarations.
@@ -73,6 +76,11 @@ pub(crate) struct Ctx<'a> {
     pub input_arrays: Vec<super::InputArray>,
     /// The loop counters of the enclosing `loop`s, innermost last.
     pub counters: Vec<String>,
+    /// Whether a subroutine reads `aL` outside a loop of its own: the
+    /// caller's counter then reaches it through the global `aL`, which every
+    /// call made inside a loop sets first (HLSL functions see no caller's
+    /// locals; the compiler inlines them all).
+    pub caller_counter: bool,
     /// Values not written to their temporary because their one reader
     /// takes the expression itself (see [`super::fold`]): register → value.
     pub pending: RefCell<BTreeMap<u32, Pending>>,
@@ -211,6 +219,16 @@ impl Ctx<'_> {
         self.register_at(s.reg, s.relative, s.modifier, &comps)
     }
 
+    /// The name `aL` reads as here: the innermost loop's counter, or in a
+    /// subroutine outside its own loops the caller's, through the global
+    /// `aL` ([`Ctx::caller_counter`]).
+    fn counter(&self) -> Option<String> {
+        match self.counters.last() {
+            Some(counter) => Some(counter.clone()),
+            None => self.caller_counter.then(|| CALLER_COUNTER.to_string()),
+        }
+    }
+
     /// Register `reg` read at components `comps`, with modifier `m`
     /// (`relative`: indexed by the loop counter).
     pub(crate) fn register(
@@ -253,18 +271,13 @@ impl Ctx<'_> {
                         "relative read outside an array".to_string()
                     }));
                 };
-                let counter =
-                    match index {
-                        Some(RelIndex::Addr(c)) => format!("a0.{}", AXES[c as usize & 3]),
-                        _ => match self.counters.last() {
-                            Some(counter) => counter.clone(),
-                            None => return unsupported(
-                                "c[aL] outside a loop (in a subroutine, the caller's counter): \
-                                 the HLSL function would take the counter as a parameter, \
-                                 which the decompiler does not write yet",
-                            ),
-                        },
-                    };
+                let counter = match index {
+                    Some(RelIndex::Addr(c)) => format!("a0.{}", AXES[c as usize & 3]),
+                    _ => match self.counter() {
+                        Some(counter) => counter,
+                        None => return unsupported("c[aL] outside a loop"),
+                    },
+                };
                 let offset = reg.index - first;
                 let index = if offset == 0 {
                     counter.clone()
@@ -314,12 +327,12 @@ impl Ctx<'_> {
                 else {
                     return unsupported("v[aL + n] outside a run of declared inputs");
                 };
-                let Some(counter) = self.counters.last() else {
+                let Some(counter) = self.counter() else {
                     return unsupported("v[aL] outside a loop");
                 };
                 let offset = reg.index - a.first;
                 let index = if offset == 0 {
-                    counter.clone()
+                    counter
                 } else {
                     format!("{counter} + {offset}")
                 };

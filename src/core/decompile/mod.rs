@@ -253,6 +253,24 @@ fn input_runs(shader: &Shader) -> Vec<(u32, u32)> {
     runs
 }
 
+/// Whether a subroutine (`subroutines`: the instructions after `main`'s
+/// `ret`) reads `aL` outside a `loop` of its own, so from its caller's.
+fn reads_caller_counter(subroutines: &[Instruction]) -> bool {
+    use crate::core::ir::RelIndex;
+    let mut depth = 0usize;
+    subroutines.iter().any(|x| {
+        match x.op {
+            Opcode::Label => depth = 0,
+            Opcode::Loop => depth += 1,
+            Opcode::EndLoop => depth = depth.saturating_sub(1),
+            _ => {}
+        }
+        let relative = x.src.iter().map(|s| s.relative);
+        let mut relative = relative.chain(x.dst.as_ref().map(|d| d.relative));
+        depth == 0 && relative.any(|r| r == Some(RelIndex::Loop))
+    })
+}
+
 /// The parameters of `main` for the shader's input declarations, the
 /// register → name maps expressions read (`v#`; ps_2_0's `t#`), and the
 /// input arrays.
@@ -381,6 +399,7 @@ pub fn decompile(
         texcoords,
         input_arrays,
         counters: Vec::new(),
+        caller_counter: false,
         pending: Default::default(),
     };
     let info = shader.info();
@@ -388,6 +407,7 @@ pub fn decompile(
     let main_end = (info.main_end as usize).min(n);
     let labels: Vec<(u32, usize)> = info.labels.iter().map(|(&l, &i)| (l, i as usize)).collect();
     let subroutines = !labels.is_empty();
+    ctx.caller_counter = reads_caller_counter(&shader.instructions()[main_end..]);
     let mut text = String::new();
     text.push_str(&profiles::header(shader.program().profile, target));
     for d in &names.decls {
@@ -411,6 +431,9 @@ pub fn decompile(
                 "static {};\n",
                 p.decl.split(" : ").next().unwrap_or(&p.decl)
             ));
+        }
+        if ctx.caller_counter {
+            text.push_str(&format!("static int {};\n", expr::CALLER_COUNTER));
         }
         for (l, _) in &labels {
             text.push_str(&format!("void label{l}();\n"));
