@@ -393,21 +393,20 @@ pub fn decompile(
     // runs of dot products over a whole matrix read as `mul` (`matrix.rs`)
     let ins = matrix::group(ins, &names);
     let named_uniforms = named_uniforms(table, &names);
+    let info = shader.info();
+    let n = shader.instructions().len();
+    let main_end = (info.main_end as usize).min(n);
     let mut ctx = expr::Ctx {
         names: &names,
         inputs: input_map,
         texcoords,
         input_arrays,
         counters: Vec::new(),
-        caller_counter: false,
+        caller_counter: reads_caller_counter(&shader.instructions()[main_end..]),
         pending: Default::default(),
     };
-    let info = shader.info();
-    let n = shader.instructions().len();
-    let main_end = (info.main_end as usize).min(n);
     let labels: Vec<(u32, usize)> = info.labels.iter().map(|(&l, &i)| (l, i as usize)).collect();
     let subroutines = !labels.is_empty();
-    ctx.caller_counter = reads_caller_counter(&shader.instructions()[main_end..]);
     let mut text = String::new();
     text.push_str(&profiles::header(shader.program().profile, target));
     for d in &names.decls {
