@@ -30,12 +30,6 @@ const REFUSED: &[(&str, &str)] = &[
     ("*/const-3000.psh", "def c3000 is read"),
     // m4x4's rows reach c8193: the compiler binds c0–c8191 only (X4507)
     ("*/rel-c-m4x4-8190.psh", "past c8191"),
-    // c[a0.x] over def registers: the literal and the application's
-    // constants in one run-time read, not written yet (a0 never written
-    // in `rel-c-a0-unset`: the emulator starts it at 0)
-    ("*/rel-c-a0-unset.psh", "which the shader defines (def)"),
-    ("*/rel-c-if.psh", "which the shader defines (def)"),
-    ("*/rel-c-texldl.psh", "which the shader defines (def)"),
     // an output register chosen at run time: X3500 / X3531 in HLSL
     ("*/rel-o-aL.psh", "X3500"),
     ("*/rel-o-aL-2049.psh", "X3500"),

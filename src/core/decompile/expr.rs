@@ -177,7 +177,7 @@ fn modify(text: String, m: SrcMod) -> String {
 }
 
 /// `float3(a, b, c)`, or the one literal.
-fn vector_literal(values: &[f32]) -> String {
+pub(crate) fn vector_literal(values: &[f32]) -> String {
     let parts: Vec<String> = values.iter().map(|&v| literal(v)).collect();
     if parts.len() == 1 {
         parts[0].clone()
@@ -284,7 +284,12 @@ impl Ctx<'_> {
                 } else {
                     format!("{counter} + {offset}")
                 };
-                swizzled(&format!("{name}[{index}]"), 4, comps)
+                // an array based at a def reads through its function
+                let read = match self.names.readers.get(name) {
+                    Some(f) => format!("{f}({index})"),
+                    None => format!("{name}[{index}]"),
+                };
+                swizzled(&read, 4, comps)
             }
             RegFile::Const => match self.names.floats.get(&reg.index) {
                 Some(FloatName::Literal(v)) => {

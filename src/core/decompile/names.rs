@@ -37,6 +37,11 @@ pub(crate) struct Names {
     pub samplers: BTreeMap<u32, String>,
     /// Uniform declarations, one line each, in register order.
     pub decls: Vec<String>,
+    /// Arrays based at a `def` → the function that reads them
+    /// (`arrays.rs`).
+    pub readers: BTreeMap<String, String>,
+    /// Those functions' text.
+    pub functions: String,
 }
 
 /// What the shader reads of the constant files (from [`super::expr::reads`]).
