@@ -403,6 +403,7 @@ pub fn decompile(
         texcoords,
         input_arrays,
         counters: Vec::new(),
+        from_zero: Vec::new(),
         caller_counter: reads_caller_counter(&shader.instructions()[main_end..]),
         pending: Default::default(),
     };
@@ -410,11 +411,7 @@ pub fn decompile(
     let subroutines = !labels.is_empty();
     let mut text = String::new();
     text.push_str(&profiles::header(shader.program().profile, target));
-    names
-        .decls
-        .iter()
-        .for_each(|d| text.push_str(&format!("{d}\n")));
-    text.push_str(&names.functions);
+    text.push_str(&names.preamble());
     if vertex {
         text.push_str(&vertex::rounding(shader));
         text.push_str(&vertex::declaration(&fields));

@@ -191,6 +191,14 @@ impl Names {
         Ok(names)
     }
 
+    /// The uniform declarations, one a line, then the functions that read
+    /// the arrays based at a `def` (`arrays.rs`).
+    pub(crate) fn preamble(&self) -> String {
+        let mut text: String = self.decls.iter().map(|d| format!("{d}\n")).collect();
+        text.push_str(&self.functions);
+        text
+    }
+
     fn name_floats(
         &mut self,
         program: &Program,
