@@ -9,6 +9,16 @@
 //! c192 in ps_3_0), which leaves the compiler room for its own literals. Direct reads of registers inside it are its elements, so that no
 //! two declarations bind one register.
 //!
+//! A relative read based at a `def` reads the literal where the index names
+//! the `def`, the uniform elsewhere: the array starts there and reaches past
+//! the run of `def`s, and a function of the HLSL, `c_at(i)`, chooses by the
+//! index — `[branch] if (i == k) return literal;` per `def`, which the
+//! compiler writes as `if` and exact `mov`s; in vs_2_0, which has no branch
+//! (X3528), `v = v * (1 - s) + literal * s` with `s = i == k ? 1 : 0` under
+//! `precise`, exact but for the sign of a zero (`-0 * 1 + 0` is `+0`) and
+//! infinite constants. `i == 0 ? literal : c[i]` is not exact: the
+//! compiler writes it `c + s·(literal − c)` (measured).
+//!
 //! A vertex shader's relative read based past its 256 constants
 //! (`c[a0.x + 2047]`, a limit probe's) reads an array based there, up to
 //! c8191, the last register the compiler binds: the compiler writes the
