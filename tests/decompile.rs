@@ -30,12 +30,6 @@ const REFUSED: &[(&str, &str)] = &[
     ("*/const-3000.psh", "def c3000 is read"),
     // m4x4's rows reach c8193: the compiler binds c0–c8191 only (X4507)
     ("*/rel-c-m4x4-8190.psh", "past c8191"),
-    // c[a0.x] over def registers: the literal and the application's
-    // constants in one run-time read, not written yet (a0 never written
-    // in `rel-c-a0-unset`: the emulator starts it at 0)
-    ("*/rel-c-a0-unset.psh", "which the shader defines (def)"),
-    ("*/rel-c-if.psh", "which the shader defines (def)"),
-    ("*/rel-c-texldl.psh", "which the shader defines (def)"),
     // an output register chosen at run time: X3500 / X3531 in HLSL
     ("*/rel-o-aL.psh", "X3500"),
     ("*/rel-o-aL-2049.psh", "X3500"),
@@ -499,6 +493,36 @@ fn the_range_reduction_of_sin_is_read_back_only_where_sincos_alone_reads_it() {
     let shared = shader("mov oC0.z, r0.x\n");
     assert!(shared.contains("frac"), "{shared}");
     assert!(shared.contains("6.2831855"), "{shared}");
+}
+
+/// A relative read based at a `def` reads the literal where the index
+/// names the def and the uniform elsewhere, through a function of the
+/// array: a `[branch] if` where the profile branches, a sum of products by
+/// 0 and 1 in vs_2_0, which does not. In a loop over an `int` uniform the
+/// HLSL's counter counts from 0 while `aL` counts from `i#.y`, so there
+/// the read is refused, naming why.
+#[test]
+fn a_relative_read_based_at_a_def_chooses_the_literal_by_the_index() {
+    let body = "def c0, 1, 0.5, -0.25, 0\ndcl_position v0\nmov r0, v0\n\
+                loop aL, i0\nadd r0, r0, c[aL]\nendloop\nmov oPos, r0\n";
+    let hlsl = |profile: &str, defi: &str| {
+        let text = format!("{profile}\n{defi}{body}");
+        decompile(&assembled(&text), None)
+    };
+    let branch = hlsl("vs_2_x", "defi i0, 3, 0, 1, 0\n").unwrap().hlsl;
+    assert!(branch.contains("r0 = r0 + c_at(i);"), "{branch}");
+    assert!(
+        branch.contains("    [branch] if (i == 0)\n        return float4(1.0, 0.5, -0.25, 0.0);\n    return c[i];"),
+        "{branch}"
+    );
+    let products = hlsl("vs_2_0", "defi i0, 3, 0, 1, 0\n").unwrap().hlsl;
+    assert!(
+        products.contains("    float s0 = i == 0 ? 1 : 0;\n    v = v * (1 - s0) + float4(1.0, 0.5, -0.25, 0.0) * s0;"),
+        "{products}"
+    );
+    assert!(!products.contains("[branch]"), "{products}");
+    let refused = hlsl("vs_2_x", "").unwrap_err().to_string();
+    assert!(refused.contains("counts from i#.y"), "{refused}");
 }
 
 fn assembled(text: &str) -> Shader {

@@ -153,6 +153,7 @@ fn flow_or_value(
         }
         Opcode::EndLoop => {
             ctx.counters.pop();
+            ctx.from_zero.pop();
             body.close();
         }
         Opcode::Break => body.line("break;"),
@@ -179,6 +180,7 @@ fn flow_or_value(
             match super::vertex::uniform_loop(shader, x, &ctx.names.ints, counter)? {
                 Some((head, name)) => {
                     ctx.counters.push(name);
+                    ctx.from_zero.push(true);
                     body.open(head);
                 }
                 None => loop_header(ctx, x, body)?,
@@ -248,6 +250,7 @@ fn loop_header(ctx: &mut Ctx, x: &Instruction, body: &mut Body) -> Result<(), De
         ),
     };
     ctx.counters.push(name);
+    ctx.from_zero.push(false);
     body.open(head);
     Ok(())
 }

@@ -76,6 +76,9 @@ pub(crate) struct Ctx<'a> {
     pub input_arrays: Vec<super::InputArray>,
     /// The loop counters of the enclosing `loop`s, innermost last.
     pub counters: Vec<String>,
+    /// For each of those, whether the HLSL counter counts from 0 where
+    /// `aL` counts from `i#.y` (`vertex::uniform_loop`).
+    pub from_zero: Vec<bool>,
     /// Whether a subroutine reads `aL` outside a loop of its own: the
     /// caller's counter then reaches it through the global `aL`, which every
     /// call made inside a loop sets first (HLSL functions see no caller's
@@ -177,7 +180,7 @@ fn modify(text: String, m: SrcMod) -> String {
 }
 
 /// `float3(a, b, c)`, or the one literal.
-fn vector_literal(values: &[f32]) -> String {
+pub(crate) fn vector_literal(values: &[f32]) -> String {
     let parts: Vec<String> = values.iter().map(|&v| literal(v)).collect();
     if parts.len() == 1 {
         parts[0].clone()
@@ -271,6 +274,10 @@ impl Ctx<'_> {
                         "relative read outside an array".to_string()
                     }));
                 };
+                // the index is not aL itself in a loop over an int uniform,
+                // nor (unknown) the caller's counter in a subroutine
+                let index_from_zero =
+                    index == Some(RelIndex::Loop) && self.from_zero.last().copied().unwrap_or(true);
                 let counter = match index {
                     Some(RelIndex::Addr(c)) => format!("a0.{}", AXES[c as usize & 3]),
                     _ => match self.counter() {
@@ -284,7 +291,20 @@ impl Ctx<'_> {
                 } else {
                     format!("{counter} + {offset}")
                 };
-                swizzled(&format!("{name}[{index}]"), 4, comps)
+                // an array based at a def reads through its function
+                let read = match self.names.readers.get(name) {
+                    Some(_) if index_from_zero => {
+                        return unsupported(
+                            "c[aL + n] starts at a def register, and the HLSL's counter here \
+                             may not be aL: a loop over an int uniform counts from 0 where aL \
+                             counts from i#.y (a subroutine's caller may be one), and only the \
+                             compiler's own c[aL] reads follow aL",
+                        )
+                    }
+                    Some(f) => format!("{f}({index})"),
+                    None => format!("{name}[{index}]"),
+                };
+                swizzled(&read, 4, comps)
             }
             RegFile::Const => match self.names.floats.get(&reg.index) {
                 Some(FloatName::Literal(v)) => {

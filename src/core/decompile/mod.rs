@@ -28,7 +28,7 @@ mod repeat;
 mod vertex;
 
 use crate::core::bytecode::ctab::ConstantTable;
-use crate::core::ir::{Instruction, Shader};
+use crate::core::ir::{Instruction, RelIndex, Shader};
 use crate::core::isa::{Opcode, RegFile};
 use emit::Body;
 use names::{Names, Uses};
@@ -139,6 +139,8 @@ fn scan(shader: &Shader, instructions: &[Instruction]) -> Scan {
                     .fold(0u8, |b, &p| b | 1 << src.swizzle.0[p]);
                 *s.uses.floats.entry(reg).or_default() |= bits;
             };
+            // `a0` read before (or without) any `mova`: the variable, 0
+            s.address |= matches!(src.relative, Some(RelIndex::Addr(_)));
             match src.reg.file {
                 RegFile::Const if src.relative.is_some() => {
                     s.uses.relative.insert(src.reg.index);
@@ -256,7 +258,6 @@ fn input_runs(shader: &Shader) -> Vec<(u32, u32)> {
 /// Whether a subroutine (`subroutines`: the instructions after `main`'s
 /// `ret`) reads `aL` outside a `loop` of its own, so from its caller's.
 fn reads_caller_counter(subroutines: &[Instruction]) -> bool {
-    use crate::core::ir::RelIndex;
     let mut depth = 0usize;
     subroutines.iter().any(|x| {
         match x.op {
@@ -402,6 +403,7 @@ pub fn decompile(
         texcoords,
         input_arrays,
         counters: Vec::new(),
+        from_zero: Vec::new(),
         caller_counter: reads_caller_counter(&shader.instructions()[main_end..]),
         pending: Default::default(),
     };
@@ -409,10 +411,7 @@ pub fn decompile(
     let subroutines = !labels.is_empty();
     let mut text = String::new();
     text.push_str(&profiles::header(shader.program().profile, target));
-    for d in &names.decls {
-        text.push_str(d);
-        text.push('\n');
-    }
+    text.push_str(&names.preamble());
     if vertex {
         text.push_str(&vertex::rounding(shader));
         text.push_str(&vertex::declaration(&fields));

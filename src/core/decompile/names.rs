@@ -37,6 +37,11 @@ pub(crate) struct Names {
     pub samplers: BTreeMap<u32, String>,
     /// Uniform declarations, one line each, in register order.
     pub decls: Vec<String>,
+    /// Arrays based at a `def` → the function that reads them
+    /// (`arrays.rs`).
+    pub readers: BTreeMap<String, String>,
+    /// Those functions' text.
+    pub functions: String,
 }
 
 /// What the shader reads of the constant files (from [`super::expr::reads`]).
@@ -184,6 +189,14 @@ impl Names {
         names.name_bools(program, &consts, uses, taken);
         names.name_samplers(program, &consts, uses, taken);
         Ok(names)
+    }
+
+    /// The uniform declarations, one a line, then the functions that read
+    /// the arrays based at a `def` (`arrays.rs`).
+    pub(crate) fn preamble(&self) -> String {
+        let mut text: String = self.decls.iter().map(|d| format!("{d}\n")).collect();
+        text.push_str(&self.functions);
+        text
     }
 
     fn name_floats(

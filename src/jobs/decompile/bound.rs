@@ -77,7 +77,12 @@
 //! * any other instruction: unbounded.
 //!
 //! "Unbounded" is [`UNBOUNDED`] (2¹⁰⁰), a value no difference is compared
-//! with: a differing value whose bound reaches it is not explained. The
+//! with: a differing value whose bound reaches it is not explained (so a
+//! true bound that large fails too). The rules hold for normal results: a
+//! product that underflows below 2⁻¹²⁶ errs by up to 2⁻¹⁵⁰ absolutely, not
+//! `u·|d|` (a product rounded to 0 is taken as exact), and the bound's own
+//! `u·|d|` is subnormal, so imprecise, for `|d|` below about 2⁻¹⁰². Both
+//! make the bound smaller, so a difference there fails rather than passes. The
 //! bound shader computes its own arithmetic in f32, every step a sum or
 //! product of non-negative values (each rounding relative error ≤ u), so
 //! along a chain of N ≤ 2¹⁴ operations the computed bound is within a
