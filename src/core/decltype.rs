@@ -15,7 +15,7 @@
 //! | D3DCOLOR | 4 | "packed, unsigned bytes mapped to 0 to 1 range", "expanded to RGBA order": the DWORD 0xAARRGGBB (bytes B, G, R, A in memory) gives (R, G, B, A)/255 |
 //! | UBYTE4 | 4 | the four unsigned bytes, unnormalised, in memory order |
 //! | SHORT2, SHORT4 | 2 per component | the signed shorts, unnormalised: (a, b, 0, 1), (a, b, c, d) |
-//! | UBYTE4N | 4 | "each byte normalized by dividing with 255.0f", in memory order (no swizzle: Wine's `fixed_function_decl_test` draws the same bytes as UBYTE4N and as D3DCOLOR to show the difference) |
+//! | UBYTE4N | 4 | "each byte normalized by dividing with 255.0f", in memory order, unswizzled (Wine's `fixed_function_decl_test` saw Windows draw the DWORD 0x00FFFF00 yellow as D3DCOLOR and cyan as UBYTE4N) |
 //! | SHORT2N, SHORT4N | 2 per component | "first short/32767.0, second short/32767.0" (and 0, 1 for SHORT2N) |
 //! | USHORT2N, USHORT4N | 2 per component | each unsigned short /65535.0 (and 0, 1 for USHORT2N) |
 //! | UDEC3 | 4 | "unsigned, 10 10 10 format expanded to (value, value, value, 1)": x from bits 0–9, y 10–19, z 20–29, the top two bits ignored |

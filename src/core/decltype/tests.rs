@@ -187,3 +187,19 @@ fn names_values_and_sizes_follow_d3d9types_h() {
         assert_eq!(t.name(), *name);
     }
 }
+
+#[test]
+fn what_windows_drew_in_wines_fixed_function_decl_test() {
+    // Wine's dlls/d3d9/tests/visual.c, fixed_function_decl_test (colours
+    // read back on Windows drivers): the DWORD 0x00FFFF00 as D3DCOLOR draws
+    // 0x00FFFF00 (yellow: R and G full), the same DWORD as UBYTE4N draws
+    // 0x0000FFFF (cyan: its bytes 00 FF FF 00 taken in memory order as R,
+    // G, B, A), and USHORT4N (0, 0, 0xFFFF, 0xFFFF) draws 0x000000FF (blue).
+    let dword = 0x00FF_FF00u32.to_le_bytes();
+    same(DeclType::D3dColor.decode(&dword), [1.0, 1.0, 0.0, 0.0]);
+    same(DeclType::Ubyte4N.decode(&dword), [0.0, 1.0, 1.0, 0.0]);
+    same(
+        DeclType::Ushort4N.decode(&le16(&[0, 0, 0xFFFF, 0xFFFF])),
+        [0.0, 0.0, 1.0, 1.0],
+    );
+}
