@@ -560,3 +560,83 @@ fn depth_is_interpolated_linearly_on_screen() {
     let t = draw("depth_ramp.json");
     check(&t, "t", |x, _| if x >= 4 { GREEN } else { RED });
 }
+
+/// The bytes of `vertex_buffers.vb`, built here from the values the list's
+/// declarations say they hold (little-endian, as Direct3D 9's buffers).
+fn vertex_buffer_bytes() -> Vec<u8> {
+    let corners = [
+        (-1i16, 1i16, 0i16, 0i16),
+        (1, 1, 8, 0),
+        (-1, -1, 0, 8),
+        (1, -1, 8, 8),
+    ];
+    let mut b = Vec::new();
+    // Draw 1, stride 24: SHORT4N position (x·32767, y·32767, 0, 32767),
+    // D3DCOLOR 0x80FF4000, FLOAT16_4 (0x3800, 0xC000, 0x0001, 0x7BFF),
+    // SHORT2 (u, v).
+    for (x, y, u, v) in corners {
+        for s in [x * 32767, y * 32767, 0, 32767] {
+            b.extend(s.to_le_bytes());
+        }
+        b.extend(0x80FF_4000u32.to_le_bytes());
+        for h in [0x3800u16, 0xC000, 0x0001, 0x7BFF] {
+            b.extend(h.to_le_bytes());
+        }
+        b.extend(u.to_le_bytes());
+        b.extend(v.to_le_bytes());
+    }
+    // Draw 2 at byte 96, stride 28: FLOAT2 position, SHORT2N (32767,
+    // −32768), DEC3N 0x3FF801FF (x 0x1FF, y 0x200, z 0x3FF), USHORT4N
+    // (65535, 0, 1, 32768), UBYTE4N bytes (0, 64, 255, 128).
+    for (x, y, _, _) in corners {
+        b.extend(f32::from(x).to_le_bytes());
+        b.extend(f32::from(y).to_le_bytes());
+        b.extend(32767i16.to_le_bytes());
+        b.extend((-32768i16).to_le_bytes());
+        b.extend(0x3FF8_01FFu32.to_le_bytes());
+        for s in [65535u16, 0, 1, 32768] {
+            b.extend(s.to_le_bytes());
+        }
+        b.extend([0u8, 64, 255, 128]);
+    }
+    b
+}
+
+#[test]
+fn vertex_buffers_of_every_kind_reach_the_shaders_decoded_by_type() {
+    // D3DDECLTYPE's rules (Microsoft's page; core/decltype.rs cites them),
+    // applied here by hand. Both draws cover the 8×8 target (clip −1…1, a
+    // strip of two triangles, top-left rule: all 64 centres).
+    let file = repo().join("tests/draw_conformance/vertex_buffers.vb");
+    assert_eq!(std::fs::read(file).unwrap(), vertex_buffer_bytes());
+    let t = draw("vertex_buffers.json");
+    // Draw 1, through decl.vsh (vs_3_0, every input moved to an output):
+    // SHORT4N ±32767/32767 = ±1 places the corners; D3DCOLOR 0x80FF4000
+    // reads (R, G, B, A) = (255, 64, 0, 128)/255; the halves are 0.5, −2,
+    // 2⁻²⁴ (the smallest subnormal half, a normal f32) and 65504 (the
+    // largest half); UDEC3 0x200003FF from the inline stream is x 0x3FF,
+    // y 0, z 0x200: (1023, 0, 512, 1). Constant across the vertices, each
+    // interpolates to itself (the f64 weighted mean of one f32 value rounds
+    // back to it). SHORT2 (u, v) runs from 0 to 8 across the target: pixel
+    // (i, j) at screen (i, j) has weights i/8, j/8, so (i, j, 0, 1), exact.
+    check(&t, "d0", |_, _| [1.0, 64.0 / 255.0, 0.0, 128.0 / 255.0]);
+    check(&t, "d1", |_, _| [0.5, -2.0, f32::powi(2.0, -24), 65504.0]);
+    check(&t, "d2", |_, _| [1023.0, 0.0, 512.0, 1.0]);
+    check(&t, "d3", |i, j| [i as f32, j as f32, 0.0, 1.0]);
+    // Draw 2, no vertex shader (FLOAT2 position0 as clip space, filled to
+    // (x, y, 0, 1)), read from byte 96 of the same file with its count
+    // derived: (208 − 96 − 28)/28 + 1 = 4. UBYTE4N bytes (0, 64, 255, 128)
+    // in memory order: (0, 64, 255, 128)/255. SHORT2N (32767, −32768):
+    // 32767/32767 = 1 and −32768/32767, Direct3D 9's unclamped rule, which
+    // rounds to −(1 + 2⁻¹⁵) (core/decltype's tests derive it). DEC3N x 511,
+    // y −512, z −1 over 511: (1, −512/511, −1/511, 1). USHORT4N over 65535:
+    // (1, 0, 1/65535, 32768/65535).
+    check(&t, "n0", |_, _| [0.0, 64.0 / 255.0, 1.0, 128.0 / 255.0]);
+    check(&t, "n1", |_, _| {
+        [1.0, -(1.0 + f32::powi(2.0, -15)), 0.0, 1.0]
+    });
+    check(&t, "n2", |_, _| [1.0, -512.0 / 511.0, -1.0 / 511.0, 1.0]);
+    check(&t, "n3", |_, _| {
+        [1.0, 0.0, 1.0 / 65535.0, 32768.0 / 65535.0]
+    });
+}

@@ -1128,3 +1128,78 @@ fn a_whole_draw_list_is_held_to_a_budget() {
     // 1,000 slots allow five draws of 192; the sixth passes the budget.
     assert!(r.stderr.contains("steps[5]"), "{}", r.stderr);
 }
+
+#[test]
+fn vertex_buffers_are_checked_before_anything_is_allocated_from_them() {
+    // A vertex list of raw buffers (docs/vertex-shaders.md): a stream file
+    // missing, too short, a count far past it, stride 0, an offset past
+    // any file, and /dev/zero (read up to the 64 MiB cap, then refused for
+    // holding more vertices than a list may) — each refused naming its
+    // field, with exit 2, inside the memory and CPU limits above.
+    let d = tempfile::tempdir().unwrap();
+    let d = d.path();
+    write(d, "vs.vsh", "vs_2_0\ndcl_position v0\nmov oPos, v0\n");
+    fs::write(d.join("short.vb"), [0u8; 40]).unwrap();
+    let list = |stream: &str, count: &str| {
+        format!(
+            r#"{{"declaration": [{{"offset": 0, "type": "FLOAT4", "usage": "position"}}],
+               "streams": [{stream}]{count}}}"#
+        )
+    };
+    let cases = [
+        (
+            list(r#"{"file": "missing.vb", "stride": 16}"#, ""),
+            "streams[0].file: ",
+        ),
+        (
+            list(r#"{"file": "short.vb", "stride": 16}"#, r#", "count": 3"#),
+            "streams[0]: 40 bytes hold 2 vertices for declaration[0] (position0); count 3 needs 48",
+        ),
+        (
+            list(
+                r#"{"file": "short.vb", "stride": 16}"#,
+                r#", "count": 1048576"#,
+            ),
+            "count 1048576 needs 16777216",
+        ),
+        (
+            list(
+                r#"{"file": "short.vb", "stride": 16}"#,
+                r#", "count": 4294967296"#,
+            ),
+            "count: 4294967296 is not a whole number from 0 to 1048576",
+        ),
+        (
+            list(r#"{"file": "short.vb", "stride": 0}"#, ""),
+            "streams[0].stride: 0",
+        ),
+        (
+            list(
+                r#"{"file": "short.vb", "stride": 16, "offset": 18446744073709551615}"#,
+                "",
+            ),
+            "streams[0].offset: 18446744073709551615 is not a whole number",
+        ),
+        (
+            list(r#"{"file": "/dev/zero", "stride": 16}"#, ""),
+            "a list holds at most 1048576 (give \"count\")",
+        ),
+    ];
+    for (text, says) in &cases {
+        write(d, "list.json", text);
+        let r = expect(d, &["run", "vs.vsh", "--vertices", "list.json"], 2, says);
+        assert!(r.stderr.contains("list.json"), "{}", r.stderr);
+    }
+    // The same list with a count the file holds runs.
+    write(
+        d,
+        "list.json",
+        &list(r#"{"file": "short.vb", "stride": 16}"#, ""),
+    );
+    expect(
+        d,
+        &["run", "vs.vsh", "--vertices", "list.json"],
+        0,
+        "2 vertices",
+    );
+}

@@ -21,6 +21,7 @@
 pub mod audit;
 pub mod bytecode;
 pub mod cost;
+pub mod decltype;
 pub mod decompile;
 pub mod diag;
 pub mod emu;

@@ -19,6 +19,12 @@
 //! precision holds (no NaN, no infinity, nothing past ±3.4e38); every
 //! vertex has every attribute; at most [`MAX_VERTICES`] vertices. Each
 //! refusal names the file and the field (`attributes.texcoord0[2]`).
+//!
+//! A third form is what a capture tool records of a draw: a vertex
+//! declaration and the raw bytes of its vertex buffers (`buffers.rs`),
+//! decoded by every D3DDECLTYPE's rule (`core::decltype`).
+
+mod buffers;
 
 use crate::core::cost::{self, Range, Verdict};
 use crate::core::diag::SourceFile;
@@ -49,28 +55,43 @@ pub fn read(path: &Path) -> Result<Vertices, String> {
         ));
     }
     let text = std::fs::read_to_string(path).map_err(|e| format!("{name}: {e}"))?;
-    parse(&text).map_err(|e| format!("{name}: {e}"))
+    let dir = path.parent().unwrap_or(Path::new("."));
+    parse_in(&text, dir).map_err(|e| format!("{name}: {e}"))
 }
 
-/// Parses a vertex list's text (see the module docs).
+/// Parses a vertex list's text (see the module docs); vertex-buffer files
+/// are relative to the working directory.
 pub fn parse(text: &str) -> Result<Vertices, String> {
+    parse_in(text, Path::new("."))
+}
+
+/// [`parse`], vertex-buffer files relative to `dir` (the list's own folder).
+pub fn parse_in(text: &str, dir: &Path) -> Result<Vertices, String> {
     let v: Value = serde_json::from_str(text).map_err(|e| format!("not JSON: {e}"))?;
     let Value::Object(top) = v else {
-        return Err("expected an object with \"attributes\" or \"vertices\"".into());
+        return Err(
+            "expected an object with \"attributes\", \"vertices\" or \"declaration\"".into(),
+        );
     };
+    const FIELDS: &str = "attributes, vertices, declaration, streams, count, description";
     if let Some(k) = top
         .keys()
-        .find(|k| !matches!(k.as_str(), "attributes" | "vertices" | "description"))
+        .find(|k| !FIELDS.split(", ").any(|f| f == k.as_str()))
     {
-        return Err(format!(
-            "unknown field `{k}` (fields: attributes, vertices, description)"
-        ));
+        return Err(format!("unknown field `{k}` (fields: {FIELDS})"));
     }
-    match (top.get("attributes"), top.get("vertices")) {
-        (Some(a), None) => columns(a),
-        (None, Some(v)) => rows(v),
-        (Some(_), Some(_)) => Err("give \"attributes\" or \"vertices\", not both".into()),
-        (None, None) => Err("expected \"attributes\" (columns) or \"vertices\" (rows)".into()),
+    let buffers = ["declaration", "streams", "count"]
+        .iter()
+        .any(|k| top.contains_key(*k));
+    match (top.get("attributes"), top.get("vertices"), buffers) {
+        (Some(a), None, false) => columns(a),
+        (None, Some(v), false) => rows(v),
+        (None, None, true) => buffers::read(&top, dir),
+        (None, None, false) => Err(
+            "expected \"attributes\" (columns), \"vertices\" (rows) or \"declaration\" with \"streams\" (vertex buffers)"
+                .into(),
+        ),
+        _ => Err("give one of \"attributes\", \"vertices\" or \"declaration\"".into()),
     }
 }
 

@@ -311,9 +311,11 @@ fn vertices(v: &serde_json::Value, dir: &Path, max_bytes: u64) -> Result<Vertice
             let bytes = crate::core::input::read_file(&path, "vertex list", max_bytes)
                 .map_err(|e| problem("vertices", e))?;
             let text = String::from_utf8(bytes).map_err(|_| problem("vertices", format!("{}: not UTF-8 text", path.display())))?;
-            crate::jobs::vertices::parse(&text).map_err(|e| problem("vertices", format!("{}: {e}", path.display())))?
+            // Vertex buffers named in the file are relative to the file.
+            let dir = path.parent().unwrap_or(dir);
+            crate::jobs::vertices::parse_in(&text, dir).map_err(|e| problem("vertices", format!("{}: {e}", path.display())))?
         }
-        serde_json::Value::Object(_) => crate::jobs::vertices::parse(&v.to_string()).map_err(|e| problem("vertices", e))?,
+        serde_json::Value::Object(_) => crate::jobs::vertices::parse_in(&v.to_string(), dir).map_err(|e| problem("vertices", e))?,
         _ => return Err(problem("vertices", "a vertex-list file name, or the list itself ({\"vertices\": […]} or {\"attributes\": {…}})")),
     };
     if parsed.count > MAX_VERTICES {
