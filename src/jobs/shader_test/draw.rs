@@ -9,6 +9,7 @@
 use super::parse::{self, Cursor};
 use super::state::{Element, Last, Mode, Op, State, Stop};
 use super::CompileJob;
+use crate::core::decltype::DeclType;
 use crate::core::emu::vertex::{Attribute, Vertices};
 use crate::core::emu::{Constants, SamplerState};
 use crate::core::image::TargetFormat;
@@ -641,7 +642,8 @@ fn textures(s: &State<'_>, declared: &[u32]) -> Result<(Vec<TextureData>, Vec<Bo
 
 /// The vertices a draw reads: each input-layout element from its vertex
 /// buffer at its offset (the elements of one slot packed in order), as
-/// D3DDECLTYPE_FLOAT1/2/4 expand them (missing y, z as 0, w as 1).
+/// D3DDECLTYPE_FLOAT1/2/4 expand them ([`DeclType::decode`]: missing y, z
+/// as 0, w as 1).
 fn vertices(s: &State<'_>, topology: Primitive, count: u32) -> Result<Vertices, Last> {
     let count = match topology {
         Primitive::TriangleList => count / 3 * 3,
@@ -652,10 +654,10 @@ fn vertices(s: &State<'_>, topology: Primitive, count: u32) -> Result<Vertices, 
     }
     let mut attributes: Vec<(Attribute, Vec<[f32; 4]>)> = Vec::new();
     for (i, e) in s.layout.iter().enumerate() {
-        let components = match e.format.as_str() {
-            "r32-float" => 1,
-            "r32g32-float" => 2,
-            "r32g32b32a32-float" => 4,
+        let decl = match e.format.as_str() {
+            "r32-float" => DeclType::Float1,
+            "r32g32-float" => DeclType::Float2,
+            "r32g32b32a32-float" => DeclType::Float4,
             f => {
                 return Err(Last::Unsupported(format!(
                     "vertex format {f} (vkd3d's Direct3D 9 runner stops there)"
@@ -687,19 +689,15 @@ fn vertices(s: &State<'_>, topology: Primitive, count: u32) -> Result<Vertices, 
         let data = s.vbs.get(&e.slot).map(Vec::as_slice).unwrap_or(&[]);
         let mut values = Vec::with_capacity(count);
         for v in 0..count {
-            let mut value = [0.0, 0.0, 0.0, 1.0];
-            for (k, c) in value.iter_mut().enumerate().take(components) {
-                let at = (v as u64 * u64::from(stride) + u64::from(offset) + 4 * k as u64) as usize;
-                let b = data.get(at..at + 4).ok_or_else(|| {
-                    Last::Failed(format!(
-                        "vertex buffer {} holds {} bytes, too few for {count} vertices",
-                        e.slot,
-                        data.len()
-                    ))
-                })?;
-                *c = f32::from_le_bytes(b.try_into().expect("four bytes"));
-            }
-            values.push(value);
+            let at = (v as u64 * u64::from(stride) + u64::from(offset)) as usize;
+            let bytes = data.get(at..at + decl.size()).ok_or_else(|| {
+                Last::Failed(format!(
+                    "vertex buffer {} holds {} bytes, too few for {count} vertices",
+                    e.slot,
+                    data.len()
+                ))
+            })?;
+            values.push(decl.decode(bytes));
         }
         attributes.push((
             Attribute {
