@@ -804,7 +804,6 @@ pub(crate) fn draw(
             Some(device) => {
                 let shader = &list.shaders[d.shader].loaded.shader;
                 let fog = fog_state(list, d, &stage)?;
-                gpu::refuse_fog(shader, fog.as_ref())?;
                 let context = gpu::Context {
                     viewport: &viewport,
                     clip_rect,
