@@ -17,8 +17,11 @@ use std::process::{Command, Output};
 /// vPos, the fan's flat colours, the alpha test's boundaries, blending, depth written from constant z,
 /// two targets, points, triangles filled as points, the dense grid's flat
 /// colours with its borders scissored, unwritten inputs' defaults, vertex
-/// texture fetch).
-const BIT_IDENTICAL: [&str; 15] = [
+/// texture fetch), and the lists of lines: the device shades the pixels
+/// the emulator's set-up gives a line, with the inputs it computes
+/// (`run/gpu_lines.rs`), so only the shader's instructions could differ,
+/// and these copy, fog by exact factors or take exact differences.
+const BIT_IDENTICAL: [&str; 18] = [
     "alpha_depth.json",
     "alpha_rounding.json",
     "blend.json",
@@ -29,7 +32,10 @@ const BIT_IDENTICAL: [&str; 15] = [
     "fill_points.json",
     "fill_rule.json",
     "grid.json",
+    "lines.json",
+    "lines_gpu.json",
     "mrt.json",
+    "point_sizes.json",
     "points.json",
     "unwritten.json",
     "vertex_fetch.json",
@@ -70,17 +76,6 @@ fn every_conformance_list_agrees_or_is_explained() {
         let Some((code, json, err)) = compare(list) else {
             return;
         };
-        // What the GPU backend does not draw yet is refused by name: lines
-        // and wireframe fills are drawn on the emulator only.
-        let refused = [
-            ("lines.json", "emulator only"),
-            ("point_sizes.json", "wireframe"),
-        ];
-        if let Some((_, word)) = refused.iter().find(|(l, _)| l == list) {
-            assert_eq!(code, Some(2), "{list}: {err}");
-            assert!(err.contains(word), "{list}: {err}");
-            continue;
-        }
         assert_eq!(code, Some(0), "{list}: {err}\n{json}");
         assert_eq!(json["explained"], true, "{list}: {json}");
         let steps = json["steps"].as_array().unwrap();
@@ -543,4 +538,49 @@ fn the_alpha_test_compares_at_each_targets_precision_on_both_backends() {
             "{passed} passed, {failed} failed"
         );
     }
+}
+
+#[test]
+fn a_line_whose_shader_reads_vpos_is_refused_on_the_device_by_name() {
+    // The device shades a line's pixels in a window of their own at (0, 0)
+    // (`run/gpu_lines.rs`), where vPos would read the window's position:
+    // such a line is refused with its reason, as bad input is (exit 2), and
+    // the emulator draws it.
+    let dir = repo().join("tests/draw_conformance");
+    let list = serde_json::json!({
+        "targets": [{"name": "t", "size": "8x4", "format": "A32B32G32R32F"}],
+        "steps": [{"draw": "t", "shader": dir.join("vpos.psh").to_str().unwrap(),
+            "geometry": {"primitive": "line_list",
+                "vertices": {"attributes": {"positiont0": [[1, 1, 0, 1], [6, 1, 0, 1]]}}}}]
+    });
+    let tmp = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("line_vpos");
+    std::fs::create_dir_all(&tmp).unwrap();
+    let path = tmp.join("line_vpos.json");
+    std::fs::write(&path, serde_json::to_string(&list).unwrap()).unwrap();
+    let run = |backend: &str| {
+        let out = tmp.join(backend);
+        let args = [
+            "render",
+            path.to_str().unwrap(),
+            "-q",
+            "--backend",
+            backend,
+            "-o",
+        ];
+        let mut args: Vec<&str> = args.to_vec();
+        args.push(out.to_str().unwrap());
+        ps30(&args, repo())
+    };
+    assert_eq!(run("emulator").status.code(), Some(0));
+    let o = run("gpu");
+    let err = stderr(&o);
+    if err.contains("no GPU adapter") && std::env::var_os("CI").is_none() {
+        eprintln!("a line reading vPos on the GPU: skipped: {err}");
+        return;
+    }
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("reads vPos is drawn on the emulator only"),
+        "{err}"
+    );
 }

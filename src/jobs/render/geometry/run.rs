@@ -12,6 +12,7 @@
 
 mod clipped;
 mod gpu;
+mod gpu_lines;
 mod one_pass;
 
 pub(crate) use gpu::coverage;

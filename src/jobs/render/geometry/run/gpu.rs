@@ -254,6 +254,9 @@ pub(super) fn shade_all(
     c: &Context,
     pass: &mut Pass,
 ) -> Result<Drawn, DrawFailure> {
+    if super::gpu_lines::draws_lines(g) {
+        return super::gpu_lines::shade_lines(device, shader, d, g, stage, c, pass);
+    }
     let (viewport, clip_rect, settings) = (c.viewport, c.clip_rect, c.settings);
     let draw = pixel_draw(d, stage, c.samplers, settings, (pass.width, c.height));
     let fog = fog_kind(c.fog.as_ref());
@@ -312,7 +315,7 @@ pub(super) fn shade_all(
 
 /// The pixel shader's draw for the device: constants, samplers and float
 /// rules of step `d` on a `size` target.
-fn pixel_draw<'s>(
+pub(super) fn pixel_draw<'s>(
     d: &DrawStep,
     stage: &Stage,
     samplers: &[(u32, emu::TextureLevels<'s>, emu::SamplerState)],
@@ -442,6 +445,12 @@ pub(crate) fn coverage(
     for pixels in &mut c.emulator {
         pixels.sort_unstable();
         pixels.dedup();
+    }
+    if super::gpu_lines::draws_lines(g) {
+        // The device shades the pixels the emulator's set-up gives a line
+        // (`gpu_lines.rs`): the same coverage by construction.
+        c.gpu = c.emulator.clone();
+        return Ok(c);
     }
     let backend = Backend::Gpu(device.clone());
     let stage = super::vertex_stage(list, g, d, float_rules, states, &backend)?;
