@@ -339,7 +339,8 @@ fn fog_on_the_device_is_within_its_derived_bound() {
         let dw = quotient_bound(w, 1.0, d, 1.0 + 1.0 / 24.0 + (x + 0.5) / 12.0);
         (1.0 - w / 4.0, dw / 4.0)
     };
-    let cases: [(&str, &Targets, &str, &dyn Fn(f64) -> (f64, f64)); 6] = [
+    type Want<'a> = dyn Fn(f64) -> (f64, f64) + 'a;
+    let cases: [(&str, &Targets, &str, &Want<'_>); 6] = [
         ("fog.json", &fog, "linear", &linear),
         ("fog.json", &fog, "exp", &exp),
         ("fog.json", &fog, "vertex", &vertex),

@@ -500,31 +500,7 @@ pub(super) fn entry_point(
             names.push(format!("v{}", i.register));
         }
     }
-    if let Entry::Geometry { flat, .. } = entry {
-        for (i, (slot, smooth, flat)) in iface
-            .inputs
-            .iter()
-            .zip(interface::geometry_locations(&iface.inputs, flat))
-        {
-            if let Some(l) = smooth {
-                args.push(("v", t.vec4, location(l, i.centroid, true)));
-                names.push(format!("v{slot}"));
-            }
-            if let Some(l) = flat {
-                args.push(("v", t.vec4, location(l, false, false)));
-                names.push(format!("v{slot}_flat"));
-            }
-        }
-    }
-    let fog = match entry {
-        Entry::Geometry { fog, flat, .. } => fog.map(|f| (f, flat)),
-        _ => None,
-    };
-    if let Some((interface::GeometryFog::Varying, flat)) = fog {
-        let l = interface::geometry_fog_location(&iface.inputs, flat);
-        args.push(("fog", t.vec4, location(l, false, true)));
-        names.push("fog".into());
-    }
+    let fog = geometry_arguments(entry, iface, t.vec4, (&mut args, &mut names));
     let tests = match entry {
         Entry::Geometry { tests, .. } => tests,
         _ => None,
@@ -595,7 +571,7 @@ pub(super) fn entry_point(
         Entry::Geometry { flat, .. } => geometry_inputs(cx, iface, &mut fb, flat),
     }
     // The fog's d, taken before the shader runs (it changes neither).
-    let fog = fog.map(|(f, _)| match f {
+    let fog = fog.map(|f| match f {
         interface::GeometryFog::Varying => {
             let at = args.iter().position(|(n, _, _)| *n == "fog").unwrap_or(0);
             let v = fb.add(Expression::FunctionArgument(at as u32));
@@ -633,6 +609,40 @@ pub(super) fn entry_point(
         task_payload: None,
         incoming_ray_payload: None,
     });
+}
+
+/// The arguments `Entry::Geometry` adds after position and facing: each
+/// input at its smooth and flat locations ([`interface::geometry_locations`]),
+/// then a fogged draw's interpolated fog value; returns the draw's fog.
+fn geometry_arguments(
+    entry: Entry,
+    iface: &Interface,
+    vec4: Handle<Type>,
+    (args, names): (&mut Vec<(&str, Handle<Type>, Binding)>, &mut Vec<String>),
+) -> Option<interface::GeometryFog> {
+    let Entry::Geometry { flat, fog, .. } = entry else {
+        return None;
+    };
+    for (i, (slot, smooth, flat)) in iface
+        .inputs
+        .iter()
+        .zip(interface::geometry_locations(&iface.inputs, flat))
+    {
+        if let Some(l) = smooth {
+            args.push(("v", vec4, location(l, i.centroid, true)));
+            names.push(format!("v{slot}"));
+        }
+        if let Some(l) = flat {
+            args.push(("v", vec4, location(l, false, false)));
+            names.push(format!("v{slot}_flat"));
+        }
+    }
+    if fog == Some(interface::GeometryFog::Varying) {
+        let l = interface::geometry_fog_location(&iface.inputs, flat);
+        args.push(("fog", vec4, location(l, false, true)));
+        names.push("fog".into());
+    }
+    fog
 }
 
 /// An input's value as the shader sees it: ps_2_x colours clamped to

@@ -254,9 +254,6 @@ pub(super) fn shade_all(
     c: &Context,
     pass: &mut Pass,
 ) -> Result<Drawn, DrawFailure> {
-    if super::gpu_lines::draws_lines(g) {
-        return super::gpu_lines::shade_lines(device, shader, d, g, stage, c, pass);
-    }
     let (viewport, clip_rect, settings) = (c.viewport, c.clip_rect, c.settings);
     let draw = pixel_draw(d, stage, c.samplers, settings, (pass.width, c.height));
     let fog = fog_kind(c.fog.as_ref());
@@ -446,7 +443,7 @@ pub(crate) fn coverage(
         pixels.sort_unstable();
         pixels.dedup();
     }
-    if super::gpu_lines::draws_lines(g) {
+    if super::draws_lines(g) {
         // The device shades the pixels the emulator's set-up gives a line
         // (`gpu_lines.rs`): the same coverage by construction.
         c.gpu = c.emulator.clone();

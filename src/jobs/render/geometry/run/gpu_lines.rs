@@ -22,11 +22,6 @@ use crate::core::raster::triangle::Window;
 use crate::jobs::render::geometry::Geometry;
 use crate::jobs::render::{DrawFailure, DrawStep};
 
-/// Whether `g` draws lines (line primitives, or wireframe triangles).
-pub(super) fn draws_lines(g: &Geometry) -> bool {
-    g.primitive.is_line() || g.state.fill == super::FillMode::Wireframe
-}
-
 /// Every line of `g` shaded on `device` and taken into `pass`.
 pub(super) fn shade_lines(
     device: &Gpu,
