@@ -611,6 +611,10 @@ pub(super) fn entry_point(
     });
 }
 
+/// An entry point's argument: its name (`v` for an input, named by
+/// register), type and binding.
+type Argument = (&'static str, Handle<Type>, Binding);
+
 /// The arguments `Entry::Geometry` adds after position and facing: each
 /// input at its smooth and flat locations ([`interface::geometry_locations`]),
 /// then a fogged draw's interpolated fog value; returns the draw's fog.
@@ -618,7 +622,7 @@ fn geometry_arguments(
     entry: Entry,
     iface: &Interface,
     vec4: Handle<Type>,
-    (args, names): (&mut Vec<(&str, Handle<Type>, Binding)>, &mut Vec<String>),
+    (args, names): (&mut Vec<Argument>, &mut Vec<String>),
 ) -> Option<interface::GeometryFog> {
     let Entry::Geometry { flat, fog, .. } = entry else {
         return None;
