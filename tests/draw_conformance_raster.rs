@@ -173,6 +173,51 @@ fn fill_modes_draw_edges_as_lines_and_vertices_as_points() {
 }
 
 #[test]
+fn point_fill_draws_the_clipped_polygons_vertices_as_points() {
+    // D3DFILL_POINT: each triangle's vertices as points (point_size 2: the
+    // square (X ± 1, Y ± 1), whose top-left rule covers centres X − 1 and
+    // X, Y − 1 and Y), after culling and clipping. "pre": the clockwise
+    // (1,1), (6,1), (1,5) with texcoords (1,0,0,1), (0,1,0,1), (0,0,1,1);
+    // the counter-clockwise (9,1), (9,5), (14,1) is culled (D3DCULL_CCW)
+    // and draws nothing.
+    let t = draw("fill_points.json");
+    let at =
+        |x: u32, y: u32, cx: u32, cy: u32| (cx - 1..=cx).contains(&x) && (cy - 1..=cy).contains(&y);
+    check(&t, "pre", |x, y| {
+        if at(x, y, 1, 1) {
+            [1.0, 0.0, 0.0, 1.0]
+        } else if at(x, y, 6, 1) {
+            [0.0, 1.0, 0.0, 1.0]
+        } else if at(x, y, 1, 5) {
+            [0.0, 0.0, 1.0, 1.0]
+        } else {
+            CLEAR
+        }
+    });
+    // "clip": clip-space A (−0.75, −0.5, 0.5, 1), C (−0.75, 1, 0.5, 1),
+    // B (1.5, −1, 1, 2) on a 16×8 viewport: on screen A (2, 6), C (2, 0),
+    // B (14, 6), clockwise. The plane −x + 0.25·w ≥ 0 is 1 at A and C and
+    // −1 at B, so it cuts A–B and C–B at their midpoints in clip space:
+    // (0.375, −0.75, 0.75, 1.5) → screen (10, 6), texcoord (0.5, 0, 0.5, 1);
+    // (0.375, 0, 0.75, 1.5) → (10, 4), texcoord (0, 0.5, 0.5, 1). Four
+    // points, A's and C's whole (C's square loses its row −1 to the target's
+    // edge only: a point is kept or dropped by its centre, never cut).
+    check(&t, "clip", |x, y| {
+        if at(x, y, 2, 6) {
+            [1.0, 0.0, 0.0, 1.0]
+        } else if at(x, y + 1, 2, 1) {
+            [0.0, 1.0, 0.0, 1.0]
+        } else if at(x, y, 10, 6) {
+            [0.5, 0.0, 0.5, 1.0]
+        } else if at(x, y, 10, 4) {
+            [0.0, 0.5, 0.5, 1.0]
+        } else {
+            CLEAR
+        }
+    });
+}
+
+#[test]
 fn every_stencil_op_from_five_from_255_and_from_0() {
     // D3DSTENCILOP with the reference 7 on stored 5 (rows 0–1), 255 (rows
     // 2–3, written by REPLACE) and 0 (rows 4–5), one op per column, applied
@@ -245,6 +290,11 @@ fn fog_blends_the_colour_after_a_ps_2_0_shader() {
     check(&t, "linear", linear);
     check(&t, "vertex", linear);
     check(&t, "ps3", |_, _| [1.0; 4]);
+    // The same linear table fog after a ps_2_0 shader that writes oDepth
+    // (t0.x = 0.25): fog reads the interpolated z ("Pixel Fog" computes
+    // it from the rasterised depth), so the colour is linear's, while the
+    // depth surface holds oDepth.
+    check(&draw("fog_odepth.json"), "t", linear);
     let (width, pixels) = &t["exp"];
     for (i, got) in pixels.iter().enumerate() {
         let x = i as u32 % width;

@@ -8,16 +8,20 @@
 //! message, as the other GPU tests are.
 
 use crate::common::bin::{ps30, repo, stderr};
-use crate::d3d9_conformance::render_file;
+use crate::d3d9_conformance::{render_file, Targets};
 use std::process::{Command, Output};
 
 /// Lists whose every draw's targets come out bit-identical: their values
 /// are constants, flat or pre-transformed positions where nothing is
 /// interpolated across a varying w with a rounding (fill rule, facing,
 /// vPos, the fan's flat colours, the alpha test's boundaries, blending, depth written from constant z,
-/// two targets, points, the dense grid's flat colours with its borders
-/// scissored, unwritten inputs' defaults, vertex texture fetch).
-const BIT_IDENTICAL: [&str; 14] = [
+/// two targets, points, triangles filled as points, the dense grid's flat
+/// colours with its borders scissored, unwritten inputs' defaults, vertex
+/// texture fetch), and the lists of lines: the device shades the pixels
+/// the emulator's set-up gives a line, with the inputs it computes
+/// (`run/gpu_lines.rs`), so only the shader's instructions could differ,
+/// and these copy, fog by exact factors or take exact differences.
+const BIT_IDENTICAL: [&str; 18] = [
     "alpha_depth.json",
     "alpha_rounding.json",
     "blend.json",
@@ -25,9 +29,13 @@ const BIT_IDENTICAL: [&str; 14] = [
     "depth_funcs.json",
     "face_cull.json",
     "fan_scissor.json",
+    "fill_points.json",
     "fill_rule.json",
     "grid.json",
+    "lines.json",
+    "lines_gpu.json",
     "mrt.json",
+    "point_sizes.json",
     "points.json",
     "unwritten.json",
     "vertex_fetch.json",
@@ -68,20 +76,6 @@ fn every_conformance_list_agrees_or_is_explained() {
         let Some((code, json, err)) = compare(list) else {
             return;
         };
-        // What the GPU backend does not draw yet is refused by name: lines,
-        // fill modes, vertex fog and table fog from w are drawn on the emulator only
-        // (fog.json's table fog is compared below).
-        let refused = [
-            ("fog.json", "vertex fog"),
-            ("fog_w.json", "fog from w"),
-            ("lines.json", "emulator only"),
-            ("point_sizes.json", "emulator only"),
-        ];
-        if let Some((_, word)) = refused.iter().find(|(l, _)| l == list) {
-            assert_eq!(code, Some(2), "{list}: {err}");
-            assert!(err.contains(word), "{list}: {err}");
-            continue;
-        }
         assert_eq!(code, Some(0), "{list}: {err}\n{json}");
         assert_eq!(json["explained"], true, "{list}: {json}");
         let steps = json["steps"].as_array().unwrap();
@@ -222,7 +216,8 @@ fn a_draw_in_one_pass_leaves_what_the_per_primitive_path_leaves() {
         "fan_scissor",
         "fill_rule",
     ])
-    .chain(&["mrt", "perspective", "pixel_centres", "points", "stencil"])
+    .chain(&["fill_points", "mrt", "perspective", "pixel_centres"])
+    .chain(&["points", "stencil"])
     .chain(&["vertex_fetch", "vertex_shaders", "vpos"])
     {
         let name = format!("{list}.json");
@@ -275,48 +270,102 @@ fn a_draw_in_one_pass_leaves_what_the_per_primitive_path_leaves() {
     assert!(!one_pass.contains(&"blend"), "{one_pass:?}");
 }
 
+/// The bound on a value the device interpolates as the quotient N/D of two
+/// planes (`interpolation_on_the_device_is_within_its_derived_bound` gives
+/// the reasoning), against the exact quotient `q`: `s_n` and `s_d` are
+/// the sums of the magnitudes of the planes' terms at the pixel centre
+/// (x + ½, y + ½), `d` the exact D. Each plane here carries 12 roundings
+/// of at most ε = 2⁻²⁴ of S: the 10 of its set-up and evaluation, and two
+/// more of its vertex values, a/w being 1/w (one rounding) times a (one
+/// more). A plane the device does not divide (z) has `d` = 1, `s_d` = 0.
+fn quotient_bound(q: f64, s_n: f64, d: f64, s_d: f64) -> f64 {
+    let eps = f64::powi(2.0, -24);
+    (12.0 * eps * s_n + q.abs() * 12.0 * eps * s_d) / d + eps * q.abs()
+}
+
 #[test]
-fn table_fog_on_the_device_agrees_or_is_explained() {
-    // fog.json's draws but its vertex-fog one (refused on the GPU by name),
-    // compared on both backends: the fog runs on the CPU from the device's
-    // rasterised z, so only the interpolation differs.
+fn fog_on_the_device_is_within_its_derived_bound() {
+    // Fog runs on the CPU on both backends (`core/raster/fog.rs`), from the
+    // d each pixel brings back from the device: the rasterised z for table
+    // fog from z (also after a shader that writes oDepth), the interpolated
+    // w or vertex fog factor otherwise. Every draw below is white fogged
+    // towards blue over an 8×2 target, so red = green = f, blue = alpha =
+    // 1, and f64 blending of f32 values gives f·1 + (1 − f)·0 = f exactly
+    // before its rounding to f32 (½ ulp ≤ ε·f). Pixel x's centre is at
+    // framebuffer x_f = x + ½, where the device evaluates its planes.
     let dir = repo().join("tests/draw_conformance");
-    let text = std::fs::read_to_string(dir.join("fog.json")).unwrap();
-    let mut list: serde_json::Value = serde_json::from_str(&text).unwrap();
-    let steps = list["steps"].as_array_mut().unwrap();
-    let before = steps.len();
-    steps.retain(|s| s["geometry"]["fog"]["mode"] != "vertex");
-    assert_eq!(steps.len() + 1, before);
-    for s in steps.iter_mut() {
-        if let Some(shader) = s["shader"].as_str() {
-            s["shader"] = dir.join(shader).to_str().unwrap().into();
-        }
-    }
-    let tmp = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("fog_table.json");
-    std::fs::write(&tmp, serde_json::to_string(&list).unwrap()).unwrap();
-    let o = ps30(
-        &["compare", "--list", tmp.to_str().unwrap(), "--json", "-q"],
-        repo(),
-    );
-    let err = stderr(&o);
-    if o.status.code() == Some(2)
-        && err.contains("no GPU adapter")
-        && std::env::var_os("CI").is_none()
-    {
-        eprintln!("table fog on the GPU: skipped: {err}");
+    let Some(fog) = render_file(&dir.join("fog.json"), "gpu") else {
         return;
-    }
-    let json: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap_or_default();
-    assert_eq!(o.status.code(), Some(0), "{err}\n{json}");
-    assert_eq!(json["explained"], true, "{json}");
-    for step in json["steps"].as_array().unwrap() {
-        assert_eq!(
-            step["comparison"]["explanation"]["finding"], false,
-            "{step}"
-        );
-        if let Some(cov) = step.get("coverage") {
-            assert_eq!(cov["beyond"], 0, "{step}");
+    };
+    let fog_w = render_file(&dir.join("fog_w.json"), "gpu").expect("a device opened");
+    let odepth = render_file(&dir.join("fog_odepth.json"), "gpu").expect("a device opened");
+    let eps = f64::powi(2.0, -24);
+    // z runs 0 → 1 over x = 0 → 8, linear on screen (pre-transformed):
+    // the plane −1/16 + x_f/8, S = 1/16 + x_f/8, not divided.
+    let z = |x: f64| {
+        (
+            x / 8.0,
+            quotient_bound(x / 8.0, 1.0 / 16.0 + (x + 0.5) / 8.0, 1.0, 0.0),
+        )
+    };
+    // Linear fog from 0 to 1: f = 1 − z, off by as much as z is.
+    let linear = |x: f64| {
+        let (z, dz) = z(x);
+        (1.0 - z, dz)
+    };
+    // EXP with density 2: f = e^(−2z); |Δf| ≤ 2·|Δz|·e^(2|Δz|)·f
+    let exp = |x: f64| {
+        let (z, dz) = z(x);
+        let f = (-2.0 * z).exp();
+        // (and e^x in f64 within an f64 ulp, 2⁻⁵²·f).
+        (f, 2.0 * dz * (2.0 * dz).exp() * f + f64::powi(2.0, -52) * f)
+    };
+    // Vertex fog, 1 at x = 0 and 0 at x = 8 with w = 1: N = f/w is the
+    // plane 1 + 1/16 − x_f/8 (S = 1 + 1/16 + x_f/8), D = 1/w the plane 1
+    // (S = 1).
+    let vertex = |x: f64| {
+        let f = 1.0 - x / 8.0;
+        (
+            f,
+            quotient_bound(f, 1.0 + 1.0 / 16.0 + (x + 0.5) / 8.0, 1.0, 1.0),
+        )
+    };
+    // Table fog from w, w = 1 at x = 0 and 3 at x = 8: N = w/w is the
+    // plane 1 (S = 1), D = 1/w the plane 1 + 1/24 − x_f/12 (S = 1 + 1/24 +
+    // x_f/12); linear fog from 0 to 4: f = 1 − w/4, off by |Δw|/4.
+    let from_w = |x: f64| {
+        let d = 1.0 - x / 12.0;
+        let w = 1.0 / d;
+        let dw = quotient_bound(w, 1.0, d, 1.0 + 1.0 / 24.0 + (x + 0.5) / 12.0);
+        (1.0 - w / 4.0, dw / 4.0)
+    };
+    type Want<'a> = dyn Fn(f64) -> (f64, f64) + 'a;
+    let cases: [(&str, &Targets, &str, &Want<'_>); 6] = [
+        ("fog.json", &fog, "linear", &linear),
+        ("fog.json", &fog, "exp", &exp),
+        ("fog.json", &fog, "vertex", &vertex),
+        ("fog_w.json", &fog_w, "w", &from_w),
+        ("fog_w.json", &fog_w, "spec", &vertex),
+        ("fog_odepth.json", &odepth, "t", &linear),
+    ];
+    for (list, targets, name, want) in cases {
+        let (width, pixels) = &targets[name];
+        let mut worst = 0.0f64;
+        for (i, got) in pixels.iter().enumerate() {
+            let x = f64::from(i as u32 % width);
+            let (f, bound) = want(x);
+            let bound = bound + eps * f;
+            for c in 0..2 {
+                let err = (f64::from(got[c]) - f).abs();
+                worst = worst.max(err / bound);
+                assert!(
+                    err <= bound,
+                    "{list} {name} ({x}): {got:?} want {f} (|Δ| {err:e}, bound {bound:e})"
+                );
+            }
+            assert_eq!((got[2], got[3]), (1.0, 1.0), "{list} {name} ({x})");
         }
+        eprintln!("{list} {name} on the device: largest |Δ|/bound {worst:.3}");
     }
 }
 
@@ -490,4 +539,49 @@ fn the_alpha_test_compares_at_each_targets_precision_on_both_backends() {
             "{passed} passed, {failed} failed"
         );
     }
+}
+
+#[test]
+fn a_line_whose_shader_reads_vpos_is_refused_on_the_device_by_name() {
+    // The device shades a line's pixels in a window of their own at (0, 0)
+    // (`run/gpu_lines.rs`), where vPos would read the window's position:
+    // such a line is refused with its reason, as bad input is (exit 2), and
+    // the emulator draws it.
+    let dir = repo().join("tests/draw_conformance");
+    let list = serde_json::json!({
+        "targets": [{"name": "t", "size": "8x4", "format": "A32B32G32R32F"}],
+        "steps": [{"draw": "t", "shader": dir.join("vpos.psh").to_str().unwrap(),
+            "geometry": {"primitive": "line_list",
+                "vertices": {"attributes": {"positiont0": [[1, 1, 0, 1], [6, 1, 0, 1]]}}}}]
+    });
+    let tmp = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("line_vpos");
+    std::fs::create_dir_all(&tmp).unwrap();
+    let path = tmp.join("line_vpos.json");
+    std::fs::write(&path, serde_json::to_string(&list).unwrap()).unwrap();
+    let run = |backend: &str| {
+        let out = tmp.join(backend);
+        let args = [
+            "render",
+            path.to_str().unwrap(),
+            "-q",
+            "--backend",
+            backend,
+            "-o",
+        ];
+        let mut args: Vec<&str> = args.to_vec();
+        args.push(out.to_str().unwrap());
+        ps30(&args, repo())
+    };
+    assert_eq!(run("emulator").status.code(), Some(0));
+    let o = run("gpu");
+    let err = stderr(&o);
+    if err.contains("no GPU adapter") && std::env::var_os("CI").is_none() {
+        eprintln!("a line reading vPos on the GPU: skipped: {err}");
+        return;
+    }
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("reads vPos is drawn on the emulator only"),
+        "{err}"
+    );
 }

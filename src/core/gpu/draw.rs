@@ -1134,8 +1134,9 @@ pub(super) fn bind_sampler(
     Ok((view, gpu.device.create_sampler(&mapped.descriptor)))
 }
 
-/// The inputs, evaluated per pixel with the emulator's formula, one layer
-/// per declared `v#` in register order; under the `hardware` rules with
+/// The inputs, evaluated per pixel with the emulator's formula (or, for
+/// a draw of one primitive's pixels, as [`Draw::pixels`] gives them), one
+/// layer per declared `v#` in register order; under the `hardware` rules with
 /// denormals flushed, as the emulator reads them (the shader then reads
 /// them as they are: [`specialisation`]).
 fn input_texture(
@@ -1175,6 +1176,26 @@ fn input_texture(
                 .unwrap_or_default()
         })
         .collect();
+    if let Some(p) = draw.pixels {
+        // A primitive's inputs as the emulator's set-up computed them, at
+        // every pixel of its quad grid (`emu::PixelInputs`).
+        let grid = emu::PixelInputs::grid_width(w);
+        for (layer, input) in iface.inputs.iter().enumerate() {
+            let given = p.values.iter().find(|(v, _)| *v == input.register);
+            let mut texels = vec![[0.0f32; 4]; w as usize * h as usize];
+            for (i, t) in texels.iter_mut().enumerate() {
+                let (x, y) = (i % w as usize, i / w as usize);
+                let v = given.and_then(|(_, v)| v.get(y * grid + x)).copied();
+                *t = v.unwrap_or_default();
+                if draw.float_rules.flush_denormals() {
+                    *t = t.map(crate::core::float_rules::flush);
+                }
+            }
+            texture::write_texels(gpu, &texture, 0, layer as u32, (w, h, 1), &texels)?;
+        }
+        phases::mark("draw: a primitive's inputs uploaded");
+        return Ok(texture);
+    }
     if large && inputs::fill(gpu, &texture, &values, (w, h))? {
         phases::mark("draw: inputs made on the device");
         return Ok(texture);

@@ -50,6 +50,7 @@ use crate::core::emu::Draw;
 use crate::core::ir::Shader;
 use crate::core::phases;
 use crate::core::raster::{Cull, Face, Rect, Viewport};
+use crate::core::translate::interface::GeometryFog;
 use crate::core::translate::{self, interface, Entry};
 use std::borrow::Cow;
 
@@ -82,6 +83,11 @@ pub struct GeometryDraw<'d> {
     pub cull: Cull,
     /// User clip planes in clip space (a, b, c, d).
     pub clip_planes: Vec<[f32; 4]>,
+    /// For a fogged draw, what each pixel brings back for the fog
+    /// ([`ShadedPrimitive::fog`]); with [`GeometryFog::Varying`] every
+    /// vertex's `values` end with one more, its x the fog's d at the
+    /// vertex.
+    pub fog: Option<GeometryFog>,
 }
 
 /// One primitive's pixels as the device shaded them.
@@ -95,6 +101,9 @@ pub struct ShadedPrimitive {
     pub depth: Vec<f32>,
     /// Each `oC#` the shader writes (`None` otherwise), per pixel.
     pub color: Vec<Option<Vec<[f32; 4]>>>,
+    /// For a fogged draw, each pixel's d of the fog (the interpolated
+    /// factor or w, or the rasterised z); empty otherwise.
+    pub fog: Vec<f32>,
 }
 
 /// The most bytes of read-back one submission holds: the primitives are
@@ -121,7 +130,7 @@ pub fn draw_geometry(
         layout,
         bindings,
     } = fragment_stage(gpu, shader, g, None)?;
-    let formats = attachment_formats(&iface);
+    let formats = attachment_formats(&iface, g.fog.is_some());
     let targets: Vec<Option<wgpu::ColorTargetState>> =
         formats.iter().map(|f| f.map(Into::into)).collect();
     let stages = Stages {
@@ -199,6 +208,7 @@ pub(super) fn fragment_stage(
     spec.set_inputs_flushed(false);
     let entry = Entry::Geometry {
         flat: g.flat,
+        fog: if tests.is_none() { g.fog } else { None },
         tests,
     };
     let t = translate::translate_specialised(shader, draw.float_rules, entry, &spec)
@@ -224,9 +234,12 @@ pub(super) struct Resources<'r> {
 }
 
 /// The colour attachments by location: `oC#` unrounded, the flags, the
-/// depth.
-fn attachment_formats(iface: &translate::Interface) -> Vec<Option<wgpu::TextureFormat>> {
+/// depth, and for a fogged draw the fog's d.
+fn attachment_formats(iface: &translate::Interface, fog: bool) -> Vec<Option<wgpu::TextureFormat>> {
     let mut formats = vec![None; 6];
+    if fog {
+        formats.push(Some(wgpu::TextureFormat::R32Float));
+    }
     for &k in &iface.outputs {
         formats[k as usize] = Some(wgpu::TextureFormat::Rgba32Float);
     }
@@ -257,6 +270,8 @@ fn vertex_stage(g: &GeometryDraw, iface: &translate::Interface) -> naga::Module 
             (1.0 / vw, 1.0 / vh)
         },
         clip_planes: &g.clip_planes,
+        fog: (g.fog == Some(GeometryFog::Varying))
+            .then(|| interface::geometry_fog_location(&iface.inputs, g.flat)),
     })
 }
 
@@ -301,14 +316,15 @@ pub(super) fn pipeline(
         bind_group_layouts: &layouts.iter().map(|l| Some(*l)).collect::<Vec<_>>(),
         immediate_size: 0,
     });
-    let attributes: Vec<wgpu::VertexAttribute> = (0..=g.slots.len() as u32)
+    let values = g.slots.len() as u32 + u32::from(g.fog == Some(GeometryFog::Varying));
+    let attributes: Vec<wgpu::VertexAttribute> = (0..=values)
         .map(|k| wgpu::VertexAttribute {
             format: wgpu::VertexFormat::Float32x4,
             offset: 16 * u64::from(k),
             shader_location: k,
         })
         .collect();
-    let stride = 16 * (1 + g.slots.len() as u64);
+    let stride = 16 * (1 + u64::from(values));
     let cull_mode = match (g.cull.drops(Face::Front), g.cull.drops(Face::Back)) {
         (true, _) => Some(wgpu::Face::Front),
         (_, true) => Some(wgpu::Face::Back),
@@ -530,6 +546,7 @@ fn decode(
     };
     let flags_at = interface::GEOMETRY_FLAGS_LOCATION as usize;
     let depth_at = interface::GEOMETRY_DEPTH_LOCATION as usize;
+    let fog_at = interface::GEOMETRY_FOG_LOCATION as usize;
     let mut out = Vec::with_capacity(count);
     for p in 0..count {
         let mut s = ShadedPrimitive {
@@ -546,6 +563,9 @@ fn decode(
                 s.killed.push(flags & 2 != 0);
                 s.depth
                     .push(f32::from_bits(word(texel(depth_at, p, x, y), 0)));
+                if g.fog.is_some() {
+                    s.fog.push(f32::from_bits(word(texel(fog_at, p, x, y), 0)));
+                }
                 for (k, c) in s.color.iter_mut().enumerate() {
                     if let Some(c) = c {
                         let b = texel(k, p, x, y);

@@ -299,6 +299,9 @@ pub struct GeometryStage<'a> {
     pub offset: (f32, f32),
     /// The user clip planes, each dotted with the clip-space position.
     pub clip_planes: &'a [[f32; 4]],
+    /// For a fog the device interpolates, its location: the attribute
+    /// after the slots' is handed on there with perspective.
+    pub fog: Option<u32>,
 }
 
 /// The vertex stage of a draw of geometry. For a 128×64 target of
@@ -350,6 +353,15 @@ pub fn geometry_vertex(stage: &GeometryStage) -> Module {
         let flat = flat.map(|l| member(format!("v{register}_flat"), l, false));
         outputs.push((register, smooth, flat));
     }
+    let fog = stage.fog.map(|l| {
+        members.push(StructMember {
+            name: Some("fog".into()),
+            ty: vec4,
+            binding: Some(super::module::location(l, false, true)),
+            offset: 16 * members.len() as u32,
+        });
+        members.len() as u32 - 1
+    });
     let planes = stage.clip_planes.len() as u32;
     let clip = (planes > 0).then(|| {
         let array = super::module::array(&mut m, f32_ty, planes, 4);
@@ -380,7 +392,8 @@ pub fn geometry_vertex(stage: &GeometryStage) -> Module {
         }),
     };
     fb.f.arguments.push(attribute("p".into(), 0));
-    for k in 0..stage.slots.len() as u32 {
+    let attributes = stage.slots.len() as u32 + u32::from(fog.is_some());
+    for k in 0..attributes {
         fb.f.arguments.push(attribute(format!("a{k}"), k + 1));
     }
     let o = fb.local("o", out_ty);
@@ -433,6 +446,11 @@ pub fn geometry_vertex(stage: &GeometryStage) -> Module {
             let field = fb.index(o, member);
             fb.store(field, value);
         }
+    }
+    if let Some(member) = fog {
+        let value = fb.add(Expression::FunctionArgument(attributes));
+        let field = fb.index(o, member);
+        fb.store(field, value);
     }
     let value = fb.load(o);
     fb.push(Statement::Return { value: Some(value) });
@@ -572,6 +590,7 @@ mod tests {
             screen: Some((2.0 / 128.0, 2.0 / 64.0)),
             offset: (1.0 / 128.0, 1.0 / 64.0),
             clip_planes: &[[1.0, 0.0, 0.0, 0.5]],
+            fog: None,
         });
         let built = [
             full_screen_triangle(),

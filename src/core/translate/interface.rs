@@ -59,6 +59,36 @@ pub const GEOMETRY_FLAGS_LOCATION: u32 = 4;
 /// shader writes it, else the rasterised depth (`@builtin(position).z`),
 /// read back unclamped for the depth test done with the emulator's.
 pub const GEOMETRY_DEPTH_LOCATION: u32 = 5;
+/// Location of the geometry entry point's fog output, where the draw is
+/// fogged ([`GeometryFog`]): the depth or factor fixed-function fog reads
+/// at the pixel, for the fog applied on the CPU after read-back.
+pub const GEOMETRY_FOG_LOCATION: u32 = 6;
+
+/// What the geometry entry point writes at [`GEOMETRY_FOG_LOCATION`] for
+/// a fogged draw: the d of `core::raster::fog::Fog::factor`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum GeometryFog {
+    /// x of one more input, interpolated with perspective, that the
+    /// vertex stage hands on at [`geometry_fog_location`]: vertex fog's
+    /// factor, or table fog's w (w interpolated with perspective is the
+    /// pixel's own w).
+    Varying,
+    /// The rasterised z (`@builtin(position).z`), which table fog reads
+    /// even where the shader writes `oDepth`.
+    Depth,
+}
+
+/// The input location of [`GeometryFog::Varying`]: the one after every
+/// location [`geometry_locations`] gives.
+pub fn geometry_fog_location(inputs: &[Input], flat: u64) -> u32 {
+    geometry_locations(inputs, flat)
+        .iter()
+        .flat_map(|&(_, smooth, flat)| [smooth, flat])
+        .flatten()
+        .map(|l| l + 1)
+        .max()
+        .unwrap_or(0)
+}
 
 /// Where the geometry entry point (`ps30_geometry`) reads each input:
 /// `(slot, smooth, flat)`, the locations its interpolated and its flat

@@ -429,6 +429,9 @@ pub enum Entry {
         /// counted per triangle, and `@location(4)` holds 1.0 (no depth at
         /// `@location(5)`).
         tests: Option<super::device_tests::DeviceTests>,
+        /// `Some` for a fogged draw: the fog's depth or factor at
+        /// [`interface::GEOMETRY_FOG_LOCATION`] (never with `tests`).
+        fog: Option<interface::GeometryFog>,
     },
 }
 
@@ -497,22 +500,7 @@ pub(super) fn entry_point(
             names.push(format!("v{}", i.register));
         }
     }
-    if let Entry::Geometry { flat, .. } = entry {
-        for (i, (slot, smooth, flat)) in iface
-            .inputs
-            .iter()
-            .zip(interface::geometry_locations(&iface.inputs, flat))
-        {
-            if let Some(l) = smooth {
-                args.push(("v", t.vec4, location(l, i.centroid, true)));
-                names.push(format!("v{slot}"));
-            }
-            if let Some(l) = flat {
-                args.push(("v", t.vec4, location(l, false, false)));
-                names.push(format!("v{slot}_flat"));
-            }
-        }
-    }
+    let fog = geometry_arguments(entry, iface, t.vec4, (&mut args, &mut names));
     let tests = match entry {
         Entry::Geometry { tests, .. } => tests,
         _ => None,
@@ -582,6 +570,15 @@ pub(super) fn entry_point(
         Entry::Draw => draw_inputs(m, cx, iface, &mut fb, centre),
         Entry::Geometry { flat, .. } => geometry_inputs(cx, iface, &mut fb, flat),
     }
+    // The fog's d, taken before the shader runs (it changes neither).
+    let fog = fog.map(|f| match f {
+        interface::GeometryFog::Varying => {
+            let at = args.iter().position(|(n, _, _)| *n == "fog").unwrap_or(0);
+            let v = fb.add(Expression::FunctionArgument(at as u32));
+            fb.index(v, 0)
+        }
+        interface::GeometryFog::Depth => fb.index(position, 2),
+    });
 
     fb.push(Statement::Call {
         function: main,
@@ -598,7 +595,7 @@ pub(super) fn entry_point(
         super::device_tests::count_and_kill(&mut fb, counts, primitive, killed, alpha);
     }
 
-    let result = outputs(m, cx, iface, &mut fb, entry, position);
+    let result = outputs(m, cx, iface, &mut fb, entry, (position, fog));
     fb.f.result = result.map(|ty| naga::FunctionResult { ty, binding: None });
     let function = fb.finish();
     m.entry_points.push(naga::EntryPoint {
@@ -612,6 +609,44 @@ pub(super) fn entry_point(
         task_payload: None,
         incoming_ray_payload: None,
     });
+}
+
+/// An entry point's argument: its name (`v` for an input, named by
+/// register), type and binding.
+type Argument = (&'static str, Handle<Type>, Binding);
+
+/// The arguments `Entry::Geometry` adds after position and facing: each
+/// input at its smooth and flat locations ([`interface::geometry_locations`]),
+/// then a fogged draw's interpolated fog value; returns the draw's fog.
+fn geometry_arguments(
+    entry: Entry,
+    iface: &Interface,
+    vec4: Handle<Type>,
+    (args, names): (&mut Vec<Argument>, &mut Vec<String>),
+) -> Option<interface::GeometryFog> {
+    let Entry::Geometry { flat, fog, .. } = entry else {
+        return None;
+    };
+    for (i, (slot, smooth, flat)) in iface
+        .inputs
+        .iter()
+        .zip(interface::geometry_locations(&iface.inputs, flat))
+    {
+        if let Some(l) = smooth {
+            args.push(("v", vec4, location(l, i.centroid, true)));
+            names.push(format!("v{slot}"));
+        }
+        if let Some(l) = flat {
+            args.push(("v", vec4, location(l, false, false)));
+            names.push(format!("v{slot}_flat"));
+        }
+    }
+    if fog == Some(interface::GeometryFog::Varying) {
+        let l = interface::geometry_fog_location(&iface.inputs, flat);
+        args.push(("fog", vec4, location(l, false, true)));
+        names.push("fog".into());
+    }
+    fog
 }
 
 /// An input's value as the shader sees it: ps_2_x colours clamped to
@@ -713,14 +748,17 @@ fn draw_inputs(m: &mut Module, cx: &Ctx, iface: &Interface, fb: &mut Fb, centre:
 
 /// The entry point's result: a struct of the written outputs (and the
 /// texkill flag or discard). Returns its type, if any output exists.
+/// `at` is the fragment's position and, for a fogged draw of geometry, the
+/// fog's d.
 fn outputs(
     m: &mut Module,
     cx: &Ctx,
     iface: &Interface,
     fb: &mut Fb,
     entry: Entry,
-    position: Expr,
+    at: (Expr, Option<Expr>),
 ) -> Option<Handle<Type>> {
+    let (position, fog) = at;
     let t = &cx.t;
     let mut members = Vec::new();
     let mut values = Vec::new();
@@ -783,6 +821,16 @@ fn outputs(
             false => fb.index(position, 2),
         };
         values.push(depth);
+        if let Some(d) = fog {
+            members.push(StructMember {
+                name: Some("fog".into()),
+                ty: t.f32,
+                binding: Some(output(interface::GEOMETRY_FOG_LOCATION)),
+                offset,
+            });
+            offset += 4;
+            values.push(d);
+        }
     } else if iface.depth {
         members.push(StructMember {
             name: Some("oDepth".into()),

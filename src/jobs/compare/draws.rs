@@ -311,6 +311,11 @@ pub fn compare_list(
             filtering: Vec::new(),
             explanation: None,
         };
+        let profile = list.shaders[d.shader].loaded.shader.program().profile;
+        let fog = d.geometry.as_ref().and_then(|g| g.state.fog);
+        if let Some(f) = fog.filter(|_| profile != crate::core::profile::Profile::Ps3_0) {
+            comparison.filtering.push(fog_clause(&f));
+        }
         comparison.explanation = Some(explain_step(&mut comparison, coverage.as_ref(), probes));
         steps.push(StepComparison {
             index: *index,
@@ -319,6 +324,20 @@ pub fn compare_list(
         });
     }
     Ok(ListComparison { steps })
+}
+
+/// Why a fogged draw's colours may differ: the fog itself runs on the CPU
+/// on both backends, from a d that each backend's rasteriser gives.
+fn fog_clause(f: &crate::core::raster::fog::Fog) -> String {
+    use crate::core::raster::fog::FogMode;
+    let d = match (f.mode, f.w) {
+        (FogMode::Vertex, _) => "vertex fog's factor, interpolated with perspective",
+        (_, true) => "table fog's w, interpolated with perspective",
+        _ => "table fog's z, the rasterised depth (not oDepth)",
+    };
+    format!(
+        "the fog is blended on the CPU on both backends from {d}, which the device interpolates in f32 and the emulator in f64, rounded once"
+    )
 }
 
 /// A step's explanation: the draw's ([`explain::draw`]), with

@@ -12,6 +12,7 @@
 
 mod clipped;
 mod gpu;
+mod gpu_lines;
 mod one_pass;
 
 pub(crate) use gpu::coverage;
@@ -804,7 +805,6 @@ pub(crate) fn draw(
             Some(device) => {
                 let shader = &list.shaders[d.shader].loaded.shader;
                 let fog = fog_state(list, d, &stage)?;
-                gpu::refuse_fog(shader, fog.as_ref())?;
                 let context = gpu::Context {
                     viewport: &viewport,
                     clip_rect,
@@ -813,7 +813,12 @@ pub(crate) fn draw(
                     height,
                     fog,
                 };
-                gpu::shade_all(device, shader, d, g, &stage, &context, &mut pass)?
+                match draws_lines(g) {
+                    true => {
+                        gpu_lines::shade_lines(device, shader, d, g, &stage, &context, &mut pass)?
+                    }
+                    false => gpu::shade_all(device, shader, d, g, &stage, &context, &mut pass)?,
+                }
             }
             None => shade_all(
                 list, compiled, d, &stage, &tris, clip_rect, &samplers, settings, limits, &mut pass,
@@ -839,6 +844,13 @@ pub(crate) fn draw(
     let (mut drawn, merged, _) = result?;
     drawn.merged = merged;
     Ok(drawn)
+}
+
+/// Whether `g` draws lines (line primitives, or wireframe triangles),
+/// which the GPU backend shades through the emulator's set-up
+/// (`run/gpu_lines.rs`).
+fn draws_lines(g: &Geometry) -> bool {
+    g.primitive.is_line() || g.state.fill == FillMode::Wireframe
 }
 
 /// The pixels a draw may write: its viewport, the scissor rectangle and the

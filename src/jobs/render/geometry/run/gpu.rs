@@ -7,15 +7,16 @@
 //! path as the emulator's triangles — `texkill`, the alpha test, the depth
 //! test, the output merger — in drawing order.
 
-use super::{Drawn, Pass, Stage};
+use super::{Drawn, FillMode, Pass, Stage};
 use crate::core::emu::{self, DrawOutput, PixelInputs};
 use crate::core::gpu::{self, GeometryDraw, Gpu, ShadedPrimitive};
 use crate::core::ir::Shader;
 use crate::core::merge::MergeStats;
-use crate::core::raster::clip::{self, VIEW_VOLUME};
+use crate::core::raster::clip::{self, GUARD_BAND, VIEW_VOLUME};
 use crate::core::raster::fog::{Fog, FogMode};
 use crate::core::raster::triangle::Window;
 use crate::core::raster::{self, Face, Primitive, Rect, Viewport};
+use crate::core::translate::interface::GeometryFog;
 use crate::jobs::backend::Backend;
 use crate::jobs::render::geometry::Geometry;
 use crate::jobs::render::{DrawFailure, DrawList, DrawStep, Settings, TargetState};
@@ -32,36 +33,32 @@ struct Setup {
     faces: Vec<Face>,
 }
 
-/// Assembles `g`'s primitives over `stage`'s vertices.
-fn setup(g: &Geometry, stage: &Stage, viewport: &Viewport) -> Result<Setup, String> {
-    if !matches!(
-        g.primitive,
-        Primitive::PointList
-            | Primitive::TriangleList
-            | Primitive::TriangleStrip
-            | Primitive::TriangleFan
-    ) {
+/// Assembles `g`'s primitives over `stage`'s vertices; with `fog`, each
+/// vertex's values end with its fog column (vertex fog's factor or table
+/// fog's w in x), which the device interpolates as it does the inputs.
+/// A triangle filled as points (D3DFILL_POINT) is clipped and culled here
+/// by the emulator's own set-up, and each vertex of what is left becomes a
+/// point, as a point list's vertex does.
+fn setup(g: &Geometry, stage: &Stage, viewport: &Viewport, fog: bool) -> Result<Setup, String> {
+    if g.primitive.is_line() {
         return Err(format!(
             "the GPU backend draws points and triangles; {:?} is drawn on the emulator only",
             g.primitive
         ));
     }
-    if g.state.fill != super::FillMode::Solid {
+    if g.state.fill == FillMode::Wireframe {
         return Err(
-            "the GPU backend draws solid fills; fill_mode wireframe and point are drawn on the emulator only"
+            "the GPU backend draws solid and point fills; fill_mode wireframe (triangles' edges as lines) is drawn on the emulator only"
                 .into(),
         );
     }
     let narrow = |v: &[f64; 4]| v.map(|x| x as f32);
-    // The stage's values end with each vertex's own point size, which
-    // sizes points here and is no input of the pixel shader.
-    let inputs = stage.slots.len();
     let mut s = Setup {
         positions: stage.positions.iter().map(narrow).collect(),
         values: stage
             .values
             .iter()
-            .map(|v| v[..inputs].iter().map(narrow).collect())
+            .map(|v| carried(stage, v, fog))
             .collect(),
         primitives: Vec::new(),
         faces: Vec::new(),
@@ -71,32 +68,47 @@ fn setup(g: &Geometry, stage: &Stage, viewport: &Viewport) -> Result<Setup, Stri
         None => (0..stage.positions.len()).collect(),
     };
     let planes: Vec<[f64; 4]> = VIEW_VOLUME.iter().chain(&g.clip_planes).copied().collect();
+    let guard_band: Vec<[f64; 4]> = GUARD_BAND.iter().chain(&g.clip_planes).copied().collect();
+    let emulator = super::Setup {
+        g,
+        stage,
+        viewport,
+        limit: viewport.rect(),
+    };
+    let vertex = |i: u32| clip::ClipVertex {
+        pos: stage.positions[i as usize],
+        values: stage.values[i as usize].clone(),
+    };
     for prim in raster::assemble(g.primitive, order.len())? {
         let [a, b, c] = prim.corners.map(|i| order[i] as u32);
         if g.primitive == Primitive::PointList {
             let p = stage.positions[a as usize];
-            if !stage.transformed && !clip::inside(&planes, &p) {
-                // Not drawn; kept in place so that primitives keep their
-                // numbers.
-                s.primitives.push(Vec::new());
-                s.faces.push(Face::Front);
-                continue;
-            }
-            let first = s.positions.len() as u32;
-            let at = clip::ClipVertex {
-                pos: p,
-                values: stage.values[a as usize].clone(),
+            // A point outside the view volume is not drawn; it keeps its
+            // place so that primitives keep their numbers.
+            let drawn = stage.transformed || clip::inside(&planes, &p);
+            let points = if drawn {
+                s.point(g, stage, viewport, &vertex(a), fog)
+            } else {
+                Vec::new()
             };
-            let size = super::point_size(g, stage, viewport, &at);
-            let corners = [(-1.0, -1.0), (1.0, -1.0), (-1.0, 1.0), (1.0, 1.0)];
-            for (k, (dx, dy)) in corners.into_iter().enumerate() {
-                s.positions
-                    .push(point_corner(p, dx, dy, size, stage.transformed, viewport));
-                let values = super::point_values(g, stage, &at.values, k);
-                s.values.push(values[..inputs].iter().map(narrow).collect());
+            s.primitives.push(points);
+            s.faces.push(Face::Front);
+            continue;
+        }
+        if g.state.fill == FillMode::Point {
+            let corners = vec![vertex(a), vertex(b), vertex(c)];
+            let polygon = match stage.transformed {
+                true => corners,
+                false => clip::clip(corners, &guard_band),
+            };
+            // The emulator's set-up draws nothing of a culled or
+            // degenerate polygon.
+            let drawn = !emulator.polygon(polygon.clone()).is_empty();
+            let mut points = Vec::new();
+            for v in polygon.iter().filter(|_| drawn) {
+                points.extend(s.point(g, stage, viewport, v, fog));
             }
-            let [tl, tr, bl, br] = [first, first + 1, first + 2, first + 3];
-            s.primitives.push(vec![[tl, tr, bl], [tr, br, bl]]);
+            s.primitives.push(points);
             s.faces.push(Face::Front);
             continue;
         }
@@ -110,6 +122,52 @@ fn setup(g: &Geometry, stage: &Stage, viewport: &Viewport) -> Result<Setup, Stri
         s.faces.push(face(stage, [a, b, c]));
     }
     Ok(s)
+}
+
+/// A vertex's values as the device takes them: the pixel shader's inputs
+/// and, with `fog`, the fog column. The stage's values end with each
+/// vertex's own point size, which sizes points here and is no input of
+/// the pixel shader, and its fog column.
+fn carried(stage: &Stage, v: &[[f64; 4]], fog: bool) -> Vec<[f32; 4]> {
+    let inputs = stage.slots.len();
+    let fog_column = fog.then(|| &v[inputs + 1]);
+    v[..inputs]
+        .iter()
+        .chain(fog_column)
+        .map(|v| v.map(|x| x as f32))
+        .collect()
+}
+
+impl Setup {
+    /// The square of a point at `at` as the emulator sets it up, its four
+    /// corners added to the vertices: its two triangles, clockwise (a
+    /// front face, as the emulator's are).
+    fn point(
+        &mut self,
+        g: &Geometry,
+        stage: &Stage,
+        viewport: &Viewport,
+        at: &clip::ClipVertex,
+        fog: bool,
+    ) -> Vec<[u32; 3]> {
+        let first = self.positions.len() as u32;
+        let size = super::point_size(g, stage, viewport, at);
+        let corners = [(-1.0, -1.0), (1.0, -1.0), (-1.0, 1.0), (1.0, 1.0)];
+        for (k, (dx, dy)) in corners.into_iter().enumerate() {
+            self.positions.push(point_corner(
+                at.pos,
+                dx,
+                dy,
+                size,
+                stage.transformed,
+                viewport,
+            ));
+            let values = super::point_values(g, stage, &at.values, k);
+            self.values.push(carried(stage, &values, fog));
+        }
+        let [tl, tr, bl, br] = [first, first + 1, first + 2, first + 3];
+        vec![[tl, tr, bl], [tr, br, bl]]
+    }
 }
 
 /// The facing of the triangle of vertices `v` as the emulator's set-up
@@ -174,28 +232,16 @@ pub(super) struct Context<'c, 's> {
     pub fog: Option<Fog>,
 }
 
-/// Refuses, by name, the fog the GPU backend does not draw: vertex fog
-/// (the device does not carry the interpolated fog factor to its pixels)
-/// and table fog after a shader that writes `oDepth` (the device's pixels
-/// bring back `oDepth`, not the interpolated z table fog reads). Table fog
-/// otherwise runs on the CPU from each pixel's rasterised z, as the
-/// emulator's does from its own.
-pub(super) fn refuse_fog(shader: &Shader, fog: Option<&Fog>) -> Result<(), DrawFailure> {
-    let Some(fog) = fog else {
-        return Ok(());
-    };
-    let odepth = shader.program().instructions.iter().any(|i| {
-        i.dst
-            .as_ref()
-            .is_some_and(|d| d.reg.file == crate::core::isa::RegFile::DepthOut)
-    });
-    let why = match (fog.mode, odepth) {
-        (FogMode::Vertex, _) => "vertex fog (mode \"vertex\") is drawn on the emulator only: the GPU backend does not carry the interpolated fog factor to its pixels",
-        (_, _) if fog.w => "table fog from w (depth \"w\") is drawn on the emulator only: the GPU backend applies table fog from each pixel's rasterised z",
-        (_, true) => "table fog after a shader that writes oDepth is drawn on the emulator only: the GPU backend's pixels bring back oDepth, not the interpolated z that fog reads",
-        _ => return Ok(()),
-    };
-    Err(DrawFailure::Message(format!("geometry.fog: {why}")))
+/// What the device brings back for `fog`: the interpolated fog column
+/// for vertex fog and table fog from w (the emulator interpolates the same
+/// column with perspective), else the rasterised z, which table fog reads
+/// even where the shader writes `oDepth` (the emulator's `fog_pixels`
+/// reads its window's z, not `oDepth`).
+fn fog_kind(fog: Option<&Fog>) -> Option<GeometryFog> {
+    fog.map(|f| match f.mode == FogMode::Vertex || f.w {
+        true => GeometryFog::Varying,
+        false => GeometryFog::Depth,
+    })
 }
 
 /// Every primitive of `g` drawn on `device` and taken into `pass`.
@@ -210,7 +256,8 @@ pub(super) fn shade_all(
 ) -> Result<Drawn, DrawFailure> {
     let (viewport, clip_rect, settings) = (c.viewport, c.clip_rect, c.settings);
     let draw = pixel_draw(d, stage, c.samplers, settings, (pass.width, c.height));
-    let (geometry, faces) = geometry_draw(g, stage, &draw, viewport, clip_rect)?;
+    let fog = fog_kind(c.fog.as_ref());
+    let (geometry, faces) = geometry_draw(g, stage, &draw, (viewport, clip_rect), fog)?;
     let refusal = match c.fog {
         Some(_) => Some("fog runs on the CPU".into()),
         None => super::one_pass::refusal(device, d, g, pass),
@@ -236,7 +283,7 @@ pub(super) fn shade_all(
         shaded: 0,
     };
     let mut pixels_left = settings.budget.max_pixels;
-    for ((prim, &face), s) in primitives.iter().zip(&faces).zip(&shaded) {
+    for ((prim, &face), mut s) in primitives.iter().zip(&faces).zip(shaded) {
         if s.pixels.is_empty() {
             continue;
         }
@@ -250,16 +297,14 @@ pub(super) fn shade_all(
             })?;
         drawn.triangles += prim.len() as u64;
         drawn.shaded += s.pixels.len() as u64;
-        let (window, mut out) = window(s, pass.width);
-        if let (Some(f), Some(Some(colors))) = (&c.fog, out.color.first_mut()) {
-            // Table fog from each pixel's rasterised z (`s.depth`: the
-            // shader writes no oDepth, `refuse_fog` says).
-            for (i, color) in colors.iter_mut().enumerate() {
-                if window.inputs.covered[i] {
-                    *color = f.blend(*color, f.factor(window.depth[i]));
-                }
+        if let (Some(f), Some(Some(colors))) = (&c.fog, s.color.first_mut()) {
+            // Fog on the CPU, as the emulator's, from each pixel's d as
+            // the device brought it back (`fog_kind`).
+            for (color, &d) in colors.iter_mut().zip(&s.fog) {
+                *color = f.blend(*color, f.factor(f64::from(d)));
             }
         }
+        let (window, out) = window(&s, pass.width);
         pass.take(&window, &out, d.pixel.alpha_test, face)?;
     }
     Ok(drawn)
@@ -267,7 +312,7 @@ pub(super) fn shade_all(
 
 /// The pixel shader's draw for the device: constants, samplers and float
 /// rules of step `d` on a `size` target.
-fn pixel_draw<'s>(
+pub(super) fn pixel_draw<'s>(
     d: &DrawStep,
     stage: &Stage,
     samplers: &[(u32, emu::TextureLevels<'s>, emu::SamplerState)],
@@ -288,16 +333,19 @@ fn pixel_draw<'s>(
     draw
 }
 
-/// Sets `g` up over `stage` as the device draws it: the draw and each
-/// primitive's facing.
+/// Sets `g` up over `stage` as the device draws it (in `view`: the
+/// viewport and the pixels it may write), bringing back `fog`: the draw
+/// and each primitive's facing.
 fn geometry_draw<'d>(
     g: &Geometry,
     stage: &Stage,
     draw: &'d emu::Draw<'d>,
-    viewport: &Viewport,
-    clip_rect: Rect,
+    view: (&Viewport, Rect),
+    fog: Option<GeometryFog>,
 ) -> Result<(GeometryDraw<'d>, Vec<Face>), DrawFailure> {
-    let setup = setup(g, stage, viewport).map_err(DrawFailure::Message)?;
+    let (viewport, clip_rect) = view;
+    let varying = fog == Some(GeometryFog::Varying);
+    let setup = setup(g, stage, viewport, varying).map_err(DrawFailure::Message)?;
     let setup_faces = setup.faces;
     let flat = stage.slots.iter().fold(0u64, |bits, s| {
         (0..4)
@@ -315,12 +363,20 @@ fn geometry_draw<'d>(
         viewport: *viewport,
         clip: clip_rect,
         // D3DRS_CULLMODE culls triangles; a point's square (clockwise, so
-        // front) is never culled, as the emulator's points are not.
-        cull: match g.primitive {
-            Primitive::PointList => raster::Cull::None,
+        // front) is never culled, as the emulator's points are not (a
+        // triangle filled as points was culled in `setup`).
+        cull: match (g.primitive, g.state.fill) {
+            (Primitive::PointList, _) | (_, FillMode::Point) => raster::Cull::None,
             _ => g.cull,
         },
-        clip_planes: g.clip_planes.iter().map(|p| p.map(|x| x as f32)).collect(),
+        // A point is kept or dropped whole by its centre (`setup`), as on
+        // the emulator, which never cuts a point's square by a user plane:
+        // the device is given no planes to cut it by.
+        clip_planes: match (g.primitive, g.state.fill) {
+            (Primitive::PointList, _) | (_, FillMode::Point) => Vec::new(),
+            _ => g.clip_planes.iter().map(|p| p.map(|x| x as f32)).collect(),
+        },
+        fog,
     };
     Ok((geometry, setup_faces))
 }
@@ -387,12 +443,18 @@ pub(crate) fn coverage(
         pixels.sort_unstable();
         pixels.dedup();
     }
+    if super::draws_lines(g) {
+        // The device shades the pixels the emulator's set-up gives a line
+        // (`gpu_lines.rs`): the same coverage by construction.
+        c.gpu = c.emulator.clone();
+        return Ok(c);
+    }
     let backend = Backend::Gpu(device.clone());
     let stage = super::vertex_stage(list, g, d, float_rules, states, &backend)?;
     let samplers = crate::jobs::render::bind_samplers(list, d, &d.samplers, states)?;
     let draw = pixel_draw(d, &stage, &samplers, settings, (width, height));
     let shader = &list.shaders[d.shader].loaded.shader;
-    let (geometry, _) = geometry_draw(g, &stage, &draw, &viewport, clip_rect)?;
+    let (geometry, _) = geometry_draw(g, &stage, &draw, (&viewport, clip_rect), None)?;
     let shaded = gpu::draw_geometry(device, shader, &geometry)
         .map_err(|e| DrawFailure::Message(e.to_string()))?;
     c.gpu = shaded.into_iter().map(|s| s.pixels).collect();
