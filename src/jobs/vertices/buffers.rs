@@ -26,7 +26,6 @@ use crate::core::decltype::{self, DeclType};
 use crate::core::emu::vertex::{Attribute, Vertices};
 use crate::core::isa::USAGES;
 use serde_json::{Map, Value};
-use std::io::Read;
 use std::path::Path;
 
 /// Direct3D 9's stream count (D3DCAPS9.MaxStreams is at most 16).
@@ -310,9 +309,8 @@ fn stream(v: &Value, i: usize, dir: &Path) -> Result<Stream, String> {
     }
     let offset = number_of("offset", 0, MAX_FILE_BYTES)?;
     let bytes = match (map.get("file"), map.get("hex")) {
-        (Some(Value::String(f)), None) => {
-            read_stream(&dir.join(f)).map_err(|e| format!("{at}.file: {e}"))?
-        }
+        (Some(Value::String(f)), None) => super::read_capped(&dir.join(f), "a vertex buffer")
+            .map_err(|e| format!("{at}.file: {e}"))?,
         (None, Some(Value::String(h))) => hex(h).map_err(|e| format!("{at}.hex: {e}"))?,
         (Some(_), Some(_)) => return Err(format!("{at}: give \"file\" or \"hex\", not both")),
         (None, None) => {
@@ -329,24 +327,6 @@ fn stream(v: &Value, i: usize, dir: &Path) -> Result<Stream, String> {
         offset,
         at,
     })
-}
-
-/// A stream file, at most [`MAX_FILE_BYTES`], its size checked before it is read.
-fn read_stream(path: &Path) -> Result<Vec<u8>, String> {
-    let name = path.display();
-    let size = std::fs::metadata(path)
-        .map_err(|e| format!("{name}: {e}"))?
-        .len();
-    if size > MAX_FILE_BYTES {
-        return Err(format!(
-            "{name}: {size} bytes; a vertex buffer is at most {MAX_FILE_BYTES} bytes"
-        ));
-    }
-    let mut bytes = Vec::new();
-    std::fs::File::open(path)
-        .and_then(|f| f.take(MAX_FILE_BYTES).read_to_end(&mut bytes))
-        .map_err(|e| format!("{name}: {e}"))?;
-    Ok(bytes)
 }
 
 /// Hex digits, two per byte, with any white space between bytes.

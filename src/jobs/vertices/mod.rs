@@ -46,17 +46,31 @@ pub const MAX_FILE_BYTES: u64 = 64 << 20;
 /// Reads and checks a vertex-list file.
 pub fn read(path: &Path) -> Result<Vertices, String> {
     let name = path.display();
+    let bytes = read_capped(path, "a vertex list")?;
+    let text = String::from_utf8(bytes).map_err(|e| format!("{name}: not UTF-8 text: {e}"))?;
+    let dir = path.parent().unwrap_or(Path::new("."));
+    parse_in(&text, dir).map_err(|e| format!("{name}: {e}"))
+}
+
+/// The bytes of `path` (`what` names the file in the refusal), at most
+/// [`MAX_FILE_BYTES`]: the size is checked before the file is read, and the
+/// read stops there whatever the file turns out to hold (`/dev/zero`).
+fn read_capped(path: &Path, what: &str) -> Result<Vec<u8>, String> {
+    use std::io::Read;
+    let name = path.display();
     let size = std::fs::metadata(path)
         .map_err(|e| format!("{name}: {e}"))?
         .len();
     if size > MAX_FILE_BYTES {
         return Err(format!(
-            "{name}: {size} bytes; a vertex list is at most {MAX_FILE_BYTES} bytes"
+            "{name}: {size} bytes; {what} is at most {MAX_FILE_BYTES} bytes"
         ));
     }
-    let text = std::fs::read_to_string(path).map_err(|e| format!("{name}: {e}"))?;
-    let dir = path.parent().unwrap_or(Path::new("."));
-    parse_in(&text, dir).map_err(|e| format!("{name}: {e}"))
+    let mut bytes = Vec::new();
+    std::fs::File::open(path)
+        .and_then(|f| f.take(MAX_FILE_BYTES).read_to_end(&mut bytes))
+        .map_err(|e| format!("{name}: {e}"))?;
+    Ok(bytes)
 }
 
 /// Parses a vertex list's text (see the module docs); vertex-buffer files

@@ -47,6 +47,7 @@ pub struct DepthBuffer {
 }
 
 /// What a geometry draw did, for its step's report.
+#[derive(Default)]
 pub(crate) struct Drawn {
     /// What the output merger wrote and what was discarded.
     pub merged: MergeStats,
@@ -113,6 +114,19 @@ struct Stage {
     fixed_function: bool,
     /// Whether the vertices give a fog factor (vertex fog reads it).
     fog_given: bool,
+}
+
+impl Stage {
+    /// Each pixel-shader input slot with its index among the vertex's
+    /// values and its flat-shaded components, as a window's set-up takes
+    /// them.
+    fn slot_list(&self) -> Vec<(u32, usize, [bool; 4])> {
+        self.slots
+            .iter()
+            .enumerate()
+            .map(|(k, s)| (s.slot, k, s.flat))
+            .collect()
+    }
 }
 
 /// `values` with the point-size and fog columns appended.
@@ -934,12 +948,7 @@ fn shade_all(
     limits: emu::EmuLimits,
     pass: &mut Pass,
 ) -> Result<Drawn, DrawFailure> {
-    let mut slots: Vec<(u32, usize, [bool; 4])> = stage
-        .slots
-        .iter()
-        .enumerate()
-        .map(|(k, s)| (s.slot, k, s.flat))
-        .collect();
+    let mut slots = stage.slot_list();
     let fog = fog_state(list, d, stage)?;
     if fog.is_some_and(|f| f.mode == FogMode::Vertex || f.w) {
         // The fog factor (or table fog's w) rides along as one more input,
@@ -947,12 +956,8 @@ fn shade_all(
         slots.push((FOG_SLOT, stage.slots.len() + 1, [false; 4]));
     }
     let mut drawn = Drawn {
-        merged: MergeStats::default(),
-        executed: None,
-        total: 0,
         gradients: compiled.sites.clone(),
-        triangles: 0,
-        shaded: 0,
+        ..Drawn::default()
     };
     let mut pixels_left = settings.budget.max_pixels;
     for (k, (tri, provoking, _)) in tris.iter().enumerate() {

@@ -11,7 +11,6 @@ use super::{Drawn, FillMode, Pass, Stage};
 use crate::core::emu::{self, DrawOutput, PixelInputs};
 use crate::core::gpu::{self, GeometryDraw, Gpu, ShadedPrimitive};
 use crate::core::ir::Shader;
-use crate::core::merge::MergeStats;
 use crate::core::raster::clip::{self, GUARD_BAND, VIEW_VOLUME};
 use crate::core::raster::fog::{Fog, FogMode};
 use crate::core::raster::triangle::Window;
@@ -274,14 +273,7 @@ pub(super) fn shade_all(
     let primitives = &geometry.primitives;
     let shaded = gpu::draw_geometry(device, shader, &geometry)
         .map_err(|e| DrawFailure::Message(e.to_string()))?;
-    let mut drawn = Drawn {
-        merged: MergeStats::default(),
-        executed: None,
-        total: 0,
-        gradients: Vec::new(),
-        triangles: 0,
-        shaded: 0,
-    };
+    let mut drawn = Drawn::default();
     let mut pixels_left = settings.budget.max_pixels;
     for ((prim, &face), mut s) in primitives.iter().zip(&faces).zip(shaded) {
         if s.pixels.is_empty() {

@@ -16,7 +16,6 @@ use crate::core::emu::{self, DrawOutput, PixelInputs};
 use crate::core::gpu::{self, Gpu, GpuOutput};
 use crate::core::ir::Shader;
 use crate::core::isa::RegFile;
-use crate::core::merge::MergeStats;
 use crate::core::raster::fog::FogMode;
 use crate::core::raster::triangle::Window;
 use crate::jobs::render::geometry::Geometry;
@@ -44,26 +43,14 @@ pub(super) fn shade_lines(
         ));
     }
     let shapes = super::shapes(g, stage, c.viewport, c.clip_rect).map_err(DrawFailure::Message)?;
-    let mut slots: Vec<(u32, usize, [bool; 4])> = stage
-        .slots
-        .iter()
-        .enumerate()
-        .map(|(k, s)| (s.slot, k, s.flat))
-        .collect();
+    let mut slots = stage.slot_list();
     // The fog column rides along as the emulator's does.
     let fog_column = c.fog.is_some_and(|f| f.mode == FogMode::Vertex || f.w);
     if fog_column {
         slots.push((super::FOG_SLOT, stage.slots.len() + 1, [false; 4]));
     }
     crate::core::phases::mark("geometry: lines through the emulator's set-up");
-    let mut drawn = Drawn {
-        merged: MergeStats::default(),
-        executed: None,
-        total: 0,
-        gradients: Vec::new(),
-        triangles: 0,
-        shaded: 0,
-    };
+    let mut drawn = Drawn::default();
     let mut pixels_left = c.settings.budget.max_pixels;
     for (shape, provoking, _) in &shapes {
         if c.clip_rect.is_empty() {

@@ -17,7 +17,7 @@
 use super::{DepthBuffer, Drawn, Pass};
 use crate::core::gpu::{self, Compare, DepthSurface, GeometryDraw, Gpu, StencilSide, StencilTest};
 use crate::core::ir::Shader;
-use crate::core::merge::{self, MergeStats};
+use crate::core::merge;
 use crate::core::raster::depth::DepthFormat;
 use crate::core::translate::device_tests::{AlphaDiscard, DepthStore};
 use crate::jobs::render::geometry::Geometry;
@@ -167,14 +167,7 @@ pub(super) fn draw(
     let surface = surface(g, pass);
     let out = gpu::draw_one_pass(device, shader, geometry, surface.as_ref(), alpha(d))
         .map_err(|e| DrawFailure::Message(e.to_string()))?;
-    let mut drawn = Drawn {
-        merged: MergeStats::default(),
-        executed: None,
-        total: 0,
-        gradients: Vec::new(),
-        triangles: 0,
-        shaded: 0,
-    };
+    let mut drawn = Drawn::default();
     let mut counts = out.counts.iter();
     for prim in &geometry.primitives {
         let covered: u64 = counts
