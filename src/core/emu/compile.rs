@@ -1159,6 +1159,10 @@ pub fn compile(shader: &Shader) -> Result<Compiled, EmuError> {
 
 /// [`compile`], each micro-op charging its instruction's slots under `table`.
 pub fn compile_under(shader: &Shader, table: SlotTable) -> Result<Compiled, EmuError> {
+    let shader = shader.runnable().map_err(|why| EmuError::Refused {
+        profile: shader.program().profile,
+        reason: why.to_string(),
+    })?;
     let program = shader.program();
     let pixel = program.profile.stage() == crate::core::profile::Stage::Pixel;
     if !program.profile.runs() || !pixel {

@@ -1,0 +1,274 @@
+//! ps_1_x run through the emulator: each rule of `run.rs`, with the
+//! expected value worked out by hand beside every case.
+
+use crate::core::emu::{self, Draw, LinearInput, SamplerState, Texture};
+use crate::core::load::{self, Options};
+
+fn options(max: f32) -> Options {
+    Options {
+        ps1_max_value: max,
+        ..Options::default()
+    }
+}
+
+/// The one pixel of a 1×1 draw `draw` sets up, under range `max`.
+fn pixel_with(text: &str, max: f32, setup: impl FnOnce(&mut Draw)) -> emu::DrawOutput {
+    let loaded = load::load_str("t.psh", text, &options(max)).expect("loads");
+    let compiled = emu::compile(&loaded.shader).expect("compiles");
+    let mut d = Draw::new(1, 1);
+    setup(&mut d);
+    emu::run(&compiled, &d).expect("runs")
+}
+
+fn colour(text: &str, setup: impl FnOnce(&mut Draw)) -> [f32; 4] {
+    pixel_with(text, 8.0, setup).color[0].as_ref().expect("oC0")[0]
+}
+
+fn plain(text: &str) -> [f32; 4] {
+    colour(text, |_| {})
+}
+
+/// v0 = (0.25, 0.75, 1, 0.5) at every pixel.
+fn with_v0(d: &mut Draw) {
+    d.inputs
+        .push((0, LinearInput::constant([0.25, 0.75, 1.0, 0.5])));
+}
+
+#[test]
+fn constants_read_as_minus_one_to_one() {
+    // Wine's constant_clamp_ps_test in ps30's words: (1.25, -0.5, -1.5, 1)
+    // + (-0.5, 1.25, 2, 1) reads (1, -0.5, -1, 1) + (-0.5, 1, 1, 1)
+    // = (0.5, 0.5, 0, 2); 2 is inside the range (8).
+    let text = "ps_1_1\nadd r0, c0, c1\n";
+    let got = colour(text, |d| {
+        d.constants.float = vec![[1.25, -0.5, -1.5, 1.0], [-0.5, 1.25, 2.0, 1.0]];
+    });
+    assert_eq!(got, [0.5, 0.5, 0.0, 2.0]);
+    // `def` values too (the register holds [-1, 1], however it was set).
+    let text = "ps_1_4\ndef c0, 1.25, -0.5, -1.5, 1\ndef c1, -0.5, 1.25, 2, 1\nadd r0, c0, c1\n";
+    assert_eq!(plain(text), [0.5, 0.5, 0.0, 2.0]);
+}
+
+#[test]
+fn source_modifiers() {
+    // v0 = (0.25, 0.75, 1, 0.5).
+    let run = |src: &str| colour(&format!("ps_1_1\nmov r0, {src}\n"), with_v0);
+    // x - 0.5
+    assert_eq!(run("v0_bias"), [-0.25, 0.25, 0.5, 0.0]);
+    assert_eq!(run("-v0_bias"), [0.25, -0.25, -0.5, -0.0]);
+    // 2x - 1
+    assert_eq!(run("v0_bx2"), [-0.5, 0.5, 1.0, 0.0]);
+    assert_eq!(run("-v0_bx2"), [0.5, -0.5, -1.0, -0.0]);
+    // 1 - x
+    assert_eq!(run("1-v0"), [0.75, 0.25, 0.0, 0.5]);
+    assert_eq!(run("-v0"), [-0.25, -0.75, -1.0, -0.5]);
+    // The selector comes first: v0.a = 0.5 everywhere, then 2x - 1 = 0.
+    assert_eq!(run("v0_bx2.a"), [0.0; 4]);
+}
+
+#[test]
+fn ps_1_4_x2_source_and_coordinates() {
+    // t0 = (0.25, -0.5, 2, 4); texcrd copies x, y, z (it writes .rgb, its
+    // fourth channel is undefined), `_x2` doubles: (0.5, -1, 4); alpha
+    // from c0 (0).
+    let text = "ps_1_4\ntexcrd r1.rgb, t0\nmov r0.rgb, r1_x2\n+mov r0.a, c0\n";
+    let got = colour(text, |d| {
+        d.inputs
+            .push((2, LinearInput::constant([0.25, -0.5, 2.0, 4.0])));
+    });
+    assert_eq!(got, [0.5, -1.0, 4.0, 0.0]);
+    // `_dw` divides x and y by w (4): (0.0625, -0.125); texcrd with `_dw`
+    // writes .rg.
+    let text = "ps_1_4\ntexcrd r0.rg, t0_dw\nmov r0.ba, c0\n";
+    let got = colour(text, |d| {
+        d.inputs
+            .push((2, LinearInput::constant([0.25, -0.5, 2.0, 4.0])));
+    });
+    assert_eq!(got, [0.0625, -0.125, 0.0, 0.0]);
+}
+
+#[test]
+fn shifts_saturation_and_the_register_range() {
+    // c0 = (1, 0.5, -1, 0.25).
+    let def = "def c0, 1, 0.5, -1, 0.25\n";
+    let run = |line: &str, max: f32| {
+        let text = format!("ps_1_4\n{def}{line}\n");
+        pixel_with(&text, max, |_| {}).color[0].as_ref().unwrap()[0]
+    };
+    // ×8: (8, 4, -8, 2), inside ±8.
+    assert_eq!(run("mov_x8 r0, c0", 8.0), [8.0, 4.0, -8.0, 2.0]);
+    // (c0 + c0) × 8 = (16, 8, -16, 4): clamped to ±8 ...
+    assert_eq!(run("add_x8 r0, c0, c0", 8.0), [8.0, 8.0, -8.0, 4.0]);
+    // ... or not, under PixelShader1xMaxValue 16.
+    assert_eq!(run("add_x8 r0, c0, c0", 16.0), [16.0, 8.0, -16.0, 4.0]);
+    // ÷8: (0.125, 0.0625, -0.125, 0.03125).
+    assert_eq!(run("mov_d8 r0, c0", 8.0), [0.125, 0.0625, -0.125, 0.03125]);
+    // The shift before _sat: (2, 1, -2, 0.5) saturates to (1, 1, 0, 0.5);
+    // saturating first would give (2, 1, 0, 0.5).
+    assert_eq!(run("mov_x2_sat r0, c0", 8.0), [1.0, 1.0, 0.0, 0.5]);
+    // Under the least range, 1: (c0 + c0) = (2, 1, -2, 0.5) → (1, 1, -1, 0.5).
+    assert_eq!(run("add r0, c0, c0", 1.0), [1.0, 1.0, -1.0, 0.5]);
+    // ps_1_1's _x4 and _d2: c0 × 4 = (4, 2, -4, 1); ÷2 = (0.5, 0.25, -0.5, 0.125).
+    let text = format!("ps_1_1\n{def}mov_x4 r1, c0\nmov_d2 r0, r1\n");
+    assert_eq!(plain(&text), [2.0, 1.0, -2.0, 0.5]);
+}
+
+#[test]
+fn cnd_cmp_lrp_dot_products() {
+    let consts = "def c1, 1, 0.25, 0.5, 0.75\ndef c2, -1, 0, 0.125, 0.375\n";
+    // cnd: r0.a > 0.5 ? c1 : c2. r0.a = 0.5 is not above 0.5: c2.
+    let text = format!("ps_1_1\ndef c0, 0, 0, 0, 0.5\n{consts}mov r0, c0\ncnd r0, r0.a, c1, c2\n");
+    assert_eq!(plain(&text), [-1.0, 0.0, 0.125, 0.375]);
+    // r0.a = 0.5078125 (0.5 + 1/128) is: c1.
+    let text =
+        format!("ps_1_1\ndef c0, 0, 0, 0, 0.5078125\n{consts}mov r0, c0\ncnd r0, r0.a, c1, c2\n");
+    assert_eq!(plain(&text), [1.0, 0.25, 0.5, 0.75]);
+    // ps_1_4's cnd per component of any source: c0 = (0.75, 0.5, 0, 1):
+    // x above → c1.x, y not → c2.y, z not → c2.z, w above → c1.w.
+    let text = format!("ps_1_4\ndef c0, 0.75, 0.5, 0, 1\n{consts}cnd r0, c0, c1, c2\n");
+    assert_eq!(plain(&text), [1.0, 0.0, 0.125, 0.75]);
+    // cmp: c0 >= 0 ? c1 : c2 with c0 = (0, -0.25, 0.5, -1): (c1.x, c2.y,
+    // c1.z, c2.w).
+    let text = format!("ps_1_2\ndef c0, 0, -0.25, 0.5, -1\n{consts}cmp r0, c0, c1, c2\n");
+    assert_eq!(plain(&text), [1.0, 0.0, 0.5, 0.375]);
+    // lrp: c0·c1 + (1 − c0)·c2 with c0 = 0.25 everywhere:
+    // x 0.25 − 0.75 = −0.5; y 0.0625; z 0.125 + 0.09375 = 0.21875;
+    // w 0.1875 + 0.28125 = 0.46875 (y: 0.0625 + 0.75·0 = 0.0625).
+    let text = format!("ps_1_1\ndef c0, 0.25, 0.25, 0.25, 0.25\n{consts}lrp r0, c0, c1, c2\n");
+    assert_eq!(plain(&text), [-0.5, 0.0625, 0.21875, 0.46875]);
+    // dp3: 1·−1 + 0.25·0 + 0.5·0.125 = −0.9375, replicated; dp4 adds
+    // 0.75·0.375 = 0.28125: −0.65625.
+    let text = format!("ps_1_1\n{consts}dp3 r0, c1, c2\n");
+    assert_eq!(plain(&text), [-0.9375; 4]);
+    let text = format!("ps_1_2\n{consts}dp4 r0, c1, c2\n");
+    assert_eq!(plain(&text), [-0.65625; 4]);
+    // mad, sub: c1·c2 + c1 = (0, 0.25, 0.5625, 1.03125); c1 − c2 =
+    // (2, 0.25, 0.375, 0.375).
+    let text = format!("ps_1_1\n{consts}mad r0, c1, c2, c1\n");
+    assert_eq!(plain(&text), [0.0, 0.25, 0.5625, 1.03125]);
+    let text = format!("ps_1_1\n{consts}sub r0, c1, c2\n");
+    assert_eq!(plain(&text), [2.0, 0.25, 0.375, 0.375]);
+}
+
+#[test]
+fn a_co_issued_pair_reads_before_it_writes() {
+    // r0 = (0.25, 0.5, 0.75, 1); the pair halves r0.rgb and copies r0.b
+    // into r0.a. Read before the pair writes, r0.b is 0.75 (written one
+    // after the other, it would be 0.375).
+    let text = "ps_1_1\ndef c0, 0.25, 0.5, 0.75, 1\ndef c1, 0.5, 0.5, 0.5, 0.5\n\
+                mov r0, c0\nmul r0.rgb, r0, c1\n+mov r0.a, r0.b\n";
+    assert_eq!(plain(text), [0.125, 0.25, 0.375, 0.75]);
+    // The pair costs one slot: three instructions, two slots executed.
+    let out = pixel_with(text, 8.0, |_| {});
+    assert_eq!(out.executed[0], 2);
+}
+
+/// A 2×1 texture: left texel (0.25, 0.5, 0.75, 1), right (1, 0, 0.5, 0).
+const TEXELS: [[f32; 4]; 2] = [[0.25, 0.5, 0.75, 1.0], [1.0, 0.0, 0.5, 0.0]];
+
+fn bind(d: &mut Draw, stage: u32) {
+    d.samplers.push((
+        stage,
+        Texture {
+            width: 2,
+            height: 1,
+            texels: &TEXELS,
+        }
+        .into(),
+        SamplerState::default(),
+    ));
+}
+
+#[test]
+fn tex_texcoord_and_texkill() {
+    // tex t1 samples stage 1 at coordinate 1: u = 0.75 is the right texel
+    // (point filtering); texcoord t0 is t0 clamped to [0, 1] with alpha 1:
+    // (1, 0, 0.5, 1) from (1.5, -0.25, 0.5, 7).
+    let text = "ps_1_1\ntexcoord t0\ntex t1\nadd r0, t0, t1\n";
+    let got = colour(text, |d| {
+        d.inputs
+            .push((2, LinearInput::constant([1.5, -0.25, 0.5, 7.0])));
+        d.inputs
+            .push((3, LinearInput::constant([0.75, 0.5, 0.0, 1.0])));
+        bind(d, 1);
+    });
+    // (1, 0, 0.5, 1) + (1, 0, 0.5, 0)
+    assert_eq!(got, [2.0, 0.0, 1.0, 1.0]);
+    // texkill looks at x, y, z of the coordinate, not w.
+    let kill = |t0: [f32; 4]| {
+        let text = "ps_1_1\ntexkill t0\nmov r0, v0\n";
+        pixel_with(text, 8.0, |d| {
+            d.inputs.push((2, LinearInput::constant(t0)));
+            with_v0(d);
+        })
+        .killed[0]
+    };
+    assert!(kill([0.0, 0.0, -0.5, 1.0]));
+    assert!(!kill([0.0, 0.0, 0.0, -1.0]));
+}
+
+#[test]
+fn ps_1_4_texld_phases_and_texdepth() {
+    // `_dz` (on an r#, after the phase marker) divides x and y by z:
+    // (0.5, 0.25, 2) samples at (0.25, 0.125), the left texel; without it
+    // u = 0.5 would be the right one.
+    let text = "ps_1_4\ntexcrd r1.rgb, t0\nphase\ntexld r0, r1_dz\n";
+    let got = colour(text, |d| {
+        d.inputs
+            .push((2, LinearInput::constant([0.5, 0.25, 2.0, 1.0])));
+        bind(d, 0);
+    });
+    assert_eq!(got, TEXELS[0]);
+    // Phase 1: texcrd r1 = t0 = (0.25, 0.5, 0, 1); phase 2: texld r2, r1
+    // samples stage 2 at (0.25, 0.5): the left texel (0.25, 0.5, 0.75, 1);
+    // texld r0, t1 samples stage 0 at t1 = (0.75, 0.5): the right texel.
+    let text = "ps_1_4\ntexcrd r1.rgb, t0\nphase\ntexld r2, r1\ntexld r0, t1\nadd r0, r0, r2\n";
+    let got = colour(text, |d| {
+        d.inputs
+            .push((2, LinearInput::constant([0.25, 0.5, 0.0, 1.0])));
+        d.inputs
+            .push((3, LinearInput::constant([0.75, 0.5, 0.0, 1.0])));
+        bind(d, 0);
+        bind(d, 2);
+    });
+    assert_eq!(got, [1.25, 0.5, 1.25, 1.0]);
+    // texdepth: r5.r / r5.g = 0.25 / 0.5 = 0.5; r5.g = 0 gives 1; a ratio
+    // above 1 is clamped to 1, below 0 to 0.
+    let depth = |r: f32, g: f32| {
+        let text =
+            format!("ps_1_4\ndef c0, {r}, {g}, 0, 0\nmov r5, c0\nphase\ntexdepth r5\nmov r0, c0\n");
+        pixel_with(&text, 8.0, |_| {}).depth.expect("depth")[0]
+    };
+    assert_eq!(depth(0.25, 0.5), 0.5);
+    assert_eq!(depth(0.25, 0.0), 1.0);
+    assert_eq!(depth(1.0, 0.5), 1.0);
+    assert_eq!(depth(-0.25, 0.5), 0.0);
+}
+
+#[test]
+fn what_is_not_run_is_refused_by_name() {
+    let loaded = load::load_str(
+        "bump.psh",
+        "ps_1_1\ntex t0\ntexbem t1, t0\nmov r0, t1\n",
+        &Options::default(),
+    )
+    .expect("loads");
+    let e = emu::compile(&loaded.shader).unwrap_err().to_string();
+    assert_eq!(
+        e,
+        "a ps_1_1 shader: `texbem` (line 3): ps30 does not run it yet"
+    );
+}
+
+#[test]
+fn executed_slots_are_the_programs() {
+    // Four instructions with modifiers, a shift and a co-issued pair: 1
+    // (tex) + 1 (mul) + 1 (the pair) = 3 slots executed, as `check` counts.
+    let text = "ps_1_1\ntex t0\nmul_x2 r0, t0_bx2, v0\nadd r0.rgb, r0, 1-v0\n+mov r0.a, v0_bias\n";
+    let out = pixel_with(text, 8.0, |d| {
+        with_v0(d);
+        d.inputs.push((2, LinearInput::constant([0.0; 4])));
+        bind(d, 0);
+    });
+    assert_eq!(out.executed[0], 3);
+}
