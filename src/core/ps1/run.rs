@@ -41,7 +41,10 @@
 //!   writes r5.r / r5.g as the pixel's depth (1 where r5.g is 0), clamped
 //!   to [0, 1]; `phase` changes nothing at run time (the validator already
 //!   refuses what reads an alpha it dropped).
-//! * `r0` at the end is the pixel's colour.
+//! * `r0` at the end is the pixel's colour, saturated: vkd3d's
+//!   `ps1-sampler.shader_test` (lines 49–52, recorded on Windows) reads 0
+//!   where a ps_1_4 shader leaves −0.3 in r0 of a float target, and
+//!   vkd3d-shader writes ps_1_x's r0 to the colour output with `_sat`.
 //!
 //! The texture-address instructions (`texbem`, `texbeml`, `bem`,
 //! `texreg2*`, `texm3x*`, `texdp3*`) are refused by name: ps30 does not run
@@ -120,7 +123,7 @@ pub fn lower(program: &Program, file: &SourceFile, max_value: f32) -> Result<ir:
     l.origin = Origin::default();
     l.emit(
         Opcode::Mov,
-        false,
+        true,
         Dst {
             reg: reg(RegFile::ColorOut, 0),
             relative: None,

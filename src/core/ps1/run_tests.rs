@@ -28,6 +28,22 @@ fn plain(text: &str) -> [f32; 4] {
     colour(text, |_| {})
 }
 
+/// What `body` leaves in r1, seen through the saturated output: the
+/// shader ends `mad r0, r1, 1/32, 0.5`, which maps [-16, 16] into [0, 1]
+/// exactly for the dyadic values below, and the test maps it back.
+fn r1_with(version: &str, body: &str, max: f32, setup: impl FnOnce(&mut Draw)) -> [f32; 4] {
+    let text = format!(
+        "{version}\ndef c6, 0.5, 0.5, 0.5, 0.5\ndef c7, 0.03125, 0.03125, 0.03125, 0.03125\n\
+         {body}mad r0, r1, c7, c6\n"
+    );
+    let out = pixel_with(&text, max, setup).color[0].as_ref().expect("oC0")[0];
+    out.map(|v| (v - 0.5) * 32.0)
+}
+
+fn r1(version: &str, body: &str) -> [f32; 4] {
+    r1_with(version, body, 8.0, |_| {})
+}
+
 /// v0 = (0.25, 0.75, 1, 0.5) at every pixel.
 fn with_v0(d: &mut Draw) {
     d.inputs
@@ -39,26 +55,36 @@ fn constants_read_as_minus_one_to_one() {
     // Wine's constant_clamp_ps_test in ps30's words: (1.25, -0.5, -1.5, 1)
     // + (-0.5, 1.25, 2, 1) reads (1, -0.5, -1, 1) + (-0.5, 1, 1, 1)
     // = (0.5, 0.5, 0, 2); 2 is inside the range (8).
-    let text = "ps_1_1\nadd r0, c0, c1\n";
-    let got = colour(text, |d| {
+    let got = r1_with("ps_1_1", "add r1, c0, c1\n", 8.0, |d| {
         d.constants.float = vec![[1.25, -0.5, -1.5, 1.0], [-0.5, 1.25, 2.0, 1.0]];
     });
     assert_eq!(got, [0.5, 0.5, 0.0, 2.0]);
     // `def` values too (the register holds [-1, 1], however it was set).
-    let text = "ps_1_4\ndef c0, 1.25, -0.5, -1.5, 1\ndef c1, -0.5, 1.25, 2, 1\nadd r0, c0, c1\n";
-    assert_eq!(plain(text), [0.5, 0.5, 0.0, 2.0]);
+    let body = "def c0, 1.25, -0.5, -1.5, 1\ndef c1, -0.5, 1.25, 2, 1\nadd r1, c0, c1\n";
+    assert_eq!(r1("ps_1_4", body), [0.5, 0.5, 0.0, 2.0]);
+}
+
+#[test]
+fn the_colour_is_r0_saturated() {
+    // The same sum written to r0: (0.5, 0.5, 0, 2) leaves the shader as
+    // (0.5, 0.5, 0, 1); vkd3d's ps1-sampler probes (recorded on Windows)
+    // read 0 where r0 holds -0.3.
+    let text = "ps_1_1\ndef c0, 1.25, -0.5, -1.5, 1\ndef c1, -0.5, 1.25, 2, 1\nadd r0, c0, c1\n";
+    assert_eq!(plain(text), [0.5, 0.5, 0.0, 1.0]);
+    let text = "ps_1_1\ndef c0, -0.25, 0, 0, 0\nmov r0, c0\n";
+    assert_eq!(plain(text), [0.0; 4]);
 }
 
 #[test]
 fn source_modifiers() {
     // v0 = (0.25, 0.75, 1, 0.5).
-    let run = |src: &str| colour(&format!("ps_1_1\nmov r0, {src}\n"), with_v0);
+    let run = |src: &str| r1_with("ps_1_1", &format!("mov r1, {src}\n"), 8.0, with_v0);
     // x - 0.5
     assert_eq!(run("v0_bias"), [-0.25, 0.25, 0.5, 0.0]);
-    assert_eq!(run("-v0_bias"), [0.25, -0.25, -0.5, -0.0]);
+    assert_eq!(run("-v0_bias"), [0.25, -0.25, -0.5, 0.0]);
     // 2x - 1
     assert_eq!(run("v0_bx2"), [-0.5, 0.5, 1.0, 0.0]);
-    assert_eq!(run("-v0_bx2"), [0.5, -0.5, -1.0, -0.0]);
+    assert_eq!(run("-v0_bx2"), [0.5, -0.5, -1.0, 0.0]);
     // 1 - x
     assert_eq!(run("1-v0"), [0.75, 0.25, 0.0, 0.5]);
     assert_eq!(run("-v0"), [-0.25, -0.75, -1.0, -0.5]);
@@ -71,83 +97,82 @@ fn ps_1_4_x2_source_and_coordinates() {
     // t0 = (0.25, -0.5, 2, 4); texcrd copies x, y, z (it writes .rgb, its
     // fourth channel is undefined), `_x2` doubles: (0.5, -1, 4); alpha
     // from c0 (0).
-    let text = "ps_1_4\ntexcrd r1.rgb, t0\nmov r0.rgb, r1_x2\n+mov r0.a, c0\n";
-    let got = colour(text, |d| {
+    let t0 = |d: &mut Draw| {
         d.inputs
             .push((2, LinearInput::constant([0.25, -0.5, 2.0, 4.0])));
-    });
-    assert_eq!(got, [0.5, -1.0, 4.0, 0.0]);
+    };
+    let body = "texcrd r2.rgb, t0\nmov r1.rgb, r2_x2\n+mov r1.a, c0\n";
+    assert_eq!(r1_with("ps_1_4", body, 8.0, t0), [0.5, -1.0, 4.0, 0.0]);
     // `_dw` divides x and y by w (4): (0.0625, -0.125); texcrd with `_dw`
     // writes .rg.
-    let text = "ps_1_4\ntexcrd r0.rg, t0_dw\nmov r0.ba, c0\n";
-    let got = colour(text, |d| {
+    let body = "texcrd r1.rg, t0_dw\nmov r1.ba, c0\n";
+    assert_eq!(r1_with("ps_1_4", body, 8.0, t0), [0.0625, -0.125, 0.0, 0.0]);
+    // texcrd does not clamp to [0, 1] (texcoord does) but to the register
+    // range: 12 reads 8.
+    let body = "texcrd r1.rgb, t0\nmov r1.a, c0\n";
+    let got = r1_with("ps_1_4", body, 8.0, |d| {
         d.inputs
-            .push((2, LinearInput::constant([0.25, -0.5, 2.0, 4.0])));
+            .push((2, LinearInput::constant([12.0, -12.0, 1.5, 0.0])));
     });
-    assert_eq!(got, [0.0625, -0.125, 0.0, 0.0]);
+    assert_eq!(got, [8.0, -8.0, 1.5, 0.0]);
 }
 
 #[test]
 fn shifts_saturation_and_the_register_range() {
     // c0 = (1, 0.5, -1, 0.25).
     let def = "def c0, 1, 0.5, -1, 0.25\n";
-    let run = |line: &str, max: f32| {
-        let text = format!("ps_1_4\n{def}{line}\n");
-        pixel_with(&text, max, |_| {}).color[0].as_ref().unwrap()[0]
-    };
+    let run = |line: &str, max: f32| r1_with("ps_1_4", &format!("{def}{line}\n"), max, |_| {});
     // ×8: (8, 4, -8, 2), inside ±8.
-    assert_eq!(run("mov_x8 r0, c0", 8.0), [8.0, 4.0, -8.0, 2.0]);
+    assert_eq!(run("mov_x8 r1, c0", 8.0), [8.0, 4.0, -8.0, 2.0]);
     // (c0 + c0) × 8 = (16, 8, -16, 4): clamped to ±8 ...
-    assert_eq!(run("add_x8 r0, c0, c0", 8.0), [8.0, 8.0, -8.0, 4.0]);
+    assert_eq!(run("add_x8 r1, c0, c0", 8.0), [8.0, 8.0, -8.0, 4.0]);
     // ... or not, under PixelShader1xMaxValue 16.
-    assert_eq!(run("add_x8 r0, c0, c0", 16.0), [16.0, 8.0, -16.0, 4.0]);
+    assert_eq!(run("add_x8 r1, c0, c0", 16.0), [16.0, 8.0, -16.0, 4.0]);
     // ÷8: (0.125, 0.0625, -0.125, 0.03125).
-    assert_eq!(run("mov_d8 r0, c0", 8.0), [0.125, 0.0625, -0.125, 0.03125]);
+    assert_eq!(run("mov_d8 r1, c0", 8.0), [0.125, 0.0625, -0.125, 0.03125]);
     // The shift before _sat: (2, 1, -2, 0.5) saturates to (1, 1, 0, 0.5);
     // saturating first would give (2, 1, 0, 0.5).
-    assert_eq!(run("mov_x2_sat r0, c0", 8.0), [1.0, 1.0, 0.0, 0.5]);
+    assert_eq!(run("mov_x2_sat r1, c0", 8.0), [1.0, 1.0, 0.0, 0.5]);
     // Under the least range, 1: (c0 + c0) = (2, 1, -2, 0.5) → (1, 1, -1, 0.5).
-    assert_eq!(run("add r0, c0, c0", 1.0), [1.0, 1.0, -1.0, 0.5]);
-    // ps_1_1's _x4 and _d2: c0 × 4 = (4, 2, -4, 1); ÷2 = (0.5, 0.25, -0.5, 0.125).
-    let text = format!("ps_1_1\n{def}mov_x4 r1, c0\nmov_d2 r0, r1\n");
-    assert_eq!(plain(&text), [2.0, 1.0, -2.0, 0.5]);
+    assert_eq!(run("add r1, c0, c0", 1.0), [1.0, 1.0, -1.0, 0.5]);
+    // ps_1_1's _x4 and _d2: c0 × 4 = (4, 2, -4, 1); ÷2 = (2, 1, -2, 0.5).
+    let body = format!("{def}mov_x4 r1, c0\nmov_d2 r1, r1\n");
+    assert_eq!(r1("ps_1_1", &body), [2.0, 1.0, -2.0, 0.5]);
 }
 
 #[test]
 fn cnd_cmp_lrp_dot_products() {
     let consts = "def c1, 1, 0.25, 0.5, 0.75\ndef c2, -1, 0, 0.125, 0.375\n";
     // cnd: r0.a > 0.5 ? c1 : c2. r0.a = 0.5 is not above 0.5: c2.
-    let text = format!("ps_1_1\ndef c0, 0, 0, 0, 0.5\n{consts}mov r0, c0\ncnd r0, r0.a, c1, c2\n");
-    assert_eq!(plain(&text), [-1.0, 0.0, 0.125, 0.375]);
+    let body = format!("def c0, 0, 0, 0, 0.5\n{consts}mov r0, c0\ncnd r1, r0.a, c1, c2\n");
+    assert_eq!(r1("ps_1_1", &body), [-1.0, 0.0, 0.125, 0.375]);
     // r0.a = 0.5078125 (0.5 + 1/128) is: c1.
-    let text =
-        format!("ps_1_1\ndef c0, 0, 0, 0, 0.5078125\n{consts}mov r0, c0\ncnd r0, r0.a, c1, c2\n");
-    assert_eq!(plain(&text), [1.0, 0.25, 0.5, 0.75]);
+    let body =
+        format!("def c0, 0, 0, 0, 0.5078125\n{consts}mov r0, c0\ncnd r1, r0.a, c1, c2\n");
+    assert_eq!(r1("ps_1_1", &body), [1.0, 0.25, 0.5, 0.75]);
     // ps_1_4's cnd per component of any source: c0 = (0.75, 0.5, 0, 1):
     // x above → c1.x, y not → c2.y, z not → c2.z, w above → c1.w.
-    let text = format!("ps_1_4\ndef c0, 0.75, 0.5, 0, 1\n{consts}cnd r0, c0, c1, c2\n");
-    assert_eq!(plain(&text), [1.0, 0.0, 0.125, 0.75]);
+    let body = format!("def c0, 0.75, 0.5, 0, 1\n{consts}cnd r1, c0, c1, c2\n");
+    assert_eq!(r1("ps_1_4", &body), [1.0, 0.0, 0.125, 0.75]);
     // cmp: c0 >= 0 ? c1 : c2 with c0 = (0, -0.25, 0.5, -1): (c1.x, c2.y,
     // c1.z, c2.w).
-    let text = format!("ps_1_2\ndef c0, 0, -0.25, 0.5, -1\n{consts}cmp r0, c0, c1, c2\n");
-    assert_eq!(plain(&text), [1.0, 0.0, 0.5, 0.375]);
+    let body = format!("def c0, 0, -0.25, 0.5, -1\n{consts}cmp r1, c0, c1, c2\n");
+    assert_eq!(r1("ps_1_2", &body), [1.0, 0.0, 0.5, 0.375]);
     // lrp: c0·c1 + (1 − c0)·c2 with c0 = 0.25 everywhere:
-    // x 0.25 − 0.75 = −0.5; y 0.0625; z 0.125 + 0.09375 = 0.21875;
-    // w 0.1875 + 0.28125 = 0.46875 (y: 0.0625 + 0.75·0 = 0.0625).
-    let text = format!("ps_1_1\ndef c0, 0.25, 0.25, 0.25, 0.25\n{consts}lrp r0, c0, c1, c2\n");
-    assert_eq!(plain(&text), [-0.5, 0.0625, 0.21875, 0.46875]);
+    // x 0.25 − 0.75 = −0.5; y 0.0625 + 0 = 0.0625; z 0.125 + 0.09375 =
+    // 0.21875; w 0.1875 + 0.28125 = 0.46875.
+    let body = format!("def c0, 0.25, 0.25, 0.25, 0.25\n{consts}lrp r1, c0, c1, c2\n");
+    assert_eq!(r1("ps_1_1", &body), [-0.5, 0.0625, 0.21875, 0.46875]);
     // dp3: 1·−1 + 0.25·0 + 0.5·0.125 = −0.9375, replicated; dp4 adds
     // 0.75·0.375 = 0.28125: −0.65625.
-    let text = format!("ps_1_1\n{consts}dp3 r0, c1, c2\n");
-    assert_eq!(plain(&text), [-0.9375; 4]);
-    let text = format!("ps_1_2\n{consts}dp4 r0, c1, c2\n");
-    assert_eq!(plain(&text), [-0.65625; 4]);
+    assert_eq!(r1("ps_1_1", &format!("{consts}dp3 r1, c1, c2\n")), [-0.9375; 4]);
+    assert_eq!(r1("ps_1_2", &format!("{consts}dp4 r1, c1, c2\n")), [-0.65625; 4]);
     // mad, sub: c1·c2 + c1 = (0, 0.25, 0.5625, 1.03125); c1 − c2 =
     // (2, 0.25, 0.375, 0.375).
-    let text = format!("ps_1_1\n{consts}mad r0, c1, c2, c1\n");
-    assert_eq!(plain(&text), [0.0, 0.25, 0.5625, 1.03125]);
-    let text = format!("ps_1_1\n{consts}sub r0, c1, c2\n");
-    assert_eq!(plain(&text), [2.0, 0.25, 0.375, 0.375]);
+    let got = r1("ps_1_1", &format!("{consts}mad r1, c1, c2, c1\n"));
+    assert_eq!(got, [0.0, 0.25, 0.5625, 1.03125]);
+    let got = r1("ps_1_1", &format!("{consts}sub r1, c1, c2\n"));
+    assert_eq!(got, [2.0, 0.25, 0.375, 0.375]);
 }
 
 #[test]
@@ -184,8 +209,7 @@ fn tex_texcoord_and_texkill() {
     // tex t1 samples stage 1 at coordinate 1: u = 0.75 is the right texel
     // (point filtering); texcoord t0 is t0 clamped to [0, 1] with alpha 1:
     // (1, 0, 0.5, 1) from (1.5, -0.25, 0.5, 7).
-    let text = "ps_1_1\ntexcoord t0\ntex t1\nadd r0, t0, t1\n";
-    let got = colour(text, |d| {
+    let got = r1_with("ps_1_1", "texcoord t0\ntex t1\nadd r1, t0, t1\n", 8.0, |d| {
         d.inputs
             .push((2, LinearInput::constant([1.5, -0.25, 0.5, 7.0])));
         d.inputs
@@ -222,8 +246,8 @@ fn ps_1_4_texld_phases_and_texdepth() {
     // Phase 1: texcrd r1 = t0 = (0.25, 0.5, 0, 1); phase 2: texld r2, r1
     // samples stage 2 at (0.25, 0.5): the left texel (0.25, 0.5, 0.75, 1);
     // texld r0, t1 samples stage 0 at t1 = (0.75, 0.5): the right texel.
-    let text = "ps_1_4\ntexcrd r1.rgb, t0\nphase\ntexld r2, r1\ntexld r0, t1\nadd r0, r0, r2\n";
-    let got = colour(text, |d| {
+    let body = "texcrd r1.rgb, t0\nphase\ntexld r2, r1\ntexld r0, t1\nadd r1, r0, r2\n";
+    let got = r1_with("ps_1_4", body, 8.0, |d| {
         d.inputs
             .push((2, LinearInput::constant([0.25, 0.5, 0.0, 1.0])));
         d.inputs
