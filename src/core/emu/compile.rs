@@ -842,7 +842,7 @@ impl Builder<'_> {
             | Opcode::Phase
             | Opcode::Cnd => Err(malformed(
                 i,
-                "a ps_1_x instruction: the emulator does not run ps_1_x",
+                "a ps_1_x instruction: ps_1_x runs as its lowering (`core/ps1/run.rs`)",
             )),
         }
     }

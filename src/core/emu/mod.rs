@@ -640,7 +640,7 @@ impl fmt::Display for EmuError {
         match self {
             EmuError::NotRun { profile } => write!(
                 f,
-                "a {profile} shader: ps30 runs ps_2_0, ps_2_x and ps_3_0 pixel shaders ({profile} is read, checked, counted, assembled and listed: check, asm, disasm)"
+                "a {profile} shader: ps30 runs ps_1_1–ps_1_4, ps_2_0, ps_2_x and ps_3_0 pixel shaders ({profile} is read, checked, counted, assembled and listed: check, asm, disasm)"
             ),
             EmuError::Refused { profile, reason } => {
                 write!(f, "a {profile} shader: {reason}")
