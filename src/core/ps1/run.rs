@@ -9,8 +9,9 @@
 //!
 //! * **Ranges.** `c#` reads as [-1, 1] ("Constant register: -1 to +1",
 //!   values set by `SetPixelShaderConstantF` and `def` alike; Wine's
-//!   `constant_clamp_ps_test` sees 1.25 + -0.5 come out 0.5 from a ps_1_x
-//!   shader on Windows, 0.75 from ps_2_0); `v#` reads as [0, 1] ("Color
+//!   `constant_clamp_ps_test`, dlls/d3d9/tests/visual.c, holds Windows to
+//!   clamped constants in ps_1_x and unclamped ones in ps_2_0); `v#` reads
+//!   as [0, 1] ("Color
 //!   register: 0 to 1"; the emulator clamps them where they enter, as for
 //!   ps_2_0); every register a ps_1_x instruction writes holds
 //!   [-PixelShader1xMaxValue, +PixelShader1xMaxValue] (D3DCAPS9's
@@ -46,12 +47,21 @@
 //!   where a ps_1_4 shader leaves −0.3 in r0 of a float target, and
 //!   vkd3d-shader writes ps_1_x's r0 to the colour output with `_sat`.
 //!
-//! The texture-address instructions (`texbem`, `texbeml`, `bem`,
-//! `texreg2*`, `texm3x*`, `texdp3*`) are refused by name: ps30 does not run
-//! them yet.
+//! * The texture-address instructions: `texreg2ar`/`texreg2gb`/`texreg2rgb`
+//!   sample stage # at (a, r), (g, b), (r, g, b) of their source;
+//!   `texm3x2pad`/`texm3x3pad` take the dot product of coordinate # (xyz)
+//!   with the source's rgb as one row, `texm3x2tex`/`texm3x3tex` the last
+//!   row and sample stage # at the rows (u, v, and w where the texture has
+//!   it), `texm3x3` writes (rows, 1), `texdp3` writes the product in every
+//!   component and `texdp3tex` samples at (product, 0).
+//!
+//! Refused by name, not run yet: `texbem`, `texbeml` and `bem` (they need
+//! the stage's bump-environment matrix and luminance, state a draw does
+//! not carry yet), `texm3x2depth`, `texm3x3spec` and `texm3x3vspec`.
 //!
 //! Register plan of the lowered shader: ps_1_x's `r#` are `r0`–`r5`,
-//! ps_1_1–ps_1_3's `t#` as registers `r8`–`r11`, the clamped copies of
+//! ps_1_1–ps_1_3's `t#` as registers `r8`–`r11`, the rows of a texm sequence `r12`,
+//! the clamped copies of
 //! `c0`–`c7` `r16`–`r23`, scratch `r24`–`r31`; `c8`–`c11` hold the numbers
 //! the rules need. Inputs keep their names (`t#` coordinates, `v#`
 //! colours), so draws feed them as ps_2_0's. Slots: the first operation of
@@ -68,10 +78,11 @@ use crate::core::isa::{Opcode, RegFile, SamplerType, SlotCount};
 use crate::core::profile::Profile;
 use std::collections::BTreeSet;
 
-/// D3DCAPS9.PixelShader1xMaxValue unless told otherwise: 8, the range
-/// Direct3D 9 requires of a device that runs ps_1_4 ("-8 to +8"; ps_1_1–
-/// ps_1_3 need only 1). Devices report more (Wine's wined3d reports 1024 or
-/// FLT_MAX); `--ps1-max-value` sets it.
+/// D3DCAPS9.PixelShader1xMaxValue unless told otherwise: 8, the least a
+/// device that runs ps_1_4 has (`texcrd`'s page: "for pixel shader version
+/// 1_4, D3DCAPS9.PixelShader1xMaxValue must be a minimum of eight"; the cap's
+/// page: at least 1 for any pixel-shader hardware). Devices may report
+/// more; `--ps1-max-value` sets it.
 pub const DEFAULT_MAX_VALUE: f32 = 8.0;
 
 /// ps_1_1–ps_1_3's `t#` as registers: `r8`–`r11`.
@@ -80,6 +91,8 @@ const TEX_BASE: u32 = 8;
 const CONST_BASE: u32 = 16;
 /// The result of the first and of the second instruction of a pair.
 const RESULT: [u32; 2] = [24, 25];
+/// The rows of a texm sequence, one component each.
+const ROWS: u32 = 12;
 /// Modified sources (three) and one more scratch register.
 const SOURCE: u32 = 26;
 const SPARE: u32 = 29;
@@ -103,6 +116,7 @@ pub fn lower(program: &Program, file: &SourceFile, max_value: f32) -> Result<ir:
         inputs: BTreeSet::new(),
         samplers: BTreeSet::new(),
         pending: None,
+        row: 0,
     };
     l.clamp_constants(program);
     for (i, x) in program.instrs.iter().enumerate() {
@@ -178,6 +192,8 @@ struct Lower {
     /// The first instruction of a pair, computed, its write held back until
     /// the second has read its sources.
     pending: Option<(Dest, u32, Origin)>,
+    /// The next row of a texm sequence.
+    row: u8,
 }
 
 impl Lower {
@@ -352,6 +368,14 @@ impl Lower {
             }
             Opcode::TexLd | Opcode::TexCrd => self.texld(x, &d, r)?,
             Opcode::TexDepth => self.texdepth(),
+            Opcode::TexReg2Ar | Opcode::TexReg2Gb | Opcode::TexReg2Rgb => self.texreg(x, &d, r)?,
+            Opcode::TexDp3
+            | Opcode::TexDp3Tex
+            | Opcode::TexM3x2Pad
+            | Opcode::TexM3x2Tex
+            | Opcode::TexM3x3Pad
+            | Opcode::TexM3x3Tex
+            | Opcode::TexM3x3 => self.matrix_row(x, &d, r)?,
             op if op.class() == crate::core::isa::Class::Texture || op == Opcode::Bem => {
                 return Err(format!("`{}`", op.info().mnemonic));
             }
@@ -420,6 +444,90 @@ impl Lower {
             self.emit(Opcode::Mov, false, temp(r, 15), vec![c]);
         }
         self.write(d, r);
+        Ok(())
+    }
+
+    /// `texreg2ar`, `texreg2gb`, `texreg2rgb`: sample stage # (the
+    /// destination's number) at (a, r), (g, b) or (r, g, b) of the source
+    /// register.
+    fn texreg(&mut self, x: &Instr, d: &Dest, r: u32) -> Result<(), String> {
+        let s = x
+            .src
+            .first()
+            .ok_or("a texture-address instruction without a source")?;
+        let from = self.read(s, SOURCE);
+        let pick: [u8; 4] = match x.op {
+            Opcode::TexReg2Ar => [3, 0, 0, 0],
+            Opcode::TexReg2Gb => [1, 2, 2, 2],
+            _ => [0, 1, 2, 2],
+        };
+        let coordinate = Src {
+            swizzle: Swizzle(pick.map(|c| from.swizzle.0[c as usize])),
+            ..from
+        };
+        self.sample(r, 15, coordinate, d.reg.index);
+        self.write(
+            &Dest {
+                mask: WriteMask::ALL,
+                ..*d
+            },
+            r,
+        );
+        Ok(())
+    }
+
+    /// The texm and texdp3 family: one dot product of texture coordinate
+    /// # (the destination's number, xyz) with the source register's rgb
+    /// per instruction. `texm3x2pad`/`texm3x3pad` keep theirs in the next
+    /// component of the row register; `texm3x2tex`/`texm3x3tex` sample the
+    /// destination's stage at the rows, `texm3x3` writes (rows, 1),
+    /// `texdp3` the product in every component, `texdp3tex` samples at
+    /// (product, 0).
+    fn matrix_row(&mut self, x: &Instr, d: &Dest, r: u32) -> Result<(), String> {
+        let s = x
+            .src
+            .first()
+            .ok_or("a texture-address instruction without a source")?;
+        let from = self.read(s, SOURCE);
+        let n = d.reg.index;
+        let c = self.coordinate(n);
+        let rows = Src::plain(reg(RegFile::Temp, ROWS));
+        let whole = Dest {
+            mask: WriteMask::ALL,
+            ..*d
+        };
+        match x.op {
+            Opcode::TexDp3 => {
+                self.emit(Opcode::Dp3, false, temp(r, 15), vec![c, from]);
+                self.write(&whole, r);
+                return Ok(());
+            }
+            Opcode::TexDp3Tex => {
+                self.emit(Opcode::Dp3, false, temp(ROWS, 1), vec![c, from]);
+                self.emit(Opcode::Mov, false, temp(ROWS, 2), vec![k(K, 3)]);
+                self.sample(r, 15, rows, n);
+                self.write(&whole, r);
+                return Ok(());
+            }
+            _ => {}
+        }
+        let row = self.row.min(2);
+        self.emit(Opcode::Dp3, false, temp(ROWS, 1 << row), vec![c, from]);
+        if matches!(x.op, Opcode::TexM3x2Pad | Opcode::TexM3x3Pad) {
+            self.row += 1;
+            return Ok(());
+        }
+        self.row = 0;
+        if x.op == Opcode::TexM3x3 {
+            self.emit(Opcode::Mov, false, temp(r, 7), vec![rows]);
+            self.emit(Opcode::Mov, false, temp(r, 8), vec![k(K, 1)]);
+        } else {
+            if x.op == Opcode::TexM3x2Tex {
+                self.emit(Opcode::Mov, false, temp(ROWS, 4), vec![k(K, 3)]);
+            }
+            self.sample(r, 15, rows, n);
+        }
+        self.write(&whole, r);
         Ok(())
     }
 

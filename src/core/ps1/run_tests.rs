@@ -36,7 +36,9 @@ fn r1_with(version: &str, body: &str, max: f32, setup: impl FnOnce(&mut Draw)) -
         "{version}\ndef c6, 0.5, 0.5, 0.5, 0.5\ndef c7, 0.03125, 0.03125, 0.03125, 0.03125\n\
          {body}mad r0, r1, c7, c6\n"
     );
-    let out = pixel_with(&text, max, setup).color[0].as_ref().expect("oC0")[0];
+    let out = pixel_with(&text, max, setup).color[0]
+        .as_ref()
+        .expect("oC0")[0];
     out.map(|v| (v - 0.5) * 32.0)
 }
 
@@ -52,8 +54,8 @@ fn with_v0(d: &mut Draw) {
 
 #[test]
 fn constants_read_as_minus_one_to_one() {
-    // Wine's constant_clamp_ps_test in ps30's words: (1.25, -0.5, -1.5, 1)
-    // + (-0.5, 1.25, 2, 1) reads (1, -0.5, -1, 1) + (-0.5, 1, 1, 1)
+    // The rule Wine's constant_clamp_ps_test holds Windows to, with numbers
+    // of ps30's own: (1.25, -0.5, -1.5, 1) + (-0.5, 1.25, 2, 1) reads (1, -0.5, -1, 1) + (-0.5, 1, 1, 1)
     // = (0.5, 0.5, 0, 2); 2 is inside the range (8).
     let got = r1_with("ps_1_1", "add r1, c0, c1\n", 8.0, |d| {
         d.constants.float = vec![[1.25, -0.5, -1.5, 1.0], [-0.5, 1.25, 2.0, 1.0]];
@@ -147,8 +149,7 @@ fn cnd_cmp_lrp_dot_products() {
     let body = format!("def c0, 0, 0, 0, 0.5\n{consts}mov r0, c0\ncnd r1, r0.a, c1, c2\n");
     assert_eq!(r1("ps_1_1", &body), [-1.0, 0.0, 0.125, 0.375]);
     // r0.a = 0.5078125 (0.5 + 1/128) is: c1.
-    let body =
-        format!("def c0, 0, 0, 0, 0.5078125\n{consts}mov r0, c0\ncnd r1, r0.a, c1, c2\n");
+    let body = format!("def c0, 0, 0, 0, 0.5078125\n{consts}mov r0, c0\ncnd r1, r0.a, c1, c2\n");
     assert_eq!(r1("ps_1_1", &body), [1.0, 0.25, 0.5, 0.75]);
     // ps_1_4's cnd per component of any source: c0 = (0.75, 0.5, 0, 1):
     // x above → c1.x, y not → c2.y, z not → c2.z, w above → c1.w.
@@ -165,8 +166,14 @@ fn cnd_cmp_lrp_dot_products() {
     assert_eq!(r1("ps_1_1", &body), [-0.5, 0.0625, 0.21875, 0.46875]);
     // dp3: 1·−1 + 0.25·0 + 0.5·0.125 = −0.9375, replicated; dp4 adds
     // 0.75·0.375 = 0.28125: −0.65625.
-    assert_eq!(r1("ps_1_1", &format!("{consts}dp3 r1, c1, c2\n")), [-0.9375; 4]);
-    assert_eq!(r1("ps_1_2", &format!("{consts}dp4 r1, c1, c2\n")), [-0.65625; 4]);
+    assert_eq!(
+        r1("ps_1_1", &format!("{consts}dp3 r1, c1, c2\n")),
+        [-0.9375; 4]
+    );
+    assert_eq!(
+        r1("ps_1_2", &format!("{consts}dp4 r1, c1, c2\n")),
+        [-0.65625; 4]
+    );
     // mad, sub: c1·c2 + c1 = (0, 0.25, 0.5625, 1.03125); c1 − c2 =
     // (2, 0.25, 0.375, 0.375).
     let got = r1("ps_1_1", &format!("{consts}mad r1, c1, c2, c1\n"));
@@ -209,13 +216,18 @@ fn tex_texcoord_and_texkill() {
     // tex t1 samples stage 1 at coordinate 1: u = 0.75 is the right texel
     // (point filtering); texcoord t0 is t0 clamped to [0, 1] with alpha 1:
     // (1, 0, 0.5, 1) from (1.5, -0.25, 0.5, 7).
-    let got = r1_with("ps_1_1", "texcoord t0\ntex t1\nadd r1, t0, t1\n", 8.0, |d| {
-        d.inputs
-            .push((2, LinearInput::constant([1.5, -0.25, 0.5, 7.0])));
-        d.inputs
-            .push((3, LinearInput::constant([0.75, 0.5, 0.0, 1.0])));
-        bind(d, 1);
-    });
+    let got = r1_with(
+        "ps_1_1",
+        "texcoord t0\ntex t1\nadd r1, t0, t1\n",
+        8.0,
+        |d| {
+            d.inputs
+                .push((2, LinearInput::constant([1.5, -0.25, 0.5, 7.0])));
+            d.inputs
+                .push((3, LinearInput::constant([0.75, 0.5, 0.0, 1.0])));
+            bind(d, 1);
+        },
+    );
     // (1, 0, 0.5, 1) + (1, 0, 0.5, 0)
     assert_eq!(got, [2.0, 0.0, 1.0, 1.0]);
     // texkill looks at x, y, z of the coordinate, not w.
@@ -267,6 +279,86 @@ fn ps_1_4_texld_phases_and_texdepth() {
     assert_eq!(depth(0.25, 0.0), 1.0);
     assert_eq!(depth(1.0, 0.5), 1.0);
     assert_eq!(depth(-0.25, 0.5), 0.0);
+}
+
+/// Stage 0: one texel S = (0.375, 0.75, 0.5, 0.25) read at t0; stage
+/// `stage` (if the shader samples one more): the 2×1 texture; coordinates
+/// 1–3 as given.
+fn address(version: &str, body: &str, stage: Option<u32>, coordinates: &[[f32; 4]]) -> [f32; 4] {
+    const S: [[f32; 4]; 1] = [[0.375, 0.75, 0.5, 0.25]];
+    r1_with(version, body, 8.0, |d| {
+        d.inputs
+            .push((2, LinearInput::constant([0.5, 0.5, 0.0, 1.0])));
+        for (i, c) in coordinates.iter().enumerate() {
+            d.inputs.push((3 + i as u32, LinearInput::constant(*c)));
+        }
+        d.samplers.push((
+            0,
+            Texture {
+                width: 1,
+                height: 1,
+                texels: &S,
+            }
+            .into(),
+            SamplerState::default(),
+        ));
+        if let Some(stage) = stage {
+            bind(d, stage);
+        }
+    })
+}
+
+#[test]
+fn texreg2_samples_at_the_registers_components() {
+    // (a, r) = (0.25, 0.375): u = 0.25 is the left texel of the 2×1
+    // texture; (g, b) = (0.75, 0.5): the right one; (r, g, b): u = 0.375,
+    // the left.
+    let left = TEXELS[0];
+    let right = TEXELS[1];
+    let run = |op: &str, version: &str| {
+        address(
+            version,
+            &format!("tex t0\n{op} t1, t0\nmov r1, t1\n"),
+            Some(1),
+            &[],
+        )
+    };
+    assert_eq!(run("texreg2ar", "ps_1_1"), left);
+    assert_eq!(run("texreg2gb", "ps_1_1"), right);
+    assert_eq!(run("texreg2rgb", "ps_1_2"), left);
+}
+
+#[test]
+fn texm_and_texdp3_take_dot_products_with_the_coordinates() {
+    let (left, right) = (TEXELS[0], TEXELS[1]);
+    let (x, y, z) = (
+        [1.0, 0.0, 0.0, 0.0],
+        [0.0, 1.0, 0.0, 0.0],
+        [0.0, 0.0, 1.0, 0.0],
+    );
+    // texm3x2: u = t1·S.rgb, v = t2·S.rgb. t1 = x: u = 0.375, the left
+    // texel; t1 = y: u = 0.75, the right one (v = 0.5 in both).
+    let body = "tex t0\ntexm3x2pad t1, t0\ntexm3x2tex t2, t0\nmov r1, t2\n";
+    assert_eq!(address("ps_1_1", body, Some(2), &[x, z]), left);
+    assert_eq!(address("ps_1_1", body, Some(2), &[y, z]), right);
+    // texm3x3: the rows are (x·S, y·S, z·S) = (0.375, 0.75, 0.5), alpha 1;
+    // texm3x3tex samples at u = 0.375.
+    let body = "tex t0\ntexm3x3pad t1, t0\ntexm3x3pad t2, t0\ntexm3x3 t3, t0\nmov r1, t3\n";
+    assert_eq!(
+        address("ps_1_2", body, None, &[x, y, z]),
+        [0.375, 0.75, 0.5, 1.0]
+    );
+    let body = "tex t0\ntexm3x3pad t1, t0\ntexm3x3pad t2, t0\ntexm3x3tex t3, t0\nmov r1, t3\n";
+    assert_eq!(address("ps_1_1", body, Some(3), &[x, y, z]), left);
+    // texdp3: t1 = (1, 2, 0.5): 0.375 + 1.5 + 0.25 = 2.125 everywhere;
+    // texdp3tex samples at (t1·S, 0): t1 = y gives u = 0.75, the right texel.
+    let body = "tex t0\ntexdp3 t1, t0\nmov r1, t1\n";
+    assert_eq!(
+        address("ps_1_2", body, None, &[[1.0, 2.0, 0.5, 0.0]]),
+        [2.125; 4]
+    );
+    let body = "tex t0\ntexdp3tex t1, t0\nmov r1, t1\n";
+    assert_eq!(address("ps_1_2", body, Some(1), &[y]), right);
 }
 
 #[test]
