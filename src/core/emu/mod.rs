@@ -91,6 +91,8 @@ mod testasm;
 mod tests;
 #[cfg(test)]
 mod tests_layered;
+#[cfg(test)]
+mod tests_ps1;
 mod texop;
 mod texop3;
 pub mod vertex;

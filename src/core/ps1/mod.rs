@@ -36,8 +36,6 @@
 pub mod listing;
 pub mod rules;
 pub mod run;
-#[cfg(test)]
-mod run_tests;
 pub mod text;
 pub mod tokens;
 

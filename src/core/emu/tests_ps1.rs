@@ -1,5 +1,5 @@
-//! ps_1_x run through the emulator: each rule of `run.rs`, with the
-//! expected value worked out by hand beside every case.
+//! ps_1_x run through the emulator: each rule of `core/ps1/run.rs`, with
+//! the expected value worked out by hand beside every case.
 
 use crate::core::emu::{self, Draw, LinearInput, SamplerState, Texture};
 use crate::core::load::{self, Options};
