@@ -388,3 +388,30 @@ fn executed_slots_are_the_programs() {
     });
     assert_eq!(out.executed[0], 3);
 }
+
+#[test]
+fn per_line_counts_find_every_instruction() {
+    // Six lines of a 1×1 draw: each runs once; texcrd and the pair's first
+    // half execute one slot, the nops, the phase and the pair's second
+    // half none.
+    let text = "ps_1_4\ntexcrd r1.rgb, t0\nnop\nphase\nnop\nmov r0.rgb, r1\n+mov r0.a, c0\n";
+    let loaded = load::load_str("t.psh", text, &Options::default()).expect("loads");
+    let compiled = emu::compile(&loaded.shader).expect("compiles");
+    let mut d = Draw::new(1, 1);
+    d.count_instructions = true;
+    d.inputs.push((2, LinearInput::constant([0.5; 4])));
+    let out = emu::run(&compiled, &d).expect("runs");
+    let lines = emu::lines::pixel_lines(&loaded.shader, &loaded.file, &out.instructions);
+    let runs: Vec<(usize, u64, u64)> = lines.iter().map(|l| (l.line, l.runs, l.executed)).collect();
+    assert_eq!(
+        runs,
+        [
+            (2, 1, 1),
+            (3, 1, 0),
+            (4, 1, 0),
+            (5, 1, 0),
+            (6, 1, 1),
+            (7, 1, 0)
+        ]
+    );
+}

@@ -120,10 +120,17 @@ pub fn lower(program: &Program, file: &SourceFile, max_value: f32) -> Result<ir:
     };
     l.clamp_constants(program);
     for (i, x) in program.instrs.iter().enumerate() {
-        if matches!(x.op, Opcode::Def | Opcode::Phase | Opcode::Nop) {
+        if x.op == Opcode::Def {
             continue;
         }
         l.origin = Origin::at(x.span);
+        if matches!(x.op, Opcode::Phase | Opcode::Nop) {
+            // Nothing happens; a `nop` of the lowering stands for it, so
+            // that per-line counts find every instruction.
+            l.charge = SlotCount::default();
+            l.nop();
+            continue;
+        }
         l.charge = x.slots();
         let paired = program.instrs.get(i + 1).is_some_and(|n| n.coissue);
         l.instruction(x, paired).map_err(|what| {
@@ -212,6 +219,21 @@ impl Lower {
             predicate: None,
             dst: Some(dst),
             src,
+            origin: self.origin.clone(),
+        });
+    }
+
+    fn nop(&mut self) {
+        self.slots.push(ir::Slots::default());
+        self.out.push(Instruction {
+            op: Opcode::Nop,
+            sat: false,
+            pp: false,
+            centroid: false,
+            compare: None,
+            predicate: None,
+            dst: None,
+            src: Vec::new(),
             origin: self.origin.clone(),
         });
     }

@@ -184,6 +184,8 @@ pub(super) fn refuse_fog(shader: &Shader, fog: Option<&Fog>) -> Result<(), DrawF
     let Some(fog) = fog else {
         return Ok(());
     };
+    // A ps_1_x shader writes oDepth through its lowering (texdepth).
+    let shader = shader.runnable().unwrap_or(shader);
     let odepth = shader.program().instructions.iter().any(|i| {
         i.dst
             .as_ref()
