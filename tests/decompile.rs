@@ -673,8 +673,8 @@ fn a_block_written_out_four_times_is_a_loop() {
 }
 
 /// ps_1_x is refused by name: Microsoft's compiler writes no ps_1_x from
-/// HLSL any more (X3539), and the emulator does not run ps_1_x, so no HLSL
-/// could be shown to mean what the shader meant.
+/// HLSL any more (X3539), so no HLSL could be compiled back and shown to
+/// mean what the shader meant.
 #[test]
 fn ps_1_x_is_refused_by_name() {
     let options = load::Options::default();

@@ -40,6 +40,7 @@ mod malformed;
 mod oracle;
 mod pixel_history;
 mod profile_list;
+mod ps1_run;
 mod quads;
 mod reference_values;
 mod render;

@@ -286,6 +286,22 @@ pub struct SourceArgs {
     /// ps_2_a, ps_2_b, minimum.
     #[arg(long, value_name = "LIST", value_parser = ps30::core::profile::Ps2xCaps::parse)]
     pub caps: Option<ps30::core::profile::Ps2xCaps>,
+    /// The range of a ps_1_x shader's registers when it runs:
+    /// D3DCAPS9.PixelShader1xMaxValue, at least 1 (8 by default, what a
+    /// ps_1_4 device must have).
+    #[arg(long, value_name = "V", value_parser = parse_ps1_max, default_value_t = ps30::core::ps1::run::DEFAULT_MAX_VALUE)]
+    pub ps1_max_value: f32,
+}
+
+/// `--ps1-max-value`: a finite number of at least 1 (Direct3D 9: "the value
+/// is >= 1.0 for any hardware that supports pixel shaders").
+fn parse_ps1_max(text: &str) -> Result<f32, String> {
+    match text.parse::<f32>() {
+        Ok(v) if v.is_finite() && v >= 1.0 => Ok(v),
+        _ => Err(format!(
+            "`{text}`: PixelShader1xMaxValue is a finite number of at least 1"
+        )),
+    }
 }
 
 impl SourceArgs {
@@ -296,6 +312,7 @@ impl SourceArgs {
             max_expanded: self.max_expanded,
             strict: self.strict,
             caps: self.caps,
+            ps1_max_value: self.ps1_max_value,
         }
     }
 }

@@ -505,12 +505,51 @@ impl Info {
 pub struct Shader {
     program: Program,
     info: Info,
+    /// What the emulator and the translation run in its place, if not
+    /// itself: a ps_1_x shader's lowering (`core/ps1/run.rs`), or why it
+    /// has none.
+    runs_as: Option<Arc<Result<Shader, String>>>,
 }
 
 impl Shader {
     /// Only the validator builds shaders.
     pub(crate) fn new_validated(program: Program, info: Info) -> Shader {
-        Shader { program, info }
+        Shader {
+            program,
+            info,
+            runs_as: None,
+        }
+    }
+
+    /// This shader with the input and sampler declarations given.
+    pub(crate) fn with_declarations(
+        mut self,
+        inputs: Vec<InputDecl>,
+        samplers: Vec<SamplerDecl>,
+    ) -> Shader {
+        self.program.inputs = inputs;
+        self.program.samplers = samplers;
+        self
+    }
+
+    /// This shader, run as `lowered` (a ps_1_x shader as the IR the
+    /// emulator executes), or refused with the reason `lowered` gives.
+    pub(crate) fn running_as(mut self, lowered: Result<Shader, String>) -> Shader {
+        self.runs_as = Some(Arc::new(lowered));
+        self
+    }
+
+    /// The shader the emulator and the translation execute: this one, or
+    /// the lowering of a ps_1_x shader (its instructions spelled as
+    /// ps_2_0-like operations with the modifiers, clamps and co-issue made
+    /// explicit; the same spans, the slots on the first operation of each
+    /// instruction). `Err` says why a ps_1_x shader cannot run.
+    pub fn runnable(&self) -> Result<&Shader, &str> {
+        match self.runs_as.as_deref() {
+            None => Ok(self),
+            Some(Ok(s)) => Ok(s),
+            Some(Err(why)) => Err(why),
+        }
     }
 
     /// The program.

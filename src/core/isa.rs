@@ -1132,14 +1132,20 @@ impl Profile {
         }
     }
 
-    /// Whether ps30 runs shaders of this profile: the pixel shaders ps_2_0,
-    /// ps_2_x (and the ps_2_a/ps_2_b shaders compiled to it) and ps_3_0 in
-    /// the emulator, the GPU backend, `render` and `compare`; vs_2_0, vs_2_x
-    /// and vs_3_0 in the vertex stage (`emu::vertex`, `run --vertices`).
+    /// Whether ps30 runs shaders of this profile: the pixel shaders ps_1_1–
+    /// ps_1_4 (through their lowering, `core/ps1/run.rs`; a shader using
+    /// what it does not lower is refused by name), ps_2_0, ps_2_x (and the
+    /// ps_2_a/ps_2_b shaders compiled to it) and ps_3_0 in the emulator,
+    /// the GPU backend, `render` and `compare`; vs_2_0, vs_2_x and vs_3_0 in
+    /// the vertex stage (`emu::vertex`, `run --vertices`).
     pub fn runs(self) -> bool {
         matches!(
             self,
-            Profile::Ps2_0
+            Profile::Ps1_1
+                | Profile::Ps1_2
+                | Profile::Ps1_3
+                | Profile::Ps1_4
+                | Profile::Ps2_0
                 | Profile::Ps2X
                 | Profile::Ps2A
                 | Profile::Ps2B

@@ -32,6 +32,9 @@ pub struct Options {
     /// `--caps`: the capabilities a ps_2_x shader is held to
     /// (`core/valid/caps.rs`); `None`: the assembler's, every one on.
     pub caps: Option<crate::core::profile::Ps2xCaps>,
+    /// `--ps1-max-value`: D3DCAPS9.PixelShader1xMaxValue, the range of a
+    /// ps_1_x shader's registers when it runs (`core/ps1/run.rs`).
+    pub ps1_max_value: f32,
 }
 
 impl Default for Options {
@@ -41,6 +44,7 @@ impl Default for Options {
             max_expanded: repeat::DEFAULT_MAX_EXPANDED,
             strict: false,
             caps: None,
+            ps1_max_value: crate::core::ps1::run::DEFAULT_MAX_VALUE,
         }
     }
 }
@@ -203,7 +207,7 @@ struct Stages {
 /// Parses, expands and validates a source file.
 pub fn load(file: SourceFile, options: &Options) -> Result<Loaded, SourceError> {
     if let Some(profile) = ps1_version(&file.text) {
-        return ps1_stages(file, profile).map(|(loaded, _)| loaded);
+        return ps1_stages(file, profile, options).map(|(loaded, _)| loaded);
     }
     stages(file, options).map(|s| s.loaded)
 }
@@ -223,8 +227,9 @@ pub fn ps1_version(text: &str) -> Option<Profile> {
 fn ps1_stages(
     file: SourceFile,
     profile: Profile,
+    options: &Options,
 ) -> Result<(Loaded, crate::core::ps1::Program), SourceError> {
-    match crate::core::ps1::load(&file, profile) {
+    match crate::core::ps1::load(&file, profile, options.ps1_max_value) {
         Ok(l) => Ok((
             Loaded {
                 file,
@@ -249,7 +254,7 @@ pub fn load_str(name: &str, text: &str, options: &Options) -> Result<Loaded, Sou
 /// written where they stand.
 pub fn assemble(file: SourceFile, options: &Options) -> Result<(Loaded, Vec<u32>), SourceError> {
     if let Some(profile) = ps1_version(&file.text) {
-        let (loaded, program) = ps1_stages(file, profile)?;
+        let (loaded, program) = ps1_stages(file, profile, options)?;
         return Ok((loaded, crate::core::ps1::tokens::encode(&program)));
     }
     let s = stages(file, options)?;

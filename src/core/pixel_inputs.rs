@@ -43,12 +43,14 @@ pub const SLOTS: u32 = 10;
 /// The first slot of `t0` in ps_2_0 and ps_2_x.
 const TEXCOORD_BASE: u32 = 2;
 
-/// Whether the profile's pixel inputs are ps_2_0's (`v0`, `v1`, `t0`–`t7`).
+/// Whether the profile's pixel inputs are ps_2_0's (`v0`, `v1`, `t0`–`t7`):
+/// ps_1_x's are the same two colours and texture coordinates.
 fn legacy(profile: Profile) -> bool {
-    matches!(
-        profile,
-        Profile::Ps2_0 | Profile::Ps2X | Profile::Ps2A | Profile::Ps2B
-    )
+    profile.is_ps1()
+        || matches!(
+            profile,
+            Profile::Ps2_0 | Profile::Ps2X | Profile::Ps2A | Profile::Ps2B
+        )
 }
 
 /// The slot of input register `file`/`index` in a pixel shader of

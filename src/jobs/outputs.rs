@@ -44,6 +44,8 @@ const LETTERS: [char; 4] = ['r', 'g', 'b', 'a'];
 /// The outputs of `shader`, with the statistics of `target` (the target
 /// bound to `oC0`) for what it stores.
 pub fn summarise(shader: &Shader, target: &RenderTarget) -> Vec<OutputRegister> {
+    // A ps_1_x shader's colour is its r0, which its lowering writes to oC0.
+    let shader = shader.runnable().unwrap_or(shader);
     let mut masks: Vec<(RegFile, u32, u8)> = Vec::new();
     for instr in shader.instructions() {
         let Some(dst) = &instr.dst else { continue };

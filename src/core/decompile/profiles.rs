@@ -8,8 +8,8 @@
 //!
 //! ps_1_x is refused by name: Microsoft's compiler no longer writes ps_1_x
 //! from HLSL (`D3DCompile` refuses the targets, X3539), so HLSL for it
-//! cannot be recompiled for the same profile, and the emulator does not
-//! run ps_1_x, so nothing could show the HLSL means what the shader meant.
+//! cannot be recompiled for the same profile, so nothing could show the
+//! HLSL means what the shader meant.
 
 use super::{DecompileError, Target};
 use crate::core::ir::InputDecl;
@@ -30,8 +30,8 @@ pub(crate) fn target(profile: Profile) -> Result<Target, DecompileError> {
         p if p.is_ps1() => {
             return Err(DecompileError::Unsupported(format!(
                 "a {p} shader: Microsoft's compiler writes no ps_1_x from HLSL any more \
-                 (X3539), so HLSL for it could not be compiled back for {p}, and ps30 does not \
-                 run ps_1_x to show that the HLSL means the same"
+                 (X3539), so HLSL for it could not be compiled back for {p} and run beside it \
+                 to show that it means the same"
             )))
         }
         p => {

@@ -842,7 +842,7 @@ impl Builder<'_> {
             | Opcode::Phase
             | Opcode::Cnd => Err(malformed(
                 i,
-                "a ps_1_x instruction: the emulator does not run ps_1_x",
+                "a ps_1_x instruction: ps_1_x runs as its lowering (`core/ps1/run.rs`)",
             )),
         }
     }
@@ -1159,6 +1159,10 @@ pub fn compile(shader: &Shader) -> Result<Compiled, EmuError> {
 
 /// [`compile`], each micro-op charging its instruction's slots under `table`.
 pub fn compile_under(shader: &Shader, table: SlotTable) -> Result<Compiled, EmuError> {
+    let shader = shader.runnable().map_err(|why| EmuError::Refused {
+        profile: shader.program().profile,
+        reason: why.to_string(),
+    })?;
     let program = shader.program();
     let pixel = program.profile.stage() == crate::core::profile::Stage::Pixel;
     if !program.profile.runs() || !pixel {

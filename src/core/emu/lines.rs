@@ -51,7 +51,37 @@ pub fn pixel_lines(
     if counts.is_empty() {
         return Vec::new();
     }
-    gather(shader, file, |i| counts.get(i).copied().unwrap_or_default())
+    let ran = ops_run(shader);
+    gather(shader, file, |i| {
+        ran.get(i)
+            .and_then(|&op| counts.get(op))
+            .copied()
+            .unwrap_or_default()
+    })
+}
+
+/// For each instruction of `shader`, the index of the operation the
+/// emulator counts for it: its own, or for a ps_1_x shader the first
+/// operation of its lowering with the instruction's span (every
+/// instruction has one; ps_1_x has no flow control, so the operations of
+/// one instruction all run as often).
+fn ops_run(shader: &Shader) -> Vec<usize> {
+    let n = shader.instructions().len();
+    let Ok(run) = shader.runnable() else {
+        return (0..n).collect();
+    };
+    if std::ptr::eq(run, shader) {
+        return (0..n).collect();
+    }
+    let mut first = std::collections::HashMap::new();
+    for (k, op) in run.instructions().iter().enumerate() {
+        first.entry(op.origin.span).or_insert(k);
+    }
+    shader
+        .instructions()
+        .iter()
+        .map(|ins| first.get(&ins.origin.span).copied().unwrap_or(usize::MAX))
+        .collect()
 }
 
 /// A vertex shader's lines from `runs`, each instruction's runs over the

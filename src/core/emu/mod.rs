@@ -91,6 +91,8 @@ mod testasm;
 mod tests;
 #[cfg(test)]
 mod tests_layered;
+#[cfg(test)]
+mod tests_ps1;
 mod texop;
 mod texop3;
 pub mod vertex;
@@ -576,6 +578,12 @@ pub enum EmuError {
     NotRun {
         profile: crate::core::profile::Profile,
     },
+    /// A shader of a profile ps30 runs uses something it does not run yet
+    /// (`reason` names it and its place).
+    Refused {
+        profile: crate::core::profile::Profile,
+        reason: String,
+    },
     /// The IR and its `Info` disagree, or use something the emulator cannot
     /// represent (`index` is the instruction).
     Malformed { index: usize, reason: String },
@@ -634,8 +642,11 @@ impl fmt::Display for EmuError {
         match self {
             EmuError::NotRun { profile } => write!(
                 f,
-                "a {profile} shader: ps30 runs ps_2_0, ps_2_x and ps_3_0 pixel shaders ({profile} is read, checked, counted, assembled and listed: check, asm, disasm)"
+                "a {profile} shader: ps30 runs ps_1_1–ps_1_4, ps_2_0, ps_2_x and ps_3_0 pixel shaders ({profile} is read, checked, counted, assembled and listed: check, asm, disasm)"
             ),
+            EmuError::Refused { profile, reason } => {
+                write!(f, "a {profile} shader: {reason}")
+            }
             EmuError::Malformed { index, reason } => {
                 write!(f, "instruction {}: cannot emulate: {}", index, reason)
             }

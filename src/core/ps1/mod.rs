@@ -24,8 +24,9 @@
 //! [`load`] runs them in order for [`crate::core::load`], and gives the rest
 //! of ps30 a [`Shader`] whose instructions carry the operations, registers
 //! and slots (what `check` and `profile` read); the ps_1_x modifiers stay in
-//! the [`Program`]. [`Profile::runs`] is false for ps_1_x: the emulator does
-//! not execute them.
+//! the [`Program`]. What the emulator and the translation execute is
+//! [`run`]'s lowering of the program, which the shader carries
+//! ([`ir::Shader::runnable`]).
 //!
 //! Slots are Microsoft's count: one per instruction but `def`, `phase` and
 //! `nop` (none), the second of a co-issued pair costing nothing; the
@@ -34,6 +35,7 @@
 
 pub mod listing;
 pub mod rules;
+pub mod run;
 pub mod text;
 pub mod tokens;
 
@@ -205,10 +207,19 @@ pub struct Loaded {
 
 /// Parses and checks a ps_1_x source, gathering every diagnostic; the
 /// profile is the one its version line names.
-pub fn load(file: &SourceFile, profile: Profile) -> Result<Loaded, Diagnostics> {
+/// The shader carries its lowering for the emulator, the range of its
+/// registers `max_value` (D3DCAPS9.PixelShader1xMaxValue).
+pub fn load(file: &SourceFile, profile: Profile, max_value: f32) -> Result<Loaded, Diagnostics> {
     let program = text::parse(&file.text, profile)?;
     rules::check(&program)?;
-    let shader = shader_of(&program);
+    let lowered = run::lower(&program, file, max_value);
+    let mut shader = shader_of(&program);
+    if let Ok(l) = &lowered {
+        // What a draw feeds and binds is the lowering's: the same names.
+        let (inputs, samplers) = (l.program().inputs.clone(), l.program().samplers.clone());
+        shader = shader.with_declarations(inputs, samplers);
+    }
+    let shader = shader.running_as(lowered);
     Ok(Loaded { program, shader })
 }
 

@@ -197,9 +197,12 @@ pub fn translate_specialised(
     spec: &Specialisation,
 ) -> Result<Translation, TranslateError> {
     let profile = shader.program().profile;
+    let shader = shader
+        .runnable()
+        .map_err(|why| TranslateError::Unsupported(format!("a {profile} shader: {why}")))?;
     if !profile.runs() || profile.stage() != crate::core::profile::Stage::Pixel {
         return Err(TranslateError::Unsupported(format!(
-            "a {profile} shader: ps30 translates ps_2_0, ps_2_x and ps_3_0 pixel shaders"
+            "a {profile} shader: ps30 translates ps_1_1–ps_1_4, ps_2_0, ps_2_x and ps_3_0 pixel shaders"
         )));
     }
     let mut module = naga::Module::default();
