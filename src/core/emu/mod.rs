@@ -498,6 +498,32 @@ pub struct DrawOutput {
     pub instructions: Vec<InstructionCount>,
 }
 
+impl DrawOutput {
+    /// A `w × h` output whose values came from elsewhere (a GPU), which
+    /// counts nothing: no executed slots, quads, gradients or per-line
+    /// counts.
+    pub fn uncounted(
+        (w, h): (u32, u32),
+        color: Vec<Option<Vec<[f32; 4]>>>,
+        depth: Option<Vec<f32>>,
+        killed: Vec<bool>,
+    ) -> Self {
+        DrawOutput {
+            width: w,
+            height: h,
+            color,
+            depth,
+            killed,
+            executed: vec![0; w as usize * h as usize],
+            quads_x: w.div_ceil(2),
+            quad_executed: Vec::new(),
+            quad_divergent: Vec::new(),
+            gradients: Vec::new(),
+            instructions: Vec::new(),
+        }
+    }
+}
+
 /// What ran one instruction over a draw ([`Draw::count_instructions`]).
 ///
 /// Each time the executor charges the instruction's slots — an `if`'s

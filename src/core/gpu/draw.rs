@@ -92,20 +92,12 @@ impl GpuOutput {
     /// one): colours, depth and killed pixels as drawn; executed counts are
     /// zero and the per-quad statistics empty — a GPU counts nothing.
     pub fn into_draw_output(self) -> emu::DrawOutput {
-        let n = self.width as usize * self.height as usize;
-        emu::DrawOutput {
-            width: self.width,
-            height: self.height,
-            color: self.color,
-            depth: self.depth,
-            killed: self.killed,
-            executed: vec![0; n],
-            quads_x: self.width.div_ceil(2),
-            quad_executed: Vec::new(),
-            quad_divergent: Vec::new(),
-            gradients: Vec::new(),
-            instructions: Vec::new(),
-        }
+        emu::DrawOutput::uncounted(
+            (self.width, self.height),
+            self.color,
+            self.depth,
+            self.killed,
+        )
     }
 }
 

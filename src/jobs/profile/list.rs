@@ -121,17 +121,8 @@ pub fn profile_list(
     // Divergent gradients only: the LOD warnings need the textures bound,
     // which the list's own run reports per step.
     let out = DrawOutput {
-        width: 0,
-        height: 0,
-        color: Vec::new(),
-        depth: None,
-        killed: Vec::new(),
-        executed: Vec::new(),
-        quads_x: 0,
-        quad_executed: Vec::new(),
-        quad_divergent: Vec::new(),
         gradients: gathered.gradients.clone(),
-        instructions: Vec::new(),
+        ..DrawOutput::uncounted((0, 0), Vec::new(), None, Vec::new())
     };
     let found = findings(&out, &Draw::new(1, 1), file);
     Ok(ListProfile {

@@ -725,17 +725,8 @@ fn geometry_draw(
         _ => executed_static.max.saturating_mul(drawn.shaded),
     };
     let summary = DrawOutput {
-        width: 0,
-        height: 0,
-        color: Vec::new(),
-        depth: None,
-        killed: Vec::new(),
-        executed: Vec::new(),
-        quads_x: 0,
-        quad_executed: Vec::new(),
-        quad_divergent: Vec::new(),
         gradients: drawn.gradients,
-        instructions: Vec::new(),
+        ..DrawOutput::uncounted((0, 0), Vec::new(), None, Vec::new())
     };
     let mut draw = Draw::new(1, 1);
     draw.samplers = bind_samplers(list, d, &d.samplers, states)?;

@@ -494,18 +494,6 @@ pub(crate) fn window(s: &ShadedPrimitive, width: u32) -> (Window, DrawOutput) {
         },
         depth,
     };
-    let out = DrawOutput {
-        width: w,
-        height: h,
-        color,
-        depth: None,
-        killed,
-        executed: vec![0; n],
-        quads_x: w.div_ceil(2),
-        quad_executed: Vec::new(),
-        quad_divergent: Vec::new(),
-        gradients: Vec::new(),
-        instructions: Vec::new(),
-    };
+    let out = DrawOutput::uncounted((w, h), color, None, killed);
     (window, out)
 }

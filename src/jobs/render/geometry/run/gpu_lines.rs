@@ -119,20 +119,7 @@ fn cropped(o: GpuOutput, w: u32, h: u32) -> DrawOutput {
         .collect();
     let depth = o.depth.as_deref().map(|d| cut(d, gw, w, h));
     let killed = cut(&o.killed, gw, w, h);
-    let n = w as usize * h as usize;
-    emu::DrawOutput {
-        width: w,
-        height: h,
-        color,
-        depth,
-        killed,
-        executed: vec![0; n],
-        quads_x: w.div_ceil(2),
-        quad_executed: Vec::new(),
-        quad_divergent: Vec::new(),
-        gradients: Vec::new(),
-        instructions: Vec::new(),
-    }
+    emu::DrawOutput::uncounted((w, h), color, depth, killed)
 }
 
 /// The top-left `w × h` of the rows of `v`, `gw` wide.
