@@ -399,3 +399,79 @@ fn shaded(
     }
     s
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::core::emu::Draw;
+    use crate::core::raster::{Cull, Rect, Viewport};
+
+    #[test]
+    fn batches_fill_the_budget_and_a_larger_triangle_goes_alone() {
+        // Records of BATCH_BYTES/20 bytes: a bound of 10 is half the
+        // budget, so two such triangles fill a batch exactly (≤) and the
+        // third starts the next.
+        let r = BATCH_BYTES / 20;
+        assert_eq!(batches(&[10, 10, 10], r, u64::MAX).unwrap(), [0..2, 2..3]);
+        // A bound of 100 is five budgets: alone, between its neighbours.
+        assert_eq!(
+            batches(&[1, 100, 1], r, u64::MAX).unwrap(),
+            [0..1, 1..2, 2..3]
+        );
+        // Past the device's largest buffer (100·r bytes > 99·r): refused,
+        // so that the caller draws per primitive.
+        assert!(matches!(
+            batches(&[1, 100], r, 99 * r),
+            Err(GpuError::Unsupported(_))
+        ));
+    }
+
+    #[test]
+    fn a_triangles_bound_is_its_widened_box_cut_to_the_clip_rectangle() {
+        let draw = Draw::new(16, 16);
+        let mut g = GeometryDraw {
+            pixel: &draw,
+            positions: vec![
+                [1.0, 1.0, 0.5, 1.0],
+                [5.0, 1.0, 0.5, 1.0],
+                [1.0, 3.0, 0.5, 1.0],
+            ],
+            transformed: true,
+            values: vec![Vec::new(); 3],
+            slots: Vec::new(),
+            flat: 0,
+            primitives: vec![vec![[0, 1, 2]]],
+            viewport: Viewport::whole(16, 16),
+            clip: Rect {
+                left: 0,
+                top: 0,
+                right: 16,
+                bottom: 16,
+            },
+            cull: Cull::None,
+            clip_planes: Vec::new(),
+            fog: None,
+        };
+        // x from ⌊1⌋ − 1 = 0 to ⌈5⌉ + 2 = 7 (exclusive): 7 columns; y from
+        // 0 to ⌈3⌉ + 2 = 5: 5 rows.
+        assert_eq!(bound(&g, [0, 1, 2]), 35);
+        // Cut by a clip rectangle from (2, 2): columns 2..7, rows 2..5.
+        g.clip.left = 2;
+        g.clip.top = 2;
+        assert_eq!(bound(&g, [0, 1, 2]), 15);
+        // In clip space on the whole 16×16 viewport: x/w = −1 is screen
+        // X = 0, x/w = 0 is X = 8; y/w = 1 is Y = 0, y/w = 0 is Y = 8.
+        // Columns 0 (⌊0⌋ − 1 cut to 0) to ⌈8⌉ + 2 = 10, rows 0 to 10,
+        // cut to the rectangle from (2, 2): 8 × 8.
+        g.transformed = false;
+        g.positions = vec![
+            [-2.0, 2.0, 0.5, 2.0],
+            [0.0, 2.0, 0.5, 2.0],
+            [-2.0, 0.0, 0.5, 2.0],
+        ];
+        assert_eq!(bound(&g, [0, 1, 2]), 64);
+        // A vertex behind the eye: the whole rectangle, 14 × 14.
+        g.positions[2][3] = -1.0;
+        assert_eq!(bound(&g, [0, 1, 2]), 196);
+    }
+}

@@ -11,7 +11,7 @@
 
 use super::{Drawn, FillMode, Pass, Stage};
 use crate::core::emu::{self, DrawOutput, PixelInputs};
-use crate::core::gpu::{self, GeometryDraw, Gpu, ShadedPrimitive};
+use crate::core::gpu::{self, GeometryDraw, Gpu, GpuError, ShadedPrimitive};
 use crate::core::ir::Shader;
 use crate::core::raster::clip::{self, GUARD_BAND, VIEW_VOLUME};
 use crate::core::raster::fog::{Fog, FogMode};
@@ -269,17 +269,24 @@ pub(super) fn shade_all(
         crate::core::phases::mark("geometry: in one pass");
         return super::one_pass::draw(device, shader, (d, &geometry, g), settings, pass);
     };
-    let shaded = match records_refusal(device) {
+    let recorded = match records_refusal(device) {
         None => {
             crate::core::phases::mark(&format!(
                 "geometry: in one device draw, merged on the CPU ({refusal})"
             ));
             gpu::draw_geometry_recorded(device, shader, &geometry)
         }
-        Some(why) => {
+        Some(why) => Err(GpuError::Unsupported(why)),
+    };
+    let shaded = match recorded {
+        // A device without what the recorded draw needs, or a triangle
+        // whose records outgrow its largest storage buffer: a pass per
+        // primitive, which needs neither.
+        Err(GpuError::Unsupported(why)) => {
             crate::core::phases::mark(&format!("geometry: per primitive ({refusal}; {why})"));
             gpu::draw_geometry(device, shader, &geometry)
         }
+        other => other,
     }
     .map_err(|e| DrawFailure::Message(e.to_string()))?;
     let primitives = &geometry.primitives;
