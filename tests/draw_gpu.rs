@@ -652,14 +652,12 @@ fn a_draw_with_fragment_records_leaves_what_the_per_primitive_path_leaves() {
     lists.sort();
     assert!(lists.len() >= 25, "{lists:?}");
     lists.push(repo().join("benches/lists/blend_batches.json"));
-    lists.push(overlapping_points(&tmp));
+    lists.push(overlapping_points(&tmp.join("lists")));
     for list in &lists {
         let name = list.file_name().unwrap().to_string_lossy().into_owned();
-        let (a, b) = (
-            tmp.join(&name).join("each"),
-            tmp.join(&name).join("recorded"),
-        );
-        std::fs::create_dir_all(tmp.join(&name)).unwrap();
+        let out = tmp.join("out").join(&name);
+        let (a, b) = (out.join("each"), out.join("recorded"));
+        std::fs::create_dir_all(&out).unwrap();
         let each = render_gpu(list, &a, Some("PS30_PER_PRIMITIVE"));
         if each.status.code() == Some(2)
             && stderr(&each).contains("no GPU adapter")
