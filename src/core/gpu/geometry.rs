@@ -129,7 +129,7 @@ pub fn draw_geometry(
         module,
         layout,
         bindings,
-    } = fragment_stage(gpu, shader, g, None)?;
+    } = fragment_stage(gpu, shader, g, None, false)?;
     let formats = attachment_formats(&iface, g.fog.is_some());
     let targets: Vec<Option<wgpu::ColorTargetState>> =
         formats.iter().map(|f| f.map(Into::into)).collect();
@@ -192,13 +192,14 @@ pub(super) struct Fragment {
     pub bindings: Bindings,
 }
 
-/// Checks `g`, translates `shader` as its fragment stage (`tests` as
-/// [`Entry::Geometry`] takes them) and uploads what it binds.
+/// Checks `g`, translates `shader` as its fragment stage (`tests` and
+/// `records` as [`Entry::Geometry`] takes them) and uploads what it binds.
 pub(super) fn fragment_stage(
     gpu: &Gpu,
     shader: &Shader,
     g: &GeometryDraw,
     tests: Option<translate::device_tests::DeviceTests>,
+    records: bool,
 ) -> Result<Fragment, GpuError> {
     check(gpu, shader, g)?;
     let draw = g.pixel;
@@ -210,6 +211,7 @@ pub(super) fn fragment_stage(
         flat: g.flat,
         fog: if tests.is_none() { g.fog } else { None },
         tests,
+        records,
     };
     let t = translate::translate_specialised(shader, draw.float_rules, entry, &spec)
         .map_err(GpuError::Translate)?;

@@ -35,6 +35,7 @@ mod draw;
 mod geometry;
 mod inputs;
 mod one_pass;
+mod records;
 mod runtime_dir;
 mod sampler;
 mod teardown;
@@ -49,6 +50,7 @@ pub use geometry::{draw_geometry, GeometryDraw, ShadedPrimitive};
 pub use one_pass::{
     draw_one_pass, one_pass_lacks, Compare, DepthSurface, OnePass, StencilSide, StencilTest,
 };
+pub use records::{draw_geometry_recorded, records_lack};
 pub use teardown::{hand_off_at_exit, leave_at_exit};
 pub use vertex::run_vertices;
 
@@ -96,6 +98,9 @@ pub struct Gpu {
     pub(crate) queue: wgpu::Queue,
     pub(crate) features: wgpu::Features,
     pub(crate) limits: wgpu::Limits,
+    /// Fragment shaders may write storage buffers (wgpu's downlevel flag
+    /// FRAGMENT_WRITABLE_STORAGE), as [`records`] needs.
+    pub(crate) fragment_storage: bool,
     /// Large textures uploaded by earlier draws (`texture.rs`): the passes
     /// of one command sample the same image.
     pub(crate) textures: texture::Cache,
@@ -290,6 +295,10 @@ impl Gpu {
         phases::mark("device: adapter");
         let features = adapter.features() & WANTED;
         let limits = adapter.limits();
+        let fragment_storage = adapter
+            .get_downlevel_capabilities()
+            .flags
+            .contains(wgpu::DownlevelFlags::FRAGMENT_WRITABLE_STORAGE);
         let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
             label: Some("ps30"),
             required_features: features,
@@ -315,6 +324,7 @@ impl Gpu {
             queue,
             features,
             limits,
+            fragment_storage,
             textures: Default::default(),
             fill: OnceLock::new(),
             info: DeviceInfo {

@@ -235,7 +235,7 @@ pub fn draw_one_pass(
         module,
         layout,
         bindings,
-    } = geometry::fragment_stage(gpu, shader, g, Some(tests))?;
+    } = geometry::fragment_stage(gpu, shader, g, Some(tests), false)?;
     let counts_layout = gpu
         .device
         .create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {

@@ -54,6 +54,19 @@ impl Fb {
             .append(Expression::CallResult(function), Span::UNDEFINED)
     }
 
+    /// The result of an atomic operation (defined by the `Atomic`
+    /// statement that follows, never emitted).
+    pub fn atomic_result(&mut self, ty: Handle<Type>) -> Expr {
+        self.flush();
+        self.f.expressions.append(
+            Expression::AtomicResult {
+                ty,
+                comparison: false,
+            },
+            Span::UNDEFINED,
+        )
+    }
+
     fn flush(&mut self) {
         if let Some(start) = self.emit_start.take() {
             let range = self.f.expressions.range_from(start);

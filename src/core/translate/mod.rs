@@ -48,6 +48,7 @@ pub mod header;
 pub mod interface;
 mod lower;
 mod module;
+pub mod records;
 pub mod specialise;
 mod texture;
 pub mod vertex;

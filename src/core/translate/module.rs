@@ -432,6 +432,10 @@ pub enum Entry {
         /// `Some` for a fogged draw: the fog's depth or factor at
         /// [`interface::GEOMETRY_FOG_LOCATION`] (never with `tests`).
         fog: Option<interface::GeometryFog>,
+        /// Every covered pixel appends its record to a storage buffer
+        /// ([`super::records`]) instead of writing `@location(0..6)`; only
+        /// the flags are written, at `@location(4)` (never with `tests`).
+        records: bool,
     },
 }
 
@@ -501,11 +505,11 @@ pub(super) fn entry_point(
         }
     }
     let fog = geometry_arguments(entry, iface, t.vec4, (&mut args, &mut names));
-    let tests = match entry {
-        Entry::Geometry { tests, .. } => tests,
-        _ => None,
+    let (tests, records) = match entry {
+        Entry::Geometry { tests, records, .. } => (tests, records),
+        _ => (None, false),
     };
-    if tests.is_some() {
+    if tests.is_some() || records {
         let u32_ty = ty(m, None, TypeInner::Scalar(Scalar::U32));
         args.push((
             "primitive_index",
@@ -594,6 +598,10 @@ pub(super) fn entry_point(
         let alpha = oc0.zip(t.alpha);
         super::device_tests::count_and_kill(&mut fb, counts, primitive, killed, alpha);
     }
+    if records {
+        let primitive = fb.add(Expression::FunctionArgument(args.len() as u32 - 1));
+        append_record(m, cx, iface, &mut fb, [primitive, position, centre], fog);
+    }
 
     let result = outputs(m, cx, iface, &mut fb, entry, (position, fog));
     fb.f.result = result.map(|ty| naga::FunctionResult { ty, binding: None });
@@ -609,6 +617,45 @@ pub(super) fn entry_point(
         task_payload: None,
         incoming_ray_payload: None,
     });
+}
+
+/// Appends the covered pixel's record ([`super::records`]): `at` holds
+/// the triangle's index, the fragment's position and its pixel centre
+/// (D3D9's, integers); `fog` the fog's d where the draw is fogged.
+fn append_record(
+    m: &mut Module,
+    cx: &Ctx,
+    iface: &Interface,
+    fb: &mut Fb,
+    at: [Expr; 3],
+    fog: Option<Expr>,
+) {
+    let [primitive, position, centre] = at;
+    let (flags, depth) = flags_and_depth(cx, iface, fb, position);
+    let mut words = vec![primitive];
+    for c in 0..2 {
+        let v = fb.index(centre, c);
+        words.push(fb.add(Expression::As {
+            expr: v,
+            kind: ScalarKind::Uint,
+            convert: Some(4),
+        }));
+    }
+    words.push(flags);
+    words.push(super::records::bits(fb, depth));
+    words.push(match fog {
+        Some(d) => super::records::bits(fb, d),
+        None => fb.u32(0),
+    });
+    for &k in &iface.outputs {
+        let p = cx.var(fb, cx.outputs[k as usize]);
+        let colour = fb.load(p);
+        for c in 0..4 {
+            let v = fb.index(colour, c);
+            words.push(super::records::bits(fb, v));
+        }
+    }
+    super::records::append(m, fb, &words);
 }
 
 /// An entry point's argument: its name (`v` for an input, named by
@@ -746,6 +793,31 @@ fn draw_inputs(m: &mut Module, cx: &Ctx, iface: &Interface, fb: &mut Fb, centre:
     }
 }
 
+/// `Entry::Geometry`'s flags of a covered pixel (bit 0 covered, bit 1
+/// killed by texkill) and its depth (`oDepth` as written, or the
+/// rasterised z of `position`).
+fn flags_and_depth(cx: &Ctx, iface: &Interface, fb: &mut Fb, position: Expr) -> (Expr, Expr) {
+    let covered = fb.u32(1);
+    let flags = match iface.kills {
+        true => {
+            let p = cx.var(fb, cx.killed);
+            let killed = fb.load(p);
+            let (yes, no) = (fb.u32(3), covered);
+            fb.select(killed, yes, no)
+        }
+        false => covered,
+    };
+    let depth = match iface.depth {
+        true => {
+            let p = cx.var(fb, cx.depth);
+            let d = fb.load(p);
+            fb.index(d, 0)
+        }
+        false => fb.index(position, 2),
+    };
+    (flags, depth)
+}
+
 /// The entry point's result: a struct of the written outputs (and the
 /// texkill flag or discard). Returns its type, if any output exists.
 /// `at` is the fragment's position and, for a fogged draw of geometry, the
@@ -763,7 +835,8 @@ fn outputs(
     let mut members = Vec::new();
     let mut values = Vec::new();
     let mut offset = 0;
-    for &k in &iface.outputs {
+    let records = matches!(entry, Entry::Geometry { records: true, .. });
+    for &k in iface.outputs.iter().filter(|_| !records) {
         members.push(StructMember {
             name: Some(format!("oC{k}")),
             ty: t.vec4,
@@ -786,6 +859,17 @@ fn outputs(
             (&mut members, &mut values),
             offset,
         );
+    } else if records {
+        // The flags keep the pass an attachment; the records hold the rest.
+        let u32_ty = ty(m, None, TypeInner::Scalar(Scalar::U32));
+        members.push(StructMember {
+            name: Some("flags".into()),
+            ty: u32_ty,
+            binding: Some(output(interface::GEOMETRY_FLAGS_LOCATION)),
+            offset,
+        });
+        offset += 4;
+        values.push(fb.u32(1));
     } else if let Entry::Geometry { .. } = entry {
         let u32_ty = ty(m, None, TypeInner::Scalar(Scalar::U32));
         members.push(StructMember {
@@ -794,16 +878,7 @@ fn outputs(
             binding: Some(output(interface::GEOMETRY_FLAGS_LOCATION)),
             offset,
         });
-        let covered = fb.u32(1);
-        let flags = match iface.kills {
-            true => {
-                let p = cx.var(fb, cx.killed);
-                let killed = fb.load(p);
-                let (yes, no) = (fb.u32(3), covered);
-                fb.select(killed, yes, no)
-            }
-            false => covered,
-        };
+        let (flags, depth) = flags_and_depth(cx, iface, fb, position);
         values.push(flags);
         members.push(StructMember {
             name: Some("depth".into()),
@@ -812,14 +887,6 @@ fn outputs(
             offset: offset + 4,
         });
         offset += 8;
-        let depth = match iface.depth {
-            true => {
-                let p = cx.var(fb, cx.depth);
-                let d = fb.load(p);
-                fb.index(d, 0)
-            }
-            false => fb.index(position, 2),
-        };
         values.push(depth);
         if let Some(d) = fog {
             members.push(StructMember {

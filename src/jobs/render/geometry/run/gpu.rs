@@ -3,13 +3,15 @@
 //! provoking vertex moved first), points set up as the emulator sets them
 //! up, and either the whole draw run on the device in one pass
 //! (`one_pass.rs` says when) or each primitive rasterised and shaded by the
-//! device (`core::gpu::draw_geometry`), its pixels then taking the same
-//! path as the emulator's triangles — `texkill`, the alpha test, the depth
-//! test, the output merger — in drawing order.
+//! device (`core::gpu::draw_geometry_recorded`: one device draw whose
+//! fragments are recorded and put back in drawing order, or
+//! `core::gpu::draw_geometry`: a render pass per primitive), its pixels
+//! then taking the same path as the emulator's triangles — `texkill`, the
+//! alpha test, the depth test, the output merger — in drawing order.
 
 use super::{Drawn, FillMode, Pass, Stage};
 use crate::core::emu::{self, DrawOutput, PixelInputs};
-use crate::core::gpu::{self, GeometryDraw, Gpu, ShadedPrimitive};
+use crate::core::gpu::{self, GeometryDraw, Gpu, GpuError, ShadedPrimitive};
 use crate::core::ir::Shader;
 use crate::core::raster::clip::{self, GUARD_BAND, VIEW_VOLUME};
 use crate::core::raster::fog::{Fog, FogMode};
@@ -259,20 +261,35 @@ pub(super) fn shade_all(
     let (geometry, faces) = geometry_draw(g, stage, &draw, (viewport, clip_rect), fog)?;
     let refusal = match c.fog {
         Some(_) => Some("fog runs on the CPU".into()),
+        // For comparing the two ways on draws that could take one pass.
+        None if std::env::var_os("PS30_RECORDS").is_some() => Some("PS30_RECORDS is set".into()),
         None => super::one_pass::refusal(device, d, g, pass),
     };
-    crate::core::phases::mark(&format!(
-        "geometry: {}",
-        refusal
-            .as_deref()
-            .map_or("in one pass".into(), |r| format!("per primitive ({r})"))
-    ));
-    if refusal.is_none() {
+    let Some(refusal) = refusal else {
+        crate::core::phases::mark("geometry: in one pass");
         return super::one_pass::draw(device, shader, (d, &geometry, g), settings, pass);
+    };
+    let recorded = match records_refusal(device) {
+        None => {
+            crate::core::phases::mark(&format!(
+                "geometry: in one device draw, merged on the CPU ({refusal})"
+            ));
+            gpu::draw_geometry_recorded(device, shader, &geometry)
+        }
+        Some(why) => Err(GpuError::Unsupported(why)),
+    };
+    let shaded = match recorded {
+        // A device without what the recorded draw needs, or a triangle
+        // whose records outgrow its largest storage buffer: a pass per
+        // primitive, which needs neither.
+        Err(GpuError::Unsupported(why)) => {
+            crate::core::phases::mark(&format!("geometry: per primitive ({refusal}; {why})"));
+            gpu::draw_geometry(device, shader, &geometry)
+        }
+        other => other,
     }
+    .map_err(|e| DrawFailure::Message(e.to_string()))?;
     let primitives = &geometry.primitives;
-    let shaded = gpu::draw_geometry(device, shader, &geometry)
-        .map_err(|e| DrawFailure::Message(e.to_string()))?;
     let mut drawn = Drawn::default();
     let mut pixels_left = settings.budget.max_pixels;
     for ((prim, &face), mut s) in primitives.iter().zip(&faces).zip(shaded) {
@@ -300,6 +317,16 @@ pub(super) fn shade_all(
         pass.take(&window, &out, d.pixel.alpha_test, face)?;
     }
     Ok(drawn)
+}
+
+/// Why a draw whose merger runs on the CPU cannot be shaded in one device
+/// draw with fragment records on `device` (`None` when it can), and so
+/// takes a render pass and read-back per primitive.
+fn records_refusal(device: &Gpu) -> Option<String> {
+    if std::env::var_os("PS30_PER_PRIMITIVE").is_some() {
+        return Some("PS30_PER_PRIMITIVE is set".into());
+    }
+    gpu::records_lack(device).map(str::to_string)
 }
 
 /// The pixel shader's draw for the device: constants, samplers and float
