@@ -692,11 +692,9 @@ fn a_draw_with_fragment_records_leaves_what_the_per_primitive_path_leaves() {
 /// A list (written under `dir`) of one triangle filled as points of size
 /// 6 whose corners are 2 pixels apart, blended ONE + ONE: its three squares
 /// overlap, so that a pixel gets two or three fragments of one primitive
-/// with different colours. A primitive drawn into its own cleared
-/// attachments keeps its last point's fragment there, and the recorded
-/// draw must keep the same one. (The emulator merges every point's
-/// fragment: 108 pixels written here against the GPU's 60, a difference
-/// of both GPU paths that docs/draw.md lists under "Not done yet".)
+/// with different colours. Both GPU paths draw each point of a point fill
+/// as a primitive of its own, so that every fragment is merged in turn,
+/// as the emulator merges them.
 fn overlapping_points(dir: &std::path::Path) -> std::path::PathBuf {
     let shader = repo().join("tests/draw_conformance/texcoord.psh");
     let list = format!(
@@ -712,4 +710,46 @@ fn overlapping_points(dir: &std::path::Path) -> std::path::PathBuf {
     let path = dir.join("overlapping_points.json");
     std::fs::write(&path, list).unwrap();
     path
+}
+
+#[test]
+fn overlapping_points_of_a_point_fill_are_each_merged_as_on_the_emulator() {
+    // Three 6×6 squares around (5, 5), (7, 5) and (5, 7) (centres on pixel
+    // centres: each covers x, y in [c − 3, c + 3), 36 pixels): blended
+    // ONE + ONE, every fragment adds its point's colour, so the emulator
+    // writes 3 · 36 = 108 fragments. Each point's colour is its vertex's
+    // texcoord0 (no sprite coordinates), sums of small integers, exact in
+    // f32 in any order: the GPU backend must leave the same bytes, by the
+    // recorded draw and by a pass per primitive.
+    let tmp = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("overlapping_points");
+    let list = overlapping_points(&tmp.join("lists"));
+    let emulated = tmp.join("emulator");
+    let o = ps30(
+        &[
+            "render",
+            list.to_str().unwrap(),
+            "-q",
+            "-o",
+            emulated.to_str().unwrap(),
+            "--json",
+        ],
+        repo(),
+    );
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let json: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    let text = json.to_string();
+    assert!(text.contains("\"written\":108"), "{text}");
+    for way in [None, Some("PS30_PER_PRIMITIVE")] {
+        let out = tmp.join(format!("gpu-{}", way.unwrap_or("recorded")));
+        let g = render_gpu(&list, &out, way);
+        if g.status.code() == Some(2)
+            && stderr(&g).contains("no GPU adapter")
+            && std::env::var_os("CI").is_none()
+        {
+            eprintln!("overlapping points on the GPU: skipped: {}", stderr(&g));
+            return;
+        }
+        assert_eq!(g.status.code(), Some(0), "{way:?}: {}", stderr(&g));
+        same_files("overlapping_points.json", &emulated, &out);
+    }
 }

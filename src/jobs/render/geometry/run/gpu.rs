@@ -39,8 +39,17 @@ struct Setup {
 /// fog's w in x), which the device interpolates as it does the inputs.
 /// A triangle filled as points (D3DFILL_POINT) is clipped and culled here
 /// by the emulator's own set-up, and each vertex of what is left becomes a
-/// point, as a point list's vertex does.
-fn setup(g: &Geometry, stage: &Stage, viewport: &Viewport, fog: bool) -> Result<Setup, String> {
+/// point, as a point list's vertex does; with `points_apart` each such
+/// point is a primitive of its own, so that where two of them overlap the
+/// CPU merges both fragments in turn, as the emulator does (a primitive's
+/// fragments are merged as one window, one per pixel).
+fn setup(
+    g: &Geometry,
+    stage: &Stage,
+    viewport: &Viewport,
+    fog: bool,
+    points_apart: bool,
+) -> Result<Setup, String> {
     if g.primitive.is_line() {
         return Err(format!(
             "the GPU backend draws points and triangles; {:?} is drawn on the emulator only",
@@ -107,10 +116,19 @@ fn setup(g: &Geometry, stage: &Stage, viewport: &Viewport, fog: bool) -> Result<
             let drawn = !emulator.polygon(polygon.clone()).is_empty();
             let mut points = Vec::new();
             for v in polygon.iter().filter(|_| drawn) {
-                points.extend(s.point(g, stage, viewport, v, fog));
+                let square = s.point(g, stage, viewport, v, fog);
+                match points_apart {
+                    true => {
+                        s.primitives.push(square);
+                        s.faces.push(Face::Front);
+                    }
+                    false => points.extend(square),
+                }
             }
-            s.primitives.push(points);
-            s.faces.push(Face::Front);
+            if !points_apart {
+                s.primitives.push(points);
+                s.faces.push(Face::Front);
+            }
             continue;
         }
         let provoking = order[prim.provoking] as u32;
@@ -258,7 +276,7 @@ pub(super) fn shade_all(
     let (viewport, clip_rect, settings) = (c.viewport, c.clip_rect, c.settings);
     let draw = pixel_draw(d, stage, c.samplers, settings, (pass.width, c.height));
     let fog = fog_kind(c.fog.as_ref());
-    let (geometry, faces) = geometry_draw(g, stage, &draw, (viewport, clip_rect), fog)?;
+    let (geometry, faces) = geometry_draw(g, stage, &draw, (viewport, clip_rect), fog, true)?;
     let refusal = match c.fog {
         Some(_) => Some("fog runs on the CPU".into()),
         // For comparing the two ways on draws that could take one pass.
@@ -353,18 +371,20 @@ pub(super) fn pixel_draw<'s>(
 }
 
 /// Sets `g` up over `stage` as the device draws it (in `view`: the
-/// viewport and the pixels it may write), bringing back `fog`: the draw
-/// and each primitive's facing.
+/// viewport and the pixels it may write), bringing back `fog`, with a
+/// point fill's points as primitives of their own where `points_apart`
+/// (`setup`): the draw and each primitive's facing.
 fn geometry_draw<'d>(
     g: &Geometry,
     stage: &Stage,
     draw: &'d emu::Draw<'d>,
     view: (&Viewport, Rect),
     fog: Option<GeometryFog>,
+    points_apart: bool,
 ) -> Result<(GeometryDraw<'d>, Vec<Face>), DrawFailure> {
     let (viewport, clip_rect) = view;
     let varying = fog == Some(GeometryFog::Varying);
-    let setup = setup(g, stage, viewport, varying).map_err(DrawFailure::Message)?;
+    let setup = setup(g, stage, viewport, varying, points_apart).map_err(DrawFailure::Message)?;
     let setup_faces = setup.faces;
     let flat = stage.slots.iter().fold(0u64, |bits, s| {
         (0..4)
@@ -473,7 +493,9 @@ pub(crate) fn coverage(
     let samplers = crate::jobs::render::bind_samplers(list, d, &d.samplers, states)?;
     let draw = pixel_draw(d, &stage, &samplers, settings, (width, height));
     let shader = &list.shaders[d.shader].loaded.shader;
-    let (geometry, _) = geometry_draw(g, &stage, &draw, (&viewport, clip_rect), None)?;
+    // Coverage is compared per primitive of the draw: a point fill's
+    // points stay together.
+    let (geometry, _) = geometry_draw(g, &stage, &draw, (&viewport, clip_rect), None, false)?;
     let shaded = gpu::draw_geometry(device, shader, &geometry)
         .map_err(|e| DrawFailure::Message(e.to_string()))?;
     c.gpu = shaded.into_iter().map(|s| s.pixels).collect();
