@@ -246,9 +246,8 @@ struct Packing {
 /// each shelf filled left to right up to a width near the square root of
 /// the total area (at least the widest), a new shelf below when one is
 /// full; a packing taller than `max_side` is split in two and each half
-/// packed again (a window wider or taller than `max_side` has an atlas to
-/// itself, which the device then refuses by its size, as it would the
-/// window alone).
+/// packed again (a window wider or taller than `max_side` leaves an atlas
+/// that the device refuses by its size, as it would the window alone).
 fn shelves(sizes: &[(usize, (u32, u32))], max_side: u32) -> Vec<Packing> {
     if sizes.is_empty() {
         return Vec::new();
@@ -305,4 +304,61 @@ fn cut<T: Copy>(v: &[T], width: u32, (x, y): (u32, u32), (w, h): (u32, u32)) -> 
     (y..y + h as usize)
         .flat_map(|r| v[r * width + x..][..w as usize].iter().copied())
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Whether `p` places every grid of `sizes` once, at even offsets,
+    /// inside the atlas and apart from every other.
+    fn sound(p: &Packing, sizes: &[(usize, (u32, u32))]) -> bool {
+        let size = |i: usize| sizes.iter().find(|(j, _)| *j == i).unwrap().1;
+        let rect = |&(i, (x, y)): &(usize, (u32, u32))| (x, y, x + size(i).0, y + size(i).1);
+        let inside = p.placed.iter().map(rect).all(|(x0, y0, x1, y1)| {
+            x0 % 2 == 0 && y0 % 2 == 0 && x1 <= p.width && y1 <= p.height
+        });
+        let apart = p.placed.iter().enumerate().all(|(k, a)| {
+            p.placed[k + 1..].iter().all(|b| {
+                let (a, b) = (rect(a), rect(b));
+                a.2 <= b.0 || b.2 <= a.0 || a.3 <= b.1 || b.3 <= a.1
+            })
+        });
+        inside && apart && p.width % 2 == 0 && p.height % 2 == 0
+    }
+
+    #[test]
+    fn windows_are_packed_apart_at_even_offsets() {
+        // Thirty grids of mixed even sizes: one atlas, each placed once.
+        let sizes: Vec<(usize, (u32, u32))> = (0..30)
+            .map(|i| (i, (2 * (1 + (i as u32 * 7) % 13), 2 * (1 + (i as u32 * 5) % 11))))
+            .collect();
+        let parts = shelves(&sizes, 8192);
+        assert_eq!(parts.len(), 1);
+        assert!(sound(&parts[0], &sizes), "{:?}", parts[0]);
+        let mut placed: Vec<usize> = parts[0].placed.iter().map(|(i, _)| *i).collect();
+        placed.sort();
+        assert_eq!(placed, (0..30).collect::<Vec<_>>());
+        // The area is Σ 4·a·b over the grids; the atlas wastes less than
+        // half of its own (tallest-first shelves of these sizes).
+        let area: u32 = sizes.iter().map(|(_, (w, h))| w * h).sum();
+        assert!(2 * area > parts[0].width * parts[0].height, "{:?}", parts[0]);
+    }
+
+    #[test]
+    fn an_atlas_taller_than_the_device_allows_is_split() {
+        // Four 6×6 grids under a 8-texel side: √144 = 12 is cut to 8, one
+        // grid a shelf, 24 rows: split in halves, then quarters, each 6×6.
+        let sizes: Vec<(usize, (u32, u32))> = (0..4).map(|i| (i, (6, 6))).collect();
+        let parts = shelves(&sizes, 8);
+        assert_eq!(parts.len(), 4);
+        for p in &parts {
+            assert_eq!((p.width, p.height, p.placed.len()), (6, 6, 1));
+        }
+        // A grid wider than the side widens its atlas past it (the device
+        // then refuses the draw by its size).
+        let parts = shelves(&[(0, (10, 2)), (1, (2, 2))], 8);
+        assert!(parts.iter().any(|p| p.width == 10));
+        assert_eq!(shelves(&[], 8), Vec::new());
+    }
 }
