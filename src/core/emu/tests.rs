@@ -429,7 +429,10 @@ fn vpos_of_packed_windows_is_each_pixels_given_position() {
     };
     d.pixels = Some(&short);
     let err = run(&compiled(text), &d).expect_err("refused");
-    assert!(err.to_string().contains("7 positions for a quad grid of 8"), "{err}");
+    assert!(
+        err.to_string().contains("7 positions for a quad grid of 8"),
+        "{err}"
+    );
 }
 
 #[test]

@@ -315,9 +315,10 @@ mod tests {
     fn sound(p: &Packing, sizes: &[(usize, (u32, u32))]) -> bool {
         let size = |i: usize| sizes.iter().find(|(j, _)| *j == i).unwrap().1;
         let rect = |&(i, (x, y)): &(usize, (u32, u32))| (x, y, x + size(i).0, y + size(i).1);
-        let inside = p.placed.iter().map(rect).all(|(x0, y0, x1, y1)| {
-            x0 % 2 == 0 && y0 % 2 == 0 && x1 <= p.width && y1 <= p.height
-        });
+        let inside =
+            p.placed.iter().map(rect).all(|(x0, y0, x1, y1)| {
+                x0 % 2 == 0 && y0 % 2 == 0 && x1 <= p.width && y1 <= p.height
+            });
         let apart = p.placed.iter().enumerate().all(|(k, a)| {
             p.placed[k + 1..].iter().all(|b| {
                 let (a, b) = (rect(a), rect(b));
@@ -331,7 +332,12 @@ mod tests {
     fn windows_are_packed_apart_at_even_offsets() {
         // Thirty grids of mixed even sizes: one atlas, each placed once.
         let sizes: Vec<(usize, (u32, u32))> = (0..30)
-            .map(|i| (i, (2 * (1 + (i as u32 * 7) % 13), 2 * (1 + (i as u32 * 5) % 11))))
+            .map(|i| {
+                (
+                    i,
+                    (2 * (1 + (i as u32 * 7) % 13), 2 * (1 + (i as u32 * 5) % 11)),
+                )
+            })
             .collect();
         let parts = shelves(&sizes, 8192);
         assert_eq!(parts.len(), 1);
@@ -342,7 +348,11 @@ mod tests {
         // The area is Σ 4·a·b over the grids; the atlas wastes less than
         // half of its own (tallest-first shelves of these sizes).
         let area: u32 = sizes.iter().map(|(_, (w, h))| w * h).sum();
-        assert!(2 * area > parts[0].width * parts[0].height, "{:?}", parts[0]);
+        assert!(
+            2 * area > parts[0].width * parts[0].height,
+            "{:?}",
+            parts[0]
+        );
     }
 
     #[test]
