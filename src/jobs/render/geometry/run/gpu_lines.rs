@@ -104,7 +104,8 @@ pub(super) fn shade_lines(
             true => window.inputs.values.pop().map(|(_, v)| v),
             false => None,
         };
-        let area = grid_size(&window).0 as u64 * grid_size(&window).1 as u64;
+        let (gw, gh) = grid_size(&window);
+        let area = u64::from(gw) * u64::from(gh);
         pixels_left = pixels_left.checked_sub(area).ok_or_else(|| {
             DrawFailure::Message(format!(
                 "the draw's lines cover more than {} pixels with their quads (raise it with --max-list-pixels)",
@@ -315,17 +316,16 @@ mod tests {
     fn sound(p: &Packing, sizes: &[(usize, (u32, u32))]) -> bool {
         let size = |i: usize| sizes.iter().find(|(j, _)| *j == i).unwrap().1;
         let rect = |&(i, (x, y)): &(usize, (u32, u32))| (x, y, x + size(i).0, y + size(i).1);
-        let inside =
-            p.placed.iter().map(rect).all(|(x0, y0, x1, y1)| {
-                x0 % 2 == 0 && y0 % 2 == 0 && x1 <= p.width && y1 <= p.height
-            });
+        let inside = p.placed.iter().map(rect).all(|(x0, y0, x1, y1)| {
+            x0.is_multiple_of(2) && y0.is_multiple_of(2) && x1 <= p.width && y1 <= p.height
+        });
         let apart = p.placed.iter().enumerate().all(|(k, a)| {
             p.placed[k + 1..].iter().all(|b| {
                 let (a, b) = (rect(a), rect(b));
                 a.2 <= b.0 || b.2 <= a.0 || a.3 <= b.1 || b.3 <= a.1
             })
         });
-        inside && apart && p.width % 2 == 0 && p.height % 2 == 0
+        inside && apart && p.width.is_multiple_of(2) && p.height.is_multiple_of(2)
     }
 
     #[test]
