@@ -26,7 +26,11 @@
 //!   iteration one process of the `ps30` binary built with this bench, or
 //!   of the one `PS30_BENCH_BIN` names (a release build, say, on a machine
 //!   the bench was copied to) (`<command>/<backend>`). Goal: the GPU at
-//!   least as fast as the emulator, whole command.
+//!   least as fast as the emulator, whole command. Beside them, `ps30
+//!   render benches/lists/lines300.json` (150 lines and 50 wireframe
+//!   triangles, shaded on the device through the emulator's line set-up,
+//!   `run/gpu_lines.rs`) on both backends (`render-lines/<backend>`; no
+//!   goal: docs/draw.md states where it stands).
 //!
 //! Skipped, with a line saying so, without an adapter.
 
@@ -284,6 +288,25 @@ fn command(c: &mut Criterion) {
                 b.iter(|| assert!(matches!(run(cmd, backend), Some(0 | 1))))
             });
         }
+    }
+    let lines = Path::new(env!("CARGO_MANIFEST_DIR")).join("benches/lists/lines300.json");
+    let out = dir.join("lines");
+    for backend in ["emulator", "gpu"] {
+        g.bench_function(format!("render-lines/{backend}"), |b| {
+            b.iter(|| {
+                let status = std::process::Command::new(&exe)
+                    .arg("render")
+                    .arg(&lines)
+                    .arg("-o")
+                    .arg(&out)
+                    .args(["--backend", backend, "-q"])
+                    .stdout(std::process::Stdio::null())
+                    .stderr(std::process::Stdio::null())
+                    .status()
+                    .unwrap();
+                assert!(status.success());
+            })
+        });
     }
     g.finish();
     let _ = std::fs::remove_dir_all(&dir);

@@ -70,6 +70,29 @@ fn lines_follow_the_diamond_exit_rule_and_lastpixel() {
     });
 }
 
+/// The pixels of `lines_vpos.json`'s three lines, each holding its own
+/// position (vpos.psh: oC0 = (vPos.x, vPos.y, 0, 1)), by the diamond-exit
+/// rule as derived for "diag" above: (1,1)→(7,4) covers (1,1), (2,1),
+/// (3,2), (4,2), (5,3), (6,3) and its last pixel (7,4); (9,1)→(12,7)
+/// covers (9,1), (9,2), (10,3), (10,4), (11,5), (11,6), (12,7); and
+/// (1,6)→(6,6), along row 6 through centres as "h" is, columns 1–6 (6 its
+/// last pixel).
+pub(crate) fn lines_vpos_want(x: u32, y: u32) -> Rgba {
+    let first = [(1, 1), (2, 1), (3, 2), (4, 2), (5, 3), (6, 3), (7, 4)];
+    let second = [(9, 1), (9, 2), (10, 3), (10, 4), (11, 5), (11, 6), (12, 7)];
+    let third = (y == 6 && (1..=6).contains(&x)).then_some((x, y));
+    match first.contains(&(x, y)) || second.contains(&(x, y)) || third.is_some() {
+        true => [x as f32, y as f32, 0.0, 1.0],
+        false => CLEAR,
+    }
+}
+
+#[test]
+fn lines_report_their_own_position_in_vpos() {
+    let t = draw("lines_vpos.json");
+    check(&t, "t", lines_vpos_want);
+}
+
 #[test]
 fn values_along_a_line_are_perspective_correct() {
     // Clip-space A = (−1, ½, ½, 1) and B = (2.25, 1.5, 1.5, 3) on an 8×8

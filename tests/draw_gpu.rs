@@ -21,7 +21,7 @@ use std::process::{Command, Output};
 /// the emulator's set-up gives a line, with the inputs it computes
 /// (`run/gpu_lines.rs`), so only the shader's instructions could differ,
 /// and these copy, fog by exact factors or take exact differences.
-const BIT_IDENTICAL: [&str; 18] = [
+const BIT_IDENTICAL: [&str; 19] = [
     "alpha_depth.json",
     "alpha_rounding.json",
     "blend.json",
@@ -34,6 +34,7 @@ const BIT_IDENTICAL: [&str; 18] = [
     "grid.json",
     "lines.json",
     "lines_gpu.json",
+    "lines_vpos.json",
     "mrt.json",
     "point_sizes.json",
     "points.json",
@@ -212,6 +213,7 @@ fn a_draw_in_one_pass_leaves_what_the_per_primitive_path_leaves() {
         "grid.json",
         "lines.json",
         "lines_gpu.json",
+        "lines_vpos.json",
         "quad.json",
     ];
     let mut one_pass = Vec::new();
@@ -570,48 +572,16 @@ fn the_alpha_test_compares_at_each_targets_precision_on_both_backends() {
 }
 
 #[test]
-fn a_line_whose_shader_reads_vpos_is_refused_on_the_device_by_name() {
-    // The device shades a line's pixels in a window of their own at (0, 0)
-    // (`run/gpu_lines.rs`), where vPos would read the window's position:
-    // such a line is refused with its reason, as bad input is (exit 2), and
-    // the emulator draws it.
-    let dir = repo().join("tests/draw_conformance");
-    let list = serde_json::json!({
-        "targets": [{"name": "t", "size": "8x4", "format": "A32B32G32R32F"}],
-        "steps": [{"draw": "t", "shader": dir.join("vpos.psh").to_str().unwrap(),
-            "geometry": {"primitive": "line_list",
-                "vertices": {"attributes": {"positiont0": [[1, 1, 0, 1], [6, 1, 0, 1]]}}}}]
-    });
-    let tmp = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("line_vpos");
-    std::fs::create_dir_all(&tmp).unwrap();
-    let path = tmp.join("line_vpos.json");
-    std::fs::write(&path, serde_json::to_string(&list).unwrap()).unwrap();
-    let run = |backend: &str| {
-        let out = tmp.join(backend);
-        let args = [
-            "render",
-            path.to_str().unwrap(),
-            "-q",
-            "--backend",
-            backend,
-            "-o",
-        ];
-        let mut args: Vec<&str> = args.to_vec();
-        args.push(out.to_str().unwrap());
-        ps30(&args, repo())
-    };
-    assert_eq!(run("emulator").status.code(), Some(0));
-    let o = run("gpu");
-    let err = stderr(&o);
-    if err.contains("no GPU adapter") && std::env::var_os("CI").is_none() {
-        eprintln!("a line reading vPos on the GPU: skipped: {err}");
+fn lines_read_their_place_in_the_target_as_vpos_on_the_device() {
+    // The device shades a draw's lines together in one atlas
+    // (`run/gpu_lines.rs`), each window somewhere else than in the target;
+    // vPos must still read each pixel's place in the target, the values
+    // derived by hand beside `lines_vpos_want`.
+    let list = repo().join("tests/draw_conformance/lines_vpos.json");
+    let Some(t) = render_file(&list, "gpu") else {
         return;
-    }
-    assert_eq!(o.status.code(), Some(2), "{err}");
-    assert!(
-        err.contains("reads vPos is drawn on the emulator only"),
-        "{err}"
-    );
+    };
+    crate::draw_conformance::check(&t, "t", crate::draw_conformance_raster::lines_vpos_want);
 }
 
 /// The same bytes from `a` and `b`, two folders of a list's targets.

@@ -242,11 +242,19 @@ impl<'c, 'a> Worker<'c, 'a> {
         let mut xs = [0.0f32; LANES];
         let mut ys = [0.0f32; LANES];
         let origin = ctx.pixels.map_or((0, 0), |p| p.origin);
+        let positions = ctx.pixels.and_then(|p| p.positions.as_deref());
+        let grid = 2 * ctx.quads_x;
         for l in 0..LANES {
             let (x, y, inside) = ctx.lane_pixel(batch, l);
             target |= (inside as u64) << l;
-            xs[l] = (x + u64::from(origin.0)) as f32;
-            ys[l] = (y + u64::from(origin.1)) as f32;
+            // A packed draw's pixel sits where its window put it.
+            let at = positions.and_then(|p| p.get((y * grid + x) as usize));
+            let (px, py) = at.map_or(
+                (x + u64::from(origin.0), y + u64::from(origin.1)),
+                |&(px, py)| (u64::from(px), u64::from(py)),
+            );
+            xs[l] = px as f32;
+            ys[l] = py as f32;
             self.pixel[l] = (y * ctx.width + x) as usize;
         }
         // Whole quads run when any of their pixels is inside the target.

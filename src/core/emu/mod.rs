@@ -412,6 +412,13 @@ pub struct PixelInputs {
     /// 2·⌈h/2⌉` values row-major (a window of odd width or height has its
     /// last column or row outside it, helpers only).
     pub values: Vec<(u32, Vec<[f32; 4]>)>,
+    /// The render-target pixel of every pixel of the quad grid, laid out
+    /// as `values`, where the draw's pixels are not one window of the
+    /// target but several primitives' windows packed side by side (each at
+    /// even offsets, so that their quads stay quads): `vPos` is then the
+    /// pixel's entry here and `origin` is not read. `None`: `vPos` is
+    /// `origin + (x, y)`.
+    pub positions: Option<Vec<(u32, u32)>>,
 }
 
 impl PixelInputs {
@@ -1004,6 +1011,9 @@ fn check_pixels(p: &PixelInputs, w: u32, h: u32) -> Result<(), EmuError> {
             "slot {v} has {} values for a quad grid of {grid}",
             values.len()
         ));
+    }
+    if let Some(n) = p.positions.as_ref().map(Vec::len).filter(|&n| n != grid) {
+        return bad(format!("{n} positions for a quad grid of {grid}"));
     }
     Ok(())
 }

@@ -397,6 +397,45 @@ fn inputs_vpos_and_vface() {
 }
 
 #[test]
+fn vpos_of_packed_windows_is_each_pixels_given_position() {
+    // A 4×2 draw of two 2×2 windows packed side by side: the left one is
+    // the target's (10, 20)–(11, 21), the right one (100, 6)–(101, 7).
+    // `positions` names each pixel's place; `origin` is not read then.
+    let text = "dcl vPos.xy
+         mov r0, vPos
+         mov oC0, r0";
+    let at = |x: u32, y: u32| match x < 2 {
+        true => (10 + x, 20 + y),
+        false => (100 + x - 2, 6 + y),
+    };
+    let p = PixelInputs {
+        origin: (50, 50),
+        covered: vec![true; 8],
+        values: Vec::new(),
+        positions: Some((0..8).map(|i| at(i % 4, i / 4)).collect()),
+    };
+    let mut d = Draw::new(4, 2);
+    d.pixels = Some(&p);
+    let out = run_text(text, &d);
+    let c = out.color[0].as_ref().unwrap();
+    for (i, got) in c.iter().enumerate() {
+        let (x, y) = at(i as u32 % 4, i as u32 / 4);
+        assert_eq!(*got, [x as f32, y as f32, 0.0, 0.0], "pixel {i}");
+    }
+    // Positions that do not cover the quad grid are refused by name.
+    let short = PixelInputs {
+        positions: Some(vec![(0, 0); 7]),
+        ..p.clone()
+    };
+    d.pixels = Some(&short);
+    let err = run(&compiled(text), &d).expect_err("refused");
+    assert!(
+        err.to_string().contains("7 positions for a quad grid of 8"),
+        "{err}"
+    );
+}
+
+#[test]
 fn vface_holds_the_sign_of_the_draws_face() {
     // Every component is ±1; `cmp` (a ≥ 0) and `if_lt` see the sign.
     let text = "def c0, 0, 1, 0, 0

@@ -264,7 +264,7 @@ fn ready<'g>(
     let (w, h) = (draw.target_width, draw.target_height);
     let device = &gpu.device;
     let scopes = ErrorScopes::push(gpu);
-    let layout = bind_group_layout(gpu, &iface, true);
+    let layout = layout_of(gpu, &iface, input_layers(&iface, draw));
     let color_targets = color_targets(&iface, targets);
     // The driver compiles the pipeline on a thread of its own while this one
     // uploads the textures and inputs: for the article's pass 1 on an NVIDIA
@@ -868,6 +868,23 @@ pub(super) fn bind_group_layout(
     iface: &translate::Interface,
     per_pixel_inputs: bool,
 ) -> wgpu::BindGroupLayout {
+    let layers = match per_pixel_inputs {
+        true => iface.inputs.len(),
+        false => 0,
+    };
+    layout_of(gpu, iface, layers)
+}
+
+/// The layers of `draw`'s input texture: one per declared `v#`, then, for
+/// a draw of given pixels whose shader reads `vPos`, each pixel's place in
+/// the render target (`Specialisation::positions_given`).
+fn input_layers(iface: &translate::Interface, draw: &Draw) -> usize {
+    iface.inputs.len() + usize::from(draw.pixels.is_some() && iface.position)
+}
+
+/// [`bind_group_layout`] with an input texture of `layers` layers (none: no
+/// input texture).
+fn layout_of(gpu: &Gpu, iface: &translate::Interface, layers: usize) -> wgpu::BindGroupLayout {
     let filterable = gpu.float32_filterable();
     let mut layout_entries = vec![entry(
         interface::CONSTANTS_BINDING,
@@ -892,7 +909,7 @@ pub(super) fn bind_group_layout(
             }),
         ));
     }
-    if !iface.inputs.is_empty() && per_pixel_inputs {
+    if layers > 0 {
         let ty = texture_type(false, wgpu::TextureViewDimension::D2Array);
         layout_entries.push(entry(interface::DRAW_INPUTS_BINDING, ty));
     }
@@ -929,9 +946,13 @@ impl Bindings {
             views.push((s.texture_binding, view));
             samplers.push((s.sampler_binding, sampler));
         }
-        let inputs = match iface.inputs.is_empty() || !per_pixel_inputs {
-            true => None,
-            false => Some(input_texture(gpu, draw, iface)?),
+        let layers = match per_pixel_inputs {
+            true => input_layers(iface, draw),
+            false => 0,
+        };
+        let inputs = match layers {
+            0 => None,
+            _ => Some(input_texture(gpu, draw, iface, layers as u32)?),
         };
         let buffer = device.create_buffer(&wgpu::BufferDescriptor {
             label: Some("ps30 constants"),
@@ -1093,6 +1114,7 @@ fn specialisation_for(
             .collect(),
     );
     spec.set_inputs_flushed(draw.float_rules.flush_denormals());
+    spec.set_positions_given(draw.pixels.is_some());
     Ok(spec)
 }
 
@@ -1130,11 +1152,13 @@ pub(super) fn bind_sampler(
 /// a draw of one primitive's pixels, as [`Draw::pixels`] gives them), one
 /// layer per declared `v#` in register order; under the `hardware` rules with
 /// denormals flushed, as the emulator reads them (the shader then reads
-/// them as they are: [`specialisation`]).
+/// them as they are: [`specialisation`]). `layers` counts a draw of
+/// given pixels' layer of positions too ([`input_layers`]).
 fn input_texture(
     gpu: &Gpu,
     draw: &Draw,
     iface: &translate::Interface,
+    layers: u32,
 ) -> Result<wgpu::Texture, GpuError> {
     let (w, h) = (draw.target_width, draw.target_height);
     let large = w as usize * h as usize * 16 >= texture::PARALLEL_UPLOAD;
@@ -1143,7 +1167,7 @@ fn input_texture(
         size: wgpu::Extent3d {
             width: w,
             height: h,
-            depth_or_array_layers: iface.inputs.len() as u32,
+            depth_or_array_layers: layers,
         },
         mip_level_count: 1,
         sample_count: 1,
@@ -1185,6 +1209,11 @@ fn input_texture(
             }
             texture::write_texels(gpu, &texture, 0, layer as u32, (w, h, 1), &texels)?;
         }
+        if layers as usize > iface.inputs.len() {
+            let texels = positions(p, w, h);
+            let layer = iface.inputs.len() as u32;
+            texture::write_texels(gpu, &texture, 0, layer, (w, h, 1), &texels)?;
+        }
         phases::mark("draw: a primitive's inputs uploaded");
         return Ok(texture);
     }
@@ -1215,4 +1244,21 @@ fn input_texture(
     }
     phases::mark("draw: inputs uploaded");
     Ok(texture)
+}
+
+/// The layer of positions of a draw of given pixels (`w × h`): each
+/// pixel's `vPos`, `(x, y, 0, 0)`, where its window puts it in the render
+/// target ([`emu::PixelInputs::positions`], else `origin + (x, y)`).
+fn positions(p: &emu::PixelInputs, w: u32, h: u32) -> Vec<[f32; 4]> {
+    let grid = emu::PixelInputs::grid_width(w);
+    (0..w as usize * h as usize)
+        .map(|i| {
+            let (x, y) = (i % w as usize, i / w as usize);
+            let at = match &p.positions {
+                Some(given) => given.get(y * grid + x).copied().unwrap_or_default(),
+                None => (p.origin.0 + x as u32, p.origin.1 + y as u32),
+            };
+            [at.0 as f32, at.1 as f32, 0.0, 0.0]
+        })
+        .collect()
 }

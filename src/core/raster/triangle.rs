@@ -253,6 +253,7 @@ pub(crate) fn window(
             origin,
             covered,
             values,
+            positions: None,
         },
         depth: depths,
     })

@@ -746,9 +746,14 @@ fn geometry_inputs(cx: &Ctx, iface: &Interface, fb: &mut Fb, flat: u64) {
 }
 
 /// `Entry::Draw`'s inputs: `v#` = layer k of the input texture at this
-/// pixel, k counting declared inputs in register order.
+/// pixel, k counting declared inputs in register order. Where the draw
+/// gives each pixel's position ([`super::Specialisation::positions_given`])
+/// and the shader reads `vPos`, `vPos` is the layer after them, which
+/// holds `(x, y, 0, 0)`: the pixel's place in the render target, not its
+/// place in the draw.
 fn draw_inputs(m: &mut Module, cx: &Ctx, iface: &Interface, fb: &mut Fb, centre: Expr) {
-    if iface.inputs.is_empty() {
+    let positions = cx.spec.positions_given() && iface.position;
+    if iface.inputs.is_empty() && !positions {
         return;
     }
     let image_ty = ty(
@@ -776,20 +781,28 @@ fn draw_inputs(m: &mut Module, cx: &Ctx, iface: &Interface, fb: &mut Fb, centre:
         convert: Some(4),
     });
     let level = fb.i32(0);
-    for (k, i) in iface.inputs.iter().enumerate() {
+    let load = |fb: &mut Fb, layer: usize| {
         let image = fb.add(Expression::GlobalVariable(texture));
-        let layer = fb.i32(k as i32);
-        let value = fb.add(Expression::ImageLoad {
+        let layer = fb.i32(layer as i32);
+        fb.add(Expression::ImageLoad {
             image,
             coordinate: pixel,
             array_index: Some(layer),
             sample: None,
             level: Some(level),
-        });
+        })
+    };
+    for (k, i) in iface.inputs.iter().enumerate() {
+        let value = load(fb, k);
         let value = entering(fb, i, value);
         let v = cx.var(fb, cx.inputs);
         let slot = fb.index(v, i.register);
         fb.store(slot, value);
+    }
+    if positions {
+        let value = load(fb, iface.inputs.len());
+        let p = cx.var(fb, cx.pos);
+        fb.store(p, value);
     }
 }
 

@@ -66,6 +66,11 @@ pub struct Specialisation {
     constants: Option<Vec<[u32; 4]>>,
     /// The inputs (`v#`) arrive with denormals already flushed.
     inputs_flushed: bool,
+    /// `Entry::Draw` reads `vPos` per pixel from the last layer of the
+    /// draw's input texture (a draw of given pixels, whose place on the
+    /// device need not be their place in the render target) instead of
+    /// from the fragment's position.
+    positions_given: bool,
 }
 
 impl Specialisation {
@@ -100,6 +105,16 @@ impl Specialisation {
     /// Whether the inputs arrive flushed.
     pub fn inputs_flushed(&self) -> bool {
         self.inputs_flushed
+    }
+
+    /// Sets whether `vPos` arrives as the input texture's last layer.
+    pub fn set_positions_given(&mut self, given: bool) {
+        self.positions_given = given;
+    }
+
+    /// Whether `vPos` arrives as the input texture's last layer.
+    pub fn positions_given(&self) -> bool {
+        self.positions_given
     }
 
     /// What sampler `register`'s translation carries.

@@ -540,6 +540,7 @@ pub(crate) fn window(s: &ShadedPrimitive, width: u32) -> (Window, DrawOutput) {
             origin: (x0, y0),
             covered,
             values: Vec::new(),
+            positions: None,
         },
         depth,
     };
