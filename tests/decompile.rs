@@ -163,13 +163,13 @@ fn sources() -> Vec<Source> {
     let probes = [
         "ps_1_1", "ps_1_2", "ps_1_3", "ps_1_4", "ps_2_0", "ps_2_x", "vs_2_0", "vs_2_x", "vs_3_0",
     ]
-        .into_iter()
-        .flat_map(crate::oracle::profile_fixtures)
-        .chain(
-            crate::oracle::fixtures("asm")
-                .into_iter()
-                .filter(|f| f.rel.starts_with("conformance_ps2x/")),
-        );
+    .into_iter()
+    .flat_map(crate::oracle::profile_fixtures)
+    .chain(
+        crate::oracle::fixtures("asm")
+            .into_iter()
+            .filter(|f| f.rel.starts_with("conformance_ps2x/")),
+    );
     for f in probes {
         if !f.accepted() {
             continue;
@@ -188,7 +188,11 @@ fn sources() -> Vec<Source> {
     for p in asm.into_iter().chain(ps1_run) {
         let rel = match p.strip_prefix(root().join("asm")) {
             Ok(r) => format!("asm/{}", r.to_string_lossy()),
-            Err(_) => p.strip_prefix(root()).unwrap().to_string_lossy().into_owned(),
+            Err(_) => p
+                .strip_prefix(root())
+                .unwrap()
+                .to_string_lossy()
+                .into_owned(),
         }
         .replace('\\', "/");
         let file = load::source_file(&rel, std::fs::read(&p).unwrap(), &options).unwrap();
@@ -812,4 +816,42 @@ fn mova_rounds_as_the_emulator_at_halves() {
     let x = 0.499_999_97f32;
     assert_eq!(x.signum() * (x.abs() + 0.5).floor(), 1.0);
     assert_eq!(mova_round(x, HALVES), 0.0);
+}
+
+fn loaded(text: &str) -> load::Loaded {
+    let options = load::Options::default();
+    let file = load::source_file("t.psh", text.as_bytes().to_vec(), &options).unwrap();
+    load::load(file, &options).unwrap_or_else(|e| panic!("{text}: {e}"))
+}
+
+/// The ps_1_x proof can fail: a ps_2_0 or ps_3_0 shader that leaves out a
+/// ps_1_x rule the decompiled HLSL writes is found different, and one that
+/// keeps it identical. `mul r0, c0, c1` clamps both constants to [−1, 1]
+/// first (the verifier's constants reach ±100); `sub r0, v0, c0` reads
+/// `v0` in [0, 1], which a ps_3_0 shader receives unclamped (interpolants
+/// in [−2, 2)). Every other step is exact, so "identical" is bit for bit.
+#[test]
+fn verify_finds_a_ps_1_x_clamp_left_out() {
+    let kind = |ps1: &str, other: &str| {
+        let (a, b) = (loaded(ps1), loaded(other));
+        ps30::jobs::decompile::equivalence(&a.shader, &b.shader, 16)
+            .unwrap()
+            .kind
+    };
+    // one `c` register per instruction (X5213): the bounds go through r3
+    let clamp_c = "def c8, -1, 1, 0, 0\nmov r3, c8\nmax r0, c0, r3.x\nmin r0, r0, r3.y\n\
+                   max r1, c1, r3.x\nmin r1, r1, r3.y\n";
+    let mul = "ps_1_1\nmul r0, c0, c1\n";
+    let kept = format!("ps_2_0\n{clamp_c}mul_sat r0, r0, r1\nmov oC0, r0\n");
+    assert_eq!(kind(mul, &kept), Kind::Identical);
+    assert_eq!(
+        kind(mul, "ps_2_0\nmov r0, c0\nmul_sat r0, r0, c1\nmov oC0, r0\n"),
+        Kind::Different
+    );
+    let sub = "ps_1_1\nsub r0, v0, c0\n";
+    let head = format!("ps_3_0\ndcl_color v0\n{clamp_c}");
+    let kept = format!("{head}mov_sat r2, v0\nadd_sat oC0, r2, -r0\n");
+    assert_eq!(kind(sub, &kept), Kind::Identical);
+    let left_out = format!("{head}add_sat oC0, v0, -r0\n");
+    assert_eq!(kind(sub, &left_out), Kind::Different);
 }

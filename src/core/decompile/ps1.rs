@@ -102,7 +102,11 @@ fn dependency(lowered: &Shader) -> usize {
             .map(|s| level.get(&s.reg.index).copied().unwrap_or(0))
             .max()
             .unwrap_or(0);
-        let here = if x.op == Opcode::TexLd { read + 1 } else { read };
+        let here = if x.op == Opcode::TexLd {
+            read + 1
+        } else {
+            read
+        };
         deepest = deepest.max(here);
         if let Some(d) = x.dst.filter(|d| d.reg.file == RegFile::Temp) {
             let kept = level.get(&d.reg.index).copied().unwrap_or(0);
