@@ -446,41 +446,8 @@ fn write(
     let locals = locals(&s, &fields, precise);
     let mut statements = 0;
     if subroutines {
-        text.push('\n');
-        for l in &locals {
-            text.push_str(&format!("static {l}\n"));
-        }
-        for p in &params {
-            text.push_str(&format!(
-                "static {};\n",
-                p.decl.split(" : ").next().unwrap_or(&p.decl)
-            ));
-        }
-        if ctx.caller_counter {
-            text.push_str(&format!("static int {};\n", expr::CALLER_COUNTER));
-        }
-        for (l, _) in &labels {
-            text.push_str(&format!("void label{l}();\n"));
-        }
-        for (k, &(l, start)) in labels.iter().enumerate() {
-            let end = labels.get(k + 1).map_or(n, |&(_, e)| e);
-            let mut body = Body::new(1);
-            emit::statements(
-                &mut ctx,
-                shader,
-                &ins,
-                start + 1..end.max(start + 1),
-                false,
-                &mut body,
-            )?;
-            statements += body.lines.len();
-            text.push_str(&format!("\nvoid label{l}()\n{{\n"));
-            for line in body.lines {
-                text.push_str(&line);
-                text.push('\n');
-            }
-            text.push_str("}\n");
-        }
+        statements +=
+            subroutine_functions(&mut ctx, shader, &ins, &labels, &locals, &params, &mut text)?;
     }
     let single = !vertex && s.colors.iter().copied().eq([0]) && !s.depth;
     let sig = signature(&params, &s, single, subroutines, precise);
@@ -543,6 +510,58 @@ fn write(
         statements,
         named_uniforms,
     })
+}
+
+/// The subroutines' declarations and functions (registers and inputs as
+/// `static` globals, prototypes, one `labelN()` per `label`), appended to
+/// `text`; the statements they hold.
+fn subroutine_functions(
+    ctx: &mut expr::Ctx,
+    shader: &Shader,
+    ins: &[Instruction],
+    labels: &[(u32, usize)],
+    locals: &[String],
+    params: &[Param],
+    text: &mut String,
+) -> Result<usize, DecompileError> {
+    let n = shader.instructions().len();
+    let mut statements = 0;
+    text.push('\n');
+    for l in locals {
+        text.push_str(&format!("static {l}\n"));
+    }
+    for p in params {
+        text.push_str(&format!(
+            "static {};\n",
+            p.decl.split(" : ").next().unwrap_or(&p.decl)
+        ));
+    }
+    if ctx.caller_counter {
+        text.push_str(&format!("static int {};\n", expr::CALLER_COUNTER));
+    }
+    for (l, _) in labels {
+        text.push_str(&format!("void label{l}();\n"));
+    }
+    for (k, &(l, start)) in labels.iter().enumerate() {
+        let end = labels.get(k + 1).map_or(n, |&(_, e)| e);
+        let mut body = Body::new(1);
+        emit::statements(
+            ctx,
+            shader,
+            ins,
+            start + 1..end.max(start + 1),
+            false,
+            &mut body,
+        )?;
+        statements += body.lines.len();
+        text.push_str(&format!("\nvoid label{l}()\n{{\n"));
+        for line in body.lines {
+            text.push_str(&line);
+            text.push('\n');
+        }
+        text.push_str("}\n");
+    }
+    Ok(statements)
 }
 
 /// Whether the variables go without `precise`. `precise` makes the
