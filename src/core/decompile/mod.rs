@@ -477,6 +477,9 @@ fn write(
     let head = body.lines.len();
     emit::statements(&mut ctx, shader, &ins, 0..main_end, true, &mut body)?;
     statements += body.lines.len() - head;
+    if ps1.is_some() {
+        ps1::prune_temporaries(&mut body.lines);
+    }
     if vertex {
         vertex::epilogue(&fields)
             .into_iter()

@@ -126,6 +126,47 @@ pub(crate) fn saturated_inputs(inputs: &std::collections::BTreeMap<u32, String>)
         .collect()
 }
 
+/// Drops from the temporaries' declaration (`float4 r0 = 0, r16 = 0, …;`
+/// among `lines`) those no other line names: the lowering's scratch
+/// registers whose every value was folded into its reader.
+pub(crate) fn prune_temporaries(lines: &mut [String]) {
+    let Some(k) = lines.iter().position(|l| {
+        let t = l.trim_start().trim_start_matches("precise ");
+        t.starts_with("float4 r") && t.ends_with(" = 0;")
+    }) else {
+        return;
+    };
+    let line = lines[k].clone();
+    let (head, list) = match line.split_once("float4 ") {
+        Some(x) => x,
+        None => return,
+    };
+    let used: Vec<&str> = list
+        .trim_end_matches(';')
+        .split(", ")
+        .filter(|d| {
+            let name = d.trim_end_matches(" = 0");
+            lines
+                .iter()
+                .enumerate()
+                .any(|(i, l)| i != k && names_register(l, name))
+        })
+        .collect();
+    if !used.is_empty() {
+        lines[k] = format!("{head}float4 {};", used.join(", "));
+    }
+}
+
+/// Whether `line` names register `name` (`r1`, not `r16`).
+fn names_register(line: &str, name: &str) -> bool {
+    let word = |c: char| c.is_ascii_alphanumeric() || c == '_';
+    line.match_indices(name).any(|(i, _)| {
+        let before = line[..i].chars().next_back();
+        let after = line[i + name.len()..].chars().next();
+        !before.is_some_and(word) && !after.is_some_and(word)
+    })
+}
+
 /// `clamp(x, lo, hi)` for `min(max(x, lo), hi)` (`a` the `min`'s first
 /// operand, `b` its second) where `lo` and `hi` are literals.
 pub(crate) fn clamp_of(a: &str, b: &str) -> Option<String> {
@@ -181,7 +222,20 @@ fn clamped_literal(x: &str, lo: f32, hi: f32) -> Option<String> {
 
 #[cfg(test)]
 mod tests {
-    use super::clamp_of;
+    use super::{clamp_of, prune_temporaries};
+
+    #[test]
+    fn temporaries_no_statement_names_are_not_declared() {
+        let mut lines: Vec<String> = [
+            "    precise float4 r0 = 0, r1 = 0, r16 = 0, r24 = 0;",
+            "    r16 = clamp(c0, -1.0, 1.0);",
+            "    r0 = r16 * 2.0;",
+        ]
+        .map(String::from)
+        .to_vec();
+        prune_temporaries(&mut lines);
+        assert_eq!(lines[0], "    precise float4 r0 = 0, r16 = 0;");
+    }
 
     #[test]
     fn a_max_inside_a_min_is_a_clamp_only_when_it_is_whole() {

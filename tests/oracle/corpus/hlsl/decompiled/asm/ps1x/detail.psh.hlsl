@@ -10,7 +10,7 @@ sampler2D s1 : register(s1);
 float4 main(float4 color0 : COLOR0, float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1) : COLOR
 {
     float4 oC0 = 0;
-    float4 r0 = 0, r1 = 0, r8 = 0, r9 = 0, r16 = 0, r17 = 0, r24 = 0, r25 = 0, r26 = 0;
+    float4 r0 = 0, r1 = 0, r8 = 0, r9 = 0, r16 = 0, r24 = 0;
     color0 = saturate(color0);
     r16 = clamp(c0, -1.0, 1.0);
     r8 = clamp(tex2D(s0, texcoord0.xy), -8.0, 8.0);

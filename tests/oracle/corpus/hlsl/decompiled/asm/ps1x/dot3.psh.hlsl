@@ -10,7 +10,7 @@ sampler2D s5 : register(s5);
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1, float4 texcoord2 : TEXCOORD2, float4 texcoord3 : TEXCOORD3) : COLOR
 {
     precise float4 oC0 = 0;
-    precise float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0, r5 = 0, r16 = 0, r17 = 0, r24 = 0, r25 = 0, r26 = 0, r27 = 0, r28 = 0, r29 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0, r5 = 0, r25 = 0;
     r0 = clamp(tex2D(s0, texcoord0.xy), -8.0, 8.0);
     r1.xyz = clamp(texcoord1.xyz, -8.0, 8.0);
     r2.xyz = clamp(texcoord2.xyz, -8.0, 8.0);

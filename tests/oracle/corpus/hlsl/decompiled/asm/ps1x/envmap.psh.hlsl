@@ -9,7 +9,7 @@ sampler2D s3 : register(s3);
 float4 main(float4 color0 : COLOR0, float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1, float4 texcoord2 : TEXCOORD2, float4 texcoord3 : TEXCOORD3) : COLOR
 {
     float4 oC0 = 0;
-    float4 r0 = 0, r8 = 0, r11 = 0, r12 = 0, r18 = 0, r24 = 0, r25 = 0, r26 = 0;
+    float4 r0 = 0, r8 = 0, r11 = 0, r12 = 0, r18 = 0, r24 = 0;
     color0 = saturate(color0);
     r18 = clamp(c2, -1.0, 1.0);
     r8 = clamp(tex2D(s0, texcoord0.xy), -8.0, 8.0);

@@ -6,7 +6,7 @@
 float4 main(float4 color0 : COLOR0, float4 texcoord0 : TEXCOORD0) : COLOR
 {
     precise float4 oC0 = 0;
-    precise float4 r0 = 0, r1 = 0, r16 = 0, r24 = 0, r25 = 0;
+    precise float4 r0 = 0, r1 = 0;
     color0 = saturate(color0);
     r1.xyz = clamp(texcoord0.xyz, -8.0, 8.0);
     r0.w = clamp((float4(0.25, 0.5, 0.75, 1.0).z), -8.0, 8.0);

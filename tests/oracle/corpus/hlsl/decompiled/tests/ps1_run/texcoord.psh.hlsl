@@ -6,7 +6,7 @@
 float4 main(float4 color0 : COLOR0, float4 texcoord0 : TEXCOORD0) : COLOR
 {
     precise float4 oC0 = 0;
-    precise float4 r0 = 0, r8 = 0, r16 = 0, r24 = 0, r25 = 0, r26 = 0;
+    precise float4 r0 = 0, r8 = 0, r24 = 0;
     color0 = saturate(color0);
     r24.xyz = saturate(texcoord0.xyz);
     r24.w = 1.0;

@@ -8,7 +8,7 @@ sampler2D s2 : register(s2);
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1, float4 texcoord2 : TEXCOORD2) : COLOR
 {
     precise float4 oC0 = 0;
-    precise float4 r0 = 0, r1 = 0, r8 = 0, r10 = 0, r12 = 0, r16 = 0, r17 = 0, r24 = 0, r26 = 0;
+    precise float4 r0 = 0, r1 = 0, r8 = 0, r10 = 0, r12 = 0, r24 = 0;
     r8 = clamp(tex2D(s0, texcoord0.xy), -8.0, 8.0);
     r12.x = dot(texcoord1.xyz, (r8 * 2.0 - 1.0).xyz);
     r12.y = dot(texcoord2.xyz, (r8 * 2.0 - 1.0).xyz);

@@ -8,7 +8,7 @@ sampler2D s1 : register(s1);
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
     precise float4 oC0 = 0;
-    precise float4 r0 = 0, r1 = 0, r8 = 0, r9 = 0, r16 = 0, r17 = 0, r24 = 0;
+    precise float4 r0 = 0, r1 = 0, r8 = 0, r9 = 0, r24 = 0;
     r8 = clamp(tex2D(s0, texcoord0.xy), -8.0, 8.0);
     r9 = clamp(tex2D(s1, r8.wx), -8.0, 8.0);
     r0 = float4(1.0, 0.5, 0.25, 0.0);

@@ -10,7 +10,7 @@ sampler2D s3 : register(s3);
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1, float4 texcoord2 : TEXCOORD2, float4 texcoord3 : TEXCOORD3) : COLOR
 {
     precise float4 oC0 = 0;
-    precise float4 r0 = 0, r1 = 0, r8 = 0, r9 = 0, r10 = 0, r11 = 0, r16 = 0, r17 = 0, r24 = 0;
+    precise float4 r0 = 0, r1 = 0, r8 = 0, r9 = 0, r10 = 0, r11 = 0;
     r8 = clamp(tex2D(s0, texcoord0.xy), -8.0, 8.0);
     r9 = clamp(tex2D(s1, texcoord1.xy), -8.0, 8.0);
     r10 = clamp(tex2D(s2, texcoord2.xy), -8.0, 8.0);

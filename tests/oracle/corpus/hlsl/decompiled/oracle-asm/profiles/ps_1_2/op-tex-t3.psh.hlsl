@@ -7,7 +7,7 @@ sampler2D s3 : register(s3);
 float4 main(float4 texcoord3 : TEXCOORD3) : COLOR
 {
     precise float4 oC0 = 0;
-    precise float4 r0 = 0, r1 = 0, r11 = 0, r16 = 0, r17 = 0, r24 = 0;
+    precise float4 r0 = 0, r1 = 0, r11 = 0, r24 = 0;
     r11 = clamp(tex2D(s3, texcoord3.xy), -8.0, 8.0);
     r0 = float4(1.0, 0.5, 0.25, 0.0);
     r1 = float4(-1.0, 0.0, 0.5, 1.0);

@@ -6,7 +6,7 @@
 float4 main(float4 color0 : COLOR0, float4 color1 : COLOR1) : COLOR
 {
     precise float4 oC0 = 0;
-    precise float4 r0 = 0, r1 = 0, r16 = 0, r17 = 0, r24 = 0;
+    precise float4 r0 = 0, r1 = 0;
     color0 = saturate(color0);
     color1 = saturate(color1);
     r0 = float4(1.0, 0.5, 0.25, 0.0);

@@ -6,7 +6,7 @@
 float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
 {
     precise float4 oC0 = 0;
-    precise float4 r0 = 0, r1 = 0, r8 = 0, r16 = 0, r17 = 0, r24 = 0;
+    precise float4 r0 = 0, r1 = 0, r8 = 0, r24 = 0;
     r24.xyz = saturate(texcoord0.xyz);
     r24.w = 1.0;
     r8 = clamp(r24, -8.0, 8.0);

@@ -7,7 +7,7 @@ sampler2D s0 : register(s0);
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1) : COLOR
 {
     precise float4 oC0 = 0;
-    precise float4 r0 = 0, r1 = 0, r8 = 0, r9 = 0, r16 = 0, r17 = 0, r24 = 0;
+    precise float4 r0 = 0, r1 = 0, r8 = 0, r9 = 0, r24 = 0;
     r8 = clamp(tex2D(s0, texcoord0.xy), -8.0, 8.0);
     r9 = clamp(dot(texcoord1.xyz, r8.xyz).xxxx, -8.0, 8.0);
     r0 = float4(1.0, 0.5, 0.25, 0.0);

@@ -12,7 +12,7 @@ sampler2D s5 : register(s5);
 float4 main(float4 texcoord0 : TEXCOORD0, float4 texcoord1 : TEXCOORD1, float4 texcoord2 : TEXCOORD2, float4 texcoord3 : TEXCOORD3, float4 texcoord4 : TEXCOORD4, float4 texcoord5 : TEXCOORD5) : COLOR
 {
     precise float4 oC0 = 0;
-    precise float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0, r5 = 0, r16 = 0, r17 = 0, r24 = 0;
+    precise float4 r0 = 0, r1 = 0, r2 = 0, r3 = 0, r4 = 0, r5 = 0, r16 = 0;
     r16 = float4(1.0, 0.5, 0.25, 0.0);
     r0 = clamp(r16, -8.0, 8.0);
     r1 = float4(-1.0, 0.0, 0.5, 1.0);

@@ -6,7 +6,7 @@
 float4 main() : COLOR
 {
     precise float4 oC0 = 0;
-    precise float4 r0 = 0, r1 = 0, r16 = 0, r17 = 0, r24 = 0;
+    precise float4 r0 = 0, r24 = 0;
     r0 = float4(1.0, 0.5, 0.25, 0.0);
     r24 = dot(r0.xyz, float4(-1.0, 0.0, 0.5, 1.0).xyz);
     oC0 = saturate(clamp(r24, -8.0, 8.0));

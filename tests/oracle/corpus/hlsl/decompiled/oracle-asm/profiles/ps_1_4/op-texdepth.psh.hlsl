@@ -5,7 +5,7 @@
 
 void main(out precise float4 oC0 : COLOR0, out precise float oDepth : DEPTH)
 {
-    precise float4 r0 = 0, r1 = 0, r5 = 0, r16 = 0, r17 = 0, r24 = 0, r29 = 0;
+    precise float4 r0 = 0, r1 = 0, r5 = 0, r16 = 0, r29 = 0;
     oC0 = 0;
     oDepth = 0;
     r16 = float4(1.0, 0.5, 0.25, 0.0);
