@@ -2,7 +2,8 @@
 //! every HLSL shader of `tests/oracle/corpus/hlsl/` that Microsoft's
 //! compiler accepted (its bytecode fixture) and the oracle's assembly of
 //! the profiles other than ps_3_0 (`tests/oracle/corpus/asm/profiles/`,
-//! `conformance_ps2x/`) is decompiled, in every profile but ps_1_x; the
+//! `conformance_ps2x/`) is decompiled, ps_1_x too (as the program ps30
+//! runs for it, `core/decompile/ps1.rs`; with `tests/ps1_run/`); the
 //! HLSL is committed under `tests/oracle/corpus/hlsl/decompiled/` (the
 //! test fails when it is not what the decompiler writes today:
 //! `PS30_WRITE_DECOMPILED=1 cargo test --test suite decompile::` rewrites
@@ -34,6 +35,19 @@ const REFUSED: &[(&str, &str)] = &[
     ("*/rel-o-aL.psh", "X3500"),
     ("*/rel-o-aL-2049.psh", "X3500"),
     ("*/rel-o-aL-mask.psh", "X3500"),
+    // ps_1_x instructions the emulator does not run yet (`core/ps1/run.rs`):
+    // no run could show that HLSL for them computes the same
+    ("*/op-texbem.psh", "`texbem`"),
+    ("*/op-texbeml.psh", "`texbeml`"),
+    ("*/op-texm3x2depth.psh", "`texm3x2depth`"),
+    ("*/op-texm3x3spec.psh", "`texm3x3spec`"),
+    ("*/op-texm3x3vspec.psh", "`texm3x3vspec`"),
+    ("*/op-bem.psh", "`bem`"),
+    ("*/op-bem-nophase.psh", "`bem`"),
+    ("*/mod-bem-d2.psh", "`bem`"),
+    ("*/mod-bem-sat.psh", "`bem`"),
+    ("asm/ps1x/bump.psh", "`texbem`"),
+    ("asm/ps1x/phases.psh", "`bem`"),
 ];
 
 /// Whether `name` is one of `list`'s (exactly, or by a `*` entry's end).
@@ -146,14 +160,16 @@ fn sources() -> Vec<Source> {
         let Some(fxo) = &f.fxo else { continue };
         out.push(fixture_source(format!("hlsl/{}", f.rel), fxo));
     }
-    let probes = ["ps_2_0", "ps_2_x", "vs_2_0", "vs_2_x", "vs_3_0"]
-        .into_iter()
-        .flat_map(crate::oracle::profile_fixtures)
-        .chain(
-            crate::oracle::fixtures("asm")
-                .into_iter()
-                .filter(|f| f.rel.starts_with("conformance_ps2x/")),
-        );
+    let probes = [
+        "ps_1_1", "ps_1_2", "ps_1_3", "ps_1_4", "ps_2_0", "ps_2_x", "vs_2_0", "vs_2_x", "vs_3_0",
+    ]
+    .into_iter()
+    .flat_map(crate::oracle::profile_fixtures)
+    .chain(
+        crate::oracle::fixtures("asm")
+            .into_iter()
+            .filter(|f| f.rel.starts_with("conformance_ps2x/")),
+    );
     for f in probes {
         if !f.accepted() {
             continue;
@@ -165,23 +181,26 @@ fn sources() -> Vec<Source> {
     walk(&root().join("asm"), "psh", &mut asm);
     walk(&root().join("asm"), "vsh", &mut asm);
     asm.sort();
-    for p in asm {
-        let rel = p
-            .strip_prefix(root().join("asm"))
-            .unwrap()
-            .to_string_lossy()
-            .replace('\\', "/");
+    // the ps_1_x shaders the emulator's tests run
+    let mut ps1_run = Vec::new();
+    walk(&root().join("tests/ps1_run"), "psh", &mut ps1_run);
+    ps1_run.sort();
+    for p in asm.into_iter().chain(ps1_run) {
+        let rel = match p.strip_prefix(root().join("asm")) {
+            Ok(r) => format!("asm/{}", r.to_string_lossy()),
+            Err(_) => p
+                .strip_prefix(root())
+                .unwrap()
+                .to_string_lossy()
+                .into_owned(),
+        }
+        .replace('\\', "/");
         let file = load::source_file(&rel, std::fs::read(&p).unwrap(), &options).unwrap();
         match load::load(file, &options) {
-            // ps_1_x is refused by name (`ps_1_x_is_refused_by_name`)
-            Ok(loaded) if loaded.shader.program().profile.is_ps1() => {}
-            Ok(loaded) => out.push(Source {
-                name: format!("asm/{rel}"),
-                loaded,
-            }),
+            Ok(loaded) => out.push(Source { name: rel, loaded }),
             // shaders that need `-D` counts (REPEAT_BLOCK sizes) are not one shader
             Err(e) if e.to_string().contains("is not defined") => {}
-            Err(e) => panic!("asm/{rel} does not load: {e}"),
+            Err(e) => panic!("{rel} does not load: {e}"),
         }
     }
     out
@@ -672,17 +691,19 @@ fn a_block_written_out_four_times_is_a_loop() {
     assert_eq!(three.matches("tex2D").count(), 3, "{three}");
 }
 
-/// ps_1_x is refused by name: Microsoft's compiler writes no ps_1_x from
-/// HLSL any more (X3539), so no HLSL could be compiled back and shown to
-/// mean what the shader meant.
+/// A ps_1_x instruction the emulator does not run yet is refused naming
+/// it and its line: no run could show that HLSL for it computes the same.
 #[test]
-fn ps_1_x_is_refused_by_name() {
+fn a_ps_1_x_instruction_that_does_not_run_is_refused_by_name() {
     let options = load::Options::default();
     let path = root().join("asm/ps1x/bump.psh");
     let file = load::source_file("bump.psh", std::fs::read(path).unwrap(), &options).unwrap();
     let loaded = load::load(file, &options).unwrap();
     let e = decompile(&loaded.shader, None).unwrap_err().to_string();
-    assert!(e.contains("ps_1_") && e.contains("X3539"), "{e}");
+    assert!(
+        e.contains("ps_1_1") && e.contains("`texbem` (line 7)"),
+        "{e}"
+    );
 }
 
 /// `mova` rounds to nearest; the HLSL writes the rounding itself
@@ -795,4 +816,42 @@ fn mova_rounds_as_the_emulator_at_halves() {
     let x = 0.499_999_97f32;
     assert_eq!(x.signum() * (x.abs() + 0.5).floor(), 1.0);
     assert_eq!(mova_round(x, HALVES), 0.0);
+}
+
+fn loaded(text: &str) -> load::Loaded {
+    let options = load::Options::default();
+    let file = load::source_file("t.psh", text.as_bytes().to_vec(), &options).unwrap();
+    load::load(file, &options).unwrap_or_else(|e| panic!("{text}: {e}"))
+}
+
+/// The ps_1_x proof can fail: a ps_2_0 or ps_3_0 shader that leaves out a
+/// ps_1_x rule the decompiled HLSL writes is found different, and one that
+/// keeps it identical. `mul r0, c0, c1` clamps both constants to [−1, 1]
+/// first (the verifier's constants reach ±100); `sub r0, v0, c0` reads
+/// `v0` in [0, 1], which a ps_3_0 shader receives unclamped (interpolants
+/// in [−2, 2)). Every other step is exact, so "identical" is bit for bit.
+#[test]
+fn verify_finds_a_ps_1_x_clamp_left_out() {
+    let kind = |ps1: &str, other: &str| {
+        let (a, b) = (loaded(ps1), loaded(other));
+        ps30::jobs::decompile::equivalence(&a.shader, &b.shader, 16)
+            .unwrap()
+            .kind
+    };
+    // one `c` register per instruction (X5213): the bounds go through r3
+    let clamp_c = "def c8, -1, 1, 0, 0\nmov r3, c8\nmax r0, c0, r3.x\nmin r0, r0, r3.y\n\
+                   max r1, c1, r3.x\nmin r1, r1, r3.y\n";
+    let mul = "ps_1_1\nmul r0, c0, c1\n";
+    let kept = format!("ps_2_0\n{clamp_c}mul_sat r0, r0, r1\nmov oC0, r0\n");
+    assert_eq!(kind(mul, &kept), Kind::Identical);
+    assert_eq!(
+        kind(mul, "ps_2_0\nmov r0, c0\nmul_sat r0, r0, c1\nmov oC0, r0\n"),
+        Kind::Different
+    );
+    let sub = "ps_1_1\nsub r0, v0, c0\n";
+    let head = format!("ps_3_0\ndcl_color v0\n{clamp_c}");
+    let kept = format!("{head}mov_sat r2, v0\nadd_sat oC0, r2, -r0\n");
+    assert_eq!(kind(sub, &kept), Kind::Identical);
+    let left_out = format!("{head}add_sat oC0, v0, -r0\n");
+    assert_eq!(kind(sub, &left_out), Kind::Different);
 }

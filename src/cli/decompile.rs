@@ -1,5 +1,5 @@
-//! `ps30 decompile`: a ps_2_0, ps_2_x, ps_3_0, vs_2_0, vs_2_x or vs_3_0
-//! shader (bytecode or assembly) as HLSL, and with `--verify` the proof
+//! `ps30 decompile`: a ps_1_1–ps_1_4, ps_2_0, ps_2_x, ps_3_0, vs_2_0, vs_2_x
+//! or vs_3_0 shader (bytecode or assembly) as HLSL, and with `--verify` the proof
 //! that the HLSL means what the shader meant: Microsoft's compiler
 //! compiles it and both run in the emulator (pixel or vertex stage) on the
 //! same inputs.
@@ -17,8 +17,9 @@ use std::path::PathBuf;
 
 #[derive(clap::Args)]
 pub struct Args {
-    /// Shader: ps_2_0, ps_2_x, ps_3_0, vs_2_0, vs_2_x or vs_3_0 bytecode or assembly, a
-    /// bundled name, or `-` for standard input (ps_1_x is refused: no HLSL target remains).
+    /// Shader: ps_1_1–ps_1_4, ps_2_0, ps_2_x, ps_3_0, vs_2_0, vs_2_x or vs_3_0 bytecode or
+    /// assembly, a bundled name, or `-` for standard input (ps_1_x as HLSL for ps_2_0, or
+    /// ps_2_a where ps_2_0's budgets are too small, under --ps1-max-value).
     /// Several, or a directory (walked recursively for .psh, .asm, .dis, .fxo, .cso and .pso
     /// files): corpus mode, one line per file and a summary.
     #[arg(required = true, num_args = 1..)]

@@ -87,6 +87,9 @@ pub(crate) struct Ctx<'a> {
     /// Values not written to their temporary because their one reader
     /// takes the expression itself (see [`super::fold`]): register → value.
     pub pending: RefCell<BTreeMap<u32, Pending>>,
+    /// Whether `min(max(x, lo), hi)` of literals is written `clamp(x, lo,
+    /// hi)` (a ps_1_x shader's range clamps, `ps1.rs`).
+    pub clamps: bool,
 }
 
 /// A folded value waiting for its reader.
@@ -451,7 +454,11 @@ pub(crate) fn value(
         Opcode::Sub => format!("{} - {}", src(0)?, src(1)?),
         Opcode::Mul => format!("{} * {}", src(0)?, src(1)?),
         Opcode::Mad => binary(format!("{} * {}", src(0)?, src(1)?), "+", src(2)?),
-        Opcode::Min => format!("min({}, {})", src(0)?, src(1)?),
+        Opcode::Min => {
+            let (a, b) = (src(0)?, src(1)?);
+            let clamp = ctx.clamps.then(|| super::ps1::clamp_of(&a, &b)).flatten();
+            clamp.unwrap_or_else(|| format!("min({a}, {b})"))
+        }
         Opcode::Max => format!("max({}, {})", src(0)?, src(1)?),
         Opcode::Abs => format!("abs({})", src(0)?),
         Opcode::Frc => format!("frac({})", src(0)?),

@@ -23,6 +23,7 @@ mod fold;
 mod matrix;
 mod names;
 mod profiles;
+mod ps1;
 mod reduce;
 mod repeat;
 mod vertex;
@@ -367,11 +368,25 @@ fn named_uniforms(table: Option<&ConstantTable>, names: &Names) -> usize {
     })
 }
 
-/// Decompiles `shader` (ps_2_0, ps_2_x, ps_3_0, vs_2_0, vs_2_x or vs_3_0)
-/// with the names of its constant table.
+/// Decompiles `shader` (ps_1_1–ps_1_4, ps_2_0, ps_2_x, ps_3_0, vs_2_0,
+/// vs_2_x or vs_3_0) with the names of its constant table; a ps_1_x
+/// shader as the program ps30 runs for it (`ps1.rs`).
 pub fn decompile(
     shader: &Shader,
     table: Option<&ConstantTable>,
+) -> Result<Decompiled, DecompileError> {
+    if shader.program().profile.is_ps1() {
+        let (lowered, plan) = ps1::plan(shader)?;
+        return write(lowered, table, Some(&plan));
+    }
+    write(shader, table, None)
+}
+
+/// The HLSL of `shader`; `ps1`: how a ps_1_x shader's lowering is written.
+fn write(
+    shader: &Shader,
+    table: Option<&ConstantTable>,
+    ps1: Option<&ps1::Plan>,
 ) -> Result<Decompiled, DecompileError> {
     // sin and cos read as the calls the compiler lowered (`reduce.rs`)
     let ins = reduce::read_back(shader);
@@ -382,7 +397,10 @@ pub fn decompile(
         s.colors.extend(0..last);
     }
     let mut taken: BTreeSet<String> = BTreeSet::from([vertex::ROUND.to_string()]);
-    let target = profiles::target(shader.program().profile)?;
+    let target = match ps1 {
+        Some(p) => p.target,
+        None => profiles::target(shader.program().profile)?,
+    };
     let vertex = shader.program().profile.stage() == crate::core::profile::Stage::Vertex;
     let fields = if vertex {
         vertex::fields(shader)?
@@ -390,6 +408,10 @@ pub fn decompile(
         Vec::new()
     };
     let (params, input_map, texcoords, input_arrays) = inputs(shader, &mut taken)?;
+    let saturated = match ps1 {
+        Some(_) => ps1::saturated_inputs(&input_map),
+        None => Vec::new(),
+    };
     let names = Names::new(shader.program(), table, &s.uses, &mut taken)?;
     // runs of dot products over a whole matrix read as `mul` (`matrix.rs`)
     let ins = matrix::group(ins, &names);
@@ -406,11 +428,15 @@ pub fn decompile(
         from_zero: Vec::new(),
         caller_counter: reads_caller_counter(&shader.instructions()[main_end..]),
         pending: Default::default(),
+        clamps: ps1.is_some(),
     };
     let labels: Vec<(u32, usize)> = info.labels.iter().map(|(&l, &i)| (l, i as usize)).collect();
     let subroutines = !labels.is_empty();
     let mut text = String::new();
-    text.push_str(&profiles::header(shader.program().profile, target));
+    match ps1 {
+        Some(p) => text.push_str(&p.header),
+        None => text.push_str(&profiles::header(shader.program().profile, target)),
+    }
     text.push_str(&names.preamble());
     if vertex {
         text.push_str(&vertex::rounding(shader));
@@ -420,41 +446,8 @@ pub fn decompile(
     let locals = locals(&s, &fields, precise);
     let mut statements = 0;
     if subroutines {
-        text.push('\n');
-        for l in &locals {
-            text.push_str(&format!("static {l}\n"));
-        }
-        for p in &params {
-            text.push_str(&format!(
-                "static {};\n",
-                p.decl.split(" : ").next().unwrap_or(&p.decl)
-            ));
-        }
-        if ctx.caller_counter {
-            text.push_str(&format!("static int {};\n", expr::CALLER_COUNTER));
-        }
-        for (l, _) in &labels {
-            text.push_str(&format!("void label{l}();\n"));
-        }
-        for (k, &(l, start)) in labels.iter().enumerate() {
-            let end = labels.get(k + 1).map_or(n, |&(_, e)| e);
-            let mut body = Body::new(1);
-            emit::statements(
-                &mut ctx,
-                shader,
-                &ins,
-                start + 1..end.max(start + 1),
-                false,
-                &mut body,
-            )?;
-            statements += body.lines.len();
-            text.push_str(&format!("\nvoid label{l}()\n{{\n"));
-            for line in body.lines {
-                text.push_str(&line);
-                text.push('\n');
-            }
-            text.push_str("}\n");
-        }
+        statements +=
+            subroutine_functions(&mut ctx, shader, &ins, &labels, &locals, &params, &mut text)?;
     }
     let single = !vertex && s.colors.iter().copied().eq([0]) && !s.depth;
     let sig = signature(&params, &s, single, subroutines, precise);
@@ -480,9 +473,13 @@ pub fn decompile(
             body.line("oDepth = 0;");
         }
     }
+    saturated.into_iter().for_each(|l| body.line(l));
     let head = body.lines.len();
     emit::statements(&mut ctx, shader, &ins, 0..main_end, true, &mut body)?;
     statements += body.lines.len() - head;
+    if ps1.is_some() {
+        ps1::prune_temporaries(&mut body.lines);
+    }
     if vertex {
         vertex::epilogue(&fields)
             .into_iter()
@@ -516,6 +513,58 @@ pub fn decompile(
         statements,
         named_uniforms,
     })
+}
+
+/// The subroutines' declarations and functions (registers and inputs as
+/// `static` globals, prototypes, one `labelN()` per `label`), appended to
+/// `text`; the statements they hold.
+fn subroutine_functions(
+    ctx: &mut expr::Ctx,
+    shader: &Shader,
+    ins: &[Instruction],
+    labels: &[(u32, usize)],
+    locals: &[String],
+    params: &[Param],
+    text: &mut String,
+) -> Result<usize, DecompileError> {
+    let n = shader.instructions().len();
+    let mut statements = 0;
+    text.push('\n');
+    for l in locals {
+        text.push_str(&format!("static {l}\n"));
+    }
+    for p in params {
+        text.push_str(&format!(
+            "static {};\n",
+            p.decl.split(" : ").next().unwrap_or(&p.decl)
+        ));
+    }
+    if ctx.caller_counter {
+        text.push_str(&format!("static int {};\n", expr::CALLER_COUNTER));
+    }
+    for (l, _) in labels {
+        text.push_str(&format!("void label{l}();\n"));
+    }
+    for (k, &(l, start)) in labels.iter().enumerate() {
+        let end = labels.get(k + 1).map_or(n, |&(_, e)| e);
+        let mut body = Body::new(1);
+        emit::statements(
+            ctx,
+            shader,
+            ins,
+            start + 1..end.max(start + 1),
+            false,
+            &mut body,
+        )?;
+        statements += body.lines.len();
+        text.push_str(&format!("\nvoid label{l}()\n{{\n"));
+        for line in body.lines {
+            text.push_str(&line);
+            text.push('\n');
+        }
+        text.push_str("}\n");
+    }
+    Ok(statements)
 }
 
 /// Whether the variables go without `precise`. `precise` makes the

@@ -6,10 +6,9 @@
 //! `TEXCOORD#` and a colour `v#` is `COLOR#`, the registers
 //! Microsoft's compiler gives those semantics back.
 //!
-//! ps_1_x is refused by name: Microsoft's compiler no longer writes ps_1_x
-//! from HLSL (`D3DCompile` refuses the targets, X3539), so HLSL for it
-//! cannot be recompiled for the same profile, so nothing could show the
-//! HLSL means what the shader meant.
+//! ps_1_x is not here: Microsoft's compiler no longer writes ps_1_x from
+//! HLSL (`D3DCompile` refuses the targets, X3539), so a ps_1_x shader's
+//! HLSL is its lowering's, for ps_2_0 or larger (`ps1.rs`).
 
 use super::{DecompileError, Target};
 use crate::core::ir::InputDecl;
@@ -27,16 +26,9 @@ pub(crate) fn target(profile: Profile) -> Result<Target, DecompileError> {
         Profile::Vs2_0 => "vs_2_0",
         Profile::Vs2X | Profile::Vs2A => "vs_2_a",
         Profile::Vs3_0 => "vs_3_0",
-        p if p.is_ps1() => {
-            return Err(DecompileError::Unsupported(format!(
-                "a {p} shader: Microsoft's compiler writes no ps_1_x from HLSL any more \
-                 (X3539), so HLSL for it could not be compiled back for {p} and run beside it \
-                 to show that it means the same"
-            )))
-        }
         p => {
             return Err(DecompileError::Unsupported(format!(
-                "a {p} shader: decompile reads ps_2_0, ps_2_x, ps_3_0, vs_2_0, vs_2_x and vs_3_0"
+                "a {p} shader: decompile reads ps_1_x, ps_2_0, ps_2_x, ps_3_0, vs_2_0, vs_2_x and vs_3_0"
             )))
         }
     };

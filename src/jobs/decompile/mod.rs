@@ -210,8 +210,11 @@ pub fn equivalence(
         let differ = oa.killed != ob.killed || !same_bits(&oa, &ob);
         if differ && bounds.is_none() {
             bounds = Some(
-                [original, recompiled]
-                    .map(|s| bound::bound_shader(s).and_then(|b| emu::compile(&b).ok())),
+                // a ps_1_x shader's arithmetic is its lowering's
+                [original, recompiled].map(|s| {
+                    bound::bound_shader(s.runnable().unwrap_or(s))
+                        .and_then(|b| emu::compile(&b).ok())
+                }),
             );
         }
         let outs = [0, 1].map(|k| {

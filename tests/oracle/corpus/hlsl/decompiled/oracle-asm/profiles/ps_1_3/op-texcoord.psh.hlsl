@@ -1,0 +1,18 @@
+// oracle: target=ps_2_0
+// ps_1_3 shader decompiled by ps30 (HLSL for ps_2_0)
+// ps_1_x rules as arithmetic: constants clamped to [-1, 1] once, colour inputs to [0, 1],
+// every result to [-8.0, 8.0] (PixelShader1xMaxValue 8.0), r0 saturated as the pixel's colour
+
+float4 main(float4 texcoord0 : TEXCOORD0) : COLOR
+{
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r1 = 0, r8 = 0, r24 = 0;
+    r24.xyz = saturate(texcoord0.xyz);
+    r24.w = 1.0;
+    r8 = clamp(r24, -8.0, 8.0);
+    r0 = float4(1.0, 0.5, 0.25, 0.0);
+    r1 = float4(-1.0, 0.0, 0.5, 1.0);
+    r24 = r0 + r8;
+    oC0 = saturate(clamp(r24, -8.0, 8.0));
+    return oC0;
+}
