@@ -374,7 +374,6 @@ fn texm_and_texdp3_take_dot_products_with_the_coordinates() {
     assert_eq!(address("ps_1_2", body, Some(1), &[y]), right);
 }
 
-
 #[test]
 fn executed_slots_are_the_programs() {
     // Four instructions with modifiers, a shift and a co-issued pair: 1
@@ -597,7 +596,13 @@ fn hostile_bump_matrices_do_not_panic() {
     // non-finite or huge; the sample follows ps30's rule for such
     // coordinates (docs/textures.md) and the draw ends.
     let body = "tex t0\ntexbeml t1, t0\nmov r1, t1\n";
-    for v in [f32::NAN, f32::INFINITY, f32::NEG_INFINITY, f32::MAX, -f32::MAX] {
+    for v in [
+        f32::NAN,
+        f32::INFINITY,
+        f32::NEG_INFINITY,
+        f32::MAX,
+        -f32::MAX,
+    ] {
         let env = BumpEnv {
             matrix: [v; 4],
             lscale: v,

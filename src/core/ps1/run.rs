@@ -55,15 +55,37 @@
 //!   it), `texm3x3` writes (rows, 1), `texdp3` writes the product in every
 //!   component and `texdp3tex` samples at (product, 0).
 //!
-//! Refused by name, not run yet: `texbem`, `texbeml` and `bem` (they need
-//! the stage's bump-environment matrix and luminance, state a draw does
-//! not carry yet), `texm3x2depth`, `texm3x3spec` and `texm3x3vspec`.
+//! * `texm3x2depth`: z / w of its two rows (z the pad's) as the depth, 1
+//!   where w is 0, saturated as `texdepth`'s is (its page: "Be sure to
+//!   clamp z/w to be in the range of (0-1)"). `texm3x3spec` and
+//!   `texm3x3vspec` reflect the eye ray E about the rows N, R =
+//!   2·[(N·E)/(N·N)]·N − E (their pages), and sample stage # at R; E is the
+//!   constant register (read as [-1, 1]) or, for vspec, the w components of
+//!   the three rows' coordinates. The quotient is `rcp` then `mul`.
+//! * Bump-environment mapping, with stage state D3DTSS_BUMPENVMAT00 … 11,
+//!   BUMPENVLSCALE and BUMPENVLOFFSET ([`BumpEnv`], 0.0 by default as the
+//!   D3DTEXTURESTAGESTATETYPE page gives them): `texbem t(m), t(n)` samples
+//!   stage m at u' = u + M00·t(n).r + M10·t(n).g, v' = v + M01·t(n).r +
+//!   M11·t(n).g (texbem's page; u, v coordinate m, M stage m's, the
+//!   destination's); `texbeml` then multiplies rgb by t(n).b·LSCALE +
+//!   LOFFSET of stage m, alpha as sampled, nothing saturated (texbeml's
+//!   page, whose formula has no clamp); `bem dst.rg, src0, src1` (ps_1_4)
+//!   writes dst.r = src0.r + M00·src1.r + M10·src1.g, dst.g = src0.g +
+//!   M01·src1.r + M11·src1.g with stage n's matrix, n the destination
+//!   register's number (bem's page), then the result modifiers and range as
+//!   any arithmetic. The perturbation is read signed, as the register holds
+//!   it. Wine's `texbem_test` (dlls/d3d9/tests/visual.c), run on Windows,
+//!   holds the page's orientation: with M01 = 0.5, M10 = -0.5 a signed
+//!   dv = -0.5 moves u by +0.25 onto its white spot (the DirectX 8 page's
+//!   comment, u = u1 + mat00·r + mat01·g, would read black there).
 //!
 //! Register plan of the lowered shader: ps_1_x's `r#` are `r0`–`r5`,
 //! ps_1_1–ps_1_3's `t#` as registers `r8`–`r11`, the rows of a texm sequence `r12`,
 //! the clamped copies of
 //! `c0`–`c7` `r16`–`r23`, scratch `r24`–`r31`; `c8`–`c11` hold the numbers
-//! the rules need. Inputs keep their names (`t#` coordinates, `v#`
+//! the rules need; `c12`–`c17` stage 0–5's bump matrix and `c18`–`c23`
+//! their luminance scale and offset, which the draw sets from its stage
+//! state ([`bump_constants`]; unset, Direct3D 9's 0). Inputs keep their names (`t#` coordinates, `v#`
 //! colours), so draws feed them as ps_2_0's. Slots: the first operation of
 //! each instruction carries its slots, the rest none, so executed counts
 //! are the ps_1_x program's.
@@ -728,7 +750,12 @@ impl Lower {
         self.emit(Opcode::Rcp, false, temp(SPARE, 2), vec![t(1)]);
         self.emit(Opcode::Mul, false, temp(SPARE, 1), vec![t(0), t(1)]);
         self.emit(Opcode::Add, false, temp(SPARE, 1), vec![t(0), t(0)]);
-        self.emit(Opcode::Mad, false, temp(ROWS, 7), vec![rows, t(0), neg(eye)]);
+        self.emit(
+            Opcode::Mad,
+            false,
+            temp(ROWS, 7),
+            vec![rows, t(0), neg(eye)],
+        );
     }
 
     /// An arithmetic instruction computed into scratch `r` (not written).
