@@ -17,7 +17,7 @@ use std::process::{Command, Output};
 /// vPos, the fan's flat colours, the alpha test's boundaries, blending, depth written from constant z,
 /// two targets, points, triangles filled as points, the dense grid's flat
 /// colours with its borders scissored, unwritten inputs' defaults, vertex
-/// texture fetch, ps_1_x's bump-environment instructions sampling texel
+/// texture fetch, ps_1_x's bump-environment and texm3x3spec sampling texel
 /// centres), and the lists of lines: the device shades the pixels
 /// the emulator's set-up gives a line, with the inputs it computes
 /// (`run/gpu_lines.rs`), so only the shader's instructions could differ,

@@ -76,11 +76,16 @@ fn the_bump_instructions_draw_the_hand_derived_pixels_on_both_backends() {
         let [r, g, b, a] = moved(x, y);
         [r * 0.75, g * 0.75, b * 0.75, a]
     });
+    // texm3x3spec: t0 = (0.25, -0.25, 0.5); coordinates 1 and 2 are
+    // (0, 0, 2), 3 is 0, so the rows N = (1, 1, 0); E = c0 = (0.125,
+    // 0.875, 0): N·E = 1, N·N = 2, R = 2·(1/2)·N − E = (0.875, 0.125, 0),
+    // the texel centre (3, 0) of `env` at every pixel.
+    crate::draw_conformance::check(&t, "spec", |_, _| [0.875, 0.125, 0.0, 1.0]);
     // The GPU backend: the same pixels, bit for bit (tests/draw_gpu.rs
     // compares the whole list as well).
     let path = crate::common::bin::repo().join("tests/draw_conformance/bump.json");
     if let Some(gpu) = crate::d3d9_conformance::render_file(&path, "gpu") {
-        for name in ["texbem", "bem", "texbeml"] {
+        for name in ["texbem", "bem", "texbeml", "spec"] {
             assert_eq!(gpu[name], t[name], "{name}");
         }
     }
