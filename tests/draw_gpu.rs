@@ -17,7 +17,8 @@ use std::process::{Command, Output};
 /// vPos, the fan's flat colours, the alpha test's boundaries, blending, depth written from constant z,
 /// two targets, points, triangles filled as points, the dense grid's flat
 /// colours with its borders scissored, unwritten inputs' defaults, vertex
-/// texture fetch), and the lists of lines: the device shades the pixels
+/// texture fetch, ps_1_x's bump-environment and texm3x3spec sampling texel
+/// centres), and the lists of lines: the device shades the pixels
 /// the emulator's set-up gives a line, with the inputs it computes
 /// (`run/gpu_lines.rs`), so only the shader's instructions could differ,
 /// and these copy, fog by exact factors or take exact differences.
@@ -25,6 +26,7 @@ const BIT_IDENTICAL: [&str; 19] = [
     "alpha_depth.json",
     "alpha_rounding.json",
     "blend.json",
+    "bump.json",
     "depth.json",
     "depth_funcs.json",
     "face_cull.json",
@@ -222,6 +224,7 @@ fn a_draw_in_one_pass_leaves_what_the_per_primitive_path_leaves() {
         "alpha_depth",
         "alpha_rounding",
         "blend",
+        "bump",
         "clipping",
         "d3dcolor",
         "depth",

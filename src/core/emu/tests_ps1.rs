@@ -3,6 +3,7 @@
 
 use crate::core::emu::{self, Draw, LinearInput, SamplerState, Texture};
 use crate::core::load::{self, Options};
+use crate::core::ps1::run::{bump_constants, BumpEnv};
 
 fn options(max: f32) -> Options {
     Options {
@@ -285,6 +286,17 @@ fn ps_1_4_texld_phases_and_texdepth() {
 /// `stage` (if the shader samples one more): the 2×1 texture; coordinates
 /// 1–3 as given.
 fn address(version: &str, body: &str, stage: Option<u32>, coordinates: &[[f32; 4]]) -> [f32; 4] {
+    address_with(version, body, stage, coordinates, |_| {})
+}
+
+/// [`address`] with more set up by `more`.
+fn address_with(
+    version: &str,
+    body: &str,
+    stage: Option<u32>,
+    coordinates: &[[f32; 4]],
+    more: impl FnOnce(&mut Draw),
+) -> [f32; 4] {
     const S: [[f32; 4]; 1] = [[0.375, 0.75, 0.5, 0.25]];
     r1_with(version, body, 8.0, |d| {
         d.inputs
@@ -305,6 +317,7 @@ fn address(version: &str, body: &str, stage: Option<u32>, coordinates: &[[f32; 4
         if let Some(stage) = stage {
             bind(d, stage);
         }
+        more(d);
     })
 }
 
@@ -362,21 +375,6 @@ fn texm_and_texdp3_take_dot_products_with_the_coordinates() {
 }
 
 #[test]
-fn what_is_not_run_is_refused_by_name() {
-    let loaded = load::load_str(
-        "bump.psh",
-        "ps_1_1\ntex t0\ntexbem t1, t0\nmov r0, t1\n",
-        &Options::default(),
-    )
-    .expect("loads");
-    let e = emu::compile(&loaded.shader).unwrap_err().to_string();
-    assert_eq!(
-        e,
-        "a ps_1_1 shader: `texbem` (line 3): ps30 does not run it yet"
-    );
-}
-
-#[test]
 fn executed_slots_are_the_programs() {
     // Four instructions with modifiers, a shift and a co-issued pair: 1
     // (tex) + 1 (mul) + 1 (the pair) = 3 slots executed, as `check` counts.
@@ -414,4 +412,205 @@ fn per_line_counts_find_every_instruction() {
             (7, 1, 0)
         ]
     );
+}
+
+/// Stage `stage`'s bump-environment state as a draw sets it.
+fn set_bump(d: &mut Draw, stage: u32, env: BumpEnv) {
+    for (register, value) in bump_constants(stage, &env).expect("a ps_1_x stage") {
+        let i = register as usize;
+        if d.constants.float.len() <= i {
+            d.constants.float.resize(i + 1, [0.0; 4]);
+        }
+        d.constants.float[i] = value;
+    }
+}
+
+fn matrix(m: [f32; 4]) -> BumpEnv {
+    BumpEnv {
+        matrix: m,
+        ..BumpEnv::default()
+    }
+}
+
+#[test]
+fn texbem_moves_the_coordinate_by_the_destination_stages_matrix() {
+    // texbem's page: u' = u + M00·t0.r + M10·t0.g, v' = v + M01·t0.r +
+    // M11·t0.g, M of stage 1 (the destination's). t0 = S = (0.375, 0.75,
+    // 0.5, 0.25); coordinate 1 = (0.125, 0.5). The 2×1 texture is BORDER
+    // addressed (border 0): u in [0, 0.5) is the left texel, [0.5, 1) the
+    // right, v outside [0, 1) the border.
+    let (left, right, border) = (TEXELS[0], TEXELS[1], [0.0; 4]);
+    let body = "tex t0\ntexbem t1, t0\nmov r1, t1\n";
+    let run = |stage: u32, m: [f32; 4]| {
+        address_with("ps_1_1", body, Some(1), &[[0.125, 0.5, 0.0, 1.0]], |d| {
+            set_bump(d, stage, matrix(m))
+        })
+    };
+    // Direct3D 9's default matrix is 0: u' = 0.125, the left texel.
+    assert_eq!(run(1, [0.0; 4]), left);
+    // M00 = 2: u' = 0.125 + 2·0.375 = 0.875, the right texel.
+    assert_eq!(run(1, [2.0, 0.0, 0.0, 0.0]), right);
+    // M10 = 1: u' = 0.125 + 0.75 (green) = 0.875.
+    assert_eq!(run(1, [0.0, 0.0, 1.0, 0.0]), right);
+    // M01 = 2: v' = 0.5 + 0.75 = 1.25, past the edge: the border; u' stays.
+    assert_eq!(run(1, [0.0, 2.0, 0.0, 0.0]), border);
+    // M11 = 1: v' = 0.5 + 0.75 = 1.25.
+    assert_eq!(run(1, [0.0, 0.0, 0.0, 1.0]), border);
+    // M00 = -1: u' = 0.125 - 0.375 = -0.25, the border (the sign is kept).
+    assert_eq!(run(1, [-1.0, 0.0, 0.0, 0.0]), border);
+    // Stage 0's matrix (the source's) is not read: u' = 0.125.
+    assert_eq!(run(0, [2.0, 0.0, 0.0, 0.0]), left);
+    // ps_1_2 and ps_1_3 run it the same way.
+    let got = address_with("ps_1_3", body, Some(1), &[[0.125, 0.5, 0.0, 1.0]], |d| {
+        set_bump(d, 1, matrix([2.0, 0.0, 0.0, 0.0]))
+    });
+    assert_eq!(got, right);
+}
+
+#[test]
+fn texbeml_scales_rgb_by_the_luminance() {
+    // texbeml's page: after the texbem sample, rgb ·= t0.b · LSCALE +
+    // LOFFSET (stage 1's), alpha as sampled, nothing saturated. Matrix 0:
+    // the left texel (0.25, 0.5, 0.75, 1); t0.b = S.b = 0.5.
+    let body = "tex t0\ntexbeml t1, t0\nmov r1, t1\n";
+    let run = |lscale: f32, loffset: f32| {
+        address_with("ps_1_1", body, Some(1), &[[0.125, 0.5, 0.0, 1.0]], |d| {
+            let env = BumpEnv {
+                lscale,
+                loffset,
+                ..BumpEnv::default()
+            };
+            set_bump(d, 1, env)
+        })
+    };
+    // 0.5·2 + 0.25 = 1.25: (0.3125, 0.625, 0.9375, 1).
+    assert_eq!(run(2.0, 0.25), [0.3125, 0.625, 0.9375, 1.0]);
+    // 0.5·(-4) + 0 = -2: (-0.5, -1, -1.5, 1), not clamped to [0, 1].
+    assert_eq!(run(-4.0, 0.0), [-0.5, -1.0, -1.5, 1.0]);
+    // Direct3D 9's defaults (0, 0) give factor 0: black, alpha 1.
+    assert_eq!(run(0.0, 0.0), [0.0, 0.0, 0.0, 1.0]);
+}
+
+#[test]
+fn bem_reads_the_destination_registers_stage() {
+    // bem's page (n the destination's number): r = src0.r + M00·src1.r +
+    // M10·src1.g, g = src0.g + M01·src1.r + M11·src1.g. src0 = c0 =
+    // (0.25, 0.5), src1 = r0 = t0 = (0.5, -0.25); stage 1's M = (1, 2,
+    // -4, 0.5): r = 0.25 + 0.5 + 1 = 1.75, g = 0.5 + 1 - 0.125 = 1.375.
+    let body = "def c0, 0.25, 0.5, 0, 0\ntexcrd r0.rgb, t0\nbem r1.rg, c0, r0\nmov r1.ba, c0.b\n";
+    let run = |stage: u32| {
+        r1_with("ps_1_4", body, 8.0, |d| {
+            d.inputs
+                .push((2, LinearInput::constant([0.5, -0.25, 0.0, 1.0])));
+            set_bump(d, stage, matrix([1.0, 2.0, -4.0, 0.5]));
+        })
+    };
+    assert_eq!(run(1), [1.75, 1.375, 0.0, 0.0]);
+    // The matrix on stage 0 (src1's number) or 2: stage 1 keeps its
+    // default 0, r1.rg = c0.rg.
+    assert_eq!(run(0), [0.25, 0.5, 0.0, 0.0]);
+    assert_eq!(run(2), [0.25, 0.5, 0.0, 0.0]);
+}
+
+#[test]
+fn texm3x2depth_writes_z_over_w() {
+    // texm3x2depth's page: z = t1·t0.rgb (the pad), w = t2·t0.rgb, depth
+    // z / w, 1 where w = 0; ps30 saturates it as it does texdepth's (the
+    // page: outside [0, 1] the stored depth is undefined). t0 = S =
+    // (0.375, 0.75, 0.5).
+    let depth = |t1: [f32; 4], t2: [f32; 4]| {
+        let text = "ps_1_3\ndef c0, 0, 0, 0, 0\ntex t0\ntexm3x2pad t1, t0\ntexm3x2depth t2, t0\nmov r0, c0\n";
+        pixel_with(text, 8.0, |d| {
+            const S: [[f32; 4]; 1] = [[0.375, 0.75, 0.5, 0.25]];
+            let t = Texture {
+                width: 1,
+                height: 1,
+                texels: &S,
+            };
+            d.samplers.push((0, t.into(), SamplerState::default()));
+            d.inputs.push((2, LinearInput::constant([0.5; 4])));
+            d.inputs.push((3, LinearInput::constant(t1)));
+            d.inputs.push((4, LinearInput::constant(t2)));
+        })
+        .depth
+        .expect("depth")[0]
+    };
+    let (x, z) = ([1.0, 0.0, 0.0, 0.0], [0.0, 0.0, 1.0, 0.0]);
+    // z = 0.375, w = 0.5: 0.75.
+    assert_eq!(depth(x, z), 0.75);
+    // w = 0: 1.
+    assert_eq!(depth(x, [0.0; 4]), 1.0);
+    // z = 0.5, w = 0.375: 1.33…, saturated to 1; z = -0.375: 0.
+    assert_eq!(depth(z, x), 1.0);
+    assert_eq!(depth([-1.0, 0.0, 0.0, 0.0], z), 0.0);
+}
+
+/// Four texels across: u in [i/4, (i + 1)/4) reads (i/4, 1 - i/4, 0.5, 1).
+const QUARTERS: [[f32; 4]; 4] = [
+    [0.0, 1.0, 0.5, 1.0],
+    [0.25, 0.75, 0.5, 1.0],
+    [0.5, 0.5, 0.5, 1.0],
+    [0.75, 0.25, 0.5, 1.0],
+];
+
+#[test]
+fn texm3x3spec_and_vspec_reflect_the_eye_ray() {
+    // The pages: N = the rows (t1·S, t2·S, t3·S), R = 2·[(N·E)/(N·N)]·N − E,
+    // stage 3 sampled at R. S = t0 = (0.375, 0.75, 0.5); a coordinate
+    // (0, 0, 2) gives the row 2·0.5 = 1, (0, 0, 4) gives 2.
+    // N = (1, 1, 0), E = (0.125, 0.875, 0): N·E = 1, N·N = 2, R = (1, 1, 0)
+    // − E = (0.875, 0.125, 0): the fourth texel. Forgetting the 2 gives
+    // u = 0.375, the sign of E 1.125, the border.
+    // N = (2, 2, 0): N·E = 2, N·N = 8, 2·2/8 = 0.5, R = (1, 1, 0) − E:
+    // the same texel (without the division by N·N it would be the border).
+    let sample = |body: &str, rows: f32, w: [f32; 3]| {
+        let coordinates = [
+            [0.0, 0.0, 2.0 * rows, w[0]],
+            [0.0, 0.0, 2.0 * rows, w[1]],
+            [0.0, 0.0, 0.0, w[2]],
+        ];
+        address_with("ps_1_1", body, None, &coordinates, |d| {
+            let t = Texture {
+                width: 4,
+                height: 1,
+                texels: &QUARTERS,
+            };
+            d.samplers.push((3, t.into(), SamplerState::default()));
+        })
+    };
+    let spec = "def c0, 0.125, 0.875, 0, 0\ntex t0\ntexm3x3pad t1, t0\ntexm3x3pad t2, t0\n\
+                texm3x3spec t3, t0, c0\nmov r1, t3\n";
+    assert_eq!(sample(spec, 1.0, [0.0; 3]), QUARTERS[3]);
+    assert_eq!(sample(spec, 2.0, [0.0; 3]), QUARTERS[3]);
+    // vspec: E = the w of coordinates 1, 2, 3.
+    let vspec = "tex t0\ntexm3x3pad t1, t0\ntexm3x3pad t2, t0\ntexm3x3vspec t3, t0\nmov r1, t3\n";
+    assert_eq!(sample(vspec, 1.0, [0.125, 0.875, 0.0]), QUARTERS[3]);
+    assert_eq!(sample(vspec, 2.0, [0.125, 0.875, 0.0]), QUARTERS[3]);
+    // E = (0.625, 0.375, 0): R = (0.375, 0.625, 0), the second texel.
+    assert_eq!(sample(vspec, 1.0, [0.625, 0.375, 0.0]), QUARTERS[1]);
+}
+
+#[test]
+fn hostile_bump_matrices_do_not_panic() {
+    // NaN, ±∞ and f32::MAX in the matrix and luminance: the coordinate is
+    // non-finite or huge; the sample follows ps30's rule for such
+    // coordinates (docs/textures.md) and the draw ends.
+    let body = "tex t0\ntexbeml t1, t0\nmov r1, t1\n";
+    for v in [
+        f32::NAN,
+        f32::INFINITY,
+        f32::NEG_INFINITY,
+        f32::MAX,
+        -f32::MAX,
+    ] {
+        let env = BumpEnv {
+            matrix: [v; 4],
+            lscale: v,
+            loffset: v,
+        };
+        let got = address_with("ps_1_1", body, Some(1), &[[0.125, 0.5, 0.0, 1.0]], |d| {
+            set_bump(d, 1, env)
+        });
+        assert_eq!(got.len(), 4);
+    }
 }

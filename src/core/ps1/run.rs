@@ -55,15 +55,37 @@
 //!   it), `texm3x3` writes (rows, 1), `texdp3` writes the product in every
 //!   component and `texdp3tex` samples at (product, 0).
 //!
-//! Refused by name, not run yet: `texbem`, `texbeml` and `bem` (they need
-//! the stage's bump-environment matrix and luminance, state a draw does
-//! not carry yet), `texm3x2depth`, `texm3x3spec` and `texm3x3vspec`.
+//! * `texm3x2depth`: z / w of its two rows (z the pad's) as the depth, 1
+//!   where w is 0, saturated as `texdepth`'s is (its page: "Be sure to
+//!   clamp z/w to be in the range of (0-1)"). `texm3x3spec` and
+//!   `texm3x3vspec` reflect the eye ray E about the rows N, R =
+//!   2·[(N·E)/(N·N)]·N − E (their pages), and sample stage # at R; E is the
+//!   constant register (read as [-1, 1]) or, for vspec, the w components of
+//!   the three rows' coordinates. The quotient is `rcp` then `mul`.
+//! * Bump-environment mapping, with stage state D3DTSS_BUMPENVMAT00 … 11,
+//!   BUMPENVLSCALE and BUMPENVLOFFSET ([`BumpEnv`], 0.0 by default as the
+//!   D3DTEXTURESTAGESTATETYPE page gives them): `texbem t(m), t(n)` samples
+//!   stage m at u' = u + M00·t(n).r + M10·t(n).g, v' = v + M01·t(n).r +
+//!   M11·t(n).g (texbem's page; u, v coordinate m, M stage m's, the
+//!   destination's); `texbeml` then multiplies rgb by t(n).b·LSCALE +
+//!   LOFFSET of stage m, alpha as sampled, nothing saturated (texbeml's
+//!   page, whose formula has no clamp); `bem dst.rg, src0, src1` (ps_1_4)
+//!   writes dst.r = src0.r + M00·src1.r + M10·src1.g, dst.g = src0.g +
+//!   M01·src1.r + M11·src1.g with stage n's matrix, n the destination
+//!   register's number (bem's page), then the result modifiers and range as
+//!   any arithmetic. The perturbation is read signed, as the register holds
+//!   it. Wine's `texbem_test` (dlls/d3d9/tests/visual.c), run on Windows,
+//!   holds the page's orientation: with M01 = 0.5, M10 = -0.5 a signed
+//!   dv = -0.5 moves u by +0.25 onto its white spot (the DirectX 8 page's
+//!   comment, u = u1 + mat00·r + mat01·g, would read black there).
 //!
 //! Register plan of the lowered shader: ps_1_x's `r#` are `r0`–`r5`,
 //! ps_1_1–ps_1_3's `t#` as registers `r8`–`r11`, the rows of a texm sequence `r12`,
 //! the clamped copies of
 //! `c0`–`c7` `r16`–`r23`, scratch `r24`–`r31`; `c8`–`c11` hold the numbers
-//! the rules need. Inputs keep their names (`t#` coordinates, `v#`
+//! the rules need; `c12`–`c17` stage 0–5's bump matrix and `c18`–`c23`
+//! their luminance scale and offset, which the draw sets from its stage
+//! state ([`bump_constants`]; unset, Direct3D 9's 0). Inputs keep their names (`t#` coordinates, `v#`
 //! colours), so draws feed them as ps_2_0's. Slots: the first operation of
 //! each instruction carries its slots, the rest none, so executed counts
 //! are the ps_1_x program's.
@@ -102,6 +124,40 @@ const K: u32 = 8;
 const RANGE: u32 = 9;
 const UP: u32 = 10;
 const DOWN: u32 = 11;
+/// `c12`–`c17`: stage #'s bump-environment matrix (M00, M01, M10, M11);
+/// `c18`–`c23`: its luminance (LSCALE, LOFFSET, 0, 0). The draw fills
+/// them ([`bump_constants`]); unset they read 0, Direct3D 9's defaults.
+pub const BUMP_MATRIX: u32 = 12;
+/// See [`BUMP_MATRIX`].
+pub const BUMP_LUMINANCE: u32 = 18;
+/// Texture stages that carry bump-environment state for ps_1_x: ps_1_4's
+/// six (`r0`–`r5`); ps_1_1–ps_1_3 use the first four.
+pub const BUMP_STAGES: u32 = 6;
+
+/// One texture stage's bump-environment state (D3DTEXTURESTAGESTATETYPE):
+/// D3DTSS_BUMPENVMAT00/01/10/11, D3DTSS_BUMPENVLSCALE and
+/// D3DTSS_BUMPENVLOFFSET. Each defaults to 0.0 (Microsoft's
+/// D3DTEXTURESTAGESTATETYPE page and the managed TextureState pages).
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct BumpEnv {
+    /// M00, M01, M10, M11.
+    pub matrix: [f32; 4],
+    /// D3DTSS_BUMPENVLSCALE.
+    pub lscale: f32,
+    /// D3DTSS_BUMPENVLOFFSET.
+    pub loffset: f32,
+}
+
+/// The two constants a draw sets for `stage`'s state (`None` past
+/// [`BUMP_STAGES`]): `(register, value)` for the matrix and the luminance.
+pub fn bump_constants(stage: u32, env: &BumpEnv) -> Option<[(u32, [f32; 4]); 2]> {
+    (stage < BUMP_STAGES).then(|| {
+        [
+            (BUMP_MATRIX + stage, env.matrix),
+            (BUMP_LUMINANCE + stage, [env.lscale, env.loffset, 0.0, 0.0]),
+        ]
+    })
+}
 
 /// Lowers a checked program; `Err` names the first thing ps30 does not run
 /// and its line in `file`.
@@ -172,6 +228,14 @@ fn k(index: u32, c: u8) -> Src {
     Src {
         swizzle: Swizzle::replicate(c),
         ..Src::plain(reg(RegFile::Const, index))
+    }
+}
+
+/// Component `c` of what `s` selects, replicated.
+fn pick(s: Src, c: u8) -> Src {
+    Src {
+        swizzle: Swizzle::replicate(s.swizzle.0[usize::from(c)]),
+        ..s
     }
 }
 
@@ -389,16 +453,26 @@ impl Lower {
                 self.emit(Opcode::TexKill, false, dst, Vec::new());
             }
             Opcode::TexLd | Opcode::TexCrd => self.texld(x, &d, r)?,
-            Opcode::TexDepth => self.texdepth(),
+            Opcode::TexDepth => {
+                let r5 = |c: u8| Src {
+                    swizzle: Swizzle::replicate(c),
+                    ..Src::plain(reg(RegFile::Temp, 5))
+                };
+                self.depth(r5(0), r5(1));
+            }
             Opcode::TexReg2Ar | Opcode::TexReg2Gb | Opcode::TexReg2Rgb => self.texreg(x, &d, r)?,
+            Opcode::TexBem | Opcode::TexBemL => self.texbem(x, &d, r)?,
             Opcode::TexDp3
             | Opcode::TexDp3Tex
             | Opcode::TexM3x2Pad
             | Opcode::TexM3x2Tex
+            | Opcode::TexM3x2Depth
             | Opcode::TexM3x3Pad
             | Opcode::TexM3x3Tex
+            | Opcode::TexM3x3Spec
+            | Opcode::TexM3x3VSpec
             | Opcode::TexM3x3 => self.matrix_row(x, &d, r)?,
-            op if op.class() == crate::core::isa::Class::Texture || op == Opcode::Bem => {
+            op if op.class() == crate::core::isa::Class::Texture => {
                 return Err(format!("`{}`", op.info().mnemonic));
             }
             _ => {
@@ -540,6 +614,24 @@ impl Lower {
             return Ok(());
         }
         self.row = 0;
+        let row = |c: u8| Src {
+            swizzle: Swizzle::replicate(c),
+            ..rows
+        };
+        match x.op {
+            Opcode::TexM3x2Depth => {
+                self.depth(row(0), row(1));
+                return Ok(());
+            }
+            Opcode::TexM3x3Spec | Opcode::TexM3x3VSpec => {
+                let eye = self.eye(x, n)?;
+                self.reflect(eye);
+                self.sample(r, 15, rows, n);
+                self.write(&whole, r);
+                return Ok(());
+            }
+            _ => {}
+        }
         if x.op == Opcode::TexM3x3 {
             self.emit(Opcode::Mov, false, temp(r, 7), vec![rows]);
             self.emit(Opcode::Mov, false, temp(r, 8), vec![k(K, 1)]);
@@ -553,29 +645,117 @@ impl Lower {
         Ok(())
     }
 
-    /// `texdepth r5`: r5.r / r5.g (1 where r5.g is 0) as the depth.
-    fn texdepth(&mut self) {
-        let r5 = |c: u8| Src {
-            swizzle: Swizzle::replicate(c),
-            ..Src::plain(reg(RegFile::Temp, 5))
-        };
+    /// `num / den` (1 where `den` is 0), saturated, as the pixel's depth:
+    /// `texdepth` (r5.r / r5.g) and `texm3x2depth` (z / w of its rows).
+    fn depth(&mut self, num: Src, den: Src) {
         let t = Src {
             swizzle: Swizzle::replicate(0),
             ..Src::plain(reg(RegFile::Temp, SPARE))
         };
-        self.emit(Opcode::Rcp, false, temp(SPARE, 1), vec![r5(1)]);
-        self.emit(Opcode::Mul, false, temp(SPARE, 1), vec![r5(0), t]);
-        let zero_g = Src {
+        self.emit(Opcode::Rcp, false, temp(SPARE, 1), vec![den]);
+        self.emit(Opcode::Mul, false, temp(SPARE, 1), vec![num, t]);
+        let zero = Src {
             modifier: SrcMod::NegAbs,
-            ..r5(1)
+            ..den
         };
-        self.emit(Opcode::Cmp, false, temp(SPARE, 1), vec![zero_g, k(K, 1), t]);
+        self.emit(Opcode::Cmp, false, temp(SPARE, 1), vec![zero, k(K, 1), t]);
         let depth = Dst {
             reg: reg(RegFile::DepthOut, 0),
             relative: None,
             mask: WriteMask(1),
         };
         self.emit(Opcode::Mov, true, depth, vec![t]);
+    }
+
+    /// `into.xy = add.xy + by.r·(M00, M01) + by.g·(M10, M11)`, the matrix
+    /// stage `stage`'s bump-environment state ([`BUMP_MATRIX`]).
+    fn bump(&mut self, stage: u32, add: Src, by: Src, into: Dst) -> Result<(), String> {
+        if stage >= BUMP_STAGES {
+            return Err(format!("bump-environment state of stage {stage}"));
+        }
+        let m = |sw: [u8; 4]| Src {
+            swizzle: Swizzle(sw),
+            ..Src::plain(reg(RegFile::Const, BUMP_MATRIX + stage))
+        };
+        let xy = Dst {
+            mask: WriteMask(into.mask.0 & 3),
+            ..into
+        };
+        let first = pick(by, 0);
+        self.emit(Opcode::Mad, false, xy, vec![first, m([0, 1, 0, 1]), add]);
+        let second = pick(by, 1);
+        let sum = Src::plain(into.reg);
+        self.emit(Opcode::Mad, false, xy, vec![second, m([2, 3, 2, 3]), sum]);
+        Ok(())
+    }
+
+    /// `texbem t(m), t(n)` and `texbeml`: sample stage m at its coordinate
+    /// moved by t(n)'s (r, g) through stage m's matrix; `texbeml` then
+    /// scales the colour's rgb by t(n).b · LSCALE + LOFFSET (alpha as
+    /// sampled).
+    fn texbem(&mut self, x: &Instr, d: &Dest, r: u32) -> Result<(), String> {
+        let s = x.src.first().ok_or("`texbem` without a source")?;
+        let from = self.read(s, SOURCE);
+        let m = d.reg.index;
+        let c = self.coordinate(m);
+        let at = Src::plain(reg(RegFile::Temp, SPARE));
+        self.emit(Opcode::Mov, false, temp(SPARE, 15), vec![c]);
+        self.bump(m, at, from, temp(SPARE, 3))?;
+        self.sample(r, 15, at, m);
+        if x.op == Opcode::TexBemL {
+            let lum = |c: u8| Src {
+                swizzle: Swizzle::replicate(c),
+                ..Src::plain(reg(RegFile::Const, BUMP_LUMINANCE + m))
+            };
+            let l = vec![pick(from, 2), lum(0), lum(1)];
+            self.emit(Opcode::Mad, false, temp(SPARE, 1), l);
+            let rs = Src::plain(reg(RegFile::Temp, r));
+            let by = pick(at, 0);
+            self.emit(Opcode::Mul, false, temp(r, 7), vec![rs, by]);
+        }
+        let whole = Dest {
+            mask: WriteMask::ALL,
+            ..*d
+        };
+        self.write(&whole, r);
+        Ok(())
+    }
+
+    /// The eye ray of `texm3x3spec` (its constant, read as [-1, 1]) or of
+    /// `texm3x3vspec` (the w of coordinates n − 2, n − 1 and n), in
+    /// scratch `SOURCE + 1`.
+    fn eye(&mut self, x: &Instr, n: u32) -> Result<Src, String> {
+        if x.op == Opcode::TexM3x3Spec {
+            let c = x.src.get(1).ok_or("`texm3x3spec` without its eye ray")?;
+            return Ok(self.read(c, SOURCE + 1));
+        }
+        let first = n.checked_sub(2).ok_or("`texm3x3vspec` below stage 2")?;
+        for (i, stage) in (first..=n).enumerate() {
+            let w = pick(self.coordinate(stage), 3);
+            self.emit(Opcode::Mov, false, temp(SOURCE + 1, 1 << i), vec![w]);
+        }
+        Ok(Src::plain(reg(RegFile::Temp, SOURCE + 1)))
+    }
+
+    /// The rows N (xyz of the row register) become R = 2·[(N·E)/(N·N)]·N − E,
+    /// the quotient as ps_2_0 spells one (`rcp`, `mul`).
+    fn reflect(&mut self, eye: Src) {
+        let rows = Src::plain(reg(RegFile::Temp, ROWS));
+        let t = |c: u8| Src {
+            swizzle: Swizzle::replicate(c),
+            ..Src::plain(reg(RegFile::Temp, SPARE))
+        };
+        self.emit(Opcode::Dp3, false, temp(SPARE, 1), vec![rows, eye]);
+        self.emit(Opcode::Dp3, false, temp(SPARE, 2), vec![rows, rows]);
+        self.emit(Opcode::Rcp, false, temp(SPARE, 2), vec![t(1)]);
+        self.emit(Opcode::Mul, false, temp(SPARE, 1), vec![t(0), t(1)]);
+        self.emit(Opcode::Add, false, temp(SPARE, 1), vec![t(0), t(0)]);
+        self.emit(
+            Opcode::Mad,
+            false,
+            temp(ROWS, 7),
+            vec![rows, t(0), neg(eye)],
+        );
     }
 
     /// An arithmetic instruction computed into scratch `r` (not written).
@@ -602,6 +782,10 @@ impl Lower {
                 self.emit(Opcode::Add, false, temp(SPARE, 15), vec![neg(s0), k(K, 0)]);
                 let t = Src::plain(reg(RegFile::Temp, SPARE));
                 self.emit(Opcode::Cmp, false, into, vec![t, s2, s1]);
+            }
+            Opcode::Bem => {
+                let [s0, s1] = <[Src; 2]>::try_from(src).map_err(|_| "`bem` operands")?;
+                self.bump(d.reg.index, s0, s1, into)?;
             }
             op => return Err(format!("`{}`", op.info().mnemonic)),
         }

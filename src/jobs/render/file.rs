@@ -41,7 +41,9 @@
 //!     "none"|"point"|"linear", "address": "wrap"|"mirror"|"clamp"|"border"|
 //!     "mirroronce", "border": [r, g, b, a], "lod_bias": B, "max_mip_level":
 //!     N}`, with `address_u`, `address_v`, `address_w`, `min_filter` and
-//!     `mag_filter` to set one axis or filter apart (`render/textures.rs`);
+//!     `mag_filter` to set one axis or filter apart, and `bump_matrix`,
+//!     `bump_lscale`, `bump_loffset` for the stage's bump-environment state
+//!     (ps_1_x; written to c12–c23, `core/ps1/run.rs`) (`render/textures.rs`);
 //!     NAME is a texture or an earlier target; unset states take
 //!     Direct3D 9's defaults: point, no mips, wrap), `blend` (`src`, `dest`,
 //!     `op`, optional `alpha` with its own `src`, `dest`, `op` for
@@ -332,11 +334,16 @@ pub fn read_inputs(path: &Path, limits: &FileLimits) -> Result<Inputs, FileError
         let field = format!("inputs.{name}");
         values.push((name.clone(), r.input_value(&field, input)?));
     }
-    fn regs<V>(m: &Option<BTreeMap<String, V>>, letter: char) -> Vec<u32> {
-        m.iter()
-            .flatten()
-            .filter_map(|(name, _)| name.strip_prefix(letter)?.parse().ok())
-            .collect()
+    // The shader an inputs file serves is not known here: the state goes
+    // where ps_1_x's lowering reads it, c12–c23 (which the file may then not
+    // set itself); a shader of another profile would read it there.
+    let mut constants = constants;
+    for (reg, v) in r.bump_state(
+        "samplers",
+        step.samplers.as_ref(),
+        &regs(&step.constants, 'c'),
+    )? {
+        set(&mut constants.float, [0.0; 4], reg, v);
     }
     Ok(Inputs {
         constants,
@@ -462,6 +469,14 @@ fn vec4(v: &[f64]) -> Result<[f32; 4], String> {
         *o = f;
     }
     Ok(out)
+}
+
+/// The register numbers a `constants`, `ints` or `bools` map names.
+fn regs<V>(m: &Option<BTreeMap<String, V>>, letter: char) -> Vec<u32> {
+    m.iter()
+        .flatten()
+        .filter_map(|(name, _)| name.strip_prefix(letter)?.parse().ok())
+        .collect()
 }
 
 /// `c5` → 5 for register letter `c` with `count` registers.
@@ -752,8 +767,25 @@ impl Resolver {
             };
             inputs.push((v, value));
         }
-        let constants = self.constants(at, s)?;
+        let mut constants = self.constants(at, s)?;
         let samplers = self.samplers(&format!("{at}.samplers"), s.samplers.as_ref(), 16, target)?;
+        let ps1 = self.list.shaders[shader]
+            .loaded
+            .shader
+            .program()
+            .profile
+            .is_ps1();
+        let given = regs(&s.constants, 'c');
+        let bumps = self.bump_state(&format!("{at}.samplers"), s.samplers.as_ref(), &given)?;
+        if !bumps.is_empty() && !ps1 {
+            self.warnings.push(format!(
+                "{at}.samplers: bump-environment state is read only by ps_1_x's texbem, texbeml and bem; this shader does not read it"
+            ));
+        } else {
+            for (r, v) in bumps {
+                set(&mut constants.float, [0.0; 4], r, v);
+            }
+        }
         let blend = match &s.blend {
             None => BlendState::OFF,
             Some(b) => self.blend(&format!("{at}.blend"), b)?,
@@ -781,6 +813,16 @@ impl Resolver {
             Some((i, targets[i].width, targets[i].height))
         };
         let vertex_samplers = match &s.geometry {
+            Some(g)
+                if !self
+                    .bump_state("", g.vertex_samplers.as_ref(), &[])?
+                    .is_empty() =>
+            {
+                return Err(self.err(
+                    &format!("{at}.geometry.vertex_samplers"),
+                    "a vertex texture sampler has no bump-environment state (it belongs to ps_1_x's texture stages)".into(),
+                ));
+            }
             Some(g) => self.samplers(
                 &format!("{at}.geometry.vertex_samplers"),
                 g.vertex_samplers.as_ref(),
@@ -889,6 +931,43 @@ impl Resolver {
             set(&mut c.bool, false, reg, v);
         }
         Ok(c)
+    }
+
+    /// The constants that carry the bump-environment state of a draw's
+    /// `samplers` (`at` their field) to ps_1_x's lowering
+    /// ([`crate::core::ps1::run::bump_constants`]): stages s0–s5 only, and
+    /// none of the registers `taken` (the step's own `constants`).
+    fn bump_state(
+        &self,
+        at: &str,
+        given: Option<&BTreeMap<String, FileSampler>>,
+        taken: &[u32],
+    ) -> Result<Vec<(u32, [f32; 4])>, FileError> {
+        let mut out = Vec::new();
+        for (name, fs) in given.into_iter().flatten() {
+            let field = format!("{at}.{name}");
+            let env = fs
+                .bump_env()
+                .map_err(|(part, m)| self.err(&format!("{field}.{part}"), m))?;
+            let Some(env) = env else { continue };
+            let stage = register(name, 's', 16).map_err(|m| self.err(&field, m))?;
+            let regs = crate::core::ps1::run::bump_constants(stage, &env).ok_or_else(|| {
+                self.err(
+                    &field,
+                    format!(
+                        "`{name}` has no bump-environment state: ps_1_x's texture stages are s0–s5"
+                    ),
+                )
+            })?;
+            if let Some((r, _)) = regs.iter().find(|(r, _)| taken.contains(r)) {
+                return Err(self.err(
+                    &field,
+                    format!("its bump-environment state is c{r}, which `constants` sets too"),
+                ));
+            }
+            out.extend(regs);
+        }
+        Ok(out)
     }
 
     fn sampler_state(&self, field: &str, fs: &FileSampler) -> Result<SamplerState, FileError> {

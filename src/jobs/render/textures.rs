@@ -1,7 +1,8 @@
 //! Texture files and per-axis sampler states of draw lists: a texture named
 //! by `image` may be a DDS file (2D, cube or volume, with its own mip
 //! levels) as well as an OpenEXR, Radiance or PFM image, and a sampler may
-//! set ADDRESSU/V/W and MIN/MAGFILTER one by one.
+//! set ADDRESSU/V/W and MIN/MAGFILTER one by one, and its texture stage's
+//! bump-environment state (ps_1_x's `texbem`, `texbeml`, `bem`).
 //!
 //! Kept apart from `file.rs` so that what a texture file means for a draw
 //! (which sampler type it answers, how many texels it holds against the
@@ -9,6 +10,7 @@
 
 use crate::core::emu::{Address, Filter, SamplerState};
 use crate::core::image::{self, ImageLimits, TextureFile};
+use crate::core::ps1::run::BumpEnv;
 use std::path::Path;
 
 /// A loaded texture: its level-0 size, its texels when it is a plain 2D
@@ -149,4 +151,40 @@ pub(crate) struct FileSampler {
     pub(crate) address_w: Option<String>,
     pub(crate) min_filter: Option<String>,
     pub(crate) mag_filter: Option<String>,
+    /// D3DTSS_BUMPENVMAT00, 01, 10, 11 of the stage (ps_1_x).
+    pub(crate) bump_matrix: Option<[f64; 4]>,
+    /// D3DTSS_BUMPENVLSCALE.
+    pub(crate) bump_lscale: Option<f64>,
+    /// D3DTSS_BUMPENVLOFFSET.
+    pub(crate) bump_loffset: Option<f64>,
+}
+
+impl FileSampler {
+    /// The stage's bump-environment state, `None` where the entry sets
+    /// none of it; unset parts take Direct3D 9's default, 0. Each value
+    /// must be a finite f32; an error names the field.
+    pub(crate) fn bump_env(&self) -> Result<Option<BumpEnv>, (String, String)> {
+        if self.bump_matrix.is_none() && self.bump_lscale.is_none() && self.bump_loffset.is_none() {
+            return Ok(None);
+        }
+        let finite = |field: &str, x: f64| {
+            let f = x as f32;
+            if f.is_finite() {
+                Ok(f)
+            } else {
+                Err((field.to_string(), format!("{x:e} is not a finite f32")))
+            }
+        };
+        let mut env = BumpEnv::default();
+        for (i, &x) in self.bump_matrix.iter().flatten().enumerate() {
+            env.matrix[i] = finite("bump_matrix", x)?;
+        }
+        if let Some(x) = self.bump_lscale {
+            env.lscale = finite("bump_lscale", x)?;
+        }
+        if let Some(x) = self.bump_loffset {
+            env.loffset = finite("bump_loffset", x)?;
+        }
+        Ok(Some(env))
+    }
 }
