@@ -35,19 +35,6 @@ const REFUSED: &[(&str, &str)] = &[
     ("*/rel-o-aL.psh", "X3500"),
     ("*/rel-o-aL-2049.psh", "X3500"),
     ("*/rel-o-aL-mask.psh", "X3500"),
-    // ps_1_x instructions the emulator does not run yet (`core/ps1/run.rs`):
-    // no run could show that HLSL for them computes the same
-    ("*/op-texbem.psh", "`texbem`"),
-    ("*/op-texbeml.psh", "`texbeml`"),
-    ("*/op-texm3x2depth.psh", "`texm3x2depth`"),
-    ("*/op-texm3x3spec.psh", "`texm3x3spec`"),
-    ("*/op-texm3x3vspec.psh", "`texm3x3vspec`"),
-    ("*/op-bem.psh", "`bem`"),
-    ("*/op-bem-nophase.psh", "`bem`"),
-    ("*/mod-bem-d2.psh", "`bem`"),
-    ("*/mod-bem-sat.psh", "`bem`"),
-    ("asm/ps1x/bump.psh", "`texbem`"),
-    ("asm/ps1x/phases.psh", "`bem`"),
 ];
 
 /// Whether `name` is one of `list`'s (exactly, or by a `*` entry's end).
@@ -691,19 +678,23 @@ fn a_block_written_out_four_times_is_a_loop() {
     assert_eq!(three.matches("tex2D").count(), 3, "{three}");
 }
 
-/// A ps_1_x instruction the emulator does not run yet is refused naming
-/// it and its line: no run could show that HLSL for it computes the same.
+/// `texbem` reads stage 1's bump-environment matrix from c13 in the
+/// lowering (`core::ps1::run`: stage n's in c(12 + n)); the HLSL declares
+/// that register and its header says which draw state feeds it.
 #[test]
-fn a_ps_1_x_instruction_that_does_not_run_is_refused_by_name() {
+fn a_bump_shader_names_the_state_behind_its_constants() {
     let options = load::Options::default();
     let path = root().join("asm/ps1x/bump.psh");
     let file = load::source_file("bump.psh", std::fs::read(path).unwrap(), &options).unwrap();
     let loaded = load::load(file, &options).unwrap();
-    let e = decompile(&loaded.shader, None).unwrap_err().to_string();
+    let hlsl = decompile(&loaded.shader, None).unwrap().hlsl;
+    assert!(hlsl.contains("float4 c13 : register(c13);"), "{hlsl}");
     assert!(
-        e.contains("ps_1_1") && e.contains("`texbem` (line 7)"),
-        "{e}"
+        hlsl.contains("// c12 + n: stage n's bump-environment matrix"),
+        "{hlsl}"
     );
+    // no texbeml here: the luminance constants are not named
+    assert!(!hlsl.contains("// c18 + n"), "{hlsl}");
 }
 
 /// `mova` rounds to nearest; the HLSL writes the rounding itself

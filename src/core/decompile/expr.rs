@@ -462,6 +462,13 @@ pub(crate) fn value(
         Opcode::Max => format!("max({}, {})", src(0)?, src(1)?),
         Opcode::Abs => format!("abs({})", src(0)?),
         Opcode::Frc => format!("frac({})", src(0)?),
+        // ps_1_x's `lrp` as its lowering computes it, one rounding per
+        // operation, which `precise` keeps (the compiler expands `lerp`
+        // into a different grouping whatever the variables are)
+        Opcode::Lrp if ctx.clamps => {
+            let (a, b, c) = (src(0)?, src(1)?, src(2)?);
+            format!("({a} * {b} + (1.0 - {a}) * {c})")
+        }
         Opcode::Lrp => format!("lerp({}, {}, {})", src(2)?, src(1)?, src(0)?),
         Opcode::Cmp => format!("{} >= 0.0 ? {} : {}", src(0)?, src(1)?, src(2)?),
         Opcode::Dsx => format!("ddx({})", src(0)?),

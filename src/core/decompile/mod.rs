@@ -442,7 +442,11 @@ fn write(
         text.push_str(&vertex::rounding(shader));
         text.push_str(&vertex::declaration(&fields));
     }
-    let precise = if imprecise(shader) { "" } else { "precise " };
+    // a ps_1_x shader's `lrp` is written as arithmetic (`expr.rs`)
+    let precise = match ps1.is_none() && imprecise(shader) {
+        true => "",
+        false => "precise ",
+    };
     let locals = locals(&s, &fields, precise);
     let mut statements = 0;
     if subroutines {

@@ -61,8 +61,30 @@ pub(crate) fn plan(shader: &Shader) -> Result<(&Shader, Plan), DecompileError> {
          the pixel's colour\n",
         t = target.profile,
         m = super::names::literal(max),
-    );
+    ) + &bump_note(lowered);
     Ok((lowered, Plan { target, header }))
+}
+
+/// A header line naming the bump-environment constants where the lowering
+/// reads them (`texbem`, `texbeml`, `bem`: stage n's matrix in c(12 + n),
+/// its luminance scale and offset in c(18 + n), `core::ps1::run`), so
+/// that a reader knows which draw state feeds each `c#` the HLSL declares.
+fn bump_note(lowered: &Shader) -> String {
+    let reads = |from: u32| {
+        lowered.instructions().iter().any(|x| {
+            x.src
+                .iter()
+                .any(|s| s.reg.file == RegFile::Const && (from..from + 6).contains(&s.reg.index))
+        })
+    };
+    let mut note = String::new();
+    if reads(12) {
+        note += "// c12 + n: stage n's bump-environment matrix (D3DTSS_BUMPENVMAT00, 01, 10, 11)\n";
+    }
+    if reads(18) {
+        note += "// c18 + n: stage n's (D3DTSS_BUMPENVLSCALE, D3DTSS_BUMPENVLOFFSET, 0, 0)\n";
+    }
+    note
 }
 
 /// ps_2_0 where the lowered program's instructions fit ps_2_0's slots and

@@ -5,11 +5,11 @@
 
 float4 main() : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r16 = 0, r24 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r16 = 0, r24 = 0;
     r16 = float4(1.0, 0.5, 0.25, 0.0);
     r0 = clamp(r16, -8.0, 8.0);
-    r24.xyz = lerp(float4(-1.0, 0.0, 0.5, 1.0).xyz, r0.xyz, r16.xyz);
+    r24.xyz = (r16.xyz * r0.xyz + (1.0 - r16.xyz) * float4(-1.0, 0.0, 0.5, 1.0).xyz);
     r0.w = clamp(r16.w, -8.0, 8.0);
     r0.xyz = clamp(r24.xyz, -8.0, 8.0);
     oC0 = saturate(r0);

@@ -5,11 +5,11 @@
 
 float4 main() : COLOR
 {
-    float4 oC0 = 0;
-    float4 r0 = 0, r16 = 0, r24 = 0;
+    precise float4 oC0 = 0;
+    precise float4 r0 = 0, r16 = 0, r24 = 0;
     r16 = float4(1.0, 0.5, 0.25, 0.0);
     r0 = clamp(r16, -8.0, 8.0);
-    r24 = lerp(float4(-1.0, 0.0, 0.5, 1.0), r0, r16);
+    r24 = (r16 * r0 + (1.0 - r16) * float4(-1.0, 0.0, 0.5, 1.0));
     oC0 = saturate(clamp(r24, -8.0, 8.0));
     return oC0;
 }
