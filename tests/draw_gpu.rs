@@ -615,7 +615,12 @@ fn a_draw_with_fragment_records_leaves_what_the_per_primitive_path_leaves() {
     // has more records than one batch holds, so its draw is split.
     let dir = repo().join("tests/draw_conformance");
     let tmp = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("records");
-    let neither = ["lines.json", "lines_gpu.json", "quad.json"];
+    let neither = [
+        "lines.json",
+        "lines_gpu.json",
+        "lines_vpos.json",
+        "quad.json",
+    ];
     let mut lists: Vec<std::path::PathBuf> = std::fs::read_dir(&dir)
         .unwrap()
         .map(|e| e.unwrap().path())
