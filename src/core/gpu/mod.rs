@@ -410,3 +410,18 @@ fn compute_buffer(binding: u32, ty: wgpu::BufferBindingType) -> wgpu::BindGroupL
         count: None,
     }
 }
+
+/// A read-write storage buffer the fragment stage binds at `binding`
+/// (the one-pass draw's counters, the recorded draw's counter and records).
+fn fragment_storage(binding: u32) -> wgpu::BindGroupLayoutEntry {
+    wgpu::BindGroupLayoutEntry {
+        binding,
+        visibility: wgpu::ShaderStages::FRAGMENT,
+        ty: wgpu::BindingType::Buffer {
+            ty: wgpu::BufferBindingType::Storage { read_only: false },
+            has_dynamic_offset: false,
+            min_binding_size: None,
+        },
+        count: None,
+    }
+}

@@ -240,16 +240,7 @@ pub fn draw_one_pass(
         .device
         .create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: None,
-            entries: &[wgpu::BindGroupLayoutEntry {
-                binding: COUNTS_BINDING,
-                visibility: wgpu::ShaderStages::FRAGMENT,
-                ty: wgpu::BindingType::Buffer {
-                    ty: wgpu::BufferBindingType::Storage { read_only: false },
-                    has_dynamic_offset: false,
-                    min_binding_size: None,
-                },
-                count: None,
-            }],
+            entries: &[super::fragment_storage(COUNTS_BINDING)],
         });
     let counts = gpu.device.create_buffer(&wgpu::BufferDescriptor {
         label: Some("ps30 counts"),

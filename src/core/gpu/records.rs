@@ -116,20 +116,13 @@ pub fn draw_geometry_recorded(
 
 /// The bind-group layout of the counter and the records.
 fn records_layout(gpu: &Gpu) -> wgpu::BindGroupLayout {
-    let entry = |binding| wgpu::BindGroupLayoutEntry {
-        binding,
-        visibility: wgpu::ShaderStages::FRAGMENT,
-        ty: wgpu::BindingType::Buffer {
-            ty: wgpu::BufferBindingType::Storage { read_only: false },
-            has_dynamic_offset: false,
-            min_binding_size: None,
-        },
-        count: None,
-    };
     gpu.device
         .create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("ps30 fragment records"),
-            entries: &[entry(COUNTER_BINDING), entry(RECORDS_BINDING)],
+            entries: &[
+                super::fragment_storage(COUNTER_BINDING),
+                super::fragment_storage(RECORDS_BINDING),
+            ],
         })
 }
 

@@ -440,6 +440,16 @@ pub enum Entry {
 }
 
 /// An output's location (no interpolation: it leaves the pipeline).
+/// A geometry draw's output of flags (covered, killed; `u32`) at `offset`.
+fn flags_member(m: &mut Module, offset: u32) -> StructMember {
+    StructMember {
+        name: Some("flags".into()),
+        ty: ty(m, None, TypeInner::Scalar(Scalar::U32)),
+        binding: Some(output(interface::GEOMETRY_FLAGS_LOCATION)),
+        offset,
+    }
+}
+
 fn output(location: u32) -> Binding {
     Binding::Location {
         location,
@@ -874,23 +884,11 @@ fn outputs(
         );
     } else if records {
         // The flags keep the pass an attachment; the records hold the rest.
-        let u32_ty = ty(m, None, TypeInner::Scalar(Scalar::U32));
-        members.push(StructMember {
-            name: Some("flags".into()),
-            ty: u32_ty,
-            binding: Some(output(interface::GEOMETRY_FLAGS_LOCATION)),
-            offset,
-        });
+        members.push(flags_member(m, offset));
         offset += 4;
         values.push(fb.u32(1));
     } else if let Entry::Geometry { .. } = entry {
-        let u32_ty = ty(m, None, TypeInner::Scalar(Scalar::U32));
-        members.push(StructMember {
-            name: Some("flags".into()),
-            ty: u32_ty,
-            binding: Some(output(interface::GEOMETRY_FLAGS_LOCATION)),
-            offset,
-        });
+        members.push(flags_member(m, offset));
         let (flags, depth) = flags_and_depth(cx, iface, fb, position);
         values.push(flags);
         members.push(StructMember {
