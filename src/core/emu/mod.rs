@@ -93,6 +93,8 @@ mod tests;
 mod tests_layered;
 #[cfg(test)]
 mod tests_ps1;
+#[cfg(test)]
+mod tests_sampling;
 mod texop;
 mod texop3;
 pub mod vertex;
