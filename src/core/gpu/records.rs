@@ -315,8 +315,9 @@ fn draw_batch(
 /// The records (`words`, `stride` words each, the first the triangle's
 /// index in the draw) as each primitive's shaded pixels in row order, the
 /// fragment of the primitive's last triangle kept at a pixel two of its
-/// triangles cover (a point fill's overlapping squares), as the
-/// per-primitive draw's attachments keep it. `outputs` are the `oC#` the
+/// triangles cover, as the per-primitive draw's attachments keep it (the
+/// GPU backend's set-up makes no such primitive: a point fill's points,
+/// whose squares may overlap, are primitives of their own there). `outputs` are the `oC#` the
 /// shader writes, in the records' order.
 fn in_order(
     g: &GeometryDraw,
